@@ -1,0 +1,3 @@
+from camlab88.cli import main
+
+raise SystemExit(main())

@@ -1,0 +1,1 @@
+"""Device models: pure state and behaviour in numpy. Only emulator.window imports pygame."""

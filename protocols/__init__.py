@@ -1,0 +1,1 @@
+"""Everything that crosses a wire, described once and used in both directions."""

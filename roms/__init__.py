@@ -1,0 +1,1 @@
+"""Data the devices load at power-on, in readable text formats, with loaders."""

@@ -1,0 +1,45 @@
+"""Checks on the code base itself: the architecture's seams, lint, and the CLI's help."""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _run(*cmd: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=600)
+
+
+def _tool(name: str) -> str:
+    exe = Path(sys.executable).with_name(name)
+    found = str(exe) if exe.exists() else shutil.which(name)
+    assert found, f"{name} is not installed (pip install -e '.[test]')"
+    return found
+
+
+def test_import_contracts_hold() -> None:
+    """apps/ never imports emulator/ or pygame; protocols/ imports nothing of ours; etc."""
+    result = _run(_tool("lint-imports"), "--no-cache")
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
+def test_ruff_clean() -> None:
+    result = _run(_tool("ruff"), "check", ".")
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
+def test_every_subcommand_has_help() -> None:
+    from camlab88.cli import build_parser
+
+    parser = build_parser()
+    sub = next(a for a in parser._actions if a.dest == "command")
+    assert "demo" in sub.choices
+    for name, subparser in sub.choices.items():
+        text = subparser.format_help()
+        assert name in text and "usage" in text.lower()
+    result = _run(sys.executable, "-m", "camlab88", "--help")
+    assert result.returncode == 0 and "demo" in result.stdout
