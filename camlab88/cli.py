@@ -20,6 +20,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "sigma",
     "rainbow",
     "tablet",
+    "link",
     "kas",
     "snooker",
     "ca",

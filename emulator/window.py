@@ -1,0 +1,253 @@
+"""The pygame front-end: shows a device frame scaled, turns host input into host_input events.
+
+This is the only module that imports pygame, and only when a Window is made, so importing
+the emulator package (or running headless) never loads pygame.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+import time
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from emulator.host_input import HostEvent, KeyDown, KeyUp, PointerButton, PointerMove, Quit
+
+_SPECIAL_KEYS = {
+    "return": "return",
+    "enter": "kp_enter",
+    "space": "space",
+    "backspace": "backspace",
+    "escape": "escape",
+    "tab": "tab",
+    "delete": "delete",
+    "up": "up",
+    "down": "down",
+    "left": "left",
+    "right": "right",
+    "home": "home",
+    "end": "end",
+    "page up": "page_up",
+    "page down": "page_down",
+    "insert": "insert",
+    "left shift": "shift",
+    "right shift": "shift",
+    "left ctrl": "ctrl",
+    "right ctrl": "ctrl",
+    "left alt": "alt",
+    "right alt": "alt",
+    "left meta": "meta",
+    "right meta": "meta",
+}
+
+
+def key_name(raw: str) -> str:
+    """pygame's key name -> the pygame-independent name used by host_input."""
+    raw = raw.lower()
+    if raw in _SPECIAL_KEYS:
+        return _SPECIAL_KEYS[raw]
+    if raw.startswith("[") and raw.endswith("]"):  # keypad keys: "[1]" -> "kp_1"
+        return "kp_" + raw[1:-1]
+    return raw.replace(" ", "_")
+
+
+class Window:
+    """A window showing frames of ``size`` device pixels (w, h), each scaled ``scale`` times."""
+
+    def __init__(self, title: str, size: tuple[int, int], scale: int = 1) -> None:
+        os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
+        import pygame  # the one place pygame is imported
+
+        if int(scale) != scale or scale < 1:
+            raise ValueError(f"scale must be a positive integer, not {scale!r}")
+        width, height = size
+        if width < 1 or height < 1:
+            raise ValueError(f"window size must be positive, not {size!r}")
+        self._pg: Any = pygame
+        self.size = (int(width), int(height))
+        self.scale = int(scale)
+        pygame.display.init()
+        window_size = (self.size[0] * self.scale, self.size[1] * self.scale)
+        self.surface = pygame.display.set_mode(window_size)
+        pygame.display.set_caption(title)
+        self._last_tick: float | None = None
+        self.closed = False
+
+    def show(self, frame: np.ndarray) -> None:
+        """Draw an (h, w, 3) uint8 frame (row 0 = top), nearest-neighbour scaled."""
+        pg = self._pg
+        w, h = self.size
+        if frame.shape != (h, w, 3):
+            raise ValueError(f"frame shape {frame.shape} does not match window size {(h, w, 3)}")
+        frame = np.ascontiguousarray(frame, dtype=np.uint8)
+        image = pg.image.frombuffer(frame.tobytes(), (w, h), "RGB")
+        if self.scale != 1:
+            image = pg.transform.scale(image, self.surface.get_size())  # nearest neighbour
+        self.surface.blit(image, (0, 0))
+        pg.display.flip()
+
+    def pixels(self) -> np.ndarray:
+        """What the window shows now, as an (H, W, 3) uint8 array at window resolution."""
+        pg = self._pg
+        width, height = self.surface.get_size()
+        raw = pg.image.tobytes(self.surface, "RGB")
+        return np.frombuffer(raw, dtype=np.uint8).reshape(height, width, 3).copy()
+
+    def screenshot(self, path: str | os.PathLike[str]) -> Path:
+        """Save the window surface as a PNG, atomically."""
+        from PIL import Image
+
+        target = Path(path)
+        target.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".png", dir=target.parent)
+        mask = os.umask(0)
+        os.umask(mask)
+        os.chmod(tmp, 0o666 & ~mask)  # mkstemp makes private files; a screenshot is not
+        try:
+            with os.fdopen(fd, "wb") as fh:
+                Image.fromarray(self.pixels()).save(fh, format="PNG")
+                fh.flush()
+                os.fsync(fh.fileno())
+            os.replace(tmp, target)
+        except BaseException:
+            if os.path.exists(tmp):
+                os.unlink(tmp)
+            raise
+        return target
+
+    def _device_xy(self, pos: tuple[int, int]) -> tuple[int, int]:
+        w, h = self.size
+        x = min(max(int(pos[0]) // self.scale, 0), w - 1)
+        y = min(max(int(pos[1]) // self.scale, 0), h - 1)
+        return x, y
+
+    def _mods(self, mod: int) -> frozenset[str]:
+        pg = self._pg
+        names = []
+        for bit, name in (
+            (pg.KMOD_SHIFT, "shift"),
+            (pg.KMOD_CTRL, "ctrl"),
+            (pg.KMOD_ALT, "alt"),
+            (pg.KMOD_META, "meta"),
+        ):
+            if mod & bit:
+                names.append(name)
+        return frozenset(names)
+
+    def convert(self, event: Any) -> HostEvent | None:
+        """One pygame event -> a host_input event (None for events devices do not see)."""
+        pg = self._pg
+        if event.type == pg.QUIT:
+            return Quit()
+        if event.type == pg.KEYDOWN:
+            return KeyDown(
+                key_name(pg.key.name(event.key)),
+                getattr(event, "unicode", "") or "",
+                self._mods(getattr(event, "mod", 0)),
+            )
+        if event.type == pg.KEYUP:
+            return KeyUp(key_name(pg.key.name(event.key)))
+        if event.type == pg.MOUSEMOTION:
+            x, y = self._device_xy(event.pos)
+            held = frozenset(i + 1 for i, down in enumerate(event.buttons[:3]) if down)
+            return PointerMove(x, y, held)
+        if event.type in (pg.MOUSEBUTTONDOWN, pg.MOUSEBUTTONUP) and 1 <= event.button <= 3:
+            x, y = self._device_xy(event.pos)
+            return PointerButton(x, y, int(event.button), event.type == pg.MOUSEBUTTONDOWN)
+        return None
+
+    def poll(self) -> list[HostEvent]:
+        """Events since the last poll, as pygame-free host_input events."""
+        out: list[HostEvent] = []
+        for event in self._pg.event.get():
+            converted = self.convert(event)
+            if converted is not None:
+                out.append(converted)
+        return out
+
+    def wait_frame(self, fps: float) -> None:
+        """Sleep so that calls come at most ``fps`` times a wall-clock second (interactive
+        pacing only: it never changes what a device shows)."""
+        if fps <= 0:
+            raise ValueError(f"fps must be positive, not {fps!r}")
+        now = time.monotonic()
+        if self._last_tick is not None:
+            wait = self._last_tick + 1.0 / fps - now
+            if wait > 0:
+                time.sleep(wait)
+                now += wait
+        self._last_tick = now
+
+    def close(self) -> None:
+        if not self.closed:
+            self.closed = True
+            self._pg.display.quit()
+
+    def __enter__(self) -> Window:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+
+def test_card(width: int, height: int) -> np.ndarray:
+    """A frame for checking a display: colour bars, a 64-pixel grid, a 1-pixel checkerboard
+    (it must stay crisp when scaled) and a white border one pixel wide."""
+    frame = np.zeros((height, width, 3), np.uint8)
+    bars = np.array(
+        [[255, 255, 255], [255, 255, 0], [0, 255, 255], [0, 255, 0],
+         [255, 0, 255], [255, 0, 0], [0, 0, 255], [0, 0, 0]],
+        np.uint8,
+    )
+    cols = np.arange(width) * len(bars) // width
+    frame[: height // 2] = bars[cols][None, :, :]
+    ramp = (np.arange(width) * 255 // max(1, width - 1)).astype(np.uint8)
+    frame[height // 2 : 3 * height // 4] = ramp[None, :, None]
+    yy, xx = np.mgrid[3 * height // 4 : height, 0:width]
+    frame[3 * height // 4 :] = (((xx + yy) % 2) * 255).astype(np.uint8)[:, :, None]
+    frame[::64, :] = (128, 128, 128)
+    frame[:, ::64] = (128, 128, 128)
+    frame[0, :] = frame[-1, :] = frame[:, 0] = frame[:, -1] = 255
+    return frame
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python -m emulator.window``: show a test card; report input events on stdout."""
+    import argparse
+
+    parser = argparse.ArgumentParser(
+        prog="python -m emulator.window",
+        description="Open the camlab88 window with a test card and print the host input "
+        "events it produces (device pixel coordinates). Close the window or press Escape.",
+    )
+    parser.add_argument("--size", default="768x512", help="device pixels WxH (768x512)")
+    parser.add_argument("--scale", type=int, default=1, help="integer scale factor (1)")
+    parser.add_argument("--screenshot", metavar="PNG", help="save the window after the first "
+                        "frames and exit")
+    args = parser.parse_args(argv)
+    try:
+        width, height = (int(v) for v in args.size.lower().split("x"))
+    except ValueError:
+        parser.error(f"--size must be WxH, not {args.size!r}")
+    frame = test_card(width, height)
+    with Window("camlab88 window test card", (width, height), args.scale) as window:
+        for n in range(10**9):
+            window.show(frame)
+            for event in window.poll():
+                print(event, flush=True)
+                if isinstance(event, Quit) or (
+                    isinstance(event, KeyDown) and event.key == "escape"
+                ):
+                    return 0
+            if args.screenshot and n == 2:
+                print(f"screenshot written to {window.screenshot(args.screenshot)}")
+                return 0
+            window.wait_frame(25)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,181 @@
+"""Command-line tools for the link: ``python -m protocols.link`` (or ``camlab88 link``).
+
+* ``dump REC``: a recording in readable form.
+* ``stream REC --out FILE``: the bytes one end received, as a raw stream file.
+* ``echo --pty | --listen PORT | --url URL``: an echoing device on a paced line, to check a
+  program's or a cable's connection (and recording) before the real devices are attached.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import tempfile
+import threading
+from fractions import Fraction
+from typing import Any
+
+from protocols.link.line import SerialLine
+from protocols.link.recording import Recorder, RecordingError, public_mode, read_recording
+from protocols.link.settings import LineSettings
+from protocols.link.throttle import Throttle
+
+_PRINTABLE = {i: chr(i) for i in range(0x20, 0x7F) if chr(i) != "\\"}
+
+
+def printable(data: bytes) -> str:
+    """Bytes as readable text: ASCII as is, the rest as \\xNN (and \\r, \\n)."""
+    out = []
+    for b in data:
+        if b in _PRINTABLE:
+            out.append(_PRINTABLE[b])
+        elif b == 0x0D:
+            out.append("\\r")
+        elif b == 0x0A:
+            out.append("\\n")
+        else:
+            out.append(f"\\x{b:02x}")
+    return "".join(out)
+
+
+def dump(path: str, out: Any = sys.stdout) -> int:
+    try:
+        rec = read_recording(path)
+    except RecordingError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 1
+    print(f"# {path}: {rec.settings}, xonxoff {'on' if rec.xonxoff else 'off'}, "
+          f"{len(rec.exact_entries)} chunks, {float(rec.duration):.6f} s", file=out)
+    for e in rec.exact_entries:
+        print(f"{float(e.t):12.6f} {e.direction} {printable(e.data)}", file=out)
+    for d, name in ((">", "host to device"), ("<", "device to host")):
+        print(f"# {name}: {len(rec.stream(d, raw=True))} bytes", file=out)
+    return 0
+
+
+def write_stream(path: str, out_path: str, direction: str) -> int:
+    try:
+        data = read_recording(path).stream(direction)
+    except RecordingError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 1
+    target = os.path.abspath(out_path)
+    fd, tmp = tempfile.mkstemp(prefix=".stream.", dir=os.path.dirname(target))
+    os.chmod(tmp, public_mode())
+    with os.fdopen(fd, "wb") as fh:
+        fh.write(data)
+        fh.flush()
+        os.fsync(fh.fileno())
+    os.replace(tmp, target)
+    print(f"{len(data)} bytes written to {out_path}")
+    return 0
+
+
+def run_echo(
+    bridge: Any,
+    line: SerialLine,
+    *,
+    seconds: float | None = None,
+    speed: float | None = 1.0,
+    stop: threading.Event | None = None,
+    fps: int = 100,
+    log: Any = None,
+) -> int:
+    """Poll ``bridge`` (attached to line.host) on a fixed virtual grid; the device end echoes.
+
+    Returns the number of bytes echoed. Stops after ``seconds`` of line time or when ``stop``
+    is set."""
+    throttle = Throttle(speed)
+    step = Fraction(1, fps)
+    echoed = 0
+    k = 0
+    while (seconds is None or k * step < seconds) and not (stop and stop.is_set()):
+        line.clock.advance_to(k * step)
+        result = bridge.poll(timeout=0.0)
+        for event in result.events:
+            if log:
+                print(f"{float(line.clock.exact):.3f} s: {event.kind} {event.detail}", file=log)
+        data = line.device.read()
+        if data:
+            line.device.write(data)
+            echoed += len(data)
+        throttle.pace(k * step)
+        k += 1
+    return echoed
+
+
+def _echo(args: argparse.Namespace) -> int:
+    from protocols.link.transports import PtyBridge, SerialUrlBridge, TcpBridge
+
+    settings = LineSettings.parse(f"{args.baud} {args.framing}")
+    recorder = Recorder(args.record, settings, xonxoff=not args.no_xonxoff) if args.record else None
+    line = SerialLine(settings, xonxoff=not args.no_xonxoff, recorder=recorder)
+    bridge: Any
+    if args.listen is not None:
+        bridge = TcpBridge(args.listen, endpoint=line.host)
+        print(f"echo device on a {settings} line: connect to 127.0.0.1:{bridge.port}", flush=True)
+    elif args.url:
+        bridge = SerialUrlBridge(args.url, settings, endpoint=line.host)
+        print(f"echo device on a {settings} line via {args.url}", flush=True)
+    else:
+        bridge = PtyBridge(endpoint=line.host)
+        print(f"echo device on a {settings} line: open {bridge.slave_path} as a serial port",
+              flush=True)
+    try:
+        n = run_echo(bridge, line, seconds=args.seconds, speed=args.speed or None, log=sys.stdout)
+    except KeyboardInterrupt:
+        n = -1
+    finally:
+        bridge.close()
+        line.close()
+    if n >= 0:
+        print(f"{n} bytes echoed")
+    if args.record:
+        print(f"recording written to {args.record}")
+    return 0
+
+
+def register(subparsers: Any) -> None:
+    """Add the ``link`` command (with dump/stream/echo) to an argparse subparsers object."""
+    link = subparsers.add_parser(
+        "link", help="serial-line tools: dump recordings, extract streams, echo device",
+        description="Tools for the emulated serial line (see docs/link.md).",
+    )
+    add_tools(link)
+
+
+def add_tools(link: argparse.ArgumentParser) -> None:
+    sub = link.add_subparsers(dest="link_command", metavar="TOOL")
+    sub.required = True
+    p = sub.add_parser("dump", help="print a link recording readably")
+    p.add_argument("recording")
+    p.set_defaults(handler=lambda a: dump(a.recording))
+    p = sub.add_parser("stream", help="write the bytes one end received as a raw stream")
+    p.add_argument("recording")
+    p.add_argument("--out", required=True, help="raw stream file to write")
+    p.add_argument("--direction", choices=[">", "<"], default=">",
+                   help="> host to device (default), < device to host")
+    p.set_defaults(handler=lambda a: write_stream(a.recording, a.out, a.direction))
+    p = sub.add_parser("echo", help="an echoing device on a paced line (pty, TCP or URL)")
+    where = p.add_mutually_exclusive_group()
+    where.add_argument("--pty", action="store_true", help="a pseudo-terminal (the default)")
+    where.add_argument("--listen", type=int, metavar="PORT", help="TCP on 127.0.0.1 (0 = any)")
+    where.add_argument("--url", help="any pyserial URL, e.g. /dev/ttyUSB0 or loop://")
+    p.add_argument("--baud", type=int, default=9600)
+    p.add_argument("--framing", default="8N1", help="data bits, parity, stop bits (8N1)")
+    p.add_argument("--no-xonxoff", action="store_true", help="pass DC1/DC3 as data")
+    p.add_argument("--record", metavar="REC", help="record the session to this file")
+    p.add_argument("--seconds", type=float, help="stop after this much line time")
+    p.add_argument("--speed", type=float, default=1.0, help="times real time; 0 = flat out")
+    p.set_defaults(handler=_echo)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(
+        prog="python -m protocols.link",
+        description="Tools for the emulated serial line (see docs/link.md).",
+    )
+    add_tools(parser)
+    args = parser.parse_args(argv)
+    return int(args.handler(args) or 0)

@@ -1,0 +1,68 @@
+from __future__ import annotations
+
+import io
+import socket
+import threading
+from pathlib import Path
+
+from protocols.link import LineSettings, Recorder, SerialLine
+from protocols.link.cli import dump, main, printable, run_echo, write_stream
+from protocols.link.transports import TcpBridge
+
+
+def make_recording(path: Path) -> None:
+    line = SerialLine(recorder=Recorder(path, LineSettings()))
+    line.host.write(b"\r+-*/\x00\x13")
+    line.device.write(b"ok\\")
+    line.close()
+
+
+def test_dump_is_readable(tmp_path: Path) -> None:
+    rec = tmp_path / "a.rec"
+    make_recording(rec)
+    out = io.StringIO()
+    assert dump(str(rec), out) == 0
+    text = out.getvalue()
+    assert "\\r+-*/\\x00\\x13" in text and "ok\\x5c" in text
+    assert "host to device: 7 bytes" in text
+    assert printable(b"\n\x7f") == "\\n\\x7f"
+
+
+def test_bad_recording_is_an_error_not_a_traceback(tmp_path: Path, capsys) -> None:
+    bad = tmp_path / "bad.rec"
+    bad.write_text("hello\n")
+    assert main(["dump", str(bad)]) == 1
+    assert f"{bad}:1: not a camlab88 link recording" in capsys.readouterr().err
+
+
+def test_stream_writes_what_the_device_received(tmp_path: Path) -> None:
+    rec = tmp_path / "a.rec"
+    make_recording(rec)
+    out = tmp_path / "s.bin"
+    assert write_stream(str(rec), str(out), ">") == 0
+    assert out.read_bytes() == b"\r+-*/\x00"  # the DC3 was flow control, not data
+
+
+def test_echo_device_over_tcp() -> None:
+    line = SerialLine()
+    stop = threading.Event()
+    with TcpBridge(0, endpoint=line.host) as bridge:
+        result: list[int] = []
+        worker = threading.Thread(
+            target=lambda: result.append(run_echo(bridge, line, seconds=20, stop=stop))
+        )
+        worker.start()
+        try:
+            client = socket.create_connection(("127.0.0.1", bridge.port), timeout=10)
+            client.sendall(b"ping")
+            got = b""
+            while len(got) < 4:
+                more = client.recv(4)
+                assert more
+                got += more
+            assert got == b"ping"
+            client.close()
+        finally:
+            stop.set()
+            worker.join(timeout=10)
+    assert result == [4]

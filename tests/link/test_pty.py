@@ -1,0 +1,78 @@
+"""A real pseudo-terminal, opened by pyserial as a serial port."""
+
+from __future__ import annotations
+
+import serial
+
+from protocols.link import SerialLine
+from protocols.link.pty import PtyPort
+
+
+def read_exactly(port: serial.Serial, n: int) -> bytes:
+    got = b""
+    while len(got) < n:
+        more = port.read(n - len(got))
+        assert more, f"timed out after {got!r}"
+        got += more
+    return got
+
+
+def test_pyserial_opens_the_slave_and_all_256_byte_values_pass_both_ways() -> None:
+    with PtyPort() as pty:
+        client = serial.Serial(pty.slave_path, baudrate=9600, timeout=2)
+        try:
+            everything = bytes(range(256))
+            client.write(everything)  # includes CR, LF, DC1, DC3, ^C: raw mode keeps them
+            got = b""
+            while len(got) < 256:
+                more = pty.read(timeout=2)
+                assert more
+                got += more
+            assert got == everything
+            pty.write(everything[::-1])
+            assert read_exactly(client, 256) == everything[::-1]
+        finally:
+            client.close()
+
+
+def test_client_may_reconnect_and_nobody_reading_never_blocks() -> None:
+    with PtyPort() as pty:
+        serial.Serial(pty.slave_path, timeout=1).close()
+        pty.write(b"x" * 200_000)  # no reader: the master never blocks
+        assert 0 < pty.backlog < 200_000  # the kernel took some, the rest waits, bounded
+        again = serial.Serial(pty.slave_path, timeout=2)
+        try:
+            again.reset_input_buffer()
+            assert pty.discard_backlog() > 0  # what a cable nobody listened to would lose
+            pty.write(b"ping")
+            assert read_exactly(again, 4) == b"ping"
+        finally:
+            again.close()
+    assert pty.closed
+
+
+def test_read_times_out_with_nothing() -> None:
+    with PtyPort() as pty:
+        assert pty.read(timeout=0.01) == b""
+
+
+def test_pty_bridge_end_to_end_with_pyserial() -> None:
+    from protocols.link.transports import PtyBridge
+
+    line = SerialLine()
+    with PtyBridge(line.host) as bridge:  # an outside program plays the host
+        client = serial.Serial(bridge.slave_path, timeout=2)
+        try:
+            client.write(b"+-*/HELLO")
+            got = b""
+            while len(got) < 9:
+                bridge.poll(timeout=1)  # outside bytes enter the line at clock.now
+                line.clock.advance(0.04)
+                got += line.device.read()
+            assert got == b"+-*/HELLO"
+            line.device.write(b"REPORT\r")  # the device answers up the line
+            line.clock.advance(1)
+            bridge.poll()
+            assert read_exactly(client, 7) == b"REPORT\r"
+        finally:
+            client.close()
