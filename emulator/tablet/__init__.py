@@ -1,0 +1,9 @@
+"""The emulated tablet: a mouse-driven tablet that speaks a real serial protocol on a pty."""
+
+from __future__ import annotations
+
+from emulator.tablet.device import EmulatedTablet
+from emulator.tablet.drive import demo_path, pointer_to_tablet
+from emulator.tablet.view import TabletView
+
+__all__ = ["EmulatedTablet", "TabletView", "demo_path", "pointer_to_tablet"]

@@ -1,0 +1,75 @@
+"""Framing for the ASCII tablet formats: one report per terminated line.
+
+There is no sync bit, so the line terminator is the resync point: a damaged line is dropped
+whole and the next line decodes normally.  These tablets send 7-bit characters; when the
+line has parity and is read as 8N1 (the same 10-bit frame as 7E1/7O1 -- and all a pty or a
+socket can carry) bit 7 is the parity bit, checked here.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from protocols.tablets.base import ProtocolError, TabletParser
+from protocols.tablets.events import TabletEvent, TabletModel
+from protocols.tablets.framing import add_parity, parity_ok
+
+LINE_LIMIT = 40  # no report is this long; longer means noise without a terminator
+
+
+class AsciiLineParser(TabletParser):
+    def __init__(
+        self,
+        model: TabletModel,
+        decode_line: Callable[[str, float], TabletEvent | None],
+        *,
+        parity: str = "N",
+        terminators: bytes = b"\r\n",
+        parmrk: bool = False,
+    ) -> None:
+        super().__init__(model, parmrk)
+        if parity not in ("N", "E", "O"):
+            raise ProtocolError(f"parity must be N, E or O, not {parity!r}")
+        self.parity = parity
+        self._decode_line = decode_line
+        self._terminators = terminators
+        self._line = bytearray()
+        self._spoilt = False
+
+    def _byte(self, byte: int, ok: bool, timestamp: float) -> TabletEvent | None:
+        if not ok or not parity_ok(byte, self.parity):
+            if ok:
+                self.stats.parity_errors += 1
+            self._spoilt = True
+        char = byte & 0x7F if self.parity != "N" else byte
+        if char in self._terminators:
+            line, spoilt = bytes(self._line), self._spoilt
+            self._line.clear()
+            self._spoilt = False
+            if not line and not spoilt:
+                return None  # the LF of a CR LF pair
+            if spoilt:
+                self.stats.bad_packets += 1
+                return None
+            return self._finish(line, timestamp)
+        self._line.append(char)
+        if len(self._line) > LINE_LIMIT:
+            self.stats.dropped_bytes += len(self._line)
+            self._line.clear()
+            self._spoilt = True  # the tail up to the next terminator is junk too
+        return None
+
+    def _finish(self, line: bytes, timestamp: float) -> TabletEvent | None:
+        try:
+            text = line.decode("ascii")
+            event = self._decode_line(text, timestamp)
+        except (UnicodeDecodeError, ValueError):
+            self.stats.bad_packets += 1
+            return None
+        if event is not None:
+            self.stats.packets += 1
+        return event
+
+
+def apply_parity(data: bytes, parity: str) -> bytes:
+    return bytes(add_parity(b, parity) for b in data)

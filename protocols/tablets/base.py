@@ -1,0 +1,83 @@
+"""What every serial tablet protocol module provides: a parser and an encoder."""
+
+from __future__ import annotations
+
+from abc import ABC, abstractmethod
+
+from protocols.tablets.events import DeviceReply, TabletEvent, TabletModel
+from protocols.tablets.framing import ParmrkFilter, ParseStats
+
+
+class ProtocolError(ValueError):
+    """An option or value the protocol cannot represent."""
+
+
+class TabletParser(ABC):
+    """Incremental decoder: feed bytes split anywhere, get whole events back.
+
+    ``parmrk=True`` means the byte stream carries POSIX PARMRK marks (the serial source turns
+    them on when the line has parity): a byte flagged as a parity error spoils its packet.
+    """
+
+    name: str = ""
+
+    def __init__(self, model: TabletModel, parmrk: bool = False) -> None:
+        self.model = model
+        self.stats = ParseStats()
+        self._parmrk = ParmrkFilter() if parmrk else None
+        self._replies: list[DeviceReply] = []
+
+    def feed(self, data: bytes, timestamp: float = 0.0) -> list[TabletEvent]:
+        out: list[TabletEvent] = []
+        if self._parmrk is not None:
+            pairs = self._parmrk.feed(data)
+        else:
+            pairs = [(b, True) for b in data]
+        for byte, ok in pairs:
+            if not ok:
+                self.stats.parity_errors += 1
+            event = self._byte(byte, ok, timestamp)
+            if event is not None:
+                out.append(event)
+        return out
+
+    def take_replies(self) -> list[DeviceReply]:
+        replies, self._replies = self._replies, []
+        return replies
+
+    def flush(self, timestamp: float = 0.0) -> list[TabletEvent]:
+        """End of input (or a reply timeout): finish anything that can be finished."""
+        return []
+
+    @abstractmethod
+    def _byte(self, byte: int, ok: bool, timestamp: float) -> TabletEvent | None: ...
+
+
+class TabletEncoder(ABC):
+    """Turns events into the bytes the real tablet would send (for the emulated tablet)."""
+
+    name: str = ""
+
+    def __init__(self, model: TabletModel) -> None:
+        self.model = model
+
+    @abstractmethod
+    def encode(self, event: TabletEvent) -> bytes: ...
+
+    def startup(self) -> bytes:
+        """Bytes the tablet sends by itself at power-on (most send nothing)."""
+        return b""
+
+    def answer(self, command: bytes) -> bytes:
+        """Reply to one complete host command (default: tablets that never answer)."""
+        return b""
+
+    def split_commands(self, data: bytes) -> tuple[list[bytes], bytes]:
+        """Split host bytes into complete commands; return (commands, unfinished rest)."""
+        return [], b""
+
+
+def clamp_check(value: int, low: int, high: int, what: str) -> int:
+    if not low <= value <= high:
+        raise ProtocolError(f"{what} {value} outside {low}..{high}")
+    return value

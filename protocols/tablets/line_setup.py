@@ -1,0 +1,109 @@
+"""Serial line settings and start-up sequences per protocol (facts §1.1, §2.1, §2.3, §3.2).
+
+``wire_*`` is how the port is opened.  A 7-data-bit line with parity has the same 10-bit frame
+as 8N1, so it is opened 8N1 and the parity bit (bit 7) is checked in software: that works
+identically on a real UART, a pty and a socket.  An 8-bit line with parity (Summagraphics 8O1)
+is opened with that parity and, on a POSIX port, PARMRK so errors reach the parser.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class InitStep:
+    data: bytes
+    wait: float = 0.0  # seconds to wait after sending
+    baud: int | None = None  # switch the port to this baud before sending
+    expect_reply: bool = False  # a ~/CR-terminated reply is expected (read up to ``wait``)
+
+
+@dataclass(frozen=True)
+class LineSetup:
+    protocol: str
+    baud: int
+    data_bits: int
+    parity: str  # "N", "E", "O"
+    stop_bits: int
+    xonxoff: bool
+    rtscts: bool
+    init: tuple[InitStep, ...]
+    source: str  # where these settings come from
+
+    @property
+    def software_parity(self) -> str:
+        return self.parity if self.data_bits == 7 and self.stop_bits == 1 else "N"
+
+    @property
+    def wire(self) -> tuple[int, str, int]:
+        """(bytesize, parity, stopbits) to open the port with."""
+        if self.data_bits == 7 and self.parity != "N" and self.stop_bits == 1:
+            return 8, "N", 1
+        return self.data_bits, self.parity, self.stop_bits
+
+    def describe(self) -> str:
+        flow = "RTS/CTS" if self.rtscts else "XON/XOFF" if self.xonxoff else "none"
+        return f"{self.baud} {self.data_bits}{self.parity}{self.stop_bits}, flow {flow}"
+
+
+def _wacom_reset() -> tuple[InitStep, ...]:
+    steps: list[InitStep] = []
+    for baud in (38400, 19200, 9600):
+        steps.append(InitStep(b"\r$", 0.25, baud))
+        steps.append(InitStep(b"\r#", 0.075))
+    steps.append(InitStep(b"SP\r", 0.03))
+    steps.append(InitStep(b"~#", 1.0, expect_reply=True))
+    steps.append(InitStep(b"~R\r", 1.0, expect_reply=True))
+    steps.append(InitStep(b"~C\r", 1.0, expect_reply=True))
+    return tuple(steps)
+
+
+SETUPS: dict[str, LineSetup] = {
+    "wacom4": LineSetup(
+        "wacom4", 9600, 8, "N", 1, False, True, _wacom_reset(),
+        "inputattach --wacom_iv + wacom_serial4.c; the model setup string follows ~#",
+    ),
+    "summa-mm": LineSetup(
+        "summa-mm", 9600, 8, "O", 1, True, False,
+        (
+            InitStep(b" " * 10 + b"\x00", 0.4),
+            InitStep(b"0b", 0.0),
+            InitStep(b"zb", 0.0),
+            InitStep(b"h", 0.0),
+            InitStep(b"a", 0.5, expect_reply=True),
+            InitStep(b"@", 0.0),  # stream mode
+            InitStep(b"I" + bytes((32 + 0,)), 0.0),  # increment 0
+            InitStep(b"F", 0.0),  # absolute
+        ),
+        "XFree86 summa driver xf86SumOpen / gpm I_summa",
+    ),
+    "bitpad2": LineSetup(
+        "bitpad2", 9600, 7, "E", 1, False, False, (),
+        "Bit Pad Two Users Guide: 7 data bits, parity by DIP switch (E chosen); command "
+        "letters are not recovered, so nothing is sent",
+    ),
+    "bitpad1": LineSetup(
+        "bitpad1", 9600, 8, "N", 1, False, False, (),
+        "reconstructed: the PERQ's Bit Pad One was on GPIB; serial settings by DIP switch",
+    ),
+    "calcomp": LineSetup(
+        "calcomp", 9600, 8, "N", 1, False, False,
+        (
+            InitStep(b"\x1b%^23\r", 0.05),
+            InitStep(b"\x1b%VA0\r", 0.05),
+            InitStep(b"\x1b%__V\r", 0.5, expect_reply=True),
+            InitStep(b"\x1b%IR\r", 0.05),
+        ),
+        "XFree86 calcomp driver defaults (9600 8N1, no flow control) and commands",
+    ),
+}
+
+
+def line_setup(protocol: str) -> LineSetup:
+    try:
+        return SETUPS[protocol]
+    except KeyError:
+        raise ValueError(
+            f"unknown tablet protocol {protocol!r} (known: {', '.join(SETUPS)})"
+        ) from None
