@@ -1,0 +1,64 @@
+"""Abstract input events that drive the KAS editor (a device front or a test script).
+
+Pointer positions are in inches of the *screen's* twelve-field (the view), origin at the
+field centre, y up - the tablet front maps tablet counts to these; the editor maps them
+through its view (enlargement, panning) to the working area.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Pointer:
+    x: float
+    y: float
+    down: bool  # stylus touching the tablet
+
+
+@dataclass(frozen=True)
+class Key:
+    key: str  # a typed character ("u", "7", ".") or a name: space return backspace escape tab
+              # up down left right f2
+
+
+@dataclass(frozen=True)
+class MenuPick:
+    item: str  # one of editor.MENU_ITEMS
+
+
+Event = Pointer | Key | MenuPick
+
+
+def parse_script(text: str, name: str = "<script>") -> list[Event]:
+    """Events from a text script, one a line: ``move X Y`` / ``down X Y`` / ``up X Y`` /
+    ``key K`` / ``menu ITEM`` / ``type TEXT`` (one Key per character); ``#`` comments."""
+    from apps.kas.files import KasFileError
+
+    out: list[Event] = []
+    for no, raw in enumerate(text.splitlines(), start=1):
+        line = raw.split("#", 1)[0].strip()
+        if not line:
+            continue
+        word, _, rest = line.partition(" ")
+        try:
+            if word in ("move", "down", "up"):
+                xs, ys = rest.split()
+                x, y = float(xs), float(ys)
+                if not (math.isfinite(x) and math.isfinite(y)):
+                    raise ValueError
+                out.append(Pointer(x, y, word == "down"))
+            elif word == "key" and rest.strip():
+                out.append(Key(rest.strip()))
+            elif word == "menu" and rest.strip():
+                out.append(MenuPick(rest.strip()))
+            elif word == "type":
+                out.extend(Key(ch if ch != " " else "space") for ch in rest)
+            else:
+                raise ValueError
+        except ValueError:
+            raise KasFileError(name, no, f"bad event {line!r} (expected move/down/up X Y, "
+                               "key K, menu ITEM or type TEXT)") from None
+    return out

@@ -1,0 +1,66 @@
+"""PNG, GIF and MP4 export of sequences (imageio; MP4 through imageio-ffmpeg).
+
+Pictures come from ``apps.kas.raster`` (an interim software rasteriser, see there).
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+
+from apps.kas.files import atomic_write
+from apps.kas.model import AnimSequence
+from apps.kas.raster import render
+
+Progress = Callable[[int, int], None]
+
+
+def export(seq: AnimSequence, out: str | os.PathLike[str], width: int = 768,
+           background: str = "black", progress: Progress | None = None) -> Path:
+    """Write ``out`` (.gif, .mp4, or .png = one PNG per frame named out_NNNN.png)."""
+    import imageio.v3 as iio
+
+    out = Path(out)
+    ext = out.suffix.lower()
+    if ext not in (".gif", ".mp4", ".png"):
+        raise ValueError(f"export to .gif, .mp4 or .png, not {out.suffix!r}")
+    if not seq.frames:
+        raise ValueError("the sequence has no frames")
+    n = len(seq)
+
+    def frames():
+        for i, f in enumerate(seq.frames):
+            img = render(f, width, background)
+            if progress:
+                progress(i + 1, n)
+            yield img
+
+    if ext == ".png":
+        for i, img in enumerate(frames(), start=1):
+            target = out.with_name(f"{out.stem}_{i:04d}.png")
+            atomic_write(target, iio.imwrite("<bytes>", img, extension=".png"))
+        return out.with_name(f"{out.stem}_0001.png")
+    tmp = out.with_name(f".{out.stem}.partial{ext}")
+    try:
+        if ext == ".gif":
+            stack = np.stack(list(frames()))
+            iio.imwrite(tmp, stack, extension=".gif", duration=1000 / seq.fps, loop=0)
+        else:
+            import imageio.v2 as iio2
+
+            # Even dimensions for yuv420p; macro_block_size=1 keeps the exact size.
+            with iio2.get_writer(tmp, format="FFMPEG", mode="I", fps=seq.fps,
+                                 codec="libx264", macro_block_size=1,
+                                 ffmpeg_log_level="error",
+                                 output_params=["-pix_fmt", "yuv420p"]) as wr:
+                for img in frames():
+                    h, w = img.shape[:2]
+                    wr.append_data(img[: h - h % 2, : w - w % 2])
+        os.replace(tmp, out)
+    finally:
+        if tmp.exists():
+            tmp.unlink()
+    return out

@@ -1,0 +1,40 @@
+"""A plain software rasteriser for exporting sequences as pictures.
+
+INTERIM: the finished KAS draws on the emulated Sigma T5684 and exports what that screen
+shows; until the Sigma front exists, frames are drawn here with Pillow at any size (the
+twelve-field fills the image), in the thesis palette on a black or white background.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from PIL import Image, ImageDraw
+
+from apps.kas.model import FIELD_H, FIELD_W, PALETTE, Drawing
+
+
+def image_size(width: int) -> tuple[int, int]:
+    return width, round(width * FIELD_H / FIELD_W)
+
+
+def render(frame: Drawing, width: int = 768, background: str = "black") -> np.ndarray:
+    """(h, w, 3) uint8 picture of a frame; only the twelve-field is shown."""
+    w, h = image_size(width)
+    bg = (0, 0, 0) if background == "black" else (255, 255, 255)
+    img = Image.new("RGB", (w, h), bg)
+    draw = ImageDraw.Draw(img)
+    s = w / FIELD_W
+    for chain in frame.chains:
+        px = np.column_stack([(chain.points[:, 0] + FIELD_W / 2) * s,
+                              (FIELD_H / 2 - chain.points[:, 1]) * s])
+        cols = chain.colours
+        for i in range(len(px)):
+            rgb = PALETTE.get(int(cols[i]), ("", (255, 255, 255)))[1]
+            if background != "black" and int(cols[i]) == 1:
+                rgb = (0, 0, 0)
+            if i == 0:
+                if len(px) == 1:
+                    draw.point(tuple(px[0]), fill=rgb)
+                continue
+            draw.line([tuple(px[i - 1]), tuple(px[i])], fill=rgb, width=1)
+    return np.asarray(img)
