@@ -1,0 +1,266 @@
+"""The pad graph: pads (leaves), clusters (internal nodes) and the arcs that map them.
+
+The root, node 0, is the screen: a 768 x 576 cluster. A node may be mapped any number of
+times; a map that would close a cycle is refused. Every edit bumps ``version`` so the
+compiler knows to recompile before the next frame.
+"""
+
+from __future__ import annotations
+
+import operator
+from dataclasses import dataclass, field
+
+from emulator.rainbow.errors import GraphError, RainbowError
+from emulator.rainbow.memory import Allocation
+
+SCREEN = 0
+SCREEN_W, SCREEN_H = 768, 576
+MAX_COORD = 1 << 20  # positions and sizes beyond this are certainly a program error
+MAX_INSTANCES = 200_000  # mapping nodes many times multiplies paths; bound the work
+MAX_VISITS = 1_000_000  # paths through clusters, counted even when they reach no pad
+
+
+@dataclass
+class Pad:
+    id: int
+    width: int
+    height: int
+    depth: int
+    plane: int
+    lut_page: int
+    alloc: Allocation | None  # None for a virtual (depth 0) pad
+
+
+@dataclass
+class Cluster:
+    id: int
+    width: int
+    height: int
+    arcs: list[int] = field(default_factory=list)  # arcs out of this cluster, in map order
+
+
+@dataclass
+class Arc:
+    id: int
+    parent: int
+    child: int
+    x: int
+    y: int
+    priority: int
+    on: bool
+
+
+@dataclass(frozen=True)
+class Instance:
+    """One path screen -> ... -> pad through arcs that are on, with its clipped rectangle."""
+
+    path: tuple[int, ...]  # arc ids
+    key: tuple[int, ...]  # arc priorities from the screen down
+    pad: int
+    x0: int
+    y0: int
+    x1: int
+    y1: int
+    ox: int  # screen position of the pad's (0, 0)
+    oy: int
+
+
+def _as_int(name: str, v: object) -> int:
+    if isinstance(v, bool):
+        raise RainbowError(f"{name} {v!r} is not an integer")
+    try:
+        return operator.index(v)  # ints and numpy integers
+    except TypeError:
+        raise RainbowError(f"{name} {v!r} is not an integer") from None
+
+
+def _check_coord(name: str, v: int) -> int:
+    v = _as_int(name, v)
+    if not -MAX_COORD <= v <= MAX_COORD:
+        raise RainbowError(f"{name} {v!r} out of range (|value| <= {MAX_COORD})")
+    return v
+
+
+def _check_size(name: str, v: int) -> int:
+    v = _as_int(name, v)
+    if not 1 <= v <= MAX_COORD:
+        raise RainbowError(f"{name} {v!r} must be an integer 1..{MAX_COORD}")
+    return v
+
+
+class PadGraph:
+    def __init__(self) -> None:
+        self.nodes: dict[int, Pad | Cluster] = {SCREEN: Cluster(SCREEN, SCREEN_W, SCREEN_H)}
+        self.arcs: dict[int, Arc] = {}
+        self.version = 0
+        self._next_node = 1
+        self._next_arc = 1
+
+    # -- nodes -----------------------------------------------------------------------------
+    def _new_node_id(self, node: int | None) -> int:
+        if node is None:
+            while self._next_node in self.nodes:
+                self._next_node += 1
+            return self._next_node
+        if not isinstance(node, int) or node <= 0 or node >= 1 << 31:
+            raise GraphError(f"node id {node!r} must be 1..2^31-1 (0 is the screen)")
+        if node in self.nodes:
+            raise GraphError(f"node {node} already exists")
+        return node
+
+    def add_pad(
+        self, width: int, height: int, depth: int, plane: int, lut_page: int,
+        alloc: Allocation | None, node: int | None = None,
+    ) -> Pad:
+        nid = self._new_node_id(node)
+        pad = Pad(nid, width, height, depth, plane, lut_page, alloc)
+        self.nodes[nid] = pad
+        self.version += 1
+        return pad
+
+    def add_cluster(self, width: int, height: int, node: int | None = None) -> Cluster:
+        nid = self._new_node_id(node)
+        _check_size("cluster width", width)
+        _check_size("cluster height", height)
+        c = Cluster(nid, width, height)
+        self.nodes[nid] = c
+        self.version += 1
+        return c
+
+    def node(self, nid: int) -> Pad | Cluster:
+        try:
+            return self.nodes[nid]
+        except (KeyError, TypeError):
+            raise GraphError(f"no node {nid!r}") from None
+
+    def pad(self, nid: int) -> Pad:
+        n = self.node(nid)
+        if not isinstance(n, Pad):
+            raise GraphError(f"node {nid} is a cluster, not a pad")
+        return n
+
+    def cluster(self, nid: int) -> Cluster:
+        n = self.node(nid)
+        if not isinstance(n, Cluster):
+            raise GraphError(f"node {nid} is a pad, not a cluster")
+        return n
+
+    def remove_node(self, nid: int) -> Pad | Cluster:
+        if nid == SCREEN:
+            raise GraphError("the screen cannot be destroyed")
+        n = self.node(nid)
+        for a in [a for a in self.arcs.values() if a.parent == nid or a.child == nid]:
+            self.remove_arc(a.id)
+        del self.nodes[nid]
+        self.version += 1
+        return n
+
+    def resize(self, nid: int, width: int, height: int) -> None:
+        if nid == SCREEN:
+            raise GraphError("the screen's size is fixed at 768x576")
+        c = self.cluster(nid)
+        c.width = _check_size("cluster width", width)
+        c.height = _check_size("cluster height", height)
+        self.version += 1
+
+    # -- arcs ------------------------------------------------------------------------------
+    def _reaches(self, start: int, target: int) -> bool:
+        stack, seen = [start], set()
+        while stack:
+            n = stack.pop()
+            if n == target:
+                return True
+            if n in seen:
+                continue
+            seen.add(n)
+            node = self.nodes[n]
+            if isinstance(node, Cluster):
+                stack.extend(self.arcs[a].child for a in node.arcs)
+        return False
+
+    def add_arc(
+        self, parent: int, child: int, x: int, y: int, priority: int, on: bool,
+        arc: int | None = None,
+    ) -> Arc:
+        p = self.cluster(parent)
+        self.node(child)
+        if child == SCREEN:
+            raise GraphError("the screen cannot be mapped into anything")
+        if self._reaches(child, parent):
+            raise GraphError(f"mapping node {child} into {parent} would make a cycle")
+        if arc is None:
+            while self._next_arc in self.arcs:
+                self._next_arc += 1
+            arc = self._next_arc
+        elif not isinstance(arc, int) or arc <= 0 or arc >= 1 << 31:
+            raise GraphError(f"arc id {arc!r} must be 1..2^31-1")
+        elif arc in self.arcs:
+            raise GraphError(f"arc {arc} already exists")
+        a = Arc(arc, parent, child, _check_coord("x", x), _check_coord("y", y),
+                _check_coord("priority", priority), bool(on))
+        self.arcs[arc] = a
+        p.arcs.append(arc)
+        self.version += 1
+        return a
+
+    def arc(self, aid: int) -> Arc:
+        try:
+            return self.arcs[aid]
+        except (KeyError, TypeError):
+            raise GraphError(f"no arc {aid!r}") from None
+
+    def remove_arc(self, aid: int) -> None:
+        a = self.arc(aid)
+        self.cluster(a.parent).arcs.remove(aid)
+        del self.arcs[aid]
+        self.version += 1
+
+    def move(self, aid: int, x: int, y: int) -> None:
+        a = self.arc(aid)
+        a.x, a.y = _check_coord("x", x), _check_coord("y", y)
+        self.version += 1
+
+    def set_priority(self, aid: int, priority: int) -> None:
+        self.arc(aid).priority = _check_coord("priority", priority)
+        self.version += 1
+
+    def set_on(self, aid: int, on: bool) -> None:
+        self.arc(aid).on = bool(on)
+        self.version += 1
+
+    # -- instances -------------------------------------------------------------------------
+    def instances(self) -> list[Instance]:
+        """Every path to a pad through arcs that are on, clipped by each cluster on the way."""
+        out: list[Instance] = []
+        # (node, origin x, origin y, clip rect, path, key)
+        stack = [(SCREEN, 0, 0, (0, 0, SCREEN_W, SCREEN_H), (), ())]
+        visits = 0
+        while stack:
+            nid, ox, oy, clip, path, key = stack.pop()
+            visits += 1
+            if visits > MAX_VISITS:
+                raise GraphError(f"the graph has more than {MAX_VISITS} paths from the screen")
+            node = self.nodes[nid]
+            if isinstance(node, Pad):
+                x0 = max(clip[0], ox)
+                y0 = max(clip[1], oy)
+                x1 = min(clip[2], ox + node.width)
+                y1 = min(clip[3], oy + node.height)
+                if x0 < x1 and y0 < y1:
+                    out.append(Instance(path, key, nid, x0, y0, x1, y1, ox, oy))
+                    if len(out) > MAX_INSTANCES:
+                        raise GraphError(
+                            f"the graph maps pads more than {MAX_INSTANCES} times"
+                        )
+                continue
+            if nid != SCREEN:
+                clip = (max(clip[0], ox), max(clip[1], oy),
+                        min(clip[2], ox + node.width), min(clip[3], oy + node.height))
+            if clip[0] >= clip[2] or clip[1] >= clip[3]:
+                continue
+            for aid in node.arcs:
+                a = self.arcs[aid]
+                if a.on:
+                    stack.append((a.child, ox + a.x, oy + a.y, clip, path + (aid,),
+                                  key + (a.priority,)))
+        return out

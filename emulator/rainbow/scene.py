@@ -1,0 +1,160 @@
+"""Scene files for ``camlab88 rainbow render``: a pad graph, pad contents and a LUT as JSON.
+
+    {"lut": [[index, "#rrggbb"], ...],
+     "nodes": {NAME: {"type": "pad", "width": W, "height": H, "depth": D,
+                      "plane": P, "lut_page": L, "pixels": BASE64 | "fill": V}
+                     | {"type": "cluster", "width": W, "height": H}},
+     "arcs": [{"parent": NAME, "child": NAME, "x": X, "y": Y, "priority": P, "on": B}]}
+
+"screen" is the predefined root. Defaults: plane 0, lut_page 0, x 0, y 0, priority 0,
+on true, fill 0; unlisted LUT entries are black. Every error names the JSON path at fault.
+"""
+
+from __future__ import annotations
+
+import base64
+import binascii
+import json
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from emulator.rainbow.colour import parse_hex
+from emulator.rainbow.device import Rainbow
+from emulator.rainbow.errors import RainbowError
+from emulator.rainbow.graph import SCREEN
+
+
+class SceneError(ValueError):
+    pass
+
+
+def _int(obj: dict, key: str, path: str, default: int | None = None,
+         lo: int | None = None, hi: int | None = None) -> int:
+    if key not in obj:
+        if default is None:
+            raise SceneError(f"{path}.{key}: missing")
+        return default
+    v = obj[key]
+    if not isinstance(v, int) or isinstance(v, bool):
+        raise SceneError(f"{path}.{key}: must be an integer, got {json.dumps(v)}")
+    if (lo is not None and v < lo) or (hi is not None and v > hi):
+        raise SceneError(f"{path}.{key}: {v} is outside {lo}..{hi}")
+    return v
+
+
+def _obj(v: Any, path: str) -> dict:
+    if not isinstance(v, dict):
+        raise SceneError(f"{path}: must be an object")
+    return v
+
+
+def build_scene(scene: Any, device: Rainbow | None = None, where: str = "scene") -> Rainbow:
+    """A device holding the scene (LUT already latched, so a frame shows it at once)."""
+    r = device or Rainbow()
+    top = _obj(scene, "$")
+    for key in top:
+        if key not in ("lut", "nodes", "arcs"):
+            raise SceneError(f"{where}: $.{key}: unknown key (want lut, nodes, arcs)")
+    try:
+        _build(r, top)
+    except SceneError as exc:
+        raise SceneError(f"{where}: {exc}") from None
+    r.lut[:] = r.lut_pending
+    return r
+
+
+def _build(r: Rainbow, top: dict) -> None:
+    lut = top.get("lut", [])
+    if not isinstance(lut, list):
+        raise SceneError("$.lut: must be a list of [index, \"#rrggbb\"]")
+    for n, entry in enumerate(lut):
+        p = f"$.lut[{n}]"
+        if not (isinstance(entry, list) and len(entry) == 2):
+            raise SceneError(f"{p}: must be [index, \"#rrggbb\"]")
+        idx, colour = entry
+        if not isinstance(idx, int) or isinstance(idx, bool) or not 0 <= idx < 4096:
+            raise SceneError(f"{p}[0]: index must be an integer 0..4095")
+        try:
+            r.set_lut(idx, [parse_hex(colour)])
+        except ValueError as exc:
+            raise SceneError(f"{p}[1]: {exc}") from None
+    names: dict[str, int] = {"screen": SCREEN}
+    for name, spec in _obj(top.get("nodes", {}), "$.nodes").items():
+        p = f"$.nodes.{name}"
+        if name == "screen":
+            raise SceneError(f"{p}: 'screen' is the predefined root")
+        spec = _obj(spec, p)
+        kind = spec.get("type")
+        w = _int(spec, "width", p, lo=1)
+        h = _int(spec, "height", p, lo=1)
+        try:
+            if kind == "cluster":
+                names[name] = r.create_cluster(w, h)
+            elif kind == "pad":
+                depth = _int(spec, "depth", p, lo=0, hi=8)
+                plane = _int(spec, "plane", p, 0, 0, 7)
+                page = _int(spec, "lut_page", p, 0, 0, 15)
+                names[name] = pid = r.create_pad(w, h, depth, plane, page)
+                _fill(r, pid, spec, p, w, h, depth)
+            else:
+                raise SceneError(f"{p}.type: must be \"pad\" or \"cluster\", got {kind!r}")
+        except RainbowError as exc:
+            raise SceneError(f"{p}: {exc}") from None
+    arcs = top.get("arcs", [])
+    if not isinstance(arcs, list):
+        raise SceneError("$.arcs: must be a list")
+    for n, spec in enumerate(arcs):
+        p = f"$.arcs[{n}]"
+        spec = _obj(spec, p)
+        ends = []
+        for end in ("parent", "child"):
+            if spec.get(end) not in names:
+                raise SceneError(f"{p}.{end}: no node named {spec.get(end)!r}")
+            ends.append(names[spec[end]])
+        on = spec.get("on", True)
+        if not isinstance(on, bool):
+            raise SceneError(f"{p}.on: must be true or false")
+        try:
+            r.map(ends[0], ends[1], _int(spec, "x", p, 0), _int(spec, "y", p, 0),
+                  _int(spec, "priority", p, 0), on)
+        except RainbowError as exc:
+            raise SceneError(f"{p}: {exc}") from None
+
+
+def _fill(r: Rainbow, pid: int, spec: dict, p: str, w: int, h: int, depth: int) -> None:
+    if "pixels" in spec and "fill" in spec:
+        raise SceneError(f"{p}: give either pixels or fill, not both")
+    if depth == 0:
+        if spec.get("pixels") or spec.get("fill", 0):
+            raise SceneError(f"{p}: a virtual (depth 0) pad has no pixels")
+        return
+    if "pixels" in spec:
+        if not isinstance(spec["pixels"], str):
+            raise SceneError(f"{p}.pixels: must be a base64 string")
+        try:
+            data = base64.b64decode(spec["pixels"], validate=True)
+        except (binascii.Error, ValueError) as exc:
+            raise SceneError(f"{p}.pixels: bad base64 ({exc})") from None
+        if len(data) != w * h:
+            raise SceneError(f"{p}.pixels: {len(data)} bytes, want width*height = {w * h}")
+        a = np.frombuffer(data, np.uint8).reshape(h, w)
+        if a.max(initial=0) >= 1 << depth:
+            bad = int(np.flatnonzero(a.ravel() >= 1 << depth)[0])
+            raise SceneError(f"{p}.pixels: byte {bad} = {a.ravel()[bad]} does not fit depth "
+                             f"{depth}")
+        r.canvas(pid).put(0, 0, a)
+    else:
+        r.canvas(pid).clear(_int(spec, "fill", p, 0, 0, (1 << depth) - 1))
+
+
+def load_scene(path: str | Path, device: Rainbow | None = None) -> Rainbow:
+    path = Path(path)
+    try:
+        scene = json.loads(path.read_text())
+    except json.JSONDecodeError as exc:
+        raise SceneError(f"{path}:{exc.lineno}:{exc.colno}: not JSON ({exc.msg})") from None
+    except OSError as exc:
+        raise SceneError(f"{path}: {exc.strerror}") from None
+    return build_scene(scene, device, str(path))

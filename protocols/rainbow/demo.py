@@ -1,0 +1,99 @@
+"""The ``camlab88 rainbow run`` demo program (client side only).
+
+On a virtual background pad: the Appendix I transparency example in its own cluster (the
+polygon and the splodges drift independently), a double-buffered pad of bouncing balls
+redrawn every frame and itself moving, and a message area. The middle mouse button pops
+up a menu ('Do nothing' first); the choice appears as a coloured message.
+"""
+
+from __future__ import annotations
+
+import math
+
+from protocols.rainbow import transparency
+from protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
+from protocols.rainbow.events import MouseEvent
+from protocols.rainbow.ui import DoubleBuffer, MessageArea, PopupMenu
+
+BG_PAGE, BALL_PAGE, MSG_PAGE = 4, 5, 6
+BALLS_W, BALLS_H = 300, 220
+BALL_COLOURS = ["#101018", "#ff5050", "#50ff50", "#5080ff", "#ffff60", "#ff60ff", "#60ffff",
+                "#ffffff"]
+MENU_ITEMS = ["Freeze polygon", "Freeze splodges", "Faster", "Slower", "Do nothing"]
+
+
+class Demo:
+    def __init__(self, client: RainbowClient) -> None:
+        c = self.client = client
+        c.set_lut(BG_PAGE * 256, ["#23304a"])
+        bg = c.create_pad(SCREEN_W, SCREEN_H, 0, lut_page=BG_PAGE)
+        c.map(SCREEN, bg, 0, 0, priority=0)
+        self.tx_cluster = c.create_cluster(470, SCREEN_H - 60)
+        c.map(SCREEN, self.tx_cluster, 10, 50, priority=1)
+        self.tx = transparency.build(c, self.tx_cluster, poly_at=(110, 100), splodge_at=(40, 40))
+        c.set_lut(BALL_PAGE * 256, BALL_COLOURS)
+        self.db = DoubleBuffer(c, SCREEN, BALLS_W, BALLS_H, 3, lut_page=BALL_PAGE,
+                               x=460, y=300, priority=2)
+        self.msg = MessageArea(c, 10, 8, 470, 34, MSG_PAGE, priority=3)
+        self.msg.show("Appendix I transparency  +  double-buffered pads\n"
+                      "middle button: menu", "#c8e8ff")
+        self.menu = PopupMenu(c, MENU_ITEMS, lut_page=7, priority=50)
+        self.balls = [[40.0 + 37 * i, 30.0 + 23 * i, 2.0 + 0.7 * i, 1.3 + 0.4 * i]
+                      for i in range(6)]
+        self.t = 0
+        self.speed = 1.0
+        self.frozen = {"poly": False, "splodge": False}
+        self.poly_phase = self.spl_phase = 0.0
+
+    def _handle(self, e: object) -> None:
+        if not isinstance(e, MouseEvent):
+            return
+        if e.button == 2 and e.pressed:
+            self.menu.open(e.x, e.y)
+        elif self.menu.open_ and e.button == 0:
+            self.menu.track(e.x, e.y)
+        elif self.menu.open_ and e.button == 2 and not e.pressed:
+            choice = self.menu.close()
+            if choice == "Freeze polygon":
+                self.frozen["poly"] = not self.frozen["poly"]
+            elif choice == "Freeze splodges":
+                self.frozen["splodge"] = not self.frozen["splodge"]
+            elif choice == "Faster":
+                self.speed *= 1.5
+            elif choice == "Slower":
+                self.speed /= 1.5
+            if choice is not None:
+                i = MENU_ITEMS.index(choice)
+                self.msg.show(f"Selected: {choice}", self.menu.highlights[i])
+
+    def step(self) -> tuple[int, int]:
+        """One frame: read input, move pads, redraw the back buffer, swap, show."""
+        c = self.client
+        for e in c.poll_events():
+            self._handle(e)
+        self.t += 1
+        if not self.frozen["poly"]:
+            self.poly_phase += 0.03 * self.speed
+        if not self.frozen["splodge"]:
+            self.spl_phase += 0.017 * self.speed
+        a, b = self.poly_phase, self.spl_phase
+        c.move(self.tx.poly_arc, int(115 + 95 * math.sin(a)), int(160 + 110 * math.sin(1.7 * a)))
+        c.move(self.tx.splodge_arc, int(60 + 50 * math.cos(b)), int(120 + 100 * math.sin(b)))
+        back = self.db.back
+        c.clear(back, 0)
+        c.rect(back, 0, 0, BALLS_W, BALLS_H, 7, filled=False)
+        for i, ball in enumerate(self.balls):
+            x, y, vx, vy = ball
+            x, y = x + vx * self.speed, y + vy * self.speed
+            if not 14 <= x <= BALLS_W - 14:
+                vx = -vx
+                x = min(max(x, 14), BALLS_W - 14)
+            if not 14 <= y <= BALLS_H - 14:
+                vy = -vy
+                y = min(max(y, 14), BALLS_H - 14)
+            ball[:] = [x, y, vx, vy]
+            c.circle(back, int(x), int(y), 12, 1 + i % 6)
+        c.text(back, 6, BALLS_H - 14, f"frame {self.t}", 7)
+        self.db.swap()
+        self.db.move(460 + int(20 * math.sin(self.t / 40)), 300 + int(30 * math.cos(self.t / 50)))
+        return c.wait_frame()

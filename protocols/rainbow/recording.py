@@ -1,0 +1,118 @@
+"""Recording and replay of a Rainbow session: the command stream, its replies, and the
+input events injected into the device, in the order they happened.
+
+File format (text, one entry a line)::
+
+    # camlab88 rainbow recording v1
+    > <hex of one command frame>
+    < <hex of its reply frame>
+    i <hex of one encoded input event>
+
+Replay feeds the commands to a fresh device, injects the events at the same points, and
+checks that every reply matches the recorded one.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from protocols.rainbow.events import Event, decode_events, encode_event
+from protocols.rainbow.transport import Transport
+
+MAGIC = "# camlab88 rainbow recording v1"
+
+
+class RecordingError(ValueError):
+    pass
+
+
+@dataclass
+class Recording:
+    entries: list[tuple[str, bytes]] = field(default_factory=list)
+
+    def save(self, path: str | Path) -> None:
+        path = Path(path)
+        text = MAGIC + "\n" + "".join(f"{d} {b.hex()}\n" for d, b in self.entries)
+        fd, tmp = tempfile.mkstemp(dir=path.parent or ".", prefix=path.name, suffix=".tmp")
+        try:
+            with os.fdopen(fd, "w") as f:
+                f.write(text)
+                f.flush()
+                os.fsync(f.fileno())
+            os.replace(tmp, path)
+        except BaseException:
+            Path(tmp).unlink(missing_ok=True)
+            raise
+
+    @classmethod
+    def load(cls, path: str | Path) -> Recording:
+        lines = Path(path).read_text().splitlines()
+        if not lines or lines[0].strip() != MAGIC:
+            raise RecordingError(f"{path}:1: not a camlab88 rainbow recording")
+        rec = cls()
+        for n, line in enumerate(lines[1:], 2):
+            if not line.strip():
+                continue
+            d, _, h = line.partition(" ")
+            if d not in (">", "<", "i"):
+                raise RecordingError(f"{path}:{n}: unknown direction {d!r}")
+            try:
+                data = bytes.fromhex(h)
+            except ValueError:
+                raise RecordingError(f"{path}:{n}: bad hex") from None
+            if d == "i":
+                decode_events(data, f"{path}:{n}")
+            rec.entries.append((d, data))
+        return rec
+
+
+class RecordingTransport:
+    """Wraps a transport and writes down every frame and reply that pass through it."""
+
+    def __init__(self, inner: Transport, recording: Recording | None = None) -> None:
+        self.inner = inner
+        self.recording = recording or Recording()
+
+    def call(self, frame: bytes) -> bytes:
+        reply = self.inner.call(frame)
+        self.recording.entries += [(">", frame), ("<", reply)]
+        return reply
+
+    def record_input(self, event: Event) -> None:
+        """The wiring calls this as it injects an input event into the device."""
+        self.recording.entries.append(("i", encode_event(event)))
+
+    def close(self) -> None:
+        self.inner.close()
+
+
+@dataclass
+class ReplayResult:
+    commands: int = 0
+    events: int = 0
+    mismatches: list[str] = field(default_factory=list)
+
+
+def replay(rec: Recording, call: Callable[[bytes], bytes],
+           inject: Callable[[Event], None]) -> ReplayResult:
+    result = ReplayResult()
+    expect: bytes | None = None
+    for n, (d, data) in enumerate(rec.entries):
+        if d == ">":
+            expect = call(data)
+            result.commands += 1
+        elif d == "<":
+            if expect is None:
+                result.mismatches.append(f"entry {n}: a reply with no command before it")
+            elif expect != data:
+                result.mismatches.append(f"entry {n}: reply differs from the recording")
+            expect = None
+        else:
+            for e in decode_events(data, f"entry {n}"):
+                inject(e)
+                result.events += 1
+    return result

@@ -1,0 +1,45 @@
+"""Double buffering by two pads, one of which is on (§6.2.1, §6.3.2).
+
+The program draws into ``back`` while ``front`` is shown; ``swap`` turns the arcs over,
+so the new picture appears whole at the next frame and nothing is copied.
+"""
+
+from __future__ import annotations
+
+from protocols.rainbow.client import RainbowClient
+
+
+class DoubleBuffer:
+    def __init__(self, client: RainbowClient, parent: int, width: int, height: int,
+                 depth: int, plane: int = 0, lut_page: int = 0, x: int = 0, y: int = 0,
+                 priority: int = 0) -> None:
+        self.client = client
+        self.pads = (client.create_pad(width, height, depth, plane, lut_page),
+                     client.create_pad(width, height, depth, plane, lut_page))
+        self.arcs = (client.map(parent, self.pads[0], x, y, priority, on=True),
+                     client.map(parent, self.pads[1], x, y, priority, on=False))
+        self.shown = 0
+        self.swaps = 0
+
+    @property
+    def front(self) -> int:
+        return self.pads[self.shown]
+
+    @property
+    def back(self) -> int:
+        return self.pads[1 - self.shown]
+
+    def swap(self) -> None:
+        """Show the back pad, hide the front one (both take effect at the next frame)."""
+        self.client.set_on(self.arcs[1 - self.shown], True)
+        self.client.set_on(self.arcs[self.shown], False)
+        self.shown = 1 - self.shown
+        self.swaps += 1
+
+    def move(self, x: int, y: int) -> None:
+        for a in self.arcs:
+            self.client.move(a, x, y)
+
+    def destroy(self) -> None:
+        for p in self.pads:
+            self.client.destroy(p)
