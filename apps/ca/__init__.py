@@ -1,0 +1,1 @@
+"""The programmable cellular automaton of thesis chapter 7: rules, engine, patterns, logs."""

@@ -1,0 +1,383 @@
+"""The cellular automaton engine: a sparse 65536 x 65536 plane stepped by message passing.
+
+Live cells are kept as three int64 arrays (row, column, life-form) sorted row by row, the
+modern form of the thesis's figure 7.10 (rows with vectors of (position, type)).  A step
+sends messages only from living cells (inside the advance area, if one is set), so work is
+proportional to the live cells and their message reach, never to the plane.  Deterministic:
+the only randomness (section 8.1 probabilistic outcomes) is a hash of seed, position and
+generation.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+import numpy as np
+
+from apps.ca import kernels
+from apps.ca.rules import RuleSet
+from apps.ca.tables import compile_rules
+
+SIDE = 65536
+CENTRE = SIDE // 2
+EDGES = ("wrap", "bounded")
+# The dense workspace is used while the reach box has at most this many cells per sender
+# (plus a constant), and never above the absolute cap; otherwise the hash table is used.
+WINDOW_CELLS_PER_SENDER = 64
+WINDOW_MIN = 1 << 16
+WINDOW_MAX = 1 << 26
+# The dense fast path keeps at least one live cell per this many window cells, and a
+# margin of this many cells beyond the message reach so the window is not regrown often.
+DENSE_MIN_FILL = 64
+DENSE_MARGIN = 16
+
+
+@dataclass(frozen=True)
+class Rect:
+    """Inclusive cell rectangle on the plane."""
+
+    x0: int
+    y0: int
+    x1: int
+    y1: int
+
+    def __post_init__(self) -> None:
+        if not (0 <= self.x0 <= self.x1 < SIDE and 0 <= self.y0 <= self.y1 < SIDE):
+            raise ValueError(f"rectangle {self.x0},{self.y0}..{self.x1},{self.y1} is not "
+                             f"inside the {SIDE}x{SIDE} plane with x0<=x1, y0<=y1")
+
+    @classmethod
+    def from_corners(cls, xa: int, ya: int, xb: int, yb: int) -> Rect:
+        return cls(min(xa, xb), min(ya, yb), max(xa, xb), max(ya, yb))
+
+    @property
+    def width(self) -> int:
+        return self.x1 - self.x0 + 1
+
+    @property
+    def height(self) -> int:
+        return self.y1 - self.y0 + 1
+
+
+FULL = Rect(0, 0, SIDE - 1, SIDE - 1)
+
+
+def _sorted(ys: np.ndarray, xs: np.ndarray, ts: np.ndarray):
+    order = np.argsort(ys * SIDE + xs, kind="stable")
+    return ys[order], xs[order], ts[order]
+
+
+class Engine:
+    """State of the plane plus the rules; the model behind the ``ca`` program."""
+
+    def __init__(self, rules: RuleSet | None = None, edges: str = "wrap", seed: int = 0) -> None:
+        if edges not in EDGES:
+            raise ValueError(f"edges must be one of {EDGES}, not {edges!r}")
+        self.rules = rules
+        self.edges = edges
+        self.seed = int(seed)
+        self.generation = 0
+        self.advance_area: Rect | None = None
+        self._ys = np.zeros(0, np.int64)
+        self._xs = np.zeros(0, np.int64)
+        self._ts = np.zeros(0, np.int64)
+        # While the population is dense, the state may instead live in a dense window
+        # (row0, col0, uint8 type grid); the sparse arrays are rebuilt on demand.
+        self._dense: tuple[int, int, np.ndarray] | None = None
+        self._dense_pop = 0
+        self._buffers: tuple[np.ndarray, np.ndarray] | None = None
+        self._hash: tuple[np.ndarray, np.ndarray] | None = None
+        self.last_kernel = ""
+
+    # -- the two storage forms ------------------------------------------------------
+    def _sync(self) -> None:
+        if self._dense is None:
+            return
+        y0, x0, grid = self._dense
+        r, c = np.nonzero(grid)  # row-major order: already sorted
+        self._ts = grid[r, c].astype(np.int64)
+        self._ys = r.astype(np.int64) + y0
+        self._xs = c.astype(np.int64) + x0
+        self._dense = None
+
+    @property
+    def ys(self) -> np.ndarray:
+        self._sync()
+        return self._ys
+
+    @ys.setter
+    def ys(self, value: np.ndarray) -> None:
+        self._sync()
+        self._ys = value
+
+    @property
+    def xs(self) -> np.ndarray:
+        self._sync()
+        return self._xs
+
+    @xs.setter
+    def xs(self, value: np.ndarray) -> None:
+        self._sync()
+        self._xs = value
+
+    @property
+    def ts(self) -> np.ndarray:
+        self._sync()
+        return self._ts
+
+    @ts.setter
+    def ts(self, value: np.ndarray) -> None:
+        self._sync()
+        self._ts = value
+
+    # -- rules and options ------------------------------------------------------
+    def set_rules(self, rules: RuleSet) -> None:
+        """Change rules (mid-run too); life-forms without rules die next generation."""
+        compile_rules(rules)
+        self.rules = rules
+
+    def set_advance_area(self, rect: Rect | None) -> None:
+        """Apply rules only inside ``rect``; outside is frozen and invisible to the inside."""
+        self.advance_area = rect
+
+    # -- cells ----------------------------------------------------------------
+    @property
+    def population(self) -> int:
+        if self._dense is not None:
+            return self._dense_pop
+        return int(self._ts.shape[0])
+
+    def cells(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(x, y, type) arrays of every live cell, row by row."""
+        return self.xs.copy(), self.ys.copy(), self.ts.copy()
+
+    def set_cells(self, xs: Iterable[int] | np.ndarray, ys: Iterable[int] | np.ndarray,
+                  ts: Iterable[int] | np.ndarray) -> None:
+        """Write many cells at once (type 0 erases); later entries win."""
+        nx = np.asarray(xs, np.int64).ravel()
+        ny = np.asarray(ys, np.int64).ravel()
+        nt = np.broadcast_to(np.asarray(ts, np.int64), nx.shape).ravel()
+        if not (nx.shape == ny.shape):
+            raise ValueError("xs and ys differ in length")
+        if nx.size == 0:
+            return
+        if nx.min() < 0 or ny.min() < 0 or nx.max() >= SIDE or ny.max() >= SIDE:
+            raise ValueError(f"cell position outside the {SIDE}x{SIDE} plane")
+        if nt.min() < 0:
+            raise ValueError("life-form numbers are >= 0")
+        old_keys = self.ys * SIDE + self.xs
+        new_keys = ny * SIDE + nx
+        # Last write of each key wins: unique over the reversed list.
+        rk, first = np.unique(new_keys[::-1], return_index=True)
+        rt = nt[::-1][first]
+        keep = ~np.isin(old_keys, rk)
+        keys = np.concatenate([old_keys[keep], rk[rt > 0]])
+        types = np.concatenate([self.ts[keep], rt[rt > 0]])
+        order = np.argsort(keys, kind="stable")
+        keys = keys[order]
+        self.ts = types[order]
+        self.ys = keys // SIDE
+        self.xs = keys - self.ys * SIDE
+
+    def set(self, x: int, y: int, value: int) -> None:
+        """Edit one cell (0 = dead)."""
+        self.set_cells([x], [y], [value])
+
+    def get(self, x: int, y: int) -> int:
+        keys = self.ys * SIDE + self.xs
+        key = y * SIDE + x
+        i = int(np.searchsorted(keys, key))
+        if i < keys.shape[0] and keys[i] == key:
+            return int(self.ts[i])
+        return 0
+
+    def _in_rect(self, rect: Rect) -> np.ndarray:
+        return ((self.xs >= rect.x0) & (self.xs <= rect.x1)
+                & (self.ys >= rect.y0) & (self.ys <= rect.y1))
+
+    def cells_in_rect(self, rect: Rect) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(x, y, type) of live cells inside ``rect``; rows located by binary search."""
+        keys = self.ys * SIDE + self.xs
+        lo = int(np.searchsorted(keys, rect.y0 * SIDE + rect.x0))
+        hi = int(np.searchsorted(keys, rect.y1 * SIDE + rect.x1, side="right"))
+        xs, ys, ts = self.xs[lo:hi], self.ys[lo:hi], self.ts[lo:hi]
+        m = (xs >= rect.x0) & (xs <= rect.x1)
+        return xs[m], ys[m], ts[m]
+
+    def clear(self, rect: Rect | None = None) -> None:
+        """Remove every life-form (in ``rect``, or everywhere)."""
+        if rect is None:
+            self.ys, self.xs, self.ts = (np.zeros(0, np.int64) for _ in range(3))
+            return
+        keep = ~self._in_rect(rect)
+        self.ys, self.xs, self.ts = self.ys[keep], self.xs[keep], self.ts[keep]
+
+    def density(self, x0: int, y0: int, cells_per_pixel: int, width: int,
+                height: int) -> np.ndarray:
+        """Live-cell counts per pixel, each pixel ``cells_per_pixel`` cells square (subpixel
+        zoom); pixel (0, 0) starts at cell (x0, y0); the view wraps round the plane."""
+        k = int(cells_per_pixel)
+        if k < 1:
+            raise ValueError("cells_per_pixel must be >= 1")
+        px = ((self.xs - x0) % SIDE) // k
+        py = ((self.ys - y0) % SIDE) // k
+        m = (px < width) & (py < height)
+        out = np.zeros(height * width, np.int64)
+        np.add.at(out, py[m] * width + px[m], 1)
+        return out.reshape(height, width)
+
+    # -- statistics -------------------------------------------------------------
+    def by_type(self) -> dict[int, int]:
+        types, counts = np.unique(self.ts, return_counts=True)
+        return {int(t): int(c) for t, c in zip(types, counts)}
+
+    def bbox(self) -> Rect | None:
+        """Smallest rectangle holding every live cell (plane coordinates, no wrap)."""
+        if self.population == 0:
+            return None
+        return Rect(int(self.xs.min()), int(self.ys.min()), int(self.xs.max()),
+                    int(self.ys.max()))
+
+    def stats(self) -> dict:
+        box = self.bbox()
+        return {
+            "generation": self.generation,
+            "population": self.population,
+            "by_type": {str(k): v for k, v in self.by_type().items()},
+            "bbox": None if box is None else [box.x0, box.y0, box.x1, box.y1],
+        }
+
+    # -- stepping ----------------------------------------------------------------
+    def step(self, generations: int = 1) -> None:
+        for _ in range(int(generations)):
+            self._step_once()
+
+    def _step_once(self) -> None:
+        if self.rules is None:
+            raise RuntimeError("no rules loaded")
+        t = compile_rules(self.rules)
+        if self._try_dense(t):
+            self.generation += 1
+            return
+        self._sync()
+        area = self.advance_area
+        if area is None or area == FULL:
+            ys, xs, ts = self.ys, self.xs, self.ts
+            frozen = None
+            clip = FULL
+        else:
+            inside = self._in_rect(area)
+            ys, xs, ts = self.ys[inside], self.xs[inside], self.ts[inside]
+            frozen = ~inside
+            clip = area
+        bops, bvals = kernels.broadcasts(ts, t.bcast_op, t.bcast_val)
+        common = (t.send_start, t.send_dy, t.send_dx, t.send_op, t.send_val, bops, bvals,
+                  t.lookup, t.interp_kind, t.interp_a, t.interp_b, t.out_start, t.out_thresh,
+                  t.out_form, self.generation, self.seed)
+        n = ys.shape[0]
+        if n == 0:
+            ny = nx = nt = np.zeros(0, np.int64)
+        else:
+            sends = n * t.sends_per_cell
+            y0 = int(ys[0]) - t.reach_y
+            y1 = int(ys[-1]) + t.reach_y
+            x0 = int(xs.min()) - t.reach_x
+            x1 = int(xs.max()) + t.reach_x
+            inside_plane = y0 >= 0 and x0 >= 0 and y1 < SIDE and x1 < SIDE
+            if self.edges == "bounded" or inside_plane:
+                y0, x0 = max(y0, clip.y0), max(x0, clip.x0)
+                y1, x1 = min(y1, clip.y1), min(x1, clip.x1)
+            area_cells = max(0, y1 - y0 + 1) * max(0, x1 - x0 + 1)
+            window_ok = (inside_plane or self.edges == "bounded") and area_cells <= min(
+                WINDOW_MAX, WINDOW_MIN + WINDOW_CELLS_PER_SENDER * sends)
+            if area_cells == 0:
+                ny = nx = nt = np.zeros(0, np.int64)
+            elif window_ok:
+                self.last_kernel = "window"
+                ny, nx, nt = kernels.step_window(
+                    ys, xs, ts, y0, x0, y1 - y0 + 1, x1 - x0 + 1, *common,
+                    min(area_cells, sends))
+            else:
+                self.last_kernel = "hash"
+                table, order = self._hash_scratch(sends)
+                ny, nx, nt = kernels.step_hash(
+                    ys, xs, ts, self.edges == "wrap", clip.y0, clip.y1, clip.x0, clip.x1,
+                    *common, table, order)
+        if frozen is not None and frozen.any():
+            ny, nx, nt = _sorted(np.concatenate([ny, self.ys[frozen]]),
+                                 np.concatenate([nx, self.xs[frozen]]),
+                                 np.concatenate([nt, self.ts[frozen]]))
+        self.ys, self.xs, self.ts = ny, nx, nt
+        self.generation += 1
+
+    def _hash_scratch(self, sends: int) -> tuple[np.ndarray, np.ndarray]:
+        """Hash table scratch space (kept empty between generations), at least twice the
+        messages sent; reallocated only when it must grow."""
+        cap = 1024
+        while cap < 2 * sends + 16:
+            cap *= 2
+        if self._hash is None or self._hash[0].shape[0] < cap:
+            table = np.empty((cap, 2), np.int64)
+            table[:, 0] = -1
+            self._hash = (table, np.empty(cap, np.int64))
+        return self._hash
+
+    # -- dense fast path ------------------------------------------------------------
+    def _try_dense(self, t) -> bool:
+        """Step as dense grid passes when the rules allow it and the population is dense."""
+        plan = t.dense
+        if plan is None or (self.advance_area is not None and self.advance_area != FULL):
+            self._sync()
+            return False
+        my, mx = t.reach_y, t.reach_x
+        if self._dense is not None:
+            y0, x0, grid = self._dense
+            h, w = grid.shape
+            edge = (grid[:my].any() or grid[h - my:].any() or grid[:, :mx].any()
+                    or grid[:, w - mx:].any()) if (my or mx) else False
+            if edge or self._dense_pop * DENSE_MIN_FILL < h * w:
+                self._sync()  # grow (or leave) the window
+        if self._dense is None:
+            n = self._ts.shape[0]
+            if n == 0 or int(self._ts.max()) > 255:
+                return False
+            pad_y, pad_x = my + DENSE_MARGIN, mx + DENSE_MARGIN
+            y0 = int(self._ys[0]) - pad_y
+            y1 = int(self._ys[-1]) + pad_y
+            x0 = int(self._xs.min()) - pad_x
+            x1 = int(self._xs.max()) + pad_x
+            area_cells = (y1 - y0 + 1) * (x1 - x0 + 1)
+            if (y0 < 0 or x0 < 0 or y1 >= SIDE or x1 >= SIDE or area_cells > WINDOW_MAX
+                    or n * DENSE_MIN_FILL < area_cells):
+                return False
+            grid = np.zeros((y1 - y0 + 1, x1 - x0 + 1), np.uint8)
+            grid[self._ys - y0, self._xs - x0] = self._ts
+            self._dense = (y0, x0, grid)
+            self._dense_pop = n
+        y0, x0, grid = self._dense
+        # Reuse the output grid between generations: fresh pages cost more than reuse.
+        out, acc = self._buffers if self._buffers is not None else (None, None)
+        if out is None or out.shape != grid.shape or acc.dtype != plan.msg_dtype:
+            out = np.empty_like(grid)
+            acc = np.zeros(grid.shape[1], plan.msg_dtype)
+        self._dense_pop = int(kernels.dense_step(grid, out, plan.etype, plan.edy, plan.edx,
+                                                 plan.eop, plan.evals, plan.lut, acc))
+        self._dense = (y0, x0, out)
+        self._buffers = (grid, acc)  # the old grid becomes the next output buffer
+        self.last_kernel = "dense"
+        return True
+
+    # -- copies -------------------------------------------------------------------
+    def copy(self) -> Engine:
+        self._sync()
+        e = Engine(self.rules, self.edges, self.seed)
+        e.generation = self.generation
+        e.advance_area = self.advance_area
+        e.ys, e.xs, e.ts = self.ys.copy(), self.xs.copy(), self.ts.copy()
+        return e
+
+    def same_state(self, other: Engine) -> bool:
+        return (self.generation == other.generation
+                and np.array_equal(self.ys, other.ys) and np.array_equal(self.xs, other.xs)
+                and np.array_equal(self.ts, other.ts))

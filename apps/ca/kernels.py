@@ -1,0 +1,281 @@
+"""numba kernels for one generation of the message-passing automaton (thesis section 7.5).
+
+Two interchangeable kernels give identical results:
+
+* ``step_window`` uses a dense message workspace covering only the live cells' bounding box
+  plus the message reach (the thesis's row workspace, widened to the whole box because a
+  few megabytes are cheap today);
+* ``step_hash`` uses an open-addressing hash table keyed by the packed cell position, so work
+  and memory follow the live cells and their reach even when they are scattered over the
+  whole 65536 x 65536 plane.
+
+Messages are applied in the thesis's order: senders row by row, left to right, each sender's
+grid row by row; so mixed operations (+ then |, ...) give the same result in both kernels.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+SIDE = 65536
+MASK = 0xFFFF
+LOOKUP_SIZE = 1 << 16
+M32 = 0xFFFFFFFF
+
+
+@njit(cache=True, inline="always")
+def _apply(cur: int, op: int, val: int) -> int:
+    if op == 1:
+        return (cur + val) & M32
+    if op == 2:
+        return cur | val
+    if op == 3:
+        return cur & val
+    return cur ^ val
+
+
+@njit(cache=True, inline="always")
+def _mix64(z: np.uint64) -> np.uint64:
+    z = (z ^ (z >> np.uint64(30))) * np.uint64(0xBF58476D1CE4E5B9)
+    z = (z ^ (z >> np.uint64(27))) * np.uint64(0x94D049BB133111EB)
+    return z ^ (z >> np.uint64(31))
+
+
+@njit(cache=True)
+def rand32(seed: int, x: int, y: int, gen: int) -> int:
+    """Reproducible 32-bit random number from seed, cell position and generation."""
+    z = _mix64(np.uint64(seed) + np.uint64(0x9E3779B97F4A7C15))
+    z = _mix64(z ^ (np.uint64(y) << np.uint64(16) | np.uint64(x)))
+    z = _mix64(z ^ np.uint64(gen))
+    return int(z >> np.uint64(32))
+
+
+@njit(cache=True)
+def _slow_match(v, kind, a, b) -> int:
+    """First matching interpretation line for a value beyond the lookup table."""
+    for j in range(kind.shape[0]):
+        if kind[j] == 0:
+            hit = v == a[j]
+        elif kind[j] == 1:
+            hit = (v & a[j]) == b[j]
+        else:
+            hit = a[j] <= v <= b[j]
+        if hit:
+            return j
+    return -1
+
+
+@njit(cache=True)
+def _choose(i, x, y, gen, seed, out_start, thresh, forms) -> int:
+    """Life-form of outcome ``i`` (random choice if it has several)."""
+    s = out_start[i]
+    e = out_start[i + 1]
+    r = rand32(seed, x, y, gen)
+    for j in range(s, e):
+        if r < thresh[j]:
+            return forms[j]
+    return forms[e - 1]
+
+
+@njit(cache=True)
+def broadcasts(ts, bcast_op, bcast_val):
+    """The broadcast operations of this generation, in sender order, runs of one op merged."""
+    ops = np.empty(ts.shape[0], np.int64)
+    vals = np.empty(ts.shape[0], np.int64)
+    n = 0
+    for i in range(ts.shape[0]):
+        t = ts[i]
+        if t >= bcast_op.shape[0]:
+            continue
+        op = bcast_op[t]
+        if op == 0:
+            continue
+        v = bcast_val[t]
+        if n > 0 and ops[n - 1] == op:
+            vals[n - 1] = _apply(vals[n - 1], op, v)  # same op composes into one
+        else:
+            ops[n] = op
+            vals[n] = v
+            n += 1
+    return ops[:n], vals[:n]
+
+
+@njit(cache=True)
+def step_window(ys, xs, ts, wy0, wx0, h, w, start, sdy, sdx, sop, sval, bops, bvals,
+                lookup, kind, a, b, out_start, thresh, forms, gen, seed, cap):
+    """One generation with a dense workspace over rows wy0..wy0+h-1, columns wx0..wx0+w-1.
+
+    Messages landing outside the window are dropped: the caller makes the window the
+    intersection of the reach box, the plane and the advance area.
+    """
+    msg = np.zeros((h, w), np.uint32)
+    recv = np.zeros((h, w), np.uint8)
+    ntypes = start.shape[0] - 1
+    for i in range(ys.shape[0]):
+        t = ts[i]
+        if t >= ntypes:
+            continue
+        y = ys[i] - wy0
+        x = xs[i] - wx0
+        for k in range(start[t], start[t + 1]):
+            ty = y + sdy[k]
+            tx = x + sdx[k]
+            if 0 <= ty < h and 0 <= tx < w:
+                msg[ty, tx] = _apply(np.int64(msg[ty, tx]), sop[k], sval[k])
+                recv[ty, tx] = 1
+    oy = np.empty(cap, np.int64)
+    ox = np.empty(cap, np.int64)
+    ot = np.empty(cap, np.int64)
+    n = 0
+    nb = bops.shape[0]
+    for r in range(h):
+        for c in range(w):
+            if recv[r, c] == 0:
+                continue
+            v = np.int64(msg[r, c])
+            for j in range(nb):
+                v = _apply(v, bops[j], bvals[j])
+            i = lookup[v] if v < LOOKUP_SIZE else _slow_match(v, kind, a, b)
+            if i < 0:
+                continue
+            s = out_start[i]
+            if out_start[i + 1] - s == 1:
+                t = forms[s]
+            else:
+                t = _choose(i, c + wx0, r + wy0, gen, seed, out_start, thresh, forms)
+            if t > 0:
+                oy[n] = r + wy0
+                ox[n] = c + wx0
+                ot[n] = t
+                n += 1
+    return oy[:n], ox[:n], ot[:n]
+
+
+@njit(cache=True)
+def step_hash(ys, xs, ts, wrap, cy0, cy1, cx0, cx1, start, sdy, sdx, sop, sval, bops, bvals,
+              lookup, kind, a, b, out_start, thresh, forms, gen, seed, table, order):
+    """One generation with a hash-table workspace; messages outside [cy0..cy1]x[cx0..cx1]
+    (the advance area, or the plane) are dropped; with ``wrap`` positions wrap at 65536.
+
+    ``table`` (cap x 2, key -1 = empty, cap a power of two >= twice the messages sent) and
+    ``order`` (cap) are scratch space kept by the caller; used slots are emptied again on
+    return, so no per-generation clearing of the whole table is needed."""
+    cap = table.shape[0]
+    bits = 0
+    while (1 << bits) < cap:
+        bits += 1
+    shift = np.uint64(64 - bits)
+    hmask = cap - 1
+    # key and value side by side (one cache line); slots keep a row's cells together
+    # (row hashed, column added) because senders arrive row by row.
+    used = 0
+    ntypes = start.shape[0] - 1
+    for i in range(ys.shape[0]):
+        t = ts[i]
+        if t >= ntypes:
+            continue
+        for k in range(start[t], start[t + 1]):
+            ty = ys[i] + sdy[k]
+            tx = xs[i] + sdx[k]
+            if wrap:
+                ty &= MASK
+                tx &= MASK
+            if ty < cy0 or ty > cy1 or tx < cx0 or tx > cx1:
+                continue
+            key = ty * SIDE + tx
+            base = np.int64((np.uint64(ty) * np.uint64(0x9E3779B97F4A7C15)) >> shift)
+            slot = (base + tx) & hmask
+            while table[slot, 0] != -1 and table[slot, 0] != key:
+                slot = (slot + 1) & hmask
+            if table[slot, 0] == -1:
+                table[slot, 0] = key
+                table[slot, 1] = 0
+                order[used] = slot
+                used += 1
+            table[slot, 1] = _apply(table[slot, 1], sop[k], sval[k])
+    okey = np.empty(used, np.int64)
+    ot = np.empty(used, np.int64)
+    n = 0
+    nb = bops.shape[0]
+    for u in range(used):
+        slot = order[u]
+        key = table[slot, 0]
+        v = table[slot, 1]
+        for j in range(nb):
+            v = _apply(v, bops[j], bvals[j])
+        y = key // SIDE
+        x = key - y * SIDE
+        i = lookup[v] if v < LOOKUP_SIZE else _slow_match(v, kind, a, b)
+        if i < 0:
+            continue
+        s = out_start[i]
+        if out_start[i + 1] - s == 1:
+            t = forms[s]
+        else:
+            t = _choose(i, x, y, gen, seed, out_start, thresh, forms)
+        if t > 0:
+            okey[n] = key
+            ot[n] = t
+            n += 1
+    for u in range(used):
+        table[order[u], 0] = -1
+    okey = okey[:n]
+    ot = ot[:n]
+    idx = np.argsort(okey)
+    okey = okey[idx]
+    oy = okey // SIDE
+    ox = okey - oy * SIDE
+    return oy, ox, ot[idx]
+
+
+@njit(cache=True)
+def _acc_add(acc, src, t, v):
+    for i in range(acc.shape[0]):
+        acc[i] += v * (src[i] == t)
+
+
+@njit(cache=True)
+def _acc_or(acc, src, t, v):
+    for i in range(acc.shape[0]):
+        acc[i] |= v * (src[i] == t)
+
+
+@njit(cache=True)
+def _acc_xor(acc, src, t, v):
+    for i in range(acc.shape[0]):
+        acc[i] ^= v * (src[i] == t)
+
+
+@njit(cache=True)
+def dense_step(T, out, etype, edy, edx, eop, evals, lut, acc):
+    """The dense fast path fused row by row (the section 7.5 workspace idea): each target
+    row's messages gather in a one-row buffer that stays in cache, then are interpreted at
+    once.  Same result as dense_messages + dense_interpret; returns the population."""
+    h, w = T.shape
+    n = 0
+    for r in range(h):
+        acc[:] = 0
+        for e in range(etype.shape[0]):
+            sr = r - edy[e]
+            if sr < 0 or sr >= h:
+                continue
+            dx = edx[e]
+            c0 = max(0, dx)
+            c1 = min(w, w + dx)
+            dst = acc[c0:c1]
+            src = T[sr, c0 - dx:c1 - dx]
+            t = np.uint8(etype[e])
+            op = eop[e]
+            if op == 1:
+                _acc_add(dst, src, t, evals[e])
+            elif op == 2:
+                _acc_or(dst, src, t, evals[e])
+            else:
+                _acc_xor(dst, src, t, evals[e])
+        orow = out[r]
+        for c in range(w):
+            k = lut[acc[c]]
+            orow[c] = k
+            n += k != 0
+    return n

@@ -1,0 +1,428 @@
+"""Patterns: the native format, RLE (as Golly and the LifeWiki write it) and plaintext .cells.
+
+A :class:`Pattern` is a set of (x, y, life-form) cells relative to its own top-left corner
+plus the reference point the thesis's "save pattern" asks for (section 7.3.2).  It can be
+placed on an :class:`~apps.ca.engine.Engine` in any of the eight orientations.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import tempfile
+from dataclasses import dataclass, field
+
+import numpy as np
+
+NATIVE_MAGIC = "CAMLAB88-CA-PATTERN 1"
+MAX_RLE_STATE = 255
+# The eight orientations: (a, b, c, d) maps (dx, dy) -> (a*dx + b*dy, c*dx + d*dy).
+ORIENTATIONS: dict[str, tuple[int, int, int, int]] = {
+    "identity": (1, 0, 0, 1),
+    "rot90": (0, -1, 1, 0),  # clockwise on a y-down screen
+    "rot180": (-1, 0, 0, -1),
+    "rot270": (0, 1, -1, 0),
+    "flip_x": (-1, 0, 0, 1),  # mirror left-right
+    "flip_y": (1, 0, 0, -1),  # mirror top-bottom
+    "transpose": (0, 1, 1, 0),  # mirror in the main diagonal
+    "antitranspose": (0, -1, -1, 0),
+}
+
+
+class PatternError(ValueError):
+    """A pattern file is malformed; the message names the file, line and column."""
+
+    def __init__(self, source: str, line: int, column: int, message: str) -> None:
+        super().__init__(f"{source}:{line}:{column}: {message}")
+        self.line = line
+        self.column = column
+
+
+@dataclass
+class Pattern:
+    xs: np.ndarray  # int64, relative to the pattern's top-left corner
+    ys: np.ndarray
+    ts: np.ndarray  # life-forms, all > 0
+    ref: tuple[int, int] = (0, 0)
+    name: str = ""
+    rule: str = ""
+    comments: list[str] = field(default_factory=list)
+
+    @classmethod
+    def from_cells(cls, cells: list[tuple[int, int, int]], **kw) -> Pattern:
+        """Normalised (top-left at 0, 0, sorted, unique) pattern from (x, y, type) triples."""
+        live = [(x, y, t) for x, y, t in cells if t > 0]
+        if not live:
+            return cls(np.zeros(0, np.int64), np.zeros(0, np.int64), np.zeros(0, np.int64), **kw)
+        a = np.array(live, np.int64)
+        return cls(a[:, 0], a[:, 1], a[:, 2], **kw).normalised()
+
+    def normalised(self) -> Pattern:
+        if self.xs.size == 0:
+            return self
+        x0, y0 = int(self.xs.min()), int(self.ys.min())
+        xs, ys = self.xs - x0, self.ys - y0
+        keys = ys * (1 << 32) + xs
+        keys, idx = np.unique(keys[::-1], return_index=True)  # last duplicate wins
+        ts = self.ts[::-1][idx]
+        return Pattern(keys % (1 << 32), keys // (1 << 32), ts, (self.ref[0] - x0,
+                       self.ref[1] - y0), self.name, self.rule, list(self.comments))
+
+    @property
+    def width(self) -> int:
+        return int(self.xs.max()) + 1 if self.xs.size else 0
+
+    @property
+    def height(self) -> int:
+        return int(self.ys.max()) + 1 if self.ys.size else 0
+
+    def cell_set(self) -> set[tuple[int, int, int]]:
+        return {(int(x), int(y), int(t)) for x, y, t in zip(self.xs, self.ys, self.ts)}
+
+    def placed(self, x: int, y: int, orientation: str = "identity"
+               ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Plane positions when the reference point goes to (x, y) in ``orientation``
+        (positions wrap round the 65536-cell plane)."""
+        if orientation not in ORIENTATIONS:
+            raise ValueError(f"unknown orientation {orientation!r}; one of "
+                             f"{', '.join(ORIENTATIONS)}")
+        a, b, c, d = ORIENTATIONS[orientation]
+        dx = self.xs - self.ref[0]
+        dy = self.ys - self.ref[1]
+        return ((x + a * dx + b * dy) % 65536, (y + c * dx + d * dy) % 65536, self.ts.copy())
+
+
+# -- files ---------------------------------------------------------------------------------
+
+def write_atomic(path: str | os.PathLike, text: str) -> None:
+    """Write ``text`` so readers see the old file or the new one, never half of one."""
+    path = os.fspath(path)
+    folder = os.path.dirname(os.path.abspath(path))
+    fd, tmp = tempfile.mkstemp(prefix=".tmp-", dir=folder)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as f:
+            f.write(text)
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+
+
+def format_of(path: str) -> str:
+    low = path.lower()
+    if low.endswith(".rle"):
+        return "rle"
+    if low.endswith(".cells"):
+        return "cells"
+    return "native"
+
+
+def read_pattern(path: str | os.PathLike) -> Pattern:
+    path = os.fspath(path)
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    return parse_pattern(text, format_of(path), source=path)
+
+
+def parse_pattern(text: str, fmt: str, source: str = "<pattern>") -> Pattern:
+    if fmt == "rle":
+        return parse_rle(text, source)
+    if fmt == "cells":
+        return parse_cells(text, source)
+    return parse_native(text, source)
+
+
+def write_pattern(path: str | os.PathLike, pattern: Pattern) -> None:
+    path = os.fspath(path)
+    fmt = format_of(path)
+    text = {"rle": format_rle, "cells": format_cells, "native": format_native}[fmt](pattern)
+    write_atomic(path, text)
+
+
+# -- native --------------------------------------------------------------------------------
+# CAMLAB88-CA-PATTERN 1
+# name <text>            (optional)
+# rules <text>           (optional: the rule set the pattern was made for)
+# comment <text>         (any number)
+# ref <x> <y>            (reference point, pattern coordinates)
+# cells <n>
+# <x> <y> <life-form>    (n lines, any order)
+# end
+
+def format_native(p: Pattern) -> str:
+    lines = [NATIVE_MAGIC]
+    if p.name:
+        lines.append(f"name {p.name}")
+    if p.rule:
+        lines.append(f"rules {p.rule}")
+    lines += [f"comment {c}" for c in p.comments]
+    lines.append(f"ref {p.ref[0]} {p.ref[1]}")
+    lines.append(f"cells {p.xs.size}")
+    lines += [f"{x} {y} {t}" for x, y, t in zip(p.xs.tolist(), p.ys.tolist(), p.ts.tolist())]
+    lines.append("end")
+    return "\n".join(lines) + "\n"
+
+
+def parse_native(text: str, source: str = "<pattern>") -> Pattern:
+    lines = text.splitlines()
+    if not lines or lines[0].strip() != NATIVE_MAGIC:
+        raise PatternError(source, 1, 1, f"expected '{NATIVE_MAGIC}' on the first line")
+    name = rule = ""
+    comments: list[str] = []
+    ref = (0, 0)
+    cells: list[tuple[int, int, int]] = []
+    i = 1
+    count = None
+    while i < len(lines):
+        raw = lines[i]
+        i += 1
+        word, _, rest = raw.strip().partition(" ")
+        if word == "":
+            continue
+        if word == "name":
+            name = rest
+        elif word == "rules":
+            rule = rest
+        elif word == "comment":
+            comments.append(rest)
+        elif word == "ref":
+            ref = _ints(rest, 2, source, i, raw, "'ref x y'")  # type: ignore[assignment]
+        elif word == "cells":
+            (count,) = _ints(rest, 1, source, i, raw, "'cells n'")
+            break
+        else:
+            raise PatternError(source, i, 1, f"expected name, rules, comment, ref or cells, "
+                                             f"found '{word}'")
+    if count is None:
+        raise PatternError(source, len(lines), 1, "expected 'cells n' before end of file")
+    for _ in range(count):
+        if i >= len(lines):
+            raise PatternError(source, len(lines), 1, f"expected {count} cell lines 'x y "
+                                                      "life-form', file ended early")
+        raw = lines[i]
+        i += 1
+        x, y, t = _ints(raw, 3, source, i, raw, "'x y life-form'")
+        if t < 1 or t > 65535:
+            raise PatternError(source, i, 1, f"life-form must be 1..65535, found {t}")
+        cells.append((x, y, t))
+    while i < len(lines) and not lines[i].strip():
+        i += 1
+    if i >= len(lines) or lines[i].strip() != "end":
+        raise PatternError(source, i + 1, 1, "expected 'end' after the cell lines")
+    p = Pattern.from_cells(cells, ref=ref, name=name, rule=rule, comments=comments)
+    if not cells:
+        p.ref = ref
+    return p
+
+
+def _ints(text: str, n: int, source: str, line: int, raw: str, what: str) -> tuple[int, ...]:
+    parts = text.split()
+    if len(parts) != n or not all(re.fullmatch(r"-?[0-9]+", s) for s in parts):
+        raise PatternError(source, line, 1, f"expected {what}, found '{raw.strip()}'")
+    return tuple(int(s) for s in parts)
+
+
+# -- RLE -------------------------------------------------------------------------------------
+
+def _state_symbol(t: int, multi: bool) -> str:
+    if not multi:
+        return "o" if t else "b"
+    if t == 0:
+        return "."
+    if t <= 24:
+        return chr(ord("A") + t - 1)
+    hi, lo = divmod(t - 25, 24)
+    return chr(ord("p") + hi) + chr(ord("A") + lo)
+
+
+def format_rle(p: Pattern) -> str:
+    if p.ts.size and int(p.ts.max()) > MAX_RLE_STATE:
+        raise ValueError(f"RLE holds life-forms up to {MAX_RLE_STATE}; this pattern has "
+                         f"{int(p.ts.max())} (use the native format)")
+    multi = bool(p.ts.size and int(p.ts.max()) > 1)
+    head: list[str] = []
+    if p.name:
+        head.append(f"#N {p.name}")
+    head += [f"#C {c}" for c in p.comments]
+    head.append(f"#CXRLE Pos={-p.ref[0]},{-p.ref[1]}")  # reference point = Golly's origin
+    rule = f", rule = {p.rule}" if p.rule else ""
+    head.append(f"x = {p.width}, y = {p.height}{rule}")
+    rows: dict[int, list[tuple[int, int]]] = {}
+    for x, y, t in zip(p.xs.tolist(), p.ys.tolist(), p.ts.tolist()):
+        rows.setdefault(y, []).append((x, t))
+    items: list[str] = []
+    prev_y = 0
+    for y in sorted(rows):
+        if y > prev_y:
+            gap = y - prev_y
+            items.append(f"{gap}$" if gap > 1 else "$")
+        prev_y = y
+        col = 0
+        runs: list[tuple[int, int]] = []  # (count, state)
+        for x, t in sorted(rows[y]):
+            if x > col:
+                runs.append((x - col, 0))
+            if runs and runs[-1][1] == t:
+                runs[-1] = (runs[-1][0] + 1, t)
+            else:
+                runs.append((1, t))
+            col = x + 1
+        for n, t in runs:
+            sym = _state_symbol(t, multi)
+            items.append(f"{n}{sym}" if n > 1 else sym)
+    items.append("!")
+    body: list[str] = []
+    line = ""
+    for it in items:
+        if len(line) + len(it) > 70:
+            body.append(line)
+            line = ""
+        line += it
+    body.append(line)
+    return "\n".join(head + body) + "\n"
+
+
+_HEADER = re.compile(
+    r"\s*x\s*=\s*(\d+)\s*,\s*y\s*=\s*(\d+)\s*(?:,\s*rule\s*=\s*(\S.*?))?\s*$", re.IGNORECASE)
+
+
+def parse_rle(text: str, source: str = "<rle>") -> Pattern:
+    lines = text.splitlines()
+    name = rule = ""
+    comments: list[str] = []
+    pos = (0, 0)
+    i = 0
+    header = None
+    while i < len(lines):
+        s = lines[i].strip()
+        i += 1
+        if not s:
+            continue
+        if s.startswith("#"):
+            tag, _, rest = s.partition(" ")
+            if tag == "#N":
+                name = rest.strip()
+            elif tag in ("#C", "#c"):
+                comments.append(rest.strip())
+            elif tag == "#r":
+                rule = rest.strip()
+            elif tag == "#CXRLE":
+                m = re.search(r"Pos\s*=\s*(-?\d+)\s*,\s*(-?\d+)", rest)
+                if m:
+                    pos = (int(m.group(1)), int(m.group(2)))
+            continue
+        header = _HEADER.match(s)
+        if not header:
+            raise PatternError(source, i, 1, "expected the RLE header 'x = m, y = n[, rule = "
+                                             f"R]', found '{s[:40]}'")
+        rule = header.group(3) or rule
+        break
+    if header is None:
+        raise PatternError(source, max(1, len(lines)), 1, "expected the RLE header "
+                                                          "'x = m, y = n', found end of file")
+    width, height = int(header.group(1)), int(header.group(2))
+    cells: list[tuple[int, int, int]] = []
+    x = y = 0
+    count = ""
+    prefix = ""
+    done = False
+    for lineno in range(i, len(lines)):
+        raw = lines[lineno]
+        for col, ch in enumerate(raw, start=1):
+            if done:
+                break
+            if ch.isspace():
+                if count or prefix:
+                    raise PatternError(source, lineno + 1, col, "expected a cell symbol after "
+                                                                 "the repeat count")
+                continue
+            if ch.isdigit():
+                if prefix:
+                    raise PatternError(source, lineno + 1, col, f"expected A..X after '{prefix}'")
+                if ch == "0" and not count:
+                    raise PatternError(source, lineno + 1, col, "repeat counts have no leading "
+                                                                 "zero")
+                count += ch
+                continue
+            n = int(count) if count else 1
+            count = ""
+            if prefix:
+                if not "A" <= ch <= "X":
+                    raise PatternError(source, lineno + 1, col, f"expected A..X after "
+                                                                 f"'{prefix}', found '{ch}'")
+                state = 25 + (ord(prefix) - ord("p")) * 24 + ord(ch) - ord("A")
+                prefix = ""
+                if state > MAX_RLE_STATE:
+                    raise PatternError(source, lineno + 1, col, f"state {state} is above 255")
+            elif ch in "b.":
+                state = 0
+            elif ch == "o":
+                state = 1
+            elif "A" <= ch <= "X":
+                state = ord(ch) - ord("A") + 1
+            elif "p" <= ch <= "y":
+                prefix = ch
+                count = str(n) if n > 1 else ""
+                continue
+            elif ch == "$":
+                y += n
+                x = 0
+                continue
+            elif ch == "!":
+                done = True
+                break
+            else:
+                raise PatternError(source, lineno + 1, col, f"expected b, o, ., A..X, $ or !, "
+                                                             f"found '{ch}'")
+            if x + n > 65536 or y >= 65536:
+                raise PatternError(source, lineno + 1, col, "pattern is wider or taller than "
+                                                             "the 65536-cell plane")
+            if state:
+                cells.extend((x + k, y, state) for k in range(n))
+            x += n
+        if done:
+            break
+    if not done:
+        raise PatternError(source, len(lines), 1, "expected '!' ending the RLE pattern")
+    del width, height  # Golly reads cells beyond the header's box too; so do we
+    # The reference point is Golly's origin: Pos gives the box corner relative to it.
+    return Pattern.from_cells(cells, ref=(-pos[0], -pos[1]), name=name, rule=rule,
+                              comments=comments)
+
+
+# -- plaintext .cells --------------------------------------------------------------------------
+
+def format_cells(p: Pattern) -> str:
+    if p.ts.size and int(p.ts.max()) > 1:
+        raise ValueError("plaintext .cells holds one life-form only; use RLE or native")
+    head = [f"!Name: {p.name}"] if p.name else []
+    head += [f"!{c}" for c in p.comments]
+    grid = [["."] * p.width for _ in range(p.height)]
+    for x, y in zip(p.xs.tolist(), p.ys.tolist()):
+        grid[y][x] = "O"
+    return "\n".join(head + ["".join(r).rstrip(".") for r in grid]) + "\n"
+
+
+def parse_cells(text: str, source: str = "<cells>") -> Pattern:
+    name = ""
+    comments: list[str] = []
+    cells: list[tuple[int, int, int]] = []
+    y = 0
+    for lineno, raw in enumerate(text.splitlines(), start=1):
+        if raw.startswith("!"):
+            body = raw[1:].strip()
+            if body.lower().startswith("name:"):
+                name = body[5:].strip()
+            else:
+                comments.append(body)
+            continue
+        for x, ch in enumerate(raw.rstrip()):
+            if ch in "Oo*":
+                cells.append((x, y, 1))
+            elif ch != ".":
+                raise PatternError(source, lineno, x + 1, f"expected '.' or 'O', found '{ch}'")
+        y += 1
+    return Pattern.from_cells(cells, name=name, comments=comments)

@@ -1,0 +1,185 @@
+"""A :class:`RuleSet` compiled into flat numpy tables for the numba kernels."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from apps.ca.rules import MATCH_EXACT, MATCH_PATTERN, MATCH_RANGE, RuleSet
+
+LOOKUP_SIZE = 1 << 16  # message values below this are interpreted by one table lookup
+ONE = 1 << 32  # probabilities are thresholds on a 32-bit random number
+
+
+@dataclass(frozen=True)
+class RuleTables:
+    send_start: np.ndarray  # int64[T+2]: messages of type t are send_*[start[t]:start[t+1]]
+    send_dy: np.ndarray  # int64
+    send_dx: np.ndarray  # int64
+    send_op: np.ndarray  # int64 (rules.OP_*)
+    send_val: np.ndarray  # uint32 as int64
+    bcast_op: np.ndarray  # int64[T+1], 0 = this type does not broadcast
+    bcast_val: np.ndarray  # int64[T+1]
+    interp_kind: np.ndarray  # int64[I]
+    interp_a: np.ndarray  # int64[I]
+    interp_b: np.ndarray  # int64[I]
+    interp_out: np.ndarray  # int64[I] index into outcomes
+    lookup: np.ndarray  # int64[LOOKUP_SIZE] outcome index of small values, -1 = dies
+    out_start: np.ndarray  # int64[O+1]
+    out_thresh: np.ndarray  # int64: choose the first choice whose threshold exceeds r32
+    out_form: np.ndarray  # int64
+    reach_y: int
+    reach_x: int
+    sends_per_cell: int
+    max_form: int
+    dense: DensePlan | None = None
+
+
+@dataclass(frozen=True)
+class DensePlan:
+    """How to run the rules as dense grid passes, when that gives the same result.
+
+    Eligible when every message operation commutes with every other one a cell can receive:
+    only one kind of operation, or additions whose largest possible sum stays below every
+    bit set by the ORs (or XORs); deterministic outcomes; no broadcasts; a cell whose message
+    area is 0 dies anyway (so "received nothing" needs no separate mark); life-forms and
+    message values small enough for uint8/uint16 grids.
+    """
+
+    etype: np.ndarray  # int64: sender life-form of each message entry
+    edy: np.ndarray
+    edx: np.ndarray
+    eop: np.ndarray
+    evals: np.ndarray  # message dtype
+    lut: np.ndarray  # uint8: message value -> next life-form
+    msg_dtype: type
+
+
+def compile_rules(rules: RuleSet) -> RuleTables:
+    cached = rules._tables.get("tables")
+    if cached is not None:
+        return cached
+    top = rules.max_form
+    start = np.zeros(top + 2, np.int64)
+    dy: list[int] = []
+    dx: list[int] = []
+    op: list[int] = []
+    val: list[int] = []
+    bop = np.zeros(top + 1, np.int64)
+    bval = np.zeros(top + 1, np.int64)
+    most = 0
+    for t in range(1, top + 1):
+        start[t] = len(dy)
+        form = rules.forms.get(t)
+        if form is not None:
+            # Grid order (row by row) is the order the thesis's row workspace applies them.
+            for m in form.messages:
+                dy.append(m.dy)
+                dx.append(m.dx)
+                op.append(m.op)
+                val.append(m.value)
+            most = max(most, len(form.messages))
+            if form.broadcast is not None:
+                bop[t], bval[t] = form.broadcast
+    start[top + 1] = len(dy)
+    start[0] = 0
+
+    # Outcomes: one per interpretation line, thresholds exact on a 2**32 scale.
+    out_start = [0]
+    thresh: list[int] = []
+    forms: list[int] = []
+    for it in rules.interpretations:
+        acc = 0
+        for p, lf in it.outcome.choices:
+            acc += p
+            thresh.append(min(ONE, int(acc * ONE)))
+            forms.append(lf)
+        thresh[-1] = ONE
+        out_start.append(len(thresh))
+    kind = np.array([it.kind for it in rules.interpretations], np.int64)
+    a = np.array([it.a for it in rules.interpretations], np.int64)
+    b = np.array([it.b for it in rules.interpretations], np.int64)
+
+    # Precompute the first matching line for every small value, vectorised over values.
+    values = np.arange(LOOKUP_SIZE, dtype=np.int64)
+    lookup = np.full(LOOKUP_SIZE, -1, np.int64)
+    for i in range(len(kind) - 1, -1, -1):  # reverse so earlier lines win
+        if kind[i] == MATCH_EXACT:
+            hit = values == a[i]
+        elif kind[i] == MATCH_PATTERN:
+            hit = (values & a[i]) == b[i]
+        else:
+            assert kind[i] == MATCH_RANGE
+            hit = (values >= a[i]) & (values <= b[i])
+        lookup[hit] = i
+    ry, rx = rules.reach
+    plan = _dense_plan(rules, top, lookup, out_start, forms)
+    tables = RuleTables(
+        send_start=start,
+        send_dy=np.array(dy, np.int64),
+        send_dx=np.array(dx, np.int64),
+        send_op=np.array(op, np.int64),
+        send_val=np.array(val, np.int64),
+        bcast_op=bop,
+        bcast_val=bval,
+        interp_kind=kind,
+        interp_a=a,
+        interp_b=b,
+        interp_out=np.arange(len(kind), dtype=np.int64),
+        lookup=lookup,
+        out_start=np.array(out_start, np.int64),
+        out_thresh=np.array(thresh, np.int64),
+        out_form=np.array(forms, np.int64),
+        reach_y=ry,
+        reach_x=rx,
+        sends_per_cell=max(1, most),
+        max_form=top,
+        dense=plan,
+    )
+    rules._tables["tables"] = tables
+    return tables
+
+
+def _dense_plan(rules: RuleSet, top: int, lookup: np.ndarray, out_start: list[int],
+                forms: list[int]) -> DensePlan | None:
+    from apps.ca.rules import OP_ADD, OP_OR, OP_XOR
+
+    if top > 255 or any(f.broadcast for f in rules.forms.values()):
+        return None
+    if any(len(it.outcome.choices) != 1 for it in rules.interpretations):
+        return None
+    entries = [(t, m) for t, f in sorted(rules.forms.items()) for m in f.messages]
+    ops = {m.op for _, m in entries}
+    if not ops <= {OP_ADD, OP_OR, OP_XOR} or {OP_OR, OP_XOR} <= ops:
+        return None
+    per_offset: dict[tuple[int, int], int] = {}
+    bits = 0
+    for _, m in entries:
+        if m.op == OP_ADD:
+            per_offset[(m.dy, m.dx)] = max(per_offset.get((m.dy, m.dx), 0), m.value)
+        else:
+            bits |= m.value
+    add_max = sum(per_offset.values())
+    low = (1 << add_max.bit_length()) - 1  # every value the additions can make
+    if bits & low:
+        return None  # an OR/XOR bit could meet a carry: order would matter
+    bound = low | bits
+    if bound >= 1 << 16:
+        return None
+    dtype = np.uint8 if bound < 256 else np.uint16
+    size = 256 if dtype is np.uint8 else 1 << 16
+    lut = np.zeros(size, np.uint8)
+    hit = lookup[:size] >= 0
+    lut[hit] = np.array(forms, np.int64)[np.array(out_start, np.int64)[lookup[:size][hit]]]
+    if lut[0] != 0:
+        return None  # a cell that received nothing must die
+    return DensePlan(
+        etype=np.array([t for t, _ in entries], np.int64),
+        edy=np.array([m.dy for _, m in entries], np.int64),
+        edx=np.array([m.dx for _, m in entries], np.int64),
+        eop=np.array([m.op for _, m in entries], np.int64),
+        evals=np.array([m.value for _, m in entries], dtype),
+        lut=lut,
+        msg_dtype=dtype,
+    )

@@ -1,0 +1,132 @@
+"""The shipped library works: Life demos, over-grazing, the maze solved, the primes machine."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from apps.ca import library, maze, turing
+from apps.ca.engine import Engine
+from apps.ca.library_build import generated
+from apps.ca.patterns import read_pattern
+from apps.ca.rules import load_rules, parse_rules
+
+
+def test_generated_library_files_are_up_to_date() -> None:
+    for name, text in generated().items():
+        assert (library.LIBRARY / name).read_text() == text, name
+
+
+def test_every_library_file_loads() -> None:
+    found = library.names()
+    assert {"life", "maze", "overgrazing", "turing_primes"} <= set(found["rules"])
+    for name in found["rules"]:
+        load_rules(library.rules_path(name))
+    for name in found["patterns"]:
+        assert len(read_pattern(library.pattern_path(Path(name).stem)).cell_set()) > 0
+    with pytest.raises(FileNotFoundError, match="library"):
+        library.rules_path("no_such_rules")
+
+
+def _place(rules: str, pattern: str, x: int = 1000, y: int = 1000) -> Engine:
+    e = Engine(load_rules(library.rules_path(rules)))
+    xs, ys, ts = read_pattern(library.pattern_path(pattern)).placed(x, y)
+    e.set_cells(xs, ys, ts)
+    return e
+
+
+def test_overgrazing_block_ages_grazes_and_regenerates() -> None:
+    e = _place("overgrazing", "grazing_soup")
+    e.step(50)
+    assert e.population > 0
+    e = Engine(load_rules(library.rules_path("overgrazing")))
+    e.set_cells([10, 11, 10, 11], [10, 10, 11, 11], 1)  # a block: still life in Life
+    seen = []
+    for _ in range(8):
+        seen.append(sorted(e.by_type().items()))
+        e.step()
+    assert seen == [[(1, 4)], [(2, 4)], [(3, 4)], [(4, 4)], [(5, 4)], [(6, 4)], [(7, 4)], []]
+    # No birth on grazed ground: three living cells next to a grazed cell.
+    e.set_cells([20, 21, 22, 21], [20, 20, 20, 21], [1, 1, 1, 5])
+    e.step()
+    assert e.get(21, 21) == 6 and e.get(21, 19) == 1
+
+
+def test_maze_runner_solves_the_demo_maze_by_the_shortest_path() -> None:
+    pattern, exit_cell, shortest = maze.build()
+    e = _place("maze", "maze_demo", 0, 0)
+    ex, ey = exit_cell
+    arrival = None
+    walls = e.by_type()[1]
+    for _ in range(shortest + 3):
+        if e.get(ex, ey) == 2 and arrival is None:
+            arrival = e.generation
+        e.step()
+    assert arrival == shortest
+    assert e.by_type()[1] == walls  # walls are static
+
+
+def test_maze_runner_dies_in_a_dead_end() -> None:
+    text = ["#####", "#...#", "#####"]
+    e = Engine(load_rules(library.rules_path("maze")))
+    for y, row in enumerate(text):
+        for x, ch in enumerate(row):
+            if ch == "#":
+                e.set(x, y, 1)
+    e.set(1, 1, 3)
+    e.set(2, 1, 2)
+    e.step(5)
+    assert set(e.by_type()) == {1}
+
+
+def _verdict(n: int, limit: int = 20000) -> tuple[str, int]:
+    rules = parse_rules(turing.rules_text())
+    forms = {t: v for v, t in turing.verdict_forms().items()}
+    cross = turing.cross_forms()
+    e = Engine(rules)
+    xs, ys, ts = turing.pattern(n).placed(500, 500)
+    e.set_cells(xs, ys, ts)
+    while e.generation < limit:
+        e.step(25)
+        found = [forms[t] for t in e.by_type() if t in forms]
+        if found:
+            return found[0], e.generation
+        heads = [t for t in e.by_type() if t >= turing.FIRST_HEAD and t not in cross]
+        assert len(heads) == 1 and e.by_type()[heads[0]] == 1
+    raise AssertionError(f"no verdict for {n}")
+
+
+def _is_prime(n: int) -> bool:
+    return n > 1 and all(n % d for d in range(2, int(n ** 0.5) + 1))
+
+
+@pytest.mark.parametrize("n", [3, 4, 7, 9, 15, 21, 23, 25, 29, 31, 49, 53])
+def test_turing_machine_verdicts(n: int) -> None:
+    assert _verdict(n)[0] == ("YES" if _is_prime(n) else "NO")
+
+
+def test_failure_cross_is_hidden_until_the_head_runs_into_it() -> None:
+    hidden, shown = turing.cross_forms()
+    e = Engine(parse_rules(turing.rules_text()))
+    xs, ys, ts = turing.pattern(9).placed(500, 500)
+    e.set_cells(xs, ys, ts)
+    assert e.by_type()[hidden] == 9 and shown not in e.by_type()
+    while shown not in e.by_type():
+        assert e.by_type()[hidden] == 9  # hidden while the machine works
+        e.step()
+    assert e.generation > 30
+    e.step(4)
+    assert e.by_type()[shown] == 9 and hidden not in e.by_type()
+
+
+def test_turing_demo_patterns_25_and_23() -> None:
+    forms = {t: v for v, t in turing.verdict_forms().items()}
+    for name, want in (("primes_25", "NO"), ("primes_23", "YES")):
+        e = _place("turing_primes", name)
+        e.step(1500)
+        assert [forms[t] for t in e.by_type() if t in forms] == [want]
+        # The number on the top row is intact afterwards.
+        top = sorted(int(x) - 1000 for x, y, t in zip(e.xs, e.ys, e.ts) if y == 1000 and t == 1)
+        n = int(name.split("_")[1])
+        assert top == [i + 1 for i, b in enumerate(bin(n)[2:]) if b == "1"]
