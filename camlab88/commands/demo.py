@@ -1,0 +1,223 @@
+"""``camlab88 demo``: a Sigma T5684 demo session played over a 9600-baud line.
+
+The session is a byte stream built with protocols.sigma.Encoder, the way a host program
+would send it: abbreviated-mode vectors, dash masks, graphics text, firmware ellipses and
+flood fill, solid blocks, then LUT animation and the thesis's double buffering (two 2-bit
+buffers in the 4 planes, swapped through the LUT, 3.1.4). It is cut into 1/25 s of line
+time each and fed to the emulated terminal; with a display a window shows it as it
+arrives, without one (or with --headless) the frames go to PNGs and an animated GIF.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import sys
+from fractions import Fraction
+from pathlib import Path
+
+FPS = 25
+GIF_EVERY = 3  # every 3rd frame in the GIF (8.3 fps) keeps it small
+
+
+def register(subparsers: argparse._SubParsersAction) -> None:
+    p = subparsers.add_parser("demo", help="play the demo session",
+                              description="Play a Sigma T5684 demo session on the emulated "
+                              "terminal over a 9600-baud line (virtual time). With a display it "
+                              "opens a window; with no DISPLAY, or --headless, it writes the "
+                              "frames as PNGs and an animated GIF.")
+    p.add_argument("--headless", action="store_true", help="no window, write files")
+    p.add_argument("--out", type=Path, default=Path("camlab88-demo"),
+                   help="output directory when headless (default ./camlab88-demo)")
+    p.add_argument("--scale", type=int, default=1, help="window scale")
+    p.add_argument("--screenshot", type=Path, help="save the window at the end and exit")
+    p.add_argument("--fast", action="store_true", help="do not pace to the wall clock")
+    p.set_defaults(handler=demo_command)
+
+
+# ---------------------------------------------------------------------- the session
+def sigma_demo_stream() -> bytes:
+    """The whole session: the still picture, then LUT animation and double buffering."""
+    return sigma_picture_stream() + _sigma_animation_stream()
+
+
+def sigma_picture_stream() -> bytes:
+    """The still part: vectors, dash masks, text, ellipses, flood fill, solid blocks."""
+    from protocols.sigma import Encoder
+
+    e = Encoder()
+    out = bytearray()
+    put = out.extend
+    # power-on banner on the alpha screen, then into graphics like the RAL GKS driver does
+    put(b"\r" + e.flag() + e.reset() + e.flag_anywhere() + e.sequence_length(0))
+    put(e.graphics_on() + e.alpha_on() + e.alpha_mode())
+    put(b"camlab88: Sigma T5684 on a 9600 baud line\r\n")
+    put(b"\r" + e.flag() + e.cursor_off())
+    for i, rgb in enumerate(((0, 0, 0), (15, 15, 15), (15, 3, 3), (3, 15, 3), (4, 6, 15),
+                             (15, 15, 2), (15, 4, 15), (3, 15, 15))):
+        put(e.lut(i, *rgb))
+
+    # 1. a star of vectors in abbreviated mode
+    cx, cy = 200, 330
+    put(e.colour(7))
+    for k in range(24):
+        a = 2 * math.pi * k / 24
+        put(e.abbreviated_polyline([(cx, cy), (cx + int(150 * math.cos(a)),
+                                               cy + int(150 * math.sin(a)))]))
+    put(e.colour(1) + e.move(40, 462) + e.text("VECTORS (ABBREVIATED MODE)"))
+
+    # 2. dash masks, continuing across vectors
+    y = 300
+    for colour, mask in ((2, 0xF0F0), (3, 0x8888), (5, 0xFE10), (6, 0xF888)):
+        put(e.colour(colour) + e.dash(mask))
+        put(e.abbreviated_polyline([(400, y), (500, y + 40), (600, y), (720, y + 40)]))
+        y += 35
+    put(e.line_reset() + e.line_solid())
+    put(e.colour(1) + e.move(400, 462) + e.text("DL DASH MASKS"))
+
+    # 3. firmware ellipses
+    for k, (x, r, ratio, solid) in enumerate(((460, 40, 1.0, False), (560, 45, 1.8, True),
+                                              (670, 35, 0.6, False))):
+        put(e.colour(2 + k) + e.move(x, 200) + e.ellipse(r, ratio, solid))
+    put(e.colour(1) + e.move(430, 130) + e.text("JO/JM/JN ELLIPSES"))
+
+    # 4. polygon outline + firmware flood fill from a seed
+    pts = [(60, 40), (330, 60), (260, 150), (170, 110), (90, 170), (60, 40)]
+    put(e.colour(5) + e.polyline(pts))
+    put(e.colour(4) + e.move(120, 80) + e.fill(5))
+    put(e.colour(1) + e.move(40, 15) + e.text("JK FLOOD FILL"))
+
+    # 5. solid blocks: a colour bar
+    for k in range(8):
+        put(e.colour(k) + e.move(420 + 40 * k, 20) + e.block(450 + 40 * k, 60))
+
+    return bytes(out)
+
+
+def _sigma_animation_stream() -> bytes:
+    from protocols.sigma import Encoder
+
+    e = Encoder()
+    out = bytearray()
+    put = out.extend
+    # 6. LUT animation: concentric rings in entries 8..15, cycled by JG only
+    for k in range(8):
+        put(e.colour(8 + k) + e.move(200, 330) + e.ellipse(60 - 7 * k, 1.0, True))
+    ramp = [(15, 2 * k, 0) for k in range(8)]
+    for step in range(32):
+        for k in range(8):
+            put(e.lut(8 + k, *ramp[(k + step) % 8]))
+    put(e.alpha_mode() + b"LUT animation done; now double buffering (thesis 3.1.4)\r\n")
+    put(b"\r" + e.flag())
+
+    # 7. double buffering: planes 0-1 = buffer A, planes 2-3 = buffer B
+    put(e.erase())
+    lut_show_a = [(0, 0, 0), (15, 15, 15), (15, 8, 0), (0, 10, 15)]
+    for idx in range(16):  # show buffer A (empty) while B is drawn
+        put(e.lut(idx, *lut_show_a[idx & 3]))
+    for frame in range(24):
+        draw_b = frame % 2 == 0  # draw into the hidden buffer
+        shift = 2 if draw_b else 0
+        put(e.write_mask(0b11 << shift) + e.erase())
+        put(e.colour(1 << shift))
+        a = 2 * math.pi * frame / 24
+        square = [(384 + int(120 * math.cos(a + q * math.pi / 2)),
+                   256 + int(120 * math.sin(a + q * math.pi / 2))) for q in range(5)]
+        put(e.abbreviated_polyline(square))
+        put(e.colour(2 << shift) + e.move(384, 256) + e.ellipse(20 + 2 * frame, 1.0, True))
+        # swap: make the LUT show the buffer just drawn (index bits of that buffer only)
+        for idx in range(16):
+            v = (idx >> shift) & 3
+            put(e.lut(idx, *lut_show_a[v]))
+    put(e.write_mask(15) + e.alpha_mode() + b"end of demo\r\n")
+    return bytes(out)
+
+
+# ---------------------------------------------------------------------- playing it
+def frames_of(stream: bytes) -> list:
+    """The screen (768x512 RGB) after each 1/25 s of line time at 9600 baud."""
+    from emulator.sigma import Terminal
+    from protocols.link import LineSettings, chunks_by_period
+
+    term = Terminal("t5684")
+    frames = []
+    for _k, chunk in chunks_by_period(stream, LineSettings(baud=9600), Fraction(1, FPS)):
+        term.feed(chunk)
+        frames.append(term.frame())
+    return frames
+
+
+def demo_command(args: argparse.Namespace) -> int:
+    stream = sigma_demo_stream()
+    seconds = len(stream) / 960
+    headless = args.headless or not os.environ.get("DISPLAY")
+    if headless:
+        return _headless(stream, args.out, seconds)
+    return _windowed(stream, args)
+
+
+def _headless(stream: bytes, out: Path, seconds: float) -> int:
+    from camlab88.commands.sigma import write_png_atomic
+
+    frames = frames_of(stream)
+    out.mkdir(parents=True, exist_ok=True)
+    for k, f in enumerate(frames):
+        write_png_atomic(f, out / f"sigma_{k:04d}.png")
+    gif = out / "sigma_demo.gif"
+    _write_gif(frames[::GIF_EVERY] + [frames[-1]], gif)
+    print(f"camlab88 demo: {len(stream)} characters = {seconds:.1f} s at 9600 baud; "
+          f"{len(frames)} frames written to {out}/sigma_*.png and {gif}")
+    return 0
+
+
+def _write_gif(frames: list, path: Path) -> None:
+    import tempfile
+
+    from PIL import Image
+
+    images = [Image.fromarray(f).convert("P", palette=Image.Palette.ADAPTIVE, colors=64)
+              for f in frames]
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            images[0].save(fh, format="GIF", save_all=True, append_images=images[1:],
+                           duration=int(1000 * GIF_EVERY / FPS), loop=0)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+
+
+def _windowed(stream: bytes, args: argparse.Namespace) -> int:
+    from emulator.host_input import KeyDown, Quit
+    from emulator.sigma import Terminal
+    from emulator.window import Window
+    from protocols.link import LineSettings, chunks_by_period
+
+    term = Terminal("t5684")
+    win = Window("camlab88 demo - Sigma T5684", (768, 512), scale=args.scale)
+    try:
+        for _k, chunk in chunks_by_period(stream, LineSettings(baud=9600), Fraction(1, FPS)):
+            term.feed(chunk)
+            win.show(term.frame())
+            for ev in win.poll():
+                if isinstance(ev, Quit) or (isinstance(ev, KeyDown) and ev.key == "escape"):
+                    return 0
+            if not args.fast and args.screenshot is None:
+                win.wait_frame(FPS)
+        if args.screenshot is not None:
+            win.screenshot(args.screenshot)
+            print(f"camlab88 demo: screenshot {args.screenshot}")
+            return 0
+        print("camlab88 demo: finished; close the window or press Escape", file=sys.stderr)
+        while True:
+            for ev in win.poll():
+                if isinstance(ev, Quit) or isinstance(ev, KeyDown):
+                    return 0
+            win.wait_frame(10)
+    finally:
+        win.close()

@@ -1,0 +1,58 @@
+"""`camlab88 sigma run` with a (dummy-driver) window: host input reaches the terminal."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+from PIL import Image
+
+from camlab88.commands.sigma import _window_input
+from emulator.host_input import KeyDown, PointerButton, PointerMove, Quit
+from emulator.sigma import Terminal
+from protocols.sigma import Encoder
+
+
+class FakeWindow:
+    def __init__(self, events: list) -> None:  # noqa: ANN001
+        self.events = events
+
+    def poll(self) -> list:
+        out, self.events = self.events, []
+        return out
+
+
+def test_window_input_goes_to_keyboard_cursor_and_tablet() -> None:
+    t = Terminal("t5684")
+    sent: list[bytes] = []
+    t.on_output = sent.append
+    assert _window_input(FakeWindow([KeyDown("a", "a", frozenset()),
+                                     KeyDown("return", "", frozenset()),
+                                     KeyDown("right", "", frozenset({"shift"})),
+                                     KeyDown("up", "", frozenset())]), t)
+    assert sent == [b"a", b"\r"]
+    assert (t.reg.cursor_x, t.reg.cursor_y) == (8, 1)
+    t.feed(b"\r+-*/GM3HF")
+    assert _window_input(FakeWindow([PointerMove(100, 11, frozenset()),
+                                     PointerButton(100, 11, 1, True)]), t)
+    assert sent[-1] == b"1100,500\r"  # window row 11 is device y 500
+    assert not _window_input(FakeWindow([Quit()]), t)
+
+
+def test_run_with_a_window_takes_a_screenshot(tmp_path: Path) -> None:
+    e = Encoder()
+    stream = b"\r+-*/" + e.colour(2) + e.abbreviated_polyline([(10, 10), (700, 400)]) \
+        + e.move(300, 300) + e.ellipse(40, 1.0, True)
+    src = tmp_path / "s.bin"
+    src.write_bytes(stream)
+    shot = tmp_path / "shot.png"
+    done = subprocess.run([sys.executable, "-m", "camlab88", "sigma", "run", "--in", str(src),
+                           "--screenshot", str(shot), "--scale", "1"],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    t = Terminal("t5684")
+    t.feed(stream)
+    with Image.open(shot) as im:
+        assert np.array_equal(np.asarray(im.convert("RGB")), t.frame())
