@@ -1,8 +1,9 @@
 """``camlab88 kas ...``: the keyframe animation suite of thesis chapter 3.
 
-Non-interactive programs for now: in-betweener, superimposer, plotter, exporter, the
-real-time viewer's schedule, and the editor model run from an event script.  The device
-fronts (``kas edit``, ``kas view`` on the emulated Sigma) register here later.
+The model programs (in-betweener, superimposer, plotter, exporter, schedule, editor model on
+a script) and the device fronts: ``kas edit``, ``kas path`` and ``kas view`` run the programs
+of ``apps.kas.front`` against an emulated Sigma T5684 over a 9600-baud line, in a window or
+headless from an event script (the wiring to the emulator, window and tablet lives here).
 """
 
 from __future__ import annotations
@@ -68,11 +69,14 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     pl.set_defaults(handler=_plot)
 
     ex = sub.add_parser("export", help="export a sequence as GIF, MP4 or PNGs",
-                        description="Render every frame (interim software rasteriser) and "
-                        "write OUT.gif, OUT.mp4 or OUT_NNNN.png, with a progress bar.")
+                        description="Render every frame and write OUT.gif, OUT.mp4 or "
+                        "OUT_NNNN.png, with a progress bar. By default each frame is drawn by "
+                        "the emulated Sigma T5684 (768 x 512, 16 colours, its own vectors); "
+                        "--renderer raster uses the software rasteriser at any --width.")
     ex.add_argument("seq")
     ex.add_argument("out")
-    ex.add_argument("--width", type=int, default=768)
+    ex.add_argument("--renderer", choices=("sigma", "raster"), default="sigma")
+    ex.add_argument("--width", type=int, default=768, help="raster renderer only")
     ex.add_argument("--background", choices=("black", "white"), default="black")
     ex.set_defaults(handler=_export)
 
@@ -107,6 +111,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     ps.add_argument("--path-out", required=True)
     ps.add_argument("--timing-out", required=True)
     ps.set_defaults(handler=_path_script)
+
+    _register_fronts(sub)
 
     dm = sub.add_parser("demo", help="build 'a line taking a walk' from the library")
     dm.add_argument("--out", required=True, help="sequence file to write")
@@ -226,11 +232,337 @@ def _export(args: argparse.Namespace) -> int:
 
     try:
         seq = files.load_sequence(library.resolve(args.seq))
-        out = export(seq, args.out, args.width, args.background, _progress("export"))
+        if args.renderer == "sigma":
+            if args.width != 768:
+                print("kas export: the Sigma renderer draws 768 x 512; --width applies to "
+                      "--renderer raster", file=sys.stderr)
+            out = _export_sigma(seq, args.out, args.background, _progress("export"))
+        else:
+            out = export(seq, args.out, args.width, args.background, _progress("export"))
     except (OSError, ValueError) as exc:
         return _fail("export", exc)
-    print(f"wrote {out}")
+    print(f"wrote {out} ({args.renderer} renderer)")
     return 0
+
+
+# ---------------------------------------------------------------------- device fronts
+def _register_fronts(sub: argparse._SubParsersAction) -> None:
+    ed = sub.add_parser("edit", help="the keyframe editor on the emulated Sigma T5684",
+                        description="Edit keyframe FILE (created if missing) on an emulated "
+                        "Sigma T5684 over a 9600-baud line: the stylus is the tablet (--tablet "
+                        "SOURCE) or the mouse, keys are typed on the terminal. F2 saves. "
+                        "--script runs a timed event script (see docs/kas.md); --headless "
+                        "needs one.")
+    ed.add_argument("file")
+    _front_options(ed)
+    ed.add_argument("--over", help="previous keyframe to draw over (§2.3 guide)")
+    ed.add_argument("--seed", type=int, default=0, help="de-regularise random seed")
+    ed.set_defaults(handler=_edit)
+
+    pa = sub.add_parser("path", help="draw a sample path and tick marks on the Sigma",
+                        description="Keyframes A and B shown superimposed; the stylus draws "
+                        "the sample path, 't' then touches place tick marks; F2 (or the end "
+                        "of a headless script) saves the path to --out and the ticks to "
+                        "--ticks.")
+    pa.add_argument("first")
+    pa.add_argument("second")
+    pa.add_argument("--out", required=True, help="sample path file to write")
+    pa.add_argument("--ticks", help="tick timing file to write (default: OUT with _ticks)")
+    pa.add_argument("--previous", help="the previous pair's path, shown for continuity")
+    _front_options(pa)
+    pa.set_defaults(handler=_path)
+
+    vw = sub.add_parser("view", help="the line test: play a sequence on the emulated Sigma",
+                        description="Play SEQ on an emulated Sigma T5684 over the line, double "
+                        "buffered in two 2-bit buffers (four colours). --realtime (default) "
+                        "keeps period-line time and drops the frames the line cannot carry; "
+                        "--every shows every frame however long it takes.")
+    vw.add_argument("seq")
+    g = vw.add_mutually_exclusive_group()
+    g.add_argument("--realtime", dest="mode", action="store_const", const="realtime")
+    g.add_argument("--every", dest="mode", action="store_const", const="every")
+    vw.set_defaults(mode="realtime")
+    vw.add_argument("--baud", type=int, default=9600)
+    vw.add_argument("--fps", type=float, help="default: the sequence's")
+    vw.add_argument("--swap", choices=("lut", "mask"), default="lut",
+                    help="buffer switch: rewrite the LUT (default) or the display mask")
+    vw.add_argument("--background", choices=("black", "white"), default="black")
+    vw.add_argument("--headless", action="store_true", help="no window")
+    vw.add_argument("--frames", type=Path, help="write the screen of every period as PNG here")
+    vw.add_argument("--screenshot", type=Path, help="save the last screen as PNG")
+    vw.add_argument("--scale", type=int, default=1)
+    vw.set_defaults(handler=_view)
+
+
+def _front_options(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--script", type=Path, help="timed event script (headless driving)")
+    p.add_argument("--tablet", metavar="SOURCE", help="tablet source (see 'camlab88 tablet'); "
+                   "default: the mouse")
+    p.add_argument("--headless", action="store_true", help="no window (needs --script)")
+    p.add_argument("--screenshot", type=Path, help="save the screen as PNG once the script "
+                   "(or the start-up screen) has been drawn, then exit")
+    p.add_argument("--background", choices=("black", "white"), default="black")
+    p.add_argument("--baud", type=int, default=9600)
+    p.add_argument("--scale", type=int, default=1)
+
+
+def _edit(args: argparse.Namespace) -> int:
+    from apps.kas import files, library
+    from apps.kas.editor import Editor
+    from apps.kas.front import EditorFront
+
+    target = Path(args.file)
+    try:
+        start = files.load_keyframe(target) if target.exists() else None
+        over = files.load_drawing_or_frame(library.resolve(args.over)) if args.over else None
+        saved: list[int] = []
+
+        def save(drawing) -> None:  # noqa: ANN001
+            files.save_keyframe(target, drawing)
+            saved.append(len(drawing.chains))
+            front.editor.message = f"saved {target.name}"
+
+        front = EditorFront(Editor(start, over, args.seed), args.background, save)
+        session = _run_front(front, args, "kas edit")
+    except (OSError, ValueError) as exc:
+        return _fail("edit", exc)
+    ed = front.editor
+    print(f"kas edit: {len(ed.drawing.chains)} chains, {ed.drawing.n_points} points; "
+          f"{'saved ' + str(target) if saved else 'not saved (F2 saves)'}; "
+          f"{session.line.stats['host_to_device_bytes']} characters to the Sigma")
+    return 0
+
+
+def _path(args: argparse.Namespace) -> int:
+    from apps.kas import files, library
+    from apps.kas.front import PathFront
+    from apps.kas.path_editor import PathEditor
+
+    out = Path(args.out)
+    ticks = Path(args.ticks) if args.ticks else out.with_name(f"{out.stem}_ticks{out.suffix}")
+    try:
+        prev = files.load_path(library.resolve(args.previous)) if args.previous else None
+        model = PathEditor(files.load_drawing_or_frame(library.resolve(args.first)),
+                           files.load_drawing_or_frame(library.resolve(args.second)), prev)
+
+        def save(path, timing) -> None:  # noqa: ANN001
+            files.save_path(out, path)
+            if len(timing.values):
+                files.save_timing(ticks, timing)
+
+        front = PathFront(model, args.background, save)
+        _run_front(front, args, "kas path")
+        path = model.sample_path()
+        if args.script is not None:
+            if path is None:
+                raise ValueError(f"{args.script}: the script draws no path")
+            save(path, model.timing())
+    except (OSError, ValueError) as exc:
+        return _fail("path", exc)
+    if path is not None:
+        print(f"kas path: {len(path.points)} path points, {len(model.ticks)} ticks -> {out}"
+              + (f", {ticks}" if model.ticks else ""))
+    return 0
+
+
+def _run_front(front, args: argparse.Namespace, title: str):  # noqa: ANN001, ANN202
+    """Run a front on an emulated T5684 over the line: from a script and/or a window."""
+    from apps.kas.front.script import Session, parse_timed_script
+    from emulator.sigma import Terminal
+    from protocols.link import LineSettings
+
+    events = []
+    if args.script is not None:
+        events = parse_timed_script(args.script.read_text(encoding="utf-8"), str(args.script))
+    if args.headless and args.script is None:
+        raise ValueError("--headless needs --script")
+    term = Terminal("t5684")
+    settings = LineSettings(baud=args.baud)
+    if not args.headless and not _display():
+        raise ValueError("no display for a window: give --headless and --script")
+    if args.headless:
+        session = Session(front, term, settings)
+        session.run_script(events)
+        if args.screenshot is not None:
+            from camlab88.commands.sigma import write_png_atomic
+
+            write_png_atomic(term.frame(), args.screenshot)
+            print(f"{title}: screenshot {args.screenshot}")
+        return session
+    return _windowed(front, term, settings, events, args, title)
+
+
+def _windowed(front, term, settings, events, args, title: str):  # noqa: ANN001, ANN202
+    from apps.kas.front.keyboard import KEY_BYTES
+    from apps.kas.front.script import Session
+    from camlab88.commands.tablet import TabletInput
+    from emulator.host_input import KeyDown, PointerButton, PointerMove, Quit
+    from emulator.window import Window
+    from protocols.link import Throttle
+    from protocols.tablets.input_layer import MouseSample
+
+    notices: list[str] = []
+    tablet = TabletInput(args.tablet, area=_tablet_area(), notify=notices.append)
+    session = Session(front, term, settings, pointer=tablet)
+    window = Window(f"camlab88 {title} - Sigma T5684", (768, 512), scale=args.scale)
+    throttle = Throttle(1.0)
+    buttons = 0
+    i = 0
+    ticks = 0
+    try:
+        while True:
+            mouse, keys = [], []
+            if i < len(events):
+                mouse, keys, i = session.due(events, i)
+            for ev in window.poll():
+                if isinstance(ev, Quit):
+                    return session
+                if isinstance(ev, KeyDown):
+                    if ev.key in KEY_BYTES:
+                        keys.append(ev.key)
+                    elif len(ev.char) == 1 and 0x20 <= ord(ev.char) <= 0x7E:
+                        keys.append(ev.char)
+                elif isinstance(ev, PointerMove | PointerButton):
+                    if isinstance(ev, PointerButton) and ev.button == 1:
+                        buttons = 1 if ev.pressed else 0
+                    elif isinstance(ev, PointerMove):
+                        buttons = 1 if 1 in ev.buttons else 0
+                    mouse.append(MouseSample(ev.x, ev.y, buttons, (768, 512)))
+            session.step(mouse, keys)
+            while notices:
+                print(f"{title}: {notices.pop(0)}", file=sys.stderr)
+            ticks += 1
+            if ticks % 4 == 0:
+                window.show(term.frame())
+            if args.screenshot is not None and i >= len(events) and not session.busy():
+                window.show(term.frame())
+                window.screenshot(args.screenshot)
+                print(f"{title}: screenshot {args.screenshot}")
+                return session
+            if args.screenshot is None:
+                throttle.pace(session.clock.exact)
+    finally:
+        tablet.close()
+        window.close()
+
+
+def _display() -> bool:
+    import os
+
+    return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")
+                or os.environ.get("SDL_VIDEODRIVER"))
+
+
+class _Quit(Exception):
+    """The window was closed."""
+
+
+def _tablet_area():  # noqa: ANN202
+    from apps.kas.front.layout import TABLET_AREA
+
+    return TABLET_AREA
+
+
+def _view(args: argparse.Namespace) -> int:
+    from apps.kas import files, library
+    from apps.kas.front.viewer import LineTest
+    from camlab88.commands.sigma import write_png_atomic
+    from emulator.sigma import Terminal
+
+    headless = args.headless or not _display()
+    try:
+        seq = files.load_sequence(library.resolve(args.seq))
+        test = LineTest(seq, args.swap, args.background)
+        term = Terminal("t5684")
+        window = None
+        if not headless:
+            from emulator.window import Window
+
+            window = Window("camlab88 kas view - Sigma T5684", (768, 512), scale=args.scale)
+        fps = args.fps or seq.fps
+
+        def period(k: int, t) -> None:  # noqa: ANN001
+            if args.frames is not None:
+                write_png_atomic(t.frame(), args.frames / f"frame_{k:05d}.png")
+            if window is not None:
+                window.show(t.frame())
+                if any(type(ev).__name__ == "Quit" for ev in window.poll()):
+                    raise _Quit
+                if args.screenshot is None:
+                    window.wait_frame(fps)
+
+        try:
+            try:
+                rep = test.run(args.mode, args.baud, args.fps, term, period)
+            except _Quit:
+                print("kas view: window closed")
+                return 0
+            if args.screenshot is not None:
+                if window is not None:
+                    window.show(term.frame())
+                    window.screenshot(args.screenshot)
+                else:
+                    write_png_atomic(term.frame(), args.screenshot)
+        finally:
+            if window is not None:
+                window.close()
+    except (OSError, ValueError) as exc:
+        return _fail("view", exc)
+    print(rep.summary())
+    print("shown:", " ".join(map(str, rep.shown_frames)))
+    print("dropped:", " ".join(map(str, rep.dropped)) or "-")
+    return 0
+
+
+def _export_sigma(seq, out: str, background: str, progress) -> Path:  # noqa: ANN001
+    """Each frame drawn on a fresh emulated T5684 (16 colours, the terminal's own vectors)."""
+    import os
+
+    import imageio.v3 as iio
+    import numpy as np
+
+    from apps.kas.files import atomic_write
+    from apps.kas.front.viewer import still_bytes
+    from emulator.sigma import Terminal
+
+    out_p = Path(out)
+    ext = out_p.suffix.lower()
+    if ext not in (".gif", ".mp4", ".png"):
+        raise ValueError(f"export to .gif, .mp4 or .png, not {out_p.suffix!r}")
+    if not seq.frames:
+        raise ValueError("the sequence has no frames")
+
+    def frames():
+        for i, f in enumerate(seq.frames):
+            term = Terminal("t5684")
+            term.feed(still_bytes(f, background))
+            if progress:
+                progress(i + 1, len(seq))
+            yield term.frame()
+
+    if ext == ".png":
+        for i, img in enumerate(frames(), start=1):
+            atomic_write(out_p.with_name(f"{out_p.stem}_{i:04d}.png"),
+                         iio.imwrite("<bytes>", img, extension=".png"))
+        return out_p.with_name(f"{out_p.stem}_0001.png")
+    tmp = out_p.with_name(f".{out_p.stem}.partial{ext}")
+    try:
+        if ext == ".gif":
+            iio.imwrite(tmp, np.stack(list(frames())), extension=".gif",
+                        duration=1000 / seq.fps, loop=0)
+        else:
+            import imageio.v2 as iio2
+
+            with iio2.get_writer(tmp, format="FFMPEG", mode="I", fps=seq.fps, codec="libx264",
+                                 macro_block_size=1, ffmpeg_log_level="error",
+                                 output_params=["-pix_fmt", "yuv420p"]) as wr:
+                for img in frames():
+                    wr.append_data(img)
+        os.replace(tmp, out_p)
+    finally:
+        if tmp.exists():
+            tmp.unlink()
+    return out_p
 
 
 def _schedule(args: argparse.Namespace) -> int:

@@ -1,0 +1,67 @@
+"""KAS device front: how fast the fronts run and how many characters they put on the line.
+
+Run by hand: python benchmarks/bench_kas_front.py
+"""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+from apps.kas import demo
+from apps.kas.editor import Editor
+from apps.kas.front import EditorFront, LineTest, Session, parse_timed_script
+from apps.kas.front.draw import encode
+from apps.kas.front.viewer import VIEW_CLIP, chain_prims, frame_points_px
+from emulator.sigma import Terminal
+from protocols.sigma import Encoder
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def editor_session() -> None:
+    text = (ROOT / "tests/data/kas_front/edit_all.txt").read_text()
+    t0 = time.perf_counter()
+    front = EditorFront(Editor(seed=1))
+    s = Session(front, Terminal("t5684"))
+    s.run_script(parse_timed_script(text, "edit_all"))
+    wall = time.perf_counter() - t0
+    sent = sum(len(d) for _, d in s.sent)
+    first = len(s.sent[0][1])
+    print(f"editor, edit_all.txt: {float(s.clock.exact):.2f} s of line time in {wall:.2f} s "
+          f"wall; {len(s.sent)} writes, {sent} characters ({first} for the start-up screen), "
+          f"{front.painter.stats['erased']} erase blocks")
+
+
+def viewer() -> None:
+    seq = demo.build()
+    test = LineTest(seq)
+    sizes = test.sizes()
+    t0 = time.perf_counter()
+    for baud in (9600, 19200, 38400, 115200):
+        rep = test.run("realtime", baud)
+        print(f"viewer, demo ({len(seq)} frames, mean {sum(sizes) / len(sizes):.0f} "
+              f"characters a frame incl. 84 for the LUT swap): {baud} baud -> "
+              f"{len(rep.shown)} shown, {len(rep.dropped)} dropped")
+    t1 = time.perf_counter()
+    frames = []
+    test.run("every", 9600, terminal=Terminal("t5684"), on_period=lambda k, t: frames.append(k))
+    t2 = time.perf_counter()
+    print(f"viewer: four real-time runs (host side) {t1 - t0:.3f} s; every-frame run fed to the "
+          f"emulated terminal, {len(frames)} periods: {t2 - t1:.2f} s wall")
+    enc = Encoder()
+    ags = ngs = 0
+    for f in seq.frames:
+        for pts, cols in frame_points_px(f):
+            for p in chain_prims(pts, cols, VIEW_CLIP):
+                ags += len(encode(enc, p))
+                xy = list(zip(p.data[0::2], p.data[1::2], strict=True))
+                ngs += len(enc.colour(p.colour) + enc.polyline(xy if len(xy) > 1 else xy * 2))
+    print(f"abbreviated vs normal graphics mode, demo vectors: {ags} vs {ngs} characters "
+          f"({ags / ngs:.2f})")
+
+
+if __name__ == "__main__":
+    print("machine: 2-core x86_64 sandbox;", time.strftime("%Y-%m-%d"))
+    editor_session()
+    viewer()

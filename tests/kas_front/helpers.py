@@ -1,0 +1,38 @@
+"""Shared helpers: run a front against an emulated T5684 from a script."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from apps.kas.editor import Editor
+from apps.kas.events import Key, Pointer
+from apps.kas.front import EditorFront, Session, parse_timed_script
+from emulator.sigma import Terminal
+
+DATA = Path(__file__).parent.parent / "data" / "kas_front"
+GOLDEN = DATA / "golden"
+
+
+def script(name: str):  # noqa: ANN201
+    return parse_timed_script((DATA / name).read_text(encoding="utf-8"), name)
+
+
+def run_editor(name: str, seed: int = 1, background: str = "black", editor=None):  # noqa: ANN001, ANN201
+    saved = []
+    front = EditorFront(editor or Editor(seed=seed), background,
+                        on_save=lambda d: saved.append(d.copy()))
+    term = Terminal("t5684")
+    session = Session(front, term)
+    session.run_script(script(name))
+    return front, term, session, saved
+
+
+def model_only(name: str, seed: int = 1) -> Editor:
+    """The same events straight into the model, no device in between."""
+    ed = Editor(seed=seed)
+    for e in script(name):
+        if e.kind == "pointer":
+            ed.feed(Pointer(e.x, e.y, e.down))
+        elif e.kind == "key":
+            ed.feed(Key(e.key))
+    return ed

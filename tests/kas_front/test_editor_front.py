@@ -1,0 +1,114 @@
+"""The keyframe editor driven headless over the real byte path: script -> input layer and
+terminal keyboard -> line -> program -> Encoder -> line -> emulated Sigma."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from apps.kas.editor import Editor
+from apps.kas.files import KasFileError
+from apps.kas.front import EditorFront, Session, parse_timed_script
+from apps.kas.front.keyboard import KEY_BYTES, bytes_to_keys, key_to_bytes
+from emulator.sigma import Terminal
+from tests.kas_front.helpers import GOLDEN, model_only, run_editor
+from tests.support.golden import assert_matches_golden
+
+
+@pytest.fixture(scope="module")
+def edit_all():  # noqa: ANN201
+    return run_editor("edit_all.txt")
+
+
+def test_every_command_through_the_front_matches_the_model(edit_all) -> None:  # noqa: ANN001
+    front, term, session, saved = edit_all
+    want = model_only("edit_all.txt")
+    got = front.editor.drawing
+    assert len(got.chains) == len(want.drawing.chains) == 5
+    for a, b in zip(got.chains, want.drawing.chains, strict=True):
+        np.testing.assert_allclose(a.points, b.points, atol=1e-9)
+        assert a.colours.tolist() == b.colours.tolist()
+        assert a.section == b.section
+    # F2 at the end saved exactly that drawing
+    assert len(saved) == 1 and saved[0].n_points == got.n_points
+    # keys really went up the line, drawing orders down it, all understood
+    assert session.line.stats["device_to_host_bytes"] >= 60
+    assert term.stats["unknown"] == term.stats["malformed"] == term.stats["errors"] == 0
+
+
+def test_edit_session_screen_golden(edit_all) -> None:  # noqa: ANN001
+    _front, term, _s, _saved = edit_all
+    assert_matches_golden(term.frame(), GOLDEN / "edit_all.png")
+
+
+def test_incremental_redraw_equals_a_full_redraw(edit_all) -> None:  # noqa: ANN001
+    front, term, _s, _saved = edit_all
+    fresh = Terminal("t5684")
+    fresh.feed(EditorFront(front.editor).start())
+    assert np.array_equal(fresh.indices(), term.indices())
+    # and it really was incremental: many partial updates, one full draw
+    assert front.painter.stats["full"] == 1
+    assert front.painter.stats["erased"] > 10
+
+
+def test_freehand_sends_only_new_segments() -> None:
+    front = EditorFront(Editor())
+    term = Terminal("t5684")
+    s = Session(front, term)
+    # after the start-up screen has arrived, one new point every 0.1 s
+    s.run_script(parse_timed_script("5.0 move 0 0\ndown 0 0\n" + "".join(
+        f"+0.1 down {0.1 * i} {0.05 * (i % 3)}\n" for i in range(1, 30))))
+    sizes = [len(d) for _, d in s.sent[1:]]
+    assert len(sizes) >= 25
+    assert len(front.editor.drawing.chains[0]) == 30
+    assert max(sizes[1:]) < 40  # a few AGS bytes per new point, never the whole chain again
+    assert front.painter.stats["grown"] >= 10
+
+
+def test_white_background_golden() -> None:
+    front, term, _s, _saved = run_editor("white.txt", background="white")
+    assert len(front.editor.drawing.chains) == 2
+    frame = term.frame()
+    assert (frame[200, 300] == 255).all()  # the background is white
+    assert_matches_golden(frame, GOLDEN / "white.png")
+
+
+def test_stylus_cursor_follows_without_touching_the_planes() -> None:
+    front = EditorFront(Editor())
+    term = Terminal("t5684")
+    s = Session(front, term)
+    s.run_script(parse_timed_script("move 0 0\n0.5 move 2 1\n1.0 wait"))
+    before = term.indices().copy()
+    s.run_script(parse_timed_script("move -3 -2\n+0.5 wait"))
+    assert np.array_equal(before, term.indices())
+    assert (term.reg.cursor_x, term.reg.cursor_y) == (296 - 144, 218 - 96)
+    assert front.editor.drawing.chains == []
+
+
+def test_keyboard_codes_round_trip() -> None:
+    for name in KEY_BYTES:
+        assert bytes_to_keys(key_to_bytes(name)) == [name]
+    assert bytes_to_keys(b"ab,.") == ["a", "b", ",", "."]
+    with pytest.raises(ValueError, match="no Sigma key"):
+        key_to_bytes("f13")
+    assert 0x11 not in b"".join(KEY_BYTES.values()) and 0x13 not in b"".join(KEY_BYTES.values())
+
+
+@pytest.mark.parametrize("text, where", [
+    ("move 0 0\nmove 1\n", ":2:"),
+    ("1.0 move 0 0\n0.5 move 1 1\n", ":2:"),
+    ("menu nothing\n", ":1:"),
+    ("key f13\n", ":1:"),
+    ("2.0\n", ":1:"),
+    ("move nan 0\n", ":1:"),
+])
+def test_bad_script_names_the_line(text: str, where: str) -> None:
+    with pytest.raises(KasFileError) as exc:
+        parse_timed_script(text, "s.txt")
+    assert f"s.txt{where}" in str(exc.value)
+
+
+def test_script_times() -> None:
+    ev = parse_timed_script("move 0 0\n+0.5 key a\n2 type bc\nmenu pen2\n")
+    assert [float(e.t) for e in ev] == [0.0, 0.5, 2.0, 2.02, 2.04, 2.06]
+    assert [e.key for e in ev if e.kind == "key"] == ["a", "b", "c"]
