@@ -1,11 +1,19 @@
-"""``camlab88 demo``: a Sigma T5684 demo session played over a 9600-baud line.
+"""``camlab88 demo``: the main job — the emulated devices running the thesis's programs.
 
-The session is a byte stream built with protocols.sigma.Encoder, the way a host program
-would send it: abbreviated-mode vectors, dash masks, graphics text, firmware ellipses and
-flood fill, solid blocks, then LUT animation and the thesis's double buffering (two 2-bit
-buffers in the 4 planes, swapped through the LUT, 3.1.4). It is cut into 1/25 s of line
-time each and fed to the emulated terminal; with a display a window shows it as it
-arrives, without one (or with --headless) the frames go to PNGs and an animated GIF.
+The demo is a list of *acts*, each a device showing a program at 25 frames a second of
+device time:
+
+1. ``sigma`` — a Sigma T5684 session over a 9600-baud line: a byte stream built with
+   protocols.sigma.Encoder the way a host program would send it (abbreviated-mode vectors,
+   dash masks, graphics text, firmware ellipses and flood fill, solid blocks, then LUT
+   animation and the thesis's double buffering, §3.1.4).
+2. ``kas`` — KAS on the T5684: the keyframe editor drawing a stroke, then "a line taking a
+   walk" in-betweened, superimposed and played by the line-test viewer (real time, frames
+   dropped as 9600 baud forces; then every frame).
+
+Further acts (the Rainbow programs) are added by ``ACTS``. With a display a window shows each
+act as it arrives; without one (or with --headless) the frames go to PNGs and one animated GIF
+per act.
 """
 
 from __future__ import annotations
@@ -14,8 +22,11 @@ import argparse
 import math
 import os
 import sys
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
 from fractions import Fraction
 from pathlib import Path
+from typing import Any
 
 FPS = 25
 GIF_EVERY = 3  # every 3rd frame in the GIF (8.3 fps) keeps it small
@@ -33,6 +44,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--scale", type=int, default=1, help="window scale")
     p.add_argument("--screenshot", type=Path, help="save the window at the end and exit")
     p.add_argument("--fast", action="store_true", help="do not pace to the wall clock")
+    p.add_argument("--only", action="append", choices=[a.name for a in ACTS], metavar="ACT",
+                   help="play only this act (repeatable): " + ", ".join(a.name for a in ACTS))
     p.set_defaults(handler=demo_command)
 
 
@@ -134,42 +147,72 @@ def _sigma_animation_stream() -> bytes:
     return bytes(out)
 
 
-# ---------------------------------------------------------------------- playing it
-def frames_of(stream: bytes) -> list:
-    """The screen (768x512 RGB) after each 1/25 s of line time at 9600 baud."""
+# ---------------------------------------------------------------------- the acts
+@dataclass(frozen=True)
+class Act:
+    name: str
+    title: str
+    size: tuple[int, int]                 # device pixels (w, h)
+    frames: Callable[[], Iterator[Any]]   # yields (h, w, 3) uint8 frames at 25 per second
+
+
+def sigma_frames() -> Iterator[Any]:
+    """The Sigma showcase: the screen after each 1/25 s of line time at 9600 baud."""
     from emulator.sigma import Terminal
     from protocols.link import LineSettings, chunks_by_period
 
     term = Terminal("t5684")
-    frames = []
-    for _k, chunk in chunks_by_period(stream, LineSettings(baud=9600), Fraction(1, FPS)):
+    for _k, chunk in chunks_by_period(sigma_demo_stream(), LineSettings(baud=9600),
+                                      Fraction(1, FPS)):
         term.feed(chunk)
-        frames.append(term.frame())
-    return frames
+        yield term.frame()
 
 
+def kas_frames() -> Iterator[Any]:
+    """KAS on the T5684: the host's chunks written to a 9600-baud line at their times."""
+    from apps.kas.front import demo_session
+    from emulator.sigma import Terminal
+
+    term = Terminal("t5684")
+    session = demo_session()
+    for _k, data in session.arrivals(Fraction(1, FPS)):
+        term.feed(data)
+        yield term.frame()
+
+
+ACTS: tuple[Act, ...] = (
+    Act("sigma", "Sigma T5684 on a 9600-baud line", (768, 512), sigma_frames),
+    Act("kas", "KAS keyframe editor and line test on the T5684", (768, 512), kas_frames),
+)
+
+
+# ---------------------------------------------------------------------- playing it
 def demo_command(args: argparse.Namespace) -> int:
-    stream = sigma_demo_stream()
-    seconds = len(stream) / 960
+    acts = [a for a in ACTS if not args.only or a.name in args.only]
     headless = args.headless or not os.environ.get("DISPLAY")
     if headless:
-        return _headless(stream, args.out, seconds)
-    return _windowed(stream, args)
+        return _headless(acts, args.out)
+    return _windowed(acts, args)
 
 
-def _headless(stream: bytes, out: Path, seconds: float) -> int:
+def _headless(acts: list[Act], out: Path) -> int:
     from camlab88.commands.sigma import write_png_atomic
 
-    frames = frames_of(stream)
     out.mkdir(parents=True, exist_ok=True)
-    for k, f in enumerate(frames):
-        write_png_atomic(f, out / f"sigma_{k:04d}.png")
-    gif = out / "sigma_demo.gif"
-    _write_gif(frames[::GIF_EVERY] + [frames[-1]], gif)
-    print(f"camlab88 demo: {len(stream)} characters = {seconds:.1f} s at 9600 baud; "
-          f"{len(frames)} frames written to {out}/sigma_*.png and {gif}")
+    for act in acts:
+        frames = []
+        for k, f in enumerate(act.frames()):
+            write_png_atomic(f, out / f"{act.name}_{k:04d}.png")
+            if k % GIF_EVERY == 0:
+                frames.append(f)
+            last = f
+        frames.append(last)
+        gif = out / f"{act.name}_demo.gif"
+        _write_gif(frames, gif)
+        n = k + 1
+        print(f"camlab88 demo: {act.title}: {n} frames ({n / FPS:.1f} s of device time) "
+              f"written to {out}/{act.name}_*.png and {gif}")
     return 0
-
 
 def _write_gif(frames: list, path: Path) -> None:
     import tempfile
@@ -192,32 +235,43 @@ def _write_gif(frames: list, path: Path) -> None:
         raise
 
 
-def _windowed(stream: bytes, args: argparse.Namespace) -> int:
+def _windowed(acts: list[Act], args: argparse.Namespace) -> int:
     from emulator.host_input import KeyDown, Quit
-    from emulator.sigma import Terminal
     from emulator.window import Window
-    from protocols.link import LineSettings, chunks_by_period
 
-    term = Terminal("t5684")
-    win = Window("camlab88 demo - Sigma T5684", (768, 512), scale=args.scale)
+    frame = None
+    win = None
     try:
-        for _k, chunk in chunks_by_period(stream, LineSettings(baud=9600), Fraction(1, FPS)):
-            term.feed(chunk)
-            win.show(term.frame())
-            for ev in win.poll():
-                if isinstance(ev, Quit) or (isinstance(ev, KeyDown) and ev.key == "escape"):
-                    return 0
-            if not args.fast and args.screenshot is None:
-                win.wait_frame(FPS)
+        for act in acts:
+            if win is not None:
+                win.close()
+            win = Window(f"camlab88 demo - {act.title}", act.size, scale=args.scale)
+            for frame in act.frames():
+                win.show(frame)
+                for ev in win.poll():
+                    if isinstance(ev, Quit):
+                        return 0
+                    if isinstance(ev, KeyDown) and ev.key == "escape":
+                        return 0
+                    if isinstance(ev, KeyDown) and ev.key == "space":
+                        break  # on to the next act
+                else:
+                    if not args.fast and args.screenshot is None:
+                        win.wait_frame(FPS)
+                    continue
+                break
+        if win is None:
+            return 0
         if args.screenshot is not None:
             win.screenshot(args.screenshot)
             print(f"camlab88 demo: screenshot {args.screenshot}")
             return 0
-        print("camlab88 demo: finished; close the window or press Escape", file=sys.stderr)
+        print("camlab88 demo: finished; close the window or press a key", file=sys.stderr)
         while True:
             for ev in win.poll():
                 if isinstance(ev, Quit) or isinstance(ev, KeyDown):
                     return 0
             win.wait_frame(10)
     finally:
-        win.close()
+        if win is not None:
+            win.close()
