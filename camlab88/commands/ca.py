@@ -58,6 +58,36 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     lib = sub.add_parser("library", help="list the shipped rule sets and patterns")
     lib.set_defaults(handler=_library)
 
+    prog = sub.add_parser(
+        "program", help="the interactive program on the emulated Rainbow (sections 7.3.1-2)",
+        description="The interactive cellular automaton on the emulated Rainbow: mouse "
+        "(left button pans, middle button menus, right button edits / steps) and keyboard. "
+        "Log, RecordPansAndZooms, Checkpoint, Script and ReplayPansAndZooms as in section "
+        "7.3.1.")
+    prog.add_argument("--rules", default="life", help="rule file or library name (life)")
+    prog.add_argument("--pattern", help="pattern loaded at the centre of the view")
+    prog.add_argument("--log", metavar="L", help="Log: record every intervention in file L")
+    prog.add_argument("--record-pans", action="store_true",
+                      help="RecordPansAndZooms: the log also records pans and zooms")
+    prog.add_argument("--checkpoint", type=int, default=0, metavar="N",
+                      help="Checkpoint: write L<generation> every N generations")
+    prog.add_argument("--script", metavar="S", help="Script: replay the log S")
+    prog.add_argument("--replay-pans", action="store_true",
+                      help="ReplayPansAndZooms: also repeat the script's pans and zooms")
+    prog.add_argument("--start", type=int, metavar="G",
+                      help="begin the script at generation G (asked for if omitted)")
+    prog.add_argument("--edges", choices=("wrap", "bounded"), default="wrap")
+    prog.add_argument("--seed", type=int, default=0)
+    prog.add_argument("--headless", action="store_true", help="no window")
+    prog.add_argument("--events", metavar="FILE",
+                      help="scripted mouse/keyboard input (see apps/ca/program/script_events.py)")
+    prog.add_argument("--frames", type=int, metavar="N",
+                      help="stop after N frames (default: until Finish; 100 headless)")
+    prog.add_argument("--screenshot", metavar="PNG", help="save the last frame and exit")
+    prog.add_argument("--scale", type=int, default=1, help="window scale factor")
+    prog.add_argument("--json", action="store_true", help="print the final statistics as JSON")
+    prog.set_defaults(handler=_program)
+
 
 def _print_stats(stats: dict, as_json: bool) -> None:
     if as_json:
@@ -158,3 +188,97 @@ def _library(args: argparse.Namespace) -> int:
     for kind, items in library.names().items():
         print(f"{kind}: {' '.join(items)}")
     return 0
+
+
+def _program(args: argparse.Namespace) -> int:
+    from apps.ca.log import LogError
+    from apps.ca.patterns import PatternError
+    from apps.ca.program import script_events
+    from apps.ca.program.program import Options
+    from apps.ca.rules import RuleError
+
+    opts = Options(rules=args.rules, pattern=args.pattern, log=args.log,
+                   record_pans=args.record_pans, checkpoint=max(0, args.checkpoint),
+                   script=args.script, replay_pans=args.replay_pans, start=args.start,
+                   edges=args.edges, seed=args.seed)
+    try:
+        steps = script_events.read(args.events) if args.events else []
+        frames = args.frames
+        if frames is None and (args.headless or args.screenshot):
+            frames = 100 if not steps else 0
+        stats = run_program(opts, steps, frames, headless=args.headless,
+                            screenshot=args.screenshot, scale=args.scale)
+    except (OSError, LogError, RuleError, PatternError, script_events.ScriptError,
+            ValueError) as exc:
+        print(f"camlab88 ca program: {exc}", file=sys.stderr)
+        return 2
+    _print_stats(stats, args.json)
+    return 0
+
+
+def run_program(opts, steps: list, frames: int | None, headless: bool = True,
+                screenshot: str | None = None, scale: int = 1, paced: bool = True) -> dict:
+    """Run the program on an in-process Rainbow: scripted steps first, then ``frames``
+    more frames (None: until Finish, or the window is closed)."""
+    from apps.ca.program import script_events
+    from apps.ca.program.program import CAProgram
+    from emulator.rainbow.files import save_png
+    from emulator.rainbow.session import in_process
+
+    window = None
+    quit_ = [False]
+    session = in_process()
+    if not headless:
+        from emulator.window import Window
+
+        window = Window("camlab88 ca", (768, 576), scale=scale)
+    held = [0]
+
+    def frame() -> None:
+        if window is not None:
+            from camlab88.commands.rainbow import _mouse_or_key
+            from emulator.host_input import Quit
+
+            for ev in window.poll():
+                if isinstance(ev, Quit):
+                    quit_[0] = True
+                dev = _mouse_or_key(ev, held)
+                if dev is not None:
+                    session.inject(dev)
+        program.frame()
+        if window is not None:
+            window.show(session.executor.last_frame)
+            if paced and not screenshot:
+                window.wait_frame(50)
+
+    try:
+        program = CAProgram(session.client, opts)
+        done = lambda: program.finished or quit_[0]  # noqa: E731
+        script_events.play(steps, session.inject, frame, done)
+        n = 0
+        while not done() and (frames is None or n < frames):
+            frame()
+            n += 1
+        if screenshot:
+            if window is not None:
+                window.screenshot(screenshot)
+            else:
+                save_png(screenshot, session.executor.last_frame)
+    finally:
+        if window is not None:
+            window.close()
+    stats = program.session.statistics()
+    return stats
+
+
+def run_demo(headless: bool = False, screenshot: str | None = None, scale: int = 1,
+             generations: int = 60) -> dict:
+    """A short demo for ``camlab88 demo``: the Gosper glider gun in Life, stepped in auto
+    mode for ``generations`` generations, with a pan and a zoom change on the way."""
+    from apps.ca.program import script_events
+    from apps.ca.program.demo import demo_events
+    from apps.ca.program.program import Options
+
+    steps = script_events.parse(demo_events(generations), "<ca demo>")
+    return run_program(Options(rules="life", pattern="gosper_gun"), steps, 0, headless=headless,
+                       screenshot=screenshot, scale=scale)
