@@ -11,7 +11,10 @@ device time:
    walk" in-betweened, superimposed and played by the line-test viewer (real time, frames
    dropped as 9600 baud forces; then every frame).
 
-Further acts (the Rainbow programs) are added by ``ACTS``. With a display a window shows each
+3. ``ca`` — the programmable cellular automaton on the Rainbow: Life's Gosper gun in auto
+   mode, panned with the four-times-mapped super pad and zoomed, by scripted mouse events.
+
+ With a display a window shows each
 act as it arrives; without one (or with --headless) the frames go to PNGs and one animated GIF
 per act.
 """
@@ -180,9 +183,31 @@ def kas_frames() -> Iterator[Any]:
         yield term.frame()
 
 
+def ca_frames() -> Iterator[Any]:
+    """The cellular automaton on the Rainbow: the Gosper gun in auto mode, panned and zoomed,
+    driven by the program's own scripted mouse events."""
+    from apps.ca.program import script_events
+    from apps.ca.program.demo import demo_events
+    from apps.ca.program.program import CAProgram, Options
+    from emulator.rainbow.session import in_process
+
+    session = in_process()
+    program = CAProgram(session.client, Options(rules="life", pattern="gosper_gun"))
+    frames: list[Any] = []
+
+    def frame() -> None:
+        program.frame()
+        frames.append(session.executor.last_frame.copy())
+
+    steps = script_events.parse(demo_events(60), "<ca demo>")
+    script_events.play(steps, session.inject, frame, lambda: program.finished)
+    yield from frames
+
+
 ACTS: tuple[Act, ...] = (
     Act("sigma", "Sigma T5684 on a 9600-baud line", (768, 512), sigma_frames),
     Act("kas", "KAS keyframe editor and line test on the T5684", (768, 512), kas_frames),
+    Act("ca", "the programmable cellular automaton on the Rainbow", (768, 576), ca_frames),
 )
 
 
@@ -210,7 +235,7 @@ def _headless(acts: list[Act], out: Path) -> int:
         gif = out / f"{act.name}_demo.gif"
         _write_gif(frames, gif)
         n = k + 1
-        print(f"camlab88 demo: {act.title}: {n} frames ({n / FPS:.1f} s of device time) "
+        print(f"camlab88 demo: {act.title}: {n} frames "
               f"written to {out}/{act.name}_*.png and {gif}")
     return 0
 

@@ -38,5 +38,16 @@ def test_kas_act_is_the_kas_session_played_over_the_line(tmp_path: Path) -> None
 
 def test_acts_are_listed_in_help() -> None:
     names = [a.name for a in demo.ACTS]
-    assert names[:2] == ["sigma", "kas"]
+    assert names[:3] == ["sigma", "kas", "ca"]
     assert len(set(names)) == len(names)
+
+
+def test_ca_act_plays_the_gun_on_the_rainbow(tmp_path: Path) -> None:
+    assert main(["demo", "--headless", "--only", "ca", "--out", str(tmp_path)]) == 0
+    pngs = sorted(tmp_path.glob("ca_*.png"))
+    assert len(pngs) > 20
+    first, last = _png(pngs[0]), _png(pngs[-1])
+    assert first.shape == (576, 768, 3)
+    # the gun has fired: the final screen differs from the first, and living cells are shown
+    assert not np.array_equal(first, last)
+    assert len(np.unique(last.reshape(-1, 3), axis=0)) >= 3
