@@ -10,14 +10,21 @@ from PIL import Image
 
 
 def assert_matches_golden(frame: np.ndarray, path: Path) -> None:
-    """Compare an HxWx3 uint8 frame with a reference PNG, exactly."""
+    """Compare an HxWx3 uint8 frame with a reference PNG, exactly.
+
+    A missing reference is a failure, never silently created: regenerate deliberately with
+    ``CAMLAB88_REGEN_GOLDEN=1`` and look at the new image before committing it.
+    """
     frame = np.ascontiguousarray(frame, dtype=np.uint8)
-    if os.environ.get("CAMLAB88_REGEN_GOLDEN") == "1" or not path.exists():
-        if os.environ.get("CAMLAB88_REGEN_GOLDEN") != "1" and os.environ.get("CI"):
-            raise AssertionError(f"golden image {path} is missing (regenerate deliberately)")
+    if os.environ.get("CAMLAB88_REGEN_GOLDEN") == "1":
         path.parent.mkdir(parents=True, exist_ok=True)
         Image.fromarray(frame).save(path)
         return
+    if not path.exists():
+        raise AssertionError(
+            f"golden image {path} is missing: run the test with CAMLAB88_REGEN_GOLDEN=1, "
+            "look at the image, and commit it"
+        )
     want = np.asarray(Image.open(path).convert("RGB"))
     assert want.shape == frame.shape, f"{path.name}: shape {frame.shape} != golden {want.shape}"
     diff = np.argwhere(np.any(want != frame, axis=-1))
