@@ -13,6 +13,16 @@ SOURCE_HELP = (
 )
 
 
+def _positive(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, not {value}")
+    return value
+
+
 def register(subparsers: Any) -> None:
     p = subparsers.add_parser("tablet", help="graphics tablets: real (HID/serial) and emulated",
                               description="Graphics tablets over USB HID or serial, and an "
@@ -28,7 +38,7 @@ def register(subparsers: Any) -> None:
                        "units, pressure, buttons, proximity.")
     s.add_argument("source", metavar="SOURCE", help=SOURCE_HELP)
     s.add_argument("--raw", action="store_true", help="also print the raw bytes/reports in hex")
-    s.add_argument("--count", type=int, default=None, help="stop after N events")
+    s.add_argument("--count", type=_positive, default=None, help="stop after N events (N >= 1)")
     s.add_argument("--seconds", type=float, default=None, help="stop after S seconds")
     s.add_argument("--screenshot", default=None,
                    help="(emulated, mouse-driven) save the window after a few frames and exit")
@@ -170,6 +180,8 @@ class _Emulated:
     def show(self, events) -> None:
         if self.window is None:
             return
+        # the host may have moved the origin (Summagraphics "b"): draw as the tablet reports
+        self.view.model = self.tablet.model
         for e in events:
             self.view.add(e)
         self.window.show(self.view.frame())
@@ -208,6 +220,8 @@ def cmd_monitor(args: argparse.Namespace) -> int:
     source, emu, spec = _open(args.source, raw if args.raw else None, demo_path())
     if emu is not None and (emu.drive == "mouse" or args.screenshot):
         emu.open_window()
+    for note in getattr(source, "size_notes", ()):  # a size reply we could not trust
+        print(f"camlab88 tablet: {note}", file=sys.stderr)
     print(f"# {source.name}: {source.model.name}, 0..{source.model.max_x} x "
           f"0..{source.model.max_y}, {source.model.lines_per_inch:g} lpi", flush=True)
     count = 0
@@ -329,7 +343,6 @@ class TabletInput:
         from protocols.tablets.sources import SourceLost, open_source, parse_source
 
         self._emu = None
-        self._emu_model = None
         area = area or TWELVE_FIELD
         if source is None:
             self.layer = InputLayer(area, None, notify=notify)
@@ -342,8 +355,9 @@ class TabletInput:
 
             options = {k: v for k, v in spec.options.items() if k != "drive"}
             self._emu = EmulatedTablet(spec.protocol, options)
-            self._emu_model = self._emu.model
-            url = f"serial:{self._emu.slave_path}?protocol={spec.protocol}&init=0"
+            self._emu.assume_initialised()  # read with init=0: set up as our start-up would
+            query = "".join(f"&{k}={v}" for k, v in options.items())  # tilt=1, flair=1, ...
+            url = f"serial:{self._emu.slave_path}?protocol={spec.protocol}&init=0{query}"
             opened = SerialSource(parse_source(url))
             opened.name = spec.text
 
@@ -359,6 +373,9 @@ class TabletInput:
                 opened = None
                 if notify:
                     notify(f"{source}: {exc}; using the mouse until it appears")
+            for note in getattr(opened, "size_notes", ()):
+                if notify:
+                    notify(note)
         self.layer = InputLayer(area, opened, reopen=reopen, calibration=calibration,
                                 notify=notify)
 
@@ -367,8 +384,10 @@ class TabletInput:
             from emulator.tablet import pointer_to_tablet
 
             for m in mouse:
-                self._emu.send(pointer_to_tablet(m.x, m.y, m.view_size, self._emu_model,
+                self._emu.send(pointer_to_tablet(m.x, m.y, m.view_size, self._emu.model,
                                                  m.buttons))
+            if not mouse:
+                self._emu.repeat()  # a streaming tablet reports a still pen too
             return self.layer.poll((), timeout=0.0)
         return self.layer.poll(mouse)
 

@@ -13,6 +13,7 @@ from collections.abc import Mapping
 from dataclasses import replace
 
 from protocols.link.pty import PtyPort
+from protocols.tablets import wacom4
 from protocols.tablets.base import ProtocolError
 from protocols.tablets.events import TabletEvent, TabletModel
 from protocols.tablets.registry import make_encoder, resolve
@@ -29,7 +30,6 @@ class EmulatedTablet:
         self.protocol = spec.name
         self.line = spec.line
         self.encoder = make_encoder(protocol, options)
-        self.model: TabletModel = self.encoder.model
         self.port = port if port is not None else PtyPort()
         self._host = b""  # unfinished host command bytes
         self.commands: list[bytes] = []  # every command the host sent, for inspection
@@ -45,6 +45,23 @@ class EmulatedTablet:
             self.port.write(startup)
 
     @property
+    def model(self) -> TabletModel:
+        """The tablet as currently set up (host commands such as Summagraphics ``b`` change
+        where its origin is)."""
+        return self.encoder.model
+
+    def assume_initialised(self) -> None:
+        """Put the tablet in the state our start-up sequence leaves it in, without the host
+        sending it (for a reader opened with ``init=0``); the replies are discarded."""
+        data = b"".join(step.data for step in self.line.init)
+        if self.protocol == "wacom4":  # then the model's setup string, as after ``~#``
+            data += wacom4.parse_model_reply(self.encoder.identity).setup_string
+        with self._lock:
+            commands, _ = self.encoder.split_commands(data)
+            for command in commands:
+                self.encoder.answer(command)
+
+    @property
     def slave_path(self) -> str:
         return self.port.slave_path
 
@@ -57,6 +74,14 @@ class EmulatedTablet:
         self.service()
         with self._lock:
             return self._send_locked(event)
+
+    def repeat(self) -> bytes:
+        """Stream mode: a tablet keeps reporting while the pen is in proximity, even held
+        still (the host's silence detection relies on it)."""
+        last = self.last
+        if last is None or not last.proximity:
+            return b""
+        return self.send(last)
 
     def _send_locked(self, event: TabletEvent) -> bytes:
         if self.port.closed:
@@ -77,11 +102,15 @@ class EmulatedTablet:
         """Encode, never raising: a running device must not fall over on a mouse chord.
 
         Formats that carry one button at a time (Summagraphics codes, Bit Pad digits) report
-        the lowest button held; anything else the format cannot say is refused and counted."""
+        the lowest button held; a stylus whose format reads button 2 as "eraser" (Wacom IV)
+        gets the middle mouse button as its barrel button; anything else the format cannot
+        say is refused and counted."""
         attempts = [event]
         lowest = event.buttons & -event.buttons
         if lowest and lowest != event.buttons:
             attempts.append(replace(event, buttons=lowest))
+        if event.buttons & 4 and event.tool == "pen":
+            attempts.append(replace(event, buttons=event.buttons & ~4 | 2))
         reason = ""
         for attempt in attempts:
             try:

@@ -14,7 +14,7 @@ from protocols.tablets.base import ProtocolError, TabletParser
 from protocols.tablets.events import TabletEvent, TabletModel
 from protocols.tablets.framing import add_parity, parity_ok
 
-LINE_LIMIT = 40  # no report is this long; longer means noise without a terminator
+LINE_LIMIT = 64  # no report or reply is this long; longer means noise without a terminator
 
 
 class AsciiLineParser(TabletParser):

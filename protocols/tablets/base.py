@@ -20,9 +20,14 @@ class TabletParser(ABC):
     """
 
     name: str = ""
+    # Binary formats: a cut packet completed by line noise still frames correctly, so a
+    # coordinate beyond the model's maximum marks the packet bad (ASCII lines check
+    # themselves digit by digit).  Off while a size reply is awaited (it may be larger).
+    checks_range: bool = False
 
     def __init__(self, model: TabletModel, parmrk: bool = False) -> None:
         self.model = model
+        self.range_check = self.checks_range
         self.stats = ParseStats()
         self._parmrk = ParmrkFilter() if parmrk else None
         self._replies: list[DeviceReply] = []
@@ -37,8 +42,13 @@ class TabletParser(ABC):
             if not ok:
                 self.stats.parity_errors += 1
             event = self._byte(byte, ok, timestamp)
-            if event is not None:
-                out.append(event)
+            if event is None:
+                continue
+            if self.range_check and not (0 <= event.x <= self.model.max_x
+                                         and 0 <= event.y <= self.model.max_y):
+                self.stats.bad_packets += 1
+                continue
+            out.append(event)
         return out
 
     def take_replies(self) -> list[DeviceReply]:

@@ -12,12 +12,15 @@ import re
 
 from protocols.tablets.ascii_line import AsciiLineParser, apply_parity
 from protocols.tablets.base import ProtocolError, TabletEncoder, clamp_check
-from protocols.tablets.events import TabletEvent, TabletModel
+from protocols.tablets.events import DeviceReply, TabletEvent, TabletModel
 
 NAME = "bitpad2"
 DEFAULT_MODEL = TabletModel("Summagraphics Bit Pad Two (MM1103)", 2200, 2200, 200.0, None, None,
                             origin="lower-left")
-CONFIG_REPLY = b"MM1103 BIT PAD II by Summagraphics Version 1.0\r\n"  # version digit invented
+# The Send Configuration reply is "MM1103 BIT PAD II by Summagraphics Version n.n<CR>[<LF>]"
+# (manual p.27).  Its command letter is not recovered, so we never ask, but a tablet that sends
+# it (e.g. after a front-panel request) yields a DeviceReply rather than a bad report.
+CONFIG_PREFIX = "MM1103 BIT PAD II"
 _LINE = re.compile(r"(\d{4}),(\d{4}),([0-9])")
 
 
@@ -48,6 +51,13 @@ class Bitpad2Parser(AsciiLineParser):
     ) -> None:
         super().__init__(model, _decoder(tool), parity=parity, terminators=b"\r\n",
                          parmrk=parmrk)
+
+    def _finish(self, line: bytes, timestamp: float) -> TabletEvent | None:
+        if line.startswith(CONFIG_PREFIX.encode("ascii")):
+            self._replies.append(DeviceReply(line.decode("ascii", "replace"), timestamp))
+            self.stats.replies += 1
+            return None
+        return super()._finish(line, timestamp)
 
 
 class Bitpad2Encoder(TabletEncoder):

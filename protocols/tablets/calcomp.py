@@ -20,6 +20,7 @@ FIRMWARE_ID = b"CALCOMP DRAWINGBOARD EMULATION\r"  # reconstructed
 
 class CalcompParser(TabletParser):
     name = NAME
+    checks_range = True
 
     def __init__(
         self,

@@ -111,6 +111,8 @@ class WacomProfile:
         return _IntuosState()
 
 
+_INTUOS_SIZES = (("4x5", 12700, 10600), ("6x8", 20320, 16240), ("9x12", 30480, 24060),
+                 ("12x12", 30480, 31680), ("12x18", 45720, 31680))
 _TABLE = [
     (0x10, "Graphire", "graphire", 10206, 7422, 511, 80),
     (0x11, "Graphire2 4x5", "graphire", 10206, 7422, 511, 80),
@@ -130,8 +132,13 @@ _TABLE = [
     (0x302, "Intuos PT S", "bamboo-pen", 15200, 9500, 1023, 100),
     (0x30E, "Intuos S (CTL-480)", "bamboo-pen", 15200, 9500, 1023, 100),
     (0x303, "Intuos PT M", "bamboo-pen", 21600, 13500, 1023, 100),
-    (0x20, "Intuos 4x5", "intuos", 12700, 10600, 1023, 100),
-    (0x41, "Intuos2 4x5", "intuos", 12700, 10600, 1023, 100),
+    # Intuos 1 (GD-xxxx-U) and Intuos2 (XD-xxxx-U); the facts give the ends of the range,
+    # the sizes in between are the kernel's wacom_wac.c device table.
+    *[(pid, f"Intuos{gen} {size}", "intuos", mx, my, 1023, 100)
+      for gen, pids in (("", (0x20, 0x21, 0x22, 0x23, 0x24)),
+                        ("2", (0x41, 0x42, 0x43, 0x44, 0x45)))
+      for pid, (size, mx, my) in zip(pids, _INTUOS_SIZES, strict=True)],
+    (0x47, "Intuos2 6x8", "intuos", 20320, 16240, 1023, 100),
 ]
 PROFILES = {pid: WacomProfile(pid, f"Wacom {name}", fam, mx, my, p, r)
             for pid, name, fam, mx, my, p, r in _TABLE}

@@ -13,6 +13,8 @@ from protocols.tablets.hid_profiles import profile_for
 from protocols.tablets.sources import SourceLost, SourceSpec, TabletSource
 
 DIGITIZER_PAGE = 0x0D
+WACOM_PAGE = 0xFF0D  # newer Wacoms mirror the digitizer usages on this vendor page
+WACOM_VID = 0x056A
 READ_SIZE = 256
 
 
@@ -38,7 +40,7 @@ class HidDeviceInfo:
 
 
 def list_digitizers() -> tuple[list[HidDeviceInfo], str | None]:
-    """HID digitizer interfaces (usage page 0x0D, or any Wacom/known-profile device).
+    """HID digitizer interfaces: usage page 0x0D or Wacom's 0xFF0D, and any Wacom device.
 
     Never raises: no hidapi, no hidraw access or no devices give an empty list and a note.
     """
@@ -51,13 +53,21 @@ def list_digitizers() -> tuple[list[HidDeviceInfo], str | None]:
     except Exception as exc:  # hidapi raises plain OSError/IOError variants per platform
         return [], f"cannot enumerate HID devices: {exc}"
     out: list[HidDeviceInfo] = []
+    # hidapi lists each top-level collection; one line per interface, its pen page first
+    found = sorted(found, key=lambda d: int(d.get("usage_page", 0)) not in (DIGITIZER_PAGE,
+                                                                             WACOM_PAGE))
+    seen: set[bytes] = set()
     for d in found:
+        path = d.get("path", b"") or b""
+        if path and path in seen:
+            continue
         vid, pid = int(d.get("vendor_id", 0)), int(d.get("product_id", 0))
         page = int(d.get("usage_page", 0))
-        if page != DIGITIZER_PAGE and profile_for(vid, pid) is None:
+        if page not in (DIGITIZER_PAGE, WACOM_PAGE) and vid != WACOM_VID:
             continue
+        seen.add(path)
         out.append(HidDeviceInfo(
-            vid, pid, d.get("path", b"") or b"", page, int(d.get("usage", 0)),
+            vid, pid, path, page, int(d.get("usage", 0)),
             int(d.get("interface_number", -1)), d.get("manufacturer_string") or "",
             d.get("product_string") or "",
         ))
@@ -76,49 +86,87 @@ class HidSource(TabletSource):
         self.on_raw = on_raw
         self._t0 = time.monotonic()
         vid, pid = spec.vid_pid
-        self.device = hid.device()
-        try:
-            path = self._pen_interface(hid, vid, pid)
-            if path is not None:
-                self.device.open_path(path)
-            else:
-                self.device.open(vid, pid)
-        except (OSError, ValueError) as exc:
-            raise SourceLost(f"{spec.text}: cannot open (check permissions, see docs/tablets.md):"
-                             f" {exc}") from exc
         self.profile = profile_for(vid, pid)
         self._profile_decode = self.profile.make_decoder() if self.profile else None
         self.pen: PenDecoder | None = None
-        if self.profile is not None:
+        try:
+            rows = [d for d in hid.enumerate(vid, pid) if d.get("path")]
+        except Exception as exc:  # hidapi raises plain OSError/IOError variants per platform
+            raise SourceLost(f"{spec.text}: cannot enumerate HID devices: {exc}") from exc
+        if self.profile is not None:  # the vendor profile knows the layout: one interface
+            pen_pages = (DIGITIZER_PAGE, WACOM_PAGE)
+            paths = [d["path"] for d in rows if int(d.get("usage_page", 0)) in pen_pages]
+            self.device = self._open(hid, spec, paths[:1], vid, pid)
             try:  # legacy Wacoms start in mouse mode: switch to tablet reports
                 self.device.send_feature_report(list(self.profile.init_feature_report))
             except (OSError, ValueError):
                 pass
             self.model = self.profile.model
         else:
-            try:
-                descriptor = parse_descriptor(bytes(self.device.get_report_descriptor()),
-                                              spec.text)
-            except (OSError, ValueError, AttributeError) as exc:
-                self.device.close()
-                raise SourceLost(f"{spec.text}: cannot read the report descriptor: {exc}"
-                                 ) from exc
-            self.pen = PenDecoder(descriptor)
-            if not self.pen.pen_reports:
-                self.device.close()
-                raise SourceLost(f"{spec.text}: this interface has no pen report")
-            self.model = next(iter(self.pen.pen_reports.values()))
+            self._open_pen_interface(hid, spec, rows, vid, pid)
 
     @staticmethod
-    def _pen_interface(hid, vid: int, pid: int) -> bytes | None:
-        for d in hid.enumerate(vid, pid):
-            if int(d.get("usage_page", 0)) == DIGITIZER_PAGE:
-                return d.get("path")
-        return None
+    def _ranked(rows: list[dict]) -> list[bytes]:
+        """Interface paths, digitizer page first, then Wacom's page, then the rest."""
+        order = {DIGITIZER_PAGE: 0, WACOM_PAGE: 1}
+        ranked = sorted(rows, key=lambda d: order.get(int(d.get("usage_page", 0)), 2))
+        paths: list[bytes] = []
+        for d in ranked:
+            if d["path"] not in paths:
+                paths.append(d["path"])
+        return paths
+
+    @staticmethod
+    def _open(hid, spec: SourceSpec, paths: list[bytes], vid: int, pid: int):
+        device = hid.device()
+        try:
+            if paths:
+                device.open_path(paths[0])
+            else:
+                device.open(vid, pid)
+            # hidapi's read(n, 0) blocks until a report comes: a still pen would freeze the
+            # caller, so reads are non-blocking and waits use an explicit timeout.
+            device.set_nonblocking(1)
+        except (OSError, ValueError) as exc:
+            raise SourceLost(f"{spec.text}: cannot open (check permissions, see docs/tablets.md):"
+                             f" {exc}") from exc
+        return device
+
+    def _open_pen_interface(self, hid, spec: SourceSpec, rows: list[dict], vid: int,
+                            pid: int) -> None:
+        """A tablet has several interfaces (pen, pad, keyboard); use the first whose
+        descriptor has a pen report."""
+        paths: list[bytes | None] = list(self._ranked(rows)) or [None]
+        problems: list[str] = []
+        for path in paths:
+            where = spec.text + (f" ({path.decode(errors='replace')})" if path else "")
+            try:
+                device = self._open(hid, spec, [path] if path else [], vid, pid)
+            except SourceLost as exc:
+                problems.append(str(exc))
+                continue
+            try:
+                descriptor = parse_descriptor(bytes(device.get_report_descriptor()), where)
+                pen = PenDecoder(descriptor)
+            except (OSError, ValueError, AttributeError) as exc:
+                problems.append(f"{where}: cannot read the report descriptor: {exc}")
+                device.close()
+                continue
+            if not pen.pen_reports:
+                problems.append(f"{where}: no pen report")
+                device.close()
+                continue
+            self.device, self.pen = device, pen
+            self.model = next(iter(pen.pen_reports.values()))
+            return
+        raise SourceLost(f"{spec.text}: no interface with a pen report: " + "; ".join(problems))
 
     def read(self, timeout: float = 0.0) -> list[TabletEvent]:
         try:
-            data = self.device.read(READ_SIZE, int(timeout * 1000))
+            if timeout <= 0:  # non-blocking (set at open): whatever is queued, or nothing
+                data = self.device.read(READ_SIZE)
+            else:
+                data = self.device.read(READ_SIZE, max(1, round(timeout * 1000)))
         except (OSError, ValueError) as exc:
             raise SourceLost(f"{self.name}: {exc}") from exc
         if not data:

@@ -5,11 +5,16 @@ thesis §2.2.1/§3.1.1) asks for pointer events in its own units.  Whatever sour
 feeds them; if the tablet is unplugged or its stream breaks mid-stroke the layer ends that
 stroke with a release at the last position, says so once, carries on with the mouse, and
 retries the tablet every ``retry_every`` polls (a poll count, not wall time, so runs replay).
+Reopening runs on a worker (a serial tablet's start-up takes seconds) so ``poll`` never blocks.
+A stream that merely goes silent (cable pulled, no OS error) is judged on the source's own
+clock: tip down and no bytes for ``stall_release`` s ends the stroke; ``stall_fallback`` s
+hands over to the mouse until bytes come again.
 Mouse input arrives as plain data; this module imports no window code.
 """
 
 from __future__ import annotations
 
+import threading
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
@@ -54,6 +59,41 @@ class PointerEvent:
     source: str  # "tablet" or "mouse"
 
 
+def _in_thread(job: Callable[[], None]) -> None:
+    threading.Thread(target=job, name="tablet-reopen", daemon=True).start()
+
+
+class _Reopen:
+    """One attempt to reopen the tablet, run by ``spawn`` (a thread by default)."""
+
+    def __init__(self, reopen: Callable[[], TabletSource]) -> None:
+        self._reopen = reopen
+        self._lock = threading.Lock()
+        self.done = threading.Event()
+        self.source: TabletSource | None = None
+        self.cancelled = False
+
+    def run(self) -> None:
+        source = None
+        try:
+            source = self._reopen()
+        except Exception:  # still unplugged (or half-plugged and broken): try again later
+            source = None
+        with self._lock:
+            if self.cancelled and source is not None:
+                source.close()
+                source = None
+            self.source = source
+        self.done.set()
+
+    def cancel(self) -> None:
+        with self._lock:
+            self.cancelled = True
+            if self.source is not None:
+                self.source.close()
+                self.source = None
+
+
 class InputLayer:
     def __init__(
         self,
@@ -64,8 +104,12 @@ class InputLayer:
         calibration: Calibration | None = None,
         retry_every: int = 60,
         notify: Callable[[str], None] | None = None,
+        spawn: Callable[[Callable[[], None]], None] = _in_thread,
     ) -> None:
         self.area = area
+        self._spawn = spawn  # runs a reopen attempt; ``lambda job: job()`` = synchronous
+        self._reopening: _Reopen | None = None
+        self._stall = 0  # 0 streaming, 1 silent mid-stroke (stroke ended), 2 on the mouse
         self.source = source
         self.reopen = reopen
         self.retry_every = max(1, retry_every)
@@ -125,6 +169,7 @@ class InputLayer:
             except (SourceLost, OSError) as exc:
                 self._lost(out, exc)
             else:
+                self._check_silence(out)
                 model = self.source.model
                 for e in events:
                     x, y = self._tablet_xy(e)
@@ -133,13 +178,36 @@ class InputLayer:
                         pressure = max(0.0, min(1.0, e.pressure / model.pressure_max))
                     down = e.proximity and e.tip
                     self._emit(out, x, y, down, e.proximity, pressure, e.buttons, "tablet")
-                return out
+                if self._stall < 2:
+                    return out
         for m in mouse:
             w, h = m.view_size
             x = m.x / max(w, 1) * self.area.width
             y = m.y / max(h, 1) * self.area.height
             self._emit(out, x, y, bool(m.buttons & 1), True, None, m.buttons, "mouse")
         return out
+
+    def _check_silence(self, out: list[PointerEvent]) -> None:
+        """Act on a stream that stopped without an error (sources that stream continuously
+        while in proximity expose ``clock``/``last_data``/``stall_release``/``stall_fallback``)."""
+        source = self.source
+        clock = getattr(source, "clock", None)
+        if clock is None:
+            return
+        idle = clock() - source.last_data
+        if self._stall and idle < source.stall_release:  # bytes again
+            if self._stall == 2:
+                self._end_stroke(out, "mouse")
+                self._say(f"{self._source_name}: data again; using the tablet again")
+            self._stall = 0
+        elif self._stall == 0 and self._down and idle >= source.stall_release:
+            self._end_stroke(out, "tablet")
+            self._stall = 1
+            self._say(f"{self._source_name}: no data for {idle:.1f} s mid-stroke (cable?); "
+                      "stroke ended")
+        elif self._stall == 1 and idle >= source.stall_fallback:
+            self._stall = 2
+            self._say(f"{self._source_name}: still silent; using the mouse until it resumes")
 
     def _lost(self, out: list[PointerEvent], exc: BaseException) -> None:
         self._end_stroke(out, "tablet")
@@ -149,25 +217,35 @@ class InputLayer:
         except OSError:
             pass
         self.source = None
+        self._stall = 0
         self._polls_since_loss = 0
         self._say(f"{self._source_name}: lost ({exc}); using the mouse until it comes back")
 
     def _try_reopen(self, out: list[PointerEvent]) -> None:
         if self.reopen is None:
             return
-        self._polls_since_loss += 1
-        if self._polls_since_loss % self.retry_every:
-            return
-        try:
-            source = self.reopen()
-        except (SourceLost, OSError, ValueError):
+        if self._reopening is None:
+            self._polls_since_loss += 1
+            if self._polls_since_loss % self.retry_every:
+                return
+            self._reopening = _Reopen(self.reopen)
+            self._spawn(self._reopening.run)
+        job = self._reopening
+        if not job.done.is_set():
+            return  # still opening: keep going on the mouse
+        self._reopening = None
+        if job.source is None:
             return  # still unplugged: stay quiet, try again later
         self._end_stroke(out, "mouse")
-        self.source = source
-        self._source_name = getattr(source, "name", self._source_name)
+        self.source = job.source
+        self._stall = 0
+        self._source_name = getattr(job.source, "name", self._source_name)
         self._say(f"{self._source_name}: back; using the tablet again")
 
     def close(self) -> None:
+        if self._reopening is not None:
+            self._reopening.cancel()
+            self._reopening = None
         if self.source is not None:
             self.source.close()
             self.source = None

@@ -17,6 +17,8 @@ class InitStep:
     wait: float = 0.0  # seconds to wait after sending
     baud: int | None = None  # switch the port to this baud before sending
     expect_reply: bool = False  # a ~/CR-terminated reply is expected (read up to ``wait``)
+    flush: bool = False  # after the wait, discard whatever the tablet sent so far
+    size_reply: bool = False  # the reply is a report whose X/Y are the maximum X/Y
 
 
 @dataclass(frozen=True)
@@ -68,10 +70,13 @@ SETUPS: dict[str, LineSetup] = {
         "summa-mm", 9600, 8, "O", 1, True, False,
         (
             InitStep(b" " * 10 + b"\x00", 0.4),
+            # Prompt mode first: a streaming tablet would otherwise answer "a" among its
+            # ordinary reports; drop what is already in flight (as inputattach's EasyPen init).
+            InitStep(b"B", 0.05, flush=True),
             InitStep(b"0b", 0.0),
             InitStep(b"zb", 0.0),
             InitStep(b"h", 0.0),
-            InitStep(b"a", 0.5, expect_reply=True),
+            InitStep(b"a", 0.5, expect_reply=True, size_reply=True),
             InitStep(b"@", 0.0),  # stream mode
             InitStep(b"I" + bytes((32 + 0,)), 0.0),  # increment 0
             InitStep(b"F", 0.0),  # absolute
@@ -92,7 +97,10 @@ SETUPS: dict[str, LineSetup] = {
         (
             InitStep(b"\x1b%^23\r", 0.05),
             InitStep(b"\x1b%VA0\r", 0.05),
+            InitStep(b"\x1b%JR1000,0\r", 0.05),  # 1000 lpi, the model's resolution
+            InitStep(b"\x1b%H\r", 0.05, flush=True),  # stop streaming before asking
             InitStep(b"\x1b%__V\r", 0.5, expect_reply=True),
+            InitStep(b"\x1b%VS\r", 0.5, expect_reply=True, size_reply=True),
             InitStep(b"\x1b%IR\r", 0.05),
         ),
         "XFree86 calcomp driver defaults (9600 8N1, no flow control) and commands",

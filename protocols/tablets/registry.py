@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from protocols.tablets import bitpad1, bitpad2, calcomp, summa, wacom4
@@ -104,13 +104,21 @@ def _convert(spec_name: str, table: Mapping[str, Callable[[str], Any]],
     return out
 
 
+# Any parser: the active area when the tablet is not asked (init=0) and is not the default.
+SIZE_OPTIONS = {"max_x": _int, "max_y": _int}
+
+
 def make_parser(name: str, options: Mapping[str, str] | None = None,
                 parmrk: bool = False) -> TabletParser:
     spec, merged = resolve(name, options)
     kwargs = _convert(spec.name, spec.parser_options, merged)
     if "parity" in spec.parser_options and "parity" not in kwargs:
         kwargs["parity"] = spec.line.software_parity
-    return spec.parser(parmrk=parmrk, **kwargs)
+    parser = spec.parser(parmrk=parmrk, **kwargs)
+    size = _convert(spec.name, SIZE_OPTIONS, merged)
+    if size:
+        parser.model = replace(parser.model, **size)
+    return parser
 
 
 def make_encoder(name: str, options: Mapping[str, str] | None = None) -> TabletEncoder:
@@ -123,4 +131,4 @@ def make_encoder(name: str, options: Mapping[str, str] | None = None) -> TabletE
 
 def known_options(name: str) -> set[str]:
     spec, _ = resolve(name)
-    return set(spec.parser_options) | set(spec.encoder_options)
+    return set(spec.parser_options) | set(spec.encoder_options) | set(SIZE_OPTIONS)

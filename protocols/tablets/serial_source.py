@@ -17,6 +17,14 @@ from protocols.tablets.registry import make_parser, resolve
 from protocols.tablets.sources import SourceLost, SourceSpec, TabletSource
 
 REPLY_TIMEOUT = 1.0  # the kernel waits HZ for a Wacom reply (a PenPartner sends no CR)
+FLUSH_QUIET = 0.05  # s of silence that ends a flush
+FLUSH_LIMIT = 1.0  # a flush never waits longer than this
+SIZE_SETTLE = 0.1  # after a size reply, s to watch for more reports (a streaming tablet)
+MIN_SIZE = 100  # a "maximum coordinate" below this is not a tablet's size
+# A tablet streaming in proximity sends a report at least every few tens of ms; this long a
+# silence with the tip down means the stream broke (the input layer acts on it).
+STALL_RELEASE = 0.5
+STALL_FALLBACK = 2.0
 _PARITY = {"N": serial.PARITY_NONE, "E": serial.PARITY_EVEN, "O": serial.PARITY_ODD}
 
 
@@ -39,13 +47,17 @@ def _enable_parmrk(port: serial.Serial) -> bool:
 
 class SerialSource(TabletSource):
     def __init__(self, spec: SourceSpec, on_raw: Callable[[bytes], None] | None = None,
-                 sleep: Callable[[float], None] = time.sleep) -> None:
+                 sleep: Callable[[float], None] = time.sleep,
+                 clock: Callable[[], float] = time.monotonic) -> None:
         protocol_spec, _ = resolve(spec.protocol or "")
         self.spec = spec
         self.line: LineSetup = protocol_spec.line
         self.name = spec.text or spec.target
         self.on_raw = on_raw
         self._sleep = sleep
+        self.clock = clock  # times events and silences (injectable: tests stay deterministic)
+        self.stall_release, self.stall_fallback = STALL_RELEASE, STALL_FALLBACK
+        self.size_notes: list[str] = []
         bytesize, parity, stopbits = self.line.wire
         baud = spec.baud or self.line.baud
         try:
@@ -60,7 +72,7 @@ class SerialSource(TabletSource):
         self.parser: TabletParser = make_parser(spec.protocol or "", spec.options, parmrk=parmrk)
         self.model = self.parser.model
         self.replies: list[DeviceReply] = []
-        self._t0 = self._last_byte = time.monotonic()  # event times count from opening
+        self._t0 = self.last_data = clock()  # event times count from opening
         if spec.init and self.line.init:
             try:
                 self.initialise()
@@ -78,29 +90,76 @@ class SerialSource(TabletSource):
                 except (serial.SerialException, OSError, ValueError):
                     pass  # sockets and loopbacks have no baud rate to set
             self._write(step.data)
-            if step.expect_reply:
+            if step.size_reply:
+                self._await_size(step.wait, step.data)
+            elif step.expect_reply:
                 self._await_reply(step.wait, step.data)
             elif step.wait:
                 self._sleep(step.wait)
+            if step.flush:
+                self._flush_input()
         if isinstance(self.parser, wacom4.Wacom4Parser):
             self._configure_wacom()
         self.model = self.parser.model
 
+    def _flush_input(self) -> None:
+        """Drop the reports already on their way (sent before prompt/stop mode took hold):
+        read and discard until the line has been quiet for ``FLUSH_QUIET`` s (bounded, in
+        case the tablet ignored the command and keeps streaming)."""
+        try:
+            self.port.reset_input_buffer()
+        except (serial.SerialException, OSError, AttributeError):
+            pass
+        deadline = time.monotonic() + FLUSH_LIMIT
+        try:
+            while time.monotonic() < deadline:
+                self._wait_readable(FLUSH_QUIET)
+                if not self.port.read(self.port.in_waiting or 1):
+                    break
+        except (serial.SerialException, OSError, TypeError) as exc:
+            raise SourceLost(f"{self.name}: {exc}") from exc
+        self.parser = make_parser(self.spec.protocol or "", self.spec.options,
+                                  parmrk=self.parser._parmrk is not None)
+
     def _await_reply(self, limit: float, command: bytes) -> None:
-        """Wait for the answer to a query.  Wacom answers in ASCII (a ``~`` reply); the
-        Summagraphics ``a`` answer is a report whose X/Y are the maximum coordinates."""
+        """Wait for an ASCII answer to a query (a Wacom ``~`` reply)."""
         deadline = time.monotonic() + limit
         before = len(self.replies)
         while time.monotonic() < deadline:
-            events = self.read(timeout=0.05)
+            self.read(timeout=0.05)
             if len(self.replies) > before:
-                return
-            if events and command == b"a":
-                self.model = self.parser.model = replace(
-                    self.parser.model, max_x=events[0].x, max_y=events[0].y)
                 return
         self.parser.flush()
         self.replies.extend(self.parser.take_replies())
+
+    def _await_size(self, limit: float, command: bytes) -> None:
+        """Summagraphics ``a`` / CalComp ``ESC%VS``: the answer is one report whose X/Y are
+        the maximum coordinates.  Adopt it only if it is plausible: exactly one report (a
+        tablet still streaming sends more) with a size no tablet would be below."""
+        self.parser.range_check = False  # the real tablet may be larger than the default
+        events: list[TabletEvent] = []
+        deadline = time.monotonic() + limit
+        try:
+            while time.monotonic() < deadline and not events:
+                events += self.read(timeout=0.05)
+            settle = min(deadline, time.monotonic() + SIZE_SETTLE)
+            while events and time.monotonic() < settle:
+                events += self.read(timeout=0.02)
+        finally:
+            self.parser.range_check = self.parser.checks_range
+        what = command.strip(b"\x1b%\r").decode("ascii", "replace")
+        if len(events) == 1 and events[0].x >= MIN_SIZE and events[0].y >= MIN_SIZE:
+            self.model = self.parser.model = replace(
+                self.parser.model, max_x=events[0].x, max_y=events[0].y)
+            return
+        if not events:
+            note = f"no answer to {what!r}"
+        elif len(events) > 1:
+            note = f"{len(events)} reports after {what!r} (still streaming?)"
+        else:
+            note = f"implausible size {events[0].x} x {events[0].y} after {what!r}"
+        m = self.parser.model
+        self.size_notes.append(f"{self.name}: {note}; keeping 0..{m.max_x} x 0..{m.max_y}")
 
     def _configure_wacom(self) -> None:
         parser = self.parser
@@ -158,14 +217,14 @@ class SerialSource(TabletSource):
                 data = self.port.read(self.port.in_waiting or 1)
         except (serial.SerialException, OSError, TypeError) as exc:
             raise SourceLost(f"{self.name}: {exc}") from exc
-        now = time.monotonic()
+        now = self.clock()
         events: list[TabletEvent] = []
         if data:
-            self._last_byte = now
+            self.last_data = now
             if self.on_raw is not None:
                 self.on_raw(data)
             events = self.parser.feed(data, now - self._t0)
-        elif now - self._last_byte > REPLY_TIMEOUT:
+        elif now - self.last_data > REPLY_TIMEOUT:
             events = self.parser.flush(now - self._t0)
         self.replies.extend(self.parser.take_replies())
         return events

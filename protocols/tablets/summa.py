@@ -7,16 +7,22 @@ bitmask in gpm's ``M_summa``; ``buttons="code"`` (default, the X driver) or ``"m
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from protocols.tablets.base import ProtocolError, TabletEncoder, TabletParser, clamp_check
 from protocols.tablets.events import TabletEvent, TabletModel
 from protocols.tablets.framing import SyncFramer
 
 NAME = "summa-mm"
-# SummaSketch 12x12 in MM mode at the default 500 lpi letter ``h`` (facts §2.1).
+# SummaSketch 12x12 in MM mode at the default 500 lpi letter ``h`` (facts §2.1).  The start-up
+# sequence sends ``b`` (origin upper-left, as the X driver and inputattach's EasyPen init do),
+# so that is the origin the host decodes with; the tablet's own power-on origin is lower-left.
 DEFAULT_MODEL = TabletModel("Summagraphics MM (SummaSketch 12x12)", 6000, 6000, 500.0, None, None,
-                            origin="lower-left")
+                            origin="upper-left")
 FLAIR_MODEL = TabletModel("Summagraphics Flair (Z axis)", 6000, 6000, 500.0, 511, None,
-                          origin="lower-left")
+                          origin="upper-left")
+POWER_ON_ORIGIN = "lower-left"  # reconstructed: Cartesian, like the Bit Pads; ``b`` changes it
+SIGN_BITS = 0x18  # X/Y sign bits: absolute mode always sets both (facts §2.1)
 FIRMWARE_ID = b"SUMMA MM EMULATION\r"  # reconstructed: the real z? string is not known
 # Flair controller type (byte 6 bits 3-2) -> tool
 FLAIR_TOOLS = {0: "puck", 1: "pen", 2: "puck"}
@@ -44,6 +50,7 @@ def _field_from_buttons(buttons: int, encoding: str) -> int:
 
 class SummaParser(TabletParser):
     name = NAME
+    checks_range = True
 
     def __init__(
         self,
@@ -70,7 +77,10 @@ class SummaParser(TabletParser):
         packet = self._framer.push(byte)
         return None if packet is None else self.decode(packet, timestamp)
 
-    def decode(self, p: bytes, timestamp: float = 0.0) -> TabletEvent:
+    def decode(self, p: bytes, timestamp: float = 0.0) -> TabletEvent | None:
+        if p[0] & SIGN_BITS != SIGN_BITS:  # not an absolute report: noise that looked like sync
+            self.stats.bad_packets += 1
+            return None
         proximity = not p[0] & 0x40
         x = p[1] | p[2] << 7
         y = p[3] | p[4] << 7
@@ -96,7 +106,8 @@ class SummaEncoder(TabletEncoder):
         buttons: str = "code",
         tablet_id: int = 0,
     ) -> None:
-        super().__init__(model or (FLAIR_MODEL if flair else DEFAULT_MODEL))
+        base = model or (FLAIR_MODEL if flair else DEFAULT_MODEL)
+        super().__init__(replace(base, origin=POWER_ON_ORIGIN))
         self.flair = flair
         self.button_encoding = buttons
         self.tablet_id = tablet_id
@@ -138,8 +149,11 @@ class SummaEncoder(TabletEncoder):
         return commands, b""
 
     def answer(self, command: bytes) -> bytes:
-        if command == b"\x00":  # reset: back to stream mode
+        if command == b"\x00":  # reset: back to stream mode and the power-on origin
             self.streaming = True
+            self.model = replace(self.model, origin=POWER_ON_ORIGIN)
+        elif command == b"b":  # origin upper-left
+            self.model = replace(self.model, origin="upper-left")
         elif command == b"B":
             self.streaming = False
         elif command == b"@":

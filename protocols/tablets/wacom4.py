@@ -159,6 +159,7 @@ class Wacom4Parser(TabletParser):
     """Binary packets plus the ``~`` ASCII replies interleaved with them."""
 
     name = NAME
+    checks_range = True
 
     def __init__(
         self,

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import time
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -35,6 +36,15 @@ def _ask(tablet: EmulatedTablet, host: serial.Serial, command: bytes, until: byt
         tablet.service(0.001)
         got += host.read(64)
     return bytes(got)
+
+
+def _command(tablet: EmulatedTablet, host: serial.Serial, command: bytes) -> None:
+    """Send a host command and wait until the tablet has handled it."""
+    host.write(command)
+    seen = len(tablet.commands)
+    deadline = time.monotonic() + HANG_GUARD
+    while len(tablet.commands) == seen and time.monotonic() < deadline:
+        tablet.service(0.001)
 
 
 @pytest.fixture
@@ -111,7 +121,8 @@ def test_pointer_state_and_origin_flip() -> None:
     assert state.mask == 0b011
     state.apply(PointerButton(10, 20, 1, False))
     assert state.mask == 0b010
-    top = pointer_to_tablet(0, 0, (101, 101), SUMMA_MODEL, 0)
+    lower_left = replace(SUMMA_MODEL, origin="lower-left")
+    top = pointer_to_tablet(0, 0, (101, 101), lower_left, 0)
     assert (top.x, top.y) == (0, SUMMA_MODEL.max_y)  # lower-left origin: window top = max Y
     top = pointer_to_tablet(0, 0, (101, 101), WACOM_MODEL, 0)
     assert (top.x, top.y) == (0, 0)
@@ -164,6 +175,33 @@ def test_chords_and_impossible_events_never_crash_the_device(host_for) -> None:
     data = tablet.send(TabletEvent(10, 10, True, 0b011))  # left + right: code format
     assert make_parser("summa-mm").feed(data)[0].buttons == 0b001  # lowest button reported
     wacom, _ = host_for("wacom4")
-    assert wacom.send(TabletEvent(10, 10, True, 0b100, 5, tool="pen")) == b""
-    assert wacom.refused == 1 and "eraser" in wacom.last_refusal
+    assert wacom.send(TabletEvent(10, 10, True, 0x10, 5, tool="pen")) == b""
+    assert wacom.refused == 1 and "buttons" in wacom.last_refusal
     assert wacom.send(TabletEvent(10, 10, True, 0b001, 5)) != b""  # and it carries on
+
+
+def test_summa_tablet_honours_the_origin_command_the_host_sends(host_for) -> None:
+    from protocols.tablets.line_setup import line_setup
+
+    init = b"".join(step.data for step in line_setup("summa-mm").init)
+    assert b"b" in init  # our start-up asks for the origin upper-left ...
+    assert make_parser("summa-mm").model.origin == "upper-left"  # ... and decodes with it
+    tablet, host = host_for("summa-mm")
+    assert tablet.model.origin == "lower-left"  # power-on origin
+    top_left = pointer_to_tablet(0, 0, (101, 101), tablet.model, 0)
+    assert top_left.y == tablet.model.max_y
+    _command(tablet, host, b"b")
+    assert tablet.model.origin == "upper-left"
+    data = tablet.send(pointer_to_tablet(0, 0, (101, 101), tablet.model, 0))
+    (event,) = make_parser("summa-mm").feed(data)
+    assert (event.x, event.y) == (0, 0)  # the window's top-left is the tablet's origin now
+    _command(tablet, host, b"\x00")  # reset: power-on origin again
+    assert tablet.model.origin == "lower-left"
+
+
+def test_wacom_middle_button_alone_reaches_the_host_as_the_barrel(host_for) -> None:
+    tablet, host = host_for("wacom4")
+    data = tablet.send(TabletEvent(100, 200, True, 0b100, 0))  # middle mouse button only
+    assert tablet.refused == 0 and data
+    (event,) = make_parser("wacom4").feed(data)
+    assert (event.tool, event.buttons) == ("pen", 0b010)  # not the eraser, not dropped

@@ -9,15 +9,32 @@ import pytest
 
 from protocols.tablets.input_layer import InputLayer, MouseSample
 from protocols.tablets.sources import SourceLost, open_source
-from tests.tablets.helpers import DIGIMEND, load_descriptor, load_dump
+from tests.tablets.helpers import DIGIMEND, SELFTESTS, load_descriptor, load_dump
+
+
+class WouldBlockForever(AssertionError):
+    """hidapi 0.15: read(n, 0) on a blocking device waits until a report comes -- with a
+    still pen, forever.  The fake raises instead of hanging the test."""
 
 
 class FakeDevice:
-    def __init__(self, descriptor: bytes, reports: list[bytes]) -> None:
+    """A stand-in for ``hid.device()``.  ``unplug_when_empty``: once the queued reports are
+    read the device is gone (read raises); otherwise it is a pen held still (nothing queued)."""
+
+    def __init__(self, descriptor: bytes, reports: list[bytes],
+                 unplug_when_empty: bool = True) -> None:
         self.descriptor = descriptor
         self.reports = list(reports)
+        self.unplug_when_empty = unplug_when_empty
         self.features: list[list[int]] = []
         self.opened: object = None
+        self.nonblocking = False
+        self.timeouts: list[int] = []
+        self.closed = False
+
+    def set_nonblocking(self, value: int) -> int:
+        self.nonblocking = bool(value)
+        return 0
 
     def open_path(self, path: bytes) -> None:
         self.opened = path
@@ -33,12 +50,17 @@ class FakeDevice:
         return len(data)
 
     def read(self, size: int, timeout_ms: int = 0) -> list[int]:
+        self.timeouts.append(timeout_ms)
         if not self.reports:
-            raise OSError("read error (device unplugged)")
+            if self.unplug_when_empty:
+                raise OSError("read error (device unplugged)")
+            if timeout_ms == 0 and not self.nonblocking:
+                raise WouldBlockForever("hid_read() on a blocking device with nothing queued")
+            return []
         return list(self.reports.pop(0))
 
     def close(self) -> None:
-        pass
+        self.closed = True
 
 
 def _install(monkeypatch, device: FakeDevice, rows: list[dict]) -> None:
@@ -89,3 +111,102 @@ def test_legacy_wacom_gets_the_mode_switch(monkeypatch) -> None:
     (event,) = source.read(0.01)
     assert (event.x, event.y, event.pressure, event.tip) == (0x1234, 0x567, 16, True)
     assert source.model.name == "Wacom Graphire4 4x5"
+
+
+def test_a_still_pen_never_blocks_the_poll(monkeypatch) -> None:
+    desc = load_descriptor(DIGIMEND / "Huion_H610/rd/original0.txt")
+    reports = load_dump(DIGIMEND / "Huion_H610/dumps/pen_coords.txt")[:2]
+    device = FakeDevice(desc.data, reports, unplug_when_empty=False)
+    _install(monkeypatch, device, [{"usage_page": 0x0D, "path": b"/dev/hidraw7"}])
+    layer = InputLayer(source=open_source("hid:256c:006e"))
+    assert device.nonblocking  # set right after opening
+    out = []
+    for _ in range(5):  # two reports, then the pen holds still: poll() must come back
+        out += layer.poll([], timeout=0.0)
+    assert len(out) == 2 and layer.active == "tablet"
+    layer.source.read(0.05)  # a wait asks hidapi for a real timeout in ms
+    layer.source.read(0.0001)  # never rounded down to 0 (= block forever)
+    assert device.timeouts[-2:] == [50, 1]
+
+
+class MultiInterfaceHid:
+    """``hid`` with one fake device per hidraw path (a tablet with several interfaces)."""
+
+    def __init__(self, rows: list[dict], devices: dict[bytes, FakeDevice]) -> None:
+        self.rows = rows
+        self.devices = devices
+        self.opened: list[bytes] = []
+
+    def enumerate(self, vid: int = 0, pid: int = 0) -> list[dict]:
+        return [r for r in self.rows if vid in (0, r["vendor_id"]) and pid in (0, r["product_id"])]
+
+    def device(self):
+        hid = self
+
+        class Handle:
+            def open_path(self, path: bytes) -> None:
+                hid.opened.append(path)
+                self.dev = hid.devices[path]
+
+            def open(self, vid: int, pid: int) -> None:  # hidapi: the first matching interface
+                self.open_path(hid.enumerate(vid, pid)[0]["path"])
+
+            def __getattr__(self, name: str):
+                return getattr(self.dev, name)
+
+        return Handle()
+
+
+def _pth660_rows() -> list[dict]:
+    common = {"vendor_id": 0x056A, "product_id": 0x0357, "manufacturer_string": "Wacom Co.,Ltd.",
+              "product_string": "Intuos Pro M", "usage": 1}
+    return [
+        {**common, "path": b"/dev/hidraw3", "usage_page": 0xFF0D, "interface_number": 0},
+        {**common, "path": b"/dev/hidraw4", "usage_page": 0x01, "usage": 2,
+         "interface_number": 1},
+        {**common, "path": b"/dev/hidraw4", "usage_page": 0xFF0D, "interface_number": 1},
+        {"vendor_id": 0x046D, "product_id": 0xC52B, "path": b"/dev/hidraw0", "usage_page": 0x01,
+         "usage": 2, "interface_number": 0},
+    ]
+
+
+def test_newer_wacom_on_the_vendor_page_is_listed_and_its_pen_interface_found(monkeypatch):
+    from protocols.tablets.hid_decode import DG_TIP_PRESSURE, GD_X, GD_Y, encode_report
+    from protocols.tablets.hid_source import list_digitizers
+
+    pth660 = load_descriptor(SELFTESTS / "wacom_pth660_v145.hex")
+    no_pen = load_descriptor(DIGIMEND / "Huion_H610/rd/original2.txt")  # an interface without
+    report = encode_report(pth660, 0x10, {GD_X: 22400, GD_Y: 14800, DG_TIP_PRESSURE: 4000,
+                                          0x0D0042: 1, 0x0D0032: 1})
+    devices = {b"/dev/hidraw3": FakeDevice(no_pen.data, [], unplug_when_empty=False),
+               b"/dev/hidraw4": FakeDevice(pth660.data, [report], unplug_when_empty=False)}
+    hid = MultiInterfaceHid(_pth660_rows(), devices)
+    monkeypatch.setitem(sys.modules, "hid", hid)
+    listed, note = list_digitizers()
+    assert note is None
+    assert [(d.source, d.path, d.usage_page) for d in listed] == [
+        ("hid:056a:0357", b"/dev/hidraw3", 0xFF0D), ("hid:056a:0357", b"/dev/hidraw4", 0xFF0D)]
+    source = open_source("hid:056a:0357")
+    assert hid.opened == [b"/dev/hidraw3", b"/dev/hidraw4"]  # tried in turn
+    assert devices[b"/dev/hidraw3"].closed and not devices[b"/dev/hidraw4"].closed
+    (event,) = source.read(0.0)
+    assert (event.x, event.y, event.pressure, event.tip) == (22400, 14800, 4000, True)
+    assert source.model.max_x == 44800
+
+
+def test_no_interface_with_a_pen_says_which_were_tried(monkeypatch) -> None:
+    no_pen = load_descriptor(DIGIMEND / "Huion_H610/rd/original2.txt")
+    devices = {p: FakeDevice(no_pen.data, []) for p in (b"/dev/hidraw3", b"/dev/hidraw4")}
+    monkeypatch.setitem(sys.modules, "hid", MultiInterfaceHid(_pth660_rows(), devices))
+    with pytest.raises(SourceLost, match="hidraw3.*no pen report.*hidraw4.*no pen report"):
+        open_source("hid:056a:0357")
+
+
+def test_intuos_1_and_2_pid_table_is_complete() -> None:
+    from protocols.tablets.hid_profiles import profile_for
+
+    for pids in ((0x20, 0x21, 0x22, 0x23, 0x24), (0x41, 0x42, 0x43, 0x44, 0x45)):
+        sizes = [(profile_for(0x56A, p).max_x, profile_for(0x56A, p).max_y) for p in pids]
+        assert sizes[0] == (12700, 10600) and sizes[-1] == (45720, 31680)
+        assert sizes == sorted(sizes, key=lambda s: s[0] * s[1])  # 4x5 ... 12x18
+    assert profile_for(0x56A, 0x47).family == "intuos"

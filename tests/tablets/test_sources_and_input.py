@@ -9,6 +9,7 @@ import time
 import pytest
 
 from emulator.tablet import EmulatedTablet
+from protocols.tablets import summa
 from protocols.tablets.calibration import (
     Calibration,
     CalibrationError,
@@ -19,7 +20,13 @@ from protocols.tablets.calibration import (
 from protocols.tablets.events import TabletEvent
 from protocols.tablets.input_layer import TWELVE_FIELD, InputLayer, MouseSample
 from protocols.tablets.serial_source import SerialSource
-from protocols.tablets.sources import SourceError, SourceLost, open_source, parse_source
+from protocols.tablets.sources import (
+    SourceError,
+    SourceLost,
+    TabletSource,
+    open_source,
+    parse_source,
+)
 from tests.tablets.helpers import HANG_GUARD
 
 # --- SOURCE strings ---------------------------------------------------------------------------
@@ -68,6 +75,14 @@ def test_loop_url_source() -> None:
         assert source.read(timeout=0.01) == []
     finally:
         source.close()
+
+
+def _handled(tablet: EmulatedTablet, command: bytes) -> bool:
+    """Wait (guarded) until the tablet's background thread has handled ``command``."""
+    deadline = time.monotonic() + HANG_GUARD
+    while command not in tablet.commands and time.monotonic() < deadline:
+        time.sleep(0.005)
+    return command in tablet.commands
 
 
 def _collect(source, n: int) -> list[TabletEvent]:
@@ -120,7 +135,77 @@ def test_summa_source_reads_the_size_from_the_config_report() -> None:
                           sleep=lambda s: None)
     try:
         assert (source.model.max_x, source.model.max_y) == (6000, 6000)
-        assert tablet.commands[:2] == [b"\x00", b"0"] and b"zb" in tablet.commands
+        assert _handled(tablet, b"F")
+        assert tablet.commands[:3] == [b"\x00", b"B", b"0"] and b"zb" in tablet.commands
+        assert tablet.commands.index(b"a") < tablet.commands.index(b"@")
+    finally:
+        source.close()
+        tablet.close()
+
+
+class _Streaming(summa.SummaEncoder):
+    """After the reset the tablet streams (reports in flight when the host starts asking)."""
+
+    def answer(self, command: bytes) -> bytes:
+        reply = super().answer(command)
+        if command == b"\x00":
+            return self.encode(TabletEvent(1000, 2000, True, 0)) * 3
+        return reply
+
+
+def test_summa_size_is_not_taken_from_reports_already_streaming() -> None:
+    tablet = EmulatedTablet("summa-mm")
+    tablet.encoder = _Streaming()
+    tablet.serve_in_background()
+    source = SerialSource(parse_source(f"serial:{tablet.slave_path}?protocol=summa-mm"),
+                          sleep=lambda s: None)
+    try:
+        assert (source.model.max_x, source.model.max_y) == (6000, 6000)
+        assert not source.size_notes
+        assert _handled(tablet, b"F") and tablet.streaming  # "@" after the size query
+    finally:
+        source.close()
+        tablet.close()
+
+
+class _StreamsRegardless(summa.SummaEncoder):
+    """A tablet that ignores prompt mode and answers "a" with two ordinary reports."""
+
+    def answer(self, command: bytes) -> bytes:
+        if command == b"a":
+            return self.encode(TabletEvent(1000, 2000)) + self.encode(TabletEvent(1001, 2000))
+        return b"" if command == b"B" else super().answer(command)
+
+
+def test_implausible_size_reply_keeps_the_default_and_says_why() -> None:
+    tablet = EmulatedTablet("summa-mm")
+    tablet.encoder = _StreamsRegardless()
+    tablet.serve_in_background()
+    source = SerialSource(parse_source(f"serial:{tablet.slave_path}?protocol=summa-mm"),
+                          sleep=lambda s: None)
+    try:
+        assert (source.model.max_x, source.model.max_y) == (6000, 6000)
+        assert "2 reports" in source.size_notes[0] and "keeping 0..6000" in source.size_notes[0]
+    finally:
+        source.close()
+        tablet.close()
+
+
+def test_calcomp_start_up_sets_resolution_and_reads_the_size() -> None:
+    from protocols.tablets.calcomp import CalcompEncoder
+    from protocols.tablets.events import TabletModel
+
+    tablet = EmulatedTablet("calcomp")
+    tablet.encoder = CalcompEncoder(TabletModel("DrawingBoard II 12x18", 18000, 12000, 1000.0))
+    tablet.send(TabletEvent(50, 60, True, 1))  # streaming before the host starts
+    tablet.serve_in_background()
+    source = SerialSource(parse_source(f"serial:{tablet.slave_path}?protocol=calcomp"),
+                          sleep=lambda s: None)
+    try:
+        assert _handled(tablet, b"IR")
+        assert b"JR1000,0" in tablet.commands and b"VS" in tablet.commands
+        assert (source.model.max_x, source.model.max_y) == (18000, 12000)
+        assert tablet.streaming  # ESC%IR after the query
     finally:
         source.close()
         tablet.close()
@@ -134,14 +219,16 @@ class Harness:
 
     def __init__(self) -> None:
         self.notices: list[str] = []
+        self.now = 0.0  # the sources' clock: silences are judged on it, so tests set it
         self.tablet = EmulatedTablet("summa-mm")
+        self.tablet.assume_initialised()  # read with init=0: set up as our start-up would
         self.layer = InputLayer(TWELVE_FIELD, self._open(), reopen=self._reopen, retry_every=3,
-                                notify=self.notices.append)
+                                notify=self.notices.append, spawn=lambda job: job())
         self.plugged = True
 
     def _open(self) -> SerialSource:
         url = f"serial:{self.tablet.slave_path}?protocol=summa-mm&init=0"
-        return SerialSource(parse_source(url))
+        return SerialSource(parse_source(url), clock=lambda: self.now)
 
     def _reopen(self) -> SerialSource:
         if not self.plugged:
@@ -150,7 +237,8 @@ class Harness:
 
     def pen(self, fx: float, fy: float, tip: bool) -> None:
         m = self.tablet.model
-        self.tablet.send(TabletEvent(round(fx * m.max_x), round((1 - fy) * m.max_y), True,
+        assert m.origin == "upper-left"
+        self.tablet.send(TabletEvent(round(fx * m.max_x), round(fy * m.max_y), True,
                                      1 if tip else 0))
 
     def poll_until(self, n: int, mouse=()):
@@ -207,6 +295,7 @@ def test_unplug_mid_stroke_falls_back_to_the_mouse_and_replug_resumes(harness) -
     assert (fallback[0].x, fallback[0].y) == pytest.approx((6.0, 4.375))
     # replug: a new tablet on a new port; the layer picks it up on its next retry
     harness.tablet = EmulatedTablet("summa-mm")
+    harness.tablet.assume_initialised()
     harness.plugged = True
     for _ in range(6):
         harness.layer.poll(())
@@ -214,6 +303,83 @@ def test_unplug_mid_stroke_falls_back_to_the_mouse_and_replug_resumes(harness) -
     harness.pen(0.5, 0.5, True)
     resumed = harness.poll_until(1)
     assert resumed[-1].source == "tablet" and resumed[-1].kind == "press"
+
+
+def test_stream_silent_mid_stroke_ends_the_stroke_then_falls_back_then_resumes(harness):
+    harness.pen(0.25, 0.25, True)
+    drawn = harness.poll_until(1)
+    assert [e.kind for e in drawn] == ["press"]
+    mouse = [MouseSample(60, 40, 1, (120, 80))]
+    harness.now = 0.3  # a short gap is normal
+    assert harness.layer.poll(mouse) == [] and not harness.notices
+    harness.now = 0.6  # cable pulled: no bytes, no OS error
+    out = harness.layer.poll(mouse)
+    assert [(e.kind, e.source) for e in out] == [("release", "tablet")]
+    assert (out[0].x, out[0].y) == pytest.approx((drawn[0].x, drawn[0].y))
+    assert len(harness.notices) == 1 and "no data" in harness.notices[0]
+    harness.now = 1.0
+    assert harness.layer.poll(mouse) == [] and len(harness.notices) == 1  # said once
+    harness.now = 2.7  # a longer gap: the mouse takes over
+    out = harness.layer.poll(mouse)
+    assert [(e.kind, e.source) for e in out] == [("press", "mouse")]
+    assert len(harness.notices) == 2 and "mouse" in harness.notices[1]
+    harness.now = 5.0
+    assert harness.layer.poll(mouse)[0].source == "mouse" and len(harness.notices) == 2
+    harness.pen(0.5, 0.5, True)  # bytes again: the tablet takes over
+    back = harness.poll_until(2)
+    assert [(e.kind, e.source) for e in back] == [("release", "mouse"), ("press", "tablet")]
+    assert len(harness.notices) == 3 and "again" in harness.notices[2]
+
+
+def test_silence_with_the_pen_up_is_not_a_fault(harness) -> None:
+    harness.pen(0.25, 0.25, False)
+    assert [e.kind for e in harness.poll_until(1)] == ["move"]
+    harness.now = 30.0  # out of proximity a tablet may say nothing at all
+    assert harness.layer.poll([MouseSample(1, 1, 1, (120, 80))]) == []
+    assert not harness.notices and harness.layer.active == "tablet"
+
+
+class _Gone(TabletSource):
+    name = "gone"
+
+    def read(self, timeout: float = 0.0) -> list[TabletEvent]:
+        raise SourceLost("unplugged")
+
+
+def test_replug_opens_on_a_worker_and_never_blocks_poll() -> None:
+    import threading
+
+    started, go, finished = threading.Event(), threading.Event(), threading.Event()
+    tablet = EmulatedTablet("summa-mm")
+
+    def slow_reopen() -> SerialSource:  # a tablet's start-up: seconds of waits
+        started.set()
+        go.wait(HANG_GUARD)
+        url = f"serial:{tablet.slave_path}?protocol=summa-mm&init=0"
+        source = SerialSource(parse_source(url))
+        finished.set()
+        return source
+
+    notes: list[str] = []
+    layer = InputLayer(TWELVE_FIELD, _Gone(), reopen=slow_reopen, retry_every=1,
+                       notify=notes.append)
+    try:
+        mouse = [MouseSample(60, 40, 0, (120, 80))]
+        layer.poll(mouse)  # lost
+        out = layer.poll(mouse)  # starts reopening ...
+        assert started.wait(HANG_GUARD)
+        assert not finished.is_set()  # ... and came back while the reopen is still running
+        assert out and out[0].source == "mouse"
+        assert layer.poll(mouse)[0].source == "mouse"  # more frames on the mouse meanwhile
+        go.set()
+        deadline = time.monotonic() + HANG_GUARD
+        while layer.active != "tablet" and time.monotonic() < deadline:
+            layer.poll(mouse)
+        assert layer.active == "tablet" and "back" in notes[-1]
+    finally:
+        go.set()
+        layer.close()
+        tablet.close()
 
 
 def test_layer_without_a_tablet_uses_the_mouse() -> None:
