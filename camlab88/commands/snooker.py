@@ -1,10 +1,10 @@
 """`camlab88 snooker ...`: the snooker motion-development program (thesis ch. 6).
 
-Actions so far:
+Actions:
+  play [SESSION]          the interactive program on the emulated Rainbow (§6.2.1-§6.2.2)
   simulate  headless: set a ball moving (or play the break-off), simulate until every ball
             has stopped, write the checkpoint file (and optionally the session).
-The interactive Rainbow program and `replay` register further actions on the same parser
-(see `ACTIONS`).
+  replay CHECKPOINT       play a checkpoint file on the Rainbow at 25 frames/s
 """
 
 from __future__ import annotations
@@ -139,4 +139,179 @@ def _simulate(args: argparse.Namespace) -> int:
     return 0
 
 
-ACTIONS: list[Callable[[argparse._SubParsersAction], None]] = [_add_simulate]  # type: ignore[type-arg]
+def _window_options(p: argparse.ArgumentParser, events: bool = True) -> None:
+    p.add_argument("--headless", action="store_true", help="no window (virtual time)")
+    if events:
+        p.add_argument("--events", metavar="FILE",
+                       help="scripted mouse/keyboard input (apps/snooker/program/"
+                       "script_events.py: move, glide, press, release, key, type, wait)")
+        p.add_argument("--save", metavar="SESSION",
+                       help="where 'Exit from the program' saves (default: SESSION)")
+    p.add_argument("--frames", type=int, metavar="N", help="stop after N display frames")
+    p.add_argument("--screenshot", metavar="PNG", help="save the screen at the end and exit")
+    p.add_argument("--scale", type=int, default=1, help="window scale (default 1)")
+
+
+def _add_play(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    s = actions.add_parser(
+        "play", help="the interactive motion-development program on the emulated Rainbow",
+        description="The interactive program (thesis §6.2.1-§6.2.2) on the emulated Rainbow. "
+        "Middle button: menus and everything else; right: restart simulation; left held: "
+        "mouse movement x4. With SESSION you are asked: new game (n) or restore (r).")
+    s.add_argument("session", nargs="?", metavar="SESSION",
+                   help="a saved session file to offer for restoring (and to save to)")
+    _window_options(s)
+    s.set_defaults(handler=_play)
+
+
+def _add_replay(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    s = actions.add_parser("replay", help="play a checkpoint file on the Rainbow at 25 fps",
+                           description="Play a §6.2.2 checkpoint file on the emulated Rainbow "
+                           "at 25 frames/s (real time in a window, virtual time headless).")
+    s.add_argument("checkpoint", metavar="CHECKPOINT")
+    s.add_argument("--first", type=int, default=0, help="first frame (default 0)")
+    s.add_argument("--last", type=int, help="last frame (default: the last)")
+    _window_options(s, events=False)
+    s.set_defaults(handler=_replay)
+
+
+class _Screen:
+    """The window (or nothing, headless) a Rainbow session's frames go to."""
+
+    def __init__(self, args: argparse.Namespace, title: str) -> None:
+        self.args = args
+        self.window = None
+        self.quit = False
+        self.buttons = [0]
+        if not args.headless:
+            from emulator.window import Window
+
+            self.window = Window(title, (768, 576), scale=args.scale)
+
+    def on_frame(self, frame) -> None:  # type: ignore[no-untyped-def]
+        if self.window is not None:
+            self.window.show(frame)
+            self.window.wait_frame(50)
+
+    def poll(self, session, inject: bool = True) -> None:  # type: ignore[no-untyped-def]
+        """Window input to the device (not while a script drives it: only Quit counts)."""
+        if self.window is None:
+            return
+        from camlab88.commands.rainbow import _mouse_or_key
+        from emulator.host_input import Quit
+
+        for ev in self.window.poll():
+            if isinstance(ev, Quit):
+                self.quit = True
+            dev = _mouse_or_key(ev, self.buttons)
+            if dev is not None and inject:
+                session.inject(dev)
+
+    def finish(self, session) -> None:  # type: ignore[no-untyped-def]
+        from emulator.rainbow.files import save_png
+
+        if self.args.screenshot:
+            if self.window is not None:
+                self.window.screenshot(self.args.screenshot)
+            else:
+                save_png(self.args.screenshot, session.executor.last_frame)
+        if self.window is not None:
+            self.window.close()
+
+
+def _play(args: argparse.Namespace) -> int:
+    import sys
+    from pathlib import Path
+
+    from apps.snooker.program import script_events
+    from apps.snooker.program.program import Program
+    from apps.snooker.session import Session, SessionError
+    from emulator.rainbow.session import in_process
+
+    def fail(msg: str) -> int:
+        print(f"camlab88 snooker: {msg}", file=sys.stderr)
+        return 2
+
+    restore = None
+    if args.session and Path(args.session).exists():
+        try:
+            restore = Session.load(args.session)
+        except SessionError as exc:
+            return fail(str(exc))
+    try:
+        player = script_events.Player(script_events.load(args.events)) if args.events else None
+    except script_events.ScriptError as exc:
+        return fail(str(exc))
+    frames = args.frames
+    if frames is None and (args.headless or args.screenshot):
+        frames = (player.steps and sum(n for _, n in player.steps)) if player else 100
+    screen = _Screen(args, "camlab88 snooker")
+    rb = in_process(on_frame=screen.on_frame)
+    program = Program(rb.client, restore=restore, save_to=args.save or args.session,
+                      restore_name=str(args.session))
+    n = 0
+    try:
+        while not program.done and not screen.quit and (frames is None or n < frames):
+            if player is not None:
+                for e in player.due():
+                    rb.inject(e)
+            screen.poll(rb, inject=player is None)
+            program.step()
+            n += 1
+    except SessionError as exc:
+        return fail(str(exc))
+    finally:
+        screen.finish(rb)
+    st = program.session.status()
+    print(f"camlab88 snooker: {n} display frames; at frame {st['frame']} "
+          f"({len(program.session.timeline.time_frames)} time frames), scores "
+          f"{st['scores'][0]}-{st['scores'][1]}"  # type: ignore[index]
+          + (f"; saved {', '.join(map(str, program.saved))}" if program.saved else ""))
+    return 0
+
+
+def _replay(args: argparse.Namespace) -> int:
+    import sys
+
+    from apps.snooker.checkpoint import CheckpointError, read, to_metres
+    from apps.snooker.program.program import Program
+    from apps.snooker.table import Table
+    from emulator.rainbow.session import in_process
+
+    try:
+        cp = read(args.checkpoint)
+        last = cp.n_frames - 1 if args.last is None else args.last
+        cp = cp.subset(args.first, last)
+    except (CheckpointError, ValueError) as exc:
+        print(f"camlab88 snooker replay: {exc}", file=sys.stderr)
+        return 2
+    table = Table()
+    pos = [to_metres(p) for p in cp.positions]
+    if args.frames is not None:
+        pos = pos[: max(1, (args.frames + 1) // 2)]
+    on = [[table.on_playing_area(x, y) for x, y in p] for p in pos]
+    screen = _Screen(args, "camlab88 snooker replay")
+    rb = in_process(on_frame=screen.on_frame)
+    try:
+        Program(rb.client).play_positions(pos, on)  # type: ignore[arg-type]
+    finally:
+        screen.finish(rb)
+    print(f"camlab88 snooker replay: {len(pos)} frames at 25 frames/s "
+          f"({rb.device.frame_count} display frames, {len(pos) / 25:.2f} s)")
+    return 0
+
+
+def rainbow_demo(on_frame=None, seconds: float = 4.0):  # type: ignore[no-untyped-def]
+    """For `camlab88 demo`: a break replayed at 25 frames/s on an in-process Rainbow.
+    `on_frame(frame)` receives every display frame (show it in a window, pace it, save
+    it); returns the emulator session (its `executor.last_frame` is the last picture)."""
+    from apps.snooker.program.demo import play_break
+    from emulator.rainbow.session import in_process
+
+    rb = in_process(on_frame=on_frame)
+    play_break(rb.client, seconds)
+    return rb
+
+
+ACTIONS: list[Callable[[argparse._SubParsersAction], None]] = [  # type: ignore[type-arg]
+    _add_play, _add_simulate, _add_replay]

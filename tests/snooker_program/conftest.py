@@ -1,0 +1,14 @@
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_program"
+
+
+@pytest.fixture
+def rainbow():
+    from emulator.rainbow.session import in_process
+
+    return in_process()

@@ -1,0 +1,23 @@
+"""Drive the program with scripted input on an in-process Rainbow."""
+
+from __future__ import annotations
+
+from apps.snooker.program import script_events
+from apps.snooker.program.program import Program
+
+
+def feed(rb, program: Program, text: str) -> None:  # type: ignore[no-untyped-def]
+    """Run a script (see script_events) to its end."""
+    player = script_events.Player(script_events.parse(text, start=program.mouse or (0, 0)))
+    while not player.finished:
+        for e in player.due():
+            rb.inject(e)
+        program.step()
+
+
+def screen_colour(rb, x: int, y: int) -> tuple[int, int, int]:  # type: ignore[no-untyped-def]
+    return tuple(int(v) for v in rb.executor.last_frame[y, x])  # type: ignore[return-value]
+
+
+def hex_rgb(c: str) -> tuple[int, int, int]:
+    return (int(c[1:3], 16), int(c[3:5], 16), int(c[5:7], 16))

@@ -1,0 +1,82 @@
+"""`camlab88 snooker play [SESSION]` and `camlab88 snooker replay`, headless, and the
+demo function for `camlab88 demo`."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from PIL import Image
+
+from apps.snooker import checkpoint
+from apps.snooker.program import pads
+from apps.snooker.session import Session
+from apps.snooker.table import CUE
+from camlab88.cli import main
+from tests.snooker_program.helpers import hex_rgb
+
+
+def test_play_headless_with_events_screenshot_and_exit_save(tmp_path, capsys):
+    events = tmp_path / "s.events"
+    # velocity by keyboard on the cue ball, run, then Exit (green menu, up one) and save
+    events.write_text(
+        "move 175 325\npress middle\nglide 175 250 25\nwait 1\nrelease middle\nwait 1\n"
+        "type 1 0\nkey return\nwait 1\npress right\nrelease right\nwait 10\n"
+        "move 300 430\nwait 1\npress middle\nglide 300 412 6\nwait 1\nrelease middle\n"
+        "wait 1\nkey y\nwait 1\n")
+    shot, save = tmp_path / "shot.png", tmp_path / "game.json"
+    assert main(["snooker", "play", "--headless", "--events", str(events),
+                 "--screenshot", str(shot), "--save", str(save)]) == 0
+    out = capsys.readouterr().out
+    assert "saved" in out and save.exists() and save.with_suffix(".cp").exists()
+    s = Session.load(save)
+    assert len(s.timeline.time_frames) == 6  # 10 display frames of running = 5 time frames
+    assert s.timeline.time_frames[0].balls.vel[CUE] == pytest.approx((1.0, 0.0))
+    img = np.asarray(Image.open(shot).convert("RGB"))
+    assert img.shape == (576, 768, 3)
+    assert (img == hex_rgb(pads.TABLE_COLOURS[pads.CLOTH])).all(axis=-1).sum() > 100_000
+
+
+def test_play_restores_a_session(tmp_path, capsys):
+    s = Session.new_game()
+    s.strike(CUE, 1.0, 0.0)
+    s.simulate_to_rest()
+    path = tmp_path / "g.json"
+    s.save(path)
+    events = tmp_path / "r.events"
+    events.write_text("key r\nwait 2\n")
+    assert main(["snooker", "play", str(path), "--headless", "--events", str(events)]) == 0
+    assert f"({len(s.timeline.time_frames)} time frames)" in capsys.readouterr().out
+
+
+def test_play_reports_bad_files(tmp_path, capsys):
+    bad = tmp_path / "bad.events"
+    bad.write_text("move 1 2\nfly\n")
+    assert main(["snooker", "play", "--headless", "--events", str(bad)]) == 2
+    assert "bad.events:2: unknown command 'fly'" in capsys.readouterr().err
+    sess = tmp_path / "s.json"
+    sess.write_text("{nope")
+    assert main(["snooker", "play", str(sess), "--headless"]) == 2
+    assert "s.json:1:" in capsys.readouterr().err
+
+
+def test_replay_plays_a_checkpoint_at_25_fps(tmp_path, capsys):
+    cp = tmp_path / "b.cp"
+    assert main(["snooker", "simulate", "--break", "6", "--out", str(cp)]) == 0
+    n = checkpoint.read(cp).n_frames
+    shot = tmp_path / "r.png"
+    assert main(["snooker", "replay", str(cp), "--headless", "--first", "0", "--last", "19",
+                 "--screenshot", str(shot)]) == 0
+    out = capsys.readouterr().out
+    assert "20 frames at 25 frames/s (40 display frames, 0.80 s)" in out and n > 20
+    assert shot.exists()
+    assert main(["snooker", "replay", str(tmp_path / "missing.cp"), "--headless"]) == 2
+    assert "missing.cp" in capsys.readouterr().err
+
+
+def test_demo_function_replays_a_break():
+    from camlab88.commands.snooker import rainbow_demo
+
+    frames = []
+    rb = rainbow_demo(on_frame=lambda f: frames.append(f[300, 600].copy()), seconds=1.0)
+    assert rb.device.frame_count == 50 == len(frames)  # 25 time frames, 2 display frames each
+    assert len({tuple(f) for f in frames}) > 1  # something moved

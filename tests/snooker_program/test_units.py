@@ -1,0 +1,143 @@
+"""Pure parts: scripted input, table <-> screen mapping, arrows, the menus' item lists."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from apps.snooker.program import arrows, menus, script_events
+from apps.snooker.program.layout import TableView
+from apps.snooker.table import Table
+from protocols.rainbow.events import LEFT, MIDDLE, KeyEvent, MouseEvent
+
+VIEW = TableView.fit(Table())
+
+
+def test_script_commands():
+    s = script_events.parse("move 10 20\npress middle\nglide 20 40 2\nrelease middle\n"
+                            "wait 3\ntype a b\nkey return\n")
+    assert s.frames == 4
+    (first, n1), (second, n2) = s.steps
+    assert n1 == 3 and n2 == 1
+    assert first == [MouseEvent(0, 10, 20, 0), MouseEvent(0, 10, 20, MIDDLE, 2, True),
+                     MouseEvent(0, 15, 30, MIDDLE), MouseEvent(0, 20, 40, MIDDLE),
+                     MouseEvent(0, 20, 40, 0, 2, False)]
+    keys = [e.key for e in second if isinstance(e, KeyEvent) and e.pressed]
+    assert keys == ["a", "space", "b", "return"]
+
+
+def test_script_buttons_accumulate():
+    s = script_events.parse("press left\npress middle\nmove 1 1\nrelease left\n")
+    evs = s.steps[0][0]
+    assert [e.buttons for e in evs] == [LEFT, LEFT | MIDDLE, LEFT | MIDDLE, MIDDLE]
+
+
+@pytest.mark.parametrize("text, msg", [
+    ("move 1", "s.txt:1: move wants two integers"),
+    ("\n\npress thumb", "s.txt:3: unknown button 'thumb'"),
+    ("wait x", "s.txt:1: wait wants a frame count"),
+    ("wait -1", "s.txt:1: wait -1 is outside"),
+    ("jump 3", "s.txt:1: unknown command 'jump'"),
+    ("glide 1 2 0", "s.txt:1: glide steps 0 outside"),
+    ("key", "s.txt:1: key wants one key name"),
+])
+def test_script_errors_name_file_and_line(text, msg):
+    with pytest.raises(script_events.ScriptError, match=msg):
+        script_events.parse(text, "s.txt")
+
+
+def test_script_file_errors(tmp_path):
+    p = tmp_path / "bad.events"
+    p.write_bytes(b"move 1 2\n\xff\n")
+    with pytest.raises(script_events.ScriptError, match="bad.events: byte offset 9"):
+        script_events.load(p)
+    with pytest.raises(script_events.ScriptError, match="cannot read"):
+        script_events.load(tmp_path / "missing")
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.text(alphabet="movepresswaitglidekytl 0123456789-\n#", max_size=80))
+def test_script_parser_never_crashes(text):
+    try:
+        s = script_events.parse(text)
+    except script_events.ScriptError as exc:
+        assert str(exc).startswith("<script>:")
+        return
+    player = script_events.Player(s)
+    for _ in range(s.frames + 2):
+        player.due()
+    assert player.finished
+
+
+def test_player_spreads_batches_over_frames():
+    p = script_events.Player(script_events.parse("move 1 1\nwait 2\nmove 2 2\nwait 1\n"))
+    got = [p.due() for _ in range(4)]
+    assert [len(g) for g in got] == [1, 0, 1, 0]
+    assert p.finished
+
+
+@settings(max_examples=50, deadline=None)
+@given(st.floats(0, 3.6), st.floats(0, 1.86))
+def test_table_screen_round_trip(x, y):
+    sx, sy = VIEW.to_screen(x, y)
+    assert VIEW.to_table(sx, sy) == pytest.approx((x, y), abs=1e-9)
+
+
+def test_orientation_overhead_baulk_on_the_left():
+    t = Table()
+    bx, _ = VIEW.to_screen(0.0, t.width_m / 2)
+    tx, _ = VIEW.to_screen(t.length_m, t.width_m / 2)
+    assert bx < tx
+    # +y is to the left of a player looking up the table: the screen's up
+    _, y_left = VIEW.to_screen(1.0, t.width_m)
+    _, y_right = VIEW.to_screen(1.0, 0.0)
+    assert y_left < y_right
+    x, y, w, h = VIEW.play_rect
+    assert 0 < x and x + w < 768 and 60 < y and y + h < 540
+
+
+def test_velocity_arrow_round_trip_and_scale():
+    start = VIEW.to_screen(1.0, 0.9)
+    end = arrows.arrow_end(VIEW, start, (2.0, -1.0))
+    assert math.hypot(end[0] - start[0], end[1] - start[1]) == pytest.approx(
+        math.sqrt(5) * arrows.PX_PER_M_S)
+    assert arrows.velocity_from_arrow(VIEW, start, end) == pytest.approx((2.0, -1.0))
+
+
+def test_spin_up_is_top_spin_and_lies_along_the_arrow():
+    assert arrows.spin_from_drag(-60) == pytest.approx(1.0)
+    assert arrows.spin_from_drag(30) == pytest.approx(-0.5)
+    seg = arrows.spin_arrow((100, 100), (200, 100), -0.5)
+    assert seg == (100, 100, 70, 100)  # back spin points backwards along the line
+    assert arrows.spin_arrow((100, 100), (100, 100), 1.0) is None
+
+
+def test_dotted_extension_and_path():
+    dots = arrows.dotted_extension((0, 0), (10, 0), length=40)
+    assert dots == [(10 + d, 0) for d in range(6, 40, 6)]
+    path = arrows.dotted_path([(0, 0), (12, 0), (12, 12)])
+    assert path[0] == (0, 0) and (12, 6) in path and (12, 12) in path
+    assert all(abs(a[0] - b[0]) + abs(a[1] - b[1]) <= 6 for a, b in zip(path, path[1:]))
+
+
+def test_menus_are_the_thesis_lists():
+    assert menus.GREEN_ITEMS == ["Alter a different frame", "Exit from the program",
+                                 "Do nothing", "Replay sequence at full speed",
+                                 "Change the cueball's velocity"]
+    assert len(menus.ORANGE_ITEMS) == 8
+    assert menus.ORANGE_ITEMS[2:6] == ["Stop all balls moving", "Aim to set up next shot",
+                                       "Aim to pot this ball", "Do nothing"]
+    assert "keyboard" in menus.ORANGE_ITEMS[0] and "keyboard" in menus.ORANGE_ITEMS[1]
+    assert "mouse" in menus.ORANGE_ITEMS[6] and "arrow" in menus.ORANGE_ITEMS[7]
+    assert menus.ORANGE_VISIBLE_ROWS < len(menus.ORANGE_ITEMS)  # it scrolls
+
+
+def test_highlights_are_distinct_pastels():
+    cols = [menus.HIGHLIGHT[i] for i in dict.fromkeys(menus.GREEN_ITEMS + menus.ORANGE_ITEMS)]
+    assert len(set(cols)) == len(cols)
+    for c in cols + [menus.GREEN, menus.ORANGE]:
+        rgb = [int(c[k:k + 2], 16) for k in (1, 3, 5)]
+        assert min(rgb) >= 0x80  # pastel: light, little saturation
