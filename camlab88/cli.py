@@ -36,20 +36,29 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"camlab88 {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     sub.required = True
-    for name in COMMAND_MODULES:
-        try:
-            module = importlib.import_module(f"camlab88.commands.{name}")
-        except ModuleNotFoundError as exc:
-            if exc.name == f"camlab88.commands.{name}":
-                continue  # area not built yet
-            raise
+    for module in _command_modules():
         module.register(sub)
     return parser
 
 
+def _command_modules() -> list:
+    return [importlib.import_module(f"camlab88.commands.{name}") for name in COMMAND_MODULES]
+
+
+def normalise_argv(argv: Sequence[str]) -> list[str]:
+    """Let an area rewrite its own command line first (e.g. ``camlab88 snooker SESSION``
+    means ``camlab88 snooker play SESSION``)."""
+    out = list(argv)
+    for module in _command_modules():
+        hook = getattr(module, "normalise_argv", None)
+        if hook is not None:
+            out = hook(out)
+    return out
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     parser = build_parser()
-    args = parser.parse_args(argv)
+    args = parser.parse_args(normalise_argv(sys.argv[1:] if argv is None else argv))
     try:
         result = args.handler(args)
     except KeyboardInterrupt:

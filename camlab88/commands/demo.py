@@ -11,7 +11,9 @@ device time:
    walk" in-betweened, superimposed and played by the line-test viewer (real time, frames
    dropped as 9600 baud forces; then every frame).
 
-3. ``ca`` — the programmable cellular automaton on the Rainbow: Life's Gosper gun in auto
+3. ``snooker`` — the snooker motion-development program on the Rainbow: a break simulated
+   and replayed at 25 frames a second.
+4. ``ca`` — the programmable cellular automaton on the Rainbow: Life's Gosper gun in auto
    mode, panned with the four-times-mapped super pad and zoomed, by scripted mouse events.
 
  With a display a window shows each
@@ -204,9 +206,20 @@ def ca_frames() -> Iterator[Any]:
     yield from frames
 
 
+def snooker_frames() -> Iterator[Any]:
+    """The snooker program's replay on the Rainbow: a break simulated and shown at 25
+    frames a second (ball pads double-buffered over the table pad by LUT transparency)."""
+    from camlab88.commands.snooker import rainbow_demo
+
+    frames: list[Any] = []
+    rainbow_demo(on_frame=lambda f: frames.append(f.copy()), seconds=4.0)
+    yield from frames
+
+
 ACTS: tuple[Act, ...] = (
     Act("sigma", "Sigma T5684 on a 9600-baud line", (768, 512), sigma_frames),
     Act("kas", "KAS keyframe editor and line test on the T5684", (768, 512), kas_frames),
+    Act("snooker", "snooker motion development on the Rainbow", (768, 576), snooker_frames),
     Act("ca", "the programmable cellular automaton on the Rainbow", (768, 576), ca_frames),
 )
 

@@ -12,7 +12,8 @@ from __future__ import annotations
 import argparse
 from collections.abc import Callable
 
-HELP = "snooker motion development (thesis chapter 6): simulate shots, checkpoint files"
+HELP = ("snooker motion development (thesis chapter 6): `camlab88 snooker [SESSION]` runs the "
+        "interactive program (= `snooker play`); simulate shots; replay checkpoint files")
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
@@ -21,6 +22,19 @@ def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[ty
     for add in ACTIONS:
         add(actions)
     p.set_defaults(handler=lambda args: _no_action(p))
+
+
+ACTION_NAMES = ("play", "simulate", "replay")
+
+
+def normalise_argv(argv: list[str]) -> list[str]:
+    """``camlab88 snooker [SESSION] [options]`` is the interactive program (issue 6): with no
+    action named, insert ``play`` so the session file and options reach it."""
+    if argv[:1] == ["snooker"]:
+        rest = argv[1:]
+        if not rest or rest[0] not in (*ACTION_NAMES, "-h", "--help"):
+            return ["snooker", "play", *rest]
+    return argv
 
 
 def _no_action(p: argparse.ArgumentParser) -> int:

@@ -38,7 +38,7 @@ def test_kas_act_is_the_kas_session_played_over_the_line(tmp_path: Path) -> None
 
 def test_acts_are_listed_in_help() -> None:
     names = [a.name for a in demo.ACTS]
-    assert names[:3] == ["sigma", "kas", "ca"]
+    assert names == ["sigma", "kas", "snooker", "ca"]
     assert len(set(names)) == len(names)
 
 
@@ -51,3 +51,12 @@ def test_ca_act_plays_the_gun_on_the_rainbow(tmp_path: Path) -> None:
     # the gun has fired: the final screen differs from the first, and living cells are shown
     assert not np.array_equal(first, last)
     assert len(np.unique(last.reshape(-1, 3), axis=0)) >= 3
+
+
+def test_snooker_act_replays_a_break_on_the_rainbow(tmp_path: Path) -> None:
+    assert main(["demo", "--headless", "--only", "snooker", "--out", str(tmp_path)]) == 0
+    pngs = sorted(tmp_path.glob("snooker_*.png"))
+    assert len(pngs) >= 50  # 4 s at 25 frames a second
+    first, last = _png(pngs[0]), _png(pngs[-1])
+    assert first.shape == (576, 768, 3)
+    assert not np.array_equal(first, last)  # the balls have moved

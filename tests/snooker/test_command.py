@@ -73,8 +73,18 @@ def test_bad_checkpoint_source_names_the_line(tmp_path, capsys):
     assert code == 2 and f"{bad}:23:" in capsys.readouterr().err
 
 
-def test_snooker_without_action_prints_help(capsys):
-    assert main(["snooker"]) == 2
+def test_snooker_without_action_is_the_interactive_program(capsys):
+    from camlab88.cli import normalise_argv
+
+    assert normalise_argv(["snooker"]) == ["snooker", "play"]
+    assert normalise_argv(["snooker", "game.json", "--headless"]) == [
+        "snooker", "play", "game.json", "--headless"]
+    assert normalise_argv(["snooker", "simulate", "--break", "5"])[1] == "simulate"
+    assert normalise_argv(["kas", "library"]) == ["kas", "library"]
+    try:
+        main(["snooker", "--help"])
+    except SystemExit as exc:
+        assert exc.code == 0
     assert "simulate" in capsys.readouterr().out
 
 
