@@ -36,6 +36,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                    help="which frame --screenshot saves (default 30)")
     u.add_argument("--scale", type=int, default=1, help="window scale factor")
     u.add_argument("--record", metavar="FILE", help="record the command stream and input")
+    u.add_argument("--strict", action="store_true",
+                   help="the relic's video memory (64K 16-bit words)")
     u.add_argument("--tablet", metavar="SOURCE",
                    help="also feed a real tablet (hid:VID:PID, serial:PORT?protocol=P, or a "
                    "pyserial URL?protocol=P) to the Rainbow's tablet input")
@@ -60,6 +62,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p2.add_argument("--headless", action="store_true", help="no window")
     p2.add_argument("--screenshot", metavar="PNG", help="save the last frame")
     p2.add_argument("--scale", type=int, default=1, help="window scale factor")
+    p2.add_argument("--strict", action="store_true",
+                    help="replay on the relic's video memory (for recordings made with --strict)")
     p2.set_defaults(handler=_replay)
 
 
@@ -73,11 +77,16 @@ def _render(args: argparse.Namespace) -> int:
     except (SceneError, RainbowError) as exc:
         print(f"camlab88 rainbow render: {exc}", file=sys.stderr)
         return 2
-    frame = device.reference() if args.reference else device.peek()
+    try:  # compiling (or the reference walk) refuses graphs with too many paths
+        frame = device.reference() if args.reference else device.peek()
+        text = device.bands().to_text() if args.bands else None
+    except RainbowError as exc:
+        print(f"camlab88 rainbow render: {args.scene}: {exc}", file=sys.stderr)
+        return 2
     try:
         save_png(args.out, frame)
-        if args.bands:
-            write_atomic(args.bands, device.bands().to_text().encode())
+        if text is not None:
+            write_atomic(args.bands, text.encode())
     except OSError as exc:
         print(f"camlab88 rainbow render: {exc}", file=sys.stderr)
         return 1
@@ -157,7 +166,7 @@ def _replay(args: argparse.Namespace) -> int:
             window.poll()
             window.wait_frame(50)
 
-    device = Rainbow()
+    device = Rainbow(strict=getattr(args, "strict", False))
     ex = Executor(device, on_frame)
     try:
         result = replay(rec, ex.handle, device.post_event)
@@ -257,7 +266,8 @@ def run_demo(args: argparse.Namespace) -> int:
             state["quit"] = True
 
     tablet = _open_tablet(args.tablet)
-    session = in_process(record=bool(args.record), on_frame=on_frame)
+    session = in_process(_device(getattr(args, "strict", False)), record=bool(args.record),
+                         on_frame=on_frame)
     if not args.headless:
         from emulator.window import Window
 

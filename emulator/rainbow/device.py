@@ -12,7 +12,7 @@ from emulator.rainbow.bands import BandStructure
 from emulator.rainbow.compiler import Compiler
 from emulator.rainbow.draw import Canvas
 from emulator.rainbow.errors import RainbowError
-from emulator.rainbow.graph import SCREEN, Cluster, Pad, PadGraph
+from emulator.rainbow.graph import MAX_COORD, SCREEN, Cluster, Pad, PadGraph
 from emulator.rainbow.inputs import InputController
 from emulator.rainbow.memory import VideoMemory
 from emulator.rainbow.reference import reference_frame
@@ -38,8 +38,10 @@ class Rainbow:
     # -- nodes and arcs --------------------------------------------------------------------
     def create_pad(self, width: int, height: int, depth: int, plane: int = 0,
                    lut_page: int = 0, node: int | None = None) -> int:
-        for name, v, lo, hi in (("width", width, 1, self.memory.width),
-                                ("height", height, 1, self.memory.height),
+        # Sizes are bounded by the coordinate range only: a virtual (depth 0) pad needs no
+        # memory, and a pad too big for memory is refused by the allocator as out of memory.
+        for name, v, lo, hi in (("width", width, 1, MAX_COORD),
+                                ("height", height, 1, MAX_COORD),
                                 ("depth", depth, 0, 8), ("plane", plane, 0, 7),
                                 ("lut_page", lut_page, 0, PAGES - 1)):
             if not isinstance(v, int) or isinstance(v, bool) or not lo <= v <= hi:

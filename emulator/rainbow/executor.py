@@ -25,7 +25,14 @@ class Executor:
         self.device = device
         self.on_frame = on_frame  # the window shows frames and feeds host input here
         self.decoder = Decoder()
+        # The most recent frame, or None before the first wait_frame. It is ONE buffer that
+        # every later frame is composed into (no allocation per frame), so it changes under
+        # whoever holds it: keep frame_copy() if a frame must survive the next wait_frame.
         self.last_frame: np.ndarray | None = None
+
+    def frame_copy(self) -> np.ndarray | None:
+        """A copy of the last frame that later frames will not overwrite (None before one)."""
+        return None if self.last_frame is None else self.last_frame.copy()
 
     def handle(self, frame: bytes) -> bytes:
         """One command frame in, one reply frame out (the in-process transport)."""

@@ -98,15 +98,18 @@ class PadGraph:
 
     # -- nodes -----------------------------------------------------------------------------
     def _new_node_id(self, node: int | None) -> int:
+        # Ids are never reused (a stale id held by a program must not name a new node):
+        # automatic ids count up past every id handed out or chosen explicitly.
         if node is None:
-            while self._next_node in self.nodes:
-                self._next_node += 1
-            return self._next_node
-        if not isinstance(node, int) or node <= 0 or node >= 1 << 31:
+            node = self._next_node
+        elif not isinstance(node, int) or node <= 0 or node >= 1 << 31:
             raise GraphError(f"node id {node!r} must be 1..2^31-1 (0 is the screen)")
-        if node in self.nodes:
+        elif node in self.nodes:
             raise GraphError(f"node {node} already exists")
         return node
+
+    def _taken_node(self, nid: int) -> None:
+        self._next_node = max(self._next_node, nid + 1)
 
     def add_pad(
         self, width: int, height: int, depth: int, plane: int, lut_page: int,
@@ -115,6 +118,7 @@ class PadGraph:
         nid = self._new_node_id(node)
         pad = Pad(nid, width, height, depth, plane, lut_page, alloc)
         self.nodes[nid] = pad
+        self._taken_node(nid)
         self.version += 1
         return pad
 
@@ -124,6 +128,7 @@ class PadGraph:
         _check_size("cluster height", height)
         c = Cluster(nid, width, height)
         self.nodes[nid] = c
+        self._taken_node(nid)
         self.version += 1
         return c
 
@@ -164,6 +169,12 @@ class PadGraph:
         self.version += 1
 
     # -- arcs ------------------------------------------------------------------------------
+    def reaches(self, start: int, target: int) -> bool:
+        """Is ``target`` ``start`` or below it (so mapping start into target is a cycle)?"""
+        self.node(start)
+        self.node(target)
+        return self._reaches(start, target)
+
     def _reaches(self, start: int, target: int) -> bool:
         stack, seen = [start], set()
         while stack:
@@ -189,8 +200,6 @@ class PadGraph:
         if self._reaches(child, parent):
             raise GraphError(f"mapping node {child} into {parent} would make a cycle")
         if arc is None:
-            while self._next_arc in self.arcs:
-                self._next_arc += 1
             arc = self._next_arc
         elif not isinstance(arc, int) or arc <= 0 or arc >= 1 << 31:
             raise GraphError(f"arc id {arc!r} must be 1..2^31-1")
@@ -199,6 +208,7 @@ class PadGraph:
         a = Arc(arc, parent, child, _check_coord("x", x), _check_coord("y", y),
                 _check_coord("priority", priority), bool(on))
         self.arcs[arc] = a
+        self._next_arc = max(self._next_arc, arc + 1)
         p.arcs.append(arc)
         self.version += 1
         return a

@@ -9,19 +9,43 @@ from __future__ import annotations
 
 import numpy as np
 
-from emulator.rainbow.graph import SCREEN, SCREEN_H, SCREEN_W, Cluster, Pad, PadGraph
+from emulator.rainbow.errors import GraphError
+from emulator.rainbow.graph import (
+    MAX_INSTANCES,
+    MAX_VISITS,
+    SCREEN,
+    SCREEN_H,
+    SCREEN_W,
+    Cluster,
+    Pad,
+    PadGraph,
+)
 
 
 def _walk(graph: PadGraph):
+    # The same work limits as PadGraph.instances, counted independently: a graph the
+    # compiler refuses is refused here too, instead of taking minutes.
+    count = {"visits": 0, "instances": 0}
+
     def rec(nid, ox, oy, clip, key):
+        count["visits"] += 1
+        if count["visits"] > MAX_VISITS:
+            raise GraphError(f"the graph has more than {MAX_VISITS} paths from the screen")
         node = graph.nodes[nid]
         if isinstance(node, Pad):
+            if (max(clip[0], ox) < min(clip[2], ox + node.width)
+                    and max(clip[1], oy) < min(clip[3], oy + node.height)):
+                count["instances"] += 1
+                if count["instances"] > MAX_INSTANCES:
+                    raise GraphError(f"the graph maps pads more than {MAX_INSTANCES} times")
             yield key, node, ox, oy, clip
             return
         assert isinstance(node, Cluster)
         if nid != SCREEN:
             clip = (max(clip[0], ox), max(clip[1], oy),
                     min(clip[2], ox + node.width), min(clip[3], oy + node.height))
+        if clip[0] >= clip[2] or clip[1] >= clip[3]:
+            return  # nothing below a fully clipped cluster can show
         for aid in node.arcs:
             a = graph.arcs[aid]
             if a.on:

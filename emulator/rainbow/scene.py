@@ -15,6 +15,7 @@ from __future__ import annotations
 import base64
 import binascii
 import json
+import re
 from pathlib import Path
 from typing import Any
 
@@ -50,6 +51,33 @@ def _obj(v: Any, path: str) -> dict:
     return v
 
 
+PAD_KEYS = ("type", "width", "height", "depth", "plane", "lut_page", "pixels", "fill")
+CLUSTER_KEYS = ("type", "width", "height")
+ARC_KEYS = ("parent", "child", "x", "y", "priority", "on")
+
+
+def _known_keys(obj: dict, allowed: tuple[str, ...], path: str) -> None:
+    """A misspelt key ("prio", "lutpage") would silently fall back to a default: refuse it."""
+    for key in obj:
+        if key not in allowed:
+            raise SceneError(f"{path}.{key}: unknown key (want {', '.join(allowed)})")
+
+
+_NODE_REF = re.compile(r"\b(node|pad|cluster) (\d+)\b|\binto (\d+)\b")
+
+
+def _named(msg: str, ids: dict[int, str]) -> str:
+    """Rewrite the device's internal node ids in an error message as the scene's names."""
+    def sub(m: re.Match) -> str:
+        if m.group(3) is not None:
+            n = int(m.group(3))
+            return f"into {ids[n]!r}" if n in ids else m.group(0)
+        n = int(m.group(2))
+        return f"{m.group(1)} {ids[n]!r}" if n in ids else m.group(0)
+
+    return _NODE_REF.sub(sub, msg)
+
+
 def build_scene(scene: Any, device: Rainbow | None = None, where: str = "scene") -> Rainbow:
     """A device holding the scene (LUT already latched, so a frame shows it at once)."""
     r = device or Rainbow()
@@ -81,12 +109,15 @@ def _build(r: Rainbow, top: dict) -> None:
         except ValueError as exc:
             raise SceneError(f"{p}[1]: {exc}") from None
     names: dict[str, int] = {"screen": SCREEN}
+    ids: dict[int, str] = {SCREEN: "screen"}
     for name, spec in _obj(top.get("nodes", {}), "$.nodes").items():
         p = f"$.nodes.{name}"
         if name == "screen":
             raise SceneError(f"{p}: 'screen' is the predefined root")
         spec = _obj(spec, p)
         kind = spec.get("type")
+        if kind in ("pad", "cluster"):
+            _known_keys(spec, PAD_KEYS if kind == "pad" else CLUSTER_KEYS, p)
         w = _int(spec, "width", p, lo=1)
         h = _int(spec, "height", p, lo=1)
         try:
@@ -101,18 +132,27 @@ def _build(r: Rainbow, top: dict) -> None:
             else:
                 raise SceneError(f"{p}.type: must be \"pad\" or \"cluster\", got {kind!r}")
         except RainbowError as exc:
-            raise SceneError(f"{p}: {exc}") from None
+            raise SceneError(f"{p}: {_named(str(exc), ids)}") from None
+        ids[names[name]] = name
     arcs = top.get("arcs", [])
     if not isinstance(arcs, list):
         raise SceneError("$.arcs: must be a list")
     for n, spec in enumerate(arcs):
         p = f"$.arcs[{n}]"
         spec = _obj(spec, p)
+        _known_keys(spec, ARC_KEYS, p)
         ends = []
         for end in ("parent", "child"):
-            if spec.get(end) not in names:
-                raise SceneError(f"{p}.{end}: no node named {spec.get(end)!r}")
+            if not isinstance(spec.get(end), str) or spec[end] not in names:
+                raise SceneError(f"{p}.{end}: no node named {json.dumps(spec.get(end))}")
             ends.append(names[spec[end]])
+        parent, child = spec["parent"], spec["child"]
+        if r.node_kind(ends[0]) == "pad":
+            raise SceneError(f"{p}.parent: {parent!r} is a pad, not a cluster")
+        if ends[1] == SCREEN:
+            raise SceneError(f"{p}.child: the screen cannot be mapped into anything")
+        if r.graph.reaches(ends[1], ends[0]):
+            raise SceneError(f"{p}: mapping {child!r} into {parent!r} would make a cycle")
         on = spec.get("on", True)
         if not isinstance(on, bool):
             raise SceneError(f"{p}.on: must be true or false")
@@ -120,7 +160,7 @@ def _build(r: Rainbow, top: dict) -> None:
             r.map(ends[0], ends[1], _int(spec, "x", p, 0), _int(spec, "y", p, 0),
                   _int(spec, "priority", p, 0), on)
         except RainbowError as exc:
-            raise SceneError(f"{p}: {exc}") from None
+            raise SceneError(f"{p}: {_named(str(exc), ids)}") from None
 
 
 def _fill(r: Rainbow, pid: int, spec: dict, p: str, w: int, h: int, depth: int) -> None:
@@ -134,7 +174,8 @@ def _fill(r: Rainbow, pid: int, spec: dict, p: str, w: int, h: int, depth: int) 
         if not isinstance(spec["pixels"], str):
             raise SceneError(f"{p}.pixels: must be a base64 string")
         try:
-            data = base64.b64decode(spec["pixels"], validate=True)
+            # base64 tools wrap lines: whitespace is layout, anything else must be base64
+            data = base64.b64decode("".join(spec["pixels"].split()), validate=True)
         except (binascii.Error, ValueError) as exc:
             raise SceneError(f"{p}.pixels: bad base64 ({exc})") from None
         if len(data) != w * h:

@@ -22,22 +22,40 @@ BALL_COLOURS = ["#101018", "#ff5050", "#50ff50", "#5080ff", "#ffff60", "#ff60ff"
 MENU_ITEMS = ["Freeze polygon", "Freeze splodges", "Faster", "Slower", "Do nothing"]
 
 
+# Pad sizes for the strict (relic-sized, 512 x 256 x 8 planes) video memory, where the full
+# sizes cannot all be placed: (polygon, splodges, balls); messages and menu use upper planes.
+COMPACT_POLY, COMPACT_SPLODGE, COMPACT_BALLS = (176, 144), (256, 184), (200, 120)
+COMPACT_MEMORY = 512 * 256
+
+
 class Demo:
     def __init__(self, client: RainbowClient) -> None:
         c = self.client = client
+        info = c.hello()
+        self.compact = info["memory_w"] * info["memory_h"] <= COMPACT_MEMORY
+        if self.compact:
+            poly, splodge, (self.balls_w, self.balls_h) = (COMPACT_POLY, COMPACT_SPLODGE,
+                                                           COMPACT_BALLS)
+            msg_plane, menu_plane = 6, 3
+        else:
+            poly, splodge = (transparency.POLY_W, transparency.POLY_H), (
+                transparency.SPLODGE_W, transparency.SPLODGE_H)
+            self.balls_w, self.balls_h = BALLS_W, BALLS_H
+            msg_plane = menu_plane = 0
         c.set_lut(BG_PAGE * 256, ["#23304a"])
         bg = c.create_pad(SCREEN_W, SCREEN_H, 0, lut_page=BG_PAGE)
         c.map(SCREEN, bg, 0, 0, priority=0)
         self.tx_cluster = c.create_cluster(470, SCREEN_H - 60)
         c.map(SCREEN, self.tx_cluster, 10, 50, priority=1)
-        self.tx = transparency.build(c, self.tx_cluster, poly_at=(110, 100), splodge_at=(40, 40))
+        self.tx = transparency.build(c, self.tx_cluster, poly_at=(110, 100), splodge_at=(40, 40),
+                                     poly_size=poly, splodge_size=splodge)
         c.set_lut(BALL_PAGE * 256, BALL_COLOURS)
-        self.db = DoubleBuffer(c, SCREEN, BALLS_W, BALLS_H, 3, lut_page=BALL_PAGE,
+        self.db = DoubleBuffer(c, SCREEN, self.balls_w, self.balls_h, 3, lut_page=BALL_PAGE,
                                x=460, y=300, priority=2)
-        self.msg = MessageArea(c, 10, 8, 470, 34, MSG_PAGE, priority=3)
+        self.msg = MessageArea(c, 10, 8, 470, 34, MSG_PAGE, plane=msg_plane, priority=3)
         self.msg.show("Appendix I transparency  +  double-buffered pads\n"
                       "middle button: menu", "#c8e8ff")
-        self.menu = PopupMenu(c, MENU_ITEMS, lut_page=7, priority=50)
+        self.menu = PopupMenu(c, MENU_ITEMS, lut_page=7, plane=menu_plane, priority=50)
         self.balls = [[40.0 + 37 * i, 30.0 + 23 * i, 2.0 + 0.7 * i, 1.3 + 0.4 * i]
                       for i in range(6)]
         self.t = 0
@@ -81,19 +99,19 @@ class Demo:
         c.move(self.tx.splodge_arc, int(60 + 50 * math.cos(b)), int(120 + 100 * math.sin(b)))
         back = self.db.back
         c.clear(back, 0)
-        c.rect(back, 0, 0, BALLS_W, BALLS_H, 7, filled=False)
+        c.rect(back, 0, 0, self.balls_w, self.balls_h, 7, filled=False)
         for i, ball in enumerate(self.balls):
             x, y, vx, vy = ball
             x, y = x + vx * self.speed, y + vy * self.speed
-            if not 14 <= x <= BALLS_W - 14:
+            if not 14 <= x <= self.balls_w - 14:
                 vx = -vx
-                x = min(max(x, 14), BALLS_W - 14)
-            if not 14 <= y <= BALLS_H - 14:
+                x = min(max(x, 14), self.balls_w - 14)
+            if not 14 <= y <= self.balls_h - 14:
                 vy = -vy
-                y = min(max(y, 14), BALLS_H - 14)
+                y = min(max(y, 14), self.balls_h - 14)
             ball[:] = [x, y, vx, vy]
             c.circle(back, int(x), int(y), 12, 1 + i % 6)
-        c.text(back, 6, BALLS_H - 14, f"frame {self.t}", 7)
+        c.text(back, 6, self.balls_h - 14, f"frame {self.t}", 7)
         self.db.swap()
         self.db.move(460 + int(20 * math.sin(self.t / 40)), 300 + int(30 * math.cos(self.t / 50)))
         return c.wait_frame()

@@ -63,14 +63,18 @@ class TransparencyExample:
 
 
 def build(client: RainbowClient, parent: int = SCREEN, poly_at: tuple[int, int] = (100, 80),
-          splodge_at: tuple[int, int] = (40, 40), priority: int = 0) -> TransparencyExample:
+          splodge_at: tuple[int, int] = (40, 40), priority: int = 0,
+          poly_size: tuple[int, int] = (POLY_W, POLY_H),
+          splodge_size: tuple[int, int] = (SPLODGE_W, SPLODGE_H)) -> TransparencyExample:
+    """Build the example; smaller sizes let it fit the strict (512 x 256) video memory."""
     c = client
-    spl = c.create_pad(SPLODGE_W, SPLODGE_H, 3, SPLODGE_PLANE, SPLODGE_PAGE)
-    poly = c.create_pad(POLY_W, POLY_H, 5, POLY_PLANE, POLYGON_PAGE)
+    (pw, ph), (sw, sh) = poly_size, splodge_size
+    spl = c.create_pad(sw, sh, 3, SPLODGE_PLANE, SPLODGE_PAGE)
+    poly = c.create_pad(pw, ph, 5, POLY_PLANE, POLYGON_PAGE)
     c.set_lut(SPLODGE_PAGE * 256, [tuple(int(v) for v in col) for col in SPLODGES])
     c.set_lut(POLYGON_PAGE * 256, [tuple(int(v) for v in col) for col in combined_table()])
-    c.put_pixels(spl, 0, 0, splodge_image())
-    c.put_pixels(poly, 0, 0, coverage(polygon_points(), POLY_W, POLY_H, levels=32))
+    c.put_pixels(spl, 0, 0, splodge_image(sw, sh))
+    c.put_pixels(poly, 0, 0, coverage(polygon_points(pw, ph), pw, ph, levels=32))
     sa = c.map(parent, spl, *splodge_at, priority)
     pa = c.map(parent, poly, *poly_at, priority)
     return TransparencyExample(poly, spl, pa, sa)

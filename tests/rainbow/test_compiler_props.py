@@ -84,7 +84,8 @@ def test_band_structure_output_equals_reference(r: Rainbow) -> None:
 
 
 edits = st.lists(
-    st.tuples(st.sampled_from(["move", "prio", "onoff", "resize", "unmap", "page"]),
+    st.tuples(st.sampled_from(["move", "prio", "onoff", "resize", "unmap", "page", "map",
+                               "new_pad", "new_cluster", "destroy", "draw"]),
               st.integers(0, 1000), coord, coord),
     min_size=1, max_size=8,
 )
@@ -111,6 +112,33 @@ def test_incremental_compile_equals_scratch(r: Rainbow, ops) -> None:
             r.unmap(arcs[pick % len(arcs)])
         elif op == "page" and pads:
             r.set_page(pads[pick % len(pads)], abs(a) % 16)
+        elif op == "map":
+            parent = ([0] + clusters)[pick % (len(clusters) + 1)]
+            nodes = clusters + pads
+            if nodes:
+                try:
+                    r.map(parent, nodes[(pick // 7) % len(nodes)], a, b, pick % 3,
+                          pick % 5 != 0)
+                except RainbowError:
+                    pass  # a cycle: refused, and the graph must be as it was
+        elif op == "new_pad":
+            depth = pick % 9
+            pid = r.create_pad(abs(a) % 200 + 1, abs(b) % 150 + 1, depth,
+                               (pick // 9) % min(8, 9 - depth), pick % 16)
+            r.map(([0] + clusters)[pick % (len(clusters) + 1)], pid, a, b, pick % 3)
+        elif op == "new_cluster":
+            cid = r.create_cluster(abs(a) % 400 + 1, abs(b) % 300 + 1)
+            r.map(([0] + clusters)[pick % (len(clusters) + 1)], cid, a % 300, b % 300,
+                  pick % 3)
+        elif op == "destroy" and (clusters or pads):
+            nodes = clusters + pads
+            r.destroy(nodes[pick % len(nodes)])
+        elif op == "draw" and pads:
+            pid = pads[pick % len(pads)]
+            pad = r.graph.pad(pid)
+            if pad.depth:
+                r.canvas(pid).rect(a % 50, b % 50, pick % 60 + 1, pick % 40 + 1,
+                                   pick % (1 << pad.depth))
         incremental = r.bands()
         assert incremental == compile_graph(r.graph)
         assert_canonical(incremental)
