@@ -24,8 +24,8 @@ def walk() -> AnimSequence:
 
 
 def sun(frames: int = 20) -> AnimSequence:
-    # No sample path: the sun rises straight, easing in and out.  (Fitting a path per axis
-    # to a growing circle would deform it - each point's displacement differs.)
+    # No sample path: the sun rises straight, easing in and out.  (The one path fitted to
+    # each point of a growing circle would bend every point differently, deforming it.)
     return inbetween(files.load_keyframe(LIBRARY / "sun_a.kas"),
                      files.load_keyframe(LIBRARY / "sun_b.kas"),
                      timing=files.load_timing(LIBRARY / "ease-in-out.kas"), frames=frames)

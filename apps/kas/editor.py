@@ -91,7 +91,8 @@ class _Pending:
     name: str
     steps: list[tuple[str, str]]          # ("point" | "number", prompt)
     done: Callable[[list], None]
-    defaults: dict[int, float] = field(default_factory=dict)
+    # Return at a prompt takes these: numbers, points, or f(got so far) -> point
+    defaults: dict[int, object] = field(default_factory=dict)
     got: list = field(default_factory=list)
     text: str = ""
 
@@ -117,17 +118,19 @@ class Editor:
         self.background = False
         self.guide = guide
         self.show_guide = guide is not None
-        self.transforms: dict[str, ops.Transform] = {}
-        self.recent: list[str] = []
-        self.back_depth = 0
+        self.transforms: dict[str, ops.Transform] = {}  # the last of each kind
+        self.last: ops.Transform | None = None           # what 'move again' repeats
+        self.applied: list[ops.Transform] = []           # what 'move back' unwinds
         self.rng = np.random.default_rng(seed)  # de-regularise: repeatable for a seed
         self.last_perturbation: float | None = None
         self.message = ""
         self.dirty = False
+        self.quit_warned = False
         self.on_save: Callable[[Drawing], None] | None = None
 
     # ------------------------------------------------------------------ events
     def feed(self, event: Event) -> None:
+        self.quit_warned = False  # "close again" means again straight away
         if isinstance(event, Pointer):
             self._pointer(event)
         elif isinstance(event, Key):
@@ -193,14 +196,36 @@ class Editor:
             self._key({"undo": "u", "back": "b", "again": "a", "background": "g",
                        "enlarge": "v", "reverse": "o"}[item])
 
+    def save(self) -> bool:
+        """F2: save through ``on_save``.  A failed save (disk full, no permission, ...) is
+        shown on the message line and the drawing stays in the editor, still unsaved."""
+        if self.on_save is None:
+            self.message = "no file to save to"
+            return False
+        try:
+            self.on_save(self.drawing)
+        except OSError as exc:
+            self.message = f"NOT saved: {exc.strerror or exc}"
+            self.quit_warned = False
+            return False
+        self.dirty = False
+        return True
+
+    def request_quit(self) -> bool:
+        """May the editor close now?  With unsaved edits the first request only warns
+        (message line); a second one in a row discards them."""
+        if not self.dirty or self.quit_warned:
+            return True
+        self.quit_warned = True
+        self.message = "unsaved edits: F2 saves; close again to discard them"
+        return False
+
     def _key(self, key: str) -> None:
         if self.pending is not None and self._pending_key(key):
             return
         k = key.lower()
         if k == "f2":
-            if self.on_save:
-                self.on_save(self.drawing)
-                self.dirty = False
+            self.save()
             return
         if k in ("1", "2", "3", "4", "5", "6", "7", "8"):
             self.pen = int(k)
@@ -341,7 +366,7 @@ class Editor:
 
     # ------------------------------------------------------------------ prompts
     def _ask(self, name: str, steps: list[tuple[str, str]], done: Callable[[list], None],
-             defaults: dict[int, float] | None = None) -> None:
+             defaults: dict[int, object] | None = None) -> None:
         self.pending = _Pending(name, steps, done, defaults or {})
         self._prompt()
 
@@ -354,6 +379,8 @@ class Editor:
             d = p.defaults.get(len(p.got))
             text += f" [{d:g}]" if d is not None else ""
             text += f": {p.text}"
+        elif len(p.got) in p.defaults:
+            text += " (Return: as last time)"
         self.message = f"{p.name}: {text}"
 
     def _pending_point(self, world: tuple[float, float]) -> None:
@@ -374,7 +401,15 @@ class Editor:
             self.message = ""
             return True
         if p.steps[len(p.got)][0] != "number":
-            return False
+            if key != "return":
+                return False
+            if len(p.got) not in p.defaults:
+                self.message = f"{p.name}: touch a point (nothing remembered yet)"
+                return True
+            d = p.defaults[len(p.got)]
+            p.got.append(tuple(d(p.got) if callable(d) else d))
+            self._advance()
+            return True
         if key in "0123456789.-" and len(key) == 1:
             p.text += key
         elif key == "backspace":

@@ -24,6 +24,9 @@ class Transform:
     matrix: np.ndarray  # 3x3, acts on column vectors (x, y, 1)
     params: tuple[float, ...]
     scope: str = "points"  # points | chain | section
+    # the points the animator touched (move: from, to; rotate/enlarge/stretch: origin;
+    # reflect: the mirror line), offered again by Return at the same prompts
+    touched: tuple[tuple[float, float], ...] = ()
 
     def inverse(self) -> np.ndarray:
         return np.linalg.inv(self.matrix)

@@ -1,9 +1,14 @@
 """Edit-mode commands of the keyframe editor (§3.1.1), bound to keys for ``Editor``.
 
 Most commands act on the points between the cyan square and magenta triangle cursors in
-drawing order.  The five simple transformations are remembered one per kind; 'move back'
-inverts the most recent and, pressed again, the one before that (so a composite can be
-unwound), 'move again' repeats the most recent - both on whatever the cursors select now.
+drawing order.  The five simple transformations are remembered one per kind (§3.1.1 "each
+transform remembered independently"): at a later command of the same kind Return takes the
+remembered value at every prompt - origin, angle, factor, mirror line, and for a move the
+same vector from wherever the first point is touched - so a composite ("enlarge, again,
+rotate, again") can be replayed exactly on other points.  'Move again' repeats the most
+recent transformation on whatever the cursors select now.  'Move back' inverts the
+transformations in the reverse order they were actually applied (repeats included), each on
+whatever the cursors select now: a stack, popped by each move back.
 """
 
 from __future__ import annotations
@@ -24,33 +29,43 @@ def bindings(ed: Editor) -> dict[str, Callable[[], None]]:
     def ask(name, steps, done, defaults=None):
         return lambda: ed._ask(name, steps, done, defaults)
 
-    def last(kind: str, i: int) -> dict[int, float]:
+    def last(kind: str) -> dict[int, object]:
+        """Return's defaults at each prompt of a command of this kind: as last time."""
         t = ed.transforms.get(kind)
-        return {i + k: v for k, v in enumerate(t.params)} if t else {}
+        if t is None:
+            return {}
+        if kind == "move":
+            (x0, y0), (x1, y1) = t.touched
+            return {0: (x0, y0), 1: lambda got: (got[0][0] + x1 - x0, got[0][1] + y1 - y0)}
+        out: dict[int, object] = dict(enumerate(t.touched))
+        out.update({len(t.touched) + k: v for k, v in enumerate(t.params)})
+        return out
 
     return {
         "tab": lambda: _switch(ed),
         ",": lambda: _step(ed, -1), ".": lambda: _step(ed, 1),
         "[": lambda: _chain_step(ed, -1), "]": lambda: _chain_step(ed, 1),
         "m": ask("move points", [("point", "touch from"), ("point", "touch to")],
-                 lambda g: _move(ed, g, "points")),
+                 lambda g: _move(ed, g, "points"), last("move")),
         "l": ask("move line-chain", [("point", "touch from"), ("point", "touch to")],
-                 lambda g: _move(ed, g, "chain")),
+                 lambda g: _move(ed, g, "chain"), last("move")),
         "s": ask("move section", [("point", "touch from"), ("point", "touch to")],
-                 lambda g: _move(ed, g, "section")),
+                 lambda g: _move(ed, g, "section"), last("move")),
         "t": ask("rotate", [("point", "touch the origin"), ("number", "angle (degrees)")],
                  lambda g: _new(ed, Transform("rotate", ops.rotation(g[1], g[0]),
-                                              (g[1],))), last("rotate", 1)),
+                                              (g[1],), touched=(g[0],))), last("rotate")),
         "f": ask("reflect", [("point", "touch the mirror line"),
                              ("point", "touch the mirror line again")],
-                 lambda g: _new(ed, Transform("reflect", ops.reflection(g[0], g[1]), ()))),
+                 lambda g: _new(ed, Transform("reflect", ops.reflection(g[0], g[1]), (),
+                                              touched=(g[0], g[1]))), last("reflect")),
         "z": ask("enlarge", [("point", "touch the origin"), ("number", "factor")],
                  lambda g: _new(ed, Transform("enlarge", ops.scaling(g[1], g[1], g[0]),
-                                              (g[1],))), last("enlarge", 1)),
+                                              (g[1],), touched=(g[0],))), last("enlarge")),
         "y": ask("stretch", [("point", "touch the origin"), ("number", "x factor"),
                              ("number", "y factor")],
                  lambda g: _new(ed, Transform("stretch", ops.scaling(g[1], g[2], g[0]),
-                                              (g[1], g[2]))), last("stretch", 1)),
+                                              (g[1], g[2]), touched=(g[0],))),
+                 last("stretch")),
         "p": ask("collapse onto point", [("point", "touch the point")],
                  lambda g: _reshape(ed, lambda p: ops.collapse_to_point(p, g[0]))),
         "j": ask("collapse onto line", [("point", "touch the line"),
@@ -123,36 +138,34 @@ def _transform(ed: Editor, matrix: np.ndarray, scope: str) -> bool:
 def _new(ed: Editor, t: Transform) -> None:
     if _transform(ed, t.matrix, t.scope):
         ed.transforms[t.kind] = t
-        if t.kind in ed.recent:
-            ed.recent.remove(t.kind)
-        ed.recent.append(t.kind)
-        ed.back_depth = 0
+        ed.last = t
+        ed.applied.append(t)
 
 
 def _move(ed: Editor, got: list, scope: str) -> None:
     (x0, y0), (x1, y1) = got
-    _new(ed, Transform("move", ops.translation(x1 - x0, y1 - y0), (x1 - x0, y1 - y0), scope))
+    _new(ed, Transform("move", ops.translation(x1 - x0, y1 - y0), (x1 - x0, y1 - y0), scope,
+                       touched=((x0, y0), (x1, y1))))
 
 
 def _back(ed: Editor) -> None:
-    i = len(ed.recent) - 1 - ed.back_depth
-    if i < 0:
-        ed.message = "no transformation to move back" if not ed.recent else \
-            "every remembered transformation has been moved back"
+    if not ed.applied:
+        ed.message = "no transformation to move back" if ed.last is None else \
+            "every transformation applied has been moved back"
         return
-    t = ed.transforms[ed.recent[i]]
+    t = ed.applied[-1]
     if _transform(ed, t.inverse(), t.scope):
-        ed.back_depth += 1
+        ed.applied.pop()
         ed.message = f"moved back: {t.kind}"
 
 
 def _again(ed: Editor) -> None:
-    if not ed.recent:
+    t = ed.last
+    if t is None:
         ed.message = "no transformation to repeat"
         return
-    t = ed.transforms[ed.recent[-1]]
     if _transform(ed, t.matrix, t.scope):
-        ed.back_depth = 0
+        ed.applied.append(t)
         ed.message = f"again: {t.kind}"
 
 

@@ -1,6 +1,6 @@
 """PNG, GIF and MP4 export of sequences (imageio; MP4 through imageio-ffmpeg).
 
-Pictures come from ``apps.kas.raster`` (an interim software rasteriser, see there).
+Pictures come from the emulated Sigma (camlab88/commands/kas.py) or ``apps.kas.raster``.
 """
 
 from __future__ import annotations

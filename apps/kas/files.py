@@ -383,7 +383,20 @@ def parse_timing(text: str, name: str = "<timing>") -> Timing:
 
 
 def validate_timing(t: Timing) -> None:
+    """Ticks are path fractions in 0..1 in order along the path (equal ticks hold a frame);
+    a curve's time fractions run from 0 to 1, increasing."""
     if t.kind == "ticks":
+        v = t.values
+        bad = np.flatnonzero((v < 0) | (v > 1) | ~np.isfinite(v))
+        if len(bad):
+            i = int(bad[0])
+            raise ValueError(f"tick {i + 1} ({v[i]:g}) is not a fraction of the path "
+                             "between 0 and 1")
+        back = np.flatnonzero(np.diff(v) < 0)
+        if len(back):
+            i = int(back[0]) + 1
+            raise ValueError(f"tick {i + 1} ({v[i]:g}) comes before tick {i} ({v[i - 1]:g}) "
+                             "along the path: ticks must be in order")
         return
     v = t.values
     if len(v) < 2:

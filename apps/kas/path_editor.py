@@ -93,7 +93,9 @@ class PathEditor:
         return float((cum[i] + t[i] * seg[i]) / cum[-1])
 
     def timing(self) -> Timing:
-        return Timing("ticks", self.ticks, "hand ticks")
+        """The ticks in order along the path, whatever order they were touched in (each
+        tick is one in-between; the frames follow the path)."""
+        return Timing("ticks", sorted(self.ticks), "hand ticks")
 
     def tick_points(self) -> np.ndarray:
         from apps.kas.pathfit import point_at

@@ -1,11 +1,25 @@
 """Fitting the animator's sample path between corresponding points (§3.1.2, figure 3.6).
 
-The one hand-drawn path is stretched, translated and reflected so that its ends meet each
-pair of corresponding points.  "Stretch" is taken per axis (x and y scale independently, a
-negative scale being the reflection); the thesis lists no rotation.  When the path's chord
-has no extent along an axis the scale is undefined there: the path's own excursion along that
-axis is kept and the displacement is spread along the path in proportion to distance
-(reconstruction).  ``mode="similarity"`` (rotate + uniform scale) is offered as an option.
+The thesis says the one hand-drawn path is "stretched, translated and reflected" so that its
+ends meet each pair of corresponding points; it gives no formula.  Reconstruction (``mode=
+"stretch"``, the default): the fit is done in the chord's own frame, so the path keeps its
+shape.  With the path's chord ``c = end - start`` and a point's displacement ``δ = b - a``
+(as complex numbers), a path point ``p`` at excursion ``q = p - start`` becomes
+
+    a + δ · (q / c)            when  c·δ >= 0  (rotate + uniform scale |δ|/|c|)
+    a + δ · conj(q / c)        when  c·δ <  0  (the same, mirrored across the chord)
+
+i.e. the along-chord and perpendicular components are both scaled by |δ|/|c|, turned onto δ,
+and reflected when the point moves "backwards" relative to the drawn chord, so that a path
+drawn as an upward arch from left to right is still an upward arch for a point moving right
+to left (the thesis's "reflected").  The ends land exactly on ``a`` and ``b``.  A point that
+does not move (δ = 0) stays put.  A closed path (no chord) cannot be scaled: its excursion is
+kept as drawn and the displacement is spread along it in proportion to distance.
+``mode="similarity"`` is the same without the reflection (pure rotation + uniform scale).
+
+An earlier version stretched x and y independently by δ/c per axis; a path with almost level
+ends then blew its vertical excursion up by δy/cy (in-betweens far off the screen), so it was
+replaced by this shape-keeping fit.
 """
 
 from __future__ import annotations
@@ -61,17 +75,15 @@ def fit(a: np.ndarray, b: np.ndarray, d: np.ndarray, path: SamplePath | None = N
     chord = pn - p0
     extent = float(np.hypot(*(path.points.max(0) - path.points.min(0))))
     eps = 1e-9 * max(extent, 1e-300)
-    if mode == "similarity":
-        c = complex(*chord)
-        if abs(c) <= eps:
+    c = complex(*chord)
+    if abs(c) <= eps:
+        if mode == "similarity":
             raise ValueError("a closed sample path cannot be fitted by similarity")
-        zq = (q[:, 0] + 1j * q[:, 1])[:, None]
-        z = (a[:, 0] + 1j * a[:, 1])[None] + zq * ((delta[:, 0] + 1j * delta[:, 1]) / c)[None]
-        return np.stack([z.real, z.imag], axis=-1)
-    out = np.empty((len(d), len(a), 2))
-    for ax in range(2):
-        if abs(chord[ax]) > eps:
-            out[..., ax] = a[None, :, ax] + q[:, None, ax] * (delta[None, :, ax] / chord[ax])
-        else:
-            out[..., ax] = a[None, :, ax] + q[:, None, ax] + d[:, None] * delta[None, :, ax]
-    return out
+        return a[None] + q[:, None, :] + d[:, None, None] * delta[None]
+    w = ((q[:, 0] + 1j * q[:, 1]) / c)[:, None]        # (F, 1) excursion in chord units
+    zd = (delta[:, 0] + 1j * delta[:, 1])[None]         # (1, M)
+    if mode == "stretch":
+        backwards = (delta @ chord) < 0                 # (M,) reflect these points' paths
+        w = np.where(backwards[None], np.conj(w), w)
+    z = (a[:, 0] + 1j * a[:, 1])[None] + w * zd
+    return np.stack([z.real, z.imag], axis=-1)

@@ -1,8 +1,9 @@
-"""A plain software rasteriser for exporting sequences as pictures.
+"""A plain software rasteriser for exporting sequences as pictures (``--renderer raster``).
 
-INTERIM: the finished KAS draws on the emulated Sigma T5684 and exports what that screen
-shows; until the Sigma front exists, frames are drawn here with Pillow at any size (the
-twelve-field fills the image), in the thesis palette on a black or white background.
+The default export (``kas export``, ``--renderer sigma``) draws each frame on the emulated
+Sigma T5684 and saves what that screen shows.  This one draws with Pillow at any size (the
+twelve-field fills the image), in the thesis palette on a black or white background: for
+pictures larger than the Sigma's 768x512, and for the README's contact sheets.
 """
 
 from __future__ import annotations

@@ -43,11 +43,15 @@ def segment(keys: np.ndarray, i: int, u: np.ndarray, method: str = "catmull-rom"
     if method == "catmull-rom":
         return _hermite(p0, p1, (p1 - pm) / 2, (p2 - p0) / 2, u)
     if method == "kochanek-bartels":
+        # Kochanek & Bartels 1984: the segment leaves p0 along its outgoing ("source")
+        # tangent and reaches p1 along p1's incoming ("destination") tangent.  With c = -1
+        # both are the segment's own chord (straight lines, corners at the keys); with
+        # c = +1 each is the chord on the far side of its key.
         t, c, b = tension, continuity, bias
-        m0 = ((1 - t) * (1 + b) * (1 - c) / 2 * (p0 - pm)
-              + (1 - t) * (1 - b) * (1 + c) / 2 * (p1 - p0))
-        m1 = ((1 - t) * (1 + b) * (1 + c) / 2 * (p1 - p0)
-              + (1 - t) * (1 - b) * (1 - c) / 2 * (p2 - p1))
+        m0 = ((1 - t) * (1 + b) * (1 + c) / 2 * (p0 - pm)
+              + (1 - t) * (1 - b) * (1 - c) / 2 * (p1 - p0))
+        m1 = ((1 - t) * (1 + b) * (1 - c) / 2 * (p1 - p0)
+              + (1 - t) * (1 - b) * (1 + c) / 2 * (p2 - p1))
         return _hermite(p0, p1, m0, m1, u)
     # Overhauser (Brewer & Anderson 1977): blend of the parabolas through (pm, p0, p1) and
     # (p0, p1, p2), each parameterised by chord length; degenerate chords fall back to equal

@@ -26,9 +26,13 @@ BUILTIN = ("linear", "ease-in", "ease-out", "ease-in-out", "overshoot")
 
 
 def ticks_from_curve(t: Timing, frames: int) -> Timing:
-    """The tick marks a curve gives for ``frames`` frames (in-betweens only)."""
+    """The tick marks a curve gives for ``frames`` frames (in-betweens only).  Ticks lie on
+    the path in order, so a curve that overshoots or turns back (e.g. ``overshoot``) has no
+    tick form: ValueError."""
     d = fractions(t, frames)
-    return Timing("ticks", d[1:-1], t.name)
+    out = Timing("ticks", d[1:-1], t.name)
+    validate_timing(out)
+    return out
 
 
 def fractions(t: Timing | None, frames: int | None) -> np.ndarray:
@@ -39,6 +43,7 @@ def fractions(t: Timing | None, frames: int | None) -> np.ndarray:
     if t is None:
         t = curve("linear")
     if t.kind == "ticks":
+        validate_timing(t)
         n = len(t.values) + 2
         if frames is not None and frames != n:
             raise ValueError(f"the tick timing has {len(t.values)} in-betweens, i.e. {n} "

@@ -9,6 +9,7 @@ headless from an event script (the wiring to the emulator, window and tablet liv
 from __future__ import annotations
 
 import argparse
+import re
 import sys
 from pathlib import Path
 
@@ -118,7 +119,12 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     dm.add_argument("--out", required=True, help="sequence file to write")
     dm.set_defaults(handler=_demo)
 
-    lb = sub.add_parser("library", help="list the shipped keyframes, paths and timings")
+    lb = sub.add_parser("library", help="list (or add to) the libraries of keyframes, paths "
+                        "and timings", description="Lists the user library ($CAMLAB88_KAS_"
+                        "LIBRARY, default ~/.local/share/camlab88/kas) and the shipped one. "
+                        "--save FILE NAME checks FILE and copies it into the user library; "
+                        "library names can then be given wherever a file is asked for.")
+    lb.add_argument("--save", nargs=2, metavar=("FILE", "NAME"))
     lb.set_defaults(handler=_library)
 
 
@@ -189,12 +195,10 @@ def _superimpose(args: argparse.Namespace) -> int:
         parts = []
         cache: dict[str, object] = {}
         for spec in args.seqs:
-            name, _, off = spec.rpartition("@") if "@" in spec else (spec, "", "0")
-            try:
-                offset = int(off)
-            except ValueError:
-                raise ValueError(f"{spec!r}: the offset after @ must be a whole number") \
-                    from None
+            # SEQ@N: only a last '@' followed by a whole number is an offset, so file
+            # names may contain '@' ('a@b.kas', 'take@2.kas@5')
+            m = re.fullmatch(r"(.+)@([+-]?\d+)", spec)
+            name, offset = (m[1], int(m[2])) if m else (spec, 0)
             if name not in cache:
                 cache[name] = files.load_sequence(library.resolve(name))
             parts.append((cache[name], offset))
@@ -268,7 +272,10 @@ def _register_fronts(sub: argparse._SubParsersAction) -> None:
     pa.add_argument("second")
     pa.add_argument("--out", required=True, help="sample path file to write")
     pa.add_argument("--ticks", help="tick timing file to write (default: OUT with _ticks)")
-    pa.add_argument("--previous", help="the previous pair's path, shown for continuity")
+    pa.add_argument("--previous", help="the previous pair's path, shown for continuity "
+                    "(default: the path last saved for a pair ending at FIRST, if any)")
+    pa.add_argument("--no-library", action="store_true", help="do not keep the path in the "
+                    "user library (nor look up the previous pair's)")
     _front_options(pa)
     pa.set_defaults(handler=_path)
 
@@ -327,8 +334,13 @@ def _edit(args: argparse.Namespace) -> int:
     except (OSError, ValueError) as exc:
         return _fail("edit", exc)
     ed = front.editor
-    print(f"kas edit: {len(ed.drawing.chains)} chains, {ed.drawing.n_points} points; "
-          f"{'saved ' + str(target) if saved else 'not saved (F2 saves)'}; "
+    if not saved:
+        state = "NOT saved (F2 saves)" if ed.dirty else "nothing to save"
+    elif ed.dirty:
+        state = f"saved {target} earlier, but the last edits are NOT saved"
+    else:
+        state = f"saved {target}"
+    print(f"kas edit: {len(ed.drawing.chains)} chains, {ed.drawing.n_points} points; {state}; "
           f"{session.line.stats['host_to_device_bytes']} characters to the Sigma")
     return 0
 
@@ -341,7 +353,12 @@ def _path(args: argparse.Namespace) -> int:
     out = Path(args.out)
     ticks = Path(args.ticks) if args.ticks else out.with_name(f"{out.stem}_ticks{out.suffix}")
     try:
-        prev = files.load_path(library.resolve(args.previous)) if args.previous else None
+        prev_file = library.resolve(args.previous) if args.previous else None
+        if prev_file is None and not args.no_library:
+            prev_file = library.previous_pair_path(args.first)
+            if prev_file is not None:
+                print(f"kas path: showing the previous pair's path {prev_file}")
+        prev = files.load_path(prev_file) if prev_file is not None else None
         model = PathEditor(files.load_drawing_or_frame(library.resolve(args.first)),
                            files.load_drawing_or_frame(library.resolve(args.second)), prev)
 
@@ -349,6 +366,11 @@ def _path(args: argparse.Namespace) -> int:
             files.save_path(out, path)
             if len(timing.values):
                 files.save_timing(ticks, timing)
+            if not args.no_library:
+                p_name, t_name = library.pair_names(args.first, args.second)
+                files.save_path(library.user_file(p_name), path)
+                if len(timing.values):
+                    files.save_timing(library.user_file(t_name), timing)
 
         front = PathFront(model, args.background, save)
         _run_front(front, args, "kas path")
@@ -416,7 +438,9 @@ def _windowed(front, term, settings, events, args, title: str):  # noqa: ANN001,
                 mouse, keys, i = session.due(events, i)
             for ev in window.poll():
                 if isinstance(ev, Quit):
-                    return session
+                    if front.may_close():
+                        return session
+                    continue
                 if isinstance(ev, KeyDown):
                     if ev.key in KEY_BYTES:
                         keys.append(ev.key)
@@ -639,6 +663,27 @@ def _demo(args: argparse.Namespace) -> int:
 def _library(args: argparse.Namespace) -> int:
     from apps.kas import library
 
-    for name, kind in library.entries():
-        print(f"{name:16} {kind}")
+    if args.save:
+        from apps.kas import files
+
+        src, name = args.save
+        loaders = {"keyframe": files.parse_keyframe, "sequence": files.parse_sequence,
+                   "path": files.parse_path, "timing": files.parse_timing}
+        try:
+            text = Path(src).read_text(encoding="utf-8")
+            first = text.split("\n", 1)[0].split()
+            kind = first[1] if len(first) == 3 and first[0] == "KAS" else ""
+            if kind not in loaders:
+                raise files.KasFileError(src, 1, "not a KAS keyframe, sequence, path or "
+                                         "timing file")
+            loaders[kind](text, src)  # refuse a bad file before it enters the library
+            dest = library.user_file(name)
+            files.atomic_write(dest, text)
+        except (OSError, ValueError, UnicodeDecodeError) as exc:
+            return _fail("library", exc)
+        print(f"kas library: {kind} {src} saved as {dest}")
+        return 0
+    print(f"user library: {library.user_dir()}")
+    for name, kind, where in library.entries():
+        print(f"{name:28} {kind:9} {where}")
     return 0

@@ -46,7 +46,9 @@ def test_errors_name_file_and_line(tmp_path, capsys):
                  str(tmp_path / "o.kas")]) == 2
     assert f"{bad}:4: file ends early" in capsys.readouterr().err
     assert not (tmp_path / "o.kas").exists()
+    capsys.readouterr()
     assert main(["kas", "superimpose", "x.kas@z", "--out", str(tmp_path / "o.kas")]) == 2
+    assert "x.kas@z" in capsys.readouterr().err  # not an offset: the whole is a file name
     assert main(["kas", "plot", "walk_a"]) == 2
 
 
@@ -105,3 +107,15 @@ def test_path_script(tmp_path):
                  "--timing-out", str(t)]) == 0
     assert files.load_path(p).points.tolist() == [[0, 0], [1, 1], [2, 0]]
     assert files.load_timing(t).values.tolist() == [0.5]
+
+
+def test_superimpose_file_names_with_at_signs(tmp_path, capsys):
+    src = tmp_path / "take@2.kas"
+    assert main(["kas", "inbetween", "sun_a", "sun_b", "--frames", "5", "--out",
+                 str(src)]) == 0
+    out = tmp_path / "o.kas"
+    assert main(["kas", "superimpose", str(src), f"{src}@3", "--out", str(out)]) == 0
+    seq = files.load_sequence(out)
+    assert len(seq) == 8
+    one = files.load_sequence(src)
+    assert seq.frames[0].n_points == 2 * one.frames[0].n_points  # second held at its first

@@ -152,3 +152,28 @@ def test_unknown_menu_item_is_a_message_not_a_crash():
     ed = Editor()
     ed.feed(MenuPick("launch"))
     assert "no menu item" in ed.message
+
+
+def test_failed_save_is_shown_and_quit_warns_while_dirty():
+    from apps.kas.editor import Editor
+    from apps.kas.events import Key, Pointer
+
+    ed = Editor()
+    ed.run([Pointer(0, 0, True), Pointer(0, 0, False), Pointer(1, 1, True),
+            Pointer(1, 1, False)])
+
+    def full(_d):  # noqa: ANN001, ANN202
+        raise OSError(28, "No space left on device")
+
+    ed.on_save = full
+    ed.feed(Key("f2"))
+    assert "NOT saved" in ed.message and "No space" in ed.message
+    assert ed.dirty and ed.drawing.n_points == 2
+    assert not ed.request_quit() and "unsaved" in ed.message
+    assert ed.request_quit()          # closing again straight away discards
+    ed.feed(Pointer(2, 2, True))
+    assert not ed.request_quit()      # an event in between: warn again
+    saved = []
+    ed.on_save = saved.append
+    ed.feed(Key("f2"))
+    assert saved and not ed.dirty and ed.request_quit()

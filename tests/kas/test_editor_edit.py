@@ -167,7 +167,7 @@ def test_move_back_and_again():
     assert np.allclose(ed.drawing.chains[2].points, ORIGINAL[2])
 
 
-def test_move_back_unwinds_a_composite_and_replays_it():
+def test_move_back_unwinds_a_composite():
     ed = start()
     select(ed, 0, 2)
     # enlarge x2 about (0,0), then move by (0,1), then reflect in the x axis
@@ -178,11 +178,59 @@ def test_move_back_unwinds_a_composite_and_replays_it():
     ed.run(keys("b", "b", "b"))
     assert np.allclose(ed.drawing.chains[0].points, ORIGINAL[0])
     ed.run(keys("b"))
-    assert "every remembered" in ed.message
-    # the thesis's "enlarge, again, rotate, again": remembered parameters, other points
-    select(ed, 3, 4)
-    ed.run(keys("z") + tap(0, 0) + keys("return", "a"))  # enlarge x2 twice
-    assert pts(ed, 1) == [[0, 4], [4, 4]]
+    assert "every transformation applied" in ed.message
+    assert np.allclose(ed.drawing.chains[0].points, ORIGINAL[0])
+
+
+def test_move_back_unwinds_repeats_too():
+    # "enlarge, again, rotate, again": four transformations applied, so four move backs
+    # undo them, rotations first - never the inverse of something not applied.
+    ed = start()
+    select(ed, 0, 2)
+    ed.run(keys("z") + tap(1, 0) + typed("2") + keys("a"))
+    ed.run(keys("t") + tap(0, 0) + typed("90") + keys("a"))
+    ed.run(keys("b", "b"))  # both rotations undone: back to the twice-enlarged chain
+    assert np.allclose(ed.drawing.chains[0].points, [[-3, 0], [1, 0], [5, 0]])
+    ed.run(keys("b", "b"))
+    assert np.allclose(ed.drawing.chains[0].points, ORIGINAL[0])
+    ed.run(keys("b"))
+    assert np.allclose(ed.drawing.chains[0].points, ORIGINAL[0])
+
+
+def test_composite_replayed_elsewhere_with_the_remembered_parameters():
+    from apps.kas import editor_commands as ops
+
+    ed = start()
+    select(ed, 0, 2)
+    ed.run(keys("z") + tap(1, 0) + typed("2") + keys("a"))
+    ed.run(keys("t") + tap(0, 3) + typed("30") + keys("a"))
+    ed.run(keys("m") + tap(0, 0) + tap(0.5, -0.25))
+    # now on the third chain: Return at every prompt takes the remembered origin, factor,
+    # angle and (from a new starting touch) the same move vector
+    select(ed, 5, 7)
+    ed.run(keys("z", "return", "return", "a"))
+    ed.run(keys("t", "return", "return", "a"))
+    ed.run(keys("m") + tap(1, 1) + keys("return"))
+    m = (ops.translation(0.5, -0.25) @ ops.rotation(30, (0, 3)) @ ops.rotation(30, (0, 3))
+         @ ops.scaling(2, 2, (1, 0)) @ ops.scaling(2, 2, (1, 0)))
+    want = ops.apply(m, np.array(ORIGINAL[2], float))
+    assert np.allclose(ed.drawing.chains[2].points, want)
+    assert np.allclose(ed.drawing.chains[0].points, ops.apply(m, np.array(ORIGINAL[0], float)))
+    assert np.allclose(ed.drawing.chains[1].points, ORIGINAL[1])
+
+
+def test_return_at_a_point_prompt_without_memory_waits_for_a_touch():
+    ed = start()
+    select(ed, 0, 2)
+    ed.run(keys("f", "return"))
+    assert ed.pending is not None and "touch a point" in ed.message
+    ed.run(tap(0, 0) + tap(1, 0))
+    assert np.allclose(ed.drawing.chains[0].points, ORIGINAL[0])  # mirror on the chain
+    select(ed, 5, 7)
+    ed.run(keys("f"))
+    assert "as last time" in ed.message
+    ed.run(keys("return", "return"))
+    assert np.allclose(ed.drawing.chains[2].points, [[0, -2], [1, -2], [2, -2]])
 
 
 def test_move_again_repeats_move_chain_scope():

@@ -38,7 +38,7 @@ def test_sequence_round_trip(frames, fps):
 
 @settings(max_examples=40, deadline=None)
 @given(st.lists(st.tuples(coord, coord), min_size=2, max_size=20),
-       st.lists(st.floats(-0.5, 1.5), max_size=20))
+       st.lists(st.floats(0, 1), max_size=20).map(sorted))
 def test_path_and_timing_round_trip(path, ticks):
     p = files.parse_path(files.path_text(SamplePath(path)))
     assert np.array_equal(p.points, np.array(path))
@@ -94,6 +94,27 @@ def test_bad_keyframes(text, line, msg):
     with pytest.raises(KasFileError, match=msg) as err:
         files.parse_keyframe(text, "k.kas")
     assert err.value.line == line
+
+
+@pytest.mark.parametrize("ticks, msg", [
+    ("0.75\n0.25\n0.5\n", "tick 2 \\(0.25\\) comes before tick 1"),   # the reviewer's file
+    ("0.2\n1.5\n", "tick 2 \\(1.5\\) is not a fraction"),
+    ("-0.1\n0.5\n", "tick 1 \\(-0.1\\) is not a fraction"),
+])
+def test_bad_ticks_refused(ticks, msg):
+    text = f"KAS timing 1\nkind ticks\nname hand ticks\nsamples 3\n{ticks}end\n"
+    text = text.replace("samples 3", f"samples {ticks.count(chr(10))}")
+    with pytest.raises(KasFileError, match=msg) as err:
+        files.parse_timing(text, "t.kas")
+    assert "t.kas" in str(err.value)
+    with pytest.raises(ValueError, match="tick"):
+        from apps.kas.timing import fractions
+        fractions(Timing("ticks", [float(x) for x in ticks.split()]), None)
+
+
+def test_equal_ticks_hold_a_frame():
+    t = files.parse_timing("KAS timing 1\nkind ticks\nsamples 2\n0.5\n0.5\nend\n")
+    assert t.values.tolist() == [0.5, 0.5]
 
 
 def test_bad_timing_curve():

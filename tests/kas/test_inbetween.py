@@ -59,18 +59,55 @@ def test_linear_without_path_and_keyframes_exact():
 
 def test_path_stretched_and_translated_to_each_point_pair():
     # Path: an arch from (0,0) to (2,0) via (1,1).  A point going (10,0)->(14,0) follows it
-    # stretched x2 in x; its y excursion is kept (the chord has no y extent).
+    # scaled x2 as a whole (shape kept: the arch's height doubles too) and translated.
     path = SamplePath([(0, 0), (1, 1), (2, 0)])
     pos = pathfit.fit(np.array([[10.0, 0]]), np.array([[14.0, 0]]), np.array([0, 0.5, 1]),
                       path)
-    assert pos[:, 0].tolist() == [[10, 0], [12, 1], [14, 0]]
+    assert np.allclose(pos[:, 0], [[10, 0], [12, 2], [14, 0]])
 
 
 def test_path_reflected_when_points_move_the_other_way():
-    path = SamplePath([(0, 0), (1, 2), (3, 1)])        # chord (3, 1); halfway at (1, 2)
-    a, b = np.array([[0.0, 0.0]]), np.array([[-6.0, -1.0]])  # chord (-6, -1): sx=-2, sy=-1
-    pos = pathfit.fit(a, b, np.array([0.0, 0.5, 1.0]), path)
-    assert np.allclose(pos[:, 0], [[0, 0], [-2, -2], [-6, -1]])
+    # An upward arch drawn left to right stays an upward arch for a point moving right to
+    # left: mirrored, not turned upside down.
+    path = SamplePath([(0, 0), (1, 1), (2, 0)])
+    pos = pathfit.fit(np.array([[0.0, 0.0]]), np.array([[-4.0, 0.0]]),
+                      np.array([0.0, 0.5, 1.0]), path)
+    assert np.allclose(pos[:, 0], [[0, 0], [-2, 2], [-4, 0]])
+    rot = pathfit.fit(np.array([[0.0, 0.0]]), np.array([[-4.0, 0.0]]),
+                      np.array([0.0, 0.5, 1.0]), path, "similarity")
+    assert np.allclose(rot[:, 0], [[0, 0], [-2, -2], [-4, 0]])  # rotation alone: upside down
+
+
+def test_path_fit_keeps_the_shape_in_the_chords_frame():
+    # Rotated, scaled uniformly: every distance in the fitted path is |delta|/|chord| times
+    # the drawn one, and the endpoints are hit exactly.
+    path = SamplePath([(0, 0), (1, 2), (3, 1)])
+    a, b = np.array([[1.0, 1.0], [0.0, 0.0]]), np.array([[1.0, 6.0], [-6.0, -1.0]])
+    d = np.linspace(0, 1, 11)
+    pos = pathfit.fit(a, b, d, path)
+    drawn = pathfit.point_at(path, d)
+    k = np.hypot(*(b - a).T) / np.hypot(3, 1)
+    for m in range(2):
+        got = np.hypot(*np.diff(pos[:, m], axis=0).T)
+        assert np.allclose(got, k[m] * np.hypot(*np.diff(drawn, axis=0).T))
+    assert np.allclose(pos[0], a) and np.allclose(pos[-1], b)
+
+
+def test_path_with_almost_level_ends_stays_bounded():
+    # The reviewer's hand-drawn arch: ends 0.03" apart in y.  Per-axis stretching sent the
+    # in-betweens of keyframes near +-2" to y = 86..263; fitted in the chord frame they stay
+    # within the arch's height scaled by |delta| / |chord|.
+    path = SamplePath([(-4, -1), (-3, 0.5), (-2, 1.4), (0, 2), (2, 1.5), (3, 0.4),
+                       (4, -0.97)])
+    rng = np.random.default_rng(1)
+    a = rng.uniform(-2, 2, size=(50, 2))
+    b = a + rng.uniform(-1.5, 1.5, size=(50, 2))
+    pos = pathfit.fit(a, b, np.linspace(0, 1, 9), path)
+    k = np.hypot(*(b - a).T) / np.hypot(8, 0.03)
+    reach = k * 3.1 + np.hypot(*(b - a).T)            # arch height 3" (+ a little) + chord
+    assert np.all(np.hypot(*(pos - a[None]).transpose(2, 0, 1)) <= reach[None] + 1e-9)
+    assert np.abs(pos).max() < 5
+    assert np.allclose(pos[0], a) and np.allclose(pos[-1], b)
 
 
 def test_path_fit_two_points_differently():
@@ -80,9 +117,19 @@ def test_path_fit_two_points_differently():
     b = np.array([[2.0, 2.0], [1.0, 4.0]])
     pos = pathfit.fit(a, b, np.array([0.0, 0.5, 1.0]), path)
     mid = pathfit.point_at(path, np.array([0.5]))[0]
-    assert np.allclose(pos[1, 0], a[0] + mid * [2, 2])
-    assert np.allclose(pos[1, 1], a[1] + mid * [0, 4])
+    zm = complex(*mid)
+    for m in range(2):
+        z = complex(*a[m]) + zm * complex(*(b[m] - a[m])) / complex(1, 1)
+        assert np.allclose(pos[1, m], [z.real, z.imag])
     assert np.allclose(pos[-1], b)
+
+
+def test_closed_path_keeps_its_excursion():
+    path = SamplePath([(0, 0), (1, 1), (2, 0), (0, 0)])
+    pos = pathfit.fit(np.array([[5.0, 5.0]]), np.array([[6.0, 5.0]]), np.array([0, 0.5, 1]),
+                      path)
+    mid = pathfit.point_at(path, np.array([0.5]))[0]
+    assert np.allclose(pos[:, 0], [[5, 5], [5 + mid[0] + 0.5, 5 + mid[1]], [6, 5]])
 
 
 def test_similarity_fit_rotates_the_path():
@@ -173,6 +220,25 @@ def test_spline_segment_exact_at_ends_and_formulae():
     assert np.allclose(ov, cr)  # equal chord lengths: Overhauser equals Catmull-Rom
     tight = splines.segment(k, 1, u, "kochanek-bartels", tension=1.0)
     assert np.allclose(tight[1, 0], [1.5, 0.5])  # tension 1: zero tangents, straight mid
+
+
+def test_kochanek_bartels_continuity_signs():
+    k = np.array([[[0.0, 0]], [[1.0, 1]], [[3.0, 0]], [[4.0, 2]]])
+    u = np.linspace(0, 1, 7)
+    # c = -1: each segment's tangents are its own chord, i.e. a straight line at even speed
+    kb = splines.segment(k, 1, u, "kochanek-bartels", continuity=-1.0)
+    assert np.allclose(kb, splines.segment(k, 1, u, "linear"))
+    # c = +1: the segment leaves p1 along the incoming chord (p1 - p0) and reaches p2
+    # along the outgoing one (p3 - p2); central differences give the end tangents
+    h = 1e-6
+    e = np.array([0.0, h, 1 - h, 1.0])
+    kb = splines.segment(k, 1, e, "kochanek-bartels", continuity=1.0)
+    assert np.allclose((kb[1] - kb[0]) / h, k[1] - k[0], atol=1e-4)
+    assert np.allclose((kb[3] - kb[2]) / h, k[3] - k[2], atol=1e-4)
+    # bias +1 with c = 0: both tangents lean on the chord before each key
+    kb = splines.segment(k, 1, e, "kochanek-bartels", bias=1.0)
+    assert np.allclose((kb[1] - kb[0]) / h, k[1] - k[0], atol=1e-4)
+    assert np.allclose((kb[3] - kb[2]) / h, k[2] - k[1], atol=1e-4)
 
 
 def test_overhauser_differs_with_uneven_spacing():

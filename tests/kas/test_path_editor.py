@@ -34,6 +34,16 @@ def test_draw_path_then_ticks():
     assert roles == {"first", "second", "path", "tick"}
 
 
+def test_ticks_touched_out_of_order_follow_the_path():
+    # the reviewer's script: ticks touched at 3/4, 1/4, 1/2 of the path
+    pe = editor()
+    pe.run([Pointer(0, 0, True), Pointer(4, 0, True), Pointer(4, 0, False)])
+    pe.run(keys("t") + tap(3, 0) + tap(1, 0) + tap(2, 0))
+    assert pe.timing().values.tolist() == [0.25, 0.5, 0.75]
+    seq = inbetween(pe.first, pe.second, path=pe.sample_path(), timing=pe.timing())
+    assert [f.chains[0].points[0, 0] for f in seq.frames] == [0, 1, 2, 3, 4]
+
+
 def test_path_needs_one_stroke_and_can_be_cleared():
     pe = editor()
     pe.run(keys("t"))

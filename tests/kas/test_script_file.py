@@ -24,4 +24,4 @@ def test_script_session():
     assert np.allclose(head.points.mean(axis=0)[1], 0.5, atol=0.05)
     assert np.allclose(np.hypot(*(head.points - (1, 0.5)).T), 0.5)
     assert head.colours.tolist() == [5] * 37
-    assert ed.mode == "edit" and ed.recent == ["move"]
+    assert ed.mode == "edit" and [t.kind for t in ed.applied] == ["move", "move"]

@@ -58,6 +58,14 @@ def test_view_headless_counts_and_frames(tmp_path, capsys) -> None:  # noqa: ANN
     n_slow = int(slow.split(": ")[1].split()[0])
     n_fast = int(fast.split(": ")[1].split()[0])
     assert n_slow < n_fast
+    # the characters reported are those really sent: dropped frames never go down the line
+    from apps.kas.front.viewer import LineTest
+
+    test = LineTest(files.load_sequence(seq))
+    rep = test.run("realtime", 9600)
+    sizes = test.sizes()
+    assert rep.frame_chars == sum(sizes[j] for j in rep.shown_frames) < sum(sizes)
+    assert f"{rep.frame_chars} characters sent for the frames shown" in slow
     assert len(list((tmp_path / "f").glob("frame_*.png"))) >= 25
     assert main(["kas", "view", str(seq), "--headless", "--every", "--swap", "mask"]) == 0
     assert "28 shown, 0 dropped" in capsys.readouterr().out
@@ -82,3 +90,95 @@ def test_edit_in_a_window_dummy_driver(tmp_path, capsys) -> None:  # noqa: ANN00
     img = np.asarray(Image.open(shot).convert("RGB"))
     assert img.shape == (512, 768, 3) and img.any()
     assert main(["kas", "view", "walk_ticks", "--screenshot", str(shot)]) == 2  # not a sequence
+
+
+def test_failed_f2_save_keeps_editing_and_says_not_saved(tmp_path, capsys) -> None:  # noqa: ANN001
+    # F2 into a directory that does not exist: an OSError on the message line, the drawing
+    # stays, the script goes on drawing, and the summary does not claim "saved".
+    script = tmp_path / "s.txt"
+    script.write_text("down 0 0\nup 0 0\ndown 1 1\nup 1 1\nkey f2\ndown 2 0\nup 2 0\n"
+                      "key space\n")
+    target = tmp_path / "missing" / "k.kas"
+    assert main(["kas", "edit", str(target), "--script", str(script), "--headless"]) == 0
+    out = capsys.readouterr().out
+    assert "1 chains, 3 points" in out and "NOT saved" in out
+    assert not target.exists()
+
+
+def test_summary_says_when_later_edits_are_unsaved(tmp_path, capsys) -> None:  # noqa: ANN001
+    script = tmp_path / "s.txt"
+    script.write_text("down 0 0\nup 0 0\ndown 1 1\nup 1 1\nkey f2\ndown 2 0\nup 2 0\n")
+    target = tmp_path / "k.kas"
+    assert main(["kas", "edit", str(target), "--script", str(script), "--headless"]) == 0
+    out = capsys.readouterr().out
+    assert "last edits are NOT saved" in out
+    assert files.load_keyframe(target).n_points == 2
+
+
+def test_user_library_and_the_previous_pairs_path(tmp_path, capsys, monkeypatch) -> None:  # noqa: ANN001
+    lib = tmp_path / "lib"
+    monkeypatch.setenv("CAMLAB88_KAS_LIBRARY", str(lib))
+    # draw the path for (walk_a, walk_b): kept in the user library under the pair's name
+    assert main(["kas", "path", "walk_a", "walk_b", "--out", str(tmp_path / "p.kas"),
+                 "--script", str(DATA / "path.txt"), "--headless"]) == 0
+    assert "previous pair" not in capsys.readouterr().out
+    kept = lib / "pair_walk_a--walk_b_path.kas"
+    assert files.load_path(kept).points.tolist() == \
+        files.load_path(tmp_path / "p.kas").points.tolist()
+    assert (lib / "pair_walk_a--walk_b_ticks.kas").exists()
+    # the next pair (walk_b, walk_a) shows that path automatically (under a new one)
+    other = tmp_path / "other.txt"
+    other.write_text("move -4 2.5\ndown -4 2.5\ndown 0 3\ndown 4 2.5\nup 4 2.5\n")
+    shot = tmp_path / "next.png"
+    assert main(["kas", "path", "walk_b", "walk_a", "--out", str(tmp_path / "q.kas"),
+                 "--script", str(other), "--headless", "--screenshot", str(shot)]) == 0
+    assert f"showing the previous pair's path {kept}" in capsys.readouterr().out
+    plain = tmp_path / "plain.png"
+    assert main(["kas", "path", "walk_b", "walk_a", "--out", str(tmp_path / "r.kas"),
+                 "--script", str(other), "--headless", "--no-library",
+                 "--screenshot", str(plain)]) == 0
+    # the previous pair's path is on the Sigma's screen only when it was looked up
+    assert (np.asarray(Image.open(shot)) != np.asarray(Image.open(plain))).any()
+    # listing and saving by name; the saved name resolves wherever a file is asked for
+    assert main(["kas", "library", "--save", str(tmp_path / "p.kas"), "my_arc"]) == 0
+    capsys.readouterr()
+    assert main(["kas", "library"]) == 0
+    out = capsys.readouterr().out
+    assert "my_arc" in out and "user" in out and "walk_a" in out and "shipped" in out
+    seq = tmp_path / "s.kas"
+    assert main(["kas", "inbetween", "walk_a", "walk_b", "--path", "my_arc", "--frames", "4",
+                 "--out", str(seq)]) == 0
+    bad = tmp_path / "bad.kas"
+    bad.write_text("KAS path 1\npoints 2\n0 0\nend\n")
+    assert main(["kas", "library", "--save", str(bad), "x"]) == 2
+    assert "bad.kas" in capsys.readouterr().err and not (lib / "x.kas").exists()
+
+
+def test_closing_the_window_with_unsaved_edits_warns_once(tmp_path, capsys, monkeypatch) -> None:  # noqa: ANN001
+    from emulator.host_input import Quit
+    from emulator.window import Window
+
+    polls: list[int] = []
+    quits: list[int] = []
+
+    def poll(self) -> list:  # noqa: ANN001
+        polls.append(1)
+        if len(polls) < 20:  # let the script's drawing arrive first
+            return []
+        quits.append(len(polls))
+        return [Quit()]
+
+    monkeypatch.setattr(Window, "poll", poll)
+    script = tmp_path / "s.txt"
+    script.write_text("down 0 0\nup 0 0\ndown 1 1\nup 1 1\n")
+    target = tmp_path / "k.kas"
+    assert main(["kas", "edit", str(target), "--script", str(script)]) == 0
+    assert len(quits) == 2  # the first close only warned; the second one closed
+    out = capsys.readouterr().out
+    assert "1 chains, 2 points" in out and "NOT saved" in out and not target.exists()
+    # nothing drawn: the first close closes
+    polls.clear()
+    quits.clear()
+    script.write_text("move 0 0\n")
+    assert main(["kas", "edit", str(target), "--script", str(script)]) == 0
+    assert len(quits) == 1

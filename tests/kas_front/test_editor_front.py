@@ -11,7 +11,7 @@ from apps.kas.files import KasFileError
 from apps.kas.front import EditorFront, Session, parse_timed_script
 from apps.kas.front.keyboard import KEY_BYTES, bytes_to_keys, key_to_bytes
 from emulator.sigma import Terminal
-from tests.kas_front.helpers import GOLDEN, model_only, run_editor
+from tests.kas_front.helpers import DATA, GOLDEN, model_only, run_editor
 from tests.support.golden import assert_matches_golden
 
 
@@ -112,3 +112,30 @@ def test_script_times() -> None:
     ev = parse_timed_script("move 0 0\n+0.5 key a\n2 type bc\nmenu pen2\n")
     assert [float(e.t) for e in ev] == [0.0, 0.5, 2.0, 2.02, 2.04, 2.06]
     assert [e.key for e in ev if e.kind == "key"] == ["a", "b", "c"]
+
+
+# Points of edit_all.txt (line numbers) where the Sigma's screen is checked, with what must be
+# true of its colour indices there (10 = old positions, faint purple; 11 = unmoved, dim).
+CHECKPOINTS = [
+    (61, "drawn", {10: False, 11: False}),        # drawing mode, everything drawn
+    (78, "moved", {10: True, 11: True}),          # background on; move, back, again
+    (111, "stretched", {10: True, 11: True}),     # rotate, reflect x2, enlarge+back, stretch+back
+    (135, "deregularised", {10: True}),           # move chain/section, colours, x twice
+    (168, "background_off", {10: False, 11: False}),  # collapse, insert, delete; g off
+]
+
+
+@pytest.mark.parametrize("line, name, has", CHECKPOINTS)
+def test_screen_at_points_of_the_edit_session(line: int, name: str, has: dict) -> None:
+    text = "\n".join((DATA / "edit_all.txt").read_text(encoding="utf-8").splitlines()[:line])
+    front = EditorFront(Editor(seed=1))
+    term = Terminal("t5684")
+    Session(front, term).run_script(parse_timed_script(text + "\n", "edit_all.txt"))
+    idx = term.indices()
+    for index, present in has.items():
+        assert bool((idx == index).any()) == present, (name, index)
+    # the incrementally updated screen is what a full redraw of the model gives
+    fresh = Terminal("t5684")
+    fresh.feed(EditorFront(front.editor).start())
+    assert np.array_equal(fresh.indices(), idx)
+    assert_matches_golden(term.frame(), GOLDEN / f"edit_all_{line:03d}_{name}.png")

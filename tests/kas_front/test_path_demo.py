@@ -40,6 +40,16 @@ def test_path_front_draws_path_and_ticks_over_the_line() -> None:
     assert len(saved) == 1 and len(saved[0][1].values) == 4
 
 
+def test_path_front_failed_save_keeps_the_path() -> None:
+    def full(_p, _t):  # noqa: ANN001, ANN202
+        raise OSError(28, "No space left on device")
+
+    front = PathFront(_model(), on_save=full)
+    front.model.run([Pointer(0, 0, True), Pointer(1, 1, True), Pointer(1, 1, False)])
+    front.on_key("f2")
+    assert "NOT saved" in front.model.message and len(front.model.path) == 2
+
+
 def test_demo_session_plays_on_a_terminal() -> None:
     term = Terminal("t5684")
     demo = demo_session(term)

@@ -28,6 +28,9 @@ def test_realtime_counts_equal_the_schedule(seq, how: str) -> None:  # noqa: ANN
         assert rep.dropped == want.dropped
         assert len(rep.shown) + len(rep.dropped) == len(seq)
         # the bytes really sent per shown frame are the sizes the schedule was given
+        sent = [len(d) for _, d in rep.sent[1:]]
+        assert [a + b for a, b in zip(sent[0::2], sent[1::2], strict=True)] == \
+            [sizes[j] for j in rep.shown_frames]
         shown[baud] = len(rep.shown)
     assert shown[9600] < shown[19200] < shown[38400]
     assert shown[9600] < len(seq)  # 9600 baud cannot carry this sequence in real time
@@ -56,6 +59,7 @@ def test_double_buffer_never_shows_a_half_drawn_frame(seq, how: str) -> None:  #
     rgb = np.array(test.plan.rgb, dtype=np.uint8) * 17
     seen: list[np.ndarray] = []
     hidden_partial = 0
+    mixed = 0
 
     def is_complete(img: np.ndarray) -> bool:
         return any(np.array_equal(img, r) for r in refs) or np.array_equal(img, blank)
@@ -86,7 +90,14 @@ def test_double_buffer_never_shows_a_half_drawn_frame(seq, how: str) -> None:  #
         a = refs[k] if k >= 0 else blank
         b = refs[k + 1]
         assert np.all((f == a) | (f == b), axis=-1).all(), "a part-drawn buffer was visible"
+        # and while the swap's orders arrive one whole frame stays up: never a gap
+        on = f.any(axis=-1)
+        assert (on >= a.any(axis=-1)).all() or (on >= b.any(axis=-1)).all(), \
+            "the swap showed neither the old frame nor the new one whole"
+        mixed += 1
     assert np.array_equal(seen[-1], refs[-1])
+    if how == "lut":
+        assert mixed > 5  # periods caught mid-swap were really checked
 
 
 def test_four_colours_keep_the_most_used_pens(seq) -> None:  # noqa: ANN001

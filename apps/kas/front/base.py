@@ -55,6 +55,11 @@ class Front:
     def on_key(self, key: str) -> None:
         raise NotImplementedError
 
+    def may_close(self) -> bool:
+        """The window's close button: True to close now (the editor refuses once while it
+        holds unsaved edits)."""
+        return True
+
     # -- driving ---------------------------------------------------------------------------
     def start(self) -> bytes:
         out = setup_bytes(self.enc, self.lut) + self.painter.full(self.prims())

@@ -33,3 +33,6 @@ class EditorFront(Front):
 
     def on_key(self, key: str) -> None:
         self.editor.feed(Key(key))
+
+    def may_close(self) -> bool:
+        return self.editor.request_quit()

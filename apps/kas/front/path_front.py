@@ -68,7 +68,11 @@ class PathFront(Front):
             if path is None:
                 self.model.message = "draw the path first"
             elif self.on_save is not None:
-                self.on_save(path, self.model.timing())
-                self.model.message = "saved"
+                try:
+                    self.on_save(path, self.model.timing())
+                except OSError as exc:  # keep the path on the screen: it can be saved again
+                    self.model.message = f"NOT saved: {exc.strerror or exc}"
+                else:
+                    self.model.message = "saved"
             return
         self.model.feed(Key(key))
