@@ -7,7 +7,6 @@ the emulator package (or running headless) never loads pygame.
 from __future__ import annotations
 
 import os
-import tempfile
 import time
 from pathlib import Path
 from typing import Any
@@ -100,22 +99,12 @@ class Window:
         """Save the window surface as a PNG, atomically."""
         from PIL import Image
 
+        from protocols.atomicfile import atomic_output
+
         target = Path(path)
         target.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".png", dir=target.parent)
-        mask = os.umask(0)
-        os.umask(mask)
-        os.chmod(tmp, 0o666 & ~mask)  # mkstemp makes private files; a screenshot is not
-        try:
-            with os.fdopen(fd, "wb") as fh:
-                Image.fromarray(self.pixels()).save(fh, format="PNG")
-                fh.flush()
-                os.fsync(fh.fileno())
-            os.replace(tmp, target)
-        except BaseException:
-            if os.path.exists(tmp):
-                os.unlink(tmp)
-            raise
+        with atomic_output(target) as fh:
+            Image.fromarray(self.pixels()).save(fh, format="PNG")
         return target
 
     def _device_xy(self, pos: tuple[int, int]) -> tuple[int, int]:

@@ -12,15 +12,22 @@ from pathlib import Path
 import numpy as np
 
 from apps.kas.files import atomic_write
-from apps.kas.model import AnimSequence
+from apps.kas.model import AnimSequence, Drawing
 from apps.kas.raster import render
 
 Progress = Callable[[int, int], None]
 
 
 def export(seq: AnimSequence, out: str | os.PathLike[str], width: int = 768,
-           background: str = "black", progress: Progress | None = None) -> Path:
-    """Write ``out`` (.gif, .mp4, or .png = one PNG per frame named out_NNNN.png)."""
+           background: str = "black", progress: Progress | None = None,
+           render_frame: Callable[[Drawing], np.ndarray] | None = None) -> Path:
+    """Write ``out`` (.gif, .mp4, or .png = one PNG per frame named out_NNNN.png).
+
+    ``render_frame`` turns one frame into an (h, w, 3) picture; by default the rasteriser
+    here, while the command line passes one that draws on the emulated Sigma."""
+    if render_frame is None:
+        def render_frame(f: Drawing) -> np.ndarray:
+            return render(f, width, background)
     import imageio.v3 as iio
 
     out = Path(out)
@@ -33,7 +40,7 @@ def export(seq: AnimSequence, out: str | os.PathLike[str], width: int = 768,
 
     def frames():
         for i, f in enumerate(seq.frames):
-            img = render(f, width, background)
+            img = render_frame(f)
             if progress:
                 progress(i + 1, n)
             yield img

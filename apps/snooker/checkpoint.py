@@ -16,7 +16,6 @@ moved is an empty line.
 from __future__ import annotations
 
 import os
-import tempfile
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -24,6 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from apps.snooker.table import FOOT_M, N_BALLS
+from protocols.atomicfile import write_atomic
 
 UNITS_PER_FOOT = 4096
 UNITS_PER_M = UNITS_PER_FOOT / FOOT_M
@@ -82,21 +82,7 @@ class Checkpoint:
 
 def atomic_write_text(path: str | os.PathLike[str], text: str) -> None:
     """Write to a temporary file in the same directory, fsync, then rename over `path`."""
-    target = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", dir=target.parent or ".")
-    try:
-        with os.fdopen(fd, "w", encoding="ascii", newline="\n") as f:
-            f.write(text)
-            f.flush()
-            os.fsync(f.fileno())
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes it private; files are normally shared
-        os.replace(tmp, target)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
+    write_atomic(path, text, encoding="ascii")
 
 
 def _int(path: str, line: int, token: str, what: str) -> int:

@@ -253,24 +253,15 @@ def _headless(acts: list[Act], out: Path) -> int:
     return 0
 
 def _write_gif(frames: list, path: Path) -> None:
-    import tempfile
-
     from PIL import Image
+
+    from protocols.atomicfile import atomic_output
 
     images = [Image.fromarray(f).convert("P", palette=Image.Palette.ADAPTIVE, colors=64)
               for f in frames]
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            images[0].save(fh, format="GIF", save_all=True, append_images=images[1:],
-                           duration=int(1000 * GIF_EVERY / FPS), loop=0)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
+    with atomic_output(path) as fh:
+        images[0].save(fh, format="GIF", save_all=True, append_images=images[1:],
+                       duration=int(1000 * GIF_EVERY / FPS), loop=0)
 
 
 def _windowed(acts: list[Act], args: argparse.Namespace) -> int:

@@ -540,53 +540,16 @@ def _view(args: argparse.Namespace) -> int:
 
 def _export_sigma(seq, out: str, background: str, progress) -> Path:  # noqa: ANN001
     """Each frame drawn on a fresh emulated T5684 (16 colours, the terminal's own vectors)."""
-    import os
-
-    import imageio.v3 as iio
-    import numpy as np
-
-    from apps.kas.files import atomic_write
+    from apps.kas.export import export
     from apps.kas.front.viewer import still_bytes
     from emulator.sigma import Terminal
 
-    out_p = Path(out)
-    ext = out_p.suffix.lower()
-    if ext not in (".gif", ".mp4", ".png"):
-        raise ValueError(f"export to .gif, .mp4 or .png, not {out_p.suffix!r}")
-    if not seq.frames:
-        raise ValueError("the sequence has no frames")
+    def on_sigma(frame):  # noqa: ANN001, ANN202
+        term = Terminal("t5684")
+        term.feed(still_bytes(frame, background))
+        return term.frame()
 
-    def frames():
-        for i, f in enumerate(seq.frames):
-            term = Terminal("t5684")
-            term.feed(still_bytes(f, background))
-            if progress:
-                progress(i + 1, len(seq))
-            yield term.frame()
-
-    if ext == ".png":
-        for i, img in enumerate(frames(), start=1):
-            atomic_write(out_p.with_name(f"{out_p.stem}_{i:04d}.png"),
-                         iio.imwrite("<bytes>", img, extension=".png"))
-        return out_p.with_name(f"{out_p.stem}_0001.png")
-    tmp = out_p.with_name(f".{out_p.stem}.partial{ext}")
-    try:
-        if ext == ".gif":
-            iio.imwrite(tmp, np.stack(list(frames())), extension=".gif",
-                        duration=1000 / seq.fps, loop=0)
-        else:
-            import imageio.v2 as iio2
-
-            with iio2.get_writer(tmp, format="FFMPEG", mode="I", fps=seq.fps, codec="libx264",
-                                 macro_block_size=1, ffmpeg_log_level="error",
-                                 output_params=["-pix_fmt", "yuv420p"]) as wr:
-                for img in frames():
-                    wr.append_data(img)
-        os.replace(tmp, out_p)
-    finally:
-        if tmp.exists():
-            tmp.unlink()
-    return out_p
+    return export(seq, out, progress=progress, render_frame=on_sigma)
 
 
 def _schedule(args: argparse.Namespace) -> int:

@@ -9,15 +9,14 @@
 from __future__ import annotations
 
 import argparse
-import os
 import sys
-import tempfile
 import threading
 from fractions import Fraction
 from typing import Any
 
+from protocols.atomicfile import write_atomic
 from protocols.link.line import SerialLine
-from protocols.link.recording import Recorder, RecordingError, public_mode, read_recording
+from protocols.link.recording import Recorder, RecordingError, read_recording
 from protocols.link.settings import LineSettings
 from protocols.link.throttle import Throttle
 
@@ -60,14 +59,11 @@ def write_stream(path: str, out_path: str, direction: str) -> int:
     except RecordingError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 1
-    target = os.path.abspath(out_path)
-    fd, tmp = tempfile.mkstemp(prefix=".stream.", dir=os.path.dirname(target))
-    os.chmod(tmp, public_mode())
-    with os.fdopen(fd, "wb") as fh:
-        fh.write(data)
-        fh.flush()
-        os.fsync(fh.fileno())
-    os.replace(tmp, target)
+    try:
+        write_atomic(out_path, data)
+    except OSError as exc:
+        print(f"error: cannot write {out_path}: {exc.strerror or exc}", file=sys.stderr)
+        return 1
     print(f"{len(data)} bytes written to {out_path}")
     return 0
 

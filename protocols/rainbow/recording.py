@@ -14,12 +14,11 @@ checks that every reply matches the recorded one.
 
 from __future__ import annotations
 
-import os
-import tempfile
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from protocols.atomicfile import write_atomic
 from protocols.rainbow.events import Event, decode_events, encode_event
 from protocols.rainbow.transport import Transport
 
@@ -37,16 +36,7 @@ class Recording:
     def save(self, path: str | Path) -> None:
         path = Path(path)
         text = MAGIC + "\n" + "".join(f"{d} {b.hex()}\n" for d, b in self.entries)
-        fd, tmp = tempfile.mkstemp(dir=path.parent or ".", prefix=path.name, suffix=".tmp")
-        try:
-            with os.fdopen(fd, "w") as f:
-                f.write(text)
-                f.flush()
-                os.fsync(f.fileno())
-            os.replace(tmp, path)
-        except BaseException:
-            Path(tmp).unlink(missing_ok=True)
-            raise
+        write_atomic(path, text)
 
     @classmethod
     def load(cls, path: str | Path) -> Recording:

@@ -8,10 +8,10 @@ from __future__ import annotations
 
 import json
 import os
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
+from protocols.atomicfile import write_atomic
 from protocols.tablets.events import TabletEvent, TabletModel
 
 FILE_NAME = "calibration.json"
@@ -92,17 +92,7 @@ def save_calibration(cal: Calibration, directory: Path | None = None) -> Path:
     path = folder / FILE_NAME
     data = _read_all(path)
     data[cal.device] = cal.to_json()
-    fd, tmp = tempfile.mkstemp(prefix=".calibration-", dir=folder)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            json.dump(data, fh, indent=2, sort_keys=True)
-            fh.write("\n")
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    write_atomic(path, json.dumps(data, indent=2, sort_keys=True) + "\n")
     return path
 
 
