@@ -56,6 +56,30 @@ class NumpyLife:
         return int(self.a.sum())
 
 
+class FastNumpyLife(NumpyLife):
+    """A faster hand-written numpy Life: the 3x3 box sum is separable, so sum each row's
+    three neighbours, then three of those row sums down the columns (4 additions instead of
+    8); the box includes the cell itself, so birth is 3 and survival is 3 or 4."""
+
+    def __init__(self, grid: np.ndarray) -> None:
+        super().__init__(grid)
+        h, w = grid.shape
+        self.r = np.zeros((h + 2, w), np.uint8)
+        self.m = np.zeros((h, w), bool)
+
+    def step(self) -> None:
+        a, r, n, m = self.a, self.r, self.n, self.m
+        np.add(a[:, :-2], a[:, 1:-1], out=r)
+        r += a[:, 2:]
+        np.add(r[:-2], r[1:-1], out=n)
+        n += r[2:]
+        c = a[1:-1, 1:-1]
+        np.equal(n, 4, out=m)
+        m &= c.view(bool)
+        m |= n == 3
+        c[:] = m
+
+
 def _engine_run(xs, ys, gens: int, edges: str = "wrap") -> tuple[float, int, Engine]:
     e = Engine(LIFE, edges=edges)
     e.set_cells(xs, ys, 1)
@@ -69,14 +93,18 @@ def _engine_run(xs, ys, gens: int, edges: str = "wrap") -> tuple[float, int, Eng
     return time.perf_counter() - t0, live, e
 
 
-def _numpy_run(grid: np.ndarray, gens: int) -> tuple[float, NumpyLife]:
-    life = NumpyLife(grid)
+def _numpy_run(grid: np.ndarray, gens: int, cls: type[NumpyLife] = NumpyLife,
+               ) -> tuple[float, NumpyLife]:
+    life = cls(grid)
     life.step()
-    life = NumpyLife(grid)
+    life = cls(grid)
     t0 = time.perf_counter()
     for _ in range(gens):
         life.step()
     return time.perf_counter() - t0, life
+
+
+BASELINES = (("numpy Life (8 adds)", NumpyLife), ("fast numpy Life (4 adds)", FastNumpyLife))
 
 
 def methuselah(name: str, gens: int, grid_side: int, numpy_gens: int) -> None:
@@ -88,11 +116,12 @@ def methuselah(name: str, gens: int, grid_side: int, numpy_gens: int) -> None:
     grid = np.zeros((grid_side, grid_side), np.uint8)
     off = grid_side // 2
     grid[p.ys + off - p.ref[1], p.xs + off - p.ref[0]] = 1
-    ndt, life = _numpy_run(grid, numpy_gens)
-    print(f"{name}: numpy Life on {grid_side}x{grid_side} (holds the final extent) "
-          f"{numpy_gens} generations in {ndt:.3f} s = {numpy_gens / ndt:,.0f} gen/s, "
-          f"{grid_side * grid_side * numpy_gens / ndt:,.0f} cell-updates/s")
-    print(f"{name}: engine / numpy speed = {(gens / dt) / (numpy_gens / ndt):.2f}x")
+    for label, cls in BASELINES:
+        ndt, life = _numpy_run(grid, numpy_gens, cls)
+        print(f"{name}: {label} on {grid_side}x{grid_side} (holds the final extent) "
+              f"{numpy_gens} generations in {ndt:.3f} s = {numpy_gens / ndt:,.0f} gen/s, "
+              f"{grid_side * grid_side * numpy_gens / ndt:,.0f} cell-updates/s")
+        print(f"{name}: engine / {label} speed = {(gens / dt) / (numpy_gens / ndt):.2f}x")
 
 
 def dense(side: int = 1024, gens: int = 100, density: float = 0.5, repeats: int = 3) -> None:
@@ -101,34 +130,43 @@ def dense(side: int = 1024, gens: int = 100, density: float = 0.5, repeats: int 
     rng = np.random.default_rng(1987)
     grid = (rng.random((side, side)) < density).astype(np.uint8)
     ys, xs = np.nonzero(grid)
-    best_e = best_n = float("inf")
+    best_e = float("inf")
+    best_n = {label: float("inf") for label, _ in BASELINES}
     for _ in range(repeats):
         dt, live, e = _engine_run(xs + 32768 - side // 2, ys + 32768 - side // 2, gens,
                                   edges="bounded")
-        ndt, _ = _numpy_run(grid, gens)
+        for label, cls in BASELINES:
+            ndt, _ = _numpy_run(grid, gens, cls)
+            best_n[label] = min(best_n[label], ndt)
         if dt < best_e:
             best_e, best_live, kernel = dt, live, e.last_kernel
-        best_n = min(best_n, ndt)
     print(f"dense {side}x{side} d={density}: engine {gens} generations best {best_e:.3f} s = "
           f"{gens / best_e:,.1f} gen/s, {best_live / best_e:,.0f} live-cell updates/s, "
           f"{side * side * gens / best_e:,.0f} grid-equivalent cell-updates/s "
           f"(path: {kernel})")
-    print(f"dense {side}x{side}: numpy Life {gens} generations best {best_n:.3f} s = "
-          f"{gens / best_n:,.1f} gen/s, {side * side * gens / best_n:,.0f} cell-updates/s")
-    print(f"dense {side}x{side}: engine / numpy speed = {best_n / best_e:.2f}x")
+    for label, _ in BASELINES:
+        bn = best_n[label]
+        print(f"dense {side}x{side}: {label} {gens} generations best {bn:.3f} s = "
+              f"{gens / bn:,.1f} gen/s, {side * side * gens / bn:,.0f} cell-updates/s")
+        print(f"dense {side}x{side}: engine / {label} speed = {bn / best_e:.2f}x")
     e2 = Engine(LIFE, edges="bounded")
     e2.set_cells(xs + 1000, ys + 1000, 1)
-    l2 = NumpyLife(np.pad(grid, 64))
+    lives = [cls(np.pad(grid, 64)) for _, cls in BASELINES]
     for _ in range(20):
         e2.step()
-        l2.step()
+        for life in lives:
+            life.step()
+    pops = [life.population for life in lives]
     print(f"dense {side}x{side}: populations after 20 generations engine {e2.population}, "
-          f"numpy {l2.population} (equal: {e2.population == l2.population})")
+          f"numpy {pops} (equal: {all(p == e2.population for p in pops)})")
 
 
 def main() -> None:
+    import numba
+
     print(f"machine: {platform.machine()} {platform.python_implementation()} "
-          f"{platform.python_version()} numpy {np.__version__}")
+          f"{platform.python_version()} numpy {np.__version__} numba {numba.__version__} "
+          "(all single-threaded)")
     methuselah("r_pentomino", 1103, 640, 300)
     methuselah("acorn", 5206, 2560, 100)
     dense()

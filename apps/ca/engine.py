@@ -35,7 +35,9 @@ DENSE_MARGIN = 16
 
 @dataclass(frozen=True)
 class Rect:
-    """Inclusive cell rectangle on the plane."""
+    """Inclusive cell rectangle on the plane, columns x0..x1 and rows y0..y1 going right and
+    down.  x0 > x1 (or y0 > y1) means it crosses the wrapping plane's seam: columns
+    x0..65535 then 0..x1."""
 
     x0: int
     y0: int
@@ -43,24 +45,63 @@ class Rect:
     y1: int
 
     def __post_init__(self) -> None:
-        if not (0 <= self.x0 <= self.x1 < SIDE and 0 <= self.y0 <= self.y1 < SIDE):
+        if not all(0 <= v < SIDE for v in (self.x0, self.y0, self.x1, self.y1)):
             raise ValueError(f"rectangle {self.x0},{self.y0}..{self.x1},{self.y1} is not "
-                             f"inside the {SIDE}x{SIDE} plane with x0<=x1, y0<=y1")
+                             f"inside the {SIDE}x{SIDE} plane")
 
     @classmethod
     def from_corners(cls, xa: int, ya: int, xb: int, yb: int) -> Rect:
+        """The rectangle between two corners, not crossing the seam."""
         return cls(min(xa, xb), min(ya, yb), max(xa, xb), max(ya, yb))
+
+    @classmethod
+    def dragged(cls, xa: int, ya: int, xb: int, yb: int) -> Rect:
+        """The rectangle a user drags between two corners on the wrapping plane: per axis
+        the shorter way round, which is the way the mouse went, since a view never spans
+        half the plane (at most 752 x 32 = 24064 cells); it crosses the seam if need be."""
+        def axis(a: int, b: int) -> tuple[int, int]:
+            lo, hi = min(a, b), max(a, b)
+            return (lo, hi) if hi - lo <= SIDE // 2 else (hi, lo)
+
+        (x0, x1), (y0, y1) = axis(xa % SIDE, xb % SIDE), axis(ya % SIDE, yb % SIDE)
+        return cls(x0, y0, x1, y1)
 
     @property
     def width(self) -> int:
-        return self.x1 - self.x0 + 1
+        return (self.x1 - self.x0) % SIDE + 1
 
     @property
     def height(self) -> int:
-        return self.y1 - self.y0 + 1
+        return (self.y1 - self.y0) % SIDE + 1
+
+    @property
+    def wraps(self) -> bool:
+        return self.x0 > self.x1 or self.y0 > self.y1
+
+    def parts(self) -> list[Rect]:
+        """The rectangle split at the seam into up to four rectangles that do not cross it."""
+        xs = [(self.x0, self.x1)] if self.x0 <= self.x1 else [(self.x0, SIDE - 1), (0, self.x1)]
+        ys = [(self.y0, self.y1)] if self.y0 <= self.y1 else [(self.y0, SIDE - 1), (0, self.y1)]
+        return [Rect(a, c, b, d) for c, d in ys for a, b in xs]
+
+    def contains(self, xs: np.ndarray, ys: np.ndarray) -> np.ndarray:
+        return (((xs - self.x0) % SIDE <= (self.x1 - self.x0) % SIDE)
+                & ((ys - self.y0) % SIDE <= (self.y1 - self.y0) % SIDE))
 
 
 FULL = Rect(0, 0, SIDE - 1, SIDE - 1)
+
+
+def _wrapped_interval(values: np.ndarray) -> tuple[int, int]:
+    """The shortest arc of the 65536-circle holding every value: it starts after the
+    largest gap between neighbouring occupied coordinates (the seam counts as a gap)."""
+    u = np.unique(values)
+    gaps = np.diff(u)
+    wrap_gap = int(u[0]) + SIDE - int(u[-1])
+    if gaps.size == 0 or wrap_gap >= int(gaps.max()):
+        return int(u[0]), int(u[-1])
+    i = int(np.argmax(gaps))
+    return int(u[i + 1]), int(u[i])
 
 
 def _sorted(ys: np.ndarray, xs: np.ndarray, ts: np.ndarray):
@@ -139,6 +180,8 @@ class Engine:
 
     def set_advance_area(self, rect: Rect | None) -> None:
         """Apply rules only inside ``rect``; outside is frozen and invisible to the inside."""
+        if rect is not None and rect.wraps and self.edges == "bounded":
+            raise ValueError("with bounded edges an advance area cannot cross the plane's edge")
         self.advance_area = rect
 
     # -- cells ----------------------------------------------------------------
@@ -193,11 +236,17 @@ class Engine:
         return 0
 
     def _in_rect(self, rect: Rect) -> np.ndarray:
-        return ((self.xs >= rect.x0) & (self.xs <= rect.x1)
-                & (self.ys >= rect.y0) & (self.ys <= rect.y1))
+        return rect.contains(self.xs, self.ys)
 
     def cells_in_rect(self, rect: Rect) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """(x, y, type) of live cells inside ``rect``; rows located by binary search."""
+        """(x, y, type) of live cells inside ``rect`` (which may cross the seam)."""
+        if rect.wraps:
+            found = [self._cells_in_plain_rect(r) for r in rect.parts()]
+            return tuple(np.concatenate(a) for a in zip(*found))  # type: ignore[return-value]
+        return self._cells_in_plain_rect(rect)
+
+    def _cells_in_plain_rect(self, rect: Rect) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Rows located by binary search (the rectangle does not cross the seam)."""
         keys = self.ys * SIDE + self.xs
         lo = int(np.searchsorted(keys, rect.y0 * SIDE + rect.x0))
         hi = int(np.searchsorted(keys, rect.y1 * SIDE + rect.x1, side="right"))
@@ -233,11 +282,17 @@ class Engine:
         return {int(t): int(c) for t, c in zip(types, counts)}
 
     def bbox(self) -> Rect | None:
-        """Smallest rectangle holding every live cell (plane coordinates, no wrap)."""
+        """Smallest rectangle holding every live cell.  On the wrapping plane each axis is
+        the smallest interval round the circle (it crosses the seam, x0 > x1, when that is
+        shorter); with bounded edges plain minimum and maximum."""
         if self.population == 0:
             return None
-        return Rect(int(self.xs.min()), int(self.ys.min()), int(self.xs.max()),
-                    int(self.ys.max()))
+        if self.edges == "bounded":
+            return Rect(int(self.xs.min()), int(self.ys.min()), int(self.xs.max()),
+                        int(self.ys.max()))
+        x0, x1 = _wrapped_interval(self.xs)
+        y0, y1 = _wrapped_interval(self.ys)
+        return Rect(x0, y0, x1, y1)
 
     def stats(self) -> dict:
         box = self.bbox()
@@ -256,6 +311,10 @@ class Engine:
     def _step_once(self) -> None:
         if self.rules is None:
             raise RuntimeError("no rules loaded")
+        area = self.advance_area
+        if area is not None and area.wraps:
+            self._step_across_seam(area)
+            return
         t = compile_rules(self.rules)
         if self._try_dense(t):
             self.generation += 1
@@ -310,6 +369,23 @@ class Engine:
                                  np.concatenate([nt, self.ts[frozen]]))
         self.ys, self.xs, self.ts = ny, nx, nt
         self.generation += 1
+
+    def _step_across_seam(self, area: Rect) -> None:
+        """An advance area crossing the seam (wrapping plane only): the plane is a torus, so
+        move the area's corner to (0, 0), step, and move back.  (Section 8.1's random
+        outcomes hash the shifted positions there: still deterministic.)"""
+        ox, oy = area.x0, area.y0
+        self._shift(-ox, -oy)
+        self.advance_area = Rect(0, 0, area.width - 1, area.height - 1)
+        try:
+            self._step_once()
+        finally:
+            self.advance_area = area
+            self._shift(ox, oy)
+
+    def _shift(self, dx: int, dy: int) -> None:
+        self._ys, self._xs, self._ts = _sorted((self.ys + dy) % SIDE, (self.xs + dx) % SIDE,
+                                               self.ts)
 
     def _hash_scratch(self, sends: int) -> tuple[np.ndarray, np.ndarray]:
         """Hash table scratch space (kept empty between generations), at least twice the

@@ -6,6 +6,9 @@ changes, edits, pattern loads, clears, random population, advance areas) and, wi
 replayed.  A *checkpoint* holds the complete state at one generation; its file name is the
 log name followed by the generation number, as the thesis says.
 
+The log's header (after the magic line) records the run's plane edges and seed, so a
+script replays with the same ones (``edges wrap``, ``seed 0``); logs without them still read.
+
 Events recorded at generation g happened while generation g was displayed, i.e. before the
 step to g + 1.  Replaying to generation N applies every event up to and including N.
 """
@@ -19,7 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from apps.ca.engine import EDGES, Engine, Rect
+from apps.ca.engine import EDGES, SIDE, Engine, Rect
 from apps.ca.patterns import Pattern, format_rle, parse_rle, write_atomic
 from apps.ca.rules import parse_rules
 
@@ -30,6 +33,14 @@ VIEW_EVENTS = ("view", "zoom")
 
 class LogError(ValueError):
     """A log, script or checkpoint file is malformed (names file and line)."""
+
+
+@dataclass(frozen=True)
+class LogSettings:
+    """The run settings a log header records (None: an older log that did not)."""
+
+    edges: str | None = None
+    seed: int | None = None
 
 
 @dataclass(frozen=True)
@@ -112,7 +123,7 @@ def populate(engine: Engine, rect: Rect, density: float, weights: dict[int, floa
     kinds = rng.choice(np.array(forms, np.int64), size=(rect.height, rect.width), p=p / p.sum())
     ys, xs = np.nonzero(alive)
     engine.clear(rect)
-    engine.set_cells(xs + rect.x0, ys + rect.y0, kinds[ys, xs])
+    engine.set_cells((xs + rect.x0) % SIDE, (ys + rect.y0) % SIDE, kinds[ys, xs])
 
 
 def apply_event(engine: Engine, ev: Event) -> None:
@@ -178,8 +189,13 @@ def replay(engine: Engine, events: Iterable[Event], target: int,
 
 # -- log files --------------------------------------------------------------------------------
 
-def format_log(events: Iterable[Event], record_views: bool = True) -> str:
+def format_log(events: Iterable[Event], record_views: bool = True,
+               settings: LogSettings | None = None) -> str:
     out = [LOG_MAGIC]
+    if settings is not None and settings.edges is not None:
+        out.append(f"edges {settings.edges}")
+    if settings is not None and settings.seed is not None:
+        out.append(f"seed {settings.seed}")
     for ev in events:
         if ev.kind in VIEW_EVENTS and not record_views:
             continue
@@ -199,12 +215,44 @@ _ARITY = {"edit": 3, "clear": None, "advance": None, "populate": 7, "view": 2, "
           "load": 5, "erase": 5, "rules": 2}
 
 
-def parse_log(text: str, source: str = "<log>") -> list[Event]:
-    lines = text.splitlines()
+def _parse_header(lines: list[str], source: str) -> tuple[LogSettings, int]:
+    """The magic line and the optional 'edges' and 'seed' lines; returns the settings and
+    the index of the first event line."""
     if not lines or lines[0].strip() != LOG_MAGIC:
         raise LogError(f"{source}:1: expected '{LOG_MAGIC}'")
-    events: list[Event] = []
+    edges: str | None = None
+    seed: int | None = None
     i = 1
+    while i < len(lines):
+        word, _, rest = lines[i].strip().partition(" ")
+        if word == "edges":
+            if rest.strip() not in EDGES:
+                raise LogError(f"{source}:{i + 1}: edges must be wrap or bounded, "
+                               f"found {rest.strip()!r}")
+            edges = rest.strip()
+        elif word == "seed":
+            if not re.fullmatch(r"-?[0-9]+", rest.strip()):
+                raise LogError(f"{source}:{i + 1}: expected 'seed <integer>', found {lines[i]!r}")
+            seed = int(rest)
+        else:
+            break
+        i += 1
+    return LogSettings(edges, seed), i
+
+
+def parse_log_settings(text: str, source: str = "<log>") -> LogSettings:
+    return _parse_header(text.splitlines(), source)[0]
+
+
+def read_log_settings(path: str | os.PathLike) -> LogSettings:
+    with open(path, encoding="utf-8") as f:
+        return parse_log_settings(f.read(), os.fspath(path))
+
+
+def parse_log(text: str, source: str = "<log>") -> list[Event]:
+    lines = text.splitlines()
+    _, i = _parse_header(lines, source)
+    events: list[Event] = []
     while i < len(lines):
         raw = lines[i]
         i += 1
@@ -254,19 +302,32 @@ def read_log(path: str | os.PathLike) -> list[Event]:
 
 
 class LogWriter:
-    """Keeps the session's log on disk, rewritten atomically after every intervention."""
+    """Keeps the session's log on disk, rewritten atomically after every intervention.
 
-    def __init__(self, path: str | os.PathLike, record_views: bool = False) -> None:
+    ``history`` continues a session (section 7.3.1's Script then Log): the replayed events
+    are written first, verbatim, so the new log holds the whole history even when it is
+    the script's own file.  Checkpoints of this log name beyond ``start`` belong to the
+    superseded history: they are renamed ``<name><generation>.superseded`` (not deleted)
+    so that replaying the new log never starts from one."""
+
+    def __init__(self, path: str | os.PathLike, record_views: bool = False,
+                 settings: LogSettings | None = None, history: Iterable[Event] = (),
+                 start: int = 0) -> None:
         self.path = os.fspath(path)
         self.record_views = record_views
-        self.events: list[Event] = []
-        write_atomic(self.path, format_log([]))
+        self.settings = settings
+        self.events: list[Event] = list(history)
+        supersede_checkpoints(self.path, start)
+        self._write()
+
+    def _write(self) -> None:
+        write_atomic(self.path, format_log(self.events, True, self.settings))
 
     def add(self, ev: Event) -> None:
         if ev.kind in VIEW_EVENTS and not self.record_views:
             return
         self.events.append(ev)
-        write_atomic(self.path, format_log(self.events, self.record_views))
+        self._write()
 
 
 # -- checkpoints ------------------------------------------------------------------------------
@@ -343,6 +404,26 @@ def read_checkpoint(path: str | os.PathLike) -> Engine:
         return parse_checkpoint(f.read(), os.fspath(path))
 
 
+def _checkpoints(log_path: str) -> list[tuple[int, str]]:
+    folder = os.path.dirname(os.path.abspath(log_path))
+    base = os.path.basename(log_path)
+    if not os.path.isdir(folder):
+        return []
+    return [(int(name[len(base):]), os.path.join(folder, name)) for name in os.listdir(folder)
+            if name.startswith(base) and name[len(base):].isdigit()]
+
+
+def supersede_checkpoints(log_path: str, after: int) -> list[str]:
+    """Rename the checkpoints of ``log_path`` beyond generation ``after``; returns the new
+    names."""
+    moved = []
+    for g, path in _checkpoints(log_path):
+        if g > after:
+            os.replace(path, path + ".superseded")
+            moved.append(path + ".superseded")
+    return moved
+
+
 def latest_checkpoint(log_path: str, target: int) -> str | None:
     """The checkpoint of ``log_path`` with the highest generation <= ``target``."""
     folder = os.path.dirname(os.path.abspath(log_path))
@@ -354,6 +435,23 @@ def latest_checkpoint(log_path: str, target: int) -> str | None:
             if g <= target and (best is None or g > best[0]):
                 best = (g, os.path.join(folder, name))
     return None if best is None else best[1]
+
+
+def resolve_settings(recorded: LogSettings, edges: str | None, seed: int | None,
+                     ) -> tuple[str, int, list[str]]:
+    """The edges and seed to replay a script with: the ones its log recorded (a replay must
+    repeat the run), else the command line's, else wrap and 0; plus a warning for each
+    command-line value that disagrees with the log."""
+    warnings = []
+    if recorded.edges is not None and edges is not None and edges != recorded.edges:
+        warnings.append(f"the script was recorded with edges {recorded.edges}; replaying "
+                        f"with them, not the command line's {edges}")
+    if recorded.seed is not None and seed is not None and seed != recorded.seed:
+        warnings.append(f"the script was recorded with seed {recorded.seed}; replaying with "
+                        f"it, not the command line's {seed}")
+    final_edges = recorded.edges or edges or "wrap"
+    final_seed = recorded.seed if recorded.seed is not None else (seed or 0)
+    return final_edges, final_seed, warnings
 
 
 def start_from_script(script_path: str, target: int, fresh: Callable[[], Engine],

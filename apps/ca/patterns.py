@@ -47,6 +47,7 @@ class Pattern:
     name: str = ""
     rule: str = ""
     comments: list[str] = field(default_factory=list)
+    author: str = ""  # RLE '#O' lines (one per line of text)
 
     @classmethod
     def from_cells(cls, cells: list[tuple[int, int, int]], **kw) -> Pattern:
@@ -66,7 +67,8 @@ class Pattern:
         keys, idx = np.unique(keys[::-1], return_index=True)  # last duplicate wins
         ts = self.ts[::-1][idx]
         return Pattern(keys % (1 << 32), keys // (1 << 32), ts, (self.ref[0] - x0,
-                       self.ref[1] - y0), self.name, self.rule, list(self.comments))
+                       self.ref[1] - y0), self.name, self.rule, list(self.comments),
+                       self.author)
 
     @property
     def width(self) -> int:
@@ -146,6 +148,7 @@ def write_pattern(path: str | os.PathLike, pattern: Pattern) -> None:
 # CAMLAB88-CA-PATTERN 1
 # name <text>            (optional)
 # rules <text>           (optional: the rule set the pattern was made for)
+# author <text>          (any number: RLE '#O' lines)
 # comment <text>         (any number)
 # ref <x> <y>            (reference point, pattern coordinates)
 # cells <n>
@@ -158,6 +161,7 @@ def format_native(p: Pattern) -> str:
         lines.append(f"name {p.name}")
     if p.rule:
         lines.append(f"rules {p.rule}")
+    lines += [f"author {a}" for a in p.author.splitlines()]
     lines += [f"comment {c}" for c in p.comments]
     lines.append(f"ref {p.ref[0]} {p.ref[1]}")
     lines.append(f"cells {p.xs.size}")
@@ -172,6 +176,7 @@ def parse_native(text: str, source: str = "<pattern>") -> Pattern:
         raise PatternError(source, 1, 1, f"expected '{NATIVE_MAGIC}' on the first line")
     name = rule = ""
     comments: list[str] = []
+    authors: list[str] = []
     ref = (0, 0)
     cells: list[tuple[int, int, int]] = []
     i = 1
@@ -188,13 +193,16 @@ def parse_native(text: str, source: str = "<pattern>") -> Pattern:
             rule = rest
         elif word == "comment":
             comments.append(rest)
+        elif word == "author":
+            authors.append(rest)
         elif word == "ref":
             ref = _ints(rest, 2, source, i, raw, "'ref x y'")  # type: ignore[assignment]
         elif word == "cells":
             (count,) = _ints(rest, 1, source, i, raw, "'cells n'")
             break
         else:
-            raise PatternError(source, i, 1, f"expected name, rules, comment, ref or cells, "
+            raise PatternError(source, i, 1, f"expected name, rules, author, comment, ref or "
+                                             f"cells, "
                                              f"found '{word}'")
     if count is None:
         raise PatternError(source, len(lines), 1, "expected 'cells n' before end of file")
@@ -212,7 +220,8 @@ def parse_native(text: str, source: str = "<pattern>") -> Pattern:
         i += 1
     if i >= len(lines) or lines[i].strip() != "end":
         raise PatternError(source, i + 1, 1, "expected 'end' after the cell lines")
-    p = Pattern.from_cells(cells, ref=ref, name=name, rule=rule, comments=comments)
+    p = Pattern.from_cells(cells, ref=ref, name=name, rule=rule, comments=comments,
+                           author="\n".join(authors))
     if not cells:
         p.ref = ref
     return p
@@ -226,6 +235,26 @@ def _ints(text: str, n: int, source: str, line: int, raw: str, what: str) -> tup
 
 
 # -- RLE -------------------------------------------------------------------------------------
+
+# A library rule set (not a Golly rule) is named in a comment line, which Golly ignores.
+RULES_COMMENT = "#C camlab88 rules: "
+# Library rule sets that are Golly rules: the header gets the Golly rule string.
+GOLLY_NAMES = {"life": "B3/S23"}
+# B/S and S/B notation, Generations (/C n), hexagonal/von Neumann suffixes, and a bounded
+# grid topology (':T100,100').
+_GOLLY_RULE = re.compile(
+    r"(?:[Bb][0-8]*/[Ss][0-8]*(?:/[Cc]?[0-9]+|[VvHh])?|[Ss]?[0-8]*/[Bb]?[0-8]*(?:/[Cc]?[0-9]+)?)"
+    r"(?::[PpTtKkCcSs][0-9,*+]*)?")
+
+
+def golly_rule(rule: str) -> str | None:
+    """The rule as Golly writes it in an RLE header, or None if Golly would not know it
+    (a camlab88 rule set name such as 'overgrazing')."""
+    rule = rule.strip()
+    if rule.lower() in GOLLY_NAMES:
+        return GOLLY_NAMES[rule.lower()]
+    return rule if rule and _GOLLY_RULE.fullmatch(rule) else None
+
 
 def _state_symbol(t: int, multi: bool) -> str:
     if not multi:
@@ -246,9 +275,13 @@ def format_rle(p: Pattern) -> str:
     head: list[str] = []
     if p.name:
         head.append(f"#N {p.name}")
+    head += [f"#O {a}" for a in p.author.splitlines()]
     head += [f"#C {c}" for c in p.comments]
+    golly = golly_rule(p.rule)
+    if p.rule and golly is None:  # Golly rejects unknown rule names in the header
+        head.append(f"{RULES_COMMENT}{p.rule}")
     head.append(f"#CXRLE Pos={-p.ref[0]},{-p.ref[1]}")  # reference point = Golly's origin
-    rule = f", rule = {p.rule}" if p.rule else ""
+    rule = f", rule = {golly}" if golly else ""
     head.append(f"x = {p.width}, y = {p.height}{rule}")
     rows: dict[int, list[tuple[int, int]]] = {}
     for x, y, t in zip(p.xs.tolist(), p.ys.tolist(), p.ts.tolist()):
@@ -293,6 +326,7 @@ def parse_rle(text: str, source: str = "<rle>") -> Pattern:
     lines = text.splitlines()
     name = rule = ""
     comments: list[str] = []
+    authors: list[str] = []
     pos = (0, 0)
     i = 0
     header = None
@@ -303,8 +337,12 @@ def parse_rle(text: str, source: str = "<rle>") -> Pattern:
             continue
         if s.startswith("#"):
             tag, _, rest = s.partition(" ")
-            if tag == "#N":
+            if s.startswith(RULES_COMMENT.strip()):
+                rule = s[len(RULES_COMMENT.strip()):].strip()
+            elif tag == "#N":
                 name = rest.strip()
+            elif tag == "#O":
+                authors.append(rest.strip())
             elif tag in ("#C", "#c"):
                 comments.append(rest.strip())
             elif tag == "#r":
@@ -390,7 +428,7 @@ def parse_rle(text: str, source: str = "<rle>") -> Pattern:
     del width, height  # Golly reads cells beyond the header's box too; so do we
     # The reference point is Golly's origin: Pos gives the box corner relative to it.
     return Pattern.from_cells(cells, ref=(-pos[0], -pos[1]), name=name, rule=rule,
-                              comments=comments)
+                              comments=comments, author="\n".join(authors))
 
 
 # -- plaintext .cells --------------------------------------------------------------------------

@@ -12,7 +12,7 @@ import colorsys
 
 import numpy as np
 
-from apps.ca.engine import Engine, Rect
+from apps.ca.engine import SIDE, Engine, Rect
 from apps.ca.rules import RuleSet
 
 # Section 7.4.1: type 1 is "green by default", type 2 "red", type 3 "blue".
@@ -48,7 +48,7 @@ def render(engine: Engine, rect: Rect, zoom: int = 4, monochrome: bool = False,
     if monochrome:
         pal[1:] = 255
     cells = np.zeros((rect.height, rect.width, 3), np.uint8)
-    cells[ys - rect.y0, xs - rect.x0] = pal[ts]
+    cells[(ys - rect.y0) % SIDE, (xs - rect.x0) % SIDE] = pal[ts]  # rect may cross the seam
     img = np.repeat(np.repeat(cells, zoom, axis=0), zoom, axis=1)
     if gaps and zoom >= 4:
         img[zoom - 1::zoom, :, :] = 0

@@ -201,7 +201,17 @@ class _Parser:
             if tok.text == "$":
                 self.pos += 1
                 break
-            form = self.lifeform()
+            try:
+                form = self.lifeform()
+            except RuleError as exc:
+                if not forms:
+                    raise
+                # After a complete grid, what does not parse as a life-form is most often
+                # an interpretation line with the '$' before it forgotten: point there.
+                raise self.error(tok, f"expected '$' ending the message rules (after the grid "
+                                      f"of life-form {max(forms)}) or another life-form; "
+                                      f"read as a life-form it fails at {exc.line}:"
+                                      f"{exc.column}: {exc.detail}") from None
             if form.number in forms:
                 raise self.error(tok, f"life-form {form.number} is defined twice "
                                       f"(first definition has its own grid)")

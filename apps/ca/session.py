@@ -8,6 +8,7 @@ and the viewport/zoom record.  The Rainbow program drives it from menus and the 
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 from apps.ca import log
@@ -17,6 +18,19 @@ from apps.ca.rules import RuleSet, parse_rules
 
 EDIT_MODES = ("step_up", "step_down", "set_value", "pick_up")
 ZOOMS = ("16", "8", "4", "2", "1", "subpixel")
+MAX_CELLS_PER_PIXEL = 1024
+
+
+def subpixel_side(cells_per_pixel: int) -> int:
+    """The subpixel zoom's cells per pixel is an area (section 7.3.2: "1024 cells per pixel"),
+    so it is a square number 4, 9, 16 ... 1024; returns the side (2..32). On the 65536-cell
+    plane the 752 x 576 view then shows 752*32 x 576*32 cells = 10.3 % of it (the thesis's
+    "approximately 40 %" and zoom 1's "0.04 %" fit a 32768-cell-square surface)."""
+    side = math.isqrt(cells_per_pixel) if cells_per_pixel >= 0 else 0
+    if not 2 <= side <= 32 or side * side != cells_per_pixel:
+        raise ValueError(f"cells per pixel must be a square number from 4 to "
+                         f"{MAX_CELLS_PER_PIXEL} (4, 9, 16, ... 1024), not {cells_per_pixel}")
+    return side
 
 
 @dataclass
@@ -138,8 +152,8 @@ class Session:
     def set_zoom(self, zoom: str, cells_per_pixel: int = 1) -> None:
         if zoom not in ZOOMS:
             raise ValueError(f"zoom must be one of {ZOOMS}")
-        if zoom == "subpixel" and not 1 <= cells_per_pixel <= 1024:
-            raise ValueError("subpixel zoom shows 1..1024 cells per pixel")
+        if zoom == "subpixel":
+            subpixel_side(cells_per_pixel)  # the same square areas the program accepts
         self.view.zoom = zoom
         self.view.cells_per_pixel = cells_per_pixel if zoom == "subpixel" else 1
         self._log(log.ev_zoom(self.generation, zoom if zoom != "subpixel"
@@ -159,8 +173,9 @@ class Session:
         box = self.engine.bbox()
         if box is None:
             return
-        self.pan_to((box.x0 + box.x1) // 2 - width_cells // 2,
-                    (box.y0 + box.y1) // 2 - height_cells // 2)
+        cx = box.x0 + (box.width - 1) // 2  # the box may cross the seam: pan_to wraps
+        cy = box.y0 + (box.height - 1) // 2
+        self.pan_to(cx - width_cells // 2, cy - height_cells // 2)
 
     def statistics(self) -> dict:
         stats = self.engine.stats()

@@ -13,7 +13,8 @@ coded in bits 8 and up, to the cell beside it, which becomes the head life-form 
 performs the action for (next state, symbols read).  Each head life-form *is* an action
 (writes, move, next state), so the rule file needs one life-form per distinct action.
 
-The algorithm: copy N to the third row; if N is even it is not prime; write 3 on the second
+The algorithm: copy N to the third row; if N is even it is not prime unless it is 2 (its
+digits are exactly "10"); write 3 on the second
 row; then repeatedly subtract the divisor from the remainder, right to left with a borrow,
 until the remainder is zero (N divisible: not prime; unless it was the very first subtraction,
 which means divisor == N: prime) or negative (restore the remainder from the top row, add 2
@@ -51,8 +52,8 @@ class Action:
 
 
 def _states() -> list[str]:
-    names = ["START", "COPY", "CHKEVEN", "W3", "TORIGHT0", "TORIGHT1", "RESTORE", "INCSKIP",
-             "INC", "FAIL"]
+    names = ["START", "COPY", "CHKEVEN", "CHK2A", "CHK2B", "W3", "TORIGHT0", "TORIGHT1",
+             "RESTORE", "INCSKIP", "INC", "FAIL"]
     names += [f"SUB{b}{f}{z}" for b in (0, 1) for f in (0, 1) for z in (0, 1)]
     return names + list(VERDICTS)
 
@@ -71,7 +72,12 @@ def delta(q: str, t1: int | str, t2: int, t3: int) -> Action | None:
     if q == "CHKEVEN":
         if not digit:
             return None
-        return Action(None, None, -1, "FAIL") if t1 == 0 else Action(1, None, -1, "W3")
+        return Action(None, None, -1, "CHK2A") if t1 == 0 else Action(1, None, -1, "W3")
+    # Even: prime only if N is 2, binary "10" (a 1, then the left end marker).
+    if q == "CHK2A":
+        return Action(None, None, -1, "CHK2B") if t1 == 1 else Action(None, None, -1, "FAIL")
+    if q == "CHK2B":
+        return Action(None, None, 0, "YES") if not digit else Action(None, None, -1, "FAIL")
     if q == "W3":
         return Action(None, None, -1, "FAIL") if not digit else Action(1, None, +1, "TORIGHT1")
     if q.startswith("TORIGHT"):

@@ -50,8 +50,10 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                          "up to GENERATION, and print the statistics.")
     rep.add_argument("--script", required=True, help="log file written by a ca session")
     rep.add_argument("--generation", type=int, required=True)
-    rep.add_argument("--edges", choices=("wrap", "bounded"), default="wrap")
-    rep.add_argument("--seed", type=int, default=0)
+    rep.add_argument("--edges", choices=("wrap", "bounded"),
+                     help="only for logs that do not record their edges (default wrap)")
+    rep.add_argument("--seed", type=int,
+                     help="only for logs that do not record their seed (default 0)")
     rep.add_argument("--json", action="store_true")
     rep.set_defaults(handler=_replay)
 
@@ -76,8 +78,10 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                       help="ReplayPansAndZooms: also repeat the script's pans and zooms")
     prog.add_argument("--start", type=int, metavar="G",
                       help="begin the script at generation G (asked for if omitted)")
-    prog.add_argument("--edges", choices=("wrap", "bounded"), default="wrap")
-    prog.add_argument("--seed", type=int, default=0)
+    prog.add_argument("--edges", choices=("wrap", "bounded"),
+                      help="plane edges (default wrap; a script's log header decides)")
+    prog.add_argument("--seed", type=int,
+                      help="seed of random outcomes (default 0; a script's log header decides)")
     prog.add_argument("--headless", action="store_true", help="no window")
     prog.add_argument("--events", metavar="FILE",
                       help="scripted mouse/keyboard input (see apps/ca/program/script_events.py)")
@@ -140,13 +144,17 @@ def _write_png(engine, path: str, zoom: int, monochrome: bool) -> None:
 
     from PIL import Image
 
-    from apps.ca.engine import Rect
+    from apps.ca.engine import SIDE, Rect
     from apps.ca.render import render
 
     box = engine.bbox() or Rect(0, 0, 0, 0)
     pad = 2
-    rect = Rect(max(0, box.x0 - pad), max(0, box.y0 - pad), min(65535, box.x1 + pad),
-                min(65535, box.y1 + pad))
+    if engine.edges == "wrap":  # the box may cross the seam; so may the padded one
+        rect = Rect((box.x0 - pad) % SIDE, (box.y0 - pad) % SIDE, (box.x1 + pad) % SIDE,
+                    (box.y1 + pad) % SIDE)
+    else:
+        rect = Rect(max(0, box.x0 - pad), max(0, box.y0 - pad), min(SIDE - 1, box.x1 + pad),
+                    min(SIDE - 1, box.y1 + pad))
     img = render(engine, rect, max(1, zoom), monochrome)
     folder = os.path.dirname(os.path.abspath(path))
     fd, tmp = tempfile.mkstemp(suffix=".png", dir=folder)
@@ -169,12 +177,16 @@ def _convert(args: argparse.Namespace) -> int:
 
 def _replay(args: argparse.Namespace) -> int:
     from apps.ca.engine import Engine
-    from apps.ca.log import LogError, start_from_script
+    from apps.ca.log import LogError, read_log_settings, resolve_settings, start_from_script
     from apps.ca.rules import RuleError
 
     try:
+        edges, seed, warnings = resolve_settings(read_log_settings(args.script), args.edges,
+                                                 args.seed)
+        for w in warnings:
+            print(f"camlab88 ca replay: warning: {w}", file=sys.stderr)
         engine = start_from_script(args.script, args.generation,
-                                   lambda: Engine(edges=args.edges, seed=args.seed))
+                                   lambda: Engine(edges=edges, seed=seed))
     except (OSError, LogError, RuleError, ValueError, RuntimeError) as exc:
         print(f"camlab88 ca replay: {exc}", file=sys.stderr)
         return 2

@@ -93,3 +93,21 @@ def test_png_rendering_uses_rule_colours(tmp_path: Path) -> None:
     img = Image.open(out).convert("RGB")
     colours = {c for _, c in img.getcolors(1 << 16)}
     assert {(0, 255, 0), (255, 0, 0), (0, 0, 255), (0, 0, 0)} <= colours
+
+
+def test_replay_uses_the_logged_edges_and_warns_about_disagreeing_flags(tmp_path: Path,
+                                                                        capsys) -> None:
+    path = str(tmp_path / "b.log")
+    w = log.LogWriter(path, settings=log.LogSettings("bounded", 5))
+    w.add(log.ev_rules(0, "life", Path(rules_path("life")).read_text()))
+    for x, y in ((1, 1), (2, 1), (3, 1), (1, 2), (2, 3)):  # a glider heading up-left
+        w.add(log.ev_edit(0, x, y, 1))
+    assert main(["ca", "replay", "--script", path, "--generation", "16", "--json"]) == 0
+    bounded = _json_last(capsys)
+    assert main(["ca", "replay", "--script", path, "--generation", "16", "--json",
+                 "--edges", "wrap"]) == 0
+    out = capsys.readouterr()
+    assert json.loads(out.out.strip().splitlines()[-1]) == bounded
+    assert "recorded with edges bounded" in out.err
+    # the glider broke up on the bounded edge instead of wrapping round
+    assert bounded["population"] != 5 or bounded["bbox"][0] < 65000

@@ -111,6 +111,8 @@ def test_views_not_recorded_without_record_pans_and_zooms(tmp_path: Path) -> Non
     ("CAMLAB88-CA-LOG 1\n3 edit 1 2\n", "edit takes 3 fields"),
     ("CAMLAB88-CA-LOG 1\n3 edit 1 2 x\n", "bad number"),
     ("CAMLAB88-CA-LOG 1\n0 rules life 2\n|1 0 0 0 0 |1\n", "expected 2 rule lines"),
+    ("CAMLAB88-CA-LOG 1\nedges round\n", ":2: edges must be wrap or bounded"),
+    ("CAMLAB88-CA-LOG 1\nedges wrap\nseed x\n", ":3: expected 'seed <integer>'"),
 ])
 def test_log_errors_name_line(text: str, words: str) -> None:
     with pytest.raises(log.LogError, match=words):
@@ -146,3 +148,21 @@ def test_load_event_with_lifeforms_beyond_rle_states(tmp_path: Path) -> None:
     log.apply_event(e, back)
     assert {(int(x), int(y), int(t)) for x, y, t in zip(e.xs, e.ys, e.ts)} == {
         (51, 61, 300), (49, 60, 7)}
+
+
+def test_log_header_records_edges_and_seed(tmp_path: Path) -> None:
+    path = tmp_path / "s.log"
+    w = log.LogWriter(path, settings=log.LogSettings("bounded", 7))
+    w.add(log.ev_edit(0, 1, 2, 1))
+    text = path.read_text()
+    assert text.splitlines()[:3] == [log.LOG_MAGIC, "edges bounded", "seed 7"]
+    assert log.read_log_settings(path) == log.LogSettings("bounded", 7)
+    assert log.parse_log(text) == [log.ev_edit(0, 1, 2, 1)]
+    old = log.LOG_MAGIC + "\n0 edit 1 2 1\n"  # a log from before the header: still reads
+    assert log.parse_log_settings(old) == log.LogSettings()
+    assert log.resolve_settings(log.LogSettings(), None, None) == ("wrap", 0, [])
+    assert log.resolve_settings(log.LogSettings(), "bounded", 3) == ("bounded", 3, [])
+    edges, seed, warn = log.resolve_settings(log.LogSettings("bounded", 7), "wrap", 7)
+    assert (edges, seed) == ("bounded", 7) and len(warn) == 1 and "edges bounded" in warn[0]
+    assert log.resolve_settings(log.LogSettings("bounded", 7), None, 8)[2] == [
+        "the script was recorded with seed 7; replaying with it, not the command line's 8"]

@@ -17,6 +17,7 @@ from apps.ca.patterns import (
     format_cells,
     format_native,
     format_rle,
+    golly_rule,
     parse_cells,
     parse_native,
     parse_rle,
@@ -51,7 +52,7 @@ def test_rle_round_trip_multistate(cells, ref) -> None:
     q = parse_rle(text)
     assert q.cell_set() == p.cell_set()
     if cells:
-        assert q.ref == p.ref and q.rule == "life"
+        assert q.ref == p.ref and q.rule == "B3/S23"  # Life is written as Golly's rule
 
 
 @settings(max_examples=60, deadline=None)
@@ -68,6 +69,31 @@ def test_lifewiki_style_rle_reads_the_gosper_gun() -> None:
     assert p.name == "Gosper glider gun" and p.rule == "B3/S23"
     assert (p.width, p.height) == (36, 9)
     assert len(p.comments) == 3
+    assert p.author == "Bill Gosper"  # the '#O' line is kept ...
+    out = format_rle(p)
+    assert "#O Bill Gosper" in out.splitlines()  # ... and written back
+    assert parse_rle(out).author == "Bill Gosper"
+    assert parse_native(format_native(p)).author == "Bill Gosper"
+
+
+@pytest.mark.parametrize(("rule", "header", "comment"), [
+    ("life", "x = 3, y = 1, rule = B3/S23", None),
+    ("B36/S23", "x = 3, y = 1, rule = B36/S23", None),
+    ("23/3", "x = 3, y = 1, rule = 23/3", None),
+    ("overgrazing", "x = 3, y = 1", "#C camlab88 rules: overgrazing"),
+    ("turing_primes", "x = 3, y = 1", "#C camlab88 rules: turing_primes"),
+])
+def test_rle_rule_field_only_for_golly_rules(rule: str, header: str, comment: str | None,
+                                             ) -> None:
+    """Golly rejects unknown rule names in the header: a library rule set's name goes in a
+    comment line (read back as the pattern's rule)."""
+    p = Pattern.from_cells([(0, 0, 1), (2, 0, 1)], rule=rule)
+    lines = format_rle(p).splitlines()
+    assert header in lines
+    if comment is not None:
+        assert comment in lines and not any("rule =" in line for line in lines)
+        assert parse_rle("\n".join(lines)).rule == rule
+    assert golly_rule(rule) == (None if comment else header.split("rule = ")[1])
 
 
 def test_rle_details() -> None:

@@ -366,3 +366,119 @@ def test_subpixel_pan_and_zoom_back():
     d.main("Zoom 16")
     bx = d.program.session.engine.bbox()
     assert d.program.view.cell_visible((bx.x0 + bx.x1) // 2, (bx.y0 + bx.y1) // 2)
+
+
+def test_set_to_value_with_many_life_forms_asks_for_a_number(tmp_path):
+    """Over 28 life-forms the value is typed: cancelling is silent, and the value must be a
+    life-form that has rules."""
+    rules = tmp_path / "many.rules"
+    forms = [*range(1, 30), 40]
+    rules.write_text("".join(f"{n} 0 0 0 0 +{n}\n" for n in forms) + "$\n"
+                     + "".join(f"{n} {n}\n" for n in forms))
+    d = Driver(Options(rules=str(rules)))
+    d.frames(1)
+    d.edit_menu("left")
+    assert d.program.asking is not None and d.program.asking.kind == "text"
+    d.run("key escape\nframes 1")
+    assert d.program.dialogue is None
+    assert not any("None" in s for s in d.program.said)
+    assert d.program.session.edit_mode == "step_up"
+    for bad in ("35", "0", "-1"):
+        d.edit_menu("left")
+        d.type(bad)
+        assert "has no rules" in d.program.said[-1] and d.program.session.edit_mode == "step_up"
+    d.edit_menu("left")
+    d.type("40")
+    assert (d.program.session.edit_mode, d.program.session.current) == ("set_value", 40)
+    d.click_cell(CENTRE, CENTRE)
+    assert d.program.session.engine.get(CENTRE, CENTRE) == 40
+
+
+PROB_RULES = """1 1 1 1 1 +1 +1 +1 +1 |16 +1 +1 +1 +1 $
+#X12 1  #X13 1  3 50% 1 50% 0  #X11 50% 1 50% 0
+"""
+
+
+def _probabilistic_session(tmp_path, **kw) -> Driver:
+    rules = tmp_path / "coin.rules"
+    rules.write_text(PROB_RULES)
+    d = Driver(Options(rules=str(rules), pattern="r_pentomino", log=str(tmp_path / "s.log"),
+                       **kw))
+    d.leave_editing()
+    d.run("click right 600 500\nframes 1\n" * 12)
+    assert d.program.session.generation == 12
+    return d
+
+
+def test_log_records_edges_and_seed_and_a_replay_uses_them(tmp_path):
+    """Section 8.1 outcomes depend on the seed: a replay without the flags must still
+    reproduce the run; flags that disagree are warned about and overruled."""
+    d = _probabilistic_session(tmp_path, edges="bounded", seed=12345)
+    e = d.program.session.engine
+    head = (tmp_path / "s.log").read_text().splitlines()[:3]
+    assert head == [log.LOG_MAGIC, "edges bounded", "seed 12345"]
+    r = Driver(Options(script=str(tmp_path / "s.log"), start=12))
+    assert r.program.session.engine.same_state(e)
+    assert (r.program.session.engine.edges, r.program.session.engine.seed) == ("bounded",
+                                                                               12345)
+    assert not any("Warning" in s for s in r.program.said)
+    w = Driver(Options(script=str(tmp_path / "s.log"), start=12, edges="wrap", seed=1))
+    assert w.program.session.engine.same_state(e)
+    warnings = [s for s in w.program.said if s.startswith("Warning")]
+    assert len(warnings) == 2 and "seed 12345" in warnings[1]
+
+
+def test_same_file_for_log_and_script_continues_the_history(tmp_path):
+    """Script S and Log S together: the session continues its own log, which keeps the
+    replayed history; replaying the continued log reaches the continued state."""
+    path = tmp_path / "s.log"
+    d = Driver(Options(pattern="r_pentomino", log=str(path), checkpoint=5))
+    d.click_cell(CENTRE + 9, CENTRE + 9)
+    d.leave_editing()
+    d.run("click right 600 500\nframes 1\n" * 8)
+    d.main("Load pattern")
+    d.type("glider")
+    d.click_cell(CENTRE - 12, CENTRE - 12)
+    d.pick("identity")
+    d.run("key escape\nframes 1")
+    d.run("click right 600 500\nframes 1\n" * 4)
+    first = log.read_log(path)
+    assert [ev.kind for ev in first] == ["rules", "load", "edit", "load"]
+    assert (tmp_path / "s.log10").exists()
+    # continue from generation 6: the load at 8 and the checkpoint at 10 are superseded
+    c = Driver(Options(script=str(path), log=str(path), start=6, checkpoint=5))
+    kept = log.read_log(path)
+    assert kept == [ev for ev in first if ev.generation <= 6]
+    assert not (tmp_path / "s.log10").exists() and (tmp_path / "s.log10.superseded").exists()
+    assert (tmp_path / "s.log5").exists()
+    c.leave_editing()
+    c.run("click right 600 500\nframes 1\n" * 2)
+    c.click_cell(CENTRE + 20, CENTRE)  # step mode: not editing, so this steps again
+    c.main("Clear area")
+    c.pick("Clear a rectangle")
+    a, b = c.screen_of(CENTRE - 3, CENTRE - 3), c.screen_of(CENTRE + 3, CENTRE + 3)
+    c.run(f"move {a[0]} {a[1]}\nclick right {a[0]} {a[1]}\nmove {b[0]} {b[1]}\n"
+          f"click right {b[0]} {b[1]}\nframes 1")
+    c.run("click right 600 500\nframes 1\n" * 6)
+    cont = c.program.session.engine
+    assert cont.generation == 15
+    events = log.read_log(path)
+    assert events[:len(kept)] == kept and events[-1].kind == "clear"
+    r = Driver(Options(script=str(path), start=15))
+    assert r.program.session.engine.same_state(cont)
+
+
+def test_save_pattern_from_a_rectangle_across_the_seam(tmp_path):
+    from apps.ca.program import commands
+
+    d = Driver()
+    d.program.session.engine.set_cells([65534, 65535, 0], [100, 100, 100], 1)
+    dialogue = commands.save_pattern(d.program)
+    assert next(dialogue).kind == "rect"
+    assert dialogue.send(commands.rect_from((65533, 99), (1, 101))).kind == "text"
+    assert dialogue.send(str(tmp_path / "seam.pat")).kind == "point"
+    with pytest.raises(StopIteration):
+        dialogue.send((65535, 100))
+    pat = read_pattern(tmp_path / "seam.pat")
+    assert pat.cell_set() == {(0, 0, 1), (1, 0, 1), (2, 0, 1)}  # 3 cells, not 65535 wide
+    assert pat.ref == (1, 0) and "Saved 3 cells" in d.program.said[-1]

@@ -11,6 +11,7 @@ from apps.ca.program import raster
 from apps.ca.program.edit import cells_between
 from apps.ca.program.viewport import VIEW_H, VIEW_W, Viewport, subpixel_side
 from apps.ca.rules import load_rules
+from apps.ca.session import Session
 
 
 def test_start_view_and_cell_mapping():
@@ -48,8 +49,28 @@ def test_subpixel_cells_per_pixel_is_a_square_area():
     v = Viewport()
     v.set_zoom(0, 1024)
     w, h = v.cells_across()
-    # the thesis's "approximately 40 %" of a (32768-cell) playing surface
-    assert round(w * h / 32768 ** 2, 2) == 0.41
+    assert (w, h) == (752 * 32, 576 * 32)
+    # the real fraction of the 65536-cell plane (the thesis's "approximately 40 %" holds
+    # only for a 32768-cell-square surface; see docs/fidelity/ca.md)
+    assert round(100 * w * h / SIDE ** 2, 1) == 10.3
+    v.set_zoom(1)
+    w, h = v.cells_across()
+    assert round(100 * w * h / SIDE ** 2, 4) == 0.0101
+
+
+def test_model_and_program_accept_the_same_subpixel_areas():
+    for n in (4, 9, 64, 1024):
+        s = Session(Engine())
+        s.set_zoom("subpixel", n)
+        assert (s.view.zoom, s.view.cells_per_pixel) == ("subpixel", n)
+        v = Viewport()
+        v.set_zoom(0, n)
+        assert v.side ** 2 == n
+    for bad in (1, 2, 10, 1000, 1025, 2048):
+        with pytest.raises(ValueError, match="square"):
+            Session(Engine()).set_zoom("subpixel", bad)
+        with pytest.raises(ValueError, match="square"):
+            subpixel_side(bad)
 
 
 def _engine(cells):

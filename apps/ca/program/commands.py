@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from apps.ca import library
-from apps.ca.engine import Rect
+from apps.ca.engine import SIDE, Rect
 from apps.ca.patterns import ORIENTATIONS, Pattern, PatternError, read_pattern, write_pattern
 from apps.ca.program.viewport import subpixel_side
 from apps.ca.rules import RuleError
@@ -54,7 +54,11 @@ def advance_area(p: CAProgram) -> Dialogue:
     elif choice == "Advance a rectangle":
         rect = yield Ask("rect", "Advance area: right button at two opposite corners")
         if rect is not None:
-            p.session.advance_area(rect)
+            try:
+                p.session.advance_area(rect)
+            except ValueError as exc:
+                p.say(str(exc), ERROR)
+                return
             p.changed()
             p.say(f"Rules apply only inside {rect.x0},{rect.y0} .. {rect.x1},{rect.y1}")
 
@@ -127,11 +131,13 @@ def save_pattern(p: CAProgram) -> Dialogue:
     if ref is None:
         return
     xs, ys, ts = p.session.engine.cells_in_rect(rect)
-    cells = [(int(x) - rect.x0, int(y) - rect.y0, int(t)) for x, y, t in zip(xs, ys, ts)]
+    # offsets from the corner round the wrapping plane (the rectangle may cross the seam)
+    cells = [((int(x) - rect.x0) % SIDE, (int(y) - rect.y0) % SIDE, int(t))
+             for x, y, t in zip(xs, ys, ts)]
     if not cells:
         p.say("Nothing to save: the rectangle has no living cells", ERROR)
         return
-    pat = Pattern.from_cells(cells, ref=(ref[0] - rect.x0, ref[1] - rect.y0),
+    pat = Pattern.from_cells(cells, ref=(_offset(ref[0], rect.x0), _offset(ref[1], rect.y0)),
                              name=os.path.basename(name))
     path = _path(name, ".pat")
     try:
@@ -246,10 +252,16 @@ def set_value(p: CAProgram) -> Dialogue:
         value = int(choice.split()[-1])
     else:
         text = yield Ask("text", f"Life-form to set ({forms[0]}..{forms[-1]}):")
+        if text is None:  # cancelled: the editing method stays as it was
+            return
         try:
-            value = int(text or "")
+            value = int(text)
         except ValueError:
             p.say(f"not a life-form number: {text!r}", ERROR)
+            return
+        if value not in forms:  # the menu offers only life-forms with rules; so does this
+            p.say(f"life-form {value} has no rules in the current rule set "
+                  f"(forms {forms[0]}..{forms[-1]}, {len(forms)} of them)", ERROR)
             return
     p.session.set_edit_mode("set_value", value)
     p.display.set_marker(value)
@@ -274,4 +286,10 @@ MAIN = {"Advance area": advance_area, "Alter display": alter_display,
 
 
 def rect_from(a: tuple[int, int], b: tuple[int, int]) -> Rect:
-    return Rect.from_corners(a[0], a[1], b[0], b[1])
+    """The rectangle dragged between corners a and b (it may cross the plane's seam)."""
+    return Rect.dragged(a[0], a[1], b[0], b[1])
+
+
+def _offset(v: int, origin: int) -> int:
+    """Signed distance from ``origin`` to ``v`` the short way round the plane."""
+    return (v - origin + SIDE // 2) % SIDE - SIDE // 2

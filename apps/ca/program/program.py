@@ -41,8 +41,8 @@ class Options:
     script: str | None = None  # Script/k
     replay_pans: bool = False  # ReplayPansAndZooms/s
     start: int | None = None  # the generation to begin a script at (asked if None)
-    edges: str = "wrap"
-    seed: int = 0
+    edges: str | None = None  # None: the script's (its log header), else "wrap"
+    seed: int | None = None  # None: the script's, else 0
 
 
 class CAProgram:
@@ -51,8 +51,18 @@ class CAProgram:
         self.options = opts = options or Options()
         self.view = Viewport()
         self.display = Display(client, self.view)
-        writer = log.LogWriter(opts.log, opts.record_pans) if opts.log else None
-        self.session = Session(Engine(edges=opts.edges, seed=opts.seed), writer, opts.checkpoint)
+        # A script is read before any log is opened: --log may name the same file (the
+        # session then continues its own history, section 7.3.1).
+        self.script_events: list[log.Event] = []
+        recorded = log.LogSettings()
+        if opts.script:
+            self.script_events = log.read_log(opts.script)
+            recorded = log.read_log_settings(opts.script)
+        self.edges, self.seed, warnings = log.resolve_settings(recorded, opts.edges, opts.seed)
+        writer = None
+        if opts.log and not opts.script:  # with a script, opened once its start is known
+            writer = log.LogWriter(opts.log, opts.record_pans, self.settings)
+        self.session = Session(self.fresh_engine(), writer, opts.checkpoint)
         self.editor = Editor(self.session)
         self.main_menu = MainMenu(client)
         self.main_menu.mark("Step mode")
@@ -79,9 +89,10 @@ class CAProgram:
         self.script_last = 0
         self.display.editing = True
         self.session.view.x, self.session.view.y = self.view.top_left_cell()
+        for w in warnings:
+            self.say(f"Warning: {w}", ERROR)
         if opts.script:
-            events = log.read_log(opts.script)
-            last = max((e.generation for e in events), default=0)
+            last = max((e.generation for e in self.script_events), default=0)
             self.script_last = last
             if opts.start is None:
                 self._start(commands.start_generation(self, last))
@@ -91,6 +102,13 @@ class CAProgram:
             self._begin_fresh()
 
     # -- start-up -----------------------------------------------------------------------------
+    @property
+    def settings(self) -> log.LogSettings:
+        return log.LogSettings(self.edges, self.seed)
+
+    def fresh_engine(self) -> Engine:
+        return Engine(edges=self.edges, seed=self.seed)
+
     def _begin_fresh(self) -> None:
         opts = self.options
         path = library.rules_path(opts.rules)
@@ -110,16 +128,14 @@ class CAProgram:
         before any graphics; later interventions are applied as their generations come."""
         opts = self.options
         assert opts.script is not None
-        events = log.read_log(opts.script)
+        events = self.script_events
         on_view = self._view_event if opts.replay_pans else None
-        engine = log.start_from_script(opts.script, target,
-                                       lambda: Engine(edges=opts.edges, seed=opts.seed),
-                                       on_view)
+        engine = log.start_from_script(opts.script, target, self.fresh_engine, on_view)
         self.session.engine = engine
-        if self.session.writer is not None:  # the new log holds the whole history
-            for ev in events:
-                if ev.generation <= target:
-                    self.session.writer.add(ev)
+        if opts.log:  # the new log holds the whole history: the replayed part first
+            self.session.writer = log.LogWriter(
+                opts.log, opts.record_pans, self.settings,
+                [ev for ev in events if ev.generation <= target], start=target)
         self.script = stepping.ScriptFeed([e for e in events if e.generation > target])
         if engine.rules is None:
             path = library.rules_path(opts.rules)

@@ -13,22 +13,12 @@ import math
 from dataclasses import dataclass
 
 from apps.ca.engine import CENTRE, SIDE
+from apps.ca.session import MAX_CELLS_PER_PIXEL, subpixel_side  # noqa: F401 (re-exported)
 
 SCREEN_W, SCREEN_H = 768, 576
 BAND_W = 16
 VIEW_W, VIEW_H = SCREEN_W - BAND_W, SCREEN_H
 PIXEL_ZOOMS = (16, 8, 4, 2, 1)
-MAX_CELLS_PER_PIXEL = 1024
-
-
-def subpixel_side(cells_per_pixel: int) -> int:
-    """Cells per pixel is an area (section 7.3.2's arithmetic: 1024 per pixel shows ~40 %
-    of the playing surface), so it must be a square: 4, 9, 16 ... 1024."""
-    side = math.isqrt(cells_per_pixel)
-    if not 2 <= side <= 32 or side * side != cells_per_pixel:
-        raise ValueError(f"cells per pixel must be a square number from 4 to "
-                         f"{MAX_CELLS_PER_PIXEL} (4, 9, 16, ... 1024), not {cells_per_pixel}")
-    return side
 
 
 @dataclass
