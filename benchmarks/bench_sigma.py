@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 import os
+import re
 import statistics
 import subprocess
 import sys
@@ -19,9 +20,12 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
+from camlab88.commands.demo import sigma_demo_stream  # noqa: E402
+from emulator.sigma import Terminal  # noqa: E402
 from emulator.sigma.raster import boundary_fill  # noqa: E402
 from protocols.sigma import Encoder  # noqa: E402
-from protocols.sigma.abbreviated import encode_points  # noqa: E402
+from protocols.sigma.abbreviated import encode_points, new_state, scan_points  # noqa: E402
+from tests.sigma.streams import gks_plot, pgplot_plot  # noqa: E402
 
 LINE_CPS = 960  # 9600 baud 8N1
 
@@ -82,6 +86,66 @@ def abbreviated_saving() -> list[tuple[str, int, int, float]]:
     return rows
 
 
+# ---------------------------------------------------------------- driver-formed streams
+_AGS_RUN = re.compile(rb"JH([^\x1f]*)\x1f")
+_FLUSH = b"BH+-*/"  # PGPLOT's buffer flush: the pen stays down, the pairs go on after it
+_NGS_RUN = re.compile(rb"GI(\d{6})GJ((?:\d{6}|BH\+-\*/)+)")
+
+
+def _ags_run_as_ngs(m: re.Match[bytes]) -> bytes:
+    """One JH ... US run re-sent in standard mode: EK for an ESC M mask, GI first, GJ rest."""
+    body = m.group(1)
+    extra = b""
+    for esc in re.findall(rb"\x1b(.)(...)", body, flags=re.S):
+        extra += b"EK" + esc[1] if esc[0] == b"M" else b""
+    body = re.sub(rb"\x1b...", b"", body, flags=re.S)
+    xy = np.empty((len(body) + 1, 2), dtype=np.int32)
+    _, k = scan_points(body, 0, new_state(), xy, 0)
+    return extra + Encoder().polyline([(int(x), int(y)) for x, y in xy[:k]])
+
+
+def _ngs_run_as_ags(m: re.Match[bytes]) -> bytes:
+    """One GI pair GJ pairs... run re-sent in abbreviated mode; across a flush the run is
+    closed (US) before BH and re-opened after it from its last point (a JH move)."""
+    out = b""
+    last: list[tuple[int, int]] = []
+    for k, digits in enumerate((m.group(1) + m.group(2)).split(_FLUSH)):
+        pts = [(int(digits[i:i + 3]) - 100, int(digits[i + 3:i + 6]) - 100)
+               for i in range(0, len(digits), 6)]
+        if k:
+            out += _FLUSH
+        if pts:
+            out += b"JH" + encode_points(last + pts) + b"\x1f"
+            last = pts[-1:]
+    return out
+
+
+def driver_stream_saving() -> list[tuple[str, int, int, float, int, int, float]]:
+    """Whole streams as the drivers / the demo form them, vectors re-sent in the other mode.
+
+    Rows: (name, NGS chars, AGS chars, ratio, NGS vector chars, AGS vector chars, ratio)."""
+    rows = []
+    for name, data, native_ags in (("RAL GKS driver stream (AGS)", gks_plot(), True),
+                                   ("PGPLOT GOC driver stream (NGS)", pgplot_plot(), False),
+                                   ("camlab88 demo stream (AGS)", sigma_demo_stream(), True)):
+        if native_ags:
+            ags = data
+            ngs = _AGS_RUN.sub(_ags_run_as_ngs, data)
+            va = sum(len(m.group(0)) for m in _AGS_RUN.finditer(data))
+            vn = sum(len(_ags_run_as_ngs(m)) for m in _AGS_RUN.finditer(data))
+        else:
+            ngs = data
+            ags = _NGS_RUN.sub(_ngs_run_as_ags, data)
+            vn = sum(len(m.group(0)) for m in _NGS_RUN.finditer(data))
+            va = sum(len(_ngs_run_as_ags(m)) for m in _NGS_RUN.finditer(data))
+        a, b = Terminal("t5684"), Terminal("t5684")
+        a.feed(ngs)
+        b.feed(ags)
+        assert np.array_equal(a.frame(), b.frame()), f"{name}: the two forms draw differently"
+        rows.append((name, len(ngs), len(ags), len(ags) / len(ngs), vn, va, va / vn))
+    return rows
+
+
 # ---------------------------------------------------------------- throughput
 def vector_heavy_stream(target_bytes: int, abbreviated: bool = True) -> bytes:
     rng = np.random.default_rng(5)
@@ -119,9 +183,9 @@ def throughput(mbytes: float, abbreviated: bool = True) -> tuple[int, float, flo
     return len(data), secs, len(data) / secs / LINE_CPS
 
 
-def startup_seconds() -> float:
+def startup_seconds(stream: bytes = b"\r+-*/DA") -> float:
     with tempfile.NamedTemporaryFile(suffix=".sigma", delete=False) as f:
-        f.write(b"\r+-*/DA")
+        f.write(stream)
         path = Path(f.name)
     try:
         render_seconds(path)
@@ -156,20 +220,30 @@ def main() -> None:
     print("== abbreviated (AGS) vs standard (NGS) characters")
     for name, n, a, r in abbreviated_saving():
         print(f"{name:32s} NGS {n:7d}  AGS {a:7d}  AGS/NGS {r:.2f}")
+    print("== the same, whole driver-formed streams (vectors re-sent in the other mode)")
+    for name, n, a, r, vn, va, vr in driver_stream_saving():
+        print(f"{name:32s} NGS {n:7d}  AGS {a:7d}  AGS/NGS {r:.2f}   vectors only: "
+              f"NGS {vn:6d}  AGS {va:6d}  {vr:.2f}")
     print("== decode + draw throughput, whole process (python -m camlab88 sigma render)")
-    print(f"start-up only (7-byte stream): {startup_seconds():.2f} s")
-    for mb in (2.0, 8.0):
+    print(f"load average at start: {os.getloadavg()[0]:.2f} (2 cores, shared)")
+    print(f"start-up, 7-byte stream that draws nothing: {startup_seconds():.2f} s")
+    # one NGS vector and one AGS polyline: the numba kernels are loaded
+    one = b"\r+-*/GI100100GJ600500" + ags_stream([[(10, 10), (300, 200)]])
+    print(f"start-up, stream with one vector (numba kernels loaded): {startup_seconds(one):.2f} s")
+    for mb in (0.5, 1.0, 2.0, 8.0):
         n, secs, mult = throughput(mb)
         print(f"{n / 1e6:.1f} MB vector-heavy AGS stream: {secs:.2f} s = {n / secs / 1e6:.2f} "
               f"MB/s = {mult:.0f}x the 960 chars/s line")
-    n, secs, mult = throughput(2.0, abbreviated=False)
-    print(f"{n / 1e6:.1f} MB vector-heavy NGS (decimal) stream: {secs:.2f} s = "
-          f"{n / secs / 1e6:.2f} MB/s = {mult:.0f}x the 960 chars/s line")
+    for mb in (1.0, 2.0):
+        n, secs, mult = throughput(mb, abbreviated=False)
+        print(f"{n / 1e6:.1f} MB vector-heavy NGS (decimal) stream: {secs:.2f} s = "
+              f"{n / secs / 1e6:.2f} MB/s = {mult:.0f}x the 960 chars/s line")
     print("== full-screen boundary flood fill (median of 30)")
     print(f"T5684 768x512:   {fill_ms(512, 768):.2f} ms")
     print(f"T5688 1536x1024: {fill_ms(1024, 1536):.2f} ms")
     print("== camlab88 demo --headless (PNG frames + GIF), whole process")
     print(f"{demo_seconds():.1f} s")
+    print(f"load average at end: {os.getloadavg()[0]:.2f}")
 
 
 if __name__ == "__main__":

@@ -31,7 +31,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     r.add_argument("--out", type=Path, help="final screen PNG")
     r.add_argument("--frames", type=Path, help="directory for one PNG per frame period")
     r.add_argument("--fps", type=int, default=25, help="frames per second of line time")
-    r.add_argument("--baud", type=int, default=9600)
+    r.add_argument("--baud", type=int, default=9600,
+                   help="line speed that times --frames (a recording keeps its own times)")
     r.set_defaults(handler=render_command)
 
     u = sub.add_parser("run", help="an interactive terminal in a window",
@@ -44,11 +45,13 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     g.add_argument("--pty", action="store_true", help="open a pseudo-terminal (the default)")
     g.add_argument("--listen", type=int, metavar="PORT", help="listen on 127.0.0.1:PORT")
     g.add_argument("--serial", metavar="URL", help="any pyserial URL, e.g. /dev/ttyUSB0")
-    u.add_argument("--baud", type=int, default=9600)
+    u.add_argument("--baud", type=int,
+                   help="line speed (default 9600, or that of an --in recording)")
     u.add_argument("--scale", type=int, default=1)
     u.add_argument("--headless", action="store_true", help="no window (line only)")
     u.add_argument("--in", dest="stream", type=Path,
-                   help="also play this stream down the line at start")
+                   help="also play this stream down the line: raw bytes back to back from "
+                   "the start, a recording at its recorded times")
     u.add_argument("--screenshot", type=Path,
                    help="save the screen to PNG and exit: at --seconds, else once the --in "
                    "stream has arrived")
@@ -70,11 +73,27 @@ def write_png_atomic(frame: np.ndarray, path: Path) -> None:
             Image.fromarray(frame).save(f, format="PNG")
             f.flush()
             os.fsync(f.fileno())
+        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes a private file; a picture is not
         os.replace(tmp, path)
     except BaseException:
         if os.path.exists(tmp):
             os.unlink(tmp)
         raise
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+def _write_png(frame: np.ndarray, path: Path, command: str) -> None:
+    """write_png_atomic, a failure being a one-line error naming the file."""
+    try:
+        write_png_atomic(frame, path)
+    except OSError as exc:
+        raise SystemExit(f"camlab88 sigma {command}: cannot write {path}: "
+                         f"{exc.strerror or exc}") from None
 
 
 def read_input(path: Path):  # noqa: ANN201 - bytes or a protocols.link Recording
@@ -134,19 +153,20 @@ def render_command(args: argparse.Namespace) -> int:
         raise SystemExit("camlab88 sigma render: give --out PNG and/or --frames DIR")
     if args.fps < 1:
         raise SystemExit("camlab88 sigma render: --fps must be at least 1")
+    _settings(args.baud)  # refuse a bad --baud even when no frames use it
     got = read_input(args.stream)
     term = Terminal(args.model)
     if args.frames is not None:
         count = 0
         for k, chunk in _periods(got, args.baud, Fraction(1, args.fps)):
             term.feed(chunk)
-            write_png_atomic(term.frame(), args.frames / f"frame_{k:05d}.png")
+            _write_png(term.frame(), args.frames / f"frame_{k:05d}.png", "render")
             count += 1
         print(f"wrote {count} frames to {args.frames}")
     else:
         term.feed(got if isinstance(got, bytes) else got.stream(">"))
     if args.out is not None:
-        write_png_atomic(term.frame(), args.out)
+        _write_png(term.frame(), args.out, "render")
         print(f"wrote {args.out}")
     s = term.stats
     if s["unknown"] or s["malformed"] or s["errors"]:
@@ -163,35 +183,74 @@ TICK = Fraction(1, 100)  # virtual seconds per step of the run loop
 FRAME = Fraction(1, 25)
 
 
+def _open_bridge(args: argparse.Namespace, settings, line):  # noqa: ANN001, ANN202
+    """The line's outside end; an unusable port or URL is a one-line error (exit 1)."""
+    from protocols.link import transports as tr
+
+    if args.listen is not None:
+        try:
+            bridge = tr.TcpBridge(args.listen, endpoint=line.host)
+        except OSError as exc:
+            raise SystemExit(f"camlab88 sigma run: cannot listen on 127.0.0.1:{args.listen}: "
+                             f"{exc.strerror or exc}") from None
+        print(f"camlab88 sigma: {args.model} listening on 127.0.0.1:{bridge.port}", flush=True)
+    elif args.serial is not None:
+        bridge = tr.SerialUrlBridge(args.serial, settings, endpoint=line.host)
+        if not bridge.connected:
+            why = next((e.detail for e in reversed(bridge.events) if e.kind == "error"),
+                       f"cannot open {args.serial}")
+            bridge.close()
+            raise SystemExit(f"camlab88 sigma run: {why}")
+        print(f"camlab88 sigma: {args.model} on serial port {args.serial}", flush=True)
+    else:
+        try:
+            bridge = tr.PtyBridge(line.host)
+        except OSError as exc:
+            raise SystemExit(f"camlab88 sigma run: cannot open a pseudo-terminal: "
+                             f"{exc.strerror or exc}") from None
+        print(f"camlab88 sigma: {args.model} on pty {bridge.slave_path}", flush=True)
+    return bridge
+
+
 def run_command(args: argparse.Namespace) -> int:
     from emulator.sigma import Terminal
     from protocols.link import SerialLine, Throttle, VirtualClock
-    from protocols.link import transports as tr
+    from protocols.link.replay import replay_into
 
-    settings = _settings(args.baud)
     if args.scale < 1:
         raise SystemExit("camlab88 sigma run: --scale must be at least 1")
-    stream = read_stream(args.stream) if args.stream is not None else b""
+    got = read_input(args.stream) if args.stream is not None else b""
+    if isinstance(got, bytes):
+        settings = _settings(9600 if args.baud is None else args.baud)
+    else:  # a recording is replayed at its own speed and times
+        settings = got.settings
+        if args.baud is not None and args.baud != settings.baud:
+            raise SystemExit(f"camlab88 sigma run: {args.stream} was recorded at {settings}, "
+                             f"not --baud {args.baud}")
     clock = VirtualClock()
     recorder = None
     if args.record is not None:
         from protocols.link.recording import Recorder
 
-        recorder = Recorder(args.record, settings)
+        try:
+            recorder = Recorder(args.record, settings)
+        except OSError as exc:
+            raise SystemExit(f"camlab88 sigma run: cannot record to {args.record}: "
+                             f"{exc.strerror or exc}") from None
     line = SerialLine(settings, clock=clock, recorder=recorder)
     term = Terminal(args.model)
     term.on_output = line.device.write
-    if args.listen is not None:
-        bridge = tr.TcpBridge(args.listen, endpoint=line.host)
-        print(f"camlab88 sigma: {args.model} listening on 127.0.0.1:{bridge.port}", flush=True)
-    elif args.serial is not None:
-        bridge = tr.SerialUrlBridge(args.serial, settings, endpoint=line.host)
-        print(f"camlab88 sigma: {args.model} on serial port {args.serial}", flush=True)
+    try:
+        bridge = _open_bridge(args, settings, line)
+    except BaseException:
+        if recorder is not None:
+            recorder.close()
+        raise
+    if isinstance(got, bytes):
+        if got:
+            line.host.write(got)
     else:
-        bridge = tr.PtyBridge(line.host)
-        print(f"camlab88 sigma: {args.model} on pty {bridge.slave_path}", flush=True)
-    if stream:
-        line.host.write(stream)
+        replay_into(got, line.host, ">")
     window = None
     if not args.headless:
         from emulator.window import Window
@@ -205,7 +264,9 @@ def run_command(args: argparse.Namespace) -> int:
     next_frame = Fraction(0)
     try:
         while True:
-            bridge.poll(timeout=0.0)
+            for ev in bridge.poll(timeout=0.0).events:
+                if ev.kind in ("error", "disconnected", "refused"):
+                    print(f"camlab88 sigma: {ev.kind}: {ev.detail}", file=sys.stderr, flush=True)
             term.feed(line.device.read())
             now = clock.exact
             if window is not None and now >= next_frame:
@@ -235,11 +296,15 @@ def run_command(args: argparse.Namespace) -> int:
 
 
 def _screenshot(window, term, path: Path) -> None:  # noqa: ANN001
-    if window is not None:
-        window.show(term.frame())
-        window.screenshot(path)
-    else:
-        write_png_atomic(term.frame(), path)
+    try:
+        if window is not None:
+            window.show(term.frame())
+            window.screenshot(path)
+        else:
+            write_png_atomic(term.frame(), path)
+    except OSError as exc:
+        raise SystemExit(f"camlab88 sigma run: cannot write {path}: "
+                         f"{exc.strerror or exc}") from None
     print(f"camlab88 sigma: screenshot {path}", flush=True)
 
 

@@ -1,8 +1,10 @@
 """What the monitor shows: the view of the drawing area, the LUT, alpha over it, the cursor.
 
 Display = graphics over alpha (reconstructed): alpha dots show where the graphics index is 0.
-The T5688 shows one quadrant of its 1536x1024 area, or all of it at half size by taking
-every other pixel and row (reconstructed: a video address counter stepping by two).
+The T5688 shows one quadrant of its 1536x1024 area, or all of it at half size, each screen
+pixel showing the highest (display-masked) index of its 2x2 block of the area
+(reconstructed: no source says how the hardware shrinks; taking every other pixel would lose
+half of all 1-pixel lines, the maximum keeps them and invents no colour).
 """
 
 from __future__ import annotations
@@ -32,8 +34,10 @@ def view_origin(model: Model, view: int) -> tuple[int, int, int]:
 def screen_indices(planes: np.ndarray, model: Model, view: int, display_mask: int) -> np.ndarray:
     """(512, 768) uint8 LUT indices on the screen, row 0 = bottom (device y up)."""
     x0, y0, step = view_origin(model, view)
-    p = planes[y0:y0 + SCREEN_H * step:step, x0:x0 + SCREEN_W * step:step]
-    return p & np.uint8(display_mask)
+    p = planes[y0:y0 + SCREEN_H * step, x0:x0 + SCREEN_W * step] & np.uint8(display_mask)
+    if step == 2:
+        p = p.reshape(SCREEN_H, 2, SCREEN_W, 2).max(axis=(1, 3))
+    return p
 
 
 def compose(t: Terminal) -> np.ndarray:

@@ -1,13 +1,23 @@
 """numba-compiled copies of protocol loops that dominate a vector-heavy stream.
 
 The protocol package defines the decoding once, in plain Python (protocols.sigma.abbreviated
-.scan_points); the device compiles that same function, so the two cannot differ.
+.scan_points); the device compiles that same function, so the two cannot differ. Compiled on
+first use, so that a run without abbreviated mode never imports numba.
 """
 
 from __future__ import annotations
 
-from numba import njit
+from typing import Any
 
 from protocols.sigma.abbreviated import scan_points
 
-scan_points_fast = njit(cache=True, nogil=True)(scan_points)
+_compiled: Any = None
+
+
+def scan_points_fast(buf: Any, start: int, state: Any, out: Any, k: int) -> tuple[int, int]:
+    global _compiled
+    if _compiled is None:
+        from numba import njit
+
+        _compiled = njit(cache=True, nogil=True)(scan_points)
+    return _compiled(buf, start, state, out, k)

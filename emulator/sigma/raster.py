@@ -3,24 +3,57 @@
 The plane store is a 2-D uint8 array indexed [y, x] with device y pointing up (row 0 is the
 bottom of the drawing area). Every write goes through the plane write mask:
 ``new = (old & ~wm) | (colour & wm)``. Pixels outside the store are clipped silently.
+
+The kernels are compiled lazily: importing this module does not import numba (about a
+quarter of a second); the first call of any kernel compiles (or loads from the numba cache)
+all of them, so a run that never draws never pays for numba.
 """
 
 from __future__ import annotations
 
+import threading
+from collections.abc import Callable
+from typing import Any
+
 import numpy as np
-from numba import njit
+
+_PY: dict[str, Callable[..., Any]] = {}  # kernel name -> plain Python definition, in order
+
+
+def _compile_all() -> None:
+    from numba import njit
+
+    g = globals()
+    for name, fn in _PY.items():  # callees first, so callers resolve them as compiled kernels
+        if name in g and getattr(g[name], "py_func", None) is fn and hasattr(g[name], "_lazy"):
+            g[name] = njit(cache=True, nogil=True)(fn)
+
+
+def _kernel(fn: Callable[..., Any]) -> Callable[..., Any]:
+    """Register a numba kernel; the module name is bound to a stub until the first call."""
+    _PY[fn.__name__] = fn
+
+    def first_call(*args: Any) -> Any:
+        _compile_all()
+        return globals()[fn.__name__](*args)
+
+    first_call.__name__ = fn.__name__
+    first_call.__doc__ = fn.__doc__
+    first_call.py_func = fn  # type: ignore[attr-defined]
+    first_call._lazy = True  # type: ignore[attr-defined]
+    return first_call
 
 FRACTION_BITS = 12  # the reconstructed DDA's fixed-point fraction (see firmware_line_points)
 HALF = 1 << (FRACTION_BITS - 1)
 
 
-@njit(cache=True, nogil=True)
+@_kernel
 def _put(pix, x, y, colour, wm):  # noqa: ANN001, ANN202 - numba kernel
     if 0 <= y < pix.shape[0] and 0 <= x < pix.shape[1]:
         pix[y, x] = (pix[y, x] & ~wm) | (colour & wm)
 
 
-@njit(cache=True, nogil=True)
+@_kernel
 def draw_line(pix, x0, y0, x1, y1, colour, wm, dash, dash_len, phase, skip_first):  # noqa: ANN001, ANN201
     """Reconstructed firmware vector: a 12-bit fixed-point DDA, not Bresenham.
 
@@ -67,7 +100,7 @@ def draw_line(pix, x0, y0, x1, y1, colour, wm, dash, dash_len, phase, skip_first
     return phase
 
 
-@njit(cache=True, nogil=True)
+@_kernel
 def draw_polyline(pix, xy, start_x, start_y, colour, wm, dash, dash_len, phase, continuing):  # noqa: ANN001, ANN201
     """Draw from (start_x, start_y) through every point of ``xy``; returns the dash phase."""
     px = start_x
@@ -114,7 +147,7 @@ def bresenham_points(x0: int, y0: int, x1: int, y1: int) -> list[tuple[int, int]
     return sorted(out)
 
 
-@njit(cache=True, nogil=True)
+@_kernel
 def fill_rect(pix, x0, y0, x1, y1, colour, wm):  # noqa: ANN001, ANN201
     """Solid block between two corners, inclusive, clipped."""
     if x0 > x1:
@@ -132,8 +165,8 @@ def fill_rect(pix, x0, y0, x1, y1, colour, wm):  # noqa: ANN001, ANN201
             pix[y, x] = (pix[y, x] & keep) | c
 
 
-@njit(cache=True, nogil=True)
-def boundary_fill(pix, sx, sy, colour, wm, boundary, rmask):  # noqa: ANN001, ANN201
+@_kernel
+def _boundary_fill(pix, sx, sy, colour, wm, boundary, rmask, blocked, stack):  # noqa: ANN001, ANN202, E501
     """Firmware flood fill: spread 4-connected from the seed until pixels whose read-masked
     value equals the boundary colour. Writes go through the write mask. Returns pixels set.
 
@@ -147,23 +180,19 @@ def boundary_fill(pix, sx, sy, colour, wm, boundary, rmask):  # noqa: ANN001, AN
     b = boundary & rmask
     if (pix[sy, sx] & rmask) == b:
         return 0
-    blocked = np.empty((h, w), dtype=np.uint8)
     for y in range(h):
         for x in range(w):
             blocked[y, x] = (pix[y, x] & rmask) == b
-    cap = 2 * h * w + 16  # each pixel is pushed at most twice (from the rows above, below)
-    stack_x = np.empty(cap, dtype=np.int32)
-    stack_y = np.empty(cap, dtype=np.int32)
-    stack_x[0] = sx
-    stack_y[0] = sy
+    cap = stack.shape[0]
+    stack[0] = sy * w + sx  # y * w + x: one int32 per entry
     top = 1
     keep = ~wm
     c = colour & wm
     count = 0
     while top > 0:
         top -= 1
-        x = stack_x[top]
-        y = stack_y[top]
+        y = stack[top] // w
+        x = stack[top] - y * w
         brow = blocked[y]
         if brow[x]:
             continue
@@ -188,14 +217,33 @@ def boundary_fill(pix, sx, sy, colour, wm, boundary, rmask):  # noqa: ANN001, AN
                     inrun = False
                 elif not inrun:
                     if top < cap:
-                        stack_x[top] = xi
-                        stack_y[top] = ny
+                        stack[top] = ny * w + xi
                         top += 1
                     inrun = True
     return count
 
 
-@njit(cache=True, nogil=True)
+_FILL_WORK: dict[tuple[int, int], tuple[np.ndarray, np.ndarray]] = {}
+_FILL_LOCK = threading.Lock()  # the shared buffers serve one fill at a time
+
+
+def boundary_fill(pix: np.ndarray, sx: int, sy: int, colour: int, wm: int, boundary: int,
+                  rmask: int) -> int:
+    """Firmware flood fill (see _boundary_fill). The work buffers — a blocked map and a stack
+    of 2 entries per pixel, about 14 MB on the T5688 — are allocated once per area size and
+    reused by every later fill, which the kernel fully re-initialises."""
+    h, w = pix.shape
+    with _FILL_LOCK:
+        work = _FILL_WORK.get((h, w))
+        if work is None:
+            # each pixel is pushed at most twice (from the rows above and below)
+            work = (np.empty((h, w), dtype=np.uint8), np.empty(2 * h * w + 16, dtype=np.int32))
+            _FILL_WORK[(h, w)] = work
+        return _boundary_fill(pix, int(sx), int(sy), int(colour), int(wm), int(boundary),
+                              int(rmask), work[0], work[1])
+
+
+@_kernel
 def dot_run(pix, x, y, colours, wm):  # noqa: ANN001, ANN201
     """DJ: one pixel per colour, advancing +X from (x, y); returns the next x."""
     for k in range(colours.shape[0]):

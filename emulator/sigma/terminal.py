@@ -29,6 +29,7 @@ from protocols.sigma import (
     GraphicsText,
     Order,
     Point,
+    Points,
     format_report,
 )
 from roms.sigma import load_font, load_lut
@@ -93,7 +94,7 @@ class Terminal:
     def _device_reset(self) -> None:
         m = self.model
         self.planes = np.zeros((m.area_h, m.area_w), dtype=np.uint8)  # [y, x], y up
-        self.lut = load_lut(m.name).copy()  # (entries, 3) uint8
+        self.lut = load_lut(m.name)  # (entries, 3) uint8, a fresh copy
         self.alpha = AlphaScreen()
         self.reg = Registers(write_mask=m.plane_mask, display_mask=m.plane_mask)
 
@@ -116,6 +117,8 @@ class Terminal:
                 self._ags_points(cmd)
             elif t is Point:
                 self._point(cmd.x, cmd.y)
+            elif t is Points:
+                self._points(cmd.xy)
             elif t is Order:
                 self._handlers[cmd.code](cmd.args)
             elif t is AlphaText:
@@ -162,6 +165,24 @@ class Terminal:
             self._line_to(x, y)
         else:
             self._move(x, y)
+
+    def _points(self, xy: np.ndarray) -> None:
+        """A run of NGS pairs: one polyline (pen down) or one move to the last (pen up)."""
+        r = self.reg
+        if r.block:  # the first pair is a block corner; the rest go on as usual
+            self._block(int(xy[0, 0]), int(xy[0, 1]))
+            xy = xy[1:]
+            if len(xy) == 0:
+                return
+        if not r.pen_down:
+            self._move(int(xy[-1, 0]), int(xy[-1, 1]))
+            return
+        dash, bits = self._dash
+        r.dash_phase = raster.draw_polyline(self.planes, xy, r.pen_x, r.pen_y, r.colour,
+                                            r.write_mask, dash, bits, r.dash_phase,
+                                            r.continuing)
+        self._move(int(xy[-1, 0]), int(xy[-1, 1]))
+        r.continuing = True
 
     def _block(self, x: int, y: int) -> None:
         r = self.reg
@@ -380,10 +401,10 @@ class Terminal:
                 self._report(TABLET_KEY)
 
     # ------------------------------------------------------------------ state
-    def save_state(self) -> bytes:
+    def save_state(self, compress: bool = True) -> bytes:
         from emulator.sigma.state import save
 
-        return save(self)
+        return save(self, compress)
 
     def load_state(self, data: bytes) -> None:
         from emulator.sigma.state import load

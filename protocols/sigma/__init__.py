@@ -13,6 +13,7 @@ from protocols.sigma.commands import (
     GraphicsText,
     Order,
     Point,
+    Points,
 )
 from protocols.sigma.cursor import CursorReport, format_report, parse_report
 from protocols.sigma.decoder import Decoder
@@ -22,5 +23,5 @@ from protocols.sigma.orders import ORDERS, OrderSpec
 __all__ = [
     "ORDERS", "AgsEnd", "AgsEscape", "AgsPoints", "AlphaText", "Command", "CursorReport",
     "DecoderStats", "Decoder", "Dots", "DotsEnd", "Encoder", "GraphicsFlag", "GraphicsText",
-    "Order", "OrderSpec", "Point", "format_report", "parse_report",
+    "Order", "OrderSpec", "Point", "Points", "format_report", "parse_report",
 ]

@@ -29,6 +29,17 @@ class Point:
 
 
 @dataclass(frozen=True, slots=True, eq=False)
+class Points:
+    """A run of two or more bare NGS pairs, (n, 2) int32 device x, y (excess-100 removed);
+    each moves or draws by the pen state exactly as the same Points one by one would."""
+
+    xy: np.ndarray
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Points) and np.array_equal(self.xy, other.xy)
+
+
+@dataclass(frozen=True, slots=True, eq=False)
 class AgsPoints:
     """Consecutive abbreviated-mode points, (n, 2) int32 device x, y.
 
@@ -82,7 +93,7 @@ class AlphaText:
     data: bytes
 
 
-Command = (Order | GraphicsFlag | Point | AgsPoints | AgsEnd | AgsEscape | Dots | DotsEnd
+Command = (Order | GraphicsFlag | Point | Points | AgsPoints | AgsEnd | AgsEscape | Dots | DotsEnd
            | GraphicsText | AlphaText)
 
 

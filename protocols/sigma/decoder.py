@@ -3,7 +3,8 @@
 It never raises on any input: unknown orders and stray bytes are skipped and counted, a
 parameter interrupted by a non-digit is dropped (counted as malformed) and the interrupting
 byte is decoded afresh, so the decoder resynchronises at the next order. Everything it holds
-between feeds is bounded (a partial order, a partial AGS point, at most MAX_TEXT text bytes).
+between feeds is bounded (a partial order, a partial AGS point, at most MAX_TEXT text bytes,
+one held DJ letter) and can be saved and restored (get_state / set_state).
 """
 
 from __future__ import annotations
@@ -27,6 +28,7 @@ from protocols.sigma.commands import (
     GraphicsText,
     Order,
     Point,
+    Points,
 )
 from protocols.sigma.orders import (
     BY_CODE,
@@ -42,6 +44,7 @@ from protocols.sigma.orders import (
 )
 
 _DIGITS = re.compile(rb"[0-9]+")
+_TENS = np.array((1000, 100, 10, 1), dtype=np.int32)
 _IGNORED_IN_GRAPHICS = frozenset({0x00, CR, LF, 0x11, 0x13, 0x20, 0x7F})
 
 AgsScanner = Callable[[np.ndarray, int, np.ndarray, np.ndarray, int], tuple[int, int]]
@@ -82,6 +85,31 @@ class Decoder:
         self._esc: list[int] | None = None  # ESC letter + params being read in AGS
         self._text = bytearray()
         self._text_over = False
+        self._dots_hold = -1  # a last dot A-F held back: with the next letter it may be an order
+
+    # ------------------------------------------------------------------ state
+    def get_state(self) -> dict[str, object]:
+        """Everything the decoder holds between feeds, as JSON-able values (see set_state)."""
+        s = self.stats
+        return {
+            "mode": self.mode.value, "coord_digits": self.coord_digits, "gh": self.gh,
+            "line_start": self._line_start, "flag_k": self._flag_k, "letter": self._letter,
+            "spec": None if self._spec is None else self._spec.code,
+            "field_i": self._field_i, "digits_left": self._digits_left, "value": self._value,
+            "args": list(self._args), "pair": list(self._pair),
+            "ags": [int(v) for v in self._ags_state], "ags_first": self._ags_first,
+            "esc": None if self._esc is None else list(self._esc),
+            "text": self._text.decode("latin-1"), "text_over": self._text_over,
+            "dots_hold": self._dots_hold,
+            "stats": {"unknown": s.unknown, "malformed": s.malformed, "bytes_in": s.bytes_in,
+                      "commands": s.commands, "unknown_codes": dict(s.unknown_codes)},
+        }
+
+    def set_state(self, state: dict[str, object]) -> None:
+        """Restore get_state()'s dict; ValueError naming the first bad or unknown entry."""
+        from protocols.sigma.decoder_state import restore
+
+        restore(self, state)
 
     # ------------------------------------------------------------------ public
     def feed(self, data: bytes | bytearray | memoryview) -> list[Command]:
@@ -160,8 +188,12 @@ class Decoder:
         j = m.end()
         w = self.coord_digits
         whole = (j - i) // (2 * w) * (2 * w)
-        for k in range(i, i + whole, 2 * w):
-            out.append(Point(int(data[k:k + w]) - 100, int(data[k + w:k + 2 * w]) - 100))
+        if whole == 2 * w:
+            out.append(Point(int(data[i:i + w]) - 100, int(data[i + w:i + 2 * w]) - 100))
+        elif whole:  # a run: all its digits at once
+            d = np.frombuffer(data, dtype=np.uint8, count=whole, offset=i).reshape(-1, 2, w)
+            xy = (d.astype(np.int32) - 0x30) @ _TENS[4 - w:] - 100
+            out.append(Points(xy))
         for b in data[i + whole:j]:  # a pair cut by the end of the feed or by a non-digit
             self._pair_byte(b, out)
         return j
@@ -327,14 +359,32 @@ class Decoder:
 
     # ------------------------------------------------------------------ DJ dots
     def _dots(self, data: bytes, i: int, out: list[Command]) -> int:
+        """One hex digit per pixel until Z or another byte. A dot A-F followed at once by a
+        letter that is not a hex digit, the two forming an order (``DJ12BH``: BH), is taken
+        as that order: it ends dot plotting. Pairs of two hex letters (``FA``, ``CA``...) are
+        always dots — hosts end DJ with Z before such orders."""
         n = len(data)
         px = bytearray()
+        hold = self._dots_hold
         while i < n:
             b = data[i]
+            if hold >= 0:
+                self._dots_hold = -1
+                if digit_value(Kind.HEX, b) < 0 and bytes((hold, b)) in BY_CODE:
+                    if px:
+                        out.append(Dots(bytes(px)))
+                    self.mode = Mode.NGS
+                    self._letter = hold  # b completes the order in NGS
+                    return i
+                px.append(digit_value(Kind.HEX, hold))
+                hold = -1
             d = digit_value(Kind.HEX, b)
             if d >= 0:
-                px.append(d)
                 i += 1
+                if b >= 0x41 and b in FIRST_LETTERS:  # may start an order: decide on the next
+                    hold = b
+                    continue
+                px.append(d)
                 continue
             if px:
                 out.append(Dots(bytes(px)))
@@ -350,6 +400,7 @@ class Decoder:
             return i
         if px:
             out.append(Dots(bytes(px)))
+        self._dots_hold = hold
         return i
 
     # ------------------------------------------------------------------ BA text

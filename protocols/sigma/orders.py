@@ -66,7 +66,7 @@ ORDERS: tuple[OrderSpec, ...] = (
     # --- mode, initialisation, screen (facts/sigma.md 5.1)
     OrderSpec("BH", "alpha_mode", (), "return to alpha mode", "FACT S1 S3", Mode.ALPHA),
     OrderSpec("HH", "reset", (), "initialise incl. clear screen (host then sends 10 NULs)",
-              "FACT S2"),
+              "FACT S2; LUT reload RECONSTRUCTED"),
     OrderSpec("DD", "sequence_length", (_d("value", 3),),
               "DD000: allow any length graphics sequences", "FACT S1 S2"),
     OrderSpec("DG", "xon_char", (_d("char", 3),), "set the XON character (DG017)",
@@ -115,11 +115,11 @@ ORDERS: tuple[OrderSpec, ...] = (
     OrderSpec("JK", "fill", (_h("boundary", 1),),
               "boundary flood fill from the pen in the drawing colour", "FACT S6; meaning brief"),
     OrderSpec("JO", "ellipse_ratio", (_d("ratio", 3),), "ellipse shape: 256*major/minor + 100",
-              "FACT S6"),
+              "FACT S6 bytes; meaning INFERENCE"),
     OrderSpec("JM", "ellipse", (_d("size", 4),), "outline ellipse at the pen: 10*(a + 100)",
-              "FACT S6"),
+              "FACT S6 bytes; meaning INFERENCE"),
     OrderSpec("JN", "ellipse_solid", (_d("size", 4),), "solid ellipse at the pen: 10*(a + 100)",
-              "FACT S6"),
+              "FACT S6 bytes; meaning INFERENCE"),
     # --- abbreviated mode (5.4)
     OrderSpec("JH", "abbreviated", (), "enter abbreviated graphics mode (AGS) until US",
               "FACT S3", Mode.AGS),

@@ -43,7 +43,14 @@ def parse_lut(text: str, path: Path, entries: int) -> np.ndarray:
     return lut
 
 
+_LOADED: dict[str, np.ndarray] = {}
+
+
 def load_lut(model: str) -> np.ndarray:
-    entries = {"t5684": 16, "t5688": 256}[model]
-    p = HERE / f"{model}.lut"
-    return parse_lut(p.read_text(encoding="ascii"), p, entries)
+    """The model's power-on LUT, parsed once per process (a T5688's takes ~1 ms to parse,
+    paid at every power-on and HH otherwise). A fresh copy each call: callers change it."""
+    if model not in _LOADED:
+        entries = {"t5684": 16, "t5688": 256}[model]
+        p = HERE / f"{model}.lut"
+        _LOADED[model] = parse_lut(p.read_text(encoding="ascii"), p, entries)
+    return _LOADED[model].copy()

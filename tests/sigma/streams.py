@@ -7,8 +7,8 @@ import math
 from protocols.sigma.drivers import PgplotGoc, RalGks
 
 
-def pgplot_plot() -> bytes:
-    """A PGPLOT-style graph: frame, ticks, a sine curve, markers as dots, erase colour."""
+def pgplot_session() -> tuple[bytes, bytes, bytes]:
+    """(the graph, the cursor prompt PGPLOT sends to read the cursor, what it sends after)."""
     g = PgplotGoc()
     g.init()
     g.erase()
@@ -25,9 +25,17 @@ def pgplot_plot() -> bytes:
     g.colour(0)
     g.line(80, 270, 700, 270)  # erase a line through the curve
     g.colour(1)
-    g.cursor_prompt(300, 300)
+    prompt = g.cursor_prompt(300, 300)  # flushes the graph first
+    plot = bytes(g.out)
     g.after_cursor()
-    return g.finish()
+    return plot, prompt, g.finish()[len(plot):]
+
+
+def pgplot_plot() -> bytes:
+    """A PGPLOT-style graph: frame, ticks, a sine curve, markers as dots, erase colour (the
+    cursor read left out: the golden images are of the drawing)."""
+    plot, _prompt, after = pgplot_session()
+    return plot + after
 
 
 def gks_plot(high_res: bool = False) -> bytes:

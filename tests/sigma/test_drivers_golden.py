@@ -7,7 +7,7 @@ import pytest
 
 from emulator.sigma import Terminal
 from tests.sigma.helpers import DATA
-from tests.sigma.streams import gks_plot, pgplot_plot
+from tests.sigma.streams import gks_plot, pgplot_plot, pgplot_session
 from tests.support.golden import assert_matches_golden
 
 
@@ -18,6 +18,24 @@ def test_pgplot_goc_stream(model: str) -> None:
     t = Terminal(model)
     t.feed(data)
     assert t.stats["unknown"] == 0 and t.stats["malformed"] == 0
+    assert_matches_golden(t.frame(), DATA / f"golden_pgplot_{model}.png")
+
+
+@pytest.mark.parametrize("model", ["t5684", "t5688"])
+def test_pgplot_cursor_prompt_is_answered(model: str) -> None:
+    plot, prompt, after = pgplot_session()
+    assert prompt == b"+-*/GICECA400400CFHF"
+    t = Terminal(model)
+    sent: list[bytes] = []
+    t.on_output = sent.append
+    t.feed(plot + prompt)
+    assert t.reg.cursor_on and t.reg.cursor_report
+    assert (t.reg.cursor_x, t.reg.cursor_y) == (300, 300)  # CE attached it to the pen
+    t.cursor_keys(5, -2)
+    t.key("A")
+    assert sent == [b"A305,298\r"]
+    t.feed(after)
+    assert not t.reg.cursor_on and t.stats["unknown"] == t.stats["malformed"] == 0
     assert_matches_golden(t.frame(), DATA / f"golden_pgplot_{model}.png")
 
 

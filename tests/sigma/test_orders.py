@@ -5,7 +5,9 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import numpy as np
+import pytest
 
+from emulator.sigma import Terminal
 from protocols.sigma import ORDERS
 from tests.sigma.helpers import FLAG, enc, graphics, lit, run
 
@@ -183,6 +185,24 @@ def test_dj_dot_plotting() -> None:
     assert t.planes[7, 5:9].tolist() == [1, 0, 15, 3]  # CR LF inside a run are ignored
 
 
+@pytest.mark.parametrize("split", range(1, 9))
+def test_dj_without_z_ends_at_an_order(split: int) -> None:
+    """A dot A-F and a following non-hex letter that form an order end DJ: DJ12BH is two dots
+    and BH, wherever the feed is split; two hex letters (FA, CA...) are always dots."""
+    data = E.move(5, 7) + b"DJ12BH"
+    t = Terminal("t5684")
+    t.feed(FLAG + data[:split])
+    t.feed(data[split:])
+    assert t.planes[7, 5:8].tolist() == [1, 2, 0]
+    assert t.decoder.mode.value == "alpha" and t.stats["unknown"] == 0
+    t = graphics(E.move(5, 7) + b"DJ3FAEK924GJ" + E.pair(20, 7))
+    assert t.planes[7, 5:8].tolist() == [3, 15, 10]  # FA dots; E+K is the order EK
+    assert t.reg.dash_mask == 0x924 and t.reg.dash_bits == 12
+    assert t.planes[7, 8:21].tolist() == [1] * 13  # and GJ draws on from the pen at x = 8
+    t = graphics(E.move(5, 7) + b"DJ1C2Z")
+    assert t.planes[7, 5:8].tolist() == [1, 12, 2]  # C followed by a digit is a dot
+
+
 @covers("JK", "KK")
 def test_fill_orders() -> None:
     square = E.polyline([(10, 10), (30, 10), (30, 30), (10, 30), (10, 10)])
@@ -267,6 +287,26 @@ def test_t5688_quadrants_and_half_size() -> None:
     assert f[511 - 300, 400].tolist() == t.lut[2].tolist()  # (800, 600) / 2
     t4 = graphics(b"KQ3")
     assert t4.stats["errors"] == 1  # a T5684 has no quadrants
+
+
+def test_t5688_half_size_keeps_one_pixel_lines() -> None:
+    """Each screen pixel of KQ4 shows the highest index of its 2x2 block: thin lines on odd
+    rows and columns stay visible, and no colour is invented."""
+    e8 = enc("t5688")
+    lines = e8.coords4() + e8.colour(3)
+    for k in range(8):  # horizontal and vertical 1-pixel lines on even and odd rows/columns
+        lines += e8.polyline([(100, 201 + k), (1400, 201 + k)]) if k % 2 else b""
+        lines += e8.polyline([(301 + k, 50), (301 + k, 950)]) if k % 2 == 0 else b""
+    t = graphics(lines + e8.colour(5) + e8.polyline([(11, 11), (11, 11)]) + e8.view(4),
+                 model="t5688")
+    idx = t.indices()
+    for k in range(8):
+        if k % 2:
+            assert (idx[(201 + k) // 2, 50:700] == 3).all(), f"row {201 + k} vanished"
+        else:
+            assert (idx[25:475, (301 + k) // 2] == 3).all(), f"column {301 + k} vanished"
+    assert idx[5, 5] == 5  # a single odd pixel survives
+    assert set(np.unique(idx).tolist()) <= {0, 3, 5}
 
 
 def test_every_order_has_a_behaviour_test() -> None:
