@@ -8,8 +8,9 @@ other balls are ignored, exactly as the thesis says.
   handled exactly: with restitution e a bounce maps the normal velocity vn to -e vn, so the
   unfolded path is a straight line to the target's image under the maps that send a
   point's signed distance s from each cushion line to -s/e (plain mirror images when
-  e = 1).  The speed is then solved on the real speed curve -- held for each 1/25 s,
-  restarted at every bounce -- by bisection, so simulating the shot reproduces it.
+  e = 1).  The speed is then solved on the real speed curve -- held for each 1/25 s; at a
+  bounce the ball stays at the same point of its curve, the curve rescaled by the bounce's
+  speed ratio (as physics._bounce does) -- by bisection, so simulating the shot reproduces it.
 """
 
 from __future__ import annotations

@@ -5,7 +5,9 @@ Time frame n is at exactly n / frame_rate seconds.  An event frame belongs after
 frame it follows (`index`), so the merged sequence is ordered by (index, time frame first,
 then events in the order they happened).  Every frame carries the rules state too, so
 stepping back shows a consistent score, and simulation can restart from any frame: the
-later frames become invalid but are kept (`invalid`) so they can be recovered.
+later frames become invalid but are kept (`invalid`) so they can be recovered (§5.2.2
+says invalid frames may be recovered from a checkpoint or by re-simulating; keeping them
+in memory is ours).
 Everything is deterministic: the same edits give bit-identical frames.
 """
 

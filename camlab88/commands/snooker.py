@@ -160,7 +160,8 @@ def _window_options(p: argparse.ArgumentParser, events: bool = True) -> None:
                        help="scripted mouse/keyboard input (apps/snooker/program/"
                        "script_events.py: move, glide, press, release, key, type, wait)")
         p.add_argument("--save", metavar="SESSION",
-                       help="where 'Exit from the program' saves (default: SESSION)")
+                       help="where 'Exit from the program' saves (default: SESSION; "
+                       "with neither, Exit asks for a file name)")
     p.add_argument("--frames", type=int, metavar="N", help="stop after N display frames")
     p.add_argument("--screenshot", metavar="PNG", help="save the screen at the end and exit")
     p.add_argument("--scale", type=int, default=1, help="window scale (default 1)")

@@ -18,11 +18,12 @@ from tests.snooker_program.helpers import hex_rgb
 def test_play_headless_with_events_screenshot_and_exit_save(tmp_path, capsys):
     events = tmp_path / "s.events"
     # velocity by keyboard on the cue ball, run, then Exit (green menu, up one) and save
+    # time frames 1..3 of the checkpoint (the session file keeps everything)
     events.write_text(
         "move 175 325\npress middle\nglide 175 250 25\nwait 1\nrelease middle\nwait 1\n"
         "type 1 0\nkey return\nwait 1\npress right\nrelease right\nwait 10\n"
         "move 300 430\nwait 1\npress middle\nglide 300 412 6\nwait 1\nrelease middle\n"
-        "wait 1\nkey y\nwait 1\n")
+        "wait 1\nkey y\nwait 1\ntype 1 3\nkey return\nwait 1\n")
     shot, save = tmp_path / "shot.png", tmp_path / "game.json"
     assert main(["snooker", "play", "--headless", "--events", str(events),
                  "--screenshot", str(shot), "--save", str(save)]) == 0
@@ -31,6 +32,7 @@ def test_play_headless_with_events_screenshot_and_exit_save(tmp_path, capsys):
     s = Session.load(save)
     assert len(s.timeline.time_frames) == 6  # 10 display frames of running = 5 time frames
     assert s.timeline.time_frames[0].balls.vel[CUE] == pytest.approx((1.0, 0.0))
+    assert checkpoint.read(save.with_suffix(".cp")).n_frames == 3
     img = np.asarray(Image.open(shot).convert("RGB"))
     assert img.shape == (576, 768, 3)
     assert (img == hex_rgb(pads.TABLE_COLOURS[pads.CLOTH])).all(axis=-1).sum() > 100_000

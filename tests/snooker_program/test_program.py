@@ -7,6 +7,7 @@ import math
 import numpy as np
 import pytest
 
+from apps.snooker import checkpoint
 from apps.snooker.program import menus, pads
 from apps.snooker.program.program import MAGNIFY, WARN_COLOUR, Program
 from apps.snooker.session import Session
@@ -160,7 +161,7 @@ def test_start_new_or_restore_and_exit_saves(rainbow, tmp_path):
     assert np.array_equal(p.session.balls.pos, saved.balls.pos)
     p.session.strike(CUE, 0.5, 0.0)
     p.mode = "exit"
-    feed(rainbow, p, "key y\nwait 1")
+    feed(rainbow, p, "key y\nwait 1\nkey return\nwait 1")  # Return: all the frames
     assert p.done and (tmp_path / "game.cp").exists()
     again = Session.load(path)
     assert again.balls.vel[CUE] == pytest.approx((0.5, 0.0))
@@ -184,3 +185,63 @@ def test_a_refused_change_is_reported_not_fatal(rainbow, prog):
     feed(rainbow, prog, "type 99 0\nkey return\nwait 1")  # faster than the table allows
     assert prog.help_colour == WARN_COLOUR and "max_speed" in prog.help_text
     assert prog.session.balls.vel[BLUE] == pytest.approx((0.5, 0.0))
+
+
+def test_exit_without_a_file_asks_for_one_and_a_frame_range(rainbow, tmp_path, monkeypatch):
+    # §6.2.2: on leaving, save "either the complete sequence or a subset of frames"
+    monkeypatch.chdir(tmp_path)
+    p = Program(rainbow.client)  # no SESSION, no --save
+    p.session.strike(CUE, 1.0, 10.0)
+    for _ in range(8):
+        p.session.simulate_frame()
+    n = len(p.session.timeline.time_frames)
+    assert n > 6
+    p.mode = "exit"
+    feed(rainbow, p, "key y\nwait 1")
+    assert not p.done and p.mode == "keys:exit_file"
+    feed(rainbow, p, "key return\nwait 1")  # an empty name is refused, asked again
+    assert not p.done and p.mode == "keys:exit_file" and p.help_colour == WARN_COLOUR
+    feed(rainbow, p, "type shot.json\nkey return\nwait 1")
+    assert not p.done and p.mode == "keys:exit_range" and f"0..{n - 1}" in p.help_text
+    feed(rainbow, p, f"type 2 {n + 5}\nkey return\nwait 1")  # out of range: asked again
+    assert not p.done and p.mode == "keys:exit_range" and p.help_colour == WARN_COLOUR
+    feed(rainbow, p, "type 2 5\nkey return\nwait 1")
+    assert p.done
+    assert [q.resolve() for q in p.saved] == [tmp_path / "shot.json", tmp_path / "shot.cp"]
+    cp = checkpoint.read(tmp_path / "shot.cp")
+    assert cp.n_frames == 4
+    assert np.array_equal(cp.positions, p.session.checkpoint(2, 5).positions)
+    assert Session.load(tmp_path / "shot.json").frame_number == p.session.frame_number
+
+
+def test_exit_with_a_known_file_saves_all_frames_by_default(rainbow, tmp_path):
+    p = Program(rainbow.client, save_to=tmp_path / "game.json")
+    p.session.strike(CUE, 1.0, 10.0)
+    for _ in range(5):
+        p.session.simulate_frame()
+    p.mode = "exit"
+    feed(rainbow, p, "key y\nwait 1")
+    assert p.mode == "keys:exit_range"  # the file is known: only the range is asked
+    feed(rainbow, p, "key return\nwait 1")
+    assert p.done
+    cp = checkpoint.read(tmp_path / "game.cp")
+    assert np.array_equal(cp.positions, p.session.checkpoint().positions)
+
+
+def test_exit_to_an_unwritable_place_is_reported_not_fatal(rainbow, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    p = Program(rainbow.client)
+    p.mode = "exit"
+    feed(rainbow, p, "key y\nwait 1\ntype nodir/x.json\nkey return\nwait 1\nkey return\nwait 1")
+    assert not p.done and p.mode == "idle" and p.help_colour == WARN_COLOUR
+    assert "nodir" in p.help_text and p.save_to is None
+
+
+def test_exit_to_a_cp_name_keeps_session_and_checkpoint_apart(rainbow, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    p = Program(rainbow.client)
+    p.mode = "exit"
+    feed(rainbow, p, "key y\nwait 1\ntype run.cp\nkey return\nwait 1\nkey return\nwait 1")
+    assert p.done
+    assert Session.load(tmp_path / "run.json").frame_number == 0
+    assert checkpoint.read(tmp_path / "run.cp").n_frames == 1

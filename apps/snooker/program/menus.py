@@ -4,6 +4,8 @@ Green (no ball selected) and orange (a ball selected; it scrolls). Every item ha
 pastel highlight colour, unique across both menus, which is also the background of the
 message shown after the item is chosen (§6.2.1: "a pink message appears rather than a deep
 green one"): position changes are pink, velocity changes green.
+The item texts are the thesis's own, unabridged; the menu is as wide as its longest item
+(the longest orange item, 104 characters, makes it 640 of the screen's 768 pixels).
 """
 
 from __future__ import annotations
@@ -17,13 +19,14 @@ DO_NOTHING = "Do nothing"
 REPLAY = "Replay sequence at full speed"
 CUE_VELOCITY = "Change the cueball's velocity"
 
-POSITION_KEYS = "Change ball's position (keyboard)"
-VELOCITY_KEYS = "Change ball's velocity (keyboard)"
+POSITION_KEYS = "Change ball's position (by entering coordinates via the keyboard)"
+VELOCITY_KEYS = "Change ball's velocity (using keyboard)"
 STOP_ALL = "Stop all balls moving"
 AIM_NEXT = "Aim to set up next shot"
 AIM_POT = "Aim to pot this ball"
-POSITION_MOUSE = "Change ball's position (mouse)"
-VELOCITY_MOUSE = "Change ball's velocity (mouse arrow)"
+POSITION_MOUSE = "Change ball's position (by indicating new position using the mouse)"
+VELOCITY_MOUSE = ("Change ball's velocity (by using the mouse to specify an arrow representing"
+                  " the magnitude and direction)")
 
 GREEN_ITEMS = [ALTER_FRAME, EXIT, DO_NOTHING, REPLAY, CUE_VELOCITY]
 ORANGE_ITEMS = [POSITION_KEYS, VELOCITY_KEYS, STOP_ALL, AIM_NEXT, AIM_POT, DO_NOTHING,

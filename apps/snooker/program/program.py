@@ -42,6 +42,7 @@ from protocols.rainbow.events import LEFT, MIDDLE, Event, KeyEvent, MouseEvent
 MAGNIFY = 4  # left button: mouse movement x4 (§6.2.1)
 REPEAT_DELAY, REPEAT_EVERY = 12, 2  # auto-repeat in display frames
 UNIT_SWITCH_PX = 16  # mouse travel that switches frame <-> event stepping
+MAX_TEXT = 60  # keyboard entry fits the help area
 HELP_COLOUR = "#e8e8e8"
 WARN_COLOUR = "#ffb0b0"
 START_HELP = ("Middle button: menu of options (over a ball: the ball's menu).\n"
@@ -83,6 +84,7 @@ class Program:
         self.ticks = 0
         self.done = False
         self.saved: list[Path] = []
+        self.exit_path: Path | None = None  # a file name typed on Exit, until it is written
         self._status_key: object = None
         if restore is not None:
             self.mode = "start"
@@ -254,9 +256,13 @@ class Program:
             return
         if self.mode == "exit":
             if name in ("y", "n"):
-                if name == "y":
-                    self.save()
-                self.done = True
+                if name == "n":
+                    self.done = True
+                elif self.save_to is None:
+                    self.ask("exit_file", "Save to which file? (the session; the checkpoint is "
+                             "written beside it\nas NAME.cp)  Escape = stay in the program:")
+                else:
+                    self.ask_save_range()
             elif name == "escape":
                 self.mode = "idle"
                 self.say(START_HELP, HELP_COLOUR)
@@ -276,7 +282,7 @@ class Program:
             self.say("Cancelled.", HELP_COLOUR)
         elif name == "backspace":
             self.text = self.text[:-1]
-        elif char and char.isprintable() and len(self.text) < 60:
+        elif char and char.isprintable() and len(self.text) < MAX_TEXT:
             self.text += char
         if self.mode.startswith("keys:"):
             self.help_text = f"{self.prompt}\n> {self.text}_"
@@ -318,8 +324,8 @@ class Program:
                      colour)
         elif item == menus.EXIT:
             self.mode = "exit"
-            where = str(self.save_to) if self.save_to else "(no file given)"
-            self.say(f"Exit: y = save the session to {where} and leave,\n"
+            where = str(self.save_to) if self.save_to else "a file you name"
+            self.say(f"Exit: y = save (all or some frames) to {where} and leave,\n"
                      "n = leave without saving, escape = stay.", colour)
         elif item == menus.REPLAY:
             self.ask("replay", "Replay at 25 frames/s: first and last frame (Return = all):")
@@ -365,13 +371,15 @@ class Program:
                 "position": menus.HIGHLIGHT[menus.POSITION_KEYS],
                 "velocity": menus.HIGHLIGHT[menus.VELOCITY_KEYS],
                 "aim_speed": menus.HIGHLIGHT[menus.AIM_NEXT],
-                "aim_cushions": menus.HIGHLIGHT[menus.AIM_NEXT]}.get(purpose)
+                "aim_cushions": menus.HIGHLIGHT[menus.AIM_NEXT],
+                "exit_file": menus.HIGHLIGHT[menus.EXIT],
+                "exit_range": menus.HIGHLIGHT[menus.EXIT]}.get(purpose)
 
     def entered(self, purpose: str, text: str) -> None:
         colour = self.help_colour
         try:
             nums = [float(v) for v in text.replace(",", " ").split()] \
-                if purpose not in ("aim_cushions",) else []
+                if purpose not in ("aim_cushions", "exit_file") else []
         except ValueError:
             self.say(f"Not numbers: {text!r}. Try again.", WARN_COLOUR)
             self.mode = "keys:" + purpose
@@ -408,9 +416,35 @@ class Program:
                          "top baulk;\nReturn = none):")
             elif purpose == "aim_cushions":
                 self.aim_next(tuple(text.lower().split()))
+            elif purpose == "exit_file":
+                if not text:
+                    self.ask("exit_file", self.prompt)
+                    self.help_colour = WARN_COLOUR
+                    return
+                self.exit_path = Path(text)
+                self.ask_save_range()
+            elif purpose == "exit_range":
+                n = len(self.session.timeline.time_frames)
+                first, last = (0, n - 1) if not nums else (int(nums[0]), int(nums[-1]))
+                if len(nums) not in (0, 2) or not 0 <= first <= last < n:
+                    self.ask("exit_range", self.prompt)
+                    self.help_colour = WARN_COLOUR
+                    return
+                self.save(first, last)
+                self.done = True
         except (SessionError, aiming.AimError, ValueError) as exc:
             self.mode = "idle"
             self.say(f"Not done: {exc}", WARN_COLOUR)
+        except OSError as exc:  # saving on Exit: stay in the program, nothing is lost
+            self.mode = "idle"
+            self.exit_path = None
+            self.say(f"Not saved: {exc.strerror}: {exc.filename}", WARN_COLOUR)
+
+    def ask_save_range(self) -> None:
+        """§6.2.2: the animator saves "either the complete sequence or a subset of frames"."""
+        n = len(self.session.timeline.time_frames)
+        self.ask("exit_range", f"Frames to save in the checkpoint: first last\n"
+                 f"(Return = all, 0..{n - 1}):")
 
     # ------------------------------------------------------------------ actions
     def start(self, restore: bool) -> None:
@@ -500,13 +534,19 @@ class Program:
         self.mode = "idle"
         self.say("Old velocity kept.", HELP_COLOUR)
 
-    def save(self) -> None:
-        if self.save_to is None:
+    def save(self, first: int = 0, last: int | None = None) -> None:
+        """Write the session (all of it, to continue later) and time frames first..last of
+        the checkpoint beside it; a name typed on Exit becomes the file from then on."""
+        target = self.exit_path or self.save_to
+        if target is None:
             return
-        self.session.save(self.save_to)
-        cp = self.save_to.with_suffix(".cp")
-        self.session.checkpoint().write(cp)
-        self.saved = [self.save_to, cp]
+        if target.suffix == ".cp":  # never let the checkpoint overwrite the session file
+            target = target.with_suffix(".json")
+        self.session.save(target)
+        cp = target.with_suffix(".cp")
+        self.session.checkpoint(first, last).write(cp)
+        self.save_to, self.exit_path = target, None
+        self.saved = [target, cp]
 
     # ------------------------------------------------------------------ display
     @property
