@@ -9,10 +9,11 @@ from __future__ import annotations
 
 import os
 import re
-import tempfile
 from dataclasses import dataclass, field
 
 import numpy as np
+
+from protocols import atomicfile
 
 NATIVE_MAGIC = "CAMLAB88-CA-PATTERN 1"
 MAX_RLE_STATE = 255
@@ -98,19 +99,7 @@ class Pattern:
 
 def write_atomic(path: str | os.PathLike, text: str) -> None:
     """Write ``text`` so readers see the old file or the new one, never half of one."""
-    path = os.fspath(path)
-    folder = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(prefix=".tmp-", dir=folder)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as f:
-            f.write(text)
-            f.flush()
-            os.fsync(f.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
+    atomicfile.write_atomic(path, text)
 
 
 def format_of(path: str) -> str:

@@ -139,8 +139,6 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def _write_png(engine, path: str, zoom: int, monochrome: bool) -> None:
-    import os
-    import tempfile
 
     from PIL import Image
 
@@ -156,11 +154,10 @@ def _write_png(engine, path: str, zoom: int, monochrome: bool) -> None:
         rect = Rect(max(0, box.x0 - pad), max(0, box.y0 - pad), min(SIDE - 1, box.x1 + pad),
                     min(SIDE - 1, box.y1 + pad))
     img = render(engine, rect, max(1, zoom), monochrome)
-    folder = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(suffix=".png", dir=folder)
-    os.close(fd)
-    Image.fromarray(img).save(tmp)
-    os.replace(tmp, path)
+    from protocols.atomicfile import atomic_output
+
+    with atomic_output(path) as fh:
+        Image.fromarray(img).save(fh, format="PNG")
 
 
 def _convert(args: argparse.Namespace) -> int:

@@ -3,9 +3,7 @@
 from __future__ import annotations
 
 import argparse
-import os
 import sys
-import tempfile
 from fractions import Fraction
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -65,26 +63,12 @@ def write_png_atomic(frame: np.ndarray, path: Path) -> None:
     """Write an (h, w, 3) uint8 frame as PNG: temp file in the same directory, fsync, replace."""
     from PIL import Image
 
+    from protocols.atomicfile import atomic_output
+
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-    try:
-        with os.fdopen(fd, "wb") as f:
-            Image.fromarray(frame).save(f, format="PNG")
-            f.flush()
-            os.fsync(f.fileno())
-        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes a private file; a picture is not
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
-
-
-def _umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
+    with atomic_output(path) as f:
+        Image.fromarray(frame).save(f, format="PNG")
 
 
 def _write_png(frame: np.ndarray, path: Path, command: str) -> None:
