@@ -245,13 +245,13 @@ def run_program(opts, steps: list, frames: int | None, headless: bool = True,
 
     def frame() -> None:
         if window is not None:
-            from camlab88.commands.rainbow import _mouse_or_key
+            from camlab88.commands.rainbow import host_to_rainbow_event
             from emulator.host_input import Quit
 
             for ev in window.poll():
                 if isinstance(ev, Quit):
                     quit_[0] = True
-                dev = _mouse_or_key(ev, held)
+                dev = host_to_rainbow_event(ev, held)
                 if dev is not None:
                     session.inject(dev)
         program.frame()

@@ -123,7 +123,7 @@ def _serve(args: argparse.Namespace) -> int:
         for ev in window.poll():
             if isinstance(ev, Quit):
                 raise KeyboardInterrupt
-            dev = _mouse_or_key(ev, buttons)
+            dev = host_to_rainbow_event(ev, buttons)
             if dev is not None:
                 device.post_event(dev)
 
@@ -182,7 +182,7 @@ def _replay(args: argparse.Namespace) -> int:
     return 1 if result.mismatches else 0
 
 
-def _mouse_or_key(ev, buttons: list[int]):
+def host_to_rainbow_event(ev, buttons: list[int]):
     """Host (window) input -> a Rainbow input event, or None for what the Rainbow ignores.
 
     ``buttons[0]`` keeps the set of held mouse buttons (bits LEFT=1, MIDDLE=2, RIGHT=4)."""
@@ -280,7 +280,7 @@ def run_demo(args: argparse.Namespace) -> int:
                 for ev in window.poll():
                     if isinstance(ev, Quit):
                         state["quit"] = True
-                    dev = _mouse_or_key(ev, buttons)
+                    dev = host_to_rainbow_event(ev, buttons)
                     if dev is not None:
                         session.inject(dev)
             if tablet is not None:

@@ -212,13 +212,13 @@ class _Screen:
         """Window input to the device (not while a script drives it: only Quit counts)."""
         if self.window is None:
             return
-        from camlab88.commands.rainbow import _mouse_or_key
+        from camlab88.commands.rainbow import host_to_rainbow_event
         from emulator.host_input import Quit
 
         for ev in self.window.poll():
             if isinstance(ev, Quit):
                 self.quit = True
-            dev = _mouse_or_key(ev, self.buttons)
+            dev = host_to_rainbow_event(ev, self.buttons)
             if dev is not None and inject:
                 session.inject(dev)
 

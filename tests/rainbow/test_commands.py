@@ -157,13 +157,13 @@ def test_run_record_then_replay_reproduces_the_frame(tmp_path, capsys) -> None:
 
 
 def test_host_input_becomes_rainbow_events() -> None:
-    from camlab88.commands.rainbow import _mouse_or_key
+    from camlab88.commands.rainbow import host_to_rainbow_event as convert
     from emulator.host_input import KeyDown, PointerButton, PointerMove, Quit
     from protocols.rainbow.events import KeyEvent, MouseEvent
 
     held = [0]
-    assert _mouse_or_key(PointerButton(3, 4, 2, True), held) == MouseEvent(0, 3, 4, 2, 2, True)
-    assert _mouse_or_key(PointerMove(5, 6, frozenset({2, 3})), held) == MouseEvent(0, 5, 6, 6)
-    assert _mouse_or_key(PointerButton(5, 6, 3, False), held) == MouseEvent(0, 5, 6, 2, 3, False)
-    assert _mouse_or_key(KeyDown("a", "a"), held) == KeyEvent(0, "a", "a", True)
-    assert _mouse_or_key(Quit(), held) is None
+    assert convert(PointerButton(3, 4, 2, True), held) == MouseEvent(0, 3, 4, 2, 2, True)
+    assert convert(PointerMove(5, 6, frozenset({2, 3})), held) == MouseEvent(0, 5, 6, 6)
+    assert convert(PointerButton(5, 6, 3, False), held) == MouseEvent(0, 5, 6, 2, 3, False)
+    assert convert(KeyDown("a", "a"), held) == KeyEvent(0, "a", "a", True)
+    assert convert(Quit(), held) is None
