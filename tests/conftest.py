@@ -1,9 +1,9 @@
 """Shared test set-up: headless SDL, and one numba cache per test process.
 
-numba's on-disk cache numbers a function's compiled overloads per process; two processes
-compiling new overloads of the same function at once (pytest-xdist workers) can leave an index
-that points at the other process's machine code, which crashes or corrupts memory later. Each
-worker therefore gets its own cache directory (set before anything imports numba).
+On fresh clones the suite failed now and then (black Rainbow frames, wrong band structures,
+once a segfault) while two pytest-xdist workers were compiling and writing numba's shared
+on-disk cache at the same time; numba's cache is not safe for concurrent writers. Each worker
+therefore gets its own cache directory (set here, before anything imports numba).
 """
 
 from __future__ import annotations
