@@ -31,7 +31,10 @@ def _less(a, i, j):
     return False
 
 
-@njit(cache=True)
+# An explicit signature: compile_rows first types ``nc`` as the literal 0, and a second
+# (literal) signature in the on-disk cache can be mixed up with this one by two processes
+# compiling at once (docs/development.md, "numba's cache").
+@njit("int64(int64[:, ::1], int64)", cache=True)
 def _sort_unique(cand, nc):
     """Sort the first nc rows lexicographically and drop repeats: a canonical tie order."""
     for p in range(1, nc):

@@ -23,6 +23,10 @@ _PY: dict[str, Callable[..., Any]] = {}  # kernel name -> plain Python definitio
 def _compile_all() -> None:
     from numba import njit
 
+    # Every kernel must be called with one set of argument types only: numba's on-disk cache
+    # numbers a function's signatures 1, 2, ... and two processes compiling *different*
+    # signatures at once can leave the index naming one signature's file holding the
+    # other's code (docs/development.md, "numba's cache").
     g = globals()
     for name, fn in _PY.items():  # callees first, so callers resolve them as compiled kernels
         if name in g and getattr(g[name], "py_func", None) is fn and hasattr(g[name], "_lazy"):
@@ -107,8 +111,9 @@ def draw_polyline(pix, xy, start_x, start_y, colour, wm, dash, dash_len, phase, 
     py = start_y
     cont = continuing
     for k in range(xy.shape[0]):
-        x = xy[k, 0]
-        y = xy[k, 1]
+        # int64 like every other caller's, so draw_line has one signature (see _compile_all)
+        x = np.int64(xy[k, 0])
+        y = np.int64(xy[k, 1])
         phase = draw_line(pix, px, py, x, y, colour, wm, dash, dash_len, phase, cont)
         cont = True
         px = x
@@ -247,7 +252,7 @@ def boundary_fill(pix: np.ndarray, sx: int, sy: int, colour: int, wm: int, bound
 def dot_run(pix, x, y, colours, wm):  # noqa: ANN001, ANN201
     """DJ: one pixel per colour, advancing +X from (x, y); returns the next x."""
     for k in range(colours.shape[0]):
-        _put(pix, x, y, colours[k], wm)
+        _put(pix, x, y, np.int64(colours[k]), wm)  # int64: one _put signature
         x += 1
     return x
 
