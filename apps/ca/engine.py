@@ -31,6 +31,9 @@ WINDOW_MAX = 1 << 26
 # margin of this many cells beyond the message reach so the window is not regrown often.
 DENSE_MIN_FILL = 64
 DENSE_MARGIN = 16
+# The dense path runs the separable kernel (box sums, bit-set interpretation); False runs the
+# plain one-pass-per-message kernel (kept as the reference the tests compare against).
+DENSE_SEPARABLE = True
 
 
 @dataclass(frozen=True)
@@ -129,6 +132,7 @@ class Engine:
         self._dense_pop = 0
         self._buffers: tuple[np.ndarray, np.ndarray] | None = None
         self._hash: tuple[np.ndarray, np.ndarray] | None = None
+        self._sep_scratch: tuple[np.ndarray, ...] | None = None
         self.last_kernel = ""
 
     # -- the two storage forms ------------------------------------------------------
@@ -412,8 +416,10 @@ class Engine:
             h, w = grid.shape
             edge = (grid[:my].any() or grid[h - my:].any() or grid[:, :mx].any()
                     or grid[:, w - mx:].any()) if (my or mx) else False
-            if edge or self._dense_pop * DENSE_MIN_FILL < h * w:
-                self._sync()  # grow (or leave) the window
+            if self._dense_pop * DENSE_MIN_FILL < h * w:
+                self._sync()  # too sparse: leave the window
+            elif edge and not self._grow_dense(my, mx):
+                self._sync()  # cannot grow in place: rebuild from the cells
         if self._dense is None:
             n = self._ts.shape[0]
             if n == 0 or int(self._ts.max()) > 255:
@@ -437,12 +443,52 @@ class Engine:
         if out is None or out.shape != grid.shape or acc.dtype != plan.msg_dtype:
             out = np.empty_like(grid)
             acc = np.zeros(grid.shape[1], plan.msg_dtype)
-        self._dense_pop = int(kernels.dense_step(grid, out, plan.etype, plan.edy, plan.edx,
-                                                 plan.eop, plan.evals, plan.lut, acc))
+        sep = plan.sep
+        if DENSE_SEPARABLE and sep is not None:
+            self._dense_pop = int(kernels.dense_step_separable(
+                grid, out, sep.gtype, sep.gval, sep.gy0, sep.gy1, sep.gx0, sep.gx1, sep.xg,
+                sep.xdy, sep.xdx, sep.etype, sep.edy, sep.edx, sep.eop, sep.evals, sep.interp,
+                plan.lut, sep.masks32, sep.masks64, sep.mforms, acc,
+                *self._separable_scratch(sep, grid.shape[1], plan.msg_dtype)))
+        else:
+            self._dense_pop = int(kernels.dense_step(grid, out, plan.etype, plan.edy,
+                                                     plan.edx, plan.eop, plan.evals, plan.lut,
+                                                     acc))
         self._dense = (y0, x0, out)
         self._buffers = (grid, acc)  # the old grid becomes the next output buffer
         self.last_kernel = "dense"
         return True
+
+    def _grow_dense(self, my: int, mx: int) -> bool:
+        """Widen the dense window by the margin on each side where cells came within the
+        message reach of its border, copying the grid (cheaper than rebuilding it from the
+        cell list); False if the wider window would leave the plane or get too sparse."""
+        y0, x0, grid = self._dense
+        h, w = grid.shape
+        top = DENSE_MARGIN if my and grid[:my].any() else 0
+        bottom = DENSE_MARGIN if my and grid[h - my:].any() else 0
+        left = DENSE_MARGIN if mx and grid[:, :mx].any() else 0
+        right = DENSE_MARGIN if mx and grid[:, w - mx:].any() else 0
+        nh, nw = h + top + bottom, w + left + right
+        if (y0 - top < 0 or x0 - left < 0 or y0 - top + nh > SIDE or x0 - left + nw > SIDE
+                or nh * nw > WINDOW_MAX or self._dense_pop * DENSE_MIN_FILL < nh * nw):
+            return False
+        bigger = np.zeros((nh, nw), np.uint8)
+        bigger[top:top + h, left:left + w] = grid
+        self._dense = (y0 - top, x0 - left, bigger)
+        return True
+
+    def _separable_scratch(self, sep, w: int, dtype: type) -> tuple[np.ndarray, ...]:
+        """Row rings of the separable kernel (indicator rows, horizontal sums, vertical sums),
+        kept between generations while their shapes fit."""
+        g = sep.gtype.shape[0]
+        pad = int((sep.gx1 - sep.gx0).max()) if g else 0
+        shapes = ((g, sep.ring, w + pad), (g, sep.ring, w), (g, w))
+        have = self._sep_scratch
+        if have is None or any(a.shape != s or a.dtype != dtype for a, s in zip(have, shapes)):
+            have = tuple(np.zeros(s, dtype) for s in shapes)
+            self._sep_scratch = have
+        return have
 
     # -- copies -------------------------------------------------------------------
     def copy(self) -> Engine:

@@ -279,3 +279,162 @@ def dense_step(T, out, etype, edy, edx, eop, evals, lut, acc):
             orow[c] = k
             n += k != 0
     return n
+
+
+# -- the separable dense path ------------------------------------------------------------
+# Additions of one value from one sender life-form to a rectangle of offsets (less a few
+# cells) are a box sum of the indicator grid (T == type): per source row a horizontal sum,
+# kept in a small ring, and per target row a running vertical sum (add the row entering the
+# box, subtract the one leaving); the offsets missing from the rectangle are subtracted.
+# Exact in the message dtype's modular arithmetic, because the true sum fits in it.
+
+
+@njit(cache=True)
+def _group_row(T, sr, t, v, gx1, width, ind, hrow):
+    """Indicator of source row ``sr`` padded so ind[j] = (T[sr, j - gx1] == t) (0 off the
+    grid), and its horizontal box sum times v: hrow[c] = v * sum(ind[c:c + width])."""
+    w = T.shape[1]
+    # ind[j] holds source column j - gx1: those inside the grid are j in lo..hi-1.
+    lo = max(0, gx1)
+    hi = min(ind.shape[0], gx1 + w)
+    ind[:lo] = 0
+    ind[hi:] = 0
+    src = T[sr, lo - gx1:hi - gx1]
+    dst = ind[lo:hi]
+    for c in range(hi - lo):  # (a bool store here does not vectorise)
+        dst[c] = np.uint8(1) if src[c] == t else np.uint8(0)
+    for c in range(w):
+        hrow[c] = ind[c]
+    for k in range(1, width):
+        part = ind[k:k + w]
+        for c in range(w):
+            hrow[c] += part[c]
+    if v != 1:
+        for c in range(w):
+            hrow[c] *= v
+
+
+@njit(cache=True)
+def _add_row(dst, src):
+    for c in range(dst.shape[0]):
+        dst[c] += src[c]
+
+
+@njit(cache=True)
+def _sub_row(dst, src):
+    for c in range(dst.shape[0]):
+        dst[c] -= src[c]
+
+
+@njit(cache=True)
+def _sub_scaled(dst, src, v):
+    for c in range(dst.shape[0]):
+        dst[c] -= v * src[c]
+
+
+@njit(cache=True)
+def _interp_lut(acc, orow, lut):
+    for c in range(acc.shape[0]):
+        orow[c] = lut[acc[c]]
+
+
+@njit(cache=True)
+def _interp_mask32(acc, orow, masks, forms):
+    """Next life-form from bit sets (bit v of masks[j] set: value v gives forms[j]); only
+    used when every reachable value is below 32, so the shift is defined; vectorises,
+    unlike a table lookup."""
+    orow[:] = 0
+    for j in range(masks.shape[0]):
+        m = masks[j]
+        f = forms[j]
+        for c in range(acc.shape[0]):
+            orow[c] += np.uint8((m >> np.uint32(acc[c])) & np.uint32(1)) * f
+
+
+@njit(cache=True)
+def _interp_mask64(acc, orow, masks, forms):
+    """As _interp_mask32 for values below 64."""
+    orow[:] = 0
+    for j in range(masks.shape[0]):
+        m = masks[j]
+        f = forms[j]
+        for c in range(acc.shape[0]):
+            orow[c] += np.uint8((m >> np.uint64(acc[c])) & np.uint64(1)) * f
+
+
+@njit(cache=True)
+def dense_step_separable(T, out, gtype, gval, gy0, gy1, gx0, gx1, xg, xdy, xdx,
+                         etype, edy, edx, eop, evals, interp, lut, masks32, masks64, mforms,
+                         acc, ind, hring, vsum):
+    """One dense generation; the same result as dense_step on the full entry list.
+
+    Groups g (sender type gtype[g], value gval[g], offsets rows gy0..gy1, columns gx0..gx1,
+    less the excluded offsets (xdy, xdx) of group xg) are box sums; the remaining entries
+    (adds first) use dense_step's one pass per entry.  Scratch: acc[w];
+    ind[G, R, w + gx1 - gx0], hring[G, R, w], vsum[G, w] with R >= box height + 1.
+    interp: 0 table lookup, 1 / 2 bit sets of 32 / 64 bits.  Returns the population."""
+    h, w = T.shape
+    ng = gtype.shape[0]
+    R = hring.shape[1]
+    for g in range(ng):
+        vsum[g, :] = 0
+        t = np.uint8(gtype[g])
+        width = gx1[g] - gx0[g] + 1
+        for sr in range(-gy1[g], -gy0[g]):  # rows already in the box above row 0
+            if 0 <= sr < h:
+                s = sr % R
+                _group_row(T, sr, t, gval[g], gx1[g], width, ind[g, s], hring[g, s])
+                vsum[g] += hring[g, s]
+    n = 0
+    for r in range(h):
+        for g in range(ng):
+            sr = r - gy0[g]
+            vs = vsum[g]
+            if 0 <= sr < h:
+                s = sr % R
+                _group_row(T, sr, np.uint8(gtype[g]), gval[g], gx1[g], gx1[g] - gx0[g] + 1,
+                           ind[g, s], hring[g, s])
+                _add_row(vs, hring[g, s])
+            sr = r - gy1[g] - 1
+            if 0 <= sr < h:
+                _sub_row(vs, hring[g, sr % R])
+        if ng > 0:
+            acc[:] = vsum[0]
+            for g in range(1, ng):
+                _add_row(acc, vsum[g])
+        else:
+            acc[:] = 0
+        for x in range(xg.shape[0]):
+            g = xg[x]
+            sr = r - xdy[x]
+            if sr < 0 or sr >= h:
+                continue
+            j = gx1[g] - xdx[x]
+            _sub_scaled(acc, ind[g, sr % R, j:j + w], gval[g])
+        for e in range(etype.shape[0]):  # (additions first: see tables.SeparablePlan)
+            sr = r - edy[e]
+            if sr < 0 or sr >= h:
+                continue
+            dx = edx[e]
+            c0 = max(0, dx)
+            c1 = min(w, w + dx)
+            dst = acc[c0:c1]
+            src = T[sr, c0 - dx:c1 - dx]
+            t = np.uint8(etype[e])
+            op = eop[e]
+            if op == 1:
+                _acc_add(dst, src, t, evals[e])
+            elif op == 2:
+                _acc_or(dst, src, t, evals[e])
+            else:
+                _acc_xor(dst, src, t, evals[e])
+        orow = out[r]
+        if interp == 1:
+            _interp_mask32(acc, orow, masks32, mforms)
+        elif interp == 2:
+            _interp_mask64(acc, orow, masks64, mforms)
+        else:
+            _interp_lut(acc, orow, lut)
+        for c in range(w):
+            n += orow[c] != 0
+    return n
