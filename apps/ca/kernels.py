@@ -15,6 +15,8 @@ grid row by row; so mixed operations (+ then |, ...) give the same result in bot
 
 from __future__ import annotations
 
+import types
+
 import numpy as np
 from numba import njit
 
@@ -229,26 +231,40 @@ def step_hash(ys, xs, ts, wrap, cy0, cy1, cx0, cx1, start, sdy, sdx, sop, sval, 
     return oy, ox, ot[idx]
 
 
-@njit(cache=True)
+# -- the dense path: one compiled family per message dtype ---------------------------------
+# The dense kernels take the message workspace in the plan's dtype (uint8 or uint16). A numba
+# kernel compiled for two dtypes keeps both signatures in one on-disk cache index, which two
+# processes compiling at once can mix up (docs/development.md, "numba's cache"). So the plain
+# functions below are compiled once per dtype under their own names ("dense_step_u8", ...),
+# each family calling its own helpers, and every compiled kernel has one signature.
+_DENSE_PY: dict[str, object] = {}  # name -> plain function, callees before callers
+
+
+def _dense_kernel(fn):  # noqa: ANN001, ANN202 - registers a plain function for the families
+    _DENSE_PY[fn.__name__] = fn
+    return fn
+
+
+@_dense_kernel
 def _acc_add(acc, src, t, v):
     for i in range(acc.shape[0]):
         acc[i] += v * (src[i] == t)
 
 
-@njit(cache=True)
+@_dense_kernel
 def _acc_or(acc, src, t, v):
     for i in range(acc.shape[0]):
         acc[i] |= v * (src[i] == t)
 
 
-@njit(cache=True)
+@_dense_kernel
 def _acc_xor(acc, src, t, v):
     for i in range(acc.shape[0]):
         acc[i] ^= v * (src[i] == t)
 
 
-@njit(cache=True)
-def dense_step(T, out, etype, edy, edx, eop, evals, lut, acc):
+@_dense_kernel
+def _dense_step(T, out, etype, edy, edx, eop, evals, lut, acc):
     """The dense fast path fused row by row (the section 7.5 workspace idea): each target
     row's messages gather in a one-row buffer that stays in cache, then are interpreted at
     once.  Same result as dense_messages + dense_interpret; returns the population."""
@@ -289,7 +305,7 @@ def dense_step(T, out, etype, edy, edx, eop, evals, lut, acc):
 # Exact in the message dtype's modular arithmetic, because the true sum fits in it.
 
 
-@njit(cache=True)
+@_dense_kernel
 def _group_row(T, sr, t, v, gx1, width, ind, hrow):
     """Indicator of source row ``sr`` padded so ind[j] = (T[sr, j - gx1] == t) (0 off the
     grid), and its horizontal box sum times v: hrow[c] = v * sum(ind[c:c + width])."""
@@ -314,31 +330,31 @@ def _group_row(T, sr, t, v, gx1, width, ind, hrow):
             hrow[c] *= v
 
 
-@njit(cache=True)
+@_dense_kernel
 def _add_row(dst, src):
     for c in range(dst.shape[0]):
         dst[c] += src[c]
 
 
-@njit(cache=True)
+@_dense_kernel
 def _sub_row(dst, src):
     for c in range(dst.shape[0]):
         dst[c] -= src[c]
 
 
-@njit(cache=True)
+@_dense_kernel
 def _sub_scaled(dst, src, v):
     for c in range(dst.shape[0]):
         dst[c] -= v * src[c]
 
 
-@njit(cache=True)
+@_dense_kernel
 def _interp_lut(acc, orow, lut):
     for c in range(acc.shape[0]):
         orow[c] = lut[acc[c]]
 
 
-@njit(cache=True)
+@_dense_kernel
 def _interp_mask32(acc, orow, masks, forms):
     """Next life-form from bit sets (bit v of masks[j] set: value v gives forms[j]); only
     used when every reachable value is below 32, so the shift is defined; vectorises,
@@ -351,7 +367,7 @@ def _interp_mask32(acc, orow, masks, forms):
             orow[c] += np.uint8((m >> np.uint32(acc[c])) & np.uint32(1)) * f
 
 
-@njit(cache=True)
+@_dense_kernel
 def _interp_mask64(acc, orow, masks, forms):
     """As _interp_mask32 for values below 64."""
     orow[:] = 0
@@ -362,8 +378,8 @@ def _interp_mask64(acc, orow, masks, forms):
             orow[c] += np.uint8((m >> np.uint64(acc[c])) & np.uint64(1)) * f
 
 
-@njit(cache=True)
-def dense_step_separable(T, out, gtype, gval, gy0, gy1, gx0, gx1, xg, xdy, xdx,
+@_dense_kernel
+def _dense_step_separable(T, out, gtype, gval, gy0, gy1, gx0, gx1, xg, xdy, xdx,
                          etype, edy, edx, eop, evals, interp, lut, masks32, masks64, mforms,
                          acc, ind, hring, vsum):
     """One dense generation; the same result as dense_step on the full entry list.
@@ -438,3 +454,33 @@ def dense_step_separable(T, out, gtype, gval, gy0, gy1, gx0, gx1, xg, xdy, xdx,
         for c in range(w):
             n += orow[c] != 0
     return n
+
+
+def _family(suffix: str) -> dict[str, object]:
+    """The dense kernels compiled under names ending in ``suffix``, calling each other."""
+    namespace = dict(globals())
+    family = {}
+    for name, fn in _DENSE_PY.items():
+        f = types.FunctionType(fn.__code__, namespace, f"{name}_{suffix}", fn.__defaults__,
+                               fn.__closure__)
+        f.__qualname__ = f"{fn.__qualname__}_{suffix}"  # numba names its cache files by it
+        f.__module__ = fn.__module__
+        f.__doc__ = fn.__doc__
+        family[name] = namespace[name] = njit(cache=True)(f)
+    return family
+
+
+DENSE_FAMILIES = {np.dtype(np.uint8): _family("u8"), np.dtype(np.uint16): _family("u16")}
+
+
+def dense_step(T, out, etype, edy, edx, eop, evals, lut, acc):  # noqa: ANN001, ANN201
+    """The dense fast path, one pass per message entry (see the plain definition above),
+    compiled for the workspace dtype ``acc.dtype``; returns the population."""
+    return DENSE_FAMILIES[acc.dtype]["_dense_step"](T, out, etype, edy, edx, eop, evals, lut,
+                                                   acc)
+
+
+def dense_step_separable(*args):  # noqa: ANN002, ANN201
+    """The separable dense path (arguments as in the plain definition above), compiled for
+    the workspace dtype (``acc``, argument 22); returns the population."""
+    return DENSE_FAMILIES[args[21].dtype]["_dense_step_separable"](*args)
