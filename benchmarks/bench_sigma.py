@@ -226,6 +226,11 @@ def main() -> None:
               f"NGS {vn:6d}  AGS {va:6d}  {vr:.2f}")
     print("== decode + draw throughput, whole process (python -m camlab88 sigma render)")
     print(f"load average at start: {os.getloadavg()[0]:.2f} (2 cores, shared)")
+    import importlib.util
+
+    # numba imports scipy, when it is installed, as it loads a kernel (its BLAS probe):
+    # about 0.25 s more start-up, so say which case was measured
+    print(f"scipy installed: {importlib.util.find_spec('scipy') is not None}")
     print(f"start-up, 7-byte stream that draws nothing: {startup_seconds():.2f} s")
     # one NGS vector and one AGS polyline: the numba kernels are loaded
     one = b"\r+-*/GI100100GJ600500" + ags_stream([[(10, 10), (300, 200)]])
