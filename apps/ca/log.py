@@ -51,6 +51,11 @@ class Event:
     text: str = ""  # rules: the rule text; load/erase: the pattern as one-line RLE
 
 
+def _is_number(text: str) -> bool:
+    """ASCII digits only: str.isdigit() also accepts '²', which int() refuses."""
+    return text.isascii() and text.isdigit()
+
+
 def _rect_args(rect: Rect | None) -> tuple:
     return ("all",) if rect is None else (rect.x0, rect.y0, rect.x1, rect.y1)
 
@@ -410,7 +415,7 @@ def _checkpoints(log_path: str) -> list[tuple[int, str]]:
     if not os.path.isdir(folder):
         return []
     return [(int(name[len(base):]), os.path.join(folder, name)) for name in os.listdir(folder)
-            if name.startswith(base) and name[len(base):].isdigit()]
+            if name.startswith(base) and _is_number(name[len(base):])]
 
 
 def supersede_checkpoints(log_path: str, after: int) -> list[str]:
@@ -430,7 +435,7 @@ def latest_checkpoint(log_path: str, target: int) -> str | None:
     base = os.path.basename(log_path)
     best: tuple[int, str] | None = None
     for name in os.listdir(folder):
-        if name.startswith(base) and name[len(base):].isdigit():
+        if name.startswith(base) and _is_number(name[len(base):]):
             g = int(name[len(base):])
             if g <= target and (best is None or g > best[0]):
                 best = (g, os.path.join(folder, name))

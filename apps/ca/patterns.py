@@ -366,7 +366,7 @@ def parse_rle(text: str, source: str = "<rle>") -> Pattern:
                     raise PatternError(source, lineno + 1, col, "expected a cell symbol after "
                                                                  "the repeat count")
                 continue
-            if ch.isdigit():
+            if ch.isascii() and ch.isdigit():  # ('²'.isdigit() is True; int() refuses it)
                 if prefix:
                     raise PatternError(source, lineno + 1, col, f"expected A..X after '{prefix}'")
                 if ch == "0" and not count:

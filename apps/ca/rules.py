@@ -341,7 +341,7 @@ class _Parser:
         else:
             if "?" in text:
                 raise self.error(tok, f"'?' is only allowed in #B patterns, found '{tok.text}'")
-            if not (text[:1].isdigit() or text.startswith(("#X", "#B"))):
+            if not ((text[:1].isascii() and text[:1].isdigit()) or text.startswith(("#X", "#B"))):
                 raise self.error(tok, "expected an interpretation line: a value, a #B pattern "
                                       f"or 'R lo hi', found '{tok.text}'")
             kind, a, b = MATCH_EXACT, parse_number(tok, tok.text, self.source), 0

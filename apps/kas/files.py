@@ -206,7 +206,7 @@ class _Reader:
 
     def count(self, word: str) -> int:
         no, rest = self.keyword(word)
-        if len(rest) != 1 or not rest[0].isdigit():
+        if len(rest) != 1 or not (rest[0].isascii() and rest[0].isdigit()):
             raise KasFileError(self.name, no, f"'{word}' needs one non-negative integer")
         return int(rest[0])
 

@@ -38,7 +38,7 @@ def is_red(ball: int) -> bool:
 def ball_index(name_or_number: str) -> int:
     """'cue', 'black', 'red3' or a 1-based checkpoint number '1'..'22' -> 0-based index."""
     text = name_or_number.strip().lower()
-    if text.isdigit():
+    if text.isascii() and text.isdigit():  # ('²'.isdigit() is True; int() refuses it)
         n = int(text)
         if 1 <= n <= N_BALLS:
             return n - 1

@@ -275,7 +275,7 @@ def parse_recording(text: str, name: str = "<recording>") -> Recording:
             xonxoff = fields[1] == "on"
             continue
         if key == "end":
-            if len(fields) != 2 or not fields[1].isdigit():
+            if len(fields) != 2 or not (fields[1].isascii() and fields[1].isdigit()):
                 raise fail(lineno, "expected 'end <number of chunks>'")
             if int(fields[1]) != len(entries):
                 raise fail(
