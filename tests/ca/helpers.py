@@ -2,6 +2,10 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import contextmanager
+
+from apps.ca import engine as engine_mod
 from apps.ca.engine import Engine
 from apps.ca.library import rules_path
 from apps.ca.rules import load_rules
@@ -24,3 +28,17 @@ def cellset(e: Engine) -> set[tuple[int, int, int]]:
 
 def shifted(cells: set[tuple[int, int, int]], dx: int, dy: int) -> set[tuple[int, int, int]]:
     return {((x + dx) % 65536, (y + dy) % 65536, t) for x, y, t in cells}
+
+
+@contextmanager
+def engine_constants(**consts) -> Iterator[None]:
+    """Set module constants of apps.ca.engine (which kernel it picks) for a block, then put
+    them back (hypothesis tests cannot use the function-scoped monkeypatch)."""
+    saved = {k: getattr(engine_mod, k) for k in consts}
+    for k, v in consts.items():
+        setattr(engine_mod, k, v)
+    try:
+        yield
+    finally:
+        for k, v in saved.items():
+            setattr(engine_mod, k, v)

@@ -12,6 +12,7 @@ from apps.ca import tables as tables_mod
 from apps.ca.engine import Engine
 from apps.ca.rules import parse_rules
 from apps.ca.tables import compile_rules
+from tests.ca.helpers import engine_constants
 
 
 @st.composite
@@ -52,10 +53,7 @@ def commuting_rules(draw) -> str:
 
 
 def _run(rules_text: str, cells: np.ndarray, types: np.ndarray, edges: str, **consts):
-    saved = {k: getattr(engine_mod, k) for k in consts}
-    for k, v in consts.items():
-        setattr(engine_mod, k, v)
-    try:
+    with engine_constants(**consts):
         e = Engine(parse_rules(rules_text), edges=edges)
         ys, xs = cells
         e.set_cells(xs + 40, ys + 40, types)
@@ -64,9 +62,6 @@ def _run(rules_text: str, cells: np.ndarray, types: np.ndarray, edges: str, **co
             e.step()
             used.add(e.last_kernel)
         return e, used
-    finally:
-        for k, v in saved.items():
-            setattr(engine_mod, k, v)
 
 
 @settings(max_examples=30, deadline=None)
@@ -140,14 +135,10 @@ def test_separable_life_soup_matches_plain_kernel(monkeypatch) -> None:
     ys, xs = np.nonzero(rng.random((120, 120)) < 0.5)
     engines = []
     for flag in (True, False):
-        saved = engine_mod.DENSE_SEPARABLE
-        engine_mod.DENSE_SEPARABLE = flag
-        try:
+        with engine_constants(DENSE_SEPARABLE=flag):
             e = Engine(rules)
             e.set_cells(xs + 3000, ys + 3000, 1)
             e.step(60)
-        finally:
-            engine_mod.DENSE_SEPARABLE = saved
         assert e.last_kernel == "dense"
         engines.append(e)
     assert engines[0].same_state(engines[1])

@@ -5,9 +5,9 @@ from __future__ import annotations
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from apps.ca import engine as engine_mod
 from apps.ca.engine import Engine
 from apps.ca.rules import parse_rules
+from tests.ca.helpers import engine_constants
 
 OPS = ["+", "|", "&", "^"]
 
@@ -55,10 +55,7 @@ def test_all_paths_agree(text: str, cells, edges: str, shift: int) -> None:
     cells = [(x, y, min(t, top)) for x, y, t in cells]
 
     def run(**consts) -> tuple[Engine, set]:
-        saved = {k: getattr(engine_mod, k) for k in consts}
-        for k, v in consts.items():
-            setattr(engine_mod, k, v)
-        try:
+        with engine_constants(**consts):
             e = Engine(rules, edges=edges, seed=5)
             # Across the plane's corner (wrapping and the bounded edge matter) or inside it.
             e.set_cells([(x + shift) % 65536 for x, _, _ in cells],
@@ -68,9 +65,6 @@ def test_all_paths_agree(text: str, cells, edges: str, shift: int) -> None:
                 e.step()
                 used.add(e.last_kernel)
             return e, used
-        finally:
-            for k, v in saved.items():
-                setattr(engine_mod, k, v)
 
     hashed, _ = run(DENSE_MIN_FILL=0, WINDOW_MIN=0, WINDOW_CELLS_PER_SENDER=0)
     windowed, _ = run(DENSE_MIN_FILL=0, WINDOW_MIN=1 << 30, WINDOW_CELLS_PER_SENDER=1 << 20)
@@ -85,11 +79,7 @@ def test_dense_and_window_agree_away_from_edges() -> None:
     e1.set_cells([100 + i % 37 for i in range(0, 900, 7)], [100 + i // 37 for i in
                                                            range(0, 900, 7)], 1)
     e2 = e1.copy()
-    saved = engine_mod.DENSE_MIN_FILL
     e1.step(10)
-    engine_mod.DENSE_MIN_FILL = 0
-    try:
+    with engine_constants(DENSE_MIN_FILL=0):
         e2.step(10)
-    finally:
-        engine_mod.DENSE_MIN_FILL = saved
     assert e1.same_state(e2)
