@@ -1,0 +1,85 @@
+"""The default space of the camera control language (thesis §6.3.1: "measured in metres
+from the centre of the table"), as issue 12 fixes it: origin at the centre of the playing
+surface, +x towards the top cushion, +y towards the left cushion as seen from the baulk end,
++z up; z = 0 on the cloth, a ball's centre at z = its radius.  Spots lie on the cloth; a
+corner pocket is the corner of the playing surface where its two cushion faces meet, a
+centre pocket the middle of its long side (both z = 0).
+
+The motion program's own coordinates (table.py, checkpoint.py) have the same axes but their
+origin at the baulk cushion face on the right-hand cushion (y = 0), so converting is a shift
+by half the table's length and width.  A ball outside the playing area is potted (the
+checkpoint parks potted balls behind their pocket) and is not drawn.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from apps.snooker.checkpoint import Checkpoint, to_metres
+from apps.snooker.table import BLACK, BLUE, BROWN, GREEN, PINK, YELLOW, Table
+
+# CCL's colour names -> ball index (table.py order); CUEBALL is ball 0.
+COLOUR_BALLS: dict[str, int] = {
+    "yellow": YELLOW, "green": GREEN, "brown": BROWN, "blue": BLUE, "pink": PINK, "black": BLACK,
+}
+# CCL's pocket names (§6.3.1) -> table.py's pocket names.  "Bottom" is the baulk end.
+POCKET_NAMES: dict[str, str] = {
+    "bottom left": "baulk-left", "bottom right": "baulk-right",
+    "left centre": "middle-left", "right centre": "middle-right",
+    "top left": "top-left", "top right": "top-right",
+}
+
+
+def origin_shift(table: Table) -> np.ndarray:
+    """Table-coordinate position (metres) of the default space's origin."""
+    return np.array([table.length_m / 2.0, table.width_m / 2.0])
+
+
+def on_table(table: Table, xy_m: np.ndarray) -> np.ndarray:
+    """(..., 2) table-coordinate metres -> bool: on the playing area (not potted)."""
+    x, y = xy_m[..., 0], xy_m[..., 1]
+    return (x >= 0.0) & (x <= table.length_m) & (y >= 0.0) & (y <= table.width_m)
+
+
+def ball_centres_m(table: Table, xy_m: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(..., 22, 2) table-coordinate metres -> ((..., 22, 3) default-space centres, (..., 22)
+    on-table mask).  Potted balls get centres too (outside the table) but mask False."""
+    xy = np.asarray(xy_m, dtype=np.float64)
+    out = np.empty((*xy.shape[:-1], 3), dtype=np.float64)
+    out[..., :2] = xy - origin_shift(table)
+    out[..., 2] = table.radius
+    return out, on_table(table, xy)
+
+
+def checkpoint_centres(checkpoint: Checkpoint,
+                       table: Table | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Every frame of a checkpoint -> ((frames, 22, 3) default-space ball centres, (frames,
+    22) on-table mask).  Index 0 is the checkpoint's frame 1 (its initial positions)."""
+    return ball_centres_m(table or Table(), to_metres(checkpoint.positions))
+
+
+def spots(table: Table) -> dict[str, np.ndarray]:
+    """Colour name -> its spot in the default space (on the cloth, z = 0)."""
+    shift = origin_shift(table)
+    out = {}
+    for name, ball in COLOUR_BALLS.items():
+        x, y = np.asarray(table.spots[ball]) - shift
+        out[name] = np.array([x, y, 0.0])
+    return out
+
+
+def pockets(table: Table) -> dict[str, np.ndarray]:
+    """CCL pocket name ('top left', ...) -> its point in the default space (z = 0)."""
+    hx, hy = table.length_m / 2.0, table.width_m / 2.0
+    return {
+        "bottom left": np.array([-hx, hy, 0.0]), "bottom right": np.array([-hx, -hy, 0.0]),
+        "left centre": np.array([0.0, hy, 0.0]), "right centre": np.array([0.0, -hy, 0.0]),
+        "top left": np.array([hx, hy, 0.0]), "top right": np.array([hx, -hy, 0.0]),
+    }
+
+
+def surface_corners(table: Table) -> np.ndarray:
+    """(4, 3) corners of the playing surface (z = 0), anticlockwise seen from above,
+    starting at the bottom right pocket."""
+    hx, hy = table.length_m / 2.0, table.width_m / 2.0
+    return np.array([[-hx, -hy, 0.0], [hx, -hy, 0.0], [hx, hy, 0.0], [-hx, hy, 0.0]])
