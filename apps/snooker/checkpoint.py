@@ -9,24 +9,34 @@
 Positions are integers, 4096 units to the foot, x up the table from the baulk cushion face
 and y across it (see table.py).  Each frame's positions are rounded first and the deltas
 are differences of the rounded values, so summing them reproduces every frame exactly.
-Potted balls sit outside the playing area (behind their pocket).  A frame in which no ball
-moved is an empty line.
+A frame in which no ball moved is an empty line.
+
+Every stored position is in 0..65535 on both axes: "ball positions can be packed into a
+single 32 bit computer word (16 bits for each of x and y)" (§6.2.2); a file whose
+coordinates leave that range is refused at the line that takes them out. The table is
+49152 by 25088 units, so the packing leaves room beyond the top and left cushions: a potted
+ball's drop point behind its pocket is stored as it is when it lies in range, and otherwise
+(the right and baulk pockets drop below 0) parked at y = 65535, x clamped into range —
+outside the playing area either way, which is all a replay needs to know it is off the table.
 """
 
 from __future__ import annotations
 
 import os
+import re
 from collections.abc import Sequence
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 
 from apps.snooker.table import FOOT_M, N_BALLS
 from protocols.atomicfile import write_atomic
+from protocols.textinput import InputError, quote, read_bytes
 
 UNITS_PER_FOOT = 4096
 UNITS_PER_M = UNITS_PER_FOOT / FOOT_M
+PACK_MAX = (1 << 16) - 1  # 16 bits for each of x and y (§6.2.2)
+PARK_Y = PACK_MAX  # where a potted ball out of the packing's range is stored
 
 
 class CheckpointError(ValueError):
@@ -52,10 +62,16 @@ class Checkpoint:
     positions: np.ndarray  # (frames, 22, 2) int64
 
     @classmethod
-    def from_metres(cls, frames: Sequence[np.ndarray]) -> Checkpoint:
+    def from_metres(cls, frames: Sequence[np.ndarray],
+                    table_m: tuple[float, float] | None = None) -> Checkpoint:
+        """Frames of (22, 2) positions in metres; ``table_m`` (length, width) checks that the
+        playing area fits the 16-bit packing (a giant table may not)."""
         if not frames:
             raise ValueError("a checkpoint needs at least one frame")
-        return cls(np.stack([to_units(p) for p in frames]))
+        if table_m is not None and max(to_units(np.asarray(table_m))) > PARK_Y - 1:
+            raise ValueError(f"a {table_m[0]:.2f} x {table_m[1]:.2f} m table does not fit the "
+                             f"checkpoint's 16-bit coordinates (0..{PACK_MAX} units, §6.2.2)")
+        return cls(np.stack([park(to_units(p)) for p in frames]))
 
     @property
     def n_frames(self) -> int:
@@ -77,19 +93,40 @@ class Checkpoint:
         return "\n".join(lines) + "\n"
 
     def write(self, path: str | os.PathLike[str]) -> None:
-        atomic_write_text(path, self.to_text())
+        _check_range("<checkpoint being written>", self.positions.reshape(-1, 2), 0)
+        write_atomic(path, self.to_text(), encoding="ascii")
 
 
-def atomic_write_text(path: str | os.PathLike[str], text: str) -> None:
-    """Write to a temporary file in the same directory, fsync, then rename over `path`."""
-    write_atomic(path, text, encoding="ascii")
+def park(units: np.ndarray) -> np.ndarray:
+    """Positions in file units with every out-of-range (so off-table, potted) ball moved to
+    its parking place in range: x clamped to 0..65535, y = 65535 (see the module docstring)."""
+    out = np.array(units, dtype=np.int64)
+    bad = np.any((out < 0) | (out > PACK_MAX), axis=1)
+    out[bad, 0] = np.clip(out[bad, 0], 0, PACK_MAX)
+    out[bad, 1] = PARK_Y
+    return out
 
 
-def _int(path: str, line: int, token: str, what: str) -> int:
-    try:
-        return int(token)
-    except ValueError:
-        raise CheckpointError(path, line, f"{what} {token!r} is not an integer") from None
+_NUMBER = re.compile(r"[+-]?[0-9]{1,6}")
+
+
+def _int(path: str, line: int, token: str, what: str, lo: int, hi: int) -> int:
+    if not _NUMBER.fullmatch(token):
+        if re.fullmatch(r"[+-]?[0-9]+", token):
+            raise CheckpointError(path, line, f"{what} {quote(token, 24)} is outside {lo}..{hi}")
+        raise CheckpointError(path, line, f"{what} {quote(token, 24)} is not an integer")
+    value = int(token)
+    if not lo <= value <= hi:
+        raise CheckpointError(path, line, f"{what} {value} is outside {lo}..{hi}")
+    return value
+
+
+def _check_range(path: str, cur: np.ndarray, lineno: int) -> None:
+    bad = np.flatnonzero(np.any((cur < 0) | (cur > PACK_MAX), axis=1))
+    if bad.size:
+        b = int(bad[0])
+        raise CheckpointError(path, lineno, f"ball {b + 1} moves to {tuple(cur[b].tolist())}, "
+                              f"outside the 16-bit packing 0..{PACK_MAX} (§6.2.2)")
 
 
 def parse(text: str, path: str = "<checkpoint>") -> Checkpoint:
@@ -101,9 +138,10 @@ def parse(text: str, path: str = "<checkpoint>") -> Checkpoint:
     for i in range(N_BALLS):
         parts = lines[i].split(",")
         if len(parts) != 2:
-            raise CheckpointError(path, i + 1, f"expected 'x,y' for ball {i + 1}, got {lines[i]!r}")
-        first[i] = (_int(path, i + 1, parts[0].strip(), "x"),
-                    _int(path, i + 1, parts[1].strip(), "y"))
+            raise CheckpointError(path, i + 1,
+                                  f"expected 'x,y' for ball {i + 1}, got {quote(lines[i])}")
+        first[i] = (_int(path, i + 1, parts[0].strip(), "x", 0, PACK_MAX),
+                    _int(path, i + 1, parts[1].strip(), "y", 0, PACK_MAX))
     frames = [first]
     ended = False
     lineno = N_BALLS
@@ -120,21 +158,23 @@ def parse(text: str, path: str = "<checkpoint>") -> Checkpoint:
             toks = e.split()
             if not toks:
                 raise CheckpointError(path, lineno, "empty entry between commas")
-            ball = _int(path, lineno, toks[0], "ball number")
+            ball = _int(path, lineno, toks[0], "ball number", -PACK_MAX, PACK_MAX)
             if ball < 0:
                 if len(toks) != 1:
                     raise CheckpointError(path, lineno, "the end marker takes no deltas")
                 ended = True
                 break
             if len(toks) != 3:
-                raise CheckpointError(path, lineno, f"expected 'ball dx dy', got {e.strip()!r}")
+                raise CheckpointError(path, lineno,
+                                      f"expected 'ball dx dy', got {quote(e.strip())}")
             if not 1 <= ball <= N_BALLS:
                 raise CheckpointError(path, lineno, f"ball number {ball} is not in 1..{N_BALLS}")
             if ball in seen:
                 raise CheckpointError(path, lineno, f"ball {ball} appears twice in one frame")
             seen.add(ball)
-            cur[ball - 1, 0] += _int(path, lineno, toks[1], "dx")
-            cur[ball - 1, 1] += _int(path, lineno, toks[2], "dy")
+            cur[ball - 1, 0] += _int(path, lineno, toks[1], "dx", -PACK_MAX, PACK_MAX)
+            cur[ball - 1, 1] += _int(path, lineno, toks[2], "dy", -PACK_MAX, PACK_MAX)
+        _check_range(path, cur, lineno)
         if ended and not seen:
             continue  # "-1" alone: no further frame
         frames.append(cur)
@@ -143,11 +183,20 @@ def parse(text: str, path: str = "<checkpoint>") -> Checkpoint:
     return Checkpoint(np.stack(frames))
 
 
+def _read_error(message: str) -> CheckpointError:
+    path, _, why = message.partition(": ")
+    return CheckpointError(path, 0, why)
+
+
+# 22 balls x ~20 bytes a frame: 64 MB is hours of 25 frames/s
+MAX_CHECKPOINT_BYTES = 64 * 1024 * 1024
+
+
 def read(path: str | os.PathLike[str]) -> Checkpoint:
     try:
-        raw = Path(path).read_bytes()
-    except OSError as exc:
-        raise CheckpointError(path, 0, f"cannot read: {exc.strerror}") from None
+        raw = read_bytes(path, MAX_CHECKPOINT_BYTES)
+    except InputError as exc:
+        raise _read_error(str(exc)) from None
     try:
         text = raw.decode("ascii")
     except UnicodeDecodeError as exc:

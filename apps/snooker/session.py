@@ -16,7 +16,6 @@ import json
 import math
 import os
 from dataclasses import replace
-from pathlib import Path
 
 import numpy as np
 
@@ -27,6 +26,8 @@ from apps.snooker.rules import GameState, Shot, infer_game, legal_to_hit, legal_
 from apps.snooker.state import BallState
 from apps.snooker.table import BALL_NAMES, Table
 from apps.snooker.timeline import Cursor, Frame, Timeline, Unit
+from protocols.atomicfile import write_atomic
+from protocols.textinput import read_json
 
 FORMAT = "camlab88-snooker-session"
 VERSION = 1
@@ -209,7 +210,9 @@ class Session:
         last = len(frames) - 1 if last is None else last
         if not 0 <= first <= last < len(frames):
             raise SessionError(f"frames {first}..{last} are not within 0..{len(frames) - 1}")
-        return checkpoint.Checkpoint.from_metres([f.balls.pos for f in frames[first : last + 1]])
+        table = self.timeline.table
+        return checkpoint.Checkpoint.from_metres([f.balls.pos for f in frames[first : last + 1]],
+                                                 (table.length_m, table.width_m))
 
     def to_json(self) -> dict[str, object]:
         tl = self.timeline
@@ -222,18 +225,11 @@ class Session:
         }
 
     def save(self, path: str | os.PathLike[str]) -> None:
-        checkpoint.atomic_write_text(path, json.dumps(self.to_json(), separators=(",", ":")))
+        write_atomic(path, json.dumps(self.to_json(), separators=(",", ":")))
 
     @classmethod
     def load(cls, path: str | os.PathLike[str]) -> Session:
-        try:
-            data = json.loads(Path(path).read_text(encoding="utf-8"))
-        except OSError as exc:
-            raise SessionError(f"{path}: cannot read: {exc.strerror}") from None
-        except UnicodeDecodeError as exc:
-            raise SessionError(f"{path}: byte offset {exc.start}: not UTF-8") from None
-        except json.JSONDecodeError as exc:
-            raise SessionError(f"{path}:{exc.lineno}:{exc.colno}: {exc.msg}") from None
+        data = read_json(path, SessionError)
         try:
             return cls.from_json(data)
         except SessionError as exc:
@@ -249,6 +245,7 @@ class Session:
             table = Table(**data["table"])
         except (TypeError, ValueError) as exc:
             raise SessionError(f"table: {exc}") from None
+        check_table(table)
         tl = Timeline(table, opening_state(table))
         tl.time_frames = _frames(data, "time_frames", "time")
         tl.event_frames = _frames(data, "event_frames", "event")
@@ -266,6 +263,30 @@ class Session:
         except (TypeError, ValueError, KeyError, IndexError):
             raise SessionError(f"bad cursor {data.get('cursor')!r}") from None
         return cls(tl, cursor)
+
+
+# The thesis's display shows 12 frames/s and a checkpoint replays at 25 (§6.2.2, §6.4); a
+# session asking for more than this many frames per simulated second is not one the program
+# could show, and a frame rate of 10^9 would fill memory with frames.
+MAX_FRAME_RATE = 1000
+
+
+def check_table(table: Table) -> Table:
+    """Refuse table constants that ask for unbounded work (today: the frame rate); the
+    command line's ``--table`` overrides go through this too."""
+    if not 1 <= table.frame_rate <= MAX_FRAME_RATE:
+        raise SessionError(f"table: frame_rate {table.frame_rate} is outside 1..{MAX_FRAME_RATE}")
+    return table
+
+
+def _reason(exc: BaseException) -> str:
+    """An exception's own message, or what it means when Python's is cryptic."""
+    text = str(exc)
+    if isinstance(exc, OverflowError):
+        return "a number too large for the format"
+    if isinstance(exc, (TypeError, AttributeError)) or not text:
+        return "a field has the wrong type (see docs/reliability.md for the format)"
+    return text
 
 
 def _frame_json(f: Frame) -> dict[str, object]:
@@ -292,8 +313,10 @@ def _frames(data: dict[str, object], key: str, kind: str) -> list[Frame]:
             shot = None if d["shot"] is None else Shot.from_json(d["shot"])
             f = Frame(kind, int(d["index"]), BallState.from_json(d["balls"]),  # type: ignore[arg-type]
                       GameState.from_json(d["game"]), shot, ev)
-        except (KeyError, TypeError, ValueError) as exc:
-            raise SessionError(f"{key}[{k}]: {exc!r}") from None
+        except KeyError as exc:
+            raise SessionError(f"{key}[{k}]: missing {exc}") from None
+        except (TypeError, ValueError, OverflowError, AttributeError) as exc:
+            raise SessionError(f"{key}[{k}]: {_reason(exc)}") from None
         if kind == "event" and ev is None:
             raise SessionError(f"{key}[{k}]: an event frame without its event")
         out.append(replace(f))

@@ -25,10 +25,14 @@ from emulator.rainbow.colour import parse_hex
 from emulator.rainbow.device import Rainbow
 from emulator.rainbow.errors import RainbowError
 from emulator.rainbow.graph import SCREEN
+from protocols.textinput import read_json
 
 
 class SceneError(ValueError):
     pass
+
+
+INT32_MIN, INT32_MAX = -(1 << 31), (1 << 31) - 1
 
 
 def _int(obj: dict, key: str, path: str, default: int | None = None,
@@ -39,8 +43,11 @@ def _int(obj: dict, key: str, path: str, default: int | None = None,
         return default
     v = obj[key]
     if not isinstance(v, int) or isinstance(v, bool):
-        raise SceneError(f"{path}.{key}: must be an integer, got {json.dumps(v)}")
-    if (lo is not None and v < lo) or (hi is not None and v > hi):
+        raise SceneError(f"{path}.{key}: must be an integer, got {json.dumps(v)[:40]}")
+    # the command stream carries every number as an int32 (protocols.rainbow.stream)
+    lo = INT32_MIN if lo is None else lo
+    hi = INT32_MAX if hi is None else hi
+    if not lo <= v <= hi:
         raise SceneError(f"{path}.{key}: {v} is outside {lo}..{hi}")
     return v
 
@@ -191,11 +198,7 @@ def _fill(r: Rainbow, pid: int, spec: dict, p: str, w: int, h: int, depth: int) 
 
 
 def load_scene(path: str | Path, device: Rainbow | None = None) -> Rainbow:
-    path = Path(path)
-    try:
-        scene = json.loads(path.read_text())
-    except json.JSONDecodeError as exc:
-        raise SceneError(f"{path}:{exc.lineno}:{exc.colno}: not JSON ({exc.msg})") from None
-    except OSError as exc:
-        raise SceneError(f"{path}: {exc.strerror}") from None
+    """Read a scene file; any bad byte, bad JSON, deep nesting or huge number raises
+    SceneError naming the file (and line:column where there is one)."""
+    scene = read_json(path, SceneError)
     return build_scene(scene, device, str(path))

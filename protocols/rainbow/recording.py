@@ -21,6 +21,7 @@ from pathlib import Path
 from protocols.atomicfile import write_atomic
 from protocols.rainbow.events import Event, decode_events, encode_event
 from protocols.rainbow.transport import Transport
+from protocols.textinput import quote, read_text
 
 MAGIC = "# camlab88 rainbow recording v1"
 
@@ -40,7 +41,7 @@ class Recording:
 
     @classmethod
     def load(cls, path: str | Path) -> Recording:
-        lines = Path(path).read_text().splitlines()
+        lines = read_text(path, error=RecordingError, bom=False).splitlines()
         if not lines or lines[0].strip() != MAGIC:
             raise RecordingError(f"{path}:1: not a camlab88 rainbow recording")
         rec = cls()
@@ -49,7 +50,7 @@ class Recording:
                 continue
             d, _, h = line.partition(" ")
             if d not in (">", "<", "i"):
-                raise RecordingError(f"{path}:{n}: unknown direction {d!r}")
+                raise RecordingError(f"{path}:{n}: unknown direction {quote(d, 20)}")
             try:
                 data = bytes.fromhex(h)
             except ValueError:

@@ -59,7 +59,7 @@ def test_subset_starts_from_that_frame() -> None:
 
 
 @settings(max_examples=40, deadline=None)
-@given(st.lists(st.lists(st.tuples(st.integers(-40000, 70000), st.integers(-40000, 70000)),
+@given(st.lists(st.lists(st.tuples(st.integers(0, 65535), st.integers(0, 65535)),
                          min_size=22, max_size=22), min_size=1, max_size=6))
 def test_any_integer_positions_round_trip(frames) -> None:
     cp = Checkpoint(np.array(frames, dtype=np.int64))
