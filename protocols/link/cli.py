@@ -9,8 +9,11 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
+import signal
 import sys
 import threading
+from collections.abc import Iterator
 from fractions import Fraction
 from typing import Any
 
@@ -41,7 +44,7 @@ def printable(data: bytes) -> str:
 def dump(path: str, out: Any = sys.stdout) -> int:
     try:
         rec = read_recording(path)
-    except RecordingError as exc:
+    except RecordingError as exc:  # names the file and line
         print(f"error: {exc}", file=sys.stderr)
         return 1
     print(f"# {path}: {rec.settings}, xonxoff {'on' if rec.xonxoff else 'off'}, "
@@ -101,6 +104,24 @@ def run_echo(
     return echoed
 
 
+@contextlib.contextmanager
+def _sigterm_as_interrupt() -> Iterator[None]:
+    """SIGTERM (kill, a service manager stopping us) ends the echo like Ctrl-C does, so the
+    recording is finished and written (issue 18 item 8); the old handler comes back after."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def interrupt(signum: int, frame: object) -> None:
+        raise KeyboardInterrupt
+
+    old = signal.signal(signal.SIGTERM, interrupt)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, old)
+
+
 def _echo(args: argparse.Namespace) -> int:
     from protocols.link.transports import PtyBridge, SerialUrlBridge, TcpBridge
 
@@ -119,7 +140,9 @@ def _echo(args: argparse.Namespace) -> int:
         print(f"echo device on a {settings} line: open {bridge.slave_path} as a serial port",
               flush=True)
     try:
-        n = run_echo(bridge, line, seconds=args.seconds, speed=args.speed or None, log=sys.stdout)
+        with _sigterm_as_interrupt():
+            n = run_echo(bridge, line, seconds=args.seconds, speed=args.speed or None,
+                         log=sys.stdout)
     except KeyboardInterrupt:
         n = -1
     finally:

@@ -32,6 +32,7 @@ from typing import IO
 from protocols.link.clock import TimeLike, to_time
 from protocols.link.line import XOFF, XON
 from protocols.link.settings import LineSettings
+from protocols.textinput import read_text
 
 MAGIC = "camlab88-link-recording"
 VERSION = 1
@@ -41,8 +42,8 @@ DIRECTIONS = (">", "<")
 OVERLAP_TOLERANCE = Fraction(1, 10**6)
 
 MAX_MERGED_CHUNK = 4096  # back-to-back pieces are merged into chunks up to about this size
-_DECIMAL = re.compile(r"^\d+(\.\d+)?$")
-_RATIO = re.compile(r"^\d+/[1-9]\d*$")
+_DECIMAL = re.compile(r"^[0-9]+(\.[0-9]+)?\Z")
+_RATIO = re.compile(r"^[0-9]+/[1-9][0-9]*\Z")
 _HEX = re.compile(r"^(?:[0-9a-fA-F]{2})+$")
 
 
@@ -76,12 +77,22 @@ def format_time(t: Fraction) -> str:
     return f"{whole}.{frac:0{places}d}"
 
 
+# A recording's clock: ten years of line time is more than any session; a time beyond it is
+# damage, and refusing it keeps float(t) and the frame count of a render finite.
+MAX_SECONDS = 10**9
+MAX_TIME_CHARS = 64
+
+
 def parse_time(text: str) -> Fraction:
-    if _DECIMAL.match(text):
-        return Fraction(text)
-    if _RATIO.match(text):
-        return Fraction(text)
-    raise ValueError(f"bad time {text!r} (want seconds as 0.123456 or p/q)")
+    if len(text) > MAX_TIME_CHARS:
+        raise ValueError(f"time {text[:24]!r}... is {len(text)} characters long "
+                         f"(at most {MAX_TIME_CHARS})")
+    if _DECIMAL.match(text) or _RATIO.match(text):
+        t = Fraction(text)
+        if t > MAX_SECONDS:
+            raise ValueError(f"time {text[:24]} s is past the {MAX_SECONDS} s a recording may span")
+        return t
+    raise ValueError(f"bad time {text[:24]!r} (want seconds as 0.123456 or p/q)")
 
 
 @dataclass(frozen=True)
@@ -319,16 +330,5 @@ def parse_recording(text: str, name: str = "<recording>") -> Recording:
 
 def read_recording(path: str | os.PathLike[str]) -> Recording:
     """Read a recording file; a bad file raises RecordingError naming the file and line."""
-    p = Path(path)
-    try:
-        raw = p.read_bytes()
-    except OSError as exc:
-        raise RecordingError(f"{p}: cannot read recording: {exc.strerror or exc}") from None
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError as exc:
-        lineno = raw[: exc.start].count(b"\n") + 1
-        raise RecordingError(
-            f"{p}:{lineno}: not UTF-8 text (byte offset {exc.start})"
-        ) from None
-    return parse_recording(text, str(p))
+    text = read_text(path, error=RecordingError, bom=False)
+    return parse_recording(text, str(path))

@@ -4,6 +4,11 @@
 virtual time (and are paced at the baud rate from there), bytes that have arrived at the
 bridged end are written out. A client going away is reported as an event, never raised:
 the device on the line keeps running and a new client may connect.
+
+Per-connection rule (docs/reliability.md): after a client goes away the bridge *settles* —
+whatever the line still delivers to its end is dropped, and a new client's bytes are held
+back — until the line is idle both ways (or SETTLE_POLLS polls have passed, for a device
+that never goes quiet), so one client never receives bytes that belong to another.
 """
 
 from __future__ import annotations
@@ -21,6 +26,8 @@ from protocols.link.pty import PtyPort
 from protocols.link.settings import LineSettings
 
 MAX_EVENTS = 100  # events kept on .events; older ones are dropped
+SETTLE_POLLS = 1000  # at most this many polls between clients spent waiting for an idle line
+MAX_HELD = 1 << 20  # a new client's bytes held while settling; more and it is hung up on
 
 
 @dataclass(frozen=True)
@@ -48,6 +55,8 @@ class Bridge:
         self.dropped = 0
         self.closed = False
         self._new_events: list[BridgeEvent] = []
+        self._settle = 0  # polls left to wait for the line to go idle between clients
+        self._held = bytearray()  # a new client's bytes while the line settles
 
     def attach(self, endpoint: Endpoint) -> None:
         self.endpoint = endpoint
@@ -76,6 +85,17 @@ class Bridge:
             raise ValueError(f"{type(self).__name__} is closed")
         result = PollResult()
         data = self._read_outside(timeout)
+        if self._settle and self._settling():
+            self._held += data
+            self.dropped += len(out := self.endpoint.read())
+            result.dropped = len(out)
+            if len(self._held) > MAX_HELD:
+                self._held.clear()
+                self._hang_up("sent over 1 MiB while the line settled")
+            result.events, self._new_events = self._new_events, []
+            return result
+        if self._held:
+            data, self._held = bytes(self._held) + data, bytearray()
         if data:
             self.endpoint.write(data)
             self.bytes_in += len(data)
@@ -92,6 +112,22 @@ class Bridge:
                 result.dropped = len(out)
         result.events, self._new_events = self._new_events, []
         return result
+
+    def _settling(self) -> bool:
+        """Still waiting for the line to go idle after a client left (counts one poll)."""
+        assert self.endpoint is not None
+        line = self.endpoint.line
+        self._settle -= 1
+        if line.host.in_flight() == 0 and line.device.in_flight() == 0:
+            self._settle = 0
+        return self._settle > 0
+
+    def _start_settling(self) -> None:
+        self._settle = SETTLE_POLLS
+        self._held.clear()
+
+    def _hang_up(self, why: str) -> None:
+        """Subclasses that serve clients drop the current one."""
 
     def close(self) -> None:
         self.closed = True
@@ -182,6 +218,11 @@ class TcpBridge(Bridge):
             self._client = None
             self._pending.clear()
             self._event("disconnected", why)
+            if self.endpoint is not None:
+                self._start_settling()
+
+    def _hang_up(self, why: str) -> None:
+        self._drop_client(why)
 
     def _read_outside(self, timeout: float) -> bytes:
         watch = [self._server] + ([self._client] if self._client else [])
