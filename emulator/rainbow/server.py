@@ -1,45 +1,157 @@
-"""The optional local-socket transport, device end: serve one Rainbow on 127.0.0.1."""
+"""The optional local-socket transport, device end: serve one Rainbow on 127.0.0.1.
+
+Policy (docs/reliability.md): the Rainbow serves one program at a time, as the real
+workstation served its one host. A second program that connects meanwhile gets a REFUSED
+frame saying so and is closed. Every connection starts with a fresh frame decoder, so a
+half frame left by one client never reaches the next and error offsets count from the
+connection's first byte. A client that resets, closes mid-frame or sends garbage loses its
+connection and nothing else: the server goes on to the next. A client that leaves half a
+frame unfinished for ``frame_timeout`` seconds, or says nothing for ``idle_timeout`` seconds
+while another program is waiting, is hung up on — so no client can wedge the server.
+"""
 
 from __future__ import annotations
 
+import contextlib
+import select
 import socket
+import time
+from dataclasses import dataclass, field
 
 from emulator.rainbow.executor import Executor
 from protocols.rainbow.stream import REFUSED, Decoder, StreamError, encode_reply
 
+FRAME_TIMEOUT = 10.0  # s a half-received frame may wait for its rest
+IDLE_TIMEOUT = 60.0  # s of silence after which a client gives way to a waiting one
+BUSY = b"the Rainbow is serving another program; try again when it has finished"
 
-def serve_connection(conn: socket.socket, executor: Executor) -> None:
-    """Answer command frames until the client hangs up (or sends garbage)."""
+
+@dataclass
+class ServerStats:
+    served: int = 0  # connections accepted and finished
+    refused: int = 0  # connections turned away while another was served
+    dropped: list[str] = field(default_factory=list)  # why connections ended early
+
+
+def _send(conn: socket.socket, data: bytes) -> bool:
+    try:
+        conn.sendall(data)
+    except OSError:
+        return False
+    return True
+
+
+def _refuse(conn: socket.socket, why: bytes) -> None:
     with conn:
-        while True:
-            data = conn.recv(1 << 16)
-            if not data:
-                return
-            try:
-                replies = executor.feed(data)
-            except StreamError:
-                replies = b""
-            if replies:
-                conn.sendall(replies)
-            if executor.decoder.error is not None:
-                # A broken frame cannot be resynchronised: say why, then hang up.
-                conn.sendall(encode_reply(REFUSED, str(executor.decoder.error).encode()))
-                executor.decoder = Decoder()
-                return
+        conn.settimeout(1.0)  # a client that never reads cannot hold us here
+        _send(conn, encode_reply(REFUSED, why))
+
+
+class _Client:
+    """One connection: its socket, its own decoder, and when it last sent anything."""
+
+    def __init__(self, conn: socket.socket, executor: Executor) -> None:
+        self.conn = conn
+        self.executor = executor
+        executor.decoder = Decoder()  # per-connection state: nothing carries over
+        conn.settimeout(FRAME_TIMEOUT)  # sendall to a client that stops reading gives up
+        self.last_heard = time.monotonic()
+
+    def receive(self) -> str | None:
+        """Handle what the client sent; returns why the connection ends, or None."""
+        try:
+            data = self.conn.recv(1 << 16)
+        except OSError as exc:
+            return f"receive failed: {exc.strerror or exc}"
+        if not data:
+            return "closed by the client" + (" mid-frame" if self.executor.decoder.pending
+                                             else "")
+        self.last_heard = time.monotonic()
+        try:
+            replies = self.executor.feed(data)
+        except StreamError:
+            replies = b""
+        if replies and not _send(self.conn, replies):
+            return "the client stopped taking replies"
+        error = self.executor.decoder.error
+        if error is not None:
+            # A broken frame cannot be resynchronised: say why, then hang up.
+            _send(self.conn, encode_reply(REFUSED, str(error).encode()))
+            return f"bad frame: {error}"
+        return None
+
+    def overdue(self, now: float, someone_waiting: bool,
+                frame_timeout: float, idle_timeout: float) -> str | None:
+        silent = now - self.last_heard
+        if self.executor.decoder.pending and silent > frame_timeout:
+            return f"half a frame unfinished for {silent:.0f} s"
+        if someone_waiting and silent > idle_timeout:
+            return f"idle for {silent:.0f} s while another program waited"
+        return None
+
+    def close(self) -> None:
+        with contextlib.suppress(OSError):
+            self.conn.close()
 
 
 def listen(port: int = 0, host: str = "127.0.0.1") -> socket.socket:
     s = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
     s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
     s.bind((host, port))
-    s.listen(1)
+    s.listen(4)
     return s
 
 
-def serve(executor: Executor, sock: socket.socket, connections: int | None = None) -> None:
-    """Serve connections one after another (``connections`` of them, or for ever)."""
-    served = 0
-    while connections is None or served < connections:
+def _waiting(sock: socket.socket) -> bool:
+    return bool(select.select([sock], [], [], 0)[0])
+
+
+def serve(executor: Executor, sock: socket.socket, connections: int | None = None,
+          frame_timeout: float = FRAME_TIMEOUT, idle_timeout: float = IDLE_TIMEOUT,
+          poll: float = 0.5) -> ServerStats:
+    """Serve programs one at a time until ``connections`` have been served (None: for ever);
+    see the module docstring for what happens to the others."""
+    stats = ServerStats()
+    client: _Client | None = None
+    try:
+        while connections is None or stats.served < connections:
+            watch = [sock] + ([client.conn] if client else [])
+            ready = select.select(watch, [], [], poll)[0]
+            if client is not None and client.conn in ready:
+                why = client.receive()
+                if why is None:
+                    why = client.overdue(time.monotonic(), _waiting(sock), frame_timeout,
+                                         idle_timeout)
+                    if why is None:
+                        continue  # read it to its end before judging a newcomer "busy"
+            elif client is not None:
+                why = client.overdue(time.monotonic(), sock in ready, frame_timeout,
+                                     idle_timeout)
+            else:
+                why = None
+            if client is not None and why is not None:
+                client.close()
+                client = None
+                stats.served += 1
+                if why != "closed by the client":
+                    stats.dropped.append(why)
+                continue
+            if sock in ready:
+                client = _accept(sock, executor, client, stats)
+    finally:
+        if client is not None:
+            client.close()
+    return stats
+
+
+def _accept(sock: socket.socket, executor: Executor, client: _Client | None,
+            stats: ServerStats) -> _Client | None:
+    try:
         conn, _ = sock.accept()
-        serve_connection(conn, executor)
-        served += 1
+    except OSError:
+        return client  # the caller went away between select and accept
+    if client is not None:
+        _refuse(conn, BUSY)
+        stats.refused += 1
+        return client
+    return _Client(conn, executor)
