@@ -15,7 +15,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from apps.ca import kernels
+from apps.ca import algorithms, kernels
+from apps.ca.hashlife.algorithm import DEFAULT_MEMORY, Tree
 from apps.ca.rules import RuleSet
 from apps.ca.tables import compile_rules
 
@@ -113,11 +114,24 @@ def _sorted(ys: np.ndarray, xs: np.ndarray, ts: np.ndarray):
 
 
 class Engine:
-    """State of the plane plus the rules; the model behind the ``ca`` program."""
+    """State of the plane plus the rules; the model behind the ``ca`` program.
 
-    def __init__(self, rules: RuleSet | None = None, edges: str = "wrap", seed: int = 0) -> None:
+    ``algorithm`` picks the stepping strategy (apps.ca.algorithms): "direct" (message
+    passing, every rule set), "hashlife" (jumps, deterministic rules) or "auto"."""
+
+    def __init__(self, rules: RuleSet | None = None, edges: str = "wrap", seed: int = 0,
+                 algorithm: str = "direct") -> None:
         if edges not in EDGES:
             raise ValueError(f"edges must be one of {EDGES}, not {edges!r}")
+        if algorithm not in algorithms.CHOICES:
+            raise ValueError(f"algorithm must be one of {algorithms.CHOICES}, not "
+                             f"{algorithm!r}")
+        self.algorithm = algorithm
+        self.hashlife_memory = DEFAULT_MEMORY  # bytes of HashLife node table (Golly's limit)
+        # A HashLife tree equal to the cells, kept between jumps; while ``_tree_only`` the
+        # cell arrays are out of date and are rebuilt from the tree on demand.
+        self.tree: Tree | None = None
+        self._tree_only = False
         self.rules = rules
         self.edges = edges
         self.seed = int(seed)
@@ -137,6 +151,10 @@ class Engine:
 
     # -- the two storage forms ------------------------------------------------------
     def _sync(self) -> None:
+        if self._tree_only:
+            self._ys, self._xs, self._ts = self.tree.cells()
+            self._tree_only = False
+            return
         if self._dense is None:
             return
         y0, x0, grid = self._dense
@@ -154,6 +172,7 @@ class Engine:
     @ys.setter
     def ys(self, value: np.ndarray) -> None:
         self._sync()
+        self.tree = None
         self._ys = value
 
     @property
@@ -164,6 +183,7 @@ class Engine:
     @xs.setter
     def xs(self, value: np.ndarray) -> None:
         self._sync()
+        self.tree = None
         self._xs = value
 
     @property
@@ -174,12 +194,15 @@ class Engine:
     @ts.setter
     def ts(self, value: np.ndarray) -> None:
         self._sync()
+        self.tree = None
         self._ts = value
 
     # -- rules and options ------------------------------------------------------
     def set_rules(self, rules: RuleSet) -> None:
         """Change rules (mid-run too); life-forms without rules die next generation."""
         compile_rules(rules)
+        self._sync()
+        self.tree = None  # its node table belongs to the old rules
         self.rules = rules
 
     def set_advance_area(self, rect: Rect | None) -> None:
@@ -191,6 +214,8 @@ class Engine:
     # -- cells ----------------------------------------------------------------
     @property
     def population(self) -> int:
+        if self._tree_only:
+            self._sync()
         if self._dense is not None:
             return self._dense_pop
         return int(self._ts.shape[0])
@@ -308,9 +333,28 @@ class Engine:
         }
 
     # -- stepping ----------------------------------------------------------------
-    def step(self, generations: int = 1) -> None:
-        for _ in range(int(generations)):
+    def step(self, generations: int = 1, progress: algorithms.Progress | None = None) -> None:
+        """Advance ``generations`` with the chosen algorithm; ``progress(done, asked)`` is
+        called on the way (after each jump, or each generation)."""
+        name = algorithms.choose_engine(self.rules, int(generations), self.advance_area,
+                                        self.algorithm)
+        algorithms.get_algorithm(name).advance(self, int(generations), progress)
+
+    def step_direct(self, generations: int = 1,
+                    progress: algorithms.Progress | None = None) -> None:
+        """Advance one generation at a time by message passing (the direct algorithm)."""
+        self._sync()
+        self.tree = None
+        for i in range(int(generations)):
             self._step_once()
+            if progress is not None:
+                progress(i + 1, int(generations))
+
+    def adopt_tree(self, tree: Tree) -> None:
+        """Take a HashLife tree as the state (the cell arrays are rebuilt when needed)."""
+        self._dense = None  # the tree replaces whichever form held the state
+        self.tree = tree
+        self._tree_only = True
 
     def _step_once(self) -> None:
         if self.rules is None:
@@ -493,10 +537,12 @@ class Engine:
     # -- copies -------------------------------------------------------------------
     def copy(self) -> Engine:
         self._sync()
-        e = Engine(self.rules, self.edges, self.seed)
+        e = Engine(self.rules, self.edges, self.seed, self.algorithm)
         e.generation = self.generation
         e.advance_area = self.advance_area
+        e.hashlife_memory = self.hashlife_memory
         e.ys, e.xs, e.ts = self.ys.copy(), self.xs.copy(), self.ts.copy()
+        e.tree = self.tree  # nodes are immutable: the copy may share the tree
         return e
 
     def same_state(self, other: Engine) -> bool:

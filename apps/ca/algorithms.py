@@ -1,0 +1,75 @@
+"""The engine's stepping strategies and how one is chosen (after Golly's ``lifealgo``
+registry: one interface, one module per algorithm).
+
+* ``direct``: message passing one generation at a time (thesis section 7.5; engine.py and
+  kernels.py) — every rule set, advance areas, section 8.1 random outcomes and broadcasts;
+* ``hashlife``: memoised quadtree jumps (apps/ca/hashlife) — deterministic rule sets on the
+  whole plane, any number of generations at once.
+
+``auto`` picks HashLife when it applies and the run is long enough to pay for building the
+tree (:func:`choose_engine`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Protocol
+
+from apps.ca.hashlife.algorithm import HashLife, reason_against
+from apps.ca.rules import RuleSet
+
+CHOICES = ("auto", "direct", "hashlife")
+# "auto" uses HashLife from this many generations on (docs/perf/ca.md: below it the direct
+# engine finishes first on the library's patterns, tree building included).
+AUTO_MIN_GENERATIONS = 256
+
+Progress = Callable[[int, int], None]
+
+
+class Algorithm(Protocol):
+    name: str
+
+    def unsupported(self, engine) -> str | None:  # noqa: ANN001 - an Engine
+        """Why this algorithm cannot step ``engine`` as it is (None: it can)."""
+
+    def advance(self, engine, generations: int,  # noqa: ANN001
+                progress: Progress | None = None) -> None:
+        """Advance ``engine`` by ``generations``, calling ``progress(done, asked)``."""
+
+
+class Direct:
+    """One generation at a time by message passing (Engine.step_direct)."""
+
+    name = "direct"
+
+    def unsupported(self, engine) -> str | None:  # noqa: ANN001
+        return None  # every rule set (stepping without rules raises "no rules loaded")
+
+    def advance(self, engine, generations: int,  # noqa: ANN001
+                progress: Progress | None = None) -> None:
+        engine.step_direct(generations, progress)
+
+
+ALGORITHMS: dict[str, Algorithm] = {"direct": Direct(), "hashlife": HashLife()}
+
+
+def get_algorithm(name: str) -> Algorithm:
+    try:
+        return ALGORITHMS[name]
+    except KeyError:
+        raise ValueError(f"engine must be one of {CHOICES}, not {name!r}") from None
+
+
+def choose_engine(rules: RuleSet | None, generations: int, advance_area: object = None,
+                  engine: str = "auto") -> str:
+    """The algorithm to run ``generations`` with: ``engine`` itself if forced (a clear
+    ValueError if HashLife is forced where it cannot run), else HashLife when it applies
+    and the run is at least AUTO_MIN_GENERATIONS long."""
+    if engine not in CHOICES:
+        raise ValueError(f"engine must be one of {CHOICES}, not {engine!r}")
+    reason = reason_against(rules, advance_area)
+    if engine == "hashlife" and reason is not None:
+        raise ValueError(f"HashLife cannot run here: {reason}; use the direct engine")
+    if engine != "auto":
+        return engine
+    return "hashlife" if reason is None and generations >= AUTO_MIN_GENERATIONS else "direct"

@@ -1,0 +1,12 @@
+"""HashLife (Gosper 1984) for any deterministic rule set of the thesis's rule language.
+
+The plane is a quadtree of hash-consed nodes whose leaves are life-form values; each node of
+level k remembers its centre after 2**j generations (j <= k - 2 - s, where 2**s is at least
+the rules' message reach), so repeated regions of space and time are computed once.  See
+docs/ca.md ("Jumping ahead: HashLife") and docs/perf/ca.md.
+
+Modules: ``store`` (the node table and its garbage collection), ``leaf`` (one generation of
+the rules on a small grid), ``evolve`` (the memoised recursion), ``convert`` (cells to and
+from a tree), ``plane`` (the 65536-square plane's wrapping and bounded edges) and
+``algorithm`` (the strategy the engine calls).
+"""

@@ -1,0 +1,155 @@
+"""HashLife as an engine strategy: advance an :class:`~apps.ca.engine.Engine` by any number
+of generations in jumps of powers of two (the binary digits of the count, largest first).
+
+The tree of the plane is kept on the engine between jumps (``engine.tree``), so a run of
+jumps converts cells to a tree once and back only when cells are looked at.  The node
+table belongs to the rule set (results depend only on the rules) and is shared by every
+engine running it; its garbage collection renumbers nodes, which voids the trees of other
+engines (they rebuild theirs from their cells).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from apps.ca.hashlife import convert, evolve
+from apps.ca.hashlife.leaf import LeafRule, deterministic_reason, leaf_rule
+from apps.ca.hashlife.plane import frame
+from apps.ca.hashlife.store import TOP_LEVEL, NodeStore
+from apps.ca.rules import RuleSet
+
+# Leaves are this many levels above the smallest possible (2**(s+2) cells square, one
+# generation): bigger leaves run more generations directly per memoised result.
+LEAF_EXTRA = 1
+DEFAULT_MEMORY = 512 << 20  # bytes of node table, as Golly's default "maximum memory"
+
+Progress = Callable[[int, int], None]  # (generations done, generations asked)
+
+
+def reason_against(rules: RuleSet | None, advance_area: object = None) -> str | None:
+    """Why HashLife cannot run these rules on this plane (None: it can)."""
+    if rules is None:
+        return "no rules loaded"
+    if advance_area is not None and (advance_area.width, advance_area.height) != (65536,
+                                                                                   65536):
+        return "an advance area is set (HashLife steps the whole plane)"
+    return deterministic_reason(rules)
+
+
+@dataclass
+class Tree:
+    """A plane's state as a node of a rule set's table (valid while the epoch matches)."""
+
+    store: NodeStore
+    epoch: int
+    node: int
+
+    def valid(self, store: NodeStore) -> bool:
+        return self.store is store and self.epoch == store.epoch
+
+    def cells(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(ys, xs, types) of the live cells, row by row."""
+        rows = convert.cells(np.int64(self.node), self.store.ch, self.store.empty)
+        return rows[:, 0].copy(), rows[:, 1].copy(), rows[:, 2].copy()
+
+
+@dataclass
+class _Run:
+    """What one rule set's jumps need: its node table and compiled leaf rule."""
+
+    store: NodeStore
+    rule: LeafRule
+    params: np.ndarray  # int64 (leaf level, s, reach)
+    tables: tuple
+    grids: np.ndarray
+
+    @classmethod
+    def of(cls, rules: RuleSet, memory: int) -> _Run:
+        run = rules._tables.get("hashlife_run")
+        if run is None:
+            rule = leaf_rule(rules)
+            leaf = rule.shift + 2 + LEAF_EXTRA
+            side = 1 << leaf
+            tables = tuple(np.ascontiguousarray(t, np.int64) for t in (
+                rule.inc, rule.mop, rule.mval, rule.lookup, rule.kind, rule.a, rule.b,
+                rule.form))
+            run = cls(NodeStore(limit_bytes=memory), rule,
+                      np.array([leaf, rule.shift, max(rule.ry, rule.rx, 1)], np.int64),
+                      tables, np.zeros((3, side, side), np.int64))
+            rules._tables["hashlife_run"] = run
+        run.store.limit_bytes = int(memory)
+        return run
+
+    @property
+    def max_j(self) -> int:
+        return TOP_LEVEL - 2 - self.rule.shift
+
+
+class HashLife:
+    """The strategy: deterministic rules, no advance area; both edge modes exactly."""
+
+    name = "hashlife"
+
+    def unsupported(self, engine) -> str | None:  # noqa: ANN001 - an Engine
+        """Why this engine's state cannot be advanced by HashLife (None: it can)."""
+        return reason_against(engine.rules, engine.advance_area)
+
+    def advance(self, engine, generations: int, progress: Progress | None = None) -> None:  # noqa: ANN001
+        reason = self.unsupported(engine)
+        if reason is not None:
+            raise ValueError(f"HashLife cannot step this plane: {reason}")
+        run = _Run.of(engine.rules, engine.hashlife_memory)
+        node = self._plane(engine, run)
+        done, total = 0, int(generations)
+        while done < total:
+            j = min(run.max_j, (total - done).bit_length() - 1)
+            node = self._jump(run, node, j, engine.edges)
+            done += 1 << j
+            engine.generation += 1 << j
+            engine.adopt_tree(Tree(run.store, run.store.epoch, node))
+            if progress is not None:
+                progress(done, total)
+
+    def _plane(self, engine, run: _Run) -> int:  # noqa: ANN001
+        tree = engine.tree
+        if tree is not None and tree.valid(run.store):
+            return tree.node
+        ys, xs, ts = engine.ys, engine.xs, engine.ts
+        keys = convert.morton(xs, ys)
+        order = np.argsort(keys)
+        s = run.store
+        for _ in range(3):
+            node = int(convert.build(keys[order], ts[order], s.ch, s.lvl, s.slots, s.meta,
+                                     s.empty))
+            if node >= 0:
+                return node
+            s.make_room([])
+        raise MemoryError("the plane does not fit the HashLife memory limit "
+                          f"({s.limit_bytes >> 20} MB)")
+
+    def _jump(self, run: _Run, node: int, j: int, edges: str) -> int:
+        """The plane ``node`` after 2**j generations; on a full table collect garbage (or
+        grow) and retry, and as a last resort take two jumps of half the length."""
+        s = run.store
+        for _ in range(2):
+            try:
+                out = int(evolve.step(np.int64(frame(s, node, edges)), np.int64(j),
+                                      run.params, s.ch, s.lvl, s.res, s.resj, s.slots,
+                                      s.meta, s.empty, run.tables, run.grids))
+            except MemoryError:  # framing the plane found the table full
+                out = -1
+            if out >= 0:
+                return out
+            try:
+                (node,) = s.make_room([node])
+            except MemoryError:
+                if j == 0:
+                    raise
+                break
+        if j == 0:
+            raise MemoryError(f"one generation does not fit the HashLife memory limit "
+                              f"({s.limit_bytes >> 20} MB)")
+        return self._jump(run, self._jump(run, node, j - 1, edges), j - 1, edges)

@@ -1,0 +1,181 @@
+"""The hash-consed node table (numba open addressing) and its garbage collection.
+
+Node ids below ``LEAF_IDS`` are level-0 nodes: the life-form value itself (0 = dead, 1..65535)
+or ``WALL``, the outside of a bounded plane.  Every other id is a row of ``ch`` (the four
+quadrants nw, ne, sw, se), created at most once per distinct quadruple by :func:`join`.
+Each node also keeps one memoised result (``res``) and the generation exponent it is for
+(``resj``, -1 = none).  Kernels return -1 when the table is full; the caller collects
+garbage or grows the table and tries again.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+WALL = 65536  # level-0 value outside a bounded plane: never changes, sends nothing
+LEAF_IDS = WALL + 1
+TOP_LEVEL = 17  # the 65536-square plane is level 16; stepping frames it in a level-17 node
+BYTES_PER_NODE = 4 * 4 + 1 + 4 + 1 + 2 * 4  # ch, lvl, res, resj, two hash slots
+
+
+@njit(cache=True, inline="always")
+def _hash4(a, b, c, d, mask):
+    h = (np.uint64(a) * np.uint64(0x9E3779B97F4A7C15)
+         ^ np.uint64(b) * np.uint64(0xC2B2AE3D27D4EB4F)
+         ^ np.uint64(c) * np.uint64(0x165667B19E3779F9)
+         ^ np.uint64(d) * np.uint64(0x85EBCA77C2B2AE63))
+    return np.int64((h ^ (h >> np.uint64(29))) & np.uint64(mask))
+
+
+@njit(cache=True)
+def join(a, b, c, d, ch, lvl, slots, meta):
+    """The node with quadrants a, b, c, d (nw, ne, sw, se; equal levels), made at most once;
+    -1 if the table is full."""
+    mask = slots.shape[0] - 1
+    s = _hash4(a, b, c, d, mask)
+    while True:
+        i = slots[s]
+        if i < 0:
+            break
+        if ch[i, 0] == a and ch[i, 1] == b and ch[i, 2] == c and ch[i, 3] == d:
+            return np.int64(i)
+        s = (s + 1) & mask
+    n = meta[0]
+    if n >= ch.shape[0]:
+        return np.int64(-1)
+    slots[s] = n
+    ch[n, 0] = a
+    ch[n, 1] = b
+    ch[n, 2] = c
+    ch[n, 3] = d
+    lvl[n] = lvl[a] + 1
+    meta[0] = n + 1
+    return np.int64(n)
+
+
+@njit(cache=True)
+def rehash(ch, slots, n):
+    """Enter nodes LEAF_IDS..n-1 (all distinct) into an empty hash index."""
+    mask = slots.shape[0] - 1
+    for i in range(LEAF_IDS, n):
+        s = _hash4(np.int64(ch[i, 0]), np.int64(ch[i, 1]), np.int64(ch[i, 2]),
+                   np.int64(ch[i, 3]), mask)
+        while slots[s] >= 0:
+            s = (s + 1) & mask
+        slots[s] = i
+
+
+@njit(cache=True)
+def collect(roots, ch, lvl, resj, slots, meta):
+    """Keep only the nodes reachable from ``roots`` (renumbered, children before parents,
+    as they were made), forget every memoised result, rebuild the hash; roots are rewritten
+    with their new ids.  Returns the number of nodes kept."""
+    n = meta[0]
+    keep = np.zeros(n, np.uint8)
+    stack = np.empty(4 * n + roots.shape[0], np.int64)
+    top = 0
+    for r in range(roots.shape[0]):
+        stack[top] = roots[r]
+        top += 1
+    while top > 0:
+        top -= 1
+        i = stack[top]
+        if i < LEAF_IDS or keep[i]:
+            continue
+        keep[i] = 1
+        for q in range(4):
+            stack[top] = ch[i, q]
+            top += 1
+    new = np.arange(n, dtype=np.int64)
+    m = LEAF_IDS
+    for i in range(LEAF_IDS, n):
+        if keep[i]:
+            new[i] = m
+            for q in range(4):
+                ch[m, q] = new[ch[i, q]]
+            lvl[m] = lvl[i]
+            m += 1
+    resj[:] = -1
+    slots[:] = -1
+    meta[0] = m
+    rehash(ch, slots, np.int64(m))
+    for r in range(roots.shape[0]):
+        roots[r] = new[roots[r]]
+    return m
+
+
+class NodeStore:
+    """The arrays of one rule set's node table, its memory limit and garbage collection."""
+
+    def __init__(self, capacity: int = 1 << 18, limit_bytes: int = 512 << 20) -> None:
+        self.limit_bytes = int(limit_bytes)
+        self.epoch = 0  # bumped by every collection: node ids of older epochs are void
+        self._allocate(max(LEAF_IDS + 1024, int(capacity)))
+        self.empty = self._tower(0)
+        self.wall = self._tower(WALL)
+
+    def _allocate(self, cap: int) -> None:
+        self.ch = np.zeros((cap, 4), np.int32)
+        self.lvl = np.zeros(cap, np.int8)
+        self.res = np.zeros(cap, np.int32)
+        self.resj = np.full(cap, -1, np.int8)
+        hcap = 1 << (2 * cap - 1).bit_length()
+        self.slots = np.full(hcap, -1, np.int32)
+        self.meta = np.array([LEAF_IDS], np.int64)
+
+    @property
+    def count(self) -> int:
+        return int(self.meta[0])
+
+    @property
+    def capacity(self) -> int:
+        return int(self.ch.shape[0])
+
+    @property
+    def bytes(self) -> int:
+        return self.ch.nbytes + self.lvl.nbytes + self.res.nbytes + self.resj.nbytes \
+            + self.slots.nbytes
+
+    def _tower(self, value: int) -> np.ndarray:
+        """The uniform node of every level 0..TOP_LEVEL filled with ``value``."""
+        ids = np.zeros(TOP_LEVEL + 1, np.int64)
+        ids[0] = value
+        for k in range(1, TOP_LEVEL + 1):
+            a = np.int64(ids[k - 1])
+            ids[k] = join(a, a, a, a, self.ch, self.lvl, self.slots, self.meta)
+        return ids
+
+    def join(self, a: int, b: int, c: int, d: int) -> int:
+        n = int(join(np.int64(a), np.int64(b), np.int64(c), np.int64(d), self.ch, self.lvl,
+                     self.slots, self.meta))
+        if n < 0:
+            raise MemoryError("node table full")
+        return n
+
+    def make_room(self, roots: list[int]) -> list[int]:
+        """Collect garbage keeping ``roots`` (returned renumbered); then, if the table is
+        still over half full, double it while that stays within the memory limit.  Raises
+        MemoryError if neither freed anything."""
+        keep = np.array([*roots, *self.empty, *self.wall], np.int64)
+        collect(keep, self.ch, self.lvl, self.resj, self.slots, self.meta)
+        self.epoch += 1
+        n = len(roots)
+        self.empty, self.wall = keep[n:n + TOP_LEVEL + 1], keep[n + TOP_LEVEL + 1:]
+        if 2 * self.count > self.capacity and 2 * self.bytes <= self.limit_bytes:
+            self._grow()
+        elif 10 * self.count > 9 * self.capacity:  # collecting freed (almost) nothing
+            raise MemoryError(f"the HashLife node table is full ({self.count} nodes, "
+                              f"{self.bytes >> 20} MB) and the memory limit "
+                              f"({self.limit_bytes >> 20} MB) allows no more")
+        return [int(r) for r in keep[:n]]
+
+    def _grow(self) -> None:
+        """Double the table; every node keeps its id and its memoised result."""
+        old = (self.ch, self.lvl, self.res, self.resj)
+        n = self.count
+        self._allocate(2 * self.capacity)
+        for new, was in zip((self.ch, self.lvl, self.res, self.resj), old):
+            new[:n] = was[:n]
+        self.meta[0] = n
+        rehash(self.ch, self.slots, np.int64(n))
