@@ -55,7 +55,7 @@ def _frames(pos: np.ndarray, cols: np.ndarray, bounds: np.ndarray, sections: lis
 
 def inbetween(a: Drawing, b: Drawing, frames: int | None = None,
               path: SamplePath | None = None, timing: Timing | None = None,
-              missing: str = "copy-nearest", fit: str = "stretch", drop: bool = True,
+              missing: str = "copy-nearest", fit: str = pathfit.DEFAULT_FIT, drop: bool = True,
               fps: float = 25.0) -> AnimSequence:
     """Frames from ``a`` to ``b`` inclusive; ``frames`` counts both keyframes."""
     d = fractions(timing, frames)
