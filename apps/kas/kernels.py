@@ -1,74 +1,63 @@
-"""numba kernel for the in-betweener's hot loop: which points of every frame are redundant.
+"""The in-betweener's hot loop, which points of every frame are redundant, in numpy or numba.
 
-Same rule and the same floating-point expressions as ``model.redundant_mask`` (the numpy
-reference, which the tests compare it with), in one pass over frames x points instead of a
-dozen whole-array passes.
+Both paths give identical results (the same rule and floating-point expressions as
+``model.redundant_mask``; tests/test_startup_paths.py compares them). numba is 4-6x faster
+on a million points and more, but importing it and loading its cached kernels costs about
+0.45 s of a process's start-up, more than numpy needs for a million points (0.08 s) -- so a
+small in-between (every KAS command a user types) never imports numba, and a large one, or
+one in a process that has numba loaded already, uses the compiled kernels
+(docs/perf/startup.md).
 """
 
 from __future__ import annotations
 
+import sys
+
 import numpy as np
-from numba import njit
+
+from apps.kas.model import redundant_mask
+
+NUMBA_FROM_POINTS = 2_000_000  # frames x points from which numba pays for its own start-up
+NUMBA_LOADED_FROM_POINTS = 100_000  # ... once another part of the process has loaded numba
 
 
-@njit(cache=True)
+def use_numba(points: np.ndarray) -> bool:
+    """Whether the compiled kernels pay for an array of (frames, points, 2)."""
+    size = points.shape[0] * points.shape[1]
+    if "numba" in sys.modules:
+        return size >= NUMBA_LOADED_FROM_POINTS
+    return size >= NUMBA_FROM_POINTS
+
+
 def keep_mask(points: np.ndarray, colours: np.ndarray, bounds: np.ndarray,
               tol: float) -> np.ndarray:
-    f_n, n = points.shape[0], points.shape[1]
-    keep = np.ones((f_n, n), dtype=np.bool_)
-    tol2 = tol * tol
-    for f in range(f_n):
-        for j in range(bounds.shape[0] - 1):
-            s, e = bounds[j], bounds[j + 1] - 1
-            for i in range(s + 1, e + 1):
-                dx = points[f, i, 0] - points[f, i - 1, 0]
-                dy = points[f, i, 1] - points[f, i - 1, 1]
-                l1 = dx * dx + dy * dy
-                if l1 == 0.0:
-                    keep[f, i] = False  # repeats the previous point
-                    continue
-                if i == e:
-                    continue
-                ex = points[f, i + 1, 0] - points[f, i, 0]
-                ey = points[f, i + 1, 1] - points[f, i, 1]
-                l2 = ex * ex + ey * ey
-                if l2 == 0.0 or colours[f, i] != colours[f, i + 1]:
-                    continue
-                cross = dx * ey - dy * ex
-                dot = dx * ex + dy * ey
-                if cross * cross <= tol2 * l1 * l2 and dot > 0.0:
-                    keep[f, i] = False
-    return keep
+    """(F, n) bool, True = keep: the point is neither a repeat nor the middle of a straight,
+    one-coloured run of its chain (chains split at ``bounds``)."""
+    if use_numba(points):
+        from apps.kas import kernels_jit
+
+        return kernels_jit.keep_mask(points, colours, bounds, tol)
+    return redundant_mask(points, colours, tol, bounds)
 
 
-@njit(cache=True)
 def compact(points: np.ndarray, colours: np.ndarray, keep: np.ndarray,
             bounds: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Kept points of all frames packed in order, and where each frame's chain j begins
     (``cut[f, j]``; ``cut[f, -1]`` is the end of frame f)."""
+    if use_numba(points):
+        from apps.kas import kernels_jit
+
+        return kernels_jit.compact(points, colours, keep, bounds)
+    return compact_numpy(points, colours, keep, bounds)
+
+
+def compact_numpy(points: np.ndarray, colours: np.ndarray, keep: np.ndarray,
+                  bounds: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``compact`` in whole-array numpy operations."""
     f_n, n = keep.shape
-    c_n = bounds.shape[0]
-    total = 0
-    for f in range(f_n):
-        for i in range(n):
-            if keep[f, i]:
-                total += 1
-    out_p = np.empty((total, 2), dtype=points.dtype)
-    out_c = np.empty(total, dtype=colours.dtype)
-    cut = np.empty((f_n, c_n), dtype=np.int64)
-    k = 0
-    for f in range(f_n):
-        j = 0
-        for i in range(n):
-            while j < c_n and bounds[j] == i:
-                cut[f, j] = k
-                j += 1
-            if keep[f, i]:
-                out_p[k, 0] = points[f, i, 0]
-                out_p[k, 1] = points[f, i, 1]
-                out_c[k] = colours[f, i]
-                k += 1
-        while j < c_n:
-            cut[f, j] = k
-            j += 1
-    return out_p, out_c, cut
+    before = np.zeros((f_n, n + 1), dtype=np.int64)  # kept points of frame f before index i
+    np.cumsum(keep, axis=1, out=before[:, 1:])
+    frame_start = np.zeros(f_n, dtype=np.int64)
+    np.cumsum(before[:-1, n], out=frame_start[1:])
+    cut = frame_start[:, None] + before[:, np.asarray(bounds, dtype=np.int64)]
+    return points[keep], colours[keep], cut

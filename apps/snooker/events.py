@@ -24,11 +24,19 @@ from dataclasses import dataclass
 
 import numpy as np
 
+SNOOKER_COMPILE_S = 7.0  # a cold compile of this module's and kernels.py's kernels, measured
+
 try:  # numba is a project dependency, but the model must still work without it
     from numba import njit as _njit
 
+    from protocols.kernel_notice import announce_compiles
+
+    # Cached, so only the first run after install compiles; every kernel here is called with
+    # one set of argument types (docs/development.md, "numba's cache").
     def _jit(f):  # type: ignore[no-untyped-def]
-        return _njit(cache=False, nogil=True)(f)
+        return _njit(cache=True, nogil=True)(f)
+
+    announce_compiles("snooker", SNOOKER_COMPILE_S, __name__, "apps.snooker.kernels")
 
     HAVE_NUMBA = True
 except ImportError:  # pragma: no cover - exercised only where numba is missing

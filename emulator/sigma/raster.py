@@ -23,6 +23,11 @@ _PY: dict[str, Callable[..., Any]] = {}  # kernel name -> plain Python definitio
 def _compile_all() -> None:
     from numba import njit
 
+    from protocols.kernel_notice import announce_compiles
+
+    # one line on stderr if the cache is cold; ~4 s is the measured cold compile
+    announce_compiles("Sigma raster", 4.0, __name__, "protocols.sigma.abbreviated")
+
     # Every kernel must be called with one set of argument types only: numba's on-disk cache
     # numbers a function's signatures 1, 2, ... and two processes compiling *different*
     # signatures at once can leave the index naming one signature's file holding the

@@ -1,0 +1,137 @@
+"""Say once when compiled kernels are being built, and let Ctrl-C stop a build cleanly.
+
+numba compiles a kernel on its first call unless its on-disk cache already holds it; on a
+first run after install that is several seconds of silence. numba broadcasts a
+``numba:compile`` event only when it really compiles (a cache hit loads without one), so a
+listener on that event knows the cache was cold *before* the work starts. A kernel module
+registers its group once (``announce_compiles("snooker", 7.0, __name__)``) and the first cold
+compile of any of its kernels prints one line to stderr:
+
+    camlab88: compiling snooker kernels, once: ~7 s
+
+A warm run prints nothing and pays nothing (no event fires).
+
+Ctrl-C during a build: the default handler raises KeyboardInterrupt wherever Python happens
+to be, and inside llvmlite that can be a destructor or callback whose exception is only
+printed ("Exception ignored ...") while the build carries on and the program exits 0. While
+the outermost compile runs, SIGINT instead ends the process at once with status 130 and one
+line on stderr. Nothing is lost that would have been kept: numba writes its cache files by
+rename, and the project writes user files atomically (protocols.atomicfile).
+
+It lives in protocols/ because apps, emulator and the command line may all import it; it
+imports numba only when a kernel module (which has imported numba already) registers.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import sys
+import threading
+from dataclasses import dataclass, field
+from typing import Any
+
+INTERRUPTED_STATUS = 130  # the shell's status for a process ended by SIGINT
+
+
+@dataclass
+class _Group:
+    label: str
+    seconds: float
+    announced: bool = False
+
+
+@dataclass
+class _State:
+    groups: dict[str, _Group] = field(default_factory=dict)  # module name -> its group
+    depth: int = 0
+    saved_handler: Any = None
+    listening: bool = False
+
+
+_state = _State()
+_lock = threading.Lock()
+
+
+def announce_compiles(label: str, seconds: float, *modules: str) -> None:
+    """Register the kernels defined in `modules` as one group named `label` whose cold
+    compile takes about `seconds` (measured on the project's 2-core machine)."""
+    group = _Group(label, seconds)
+    with _lock:
+        for name in modules:
+            _state.groups.setdefault(name, group)
+        if not _state.listening:
+            _listen()
+            _state.listening = True
+
+
+def notice_line(label: str, seconds: float) -> str:
+    """The one line printed before a cold group compiles."""
+    return f"camlab88: compiling {label} kernels, once: ~{max(1, round(seconds))} s"
+
+
+def _listen() -> None:
+    from numba.core import event
+
+    class CompileListener(event.Listener):
+        def on_start(self, ev: Any) -> None:
+            _compile_started(ev.data)
+
+        def on_end(self, ev: Any) -> None:
+            _compile_ended()
+
+    event.register("numba:compile", CompileListener())
+
+
+def _kernel_module(data: Any) -> str:
+    py_func = getattr(data.get("dispatcher"), "py_func", None) if isinstance(data, dict) else None
+    return getattr(py_func, "__module__", "") or ""
+
+
+def _compile_started(data: Any) -> None:
+    with _lock:
+        _state.depth += 1
+        outermost = _state.depth == 1
+        group = _state.groups.get(_kernel_module(data))
+        announce = group is not None and not group.announced
+        if announce:
+            group.announced = True
+    if outermost:
+        _guard_sigint()
+    if announce:
+        print(notice_line(group.label, group.seconds), file=sys.stderr, flush=True)
+
+
+def _compile_ended() -> None:
+    with _lock:
+        _state.depth = max(0, _state.depth - 1)
+        last = _state.depth == 0
+    if last:
+        _unguard_sigint()
+
+
+def _in_main_thread() -> bool:
+    return threading.current_thread() is threading.main_thread()
+
+
+def _guard_sigint() -> None:
+    # Only replace Python's own handler: a program with its own SIGINT policy keeps it.
+    if not _in_main_thread() or signal.getsignal(signal.SIGINT) is not signal.default_int_handler:
+        return
+    _state.saved_handler = signal.signal(signal.SIGINT, _interrupted)
+
+
+def _unguard_sigint() -> None:
+    if _state.saved_handler is not None and _in_main_thread():
+        signal.signal(signal.SIGINT, _state.saved_handler)
+        _state.saved_handler = None
+
+
+def _interrupted(signum: int, frame: Any) -> None:
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (OSError, ValueError):
+            pass
+    os.write(2, b"\ncamlab88: interrupted while compiling kernels\n")
+    os._exit(INTERRUPTED_STATUS)
