@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-SNOOKER_COMPILE_S = 7.0  # a cold compile of this module's and kernels.py's kernels, measured
+SNOOKER_COMPILE_S = 6.0  # a cold compile of this module's and kernels.py's kernels, measured
 
 try:  # numba is a project dependency, but the model must still work without it
     from numba import njit as _njit

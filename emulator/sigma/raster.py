@@ -25,8 +25,8 @@ def _compile_all() -> None:
 
     from protocols.kernel_notice import announce_compiles
 
-    # one line on stderr if the cache is cold; ~4 s is the measured cold compile
-    announce_compiles("Sigma raster", 4.0, __name__, "protocols.sigma.abbreviated")
+    # one line on stderr if the cache is cold; ~2 s is the measured cold compile
+    announce_compiles("Sigma raster", 2.0, __name__, "protocols.sigma.abbreviated")
 
     # Every kernel must be called with one set of argument types only: numba's on-disk cache
     # numbers a function's signatures 1, 2, ... and two processes compiling *different*
