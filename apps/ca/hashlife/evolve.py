@@ -82,7 +82,8 @@ def _centre(n, ch, lvl, slots, meta):
 @njit(cache=True)
 def step(node, j, P, ch, lvl, res, resj, slots, meta, empty, rule, grids):
     """Centre of ``node`` after 2**j generations (j <= level - 2 - s); -1 if the table is
-    full.  ``P`` = (leaf level, s, reach)."""
+    full.  ``P`` = (leaf level, s, reach).  Self-recursive only: numba's cache reloads a
+    mutually recursive pair wrongly (measured: a crash in the second process)."""
     if resj[node] == j:
         return np.int64(res[node])
     k = np.int64(lvl[node])
@@ -90,30 +91,12 @@ def step(node, j, P, ch, lvl, res, resj, slots, meta, empty, rule, grids):
         return np.int64(empty[k - 1])
     if k == P[0]:
         out = leaf_step(node, j, P[2], ch, lvl, slots, meta, empty, rule, grids)
-    else:
-        out = _inner(node, j, k, P, ch, lvl, res, resj, slots, meta, empty, rule, grids)
-    if out >= 0:
-        res[node] = out
-        resj[node] = j
-    return out
-
-
-@njit(cache=True)
-def _inner(node, j, k, P, ch, lvl, res, resj, slots, meta, empty, rule, grids):
+        if out >= 0:
+            res[node] = out
+            resj[node] = j
+        return out
     full = j == k - 2 - P[1]
-    a, b, c, d = ch[node, 0], ch[node, 1], ch[node, 2], ch[node, 3]
-    nine = np.empty(9, np.int64)
-    nine[0], nine[2], nine[6], nine[8] = a, b, c, d
-    nine[1] = join(np.int64(ch[a, 1]), np.int64(ch[b, 0]), np.int64(ch[a, 3]),
-                   np.int64(ch[b, 2]), ch, lvl, slots, meta)
-    nine[3] = join(np.int64(ch[a, 2]), np.int64(ch[a, 3]), np.int64(ch[c, 0]),
-                   np.int64(ch[c, 1]), ch, lvl, slots, meta)
-    nine[4] = join(np.int64(ch[a, 3]), np.int64(ch[b, 2]), np.int64(ch[c, 1]),
-                   np.int64(ch[d, 0]), ch, lvl, slots, meta)
-    nine[5] = join(np.int64(ch[b, 2]), np.int64(ch[b, 3]), np.int64(ch[d, 0]),
-                   np.int64(ch[d, 1]), ch, lvl, slots, meta)
-    nine[7] = join(np.int64(ch[c, 1]), np.int64(ch[d, 0]), np.int64(ch[c, 3]),
-                   np.int64(ch[d, 2]), ch, lvl, slots, meta)
+    nine = _nine(node, ch, lvl, slots, meta)
     jj = j - 1 if full else j
     for i in range(9):
         if nine[i] < 0:
@@ -134,4 +117,27 @@ def _inner(node, j, k, P, ch, lvl, res, resj, slots, meta, empty, rule, grids):
         four[q] = step(m, jj, P, ch, lvl, res, resj, slots, meta, empty, rule, grids)
         if four[q] < 0:
             return np.int64(-1)
-    return join(four[0], four[1], four[2], four[3], ch, lvl, slots, meta)
+    out = join(four[0], four[1], four[2], four[3], ch, lvl, slots, meta)
+    if out >= 0:
+        res[node] = out
+        resj[node] = j
+    return out
+
+
+@njit(cache=True)
+def _nine(node, ch, lvl, slots, meta):
+    """The nine overlapping half-size squares of ``node``, row by row (-1: table full)."""
+    a, b, c, d = ch[node, 0], ch[node, 1], ch[node, 2], ch[node, 3]
+    nine = np.empty(9, np.int64)
+    nine[0], nine[2], nine[6], nine[8] = a, b, c, d
+    nine[1] = join(np.int64(ch[a, 1]), np.int64(ch[b, 0]), np.int64(ch[a, 3]),
+                   np.int64(ch[b, 2]), ch, lvl, slots, meta)
+    nine[3] = join(np.int64(ch[a, 2]), np.int64(ch[a, 3]), np.int64(ch[c, 0]),
+                   np.int64(ch[c, 1]), ch, lvl, slots, meta)
+    nine[4] = join(np.int64(ch[a, 3]), np.int64(ch[b, 2]), np.int64(ch[c, 1]),
+                   np.int64(ch[d, 0]), ch, lvl, slots, meta)
+    nine[5] = join(np.int64(ch[b, 2]), np.int64(ch[b, 3]), np.int64(ch[d, 0]),
+                   np.int64(ch[d, 1]), ch, lvl, slots, meta)
+    nine[7] = join(np.int64(ch[c, 1]), np.int64(ch[d, 0]), np.int64(ch[c, 3]),
+                   np.int64(ch[d, 2]), ch, lvl, slots, meta)
+    return nine

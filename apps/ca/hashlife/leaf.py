@@ -120,7 +120,7 @@ def generation(src, dst, lo, hi, inc, mop, mval, lookup, kind, a, b, form):
                 dst[y, x] = WALL
                 continue
             got = False
-            v = 0
+            v = np.int64(0)  # int64, not literal 0: one cached signature for _interpret
             for oy in range(h):
                 row = src[y + oy - ry]
                 for ox in range(w):
@@ -131,4 +131,4 @@ def generation(src, dst, lo, hi, inc, mop, mval, lookup, kind, a, b, form):
                     if k >= 0:
                         v = _apply(v, mop[k], mval[k])
                         got = True
-            dst[y, x] = _interpret(v, lookup, kind, a, b, form) if got else 0
+            dst[y, x] = _interpret(np.int64(v), lookup, kind, a, b, form) if got else 0
