@@ -31,7 +31,23 @@ _CLOSE = np.array([ord("]"), ord("}")], np.uint32)
 
 
 class InputError(ValueError):
-    """Bad input: the message starts with ``file:line:column:`` (as much of it as is known)."""
+    """Bad input: the message starts with ``file:line:column:`` (as much of it as is known);
+    ``name``, ``line``, ``column`` and ``reason`` hold the parts, so a format can re-raise it
+    as its own error class."""
+
+    def __init__(self, message: str, name: str = "", line: int = 0, column: int = 0,
+                 reason: str = "") -> None:
+        super().__init__(message)
+        self.name, self.line, self.column = name, line, column
+        self.reason = reason or message
+
+
+def _error(error: type[ValueError], name: str, reason: str, line: int | None = None,
+           column: int | None = None) -> ValueError:
+    message = f"{where(name, line, column)}: {reason}"
+    if issubclass(error, InputError):
+        return error(message, str(name), line or 0, column or 0, reason)
+    return error(message)
 
 
 def where(name: str, line: int | None = None, column: int | None = None) -> str:
@@ -60,14 +76,15 @@ def read_bytes(path: str | os.PathLike[str], limit: int = MAX_FILE_BYTES,
         with open(p, "rb") as fh:
             size = os.fstat(fh.fileno()).st_size
             if size > limit:
-                raise error(f"{p}: {size} bytes is larger than this format allows ({limit})")
+                raise _error(error, str(p), f"{size} bytes is larger than this format allows "
+                                            f"({limit})")
             data = fh.read(limit + 1)
     except IsADirectoryError:
-        raise error(f"{p}: is a directory, not a file") from None
+        raise _error(error, str(p), "is a directory, not a file") from None
     except OSError as exc:
-        raise error(f"{p}: cannot read: {exc.strerror or exc}") from None
+        raise _error(error, str(p), f"cannot read: {exc.strerror or exc}") from None
     if len(data) > limit:  # a pipe or a growing file: fstat said less
-        raise error(f"{p}: larger than this format allows ({limit} bytes)")
+        raise _error(error, str(p), f"larger than this format allows ({limit} bytes)")
     return data
 
 
@@ -84,15 +101,15 @@ def decode_utf8(data: bytes, name: str, error: type[ValueError] = InputError,
     in a format whose first line is a magic word it would silently change the meaning."""
     if data.startswith(b"\xef\xbb\xbf"):
         if not bom:
-            raise error(f"{where(name, 1, 1)}: starts with a UTF-8 byte-order mark; "
-                        "save the file without one")
+            raise _error(error, name, "starts with a UTF-8 byte-order mark; save the file "
+                                      "without one", 1, 1)
         data = data[3:]
     try:
         return data.decode("utf-8")
     except UnicodeDecodeError as exc:
         line, col = line_column(data, exc.start)
-        raise error(f"{where(name, line, col)}: byte 0x{data[exc.start]:02x} is not UTF-8 "
-                    "text") from None
+        raise _error(error, name, f"byte 0x{data[exc.start]:02x} is not UTF-8 text", line,
+                     col) from None
 
 
 def read_text(path: str | os.PathLike[str], limit: int = MAX_FILE_BYTES,

@@ -13,7 +13,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from apps.ca.rle_body import decode_body
 from protocols import atomicfile
+from protocols.textinput import InputError, quote, read_text, where
 
 NATIVE_MAGIC = "CAMLAB88-CA-PATTERN 1"
 MAX_RLE_STATE = 255
@@ -34,7 +36,7 @@ class PatternError(ValueError):
     """A pattern file is malformed; the message names the file, line and column."""
 
     def __init__(self, source: str, line: int, column: int, message: str) -> None:
-        super().__init__(f"{source}:{line}:{column}: {message}")
+        super().__init__(f"{where(source, line or None, column or None)}: {message}")
         self.line = line
         self.column = column
 
@@ -58,6 +60,15 @@ class Pattern:
             return cls(np.zeros(0, np.int64), np.zeros(0, np.int64), np.zeros(0, np.int64), **kw)
         a = np.array(live, np.int64)
         return cls(a[:, 0], a[:, 1], a[:, 2], **kw).normalised()
+
+    def shifted_to_origin(self) -> Pattern:
+        """The pattern with its top-left live cell's box at (0, 0) — for cells that are
+        already unique and in row order (the RLE and .cells decoders make them so)."""
+        if self.xs.size == 0:
+            return self
+        x0, y0 = int(self.xs.min()), int(self.ys.min())
+        return Pattern(self.xs - x0, self.ys - y0, self.ts, (self.ref[0] - x0,
+                       self.ref[1] - y0), self.name, self.rule, self.comments, self.author)
 
     def normalised(self) -> Pattern:
         if self.xs.size == 0:
@@ -112,9 +123,13 @@ def format_of(path: str) -> str:
 
 
 def read_pattern(path: str | os.PathLike) -> Pattern:
+    """A pattern file in the format its name says; a bad file (a directory, a bad byte, a
+    bad line) raises PatternError naming the file, line and column."""
     path = os.fspath(path)
-    with open(path, encoding="utf-8") as f:
-        text = f.read()
+    try:
+        text = read_text(path)
+    except InputError as exc:
+        raise PatternError(path, exc.line, exc.column, exc.reason) from None
     return parse_pattern(text, format_of(path), source=path)
 
 
@@ -167,7 +182,6 @@ def parse_native(text: str, source: str = "<pattern>") -> Pattern:
     comments: list[str] = []
     authors: list[str] = []
     ref = (0, 0)
-    cells: list[tuple[int, int, int]] = []
     i = 1
     count = None
     while i < len(lines):
@@ -195,31 +209,55 @@ def parse_native(text: str, source: str = "<pattern>") -> Pattern:
                                              f"found '{word}'")
     if count is None:
         raise PatternError(source, len(lines), 1, "expected 'cells n' before end of file")
-    for _ in range(count):
-        if i >= len(lines):
-            raise PatternError(source, len(lines), 1, f"expected {count} cell lines 'x y "
-                                                      "life-form', file ended early")
-        raw = lines[i]
-        i += 1
-        x, y, t = _ints(raw, 3, source, i, raw, "'x y life-form'")
-        if t < 1 or t > 65535:
-            raise PatternError(source, i, 1, f"life-form must be 1..65535, found {t}")
-        cells.append((x, y, t))
+    xs, ys, ts = _native_cells(lines, i, count, source)
+    i += count
     while i < len(lines) and not lines[i].strip():
         i += 1
     if i >= len(lines) or lines[i].strip() != "end":
         raise PatternError(source, i + 1, 1, "expected 'end' after the cell lines")
-    p = Pattern.from_cells(cells, ref=ref, name=name, rule=rule, comments=comments,
-                           author="\n".join(authors))
-    if not cells:
+    p = Pattern(xs, ys, ts, ref, name, rule, comments, "\n".join(authors)).normalised()
+    if not xs.size:
         p.ref = ref
     return p
+
+
+# a coordinate of more than 10 digits cannot be on (or relative to) the 65536-cell plane
+_CELL_LINE = re.compile(r"[ \t]*-?[0-9]{1,10}[ \t]+-?[0-9]{1,10}[ \t]+[0-9]{1,5}[ \t]*")
+_CELL_BLOCK = re.compile(rf"(?:{_CELL_LINE.pattern}\n)*")
+
+
+def _native_cells(lines: list[str], i: int, count: int, source: str
+                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The ``count`` cell lines from line index ``i``, checked and converted with numpy."""
+    if len(lines) - i < count:
+        raise PatternError(source, len(lines), 1, f"expected {count} cell lines 'x y "
+                                                  "life-form', file ended early")
+    block = lines[i: i + count]
+    if not _CELL_BLOCK.fullmatch("\n".join(block) + "\n" if block else ""):
+        k = next(k for k, raw in enumerate(block) if not _CELL_LINE.fullmatch(raw))
+        _ints(block[k], 3, source, i + k + 1, block[k], "'x y life-form'")  # names the fault
+        raise PatternError(source, i + k + 1, 1, f"a coordinate in {quote(block[k].strip())} "
+                                                 "is too far out for the 65536-cell plane")
+    a = np.array(" ".join(block).split(), dtype=np.int64).reshape(-1, 3)
+    bad = np.flatnonzero((a[:, 2] < 1) | (a[:, 2] > 65535))
+    if bad.size:
+        raise PatternError(source, i + int(bad[0]) + 1, 1,
+                           f"life-form must be 1..65535, found {int(a[bad[0], 2])}")
+    for axis in (0, 1):
+        if a.size and int(a[:, axis].max()) - int(a[:, axis].min()) >= 65536:
+            far = int(np.argmax(a[:, axis]))
+            raise PatternError(source, i + far + 1, 1, "pattern is wider or taller than the "
+                                                       "65536-cell plane")
+    return a[:, 0].copy(), a[:, 1].copy(), a[:, 2].copy()
 
 
 def _ints(text: str, n: int, source: str, line: int, raw: str, what: str) -> tuple[int, ...]:
     parts = text.split()
     if len(parts) != n or not all(re.fullmatch(r"-?[0-9]+", s) for s in parts):
-        raise PatternError(source, line, 1, f"expected {what}, found '{raw.strip()}'")
+        raise PatternError(source, line, 1, f"expected {what}, found {quote(raw.strip())}")
+    if any(len(s.lstrip("-")) > 10 for s in parts):
+        raise PatternError(source, line, 1, f"a number in {quote(raw.strip())} is too large "
+                                            "for the 65536-cell plane")
     return tuple(int(s) for s in parts)
 
 
@@ -308,7 +346,7 @@ def format_rle(p: Pattern) -> str:
 
 
 _HEADER = re.compile(
-    r"\s*x\s*=\s*(\d+)\s*,\s*y\s*=\s*(\d+)\s*(?:,\s*rule\s*=\s*(\S.*?))?\s*$", re.IGNORECASE)
+    r"\s*x\s*=\s*([0-9]+)\s*,\s*y\s*=\s*([0-9]+)\s*(?:,\s*rule\s*=\s*(\S.*?))?\s*$", re.IGNORECASE)
 
 
 def parse_rle(text: str, source: str = "<rle>") -> Pattern:
@@ -337,8 +375,8 @@ def parse_rle(text: str, source: str = "<rle>") -> Pattern:
             elif tag == "#r":
                 rule = rest.strip()
             elif tag == "#CXRLE":
-                m = re.search(r"Pos\s*=\s*(-?\d+)\s*,\s*(-?\d+)", rest)
-                if m:
+                m = re.search(r"Pos\s*=\s*(-?[0-9]{1,6})\s*,\s*(-?[0-9]{1,6})(?![0-9])", rest)
+                if m:  # a reference point further than the plane is wide means nothing
                     pos = (int(m.group(1)), int(m.group(2)))
             continue
         header = _HEADER.match(s)
@@ -350,74 +388,19 @@ def parse_rle(text: str, source: str = "<rle>") -> Pattern:
     if header is None:
         raise PatternError(source, max(1, len(lines)), 1, "expected the RLE header "
                                                           "'x = m, y = n', found end of file")
-    width, height = int(header.group(1)), int(header.group(2))
-    cells: list[tuple[int, int, int]] = []
-    x = y = 0
-    count = ""
-    prefix = ""
-    done = False
-    for lineno in range(i, len(lines)):
-        raw = lines[lineno]
-        for col, ch in enumerate(raw, start=1):
-            if done:
-                break
-            if ch.isspace():
-                if count or prefix:
-                    raise PatternError(source, lineno + 1, col, "expected a cell symbol after "
-                                                                 "the repeat count")
-                continue
-            if ch.isascii() and ch.isdigit():  # ('²'.isdigit() is True; int() refuses it)
-                if prefix:
-                    raise PatternError(source, lineno + 1, col, f"expected A..X after '{prefix}'")
-                if ch == "0" and not count:
-                    raise PatternError(source, lineno + 1, col, "repeat counts have no leading "
-                                                                 "zero")
-                count += ch
-                continue
-            n = int(count) if count else 1
-            count = ""
-            if prefix:
-                if not "A" <= ch <= "X":
-                    raise PatternError(source, lineno + 1, col, f"expected A..X after "
-                                                                 f"'{prefix}', found '{ch}'")
-                state = 25 + (ord(prefix) - ord("p")) * 24 + ord(ch) - ord("A")
-                prefix = ""
-                if state > MAX_RLE_STATE:
-                    raise PatternError(source, lineno + 1, col, f"state {state} is above 255")
-            elif ch in "b.":
-                state = 0
-            elif ch == "o":
-                state = 1
-            elif "A" <= ch <= "X":
-                state = ord(ch) - ord("A") + 1
-            elif "p" <= ch <= "y":
-                prefix = ch
-                count = str(n) if n > 1 else ""
-                continue
-            elif ch == "$":
-                y += n
-                x = 0
-                continue
-            elif ch == "!":
-                done = True
-                break
-            else:
-                raise PatternError(source, lineno + 1, col, f"expected b, o, ., A..X, $ or !, "
-                                                             f"found '{ch}'")
-            if x + n > 65536 or y >= 65536:
-                raise PatternError(source, lineno + 1, col, "pattern is wider or taller than "
-                                                             "the 65536-cell plane")
-            if state:
-                cells.extend((x + k, y, state) for k in range(n))
-            x += n
-        if done:
-            break
-    if not done:
-        raise PatternError(source, len(lines), 1, "expected '!' ending the RLE pattern")
-    del width, height  # Golly reads cells beyond the header's box too; so do we
-    # The reference point is Golly's origin: Pos gives the box corner relative to it.
-    return Pattern.from_cells(cells, ref=(-pos[0], -pos[1]), name=name, rule=rule,
-                              comments=comments, author="\n".join(authors))
+    body_line = i  # 0-based index of the first body line
+    body = "\n".join(lines[i:])
+
+    def fail(offset: int, message: str) -> PatternError:
+        line = body.count("\n", 0, offset)
+        col = offset - (body.rfind("\n", 0, offset) + 1) + 1
+        return PatternError(source, min(body_line + line + 1, max(1, len(lines))), col, message)
+
+    xs, ys, ts = decode_body(body, fail)
+    # Golly reads cells beyond the header's box too; so do we. The reference point is
+    # Golly's origin: Pos gives the box corner relative to it.
+    return Pattern(xs, ys, ts, (-pos[0], -pos[1]), name, rule, comments,
+                   "\n".join(authors)).shifted_to_origin()
 
 
 # -- plaintext .cells --------------------------------------------------------------------------
@@ -434,10 +417,12 @@ def format_cells(p: Pattern) -> str:
 
 
 def parse_cells(text: str, source: str = "<cells>") -> Pattern:
+    """Plaintext: '!' lines are comments ('!Name: ...' the name), every other line a row of
+    '.' dead and 'O' (or 'o', '*') live cells. Decoded with numpy (issue 15 item 11)."""
     name = ""
     comments: list[str] = []
-    cells: list[tuple[int, int, int]] = []
-    y = 0
+    rows: list[str] = []
+    row_lines: list[int] = []
     for lineno, raw in enumerate(text.splitlines(), start=1):
         if raw.startswith("!"):
             body = raw[1:].strip()
@@ -446,10 +431,34 @@ def parse_cells(text: str, source: str = "<cells>") -> Pattern:
             else:
                 comments.append(body)
             continue
-        for x, ch in enumerate(raw.rstrip()):
-            if ch in "Oo*":
-                cells.append((x, y, 1))
-            elif ch != ".":
-                raise PatternError(source, lineno, x + 1, f"expected '.' or 'O', found '{ch}'")
-        y += 1
-    return Pattern.from_cells(cells, name=name, comments=comments)
+        rows.append(raw.rstrip())
+        row_lines.append(lineno)
+    xs, ys = _cells_grid(rows, row_lines, source)
+    return Pattern(xs, ys, np.ones(xs.size, np.int64), (0, 0), name, "", comments,
+                   "").shifted_to_origin()
+
+
+def _cells_grid(rows: list[str], row_lines: list[int], source: str
+                ) -> tuple[np.ndarray, np.ndarray]:
+    if len(rows) > 65536 or max(map(len, rows), default=0) > 65536:
+        tall = len(rows) > 65536
+        line = row_lines[65536] if tall else row_lines[max(range(len(rows)),
+                                                           key=lambda k: len(rows[k]))]
+        raise PatternError(source, line, 1, "pattern is wider or taller than the 65536-cell "
+                                            "plane")
+    codes = np.frombuffer("\n".join(rows).encode("utf-32-le"), np.uint32)
+    starts = np.cumsum([0] + [len(r) + 1 for r in rows[:-1]]).astype(np.int64)
+    live = np.isin(codes, _LIVE)
+    bad = np.flatnonzero(~live & (codes != ord(".")) & (codes != ord("\n")))
+    at = np.flatnonzero(live)
+    y = np.searchsorted(starts, np.concatenate([bad[:1], at]), side="right") - 1
+    if bad.size:
+        k = int(y[0])
+        col = int(bad[0] - starts[k])
+        raise PatternError(source, row_lines[k], col + 1,
+                           f"expected '.' or 'O', found {chr(int(codes[bad[0]]))!r}")
+    y = y[1:] if bad.size else y
+    return at - starts[y], y.astype(np.int64)
+
+
+_LIVE = np.array([ord("O"), ord("o"), ord("*")], np.uint32)

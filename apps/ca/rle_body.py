@@ -1,0 +1,98 @@
+"""The cell data of an RLE pattern (after its header), decoded with numpy.
+
+The body is a run of tokens — an optional repeat count and a symbol (``b`` ``.`` dead, ``o``
+alive, ``A``..``X`` and ``pA``..``yO`` states 1..255, ``$`` next row, ``!`` end) — with
+whitespace between tokens. One regular expression splits it; the rows and columns of every
+run then come from cumulative sums, so a 24 KB RLE of 4000x4000 live cells decodes in a
+fraction of a second instead of a Python step per cell (issue 15 item 11). Errors name the
+line and column of the offending character, as the old character-by-character reader did.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+
+import numpy as np
+
+PLANE = 65536  # the CA plane is 65536 cells square (section 7.3)
+MAX_STATE = 255
+_TOKEN = re.compile(r"([1-9][0-9]{0,5})?([bo.$!A-X]|[p-y][A-X])|\s+")
+Fail = Callable[[int, str], Exception]  # (offset into the body, message) -> the error
+
+
+def _state(sym: str) -> int:
+    if sym in "b.$!":
+        return 0
+    if sym == "o":
+        return 1
+    if len(sym) == 1:
+        return ord(sym) - ord("A") + 1
+    return 25 + (ord(sym[0]) - ord("p")) * 24 + ord(sym[1]) - ord("A")
+
+
+def _why(body: str, at: int) -> str:
+    """What is wrong at ``at``, where no token matches (the old reader's messages)."""
+    ch = body[at]
+    digits = re.match(r"[0-9]*", body[at:]).group()  # type: ignore[union-attr]
+    if ch == "0":
+        return "repeat counts have no leading zero"
+    if len(digits) > 6:
+        return "pattern is wider or taller than the 65536-cell plane"
+    nxt = body[at + len(digits): at + len(digits) + 1]
+    if digits and (nxt == "" or nxt.isspace()):
+        return "expected a cell symbol after the repeat count"
+    if digits:
+        return _why(body, at + len(digits))
+    if "p" <= ch <= "y":
+        return f"expected A..X after '{ch}', found '{body[at + 1: at + 2]}'"
+    return f"expected b, o, ., A..X, $ or !, found '{ch}'"
+
+
+def _tokens(body: str, fail: Fail) -> tuple[list[str], list[str], np.ndarray]:
+    """(counts, symbols, offsets) of the tokens up to and including the first '!'."""
+    counts: list[str] = []
+    syms: list[str] = []
+    offsets: list[int] = []
+    at = 0
+    for m in _TOKEN.finditer(body):
+        if m.start() != at:  # finditer skipped something no token matches
+            raise fail(at, _why(body, at))
+        at = m.end()
+        if m.group(2):
+            counts.append(m.group(1) or "")
+            syms.append(m.group(2))
+            offsets.append(m.start())
+            if m.group(2) == "!":
+                return counts, syms, np.array(offsets, np.int64)
+    if at < len(body):
+        raise fail(at, _why(body, at))
+    raise fail(len(body), "expected '!' ending the RLE pattern")
+
+
+def decode_body(body: str, fail: Fail) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(xs, ys, states) of the live cells, sorted by row then column."""
+    counts, syms, offsets = _tokens(body, fail)
+    n = np.array([int(c) if c else 1 for c in counts], np.int64)
+    state = np.array([_state(s) for s in syms], np.int64)
+    high = np.flatnonzero(state > MAX_STATE)
+    if high.size:
+        raise fail(int(offsets[high[0]]) + len(counts[high[0]]) + 1,
+                   f"state {int(state[high[0]])} is above 255")
+    newline = np.array([s == "$" for s in syms], bool)
+    run = ~newline & (np.array([s != "!" for s in syms], bool))
+    ys = np.cumsum(np.where(newline, n, 0)) - np.where(newline, n, 0)  # row of each token
+    width = np.where(run, n, 0)
+    before = np.cumsum(width) - width  # cells before the token, all rows
+    row_start = np.maximum.accumulate(np.where(newline, np.cumsum(width), 0))
+    xs = before - row_start
+    bad = np.flatnonzero(run & ((xs + n > PLANE) | (ys >= PLANE)))
+    if bad.size:
+        raise fail(int(offsets[bad[0]]), "pattern is wider or taller than the 65536-cell plane")
+    live = np.flatnonzero(run & (state > 0))
+    reps = n[live]
+    # x of cell k of a run = its run's x + (k - index of the run's first cell); built in
+    # place so a 16-million-cell pattern needs one temporary array, not three
+    cell_x = np.arange(int(reps.sum()), dtype=np.int64)
+    cell_x -= np.repeat(np.cumsum(reps) - reps - xs[live], reps)
+    return cell_x, np.repeat(ys[live], reps), np.repeat(state[live], reps)
