@@ -13,16 +13,25 @@ coded in bits 8 and up, to the cell beside it, which becomes the head life-form 
 performs the action for (next state, symbols read).  Each head life-form *is* an action
 (writes, move, next state), so the rule file needs one life-form per distinct action.
 
-The algorithm: copy N to the third row; if N is even it is not prime unless it is 2 (its
-digits are exactly "10"); write 3 on the second
-row; then repeatedly subtract the divisor from the remainder, right to left with a borrow,
-until the remainder is zero (N divisible: not prime; unless it was the very first subtraction,
-which means divisor == N: prime) or negative (restore the remainder from the top row, add 2
-to the divisor and start again).  This stops at divisor == N rather than at the thesis's
-"more than half as many digits" bound, which taken literally calls
-121 = 11 x 11 prime (and 25 too if checked before dividing).
-Not prime: the head runs left into an invisible cross, which becomes visible (the thesis's
-display); prime: the head stops and turns green.
+The algorithm (§7.4.2): copy N to the third row; if N is even it is not prime unless it is 2
+(its digits are exactly "10"); write 3 on the second row; then, for each trial divisor D:
+
+* the bound check — D is declared prime-proof when it "contains more than half as many
+  significant digits as the number on the top row" (rounded up: with k digits in N, a D of
+  more than ceil(k/2) digits has D^2 >= 2^k > N).  With D right-aligned under N that is "D
+  has a 1 in the leftmost floor(k/2) columns", which the head finds by pairing off the
+  columns from both ends on the third row (cleared first; crossed = 1): a column from the
+  right, then one from the left, ...; the left-hand crossings are exactly the leftmost
+  floor(k/2) columns, and a 1 of D under one of them halts the machine: prime.  The third
+  row is then restored from the top row.
+* division by repeated subtraction of D from the remainder, right to left with a borrow,
+  until the remainder is zero (D divides N: not prime) or negative (clear the third row,
+  add 2 to D, and check again).
+
+So the machine tries O(sqrt N) divisors, 3, 5, ... up to the first with more than ceil(k/2)
+digits, never D = N (``trial_divisors`` counts them).  Not prime: the head runs left into an
+invisible cross, which becomes visible (the thesis's display); prime: the head stops and
+turns green.
 """
 
 from __future__ import annotations
@@ -52,19 +61,20 @@ class Action:
 
 
 def _states() -> list[str]:
-    names = ["START", "COPY", "CHKEVEN", "CHK2A", "CHK2B", "W3", "TORIGHT0", "TORIGHT1",
-             "RESTORE", "INCSKIP", "INC", "FAIL"]
-    names += [f"SUB{b}{f}{z}" for b in (0, 1) for f in (0, 1) for z in (0, 1)]
+    names = ["START", "COPY", "CHKEVEN", "CHK2A", "CHK2B", "W3", "TOLEFTC", "CLEARC",
+             "CLEARI", "PRGO", "PRSEEK", "PLGO", "PLSEEK", "TOLEFTR", "RESTORE", "TORIGHT",
+             "INCSKIP", "INC", "FAIL"]
+    names += [f"SUB{b}{z}" for b in (0, 1) for z in (0, 1)]
     return names + list(VERDICTS)
 
 
-def delta(q: str, t1: int | str, t2: int, t3: int) -> Action | None:
-    """The transition function; None = cannot happen (the head would vanish)."""
-    digit = t1 != M
-    if q in VERDICTS:
-        return Action(None, None, 0, q)
-    if q == "FAIL":  # not prime: run left until the head hits the invisible cross
-        return Action(None, None, -1, "FAIL")
+def _moving(q: str, digit: bool, move: int, then: Action) -> Action:
+    """Keep moving (state ``q``) over the digits; at an end marker do ``then``."""
+    return Action(None, None, move, q) if digit else then
+
+
+def _setup(q: str, t1: int | str, digit: bool) -> Action | None:
+    """Copy N to the third row, reject even numbers (but 2), write 3 on the second row."""
     if q == "START":
         return Action(None, None, +1, "COPY") if not digit else None
     if q == "COPY":
@@ -78,32 +88,116 @@ def delta(q: str, t1: int | str, t2: int, t3: int) -> Action | None:
         return Action(None, None, -1, "CHK2B") if t1 == 1 else Action(None, None, -1, "FAIL")
     if q == "CHK2B":
         return Action(None, None, 0, "YES") if not digit else Action(None, None, -1, "FAIL")
-    if q == "W3":
-        return Action(None, None, -1, "FAIL") if not digit else Action(1, None, +1, "TORIGHT1")
-    if q.startswith("TORIGHT"):
-        f = q[-1]
-        return Action(None, None, +1, q) if digit else Action(None, None, -1, f"SUB0{f}0")
+    if q == "W3":  # N = 1 has no second digit: not prime
+        return Action(1, None, -1, "TOLEFTC") if digit else Action(None, None, -1, "FAIL")
+    return None
+
+
+def _bound(q: str, digit: bool, t2: int, t3: int) -> Action | None:
+    """The digit-count bound: clear row 3, pair columns off from both ends (module doc)."""
+    if q in ("TOLEFTC", "TOLEFTR"):
+        nxt = "CLEARC" if q == "TOLEFTC" else "RESTORE"
+        return _moving(q, digit, -1, Action(None, None, +1, nxt))
+    if q in ("CLEARC", "CLEARI"):
+        nxt = "PRSEEK" if q == "CLEARC" else "INCSKIP"
+        return Action(None, 0, +1, q) if digit else Action(None, None, -1, nxt)
+    if q == "PRGO":
+        return _moving(q, digit, +1, Action(None, None, -1, "PRSEEK"))
+    if q == "PRSEEK":  # cross the rightmost free column; none left: not proven, go on
+        if not digit:
+            return Action(None, None, +1, "RESTORE")
+        return Action(None, None, -1, q) if t3 else Action(None, 1, -1, "PLGO")
+    if q == "PLGO":
+        return _moving(q, digit, -1, Action(None, None, +1, "PLSEEK"))
+    if q == "PLSEEK":  # the leftmost free column: a 1 of D there proves N prime
+        if not digit:
+            return Action(None, None, -1, "TOLEFTR")
+        if t3:
+            return Action(None, None, +1, q)
+        return Action(None, None, 0, "YES") if t2 else Action(None, 1, +1, "PRGO")
+    return None
+
+
+def _divide(q: str, t1: int | str, digit: bool, t2: int, t3: int) -> Action | None:
+    """Repeated subtraction of D from the remainder; the next odd D when it goes negative."""
+    if q == "RESTORE":
+        return Action(None, t1, +1, q) if digit else Action(None, None, -1, "SUB00")
+    if q == "TORIGHT":
+        return _moving(q, digit, +1, Action(None, None, -1, "SUB00"))
     if q.startswith("SUB"):
-        b, f, z = (int(c) for c in q[3:])
+        b, z = int(q[3]), int(q[4])
         if digit:
             d = t3 - t2 - b
             bit = d & 1
-            return Action(None, bit, -1, f"SUB{int(d < 0)}{f}{int(z or bit)}")
+            return Action(None, bit, -1, f"SUB{int(d < 0)}{int(z or bit)}")
         if b:
-            return Action(None, None, +1, "RESTORE")  # negative: D does not divide N
+            return Action(None, None, +1, "CLEARI")  # negative: D does not divide N
         if z:
-            return Action(None, None, +1, "TORIGHT0")  # remainder still positive
-        # zero: D == N (prime) or D divides N (not prime)
-        return Action(None, None, 0, "YES") if f else Action(None, None, -1, "FAIL")
-    if q == "RESTORE":
-        return Action(None, t1, +1, "RESTORE") if digit else Action(None, None, -1, "INCSKIP")
+            return Action(None, None, +1, "TORIGHT")  # remainder still positive
+        return Action(None, None, -1, "FAIL")  # zero: D (< N) divides N
     if q == "INCSKIP":
         return Action(None, None, -1, "INC")
     if q == "INC":
         if not digit:
             return None
-        return Action(1, None, +1, "TORIGHT1") if t2 == 0 else Action(0, None, -1, "INC")
-    raise ValueError(q)
+        return Action(1, None, +1, "PRGO") if t2 == 0 else Action(0, None, -1, "INC")
+    return None
+
+
+def delta(q: str, t1: int | str, t2: int, t3: int) -> Action | None:
+    """The transition function; None = cannot happen (the head would vanish)."""
+    digit = t1 != M
+    if q in VERDICTS:
+        return Action(None, None, 0, q)
+    if q == "FAIL":  # not prime: run left until the head hits the invisible cross
+        return Action(None, None, -1, "FAIL")
+    for part in (_setup(q, t1, digit), _bound(q, digit, t2, t3),
+                 _divide(q, t1, digit, t2, t3)):
+        if part is not None:
+            return part
+    if q not in _states():
+        raise ValueError(q)
+    return None
+
+
+@dataclass
+class Run:
+    """A run of the machine on plain tapes: verdict, the trial divisors in order (each D
+    the bound check looked at), and the number of head steps."""
+
+    verdict: str
+    divisors: list[int]
+    steps: int
+
+
+def simulate(n: int, limit: int = 10**7) -> Run:
+    """Run ``delta`` on three Python tapes (the oracle the cellular automaton is tested
+    against); the head starts under the left end marker."""
+    bits = [int(b) for b in bin(n)[2:]]
+    t1: list[int | str] = [M, *bits, M]
+    t2, t3 = [0] * len(t1), [0] * len(t1)
+    pos, q, divisors = 0, "START", []
+    for steps in range(limit):
+        a = delta(q, t1[pos], t2[pos], t3[pos])
+        if a is None:
+            raise RuntimeError(f"the head vanished in state {q} at column {pos}")
+        if a.w2 is not None:
+            t2[pos] = a.w2
+        if a.w3 is not None:
+            t3[pos] = a.w3
+        if (q, a.next) in (("W3", "TOLEFTC"), ("INC", "PRGO")):
+            divisors.append(int("".join(map(str, t2[1:-1])), 2))  # D complete: check it
+        if a.next in VERDICTS or a.next == "FAIL":
+            return Run("YES" if a.next in VERDICTS else "NO", divisors, steps + 1)
+        pos, q = pos + a.move, a.next
+    raise RuntimeError(f"no verdict for {n} in {limit} steps")
+
+
+def trial_divisor_bound(n: int) -> int:
+    """The last divisor tried for a prime ``n``: the first odd D with more than ceil(k/2)
+    binary digits, k = N's digits (§7.4.2's "more than half as many")."""
+    k = n.bit_length()
+    return (1 << -(-k // 2)) + 1
 
 
 READS = [(t1, t2, t3) for t1 in (0, 1, M) for t2 in (0, 1) for t3 in (0, 1)]
