@@ -1,0 +1,262 @@
+"""The truecolour renderer's per-pixel loops, compiled with numba (measured in
+docs/perf/render.md: the numpy versions over bounding boxes took several times the 40 ms
+budget). Every kernel is called with one set of argument types only (float64 arrays, C
+order; docs/development.md "numba's cache").
+
+Pinhole parameters travel as one float64 array ``cam``: observer (3), right (3), up (3),
+forward (3), focal_px, width, height.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+
+@njit(cache=True, nogil=True)
+def polygon(img, verts, colour):  # noqa: ANN001, ANN201 - numba kernel
+    """Blend a convex polygon (k, 2 screen pixels) of one colour over ``img`` (H, W, C) by
+    its coverage of each pixel, Pitteway & Watkinson's area rule: along an edge whose x
+    extent is the larger, a pixel's share of the area below it is the edge's height above
+    the pixel's bottom at the pixel centre (exact while the edge crosses the pixel's
+    sides); across a y-major edge, the same sideways. Edges combine by summing what each
+    excludes (exact unless two edges cut off the same part of a pixel). Returns pixels touched.
+    """
+    k = verts.shape[0]
+    h = img.shape[0]
+    w = img.shape[1]
+    area = 0.0
+    for e in range(k):
+        f = (e + 1) % k
+        area += verts[e, 0] * verts[f, 1] - verts[f, 0] * verts[e, 1]
+    if abs(area) < 1e-12:
+        return 0
+    orient = 1.0 if area > 0 else -1.0
+    ymin = verts[:, 1].min()
+    ymax = verts[:, 1].max()
+    j0 = max(int(math.floor(ymin)) - 1, 0)
+    j1 = min(int(math.floor(ymax)) + 1, h - 1)
+    touched = 0
+    for j in range(j0, j1 + 1):
+        yc = j + 0.5
+        lo = 1e300
+        hi = -1e300
+        for e in range(k):  # x extent of the polygon in the row's band [j - 1, j + 2]
+            f = (e + 1) % k
+            ax, ay, bx, by = verts[e, 0], verts[e, 1], verts[f, 0], verts[f, 1]
+            ya = max(min(ay, by), j - 1.0)
+            yb = min(max(ay, by), j + 2.0)
+            if ya > yb:
+                continue
+            if by == ay:
+                xa, xb = ax, bx
+            else:
+                xa = ax + (ya - ay) * (bx - ax) / (by - ay)
+                xb = ax + (yb - ay) * (bx - ax) / (by - ay)
+            lo = min(lo, xa, xb)
+            hi = max(hi, xa, xb)
+        if lo > hi:
+            continue
+        i0 = max(int(math.floor(lo)) - 1, 0)
+        i1 = min(int(math.floor(hi)) + 1, w - 1)
+        for i in range(i0, i1 + 1):
+            cov = coverage_at(verts, orient, i + 0.5, yc)
+            if cov <= 0.0:
+                continue
+            touched += 1
+            for c in range(img.shape[2]):
+                img[j, i, c] = cov * colour[c] + (1.0 - cov) * img[j, i, c]
+    return touched
+
+
+@njit(cache=True, nogil=True)
+def coverage_at(verts, orient, xc, yc):  # noqa: ANN001, ANN201 - numba kernel
+    """Coverage (0..1) of the pixel centred at (xc, yc) by the convex polygon (see polygon)."""
+    k = verts.shape[0]
+    excl = 0.0
+    for e in range(k):
+        f = (e + 1) % k
+        ax, ay = verts[e, 0], verts[e, 1]
+        dx = verts[f, 0] - ax
+        dy = verts[f, 1] - ay
+        if dx == 0.0 and dy == 0.0:
+            continue
+        if abs(dx) >= abs(dy):
+            d = (yc - (ay + (xc - ax) * dy / dx)) * (1.0 if dx > 0 else -1.0) * orient
+        else:
+            d = -(xc - (ax + (yc - ay) * dx / dy)) * (1.0 if dy > 0 else -1.0) * orient
+        c = 0.5 + d
+        if c < 1.0:
+            excl += 1.0 - c if c > 0.0 else 1.0
+            if excl >= 1.0:
+                return 0.0
+    return 1.0 - excl
+
+
+@njit(cache=True, nogil=True)
+def _ground(cam, x, y):  # noqa: ANN001, ANN202 - numba kernel
+    """Where the ray through screen (x, y) meets z = 0: (gx, gy, hit)."""
+    f = cam[12]
+    a = (x - cam[13] / 2.0) / f
+    b = (cam[14] / 2.0 - y) / f
+    dx = cam[9] + a * cam[3] + b * cam[6]
+    dy = cam[10] + a * cam[4] + b * cam[7]
+    dz = cam[11] + a * cam[5] + b * cam[8]
+    if dz >= -1e-12:
+        return 0.0, 0.0, False
+    t = -cam[2] / dz
+    if t <= 0.0:
+        return 0.0, 0.0, False
+    return cam[0] + t * dx, cam[1] + t * dy, True
+
+
+@njit(cache=True, nogil=True)
+def _ellipse_q(e, gx, gy):  # noqa: ANN001, ANN202 - numba kernel
+    du = (gx - e[0]) * e[2] + (gy - e[1]) * e[3]
+    dv = -(gx - e[0]) * e[3] + (gy - e[1]) * e[2]
+    return (du / e[4]) ** 2 + (dv / e[5]) ** 2
+
+
+@njit(cache=True, nogil=True)
+def shadows(occ, cam, ellipses, boxes, hl, hw):  # noqa: ANN001, ANN201 - numba kernel
+    """Ball shadows on the baize: for each ellipse row (cx, cy, ux, uy, a, b, light) in
+    ground metres and its screen box (i0, j0, i1, j1), OR its coverage c into occ[light]
+    (occ = c + (1 - c) * occ). Coverage from the ellipse's implicit function over its
+    screen-space gradient (one pixel either way), clipped to the playing area |x| <= hl,
+    |y| <= hw. Returns pixels touched."""
+    touched = 0
+    for m in range(ellipses.shape[0]):
+        e = ellipses[m]
+        li = int(e[6])
+        for j in range(int(boxes[m, 1]), int(boxes[m, 3]) + 1):
+            for i in range(int(boxes[m, 0]), int(boxes[m, 2]) + 1):
+                x = i + 0.5
+                y = j + 0.5
+                gx, gy, hit = _ground(cam, x, y)
+                if not hit or abs(gx) > hl or abs(gy) > hw:
+                    continue
+                q = _ellipse_q(e, gx, gy)
+                if q > 4.0:
+                    continue
+                gx1, gy1, h1 = _ground(cam, x + 1.0, y)
+                gx2, gy2, h2 = _ground(cam, x, y + 1.0)
+                if not (h1 and h2):
+                    continue
+                qx = _ellipse_q(e, gx1, gy1) - q
+                qy = _ellipse_q(e, gx2, gy2) - q
+                g = math.sqrt(qx * qx + qy * qy)
+                if g <= 0.0:
+                    continue
+                cov = 0.5 - (q - 1.0) / g
+                if cov <= 0.0:
+                    continue
+                if cov > 1.0:
+                    cov = 1.0
+                occ[li, j, i, 0] = cov + (1.0 - cov) * occ[li, j, i, 0]
+                touched += 1
+    return touched
+
+
+# layout of a ball's parameter row (see ball_params in balls.py)
+B_CX, B_CY, B_RPX, B_C, B_R, B_ALBEDO, B_SPECK, B_M, B_AMB = 0, 1, 2, 3, 6, 7, 10, 13, 22
+B_KA, B_KD, B_KS, B_N, B_SPECK_COS, B_SPECK_MIX, B_LEN = 25, 26, 27, 28, 29, 30, 31
+
+
+@njit(cache=True, nogil=True)
+def ball(img, cam, b, lights, specks):  # noqa: ANN001, ANN201 - numba kernel
+    """Blend one Phong-lit ball over ``img`` by its coverage of each pixel (thesis 6.4.1).
+
+    The disc is the ball's radius projected at its centre's depth (the visualiser's disc);
+    a pixel's coverage is r + 1/2 - (distance of its centre from the disc's centre),
+    clamped (the disc's area within the pixel to first order). The normal comes from the
+    sphere itself: the pixel's offset in the disc gives its right and up components, the
+    rest points back at the observer; outside the disc (edge pixels) the limb normal.
+    The light and eye directions are computed per pixel from the surface point (point
+    lights, none at infinity). Dust specks (unit vectors in the ball's own frame, turned to
+    the world by its orientation M) tint the albedo. Returns pixels touched.
+    """
+    h = img.shape[0]
+    w = img.shape[1]
+    cx, cy, r = b[B_CX], b[B_CY], b[B_RPX]
+    touched = 0
+    i0 = max(int(math.floor(cx - r - 1.0)), 0)
+    i1 = min(int(math.floor(cx + r + 1.0)), w - 1)
+    j0 = max(int(math.floor(cy - r - 1.0)), 0)
+    j1 = min(int(math.floor(cy + r + 1.0)), h - 1)
+    ox, oy, oz = cam[0], cam[1], cam[2]
+    for j in range(j0, j1 + 1):
+        for i in range(i0, i1 + 1):
+            ux = (i + 0.5 - cx) / r
+            uy = (cy - (j + 0.5)) / r
+            rho = math.sqrt(ux * ux + uy * uy)
+            cov = r + 0.5 - rho * r
+            if cov <= 0.0:
+                continue
+            if cov > 1.0:
+                cov = 1.0
+            if rho > 1.0:
+                ux /= rho
+                uy /= rho
+                uz = 0.0
+            else:
+                uz = math.sqrt(max(1.0 - ux * ux - uy * uy, 0.0))
+            nx = ux * cam[3] + uy * cam[6] - uz * cam[9]
+            ny = ux * cam[4] + uy * cam[7] - uz * cam[10]
+            nz = ux * cam[5] + uy * cam[8] - uz * cam[11]
+            rgb = shade(b, lights, specks, nx, ny, nz, ox, oy, oz, r)
+            for c in range(3):
+                img[j, i, c] = cov * rgb[c] + (1.0 - cov) * img[j, i, c]
+            touched += 1
+    return touched
+
+
+@njit(cache=True, nogil=True)
+def shade(b, lights, specks, nx, ny, nz, ox, oy, oz, r_px):  # noqa: ANN001, ANN201
+    """Phong at the sphere point with world normal n (eye at o): ambient, diffuse, specular."""
+    px = b[B_C] + b[B_R] * nx
+    py = b[B_C + 1] + b[B_R] * ny
+    pz = b[B_C + 2] + b[B_R] * nz
+    vx, vy, vz = ox - px, oy - py, oz - pz
+    vn = math.sqrt(vx * vx + vy * vy + vz * vz)
+    vx, vy, vz = vx / vn, vy / vn, vz / vn
+    albedo = np.empty(3)
+    mix = speck_mix(b, specks, nx, ny, nz, r_px) * b[B_SPECK_MIX]
+    for c in range(3):
+        albedo[c] = (1.0 - mix) * b[B_ALBEDO + c] + mix * b[B_SPECK + c]
+    out = np.empty(3)
+    for c in range(3):
+        out[c] = b[B_KA] * b[B_AMB + c] * albedo[c]
+    for m in range(lights.shape[0]):
+        lx, ly, lz = lights[m, 0] - px, lights[m, 1] - py, lights[m, 2] - pz
+        ln = math.sqrt(lx * lx + ly * ly + lz * lz)
+        lx, ly, lz = lx / ln, ly / ln, lz / ln
+        ndl = nx * lx + ny * ly + nz * lz
+        if ndl <= 0.0:
+            continue
+        rx, ry, rz = 2.0 * ndl * nx - lx, 2.0 * ndl * ny - ly, 2.0 * ndl * nz - lz
+        rdv = rx * vx + ry * vy + rz * vz
+        spec = b[B_KS] * rdv ** b[B_N] if rdv > 0.0 else 0.0
+        for c in range(3):
+            out[c] += (b[B_KD] * ndl * albedo[c] + spec) * lights[m, 3 + c]
+    return out
+
+
+@njit(cache=True, nogil=True)
+def speck_mix(b, specks, nx, ny, nz, r_px):  # noqa: ANN001, ANN201 - numba kernel
+    """How much of a speck covers the point with world normal n (anti-aliased over about a
+    pixel's angle, 1 / r_px radians, at the disc's centre)."""
+    # the normal in the ball's own frame: M^T n (M turns the ball's frame to the world)
+    bx = b[B_M] * nx + b[B_M + 3] * ny + b[B_M + 6] * nz
+    by = b[B_M + 1] * nx + b[B_M + 4] * ny + b[B_M + 7] * nz
+    bz = b[B_M + 2] * nx + b[B_M + 5] * ny + b[B_M + 8] * nz
+    cos_r = b[B_SPECK_COS]
+    width = math.sqrt(max(1.0 - cos_r * cos_r, 1e-12)) / max(r_px, 0.5)
+    best = 0.0
+    for s in range(specks.shape[0]):
+        d = bx * specks[s, 0] + by * specks[s, 1] + bz * specks[s, 2]
+        m = (d - cos_r) / width + 0.5
+        if m > best:
+            best = min(m, 1.0)
+    return best

@@ -1,0 +1,65 @@
+"""What a frame is rendered from: the table, every frame's ball centres, the lights.
+
+A pure, picklable description (thesis 6.4: the motion program's positions and the camera
+program's views in, frames out), so any process can render any frame byte-identically;
+ball centres stay an input array so sub-frame positions (motion blur) can be fed later.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from functools import cached_property
+
+import numpy as np
+
+from apps.snooker import checkpoint as ckpt
+from apps.snooker.camera.space import checkpoint_centres
+from apps.snooker.render.lights import Lights, canopy
+from apps.snooker.render.specks import orientations
+from apps.snooker.session import Session
+from apps.snooker.table import Table
+
+
+@dataclass(frozen=True, eq=False)
+class Scene:
+    """centres (frames, 22, 3) default-space metres, on_table (frames, 22); index 0 is the
+    checkpoint's frame 1."""
+
+    table: Table
+    centres: np.ndarray
+    on_table: np.ndarray
+    lights: Lights = field(default_factory=canopy)
+
+    @cached_property
+    def orientations(self) -> np.ndarray:
+        """(frames, 22, 3, 3): each ball's rolling orientation (for the dust specks)."""
+        return orientations(self.centres, self.on_table, self.table.radius)
+
+    @property
+    def n_frames(self) -> int:
+        return int(self.centres.shape[0])
+
+    def index(self, frame: int) -> int:
+        """Checkpoint frame number (from 1) -> row of ``centres``."""
+        if not 1 <= frame <= self.n_frames:
+            raise ValueError(f"frame {frame} is not in 1..{self.n_frames}")
+        return frame - 1
+
+    @classmethod
+    def from_checkpoint(cls, checkpoint: ckpt.Checkpoint, table: Table | None = None,
+                        lights: Lights | None = None) -> Scene:
+        t = table or Table()
+        centres, on = checkpoint_centres(checkpoint, t)
+        return cls(t, centres, on, lights or canopy())
+
+
+def load_scene(path: str | os.PathLike[str], lights: Lights | None = None) -> Scene:
+    """A checkpoint (§6.2.2) or a saved session (JSON) -> Scene; errors name file:line."""
+    p = os.fspath(path)
+    with open(p, "rb") as fh:
+        head = fh.read(64).lstrip()
+    if head.startswith(b"{"):
+        session = Session.load(p)
+        return Scene.from_checkpoint(session.checkpoint(), session.table, lights)
+    return Scene.from_checkpoint(ckpt.read(p), None, lights)

@@ -1,0 +1,103 @@
+"""The `truecolour` renderer: the scene model drawn in 24-bit at any size (no terminal).
+
+``render_frame(scene, view, options)`` is a pure function of its (picklable) arguments, so
+frames can be rendered in any process and come out byte-identical (thesis 6.4: the same
+picture the Sigma shows, without its 256-colour limit).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from apps.snooker.render import kernels as K
+from apps.snooker.render.balls import ball_params
+from apps.snooker.render.frame import (
+    FrameGeometry,
+    camera_params,
+    clip_project,
+    frame_geometry,
+    shadow_boxes,
+)
+from apps.snooker.render.gamma import encode
+from apps.snooker.render.materials import BACKGROUND
+from apps.snooker.render.painter import BallItem, PolygonItem, ShadowItem
+from apps.snooker.render.scene import Scene
+from apps.snooker.render.shading import lights_array
+from apps.snooker.render.specks import speck_directions
+
+
+@dataclass(frozen=True)
+class RenderOptions:
+    width: int = 768
+    height: int = 512
+    specks: bool = True
+    shadows: bool = True
+
+
+def render_frame(scene: Scene, view: object, options: RenderOptions | None = None,
+                 frame: int | None = None) -> np.ndarray:
+    """(H, W, 3) uint8, gamma-encoded, row 0 = top. ``view`` has observer, viewpoint,
+    focal_mm and frame (the camera issue's View); ``frame`` overrides view.frame."""
+    return encode(render_linear(scene, view, options, frame))
+
+
+def render_linear(scene: Scene, view: object, options: RenderOptions | None = None,
+                  frame: int | None = None) -> np.ndarray:
+    """(H, W, 3) float64 linear light."""
+    o = options or RenderOptions()
+    g = frame_geometry(scene, np.asarray(view.observer), np.asarray(view.viewpoint),
+                       float(view.focal_mm), int(view.frame if frame is None else frame),
+                       o.width, o.height)
+    img = np.empty((o.height, o.width, 3), dtype=np.float64)
+    img[:] = BACKGROUND
+    lights = lights_array(scene.lights)
+    for item in g.items:
+        if isinstance(item, PolygonItem):
+            xy = clip_project(g.pin, item.face.vertices)
+            if xy is not None:
+                K.polygon(img, xy, np.ascontiguousarray(item.colour, dtype=np.float64))
+        elif isinstance(item, ShadowItem):
+            if o.shadows:
+                apply_shadows(img, g, item)
+        elif isinstance(item, BallItem):
+            draw_ball(img, scene, g, item, lights, o.specks)
+    return img
+
+
+def shadow_occlusion(g: FrameGeometry, item: ShadowItem, n_lights: int, height: int,
+                     width: int) -> np.ndarray:
+    """(lights, H, W, 1): how much of each light's share of the baize is shadowed."""
+    occ = np.zeros((n_lights, height, width, 1), dtype=np.float64)
+    one = np.ones(1)
+    for li, poly in item.cushions:
+        xy = clip_project(g.pin, poly)
+        if xy is not None:
+            K.polygon(occ[li], xy, one)
+    return occ
+
+
+def apply_shadows(img: np.ndarray, g: FrameGeometry, item: ShadowItem) -> None:
+    h, w = img.shape[:2]
+    occ = shadow_occlusion(g, item, len(item.removed), h, w)
+    ell, boxes = shadow_boxes(g.pin, item.ellipses)
+    if len(ell):
+        K.shadows(occ, camera_params(g.pin), ell, boxes, g.half_length, g.half_width)
+    touched = np.nonzero(occ.any(axis=(0, 3)))
+    if len(touched[0]) == 0:
+        return
+    ys, xs = touched
+    y0, y1, x0, x1 = ys.min(), ys.max() + 1, xs.min(), xs.max() + 1
+    dim = np.tensordot(occ[:, y0:y1, x0:x1, 0], item.removed, axes=(0, 0))
+    np.maximum(img[y0:y1, x0:x1] - dim, 0.0, out=img[y0:y1, x0:x1])
+
+
+def draw_ball(img: np.ndarray, scene: Scene, g: FrameGeometry, item: BallItem,
+              lights: np.ndarray, specks: bool) -> None:
+    b = item.ball
+    if g.ball_depth[b] <= scene.table.radius + 1e-3:
+        return  # behind the observer, or the observer inside the ball
+    params = ball_params(g.ball_xy[b], float(g.ball_r_px[b]), item.centre, scene.table.radius,
+                         item.albedo, scene.orientations[g.row, b], scene.lights, specks)
+    K.ball(img, camera_params(g.pin), params, lights, speck_directions(b))
