@@ -1,10 +1,16 @@
 """Generator of the stylised electronic-circuit rules of section 7.4.3 (RECONSTRUCTED).
 
-The thesis describes but does not print these rules.  Elements, as it lists them:
+The thesis describes but does not print these rules.  Elements, as it lists them ("the
+logic values 0 and 1 (both static and moving across the grid in various directions)"):
 
 * logic values 0 and 1 moving east, south, west or north (``P(v, d)``): each generation a
   value passes a message to the cell ahead (which becomes it) and tells its four neighbours
   it is there and which value it carries;
+* static logic values 0 and 1 (``S(v)``): a cell that stays put holding a level, like a wire
+  tied high or low, and tells its four neighbours its value every generation.  A gate
+  beside it counts it as one more input, but only moving values make a gate fire (a static
+  level alone would make it fire every generation); a moving value running into it is
+  absorbed and sets its level (so it also serves as a one-bit latch);
 * mirrors (``M(d)``, turning a stream through a right angle or emitting a gate's output):
   a value arriving from any side, or a gate's output message, comes out heading ``d``
   one generation later;
@@ -17,9 +23,10 @@ The thesis describes but does not print these rules.  Elements, as it lists them
   "enabling cell"); gates with several inputs count them (XOR = odd parity, so a 3-input
   XOR gives a full adder's sum).
 
-Message area: bits 0-2 adjacent values, 3-5 adjacent ones, 6-7 gate output (present,
-value), 8-15 arrivals (present, value per direction E, S, W, N), 16 and up the static
-element's code (each element sends its code to itself).
+Message area: bits 0-2 adjacent moving values, 3-5 adjacent moving ones, 6-7 gate output
+(present, value), 8-15 arrivals (present, value per direction E, S, W, N), 16-18 adjacent
+static values, 19-21 adjacent static ones, 22 and up the fixed element's code (each element
+sends its code to itself).
 """
 
 from __future__ import annotations
@@ -29,8 +36,10 @@ from itertools import product
 DIRS = ("E", "S", "W", "N")
 STEP = {"E": (1, 0), "S": (0, 1), "W": (-1, 0), "N": (0, -1)}
 GATES = ("AND", "OR", "XOR", "NAND", "NOR")
-CODE_SHIFT = 16
+STATIC_SHIFT = 16  # adjacent static values (3 bits), then adjacent static ones (3 bits)
+CODE_SHIFT = 22
 SPAWN, SPAWN_ONE = 64, 128
+ANY_STATIC = "??????"
 
 
 def _arrival_bits(d: str, v: int) -> int:
@@ -56,6 +65,8 @@ class Forms:
             for v in (0, 1):
                 self._add(("MH", d, v))
         self._add(("E",))
+        for v in (0, 1):
+            self._add(("S", v))
         for h, vv in product(self._holds("EW"), self._holds("SN")):
             self._add(("X", h, vv))
         for g in GATES:
@@ -67,6 +78,8 @@ class Forms:
         self.codes[("X",)] = 6
         for i, g in enumerate(GATES):
             self.codes[("G", g)] = 7 + i
+        for v in (0, 1):
+            self.codes[("S", v)] = 12 + v
 
     @staticmethod
     def _holds(axis: str) -> list[tuple[int, str] | None]:
@@ -103,7 +116,14 @@ def _particle_entries(held: list[tuple[int, str]], code: int | None) -> dict:
 
 
 COLOURS = {"P0": "60 60 FF", "P1": "FF FF 40", "M": "A0 A0 A0", "E": "80 40 40",
-           "X": "C0 60 C0", "G": "40 C0 40"}
+           "X": "C0 60 C0", "G": "40 C0 40", "S0": "20 30 90", "S1": "FF 90 00"}
+
+
+def _static_entries(v: int, code: int) -> dict:
+    """A static value: its level to the four neighbours, its code to itself."""
+    out = {STEP[d]: f"+{(1 + 8 * v) << STATIC_SHIFT}" for d in DIRS}
+    out[(0, 0)] = f"|#X{code << CODE_SHIFT:X}"
+    return out
 
 
 def rules_text() -> str:
@@ -123,6 +143,9 @@ def rules_text() -> str:
         elif kind == "E":
             ent = {(0, 0): f"|#X{f.codes[('E',)] << CODE_SHIFT:X}"}
             colour = COLOURS["E"]
+        elif kind == "S":
+            ent = _static_entries(key[1], f.codes[key])
+            colour = COLOURS[f"S{key[1]}"]
         elif kind == "X":
             held = [h for h in key[1:] if h is not None]
             ent = _particle_entries(held, f.codes[("X",)])
@@ -144,10 +167,12 @@ def rules_text() -> str:
     return "\n".join(out) + "\n"
 
 
-def _pattern(code: int, arrivals: str, spawn: str, counts: str) -> str:
-    """#B pattern: code (bits 16+), arrivals (8 bits, N..E high to low), spawn, counts."""
+def _pattern(code: int, arrivals: str, spawn: str, counts: str,
+             static: str = ANY_STATIC) -> str:
+    """#B pattern: code (bits 22+), static counts (6 bits), arrivals (8 bits, N..E high to
+    low), spawn, moving counts."""
     head = bin(code)[2:] if code else ""
-    return "#B" + head + arrivals + spawn + counts
+    return "#B" + head + static + arrivals + spawn + counts
 
 
 def _arrival_field(which: dict[str, int | None]) -> str:
@@ -178,6 +203,7 @@ def _interpretations() -> list[str]:
         lines.append(f"{_pattern(code, '????????', '??', '??????')} {f[('M', d)]}")
     lines.append("// eater")
     lines.append(f"{_pattern(f.codes[('E',)], '????????', '??', '??????')} {f[('E',)]}")
+    lines += _static_lines()
     lines.append("// crossing: each axis holds the value arriving along it")
     code = f.codes[("X",)]
     for combo in product((None, 0, 1), repeat=4):
@@ -189,14 +215,38 @@ def _interpretations() -> list[str]:
         lines.append(f"{_pattern(code, _arrival_field(which), '??', '??????')} "
                      f"{f[('X', h, vv)]}")
     for g in GATES:
-        code = f.codes[("G", g)]
-        lines.append(f"// gate {g}: n inputs of which k are 1")
-        for n in range(1, 5):
-            for k in range(0, n + 1):
-                v = int(_gate_fn(g, n, k))
-                lines.append(f"{_pattern(code, '????????', '??', f'{k:03b}{n:03b}')} "
-                             f"{f[('GF', g, v)]}")
-        lines.append(f"{_pattern(code, '????????', '??', '??????')} {f[('G', g)]}")
+        lines += _gate_lines(g)
+    return lines
+
+
+def _static_lines() -> list[str]:
+    """A static value holds its level; one moving value arriving sets it (and is absorbed)."""
+    f = FORMS
+    lines = ["// static values: one arriving value sets the level, otherwise it is held"]
+    for held in (0, 1):
+        code = f.codes[("S", held)]
+        for d in DIRS:
+            for v in (0, 1):
+                lines.append(f"{_pattern(code, _arrival_field({d: v}), '??', '??????')} "
+                             f"{f[('S', v)]}")
+        lines.append(f"{_pattern(code, '????????', '??', '??????')} {f[('S', held)]}")
+    return lines
+
+
+def _gate_lines(g: str) -> list[str]:
+    """Fires when a moving value is beside it; static values beside it count as inputs."""
+    f = FORMS
+    code = f.codes[("G", g)]
+    lines = [f"// gate {g}: n moving inputs (k of them 1) and ns static (ks of them 1)"]
+    for n in range(1, 5):
+        for k in range(0, n + 1):
+            for ns in range(0, 5 - n):
+                for ks in range(0, ns + 1):
+                    v = int(_gate_fn(g, n + ns, k + ks))
+                    pat = _pattern(code, "????????", "??", f"{k:03b}{n:03b}",
+                                   f"{ks:03b}{ns:03b}")
+                    lines.append(f"{pat} {f[('GF', g, v)]}")
+    lines.append(f"{_pattern(code, '????????', '??', '??????')} {f[('G', g)]}")
     return lines
 
 
@@ -245,10 +295,15 @@ def _band(cells: list, bx: int, by: int, last: bool) -> None:
         put(33, BAND_DY + 5, ("M", "E"))  # and east into the next band's carry row
 
 
-def adder_layout(pairs: list[tuple[int, int]]) -> tuple[list, dict[str, tuple[int, int]]]:
-    """Cells of the adder with input streams for ``pairs``; and the output probe points."""
+def adder_layout(pairs: list[tuple[int, int]], carry_in: int = 0
+                 ) -> tuple[list, dict[str, tuple[int, int]]]:
+    """Cells of the adder with input streams for ``pairs``; and the output probe points.
+
+    The carry into bit 0 is a static value held beside bit 0's two carry gates (the moving
+    p stream makes them fire; the static level is their second input), so the adder shows
+    both kinds of logic value: ``carry_in`` = 1 adds one to every sum."""
     f = FORMS
-    cells: list = []
+    cells: list = [(12, 5, f[("S", carry_in)]), (18, 5, f[("S", carry_in)])]
     phase0 = -10
     for i in range(4):
         _band(cells, i * BAND_DX, i * BAND_DY, last=i == 3)
@@ -257,8 +312,6 @@ def adder_layout(pairs: list[tuple[int, int]]) -> tuple[list, dict[str, tuple[in
             x = phase - j * PERIOD
             cells.append((x, i * BAND_DY - 1, f[("P", (a >> i) & 1, "E")]))
             cells.append((x, i * BAND_DY + 1, f[("P", (b >> i) & 1, "E")]))
-            if i == 0:  # carry into bit 0: a stream of zeros
-                cells.append((x - 2, 5, f[("P", 0, "E")]))
     end = 3 * BAND_DX + 60
     probes: dict[str, tuple[int, int]] = {}
     for i in range(4):
@@ -281,9 +334,10 @@ def adder_pattern(pairs: list[tuple[int, int]] = DEMO_PAIRS):
                               comments=["sums " + " ".join(f"{a}+{b}" for a, b in pairs)])
 
 
-def run_adder(engine_factory, pairs: list[tuple[int, int]], generations: int | None = None):
+def run_adder(engine_factory, pairs: list[tuple[int, int]], generations: int | None = None,
+              carry_in: int = 0):
     """Run the adder; return the 5-bit results read from the output streams, in order."""
-    cells, probes = adder_layout(pairs)
+    cells, probes = adder_layout(pairs, carry_in)
     e = engine_factory()
     e.set_cells([c[0] + 1000 for c in cells], [c[1] + 1000 for c in cells],
                 [c[2] for c in cells])

@@ -82,9 +82,52 @@ def _sums(seen: dict[str, list[int]], n: int) -> list[int]:
             for j in range(n)]
 
 
+def _gate_with(gate: str, extra: list) -> Engine:
+    return _engine([(50, 50, ("G", gate)), (53, 50, ("M", "E")), (80, 50, ("E",)),
+                    (65, 49, ("E",)), (65, 51, ("E",)), *extra])
+
+
+@pytest.mark.parametrize("level", [0, 1])
+def test_static_value_alone_holds_its_level_and_never_fires_a_gate(level: int) -> None:
+    e = _gate_with("NAND", [(50, 51, ("S", level))])
+    before = _state(e)
+    e.step(20)
+    assert _state(e) == before  # nothing emitted; the static value is still there
+
+
+@pytest.mark.parametrize("v", [0, 1])
+def test_nand_with_a_static_one_is_a_not_gate(v: int) -> None:
+    e = _gate_with("NAND", [(50, 51, ("S", 1)), (47, 49, ("P", v, "E"))])
+    e.step(6)
+    assert (54, 50, ("P", 1 - v, "E")) in _state(e)
+    assert (50, 51, ("S", 1)) in _state(e)
+    e = _gate_with("AND", [(50, 51, ("S", 0)), (47, 49, ("P", 1, "E"))])
+    e.step(6)
+    assert (54, 50, ("P", 0, "E")) in _state(e)  # 1 AND static 0
+
+
+def test_a_moving_value_sets_a_static_value() -> None:
+    e = _engine([(10, 10, ("S", 0)), (6, 10, ("P", 1, "E"))])
+    e.step(4)
+    assert _state(e) == {(10, 10, ("S", 1))}  # absorbed, and the level is now 1
+    e.set(10, 7, F[("P", 0, "S")])
+    e.step(3)
+    assert _state(e) == {(10, 10, ("S", 0))}
+
+
+@pytest.mark.claim("§7.4.3: logic values both static and moving; a 4-bit adder takes eight "
+                   "streams of binary digits and adds them into a stream of 5-bit results",
+                   measured="the adder's carry in is a static value; demo pairs and 40 "
+                   "random pairs add correctly, with carry in 0 and 1", verdict="agrees "
+                   "(the rules and the layout are reconstructed)")
 def test_four_bit_adder_demo_sums() -> None:
     seen = C.run_adder(lambda: Engine(RULES), C.DEMO_PAIRS)
     assert _sums(seen, len(C.DEMO_PAIRS)) == [a + b for a, b in C.DEMO_PAIRS]
+
+
+def test_four_bit_adder_with_a_static_carry_in_of_one() -> None:
+    seen = C.run_adder(lambda: Engine(RULES), C.DEMO_PAIRS, carry_in=1)
+    assert _sums(seen, len(C.DEMO_PAIRS)) == [a + b + 1 for a, b in C.DEMO_PAIRS]
 
 
 def test_four_bit_adder_random_pairs() -> None:
@@ -99,4 +142,4 @@ def test_adder_demo_pattern_is_the_layout() -> None:
     cells, _ = C.adder_layout(C.DEMO_PAIRS)
     assert len(p.cell_set()) == len(cells)
     kinds = {INV[t][0] for _, _, t in p.cell_set()}
-    assert {"P", "G", "M", "E", "X"} <= kinds
+    assert {"P", "S", "G", "M", "E", "X"} <= kinds  # moving and static values
