@@ -55,7 +55,8 @@ class _Run:
         self.obs = np.full((n, 3), np.nan)
         self.vp = np.full((n, 3), np.nan)
         self.focal = np.full(n, np.nan)
-        self.owner = np.zeros(n, dtype=np.int64)
+        self.owner = np.zeros(n, dtype=np.int64)  # index into self.tokens, 0: none
+        self.tokens: list[object] = [None]
         self.periods: list[tuple[int, int, int]] = []
         self.errors: list[CclError] = []
         self.prev_end = 0
@@ -77,7 +78,8 @@ class _Run:
                 self.guard(self.place, p, first, last)
         if cmd.focal is not None:
             self.set_focal(cmd.focal, first, last)
-        self.owner[first - 1:last] = cmd.tok.line
+        self.owner[first - 1:last] = len(self.tokens)
+        self.tokens.append(cmd.tok)
         self.periods.append((cmd.tok.line, first, last))
         self.prev_end = last
 
@@ -175,15 +177,28 @@ class _Run:
         obs = _fill(self.obs, np.array(names.DEFAULT_OBSERVER))
         vp = _fill(self.vp, np.array(names.DEFAULT_VIEWPOINT))
         focal = _fill(self.focal[:, None], np.array([names.DEFAULT_FOCAL_MM]))[:, 0]
+        bad = np.flatnonzero(~np.all(np.isfinite(np.hstack([obs, vp])), axis=1))
+        if bad.size:
+            tok = self.tokens[int(self.owner[bad[0]])] or _Start
+            self.error(tok, f"a position is too far away to compute at frame {bad[0] + 1} "
+                            "(check the COORDS factors)")
+            obs, vp = np.nan_to_num(obs), np.nan_to_num(vp)
         same = np.flatnonzero(np.all(obs == vp, axis=1))
         if same.size:
             f = int(same[0]) + 1
-            line = int(self.owner[f - 1])
+            tok = self.tokens[int(self.owner[f - 1])] or _Start
             count = f" (and {same.size - 1} more frames)" if same.size > 1 else ""
-            self.errors.append(CclError(max(line, 1), 1, f"the observer and the viewpoint are "
-                                        f"the same point at frame {f}{count}: there is no "
-                                        "direction to look in"))
-        return Interpretation(obs, vp, focal, self.owner, self.periods, sorted(self.errors))
+            self.error(tok, f"the observer and the viewpoint are the same point at frame {f}"
+                            f"{count}: there is no direction to look in")
+        lines = np.array([0 if t is None else t.line for t in self.tokens])  # type: ignore[attr-defined]
+        return Interpretation(obs, vp, focal, lines[self.owner], self.periods,
+                              sorted(self.errors))
+
+
+class _Start:
+    """Where an error about the start-of-day defaults is reported."""
+
+    line = col = 1
 
 
 def _ramp(first: int, last: int) -> np.ndarray:

@@ -8,6 +8,8 @@ BALL`` for CUEBALL, ``HIT BALL`` for HITBALL, ``START``/``STOP``/``STRIKE`` for
 
 from __future__ import annotations
 
+import math
+
 from apps.snooker.camera.errors import CclError, did_you_mean
 from apps.snooker.camera.lexer import Token, tokenize
 from apps.snooker.camera.projection import FOCAL_MAX_MM, FOCAL_MIN_MM
@@ -99,7 +101,10 @@ class _Cursor:
         if t.kind != "number":
             raise self.fail(what)
         self.take()
-        return s * float(t.text), start
+        v = s * float(t.text)
+        if not math.isfinite(v):
+            raise _Fail(CclError(t.line, t.col, f"the number {t.text} is too large"))
+        return v, start
 
     def integer(self, what: str, lo: int, hi: int | None = None) -> tuple[int, Token]:
         t = self.peek()

@@ -1,0 +1,74 @@
+"""The thesis's example camera script (§6.3.1), as printed, over its shot: observer,
+viewpoint and focal length checked frame by frame against values worked out here by hand
+from the script's text, the table's dimensions and the checkpoint's raw numbers."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from apps.snooker.camera import ccl, motion
+from apps.snooker.checkpoint import read
+from tests.snooker_camera import pink_shot
+
+DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_camera"
+FT = 0.3048
+L, W, R = 12 * FT, 6.125 * FT, 2.0625 * 0.0254 / 2
+PINK = 5  # 0-based: cue, yellow, green, brown, blue, pink
+
+
+def pink_centre(units: np.ndarray) -> np.ndarray:
+    """Checkpoint units (4096 to the foot, from the baulk cushion and the right cushion)
+    -> metres from the table's centre, z = the ball's radius."""
+    x, y = units * FT / 4096
+    return np.array([x - L / 2, y - W / 2, R])
+
+
+@pytest.fixture(scope="module")
+def result() -> ccl.Interpretation:
+    text = (DATA / "thesis_example.ccl").read_text()
+    return ccl.compile_script(text, motion.load(DATA / "pink_shot.checkpoint"))
+
+
+def test_the_shot_is_the_one_the_script_describes() -> None:
+    p = read(DATA / "pink_shot.checkpoint").positions
+    pink_moves = np.flatnonzero(np.any(p[1:, PINK] != p[:-1, PINK], axis=1)) + 2
+    assert pink_moves[0] == 44 and pink_moves[-1] == 75 == len(p)  # struck at 44, drops at 75
+    assert tuple(p[0, PINK] * FT / 4096) == pytest.approx((0.75 * L, W / 2), abs=1e-4)
+    x, y = p[-1, PINK] * FT / 4096
+    assert x > L and y > W  # behind the top left pocket
+
+
+def test_the_shipped_shot_is_what_the_aiming_tools_make() -> None:
+    s = pink_shot.make()
+    assert s.checkpoint().to_text() == (DATA / "pink_shot.checkpoint").read_text()
+
+
+def test_observer_viewpoint_focal_frame_by_frame(result: ccl.Interpretation) -> None:
+    p = read(DATA / "pink_shot.checkpoint").positions
+    cam3 = np.array([7.3, -4.5, 1.2])
+    pink_spot = np.array([0.75 * L - L / 2, 0.0, 0.0])
+    top_left = np.array([L / 2, W / 2, 0.0])
+    for f in range(1, 76):
+        if f <= 33:  # observer at camera 1 (default), viewpoint (0,0,0), 50 mm
+            want = (np.array([-5.5, 0.0, 2.5]), np.zeros(3), 50.0)
+        elif f <= 44:  # 34 .. cueball strikes (44): moving, zooming 30 -> 135, pink spot
+            t = (f - 34) / 10
+            want = (cam3 - [0, 1, 0] + t * np.array([0, 1, 0]), pink_spot, 30 + t * 105)
+        elif f <= 65:  # .. pink ball stops (75) - 10: observer stays, viewpoint the pink
+            want = (cam3, pink_centre(p[f - 1, PINK]), 135.0)
+        else:  # .. pink ball stops: behind the pink, looking at the pocket, 28 mm
+            want = (pink_centre(p[f - 1, PINK]) + [0.1, -0.1, 0.05], top_left, 28.0)
+        np.testing.assert_allclose(result.observer[f - 1], want[0], atol=1e-12, err_msg=f"{f}")
+        np.testing.assert_allclose(result.viewpoint[f - 1], want[1], atol=1e-12,
+                                   err_msg=f"{f}")
+        assert result.focal[f - 1] == pytest.approx(want[2], abs=1e-12), f
+
+
+def test_periods_and_the_session_file_give_the_same(result: ccl.Interpretation) -> None:
+    assert result.periods == [(2, 1, 33), (7, 34, 44), (13, 45, 65), (16, 66, 75)]
+    text = (DATA / "thesis_example.ccl").read_text()
+    again = ccl.compile_script(text, motion.load(DATA / "pink_shot.session.json"))
+    assert again.views() == result.views()
