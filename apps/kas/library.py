@@ -19,6 +19,9 @@ import os
 import re
 from pathlib import Path
 
+from protocols.atomicfile import write_atomic
+from protocols.suggest import did_you_mean
+
 LIBRARY = Path(__file__).with_name("library")
 ENV = "CAMLAB88_KAS_LIBRARY"
 
@@ -35,15 +38,32 @@ def _dirs() -> list[Path]:
     return [user_dir(), LIBRARY]
 
 
+class LibraryNameError(FileNotFoundError):
+    """A name that is neither a file nor a library entry (the message suggests near ones)."""
+
+
 def resolve(name: str | os.PathLike[str]) -> Path:
+    """The file ``name`` names: itself if it exists, else a library entry of that name;
+    LibraryNameError (a FileNotFoundError) if neither, naming the near library names."""
     p = Path(name)
-    if p.exists() or p.parent != Path("."):
+    if p.exists():
         return p
-    for d in _dirs():
-        for cand in (d / p, d / f"{p}.kas"):
-            if cand.is_file():
-                return cand
-    return p  # let the loader report it missing, by the name the user gave
+    if p.parent == Path("."):
+        for d in _dirs():
+            for cand in (d / p, d / f"{p}.kas"):
+                if cand.is_file():
+                    return cand
+    raise LibraryNameError(missing_message(str(name)))
+
+
+def missing_message(name: str) -> str:
+    """What to say about a name that is neither a file nor a library entry."""
+    if Path(name).parent != Path("."):
+        return f"{name}: no such file"
+    stem = name[:-4] if name.endswith(".kas") else name
+    hint = did_you_mean(stem, [entry for entry, _, _ in entries()])
+    return (f"{name}: no such file, and no library entry of that name{hint} "
+            "('camlab88 kas library' lists them)")
 
 
 def _kind(f: Path) -> str:
@@ -62,6 +82,29 @@ def entries() -> list[tuple[str, str, str]]:
         if d.is_dir():
             out += [(f.stem, _kind(f), where) for f in sorted(d.glob("*.kas"))]
     return out
+
+
+def save(src: str | os.PathLike[str], name: str) -> tuple[str, Path]:
+    """Check the KAS file ``src`` and copy it into the user library as ``name``; returns
+    (its kind, where it went). The file must exist already: the library keeps files made
+    by the other commands (a path from ``kas path``, a sequence from ``kas inbetween``...)."""
+    from apps.kas import files
+
+    loaders = {"keyframe": files.parse_keyframe, "sequence": files.parse_sequence,
+               "path": files.parse_path, "timing": files.parse_timing}
+    if not Path(src).is_file():
+        raise FileNotFoundError(f"{src}: no such file to save in the library (it keeps an "
+                                "existing keyframe, sequence, path or timing file)")
+    text = Path(src).read_text(encoding="utf-8")
+    first = text.split("\n", 1)[0].split()
+    kind = first[1] if len(first) == 3 and first[0] == "KAS" else ""
+    if kind not in loaders:
+        raise files.KasFileError(str(src), 1, "not a KAS keyframe, sequence, path or timing "
+                                 "file (its first line should be 'KAS <kind> <version>')")
+    loaders[kind](text, str(src))  # refuse a bad file before it enters the library
+    dest = user_file(name)
+    write_atomic(dest, text)
+    return kind, dest
 
 
 def user_file(name: str) -> Path:

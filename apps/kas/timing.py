@@ -50,8 +50,14 @@ def fractions(t: Timing | None, frames: int | None) -> np.ndarray:
                              f"frames with the keyframes, but {frames} frames were asked for")
         return np.concatenate([[0.0], t.values, [1.0]])
     validate_timing(t)
-    if frames is None or frames < 2:
-        raise ValueError("a timing curve needs a frame count of at least 2")
+    if frames is None:  # e.g. `kas inbetween A B --timing ease-in` without --frames
+        named = f" {t.name!r}" if t.name else ""
+        raise ValueError(f"the timing curve{named} spreads the frames along the path but no "
+                         "frame count was given: --frames N is missing (N >= 2, both "
+                         "keyframes counted)")
+    if frames < 2:
+        raise ValueError(f"a timing curve needs a frame count of at least 2 (both keyframes), "
+                         f"not {frames}")
     u = np.linspace(0.0, 1.0, frames)
     d = np.interp(u, t.values[:, 0], t.values[:, 1])
     d[0], d[-1] = 0.0, 1.0  # the keyframes themselves are never moved (§3.1.2)

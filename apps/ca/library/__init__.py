@@ -5,6 +5,8 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+from protocols.suggest import did_you_mean
+
 LIBRARY = Path(__file__).resolve().parent
 PATTERN_SUFFIXES = (".pat", ".rle", ".cells")
 
@@ -16,8 +18,10 @@ def _resolve(name: str, suffixes: tuple[str, ...], what: str) -> str:
         candidate = LIBRARY / f"{name}{suffix}"
         if candidate.is_file():
             return str(candidate)
-    known = ", ".join(sorted({p.stem for p in LIBRARY.iterdir() if p.suffix in suffixes}))
-    raise FileNotFoundError(f"no {what} file or library entry named {name!r} (library: {known})")
+    entries = sorted({p.stem for p in LIBRARY.iterdir() if p.suffix in suffixes})
+    hint = did_you_mean(Path(name).stem if Path(name).suffix in suffixes else name, entries)
+    raise FileNotFoundError(f"no {what} file or library entry named {name!r}{hint} "
+                            f"(library: {', '.join(entries)})")
 
 
 def rules_path(name: str) -> str:
