@@ -23,8 +23,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from apps.ca.engine import EDGES, SIDE, Engine, Rect
-from apps.ca.patterns import Pattern, format_rle, parse_rle, write_atomic
+from apps.ca.patterns import Pattern, format_rle, parse_rle
 from apps.ca.rules import parse_rules
+from protocols.atomicfile import write_atomic
+from protocols.textinput import parse_int, quote, read_text
 
 LOG_MAGIC = "CAMLAB88-CA-LOG 1"
 CHECKPOINT_MAGIC = "CAMLAB88-CA-CHECKPOINT 1"
@@ -33,6 +35,17 @@ VIEW_EVENTS = ("view", "zoom")
 
 class LogError(ValueError):
     """A log, script or checkpoint file is malformed (names file and line)."""
+
+
+# the engine hashes the seed as an int64 (apps/ca/kernels.py): a seed beyond it cannot be
+# the seed of any run
+SEED_MIN, SEED_MAX = -(1 << 63), (1 << 63) - 1
+# a generation, count or coordinate in a log beyond this is damage, not a session
+MAX_LOG_NUMBER = (1 << 31) - 1
+
+
+def _read(path: str | os.PathLike) -> str:
+    return read_text(path, error=LogError)
 
 
 @dataclass(frozen=True)
@@ -61,7 +74,10 @@ def _rect_args(rect: Rect | None) -> tuple:
 
 
 def _rect(args: tuple) -> Rect | None:
-    return None if args[0] == "all" else Rect(*(int(a) for a in args[:4]))
+    if args[0] == "all":
+        return None
+    return Rect(*(parse_int(str(a), "a rectangle", -MAX_LOG_NUMBER - 1, MAX_LOG_NUMBER,
+                            LogError, "corner") for a in args[:4]))
 
 
 # -- making events (what the program calls as the animator intervenes) -----------------------
@@ -237,12 +253,21 @@ def _parse_header(lines: list[str], source: str) -> tuple[LogSettings, int]:
             edges = rest.strip()
         elif word == "seed":
             if not re.fullmatch(r"-?[0-9]+", rest.strip()):
-                raise LogError(f"{source}:{i + 1}: expected 'seed <integer>', found {lines[i]!r}")
-            seed = int(rest)
+                raise LogError(f"{source}:{i + 1}: expected 'seed <integer>', found "
+                               f"{quote(lines[i])}")
+            seed = parse_int(rest, f"{source}:{i + 1}", SEED_MIN, SEED_MAX, LogError, "seed")
         else:
             break
         i += 1
     return LogSettings(edges, seed), i
+
+
+def check_seed(seed: int, name: str = "--seed") -> int:
+    """A seed the engine's kernels can take (an int64); the command line's ``--seed`` should
+    go through this too."""
+    if not SEED_MIN <= seed <= SEED_MAX:
+        raise LogError(f"{name}: {seed} is outside {SEED_MIN}..{SEED_MAX}")
+    return seed
 
 
 def parse_log_settings(text: str, source: str = "<log>") -> LogSettings:
@@ -250,8 +275,7 @@ def parse_log_settings(text: str, source: str = "<log>") -> LogSettings:
 
 
 def read_log_settings(path: str | os.PathLike) -> LogSettings:
-    with open(path, encoding="utf-8") as f:
-        return parse_log_settings(f.read(), os.fspath(path))
+    return parse_log_settings(_read(path), os.fspath(path))
 
 
 def parse_log(text: str, source: str = "<log>") -> list[Event]:
@@ -266,9 +290,15 @@ def parse_log(text: str, source: str = "<log>") -> list[Event]:
         parts = raw.split()
         if len(parts) < 2 or not re.fullmatch(r"[0-9]+", parts[0]):
             raise LogError(f"{source}:{i}: expected 'generation kind ...', found {raw!r}")
-        gen, kind, args = int(parts[0]), parts[1], parts[2:]
+        here = f"{source}:{i}"
+
+        def num(text: str, lo: int = -MAX_LOG_NUMBER - 1, hi: int = MAX_LOG_NUMBER,
+                here: str = here) -> int:
+            return parse_int(text, here, lo, hi, LogError)
+
+        gen, kind, args = num(parts[0], 0), parts[1], parts[2:]
         if kind not in _ARITY:
-            raise LogError(f"{source}:{i}: unknown event {kind!r}")
+            raise LogError(f"{source}:{i}: unknown event {quote(kind, 24)}")
         want = _ARITY[kind]
         if want is None:
             want = 1 if args[:1] == ["all"] else 4
@@ -276,34 +306,33 @@ def parse_log(text: str, source: str = "<log>") -> list[Event]:
             raise LogError(f"{source}:{i}: {kind} takes {want} fields, found {len(args)}")
         try:
             if kind == "rules":
-                n = int(args[1])
+                n = num(args[1])
                 body = lines[i:i + n]
                 if len(body) != n or not all(b.startswith("|") for b in body):
                     raise LogError(f"{source}:{i}: expected {n} rule lines starting with '|'")
                 i += n
                 events.append(Event(gen, kind, (args[0],), "\n".join(b[1:] for b in body)))
             elif kind in ("load", "erase"):
-                events.append(Event(gen, kind, (args[0], int(args[1]), int(args[2]), args[3]),
+                events.append(Event(gen, kind, (args[0], num(args[1]), num(args[2]), args[3]),
                                     args[4]))
             elif kind == "populate":
-                events.append(Event(gen, kind, (*(int(a) for a in args[:4]), args[4], args[5],
-                                                int(args[6]))))
+                events.append(Event(gen, kind, (*(num(a) for a in args[:4]), args[4], args[5],
+                                                num(args[6], SEED_MIN, SEED_MAX))))
             elif kind == "zoom":
                 events.append(Event(gen, kind, (args[0],)))
             elif kind in ("clear", "advance") and args == ["all"]:
                 events.append(Event(gen, kind, ("all",)))
             else:
-                events.append(Event(gen, kind, tuple(int(a) for a in args)))
+                events.append(Event(gen, kind, tuple(num(a) for a in args)))
         except ValueError as exc:
             if isinstance(exc, LogError):
                 raise
-            raise LogError(f"{source}:{i}: bad number in {raw!r}") from None
+            raise LogError(f"{source}:{i}: bad number in {quote(raw)}") from None
     return events
 
 
 def read_log(path: str | os.PathLike) -> list[Event]:
-    with open(path, encoding="utf-8") as f:
-        return parse_log(f.read(), os.fspath(path))
+    return parse_log(_read(path), os.fspath(path))
 
 
 class LogWriter:
@@ -364,6 +393,10 @@ def write_checkpoint(log_path: str, engine: Engine) -> str:
     return path
 
 
+# a cell of a checkpoint: plane coordinates and a life-form, as format_checkpoint writes them
+_CELL = re.compile(r"-?[0-9]{1,10} -?[0-9]{1,10} [0-9]{1,5}")
+
+
 def parse_checkpoint(text: str, source: str = "<checkpoint>") -> Engine:
     lines = text.splitlines()
 
@@ -375,26 +408,32 @@ def parse_checkpoint(text: str, source: str = "<checkpoint>") -> Engine:
     if not lines or lines[0] != CHECKPOINT_MAGIC:
         raise LogError(f"{source}:1: expected '{CHECKPOINT_MAGIC}'")
     try:
-        gen = int(field(1, "generation"))
+        gen = parse_int(field(1, "generation"), f"{source}:2", 0, MAX_LOG_NUMBER, LogError,
+                        "generation")
         edges = field(2, "edges")
         if edges not in EDGES:
             raise LogError(f"{source}:3: edges must be wrap or bounded")
-        seed = int(field(3, "seed"))
+        seed = parse_int(field(3, "seed"), f"{source}:4", SEED_MIN, SEED_MAX, LogError, "seed")
         area = _rect(tuple(field(4, "advance").split()))
-        n = int(field(5, "rules"))
+        n = parse_int(field(5, "rules"), f"{source}:6", 0, len(lines), LogError, "rule lines")
         body = lines[6:6 + n]
         if len(body) != n or not all(b.startswith("|") for b in body):
             raise LogError(f"{source}:7: expected {n} rule lines starting with '|'")
         rules_text = "\n".join(b[1:] for b in body)
         i = 6 + n
-        count = int(field(i, "cells"))
+        count = parse_int(field(i, "cells"), f"{source}:{i + 1}", 0, len(lines), LogError,
+                          "cell count")
         rows = lines[i + 1:i + 1 + count]
         if len(rows) != count or (lines[i + 1 + count:i + 2 + count] != ["end"]):
             raise LogError(f"{source}:{i + 2}: expected {count} cell lines then 'end'")
+        if not all(_CELL.fullmatch(r) for r in rows):
+            bad = next(k for k, r in enumerate(rows) if not _CELL.fullmatch(r))
+            raise LogError(f"{source}:{i + 2 + bad}: expected 'x y life-form', found "
+                           f"{quote(rows[bad])}")
         arr = np.array([r.split() for r in rows], np.int64).reshape(count, 3)
     except LogError:
         raise
-    except ValueError as exc:
+    except (ValueError, OverflowError) as exc:
         raise LogError(f"{source}: malformed checkpoint ({exc})") from None
     engine = Engine(parse_rules(rules_text, f"{source} rules") if rules_text.strip() else None,
                     edges, seed)
@@ -405,8 +444,7 @@ def parse_checkpoint(text: str, source: str = "<checkpoint>") -> Engine:
 
 
 def read_checkpoint(path: str | os.PathLike) -> Engine:
-    with open(path, encoding="utf-8") as f:
-        return parse_checkpoint(f.read(), os.fspath(path))
+    return parse_checkpoint(_read(path), os.fspath(path))
 
 
 def _checkpoints(log_path: str) -> list[tuple[int, str]]:

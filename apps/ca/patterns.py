@@ -108,11 +108,6 @@ class Pattern:
 
 # -- files ---------------------------------------------------------------------------------
 
-def write_atomic(path: str | os.PathLike, text: str) -> None:
-    """Write ``text`` so readers see the old file or the new one, never half of one."""
-    atomicfile.write_atomic(path, text)
-
-
 def format_of(path: str) -> str:
     low = path.lower()
     if low.endswith(".rle"):
@@ -145,7 +140,7 @@ def write_pattern(path: str | os.PathLike, pattern: Pattern) -> None:
     path = os.fspath(path)
     fmt = format_of(path)
     text = {"rle": format_rle, "cells": format_cells, "native": format_native}[fmt](pattern)
-    write_atomic(path, text)
+    atomicfile.write_atomic(path, text)
 
 
 # -- native --------------------------------------------------------------------------------

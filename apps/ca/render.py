@@ -38,10 +38,25 @@ def palette(rules: RuleSet | None, count: int) -> np.ndarray:
     return out
 
 
+MAX_PIXELS = 1 << 26  # 64 megapixels: 192 MB of RGB
+
+
+def check_size(rect: Rect, zoom: int) -> None:
+    """Refuse a picture too large to hold, before any work."""
+    pixels = rect.width * rect.height * zoom * zoom
+    if zoom < 1 or pixels > MAX_PIXELS:
+        raise ValueError(f"a {rect.width * zoom} x {rect.height * zoom} pixel picture "
+                         f"(zoom {zoom}) is more than {MAX_PIXELS} pixels; pick a smaller area "
+                         "or zoom")
+
+
 def render(engine: Engine, rect: Rect, zoom: int = 4, monochrome: bool = False,
            gaps: bool = True) -> np.ndarray:
     """(h, w, 3) image of ``rect``, each cell ``zoom`` pixels square, with a one-pixel gap
-    between cells at zoom >= 4 as on the thesis's screen."""
+    between cells at zoom >= 4 as on the thesis's screen. A picture over MAX_PIXELS raises
+    ValueError saying how big it would be (a soup spread over the 65536-cell plane at zoom
+    4 would be 68 billion pixels)."""
+    check_size(rect, zoom)
     xs, ys, ts = engine.cells_in_rect(rect)
     top = int(ts.max()) if ts.size else 0
     pal = palette(engine.rules, max(top, 1))

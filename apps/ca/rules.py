@@ -13,6 +13,8 @@ import re
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+from protocols.textinput import InputError, quote, read_text, where
+
 MAX_LIFEFORM = 65535  # cells hold a uint16-sized type; no small hard limit (thesis had 40)
 MAX_REACH = 32767  # half the 65536-cell plane: any further and messages meet themselves
 MASK32 = 0xFFFFFFFF
@@ -30,7 +32,7 @@ class RuleError(ValueError):
     """A rule file is malformed; the message names source, line, column and what was expected."""
 
     def __init__(self, source: str, line: int, column: int, message: str) -> None:
-        super().__init__(f"{source}:{line}:{column}: {message}")
+        super().__init__(f"{where(source, line or None, column or None)}: {message}")
         self.source = source
         self.line = line
         self.column = column
@@ -133,6 +135,9 @@ def tokenize(text: str) -> list[Token]:
 def parse_number(tok: Token, text: str, source: str, what: str = "a number") -> int:
     """Decimal, ``#X`` hexadecimal or ``#B`` binary, as the figures write them."""
     t = text.upper()
+    if len(t) > 40:  # 32 binary digits and the '#B'; longer is never a 32-bit number
+        raise RuleError(source, tok.line, tok.column,
+                        f"number {quote(tok.text, 24)} does not fit the 32-bit message area")
     try:
         if t.startswith("#X"):
             if not re.fullmatch(r"[0-9A-F]+", t[2:]):
@@ -391,5 +396,9 @@ def parse_rules(text: str, source: str = "<rules>") -> RuleSet:
 
 
 def load_rules(path: str) -> RuleSet:
-    with open(path, encoding="utf-8") as f:
-        return parse_rules(f.read(), source=str(path))
+    """A rule file; a directory, a bad byte or a bad rule raises RuleError naming where."""
+    try:
+        text = read_text(path)
+    except InputError as exc:
+        raise RuleError(str(path), exc.line, exc.column, exc.reason) from None
+    return parse_rules(text, source=str(path))

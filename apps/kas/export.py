@@ -6,14 +6,15 @@ Pictures come from the emulated Sigma (camlab88/commands/kas.py) or ``apps.kas.r
 from __future__ import annotations
 
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
-from apps.kas.files import atomic_write
 from apps.kas.model import AnimSequence, Drawing
 from apps.kas.raster import render
+from protocols.atomicfile import AtomicBatch, atomic_path
 
 Progress = Callable[[int, int], None]
 
@@ -46,12 +47,9 @@ def export(seq: AnimSequence, out: str | os.PathLike[str], width: int = 768,
             yield img
 
     if ext == ".png":
-        for i, img in enumerate(frames(), start=1):
-            target = out.with_name(f"{out.stem}_{i:04d}.png")
-            atomic_write(target, iio.imwrite("<bytes>", img, extension=".png"))
+        _png_sequence(out, frames(), iio)
         return out.with_name(f"{out.stem}_0001.png")
-    tmp = out.with_name(f".{out.stem}.partial{ext}")
-    try:
+    with atomic_path(out) as tmp:
         if ext == ".gif":
             stack = np.stack(list(frames()))
             iio.imwrite(tmp, stack, extension=".gif", duration=1000 / seq.fps, loop=0)
@@ -66,8 +64,18 @@ def export(seq: AnimSequence, out: str | os.PathLike[str], width: int = 768,
                 for img in frames():
                     h, w = img.shape[:2]
                     wr.append_data(img[: h - h % 2, : w - w % 2])
-        os.replace(tmp, out)
-    finally:
-        if tmp.exists():
-            tmp.unlink()
     return out
+
+
+def _png_sequence(out: Path, frames: Iterator[np.ndarray], iio: Any) -> None:
+    """out_0001.png ... as one whole: every frame is staged first and renamed in only when
+    all are written, then frames left from a longer earlier export are removed — so a
+    killed export never leaves old and new frames mixed."""
+    with AtomicBatch() as batch:
+        for i, img in enumerate(frames, start=1):
+            batch.add(out.with_name(f"{out.stem}_{i:04d}.png"),
+                      iio.imwrite("<bytes>", img, extension=".png"))
+    k = len(batch.staged) + 1
+    while (old := out.with_name(f"{out.stem}_{k:04d}.png")).exists():
+        old.unlink()
+        k += 1

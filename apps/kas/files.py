@@ -12,22 +12,27 @@ import os
 import re
 from collections.abc import Iterator
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 
 from apps.kas.model import AnimSequence, Chain, Drawing
 from protocols.atomicfile import write_atomic
+from protocols.textinput import InputError, parse_int, quote, read_text
 
 VERSION = 1
 KINDS = ("keyframe", "sequence", "path", "timing")
 
 
+MAX_FPS = 1000  # film runs at 24 or 25; no sequence means more than this
+
+
 class KasFileError(ValueError):
     """A bad KAS file; the message starts ``file:line:``."""
 
-    def __init__(self, path: str | os.PathLike[str], line: int, message: str) -> None:
-        super().__init__(f"{path}:{line}: {message}")
+    def __init__(self, path: str | os.PathLike[str], line: int, message: str,
+                 column: int = 0) -> None:
+        super().__init__(f"{path}:{line}:{column}: {message}" if column else
+                         f"{path}:{line}: {message}")
         self.path = str(path)
         self.line = line
 
@@ -127,25 +132,20 @@ def timing_text(t: Timing) -> str:
     return "\n".join([*lines, "end"]) + "\n"
 
 
-def atomic_write(path: str | os.PathLike[str], data: str | bytes) -> None:
-    """Write ``data`` so that ``path`` is either the old file or the whole new one."""
-    write_atomic(path, data)
-
-
 def save_keyframe(path: str | os.PathLike[str], d: Drawing) -> None:
-    atomic_write(path, keyframe_text(d))
+    write_atomic(path, keyframe_text(d))
 
 
 def save_sequence(path: str | os.PathLike[str], s: AnimSequence) -> None:
-    atomic_write(path, sequence_text(s))
+    write_atomic(path, sequence_text(s))
 
 
 def save_path(path: str | os.PathLike[str], p: SamplePath) -> None:
-    atomic_write(path, path_text(p))
+    write_atomic(path, path_text(p))
 
 
 def save_timing(path: str | os.PathLike[str], t: Timing) -> None:
-    atomic_write(path, timing_text(t))
+    write_atomic(path, timing_text(t))
 
 
 # ---------------------------------------------------------------- reading
@@ -208,6 +208,10 @@ class _Reader:
         no, rest = self.keyword(word)
         if len(rest) != 1 or not (rest[0].isascii() and rest[0].isdigit()):
             raise KasFileError(self.name, no, f"'{word}' needs one non-negative integer")
+        if len(rest[0]) > len(str(len(self.raw))) + 1 or int(rest[0]) > len(self.raw):
+            # every counted item takes at least a line: more than the file has is damage
+            raise KasFileError(self.name, no, f"'{word} {quote(rest[0], 24)}' counts more "
+                               f"than the file's {len(self.raw)} lines could hold")
         return int(rest[0])
 
     def number(self, word: str) -> float:
@@ -285,9 +289,9 @@ def _read_drawing(r: _Reader) -> Drawing:
         no, rest = r.keyword("chain")
         fields = dict(p.split("=", 1) for p in rest if "=" in p)
         try:
-            section = int(fields["section"])
-            npts = int(fields["points"])
-            if npts < 0 or len(fields) != len(rest):
+            section = parse_int(fields["section"], "", -(1 << 15), (1 << 15) - 1)
+            npts = parse_int(fields["points"], "", 0, len(r.raw))
+            if len(fields) != len(rest):
                 raise ValueError
         except (KeyError, ValueError):
             raise KasFileError(r.name, no, "expected 'chain section=S points=N'") from None
@@ -302,11 +306,12 @@ def _read_drawing(r: _Reader) -> Drawing:
 
 
 def _source(src: str | os.PathLike[str]) -> tuple[str, str]:
+    """The file's text; a directory, missing file or bad byte raises KasFileError (a bad
+    byte at its line and column)."""
     try:
-        return Path(src).read_text(encoding="utf-8"), str(src)
-    except UnicodeDecodeError as exc:
-        raise KasFileError(src, 1, f"not a text file ({exc.reason} at byte {exc.start})") \
-            from None
+        return read_text(src), str(src)
+    except InputError as exc:
+        raise KasFileError(src, exc.line or 1, exc.reason, exc.column) from None
 
 
 def parse_keyframe(text: str, name: str = "<keyframe>") -> Drawing:
@@ -322,8 +327,8 @@ def parse_sequence(text: str, name: str = "<sequence>") -> AnimSequence:
     _header(r, "sequence")
     fps_line = r.line_no()
     fps = r.number("fps")
-    if fps <= 0:
-        raise r.error("fps must be positive", fps_line)
+    if not 0 < fps <= MAX_FPS:
+        raise r.error(f"fps must be above 0 and at most {MAX_FPS}", fps_line)
     n = r.count("frames")
     frames = []
     for i in range(n):

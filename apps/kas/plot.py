@@ -15,8 +15,8 @@ from pathlib import Path
 
 import numpy as np
 
-from apps.kas.files import atomic_write
 from apps.kas.model import FIELD_H, FIELD_W, PALETTE, AnimSequence, Drawing
+from protocols.atomicfile import write_atomic
 
 # On paper the white pen (drawn on a black screen) becomes black ink.
 PAPER_RGB = {k: ((0, 0, 0) if k == 1 else rgb) for k, (_, rgb) in PALETTE.items()}
@@ -227,7 +227,7 @@ def plot_sequence(seq: AnimSequence, out_dir: str | os.PathLike[str], fmt: str,
     out.mkdir(parents=True, exist_ok=True)
     if fmt == "pdf":
         target = out / "sequence.pdf"
-        atomic_write(target, pdf(seq.frames, size))
+        write_atomic(target, pdf(seq.frames, size))
         if progress:
             progress(len(seq), len(seq))
         return [target]
@@ -237,7 +237,7 @@ def plot_sequence(seq: AnimSequence, out_dir: str | os.PathLike[str], fmt: str,
     written = []
     for i, frame in enumerate(seq.frames, start=1):
         target = out / f"frame_{i:04d}.{fmt}"
-        atomic_write(target, writer(frame, i, size))
+        write_atomic(target, writer(frame, i, size))
         written.append(target)
         if progress:
             progress(i, len(seq))

@@ -121,7 +121,7 @@ def test_log_errors_name_line(text: str, words: str) -> None:
 
 @pytest.mark.parametrize(("text", "words"), [
     ("nope", "expected 'CAMLAB88-CA-CHECKPOINT 1'"),
-    ("CAMLAB88-CA-CHECKPOINT 1\ngeneration x\n", "malformed"),
+    ("CAMLAB88-CA-CHECKPOINT 1\ngeneration x\n", "bad generation .x."),
     ("CAMLAB88-CA-CHECKPOINT 1\ngeneration 1\nedges round\n", "wrap or bounded"),
     ("CAMLAB88-CA-CHECKPOINT 1\ngeneration 1\nedges wrap\nseed 0\nadvance all\nrules 0\n"
      "cells 2\n1 1 1\nend\n", "expected 2 cell lines"),
