@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from apps.ca.hashlife import convert, evolve
-from apps.ca.hashlife.leaf import LeafRule, deterministic_reason, leaf_rule
+from apps.ca.hashlife.leaf import LeafRule, deterministic_reason, leaf_rule, order_matters
 from apps.ca.hashlife.plane import frame
 from apps.ca.hashlife.store import TOP_LEVEL, NodeStore
 from apps.ca.rules import RuleSet
@@ -25,6 +25,9 @@ from apps.ca.rules import RuleSet
 # generation): bigger leaves run more generations directly per memoised result.
 LEAF_EXTRA = 1
 DEFAULT_MEMORY = 512 << 20  # bytes of node table, as Golly's default "maximum memory"
+# Generations the direct engine takes at a time while order-dependent rules have live cells
+# at the wrapping plane's seam.
+SEAM_DIRECT_BATCH = 16
 
 Progress = Callable[[int, int], None]  # (generations done, generations asked)
 
@@ -65,6 +68,7 @@ class _Run:
     params: np.ndarray  # int64 (leaf level, s, reach)
     tables: tuple
     grids: np.ndarray
+    order_matters: bool
 
     @classmethod
     def of(cls, rules: RuleSet, memory: int) -> _Run:
@@ -78,7 +82,7 @@ class _Run:
                 rule.form))
             run = cls(NodeStore(limit_bytes=memory), rule,
                       np.array([leaf, rule.shift, max(rule.ry, rule.rx, 1)], np.int64),
-                      tables, np.zeros((3, side, side), np.int64))
+                      tables, np.zeros((3, side, side), np.int64), order_matters(rules))
             rules._tables["hashlife_run"] = run
         run.store.limit_bytes = int(memory)
         return run
@@ -102,16 +106,33 @@ class HashLife:
         if reason is not None:
             raise ValueError(f"HashLife cannot step this plane: {reason}")
         run = _Run.of(engine.rules, engine.hashlife_memory)
-        node = self._plane(engine, run)
+        seam = engine.edges == "wrap" and run.order_matters
         done, total = 0, int(generations)
         while done < total:
+            node = self._plane(engine, run)
             j = min(run.max_j, (total - done).bit_length() - 1)
-            node = self._jump(run, node, j, engine.edges)
-            done += 1 << j
-            engine.generation += 1 << j
-            engine.adopt_tree(Tree(run.store, run.store.epoch, node))
+            if seam:
+                j = self._seam_safe(run, node, j)
+            if j < 0:  # live cells at the seam, where the order of messages is absolute
+                n = min(SEAM_DIRECT_BATCH, total - done)
+                engine.step_direct(n)
+                done += n
+            else:
+                node = self._jump(run, node, j, engine.edges)
+                done += 1 << j
+                engine.generation += 1 << j
+                engine.adopt_tree(Tree(run.store, run.store.epoch, node))
             if progress is not None:
                 progress(done, total)
+
+    def _seam_safe(self, run: _Run, node: int, j: int) -> int:
+        """The longest jump, at most 2**j, in which no message can reach a cell within
+        the reach of the seam (-1: none can)."""
+        r = int(run.params[2])
+        while j >= 0 and convert.near_seam(node, r * ((1 << j) + 1), run.store.ch,
+                                           run.store.empty):
+            j -= 1
+        return j
 
     def _plane(self, engine, run: _Run) -> int:  # noqa: ANN001
         tree = engine.tree

@@ -92,5 +92,37 @@ def cells(node, ch, empty):
     return out[order]
 
 
+@njit(cache=True)
+def any_live(node, level, y0, x0, top, bottom, left, right, ch, empty):
+    """Whether ``node`` (its corner at y0, x0) has a live cell in rows top..bottom-1,
+    columns left..right-1."""
+    side = np.int64(1) << level
+    if (node == empty[level] or y0 >= bottom or y0 + side <= top or x0 >= right
+            or x0 + side <= left):
+        return False
+    if level == 0:
+        return 0 < node < WALL
+    h = side >> 1
+    k = level - 1
+    return (any_live(np.int64(ch[node, 0]), k, y0, x0, top, bottom, left, right, ch, empty)
+            or any_live(np.int64(ch[node, 1]), k, y0, x0 + h, top, bottom, left, right, ch,
+                        empty)
+            or any_live(np.int64(ch[node, 2]), k, y0 + h, x0, top, bottom, left, right, ch,
+                        empty)
+            or any_live(np.int64(ch[node, 3]), k, y0 + h, x0 + h, top, bottom, left, right,
+                        ch, empty))
+
+
+def near_seam(node: int, distance: int, ch: np.ndarray, empty: np.ndarray) -> bool:
+    """Whether the plane ``node`` has a live cell within ``distance`` of the wrapping
+    plane's seam (the first or last ``distance`` rows or columns)."""
+    side = 1 << PLANE_LEVEL
+    d = min(int(distance), side)
+    strips = ((0, d, 0, side), (side - d, side, 0, side), (0, side, 0, d),
+              (0, side, side - d, side))
+    return any(any_live(np.int64(node), np.int64(PLANE_LEVEL), np.int64(0), np.int64(0),
+                        *(np.int64(v) for v in strip), ch, empty) for strip in strips)
+
+
 def morton(xs: np.ndarray, ys: np.ndarray) -> np.ndarray:
     return _morton(np.ascontiguousarray(xs, np.int64), np.ascontiguousarray(ys, np.int64))

@@ -16,7 +16,7 @@ import numpy as np
 from numba import njit
 
 from apps.ca.hashlife.store import WALL
-from apps.ca.rules import RuleSet
+from apps.ca.rules import OP_ADD, OP_AND, OP_OR, OP_XOR, RuleSet
 from apps.ca.tables import LOOKUP_SIZE, compile_rules
 
 M32 = 0xFFFFFFFF
@@ -52,6 +52,32 @@ def deterministic_reason(rules: RuleSet) -> str | None:
     if any(len(it.outcome.choices) != 1 for it in rules.interpretations):
         return "the rules have probabilistic outcomes (section 8.1)"
     return None
+
+
+def order_matters(rules: RuleSet) -> bool:
+    """Whether the order in which a cell receives its messages can change its value.
+
+    One kind of operation is order-free (each is commutative and associative); additions
+    beside ORs or XORs are too while the largest sum the additions can make stays below
+    every bit those set (no carry meets them).  Otherwise the direct engine's order —
+    senders by absolute row and column — decides, and across the wrapping plane's seam that
+    order is not the order relative to the receiver, so HashLife (which knows no absolute
+    positions) keeps live cells away from the seam there (algorithm.py)."""
+    ops = {m.op for f in rules.forms.values() for m in f.messages}
+    if len(ops) <= 1:
+        return False
+    if OP_AND in ops or {OP_OR, OP_XOR} <= ops:
+        return True
+    per_offset: dict[tuple[int, int], int] = {}
+    bits = 0
+    for f in rules.forms.values():
+        for m in f.messages:
+            if m.op == OP_ADD:
+                per_offset[(m.dy, m.dx)] = max(per_offset.get((m.dy, m.dx), 0), m.value)
+            else:
+                bits |= m.value
+    most = sum(per_offset.values())
+    return bool(bits & ((1 << most.bit_length()) - 1))
 
 
 def leaf_rule(rules: RuleSet) -> LeafRule:

@@ -17,6 +17,7 @@ WALL = 65536  # level-0 value outside a bounded plane: never changes, sends noth
 LEAF_IDS = WALL + 1
 TOP_LEVEL = 17  # the 65536-square plane is level 16; stepping frames it in a level-17 node
 BYTES_PER_NODE = 4 * 4 + 1 + 4 + 1 + 2 * 4  # ch, lvl, res, resj, two hash slots
+MIN_CAPACITY = 1 << 17  # a power of two (so is the hash index, twice as long) > LEAF_IDS
 
 
 @njit(cache=True, inline="always")
@@ -111,7 +112,14 @@ class NodeStore:
     def __init__(self, capacity: int = 1 << 18, limit_bytes: int = 512 << 20) -> None:
         self.limit_bytes = int(limit_bytes)
         self.epoch = 0  # bumped by every collection: node ids of older epochs are void
-        self._allocate(max(LEAF_IDS + 1024, int(capacity)))
+        cap = MIN_CAPACITY
+        while 2 * cap <= capacity and 2 * cap * BYTES_PER_NODE <= self.limit_bytes:
+            cap *= 2
+        if cap * BYTES_PER_NODE > self.limit_bytes:
+            raise MemoryError(f"the HashLife memory limit ({self.limit_bytes >> 20} MB) is "
+                              f"below the smallest node table "
+                              f"({cap * BYTES_PER_NODE / 2**20:.1f} MB)")
+        self._allocate(cap)
         self.empty = self._tower(0)
         self.wall = self._tower(WALL)
 
@@ -120,7 +128,7 @@ class NodeStore:
         self.lvl = np.zeros(cap, np.int8)
         self.res = np.zeros(cap, np.int32)
         self.resj = np.full(cap, -1, np.int8)
-        hcap = 1 << (2 * cap - 1).bit_length()
+        hcap = 2 * cap  # load factor at most 1/2
         self.slots = np.full(hcap, -1, np.int32)
         self.meta = np.array([LEAF_IDS], np.int64)
 
