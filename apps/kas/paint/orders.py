@@ -1,0 +1,82 @@
+"""Frame plans as Sigma T5688 orders (thesis §3.3).
+
+Per frame, into one working area: the area cleared (a solid block of 0 on all planes); each
+step in front-to-back order: walls drawn on all planes in 0x80 (so they are the only pixels
+of that value), the firmware filler (``KK80``) started at every seed, stopping at them,
+writing the fill colour into the five fill planes only; the cover drawn in the fill colour;
+then the outlines into their two planes, chains coloured by ``line`` operations taken out
+of the outline planes, and the highlight plane cleared (``KW80 DA``).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from apps.kas.paint.autopaint import FramePlan, Step
+from apps.kas.paint.planes import ALL_PLANES, FILL_MASK, HIGHLIGHT, OUTLINE_MASK, OUTLINE_SHIFT
+from protocols.sigma import Encoder
+
+
+def poly(enc: Encoder, px: np.ndarray, origin: tuple[int, int]) -> bytes:
+    """A polyline in abbreviated mode (about half the characters, §3.1.4)."""
+    pts = [(int(x) + origin[0], int(y) + origin[1]) for x, y in px]
+    if len(pts) == 1:
+        pts = pts * 2  # a dot: a vector of length 0
+    return enc.abbreviated_polyline(pts)
+
+
+def clear_area(enc: Encoder, box: tuple[int, int, int, int]) -> bytes:
+    x0, y0, x1, y1 = box
+    return (enc.write_mask(ALL_PLANES) + enc.colour8(0) + enc.move(x0, y0)
+            + enc.block(x1, y1, solid=True))
+
+
+def clear_highlight(enc: Encoder) -> bytes:
+    """Clearing the highlight plane removes every highlight; nothing is redrawn (§3.3)."""
+    return enc.write_mask(HIGHLIGHT) + enc.erase()
+
+
+def step_bytes(enc: Encoder, s: Step, origin: tuple[int, int]) -> bytes:
+    out = bytearray()
+    if s.walls:
+        out += enc.write_mask(ALL_PLANES) + enc.colour8(HIGHLIGHT)
+        for w in s.walls:
+            out += poly(enc, w, origin)
+        out += enc.write_mask(FILL_MASK) + enc.colour8(s.colour)
+        for x, y in s.seeds:
+            out += enc.move(x + origin[0], y + origin[1]) + enc.fill8(HIGHLIGHT)
+    if s.cover:
+        out += enc.write_mask(FILL_MASK) + enc.colour8(s.colour)
+        for c in s.cover:
+            out += poly(enc, c, origin)
+    if s.clear:
+        out += clear_highlight(enc)
+    return bytes(out)
+
+
+def outline_bytes(enc: Encoder, runs: list[tuple[int, np.ndarray]], steps: list[Step],
+                  origin: tuple[int, int]) -> bytes:
+    out = bytearray(enc.write_mask(OUTLINE_MASK))
+    last = -1
+    for slot, px in runs:
+        if slot != last:
+            out += enc.colour8(slot << OUTLINE_SHIFT)
+            last = slot
+        out += poly(enc, px, origin)
+    unline = [u for s in steps for u in s.unline]
+    if unline:
+        out += enc.colour8(0)
+        for u in unline:
+            out += poly(enc, u, origin)
+    return bytes(out)
+
+
+def frame_bytes(enc: Encoder, plan: FramePlan, runs: list[tuple[int, np.ndarray]],
+                box: tuple[int, int, int, int]) -> bytes:
+    """One whole painted frame into the area ``box``."""
+    origin = (box[0], box[1])
+    out = bytearray(clear_area(enc, box))
+    for s in plan.steps:
+        out += step_bytes(enc, s, origin)
+    out += outline_bytes(enc, runs, plan.steps, origin)
+    return bytes(out + clear_highlight(enc) + enc.write_mask(ALL_PLANES))

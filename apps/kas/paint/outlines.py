@@ -1,0 +1,59 @@
+"""The four outline colours (thesis §3.3: "two of the remaining three planes were used to
+hold the (four colour) outlines produced by earlier stages of KAS"): slot 0 is no outline,
+slots 1-3 the three pens the sequence uses most, other pens the nearest of those (as the
+line test's two-plane buffers do, §3.1.4).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from apps.kas.model import PALETTE, AnimSequence, Drawing
+from apps.kas.paint import areas
+from apps.kas.paint.planes import RGB
+
+
+@dataclass(frozen=True)
+class OutlinePlan:
+    slot_of_pen: dict[int, int]
+    rgb: tuple[RGB, RGB, RGB, RGB]  # slot 0 (unused: no outline) .. 3
+
+    def slot(self, pen: int) -> int:
+        return self.slot_of_pen.get(pen, 1)
+
+
+def plan(seq: AnimSequence) -> OutlinePlan:
+    counts: dict[int, int] = {}
+    for f in seq.frames:
+        for c in f.chains:
+            for pen, n in zip(*np.unique(c.colours, return_counts=True), strict=True):
+                counts[int(pen)] = counts.get(int(pen), 0) + int(n)
+    top = sorted(counts, key=lambda p: (-counts[p], p))[:3] or [1]
+    rgb_of = {p: np.array(PALETTE.get(p, ("", (255, 255, 255)))[1]) for p in counts | {1: 0}}
+    slots = {p: i + 1 for i, p in enumerate(top)}
+    for p in counts:
+        if p not in slots:
+            slots[p] = 1 + int(np.argmin([np.abs(rgb_of[p] - rgb_of[q]).sum() for q in top]))
+    rgb = [(0, 0, 0)] + [tuple(int(v) for v in rgb_of[p]) for p in top]
+    while len(rgb) < 4:
+        rgb.append(rgb[-1])
+    return OutlinePlan(slots, tuple(rgb))  # type: ignore[arg-type]
+
+
+def runs(frame: Drawing, outline: OutlinePlan) -> list[tuple[int, np.ndarray]]:
+    """(slot, area pixels) polylines: each chain cut where its segments change slot (a
+    point's colour is that of the segment drawn to it, §3.1.1)."""
+    out = []
+    for c in frame.chains:
+        px = areas.to_px(c.points)
+        slots = np.array([outline.slot(int(p)) for p in c.colours])
+        if len(px) == 1:
+            out.append((int(slots[0]), px))
+            continue
+        seg = slots[1:]
+        cut = np.flatnonzero(np.diff(seg)) + 1
+        for a, b in zip(np.r_[0, cut], np.r_[cut, len(seg)], strict=True):
+            out.append((int(seg[a]), areas.dedup(px[a:b + 1])))
+    return out
