@@ -5,7 +5,7 @@ from __future__ import annotations
 from abc import ABC, abstractmethod
 
 from protocols.tablets.events import DeviceReply, TabletEvent, TabletModel
-from protocols.tablets.framing import ParmrkFilter, ParseStats
+from protocols.tablets.framing import ParmrkFilter, ParseStats, SyncFramer
 
 
 class ProtocolError(ValueError):
@@ -61,6 +61,26 @@ class TabletParser(ABC):
 
     @abstractmethod
     def _byte(self, byte: int, ok: bool, timestamp: float) -> TabletEvent | None: ...
+
+
+class SyncFramedParser(TabletParser):
+    """A binary format whose packets start at a byte with the sync bit set (Calcomp,
+    Summagraphics): the framing is shared, ``decode`` turns one whole packet into an event
+    (or None for a packet that is not a report)."""
+
+    def _use_framer(self, packet_size: int) -> None:
+        self._framer = SyncFramer(packet_size)
+        self.stats = self._framer.stats
+
+    def _byte(self, byte: int, ok: bool, timestamp: float) -> TabletEvent | None:
+        if not ok:  # a parity error spoils the packet it falls in
+            self._framer.reset()
+            return None
+        packet = self._framer.push(byte)
+        return None if packet is None else self.decode(packet, timestamp)
+
+    @abstractmethod
+    def decode(self, p: bytes, timestamp: float = 0.0) -> TabletEvent | None: ...
 
 
 class TabletEncoder(ABC):

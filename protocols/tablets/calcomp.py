@@ -7,9 +7,13 @@ byte 3 bit 6; code: 0x20, set = out); ``prox_bit`` chooses, default the code's 0
 
 from __future__ import annotations
 
-from protocols.tablets.base import ProtocolError, TabletEncoder, TabletParser, clamp_check
+from protocols.tablets.base import (
+    ProtocolError,
+    SyncFramedParser,
+    TabletEncoder,
+    clamp_check,
+)
 from protocols.tablets.events import TabletEvent, TabletModel
-from protocols.tablets.framing import SyncFramer
 
 NAME = "calcomp"
 # DrawingBoard 23120: 0 .. 11999 on both axes (the captured right edge), 1000 lpi (ESC%JR1000,0).
@@ -18,7 +22,7 @@ DEFAULT_MODEL = TabletModel("CalComp DrawingBoard 23120", 11999, 11999, 1000.0, 
 FIRMWARE_ID = b"CALCOMP DRAWINGBOARD EMULATION\r"  # reconstructed
 
 
-class CalcompParser(TabletParser):
+class CalcompParser(SyncFramedParser):
     name = NAME
     checks_range = True
 
@@ -35,15 +39,7 @@ class CalcompParser(TabletParser):
             raise ProtocolError(f"prox_bit must be 0, 0x20 or 0x40, not {prox_bit:#x}")
         self.prox_bit = prox_bit
         self.tool = tool
-        self._framer = SyncFramer(6)
-        self.stats = self._framer.stats
-
-    def _byte(self, byte: int, ok: bool, timestamp: float) -> TabletEvent | None:
-        if not ok:
-            self._framer.reset()
-            return None
-        packet = self._framer.push(byte)
-        return None if packet is None else self.decode(packet, timestamp)
+        self._use_framer(6)
 
     def decode(self, p: bytes, timestamp: float = 0.0) -> TabletEvent:
         buttons = (p[0] & 0x3C) >> 2  # 0x04 button 0 ... 0x20 button 3

@@ -12,6 +12,10 @@ from dataclasses import dataclass, field
 
 MAIN_INPUT, MAIN_OUTPUT, MAIN_COLLECTION, MAIN_FEATURE, MAIN_END = 8, 9, 10, 11, 12
 KINDS = {MAIN_INPUT: "input", MAIN_OUTPUT: "output", MAIN_FEATURE: "feature"}
+# Linux hid-core's limits: a descriptor beyond them is refused by the kernel too, and a
+# Report Count of 0x7fffffff would otherwise mean a 2-billion-entry usage table
+MAX_REPORT_COUNT = 12288  # HID_MAX_USAGES
+MAX_REPORT_BITS = 16384 * 8  # HID_MAX_BUFFER_SIZE bytes
 FLAG_CONSTANT, FLAG_VARIABLE, FLAG_RELATIVE = 0x01, 0x02, 0x04
 VENDOR_WACOM_PAGE = 0xFF0D
 
@@ -188,6 +192,9 @@ def parse_descriptor(data: bytes, source: str = "<descriptor>") -> ReportDescrip
                     g.unit, g.unit_exponent, tuple(collections), at,
                 ))
                 offsets[key] = offset + g.report_size * g.report_count
+                if offsets[key] > MAX_REPORT_BITS:
+                    raise fail(at, f"{kind_name} report {g.report_id} is over "
+                                   f"{MAX_REPORT_BITS // 8} bytes (hid-core's buffer)")
             elif tag == MAIN_COLLECTION:
                 first = resolve(*usages[0]) if usages else 0
                 collections.append(first)
@@ -224,6 +231,9 @@ def parse_descriptor(data: bytes, source: str = "<descriptor>") -> ReportDescrip
                 g.report_id = value
                 desc.uses_report_ids = True
             elif tag == 9:
+                if value > MAX_REPORT_COUNT:
+                    raise fail(at, f"Report Count {value} > {MAX_REPORT_COUNT} (hid-core's "
+                                   "HID_MAX_USAGES)")
                 g.report_count = value
             elif tag == 10:
                 stack.append(g.copy())

@@ -19,6 +19,7 @@ from protocols.tablets.sources import SourceLost, SourceSpec, TabletSource
 REPLY_TIMEOUT = 1.0  # the kernel waits HZ for a Wacom reply (a PenPartner sends no CR)
 FLUSH_QUIET = 0.05  # s of silence that ends a flush
 FLUSH_LIMIT = 1.0  # a flush never waits longer than this
+WRITE_TIMEOUT = 2.0  # a port that will not take a few command bytes in this long is dead
 SIZE_SETTLE = 0.1  # after a size reply, s to watch for more reports (a streaming tablet)
 MIN_SIZE = 100  # a "maximum coordinate" below this is not a tablet's size
 # A tablet streaming in proximity sends a report at least every few tens of ms; this long a
@@ -64,7 +65,7 @@ class SerialSource(TabletSource):
             self.port = serial.serial_for_url(
                 spec.target, baudrate=baud, bytesize=bytesize, parity=_PARITY[parity],
                 stopbits=stopbits, xonxoff=self.line.xonxoff, rtscts=self.line.rtscts,
-                timeout=0, do_not_open=False,
+                timeout=0, write_timeout=WRITE_TIMEOUT, do_not_open=False,
             )
         except (serial.SerialException, OSError, ValueError) as exc:
             raise SourceLost(f"{spec.text}: cannot open {spec.target}: {exc}") from exc
@@ -188,6 +189,10 @@ class SerialSource(TabletSource):
     def _write(self, data: bytes) -> None:
         try:
             self.port.write(data)
+        except serial.SerialTimeoutException:
+            # held by CTS or XOFF that never comes back: no tablet is listening
+            raise SourceLost(f"{self.name}: the port took no bytes for {WRITE_TIMEOUT:g} s "
+                             "(is a tablet connected and switched on?)") from None
         except (serial.SerialException, OSError) as exc:
             raise SourceLost(f"{self.name}: write failed: {exc}") from exc
 

@@ -9,9 +9,13 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from protocols.tablets.base import ProtocolError, TabletEncoder, TabletParser, clamp_check
+from protocols.tablets.base import (
+    ProtocolError,
+    SyncFramedParser,
+    TabletEncoder,
+    clamp_check,
+)
 from protocols.tablets.events import TabletEvent, TabletModel
-from protocols.tablets.framing import SyncFramer
 
 NAME = "summa-mm"
 # SummaSketch 12x12 in MM mode at the default 500 lpi letter ``h`` (facts §2.1).  The start-up
@@ -48,7 +52,7 @@ def _field_from_buttons(buttons: int, encoding: str) -> int:
     return buttons.bit_length()
 
 
-class SummaParser(TabletParser):
+class SummaParser(SyncFramedParser):
     name = NAME
     checks_range = True
 
@@ -67,15 +71,7 @@ class SummaParser(TabletParser):
         self.button_encoding = buttons
         self.tool = tool
         self.flair = flair
-        self._framer = SyncFramer(7 if flair else 5)
-        self.stats = self._framer.stats
-
-    def _byte(self, byte: int, ok: bool, timestamp: float) -> TabletEvent | None:
-        if not ok:
-            self._framer.reset()
-            return None
-        packet = self._framer.push(byte)
-        return None if packet is None else self.decode(packet, timestamp)
+        self._use_framer(7 if flair else 5)
 
     def decode(self, p: bytes, timestamp: float = 0.0) -> TabletEvent | None:
         if p[0] & SIGN_BITS != SIGN_BITS:  # not an absolute report: noise that looked like sync
