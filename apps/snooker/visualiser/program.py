@@ -1,0 +1,117 @@
+"""The visualiser program (thesis §6.3.2): plays a view file over the balls' motion at
+25 frames/s on the Rainbow, steps and scrubs.
+
+Keys: space play/pause; right/left one frame; page down/page up 25 frames; home/end the
+first/last frame; escape or q quits.  Dragging with the left button scrubs: the pointer's
+x across the screen is the frame.  Talks to the device only through the pad library.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+from apps.snooker.camera.motion import Motion
+from apps.snooker.camera.views import View
+from apps.snooker.visualiser.display import ViewDisplay
+from protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
+from protocols.rainbow.events import LEFT, KeyEvent, MouseEvent
+
+LUT_PAGE = 1
+DEVICE_FRAMES_PER_FRAME = 2  # 25 frames/s on the 50 Hz display
+
+
+class ViewsError(ValueError):
+    pass
+
+
+def check_views(views: Sequence[View], motion: Motion) -> None:
+    if not views:
+        raise ViewsError("the view file has no frames")
+    last = views[-1].frame
+    if last > motion.n_frames:
+        raise ViewsError(f"the view file goes to frame {last} but the motion has only "
+                         f"{motion.n_frames} frames")
+
+
+class Visualiser:
+    def __init__(self, client: RainbowClient, motion: Motion, views: Sequence[View]) -> None:
+        check_views(views, motion)
+        self.client = client
+        self.motion = motion
+        self.views = list(views)
+        self.cameras = [v.camera() for v in self.views]
+        self.display = ViewDisplay(client, SCREEN, 0, 0, SCREEN_W, SCREEN_H, LUT_PAGE)
+        self.index = 0  # into self.views
+        self.drawn: int | None = None
+        self.playing = True
+        self.done = False
+        self.dragging = False
+
+    @property
+    def frame(self) -> int:
+        return self.views[self.index].frame
+
+    def draw(self) -> bool:
+        """Draw the current frame if it is not the one on show; True if drawn."""
+        if self.drawn == self.index:
+            return False
+        f = self.frame
+        self.display.show(self.cameras[self.index], self.motion.table,
+                          self.motion.centres[f - 1], self.motion.on_table[f - 1])
+        self.drawn = self.index
+        return True
+
+    def step(self, on_shown: Callable[[int], None] | None = None) -> None:
+        """One frame of the program: input, draw, two device frames, advance if playing."""
+        for e in self.client.poll_events():
+            self.handle(e)
+        drawn = self.draw()
+        for k in range(DEVICE_FRAMES_PER_FRAME):
+            self.client.wait_frame()
+            if k == 0 and drawn and on_shown is not None:
+                on_shown(self.frame)
+        if self.playing and self.index < len(self.views) - 1:
+            self.index += 1
+
+    def play_through(self, on_shown: Callable[[int], None] | None = None) -> int:
+        """Every frame once, in order (headless, or writing frames); returns the count."""
+        self.index, self.playing = 0, True
+        shown = 0
+        while not self.done:
+            last = self.index == len(self.views) - 1
+            self.step(on_shown)
+            shown += 1
+            if last:
+                break
+        return shown
+
+    # -- input ---------------------------------------------------------------------------
+    def handle(self, e: object) -> None:
+        if isinstance(e, KeyEvent) and e.pressed:
+            self.key(e.key)
+        elif isinstance(e, MouseEvent):
+            if e.button == 1:
+                self.dragging = e.pressed
+            if self.dragging or (e.buttons & LEFT):
+                self.scrub_to(e.x)
+
+    def key(self, key: str) -> None:
+        n = len(self.views)
+        moves = {"right": 1, "left": -1, "page_down": 25, "page_up": -25}
+        if key == "space":
+            self.playing = not self.playing
+            if self.playing and self.index == n - 1:
+                self.index = 0
+        elif key in moves:
+            self.playing = False
+            self.index = max(0, min(n - 1, self.index + moves[key]))
+        elif key in ("home", "end"):
+            self.playing = False
+            self.index = 0 if key == "home" else n - 1
+        elif key in ("escape", "q"):
+            self.done = True
+
+    def scrub_to(self, x: int) -> None:
+        self.playing = False
+        n = len(self.views)
+        self.index = max(0, min(n - 1, x * n // SCREEN_W))
