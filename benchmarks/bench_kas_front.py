@@ -10,9 +10,9 @@ from pathlib import Path
 
 from apps.kas import demo
 from apps.kas.editor import Editor
-from apps.kas.front import EditorFront, LineTest, Session, parse_timed_script
-from apps.kas.front.draw import encode
-from apps.kas.front.viewer import VIEW_CLIP, chain_prims, frame_points_px
+from apps.kas.program import EditorFront, LineTest, Session, parse_timed_script
+from apps.kas.program.draw import encode
+from apps.kas.program.viewer import VIEW_CLIP, chain_prims, frame_points_px
 from emulator.sigma import Terminal
 from protocols.sigma import Encoder
 

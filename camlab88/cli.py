@@ -1,13 +1,16 @@
 """The one console script: ``camlab88 <subcommand> ...``.
 
-Each area registers its own subcommands from ``camlab88.commands.<area>`` so that the
-areas stay independent; a module here only parses arguments and wires a program to a
-device, and imports heavy packages inside its handlers so ``--help`` stays fast.
+Each area registers its own actions from ``camlab88.commands.<area>`` (a package whose
+``ACTIONS`` tuple names one module per action, see camlab88.areas) so that the areas stay
+independent; a command module only parses arguments and wires a program to a device through
+the harness (emulator.harness), and imports heavy packages inside its handler so ``--help``
+stays fast.
 """
 
 from __future__ import annotations
 
 import argparse
+import difflib
 import importlib
 import sys
 from collections.abc import Sequence
@@ -24,21 +27,48 @@ COMMAND_MODULES: tuple[str, ...] = (
     "kas",
     "snooker",
     "ca",
+    "replay",
 )
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse, with "did you mean" for a misspelt subcommand or action."""
+
+    def error(self, message: str) -> None:  # type: ignore[override]
+        if "invalid choice:" in message:
+            message += _suggestion(message)
+        super().error(message)
+
+
+def _suggestion(message: str) -> str:
+    import re
+
+    m = re.search(r"invalid choice: '([^']*)' \(choose from (.*)\)", message)
+    if m is None:
+        return ""
+    choices = re.findall(r"'([^']*)'", m[2]) or [c.strip() for c in m[2].split(",")]
+    close = difflib.get_close_matches(m[1], choices, n=1, cutoff=0.6)
+    return f"; did you mean {close[0]!r}?" if close else ""
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="camlab88",
         description="Working models of the Sigma T5684/T5688 terminals and the Cambridge "
         "Rainbow workstation, and the 1987 animation programs that ran on them.",
     )
     parser.add_argument("--version", action="version", version=f"camlab88 {__version__}")
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
-    sub.required = True
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     for module in _command_modules():
         module.register(sub)
+    parser.set_defaults(handler=lambda args: _bare(parser))
     return parser
+
+
+def _bare(parser: argparse.ArgumentParser) -> int:
+    """Bare ``camlab88``: the help, not an error."""
+    parser.print_help()
+    return 0
 
 
 def _command_modules() -> list:
@@ -58,7 +88,9 @@ def normalise_argv(argv: Sequence[str]) -> list[str]:
 
 def main(argv: Sequence[str] | None = None) -> int:
     parser = build_parser()
-    args = parser.parse_args(normalise_argv(sys.argv[1:] if argv is None else argv))
+    words = normalise_argv(sys.argv[1:] if argv is None else argv)
+    args = parser.parse_args(words)
+    args._argv = words  # what a --record recording stores and a replay re-runs
     try:
         result = args.handler(args)
     except KeyboardInterrupt:

@@ -17,7 +17,7 @@ def _png(path: Path) -> np.ndarray:
 
 
 def test_kas_act_is_the_kas_session_played_over_the_line(tmp_path: Path) -> None:
-    from apps.kas.front import demo_session
+    from apps.kas.program import demo_session
     from emulator.sigma import Terminal
 
     assert main(["demo", "--headless", "--only", "kas", "--out", str(tmp_path)]) == 0

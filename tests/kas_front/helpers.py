@@ -6,7 +6,7 @@ from pathlib import Path
 
 from apps.kas.editor import Editor
 from apps.kas.events import Key, Pointer
-from apps.kas.front import EditorFront, Session, parse_timed_script
+from apps.kas.program import EditorFront, Session, parse_timed_script
 from emulator.sigma import Terminal
 
 DATA = Path(__file__).parent.parent / "data" / "kas_front"

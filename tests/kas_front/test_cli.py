@@ -59,7 +59,7 @@ def test_view_headless_counts_and_frames(tmp_path, capsys) -> None:  # noqa: ANN
     n_fast = int(fast.split(": ")[1].split()[0])
     assert n_slow < n_fast
     # the characters reported are those really sent: dropped frames never go down the line
-    from apps.kas.front.viewer import LineTest
+    from apps.kas.program.viewer import LineTest
 
     test = LineTest(files.load_sequence(seq))
     rep = test.run("realtime", 9600)

@@ -8,8 +8,8 @@ import pytest
 
 from apps.kas.editor import Editor
 from apps.kas.files import KasFileError
-from apps.kas.front import EditorFront, Session, parse_timed_script
-from apps.kas.front.keyboard import KEY_BYTES, bytes_to_keys, key_to_bytes
+from apps.kas.program import EditorFront, Session, parse_timed_script
+from apps.kas.program.keyboard import KEY_BYTES, bytes_to_keys, key_to_bytes
 from emulator.sigma import Terminal
 from tests.kas_front.helpers import DATA, GOLDEN, model_only, run_editor
 from tests.support.golden import assert_matches_golden

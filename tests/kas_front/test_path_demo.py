@@ -6,7 +6,7 @@ import numpy as np
 
 from apps.kas import files
 from apps.kas.events import Key, Pointer
-from apps.kas.front import PathFront, Session, demo_session
+from apps.kas.program import PathFront, Session, demo_session
 from apps.kas.library import LIBRARY
 from apps.kas.path_editor import PathEditor
 from emulator.sigma import Terminal

@@ -7,7 +7,7 @@ import pytest
 
 from apps.kas import demo
 from apps.kas import viewer_schedule as vs
-from apps.kas.front.viewer import LineTest, draw_frame, four_colours, setup, swap
+from apps.kas.program.viewer import LineTest, draw_frame, four_colours, setup, swap
 from emulator.sigma import Terminal
 
 

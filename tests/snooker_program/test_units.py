@@ -38,13 +38,16 @@ def test_script_buttons_accumulate():
 
 
 @pytest.mark.parametrize("text, msg", [
-    ("move 1", "s.txt:1: move wants two integers"),
-    ("\n\npress thumb", "s.txt:3: unknown button 'thumb'"),
-    ("wait x", "s.txt:1: wait wants a frame count"),
-    ("wait -1", "s.txt:1: wait -1 is outside"),
-    ("jump 3", "s.txt:1: unknown command 'jump'"),
-    ("glide 1 2 0", "s.txt:1: glide steps 0 outside"),
-    ("key", "s.txt:1: key wants one key name"),
+    ("move 1", "s.txt:1:6: move wants 2 numbers"),
+    ("\n\npress thumb", "s.txt:3:7: press needs a button: left, middle or right"),
+    ("wait x", "s.txt:1:6: expected a whole number, found 'x'"),
+    ("wait -1", "s.txt:1:6: value -1 is outside 0..1000000"),
+    ("jump 3", "s.txt:1:1: unknown command 'jump'"),
+    ("glide 1 2 0", "s.txt:1:11: number of steps 0 is outside 1..10000"),
+    ("key", "s.txt:1:1: key wants one key name"),
+    ("move 2147483648 0", "s.txt:1:6: coordinate 2147483648 is outside -32768..32767"),
+    ("drag left 0 0 9 9 99999", "s.txt:1:19: number of steps 99999 is outside 1..10000"),
+    ("wait 600000\nwait 600000", "s.txt:2:6: the script runs 1200000 frames, more than"),
 ])
 def test_script_errors_name_file_and_line(text, msg):
     with pytest.raises(script_events.ScriptError, match=msg):
@@ -54,7 +57,7 @@ def test_script_errors_name_file_and_line(text, msg):
 def test_script_file_errors(tmp_path):
     p = tmp_path / "bad.events"
     p.write_bytes(b"move 1 2\n\xff\n")
-    with pytest.raises(script_events.ScriptError, match="bad.events: byte offset 9"):
+    with pytest.raises(script_events.ScriptError, match="bad.events:2:1: not UTF-8"):
         script_events.load(p)
     with pytest.raises(script_events.ScriptError, match="cannot read"):
         script_events.load(tmp_path / "missing")

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 import os
+from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
@@ -672,6 +673,13 @@ class Program:
     # ------------------------------------------------------------------ replaying a file
     def play_positions(self, frames: list[np.ndarray], on_table: list[np.ndarray]) -> None:
         """Show the given frames at 25 frames/s (used by ``snooker replay``)."""
+        for _ in self.position_steps(frames, on_table):
+            pass
+
+    def position_steps(self, frames: list[np.ndarray],
+                       on_table: list[np.ndarray]) -> Iterator[int]:
+        """``play_positions`` one position at a time (two 50 Hz display frames each), for a
+        run loop that ticks: yields the index of each position shown."""
         d = self.display
         d.help.show(f"Replaying {len(frames)} frames at 25 frames/s.", HELP_COLOUR)
         d.info.show("checkpoint replay", HELP_COLOUR)
@@ -680,3 +688,4 @@ class Program:
             d.frame_box.show(f"frame {n}", "#ffffff")
             for _ in range(2):  # 25 frames/s on a 50 Hz display
                 self.client.wait_frame()
+            yield n

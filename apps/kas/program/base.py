@@ -1,0 +1,92 @@
+"""What every KAS front shares: Sigma set-up, the stylus cursor, incremental updates.
+
+A front is driven by a ``Session`` (apps.kas.program.script) or a window loop: ``start()``
+gives the set-up bytes, ``pointer()`` takes input-layer events, ``keys()`` the bytes the
+terminal's keyboard sent up the line, and ``update()`` the bytes that bring the screen up
+to date (the caller sends them when the line has drained, so updates coalesce).
+"""
+
+from __future__ import annotations
+
+from apps.kas.program import layout as L
+from apps.kas.program.draw import Painter, Prim
+from apps.kas.program.keyboard import bytes_to_keys
+from protocols.sigma import Encoder
+from protocols.tablets.input_layer import PointerEvent
+
+
+def setup_bytes(enc: Encoder, lut: list[tuple[int, int, int]], cursor: bool = True) -> bytes:
+    """Into graphics mode, reset, graphics only, all planes, the LUT, the stylus cursor."""
+    out = bytearray(b"\r" + enc.flag() + enc.reset() + enc.flag_anywhere())
+    out += enc.sequence_length(0) + enc.graphics_on() + enc.alpha_off()
+    out += enc.write_mask(0x0F) + enc.display_mask(0x0F) + enc.line_solid()
+    for i, (r, g, b) in enumerate(lut):
+        out += enc.lut(i, r, g, b)
+    if cursor:
+        # the stylus cursor is the terminal's own cross, attached to the pen: parking the
+        # pen at the stylus moves it without touching the planes
+        out += enc.cursor_shape(2) + enc.cursor_attach() + enc.cursor_on()
+    else:
+        out += enc.cursor_off()
+    return bytes(out)
+
+
+class Front:
+    """Base of the editor and path fronts: subclasses give ``prims()`` and handle input."""
+
+    def __init__(self, background: str = "black") -> None:
+        self.enc = Encoder()
+        self.painter = Painter(self.enc)
+        self.lut = L.lut_plan(background)
+        self.background = background
+        self.stylus_px: tuple[int, int] = (round(L.CENTRE_X), round(L.CENTRE_Y))
+        self._parked: tuple[int, int] | None = None
+        self.done = False
+        self.notices: list[str] = []
+
+    # -- to be provided --------------------------------------------------------------------
+    def prims(self) -> list[Prim]:
+        raise NotImplementedError
+
+    def on_pointer(self, x: float, y: float, down: bool) -> None:
+        """Stylus in screen field inches."""
+        raise NotImplementedError
+
+    def on_key(self, key: str) -> None:
+        raise NotImplementedError
+
+    def may_close(self) -> bool:
+        """The window's close button: True to close now (the editor refuses once while it
+        holds unsaved edits)."""
+        return True
+
+    # -- driving ---------------------------------------------------------------------------
+    def start(self) -> bytes:
+        out = setup_bytes(self.enc, self.lut) + self.painter.full(self.prims())
+        return out + self._park()
+
+    def pointer(self, events: list[PointerEvent]) -> None:
+        for ev in events:
+            fx, fy = L.tablet_to_field(ev.x, ev.y)
+            sx, sy = L.field_to_px(fx, fy)
+            self.stylus_px = (min(max(round(sx), 0), L.SCREEN_W - 1),
+                              min(max(round(sy), 0), L.SCREEN_H - 1))
+            self.on_pointer(fx, fy, ev.down)
+
+    def keys(self, data: bytes) -> None:
+        for k in bytes_to_keys(data):
+            self.on_key(k)
+
+    def update(self) -> bytes:
+        out = self.painter.update(self.prims())
+        if out or self._parked != self.stylus_px:
+            out += self._park()
+        return out
+
+    def redraw(self) -> bytes:
+        """Everything again from scratch (for comparison with the incremental screen)."""
+        return self.painter.full(self.prims()) + self._park()
+
+    def _park(self) -> bytes:
+        self._parked = self.stylus_px
+        return self.enc.move(*self.stylus_px)

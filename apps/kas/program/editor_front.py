@@ -1,0 +1,38 @@
+"""The keyframe editor on the Sigma (§3.1.1): ``apps.kas.editor.Editor`` behind a screen.
+
+Stylus events become ``Pointer`` events in screen field inches (a touch in the menu row picks
+a menu item, as the model already knows); keyboard bytes become ``Key`` events; F2 saves
+through ``on_save``.  The display is redrawn incrementally (apps.kas.program.draw).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from apps.kas.editor import Editor
+from apps.kas.events import Key, Pointer
+from apps.kas.model import Drawing
+from apps.kas.program.base import Front
+from apps.kas.program.draw import Prim
+from apps.kas.program.screen import editor_prims
+
+
+class EditorFront(Front):
+    def __init__(self, editor: Editor | None = None, background: str = "black",
+                 on_save: Callable[[Drawing], None] | None = None) -> None:
+        super().__init__(background)
+        self.editor = editor if editor is not None else Editor()
+        if on_save is not None:
+            self.editor.on_save = on_save
+
+    def prims(self) -> list[Prim]:
+        return editor_prims(self.editor)
+
+    def on_pointer(self, x: float, y: float, down: bool) -> None:
+        self.editor.feed(Pointer(x, y, down))
+
+    def on_key(self, key: str) -> None:
+        self.editor.feed(Key(key))
+
+    def may_close(self) -> bool:
+        return self.editor.request_quit()

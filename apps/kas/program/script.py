@@ -1,0 +1,240 @@
+"""Headless event scripts and the session that runs a front against a terminal over a line.
+
+Script format (UTF-8 text, one event a line, ``#`` starts a comment)::
+
+    [TIME] VERB ARGS
+
+TIME is line time in seconds: ``2.5`` (absolute) or ``+0.1`` (after the previous event);
+without it an event comes 0.02 s after the previous one.  Times never go back.  VERBs:
+
+    move X Y     stylus moves, lifted        (X Y in screen field inches: centre origin,
+    down X Y     stylus down (touch or drag)  y up; the menu row is above the field,
+    up X Y       stylus lifted                y 4.525..5.125)
+    menu ITEM    touch the centre of a menu box and lift (two stylus events)
+    key K        a key on the terminal's keyboard: a character or a name
+                 (space return backspace escape tab up down left right f2)
+    type TEXT    one key per character (a space types "space")
+    wait         nothing; only moves time on (e.g. ``5.0 wait`` lets the screen catch up)
+
+Stylus events go through the tablet input layer exactly as a window's mouse does (a
+position on the 768 x 512 screen), keys are struck on the emulated terminal and travel up the
+serial line to the program; the program's drawing orders travel down it.  So a script
+exercises the whole byte path, on the line's virtual clock.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Any, Protocol
+
+from apps.kas.files import KasFileError
+from apps.kas.program import layout as L
+from apps.kas.program.base import Front
+from apps.kas.program.keyboard import key_to_bytes
+from protocols.link import LineSettings, SerialLine, VirtualClock
+from protocols.tablets.input_layer import InputLayer, MouseSample
+
+DEFAULT_STEP = Fraction(1, 50)
+TICK = Fraction(1, 100)  # the session's polling period: line time between input polls
+MAX_TIME = 10**6  # seconds: a script time beyond this is a typing error
+
+
+@dataclass(frozen=True)
+class TimedEvent:
+    t: Fraction
+    kind: str               # "pointer" | "key" | "wait"
+    x: float = 0.0
+    y: float = 0.0
+    down: bool = False
+    key: str = ""
+
+
+def _time(tok: str, prev: Fraction) -> Fraction:
+    rel = tok.startswith("+")
+    v = Fraction(tok[1:] if rel else tok)
+    if not 0 <= v <= MAX_TIME:
+        raise ValueError
+    return prev + v if rel else v
+
+
+def parse_timed_script(text: str, name: str = "<script>") -> list[TimedEvent]:
+    """Events of a script (format above); a bad line raises KasFileError naming the line."""
+    from apps.kas.editor import menu_layout
+
+    boxes = {item: ((x0 + x1) / 2, (y0 + y1) / 2) for item, x0, y0, x1, y1 in menu_layout()}
+    out: list[TimedEvent] = []
+    prev = Fraction(0)
+    for no, raw in enumerate(text.splitlines(), start=1):
+        line = raw.split("#", 1)[0].strip()
+        if not line:
+            continue
+        words = line.split(None, 1)
+        try:
+            t = prev + DEFAULT_STEP if out else prev
+            first = words[0]
+            if first[0] in "+0123456789.":
+                t = _time(first, prev)
+                words = words[1].split(None, 1) if len(words) > 1 else []
+                if not words:
+                    raise ValueError
+            if t < prev:
+                raise KasFileError(name, no, f"time {float(t):g} s goes back (previous "
+                                   f"{float(prev):g} s)")
+            verb, rest = words[0], (words[1].strip() if len(words) > 1 else "")
+            if verb in ("move", "down", "up"):
+                xs, ys = rest.split()
+                x, y = float(xs), float(ys)
+                if not (math.isfinite(x) and math.isfinite(y)):
+                    raise ValueError
+                out.append(TimedEvent(t, "pointer", x, y, verb == "down"))
+            elif verb == "menu" and rest:
+                if rest not in boxes:
+                    raise KasFileError(name, no, f"no menu item {rest!r}")
+                x, y = boxes[rest]
+                out.append(TimedEvent(t, "pointer", x, y, True))
+                t += DEFAULT_STEP
+                out.append(TimedEvent(t, "pointer", x, y, False))
+            elif verb == "key" and rest:
+                key_to_bytes(rest)
+                out.append(TimedEvent(t, "key", key=rest))
+            elif verb == "type" and rest:
+                for i, ch in enumerate(rest):
+                    out.append(TimedEvent(t + i * DEFAULT_STEP, "key",
+                                          key="space" if ch == " " else ch))
+                    key_to_bytes(out[-1].key)
+                t += (len(rest) - 1) * DEFAULT_STEP
+            elif verb == "wait" and not rest:
+                out.append(TimedEvent(t, "wait"))
+            else:
+                raise ValueError
+        except KasFileError:
+            raise
+        except (ValueError, ZeroDivisionError, IndexError, OverflowError) as exc:
+            detail = str(exc) if str(exc).startswith("no Sigma key") else (
+                f"bad event {line!r} (expected [TIME] move/down/up X Y, menu ITEM, key K, "
+                "type TEXT or wait)")
+            raise KasFileError(name, no, detail) from None
+        prev = t
+    return out
+
+
+class TerminalLike(Protocol):
+    on_output: Callable[[bytes], Any] | None
+
+    def feed(self, data: bytes) -> None: ...
+    def key(self, char: str) -> None: ...
+
+
+class PointerSource(Protocol):
+    def poll(self, mouse: Iterable[MouseSample] = ()) -> list: ...
+
+
+class Session:
+    """A front and a terminal joined by a ``SerialLine`` on a virtual clock.
+
+    Every ``TICK`` of line time: stylus samples go through the input layer to the front, key
+    bytes that have arrived up the line go to the front, and if the line has drained the
+    front's update is sent; bytes that have arrived at the terminal are fed to it.
+    """
+
+    def __init__(self, front: Front, terminal: TerminalLike,
+                 settings: LineSettings | None = None, pointer: PointerSource | None = None,
+                 recorder: Any = None) -> None:
+        self.front = front
+        self.terminal = terminal
+        self.clock = VirtualClock()
+        self.line = SerialLine(settings or LineSettings(), self.clock, recorder=recorder)
+        terminal.on_output = self.line.device.write
+        self.pointer_source = pointer or InputLayer(L.TABLET_AREA, None)
+        self.sent: list[tuple[Fraction, bytes]] = []
+        self.updates = 0
+        self._dirty = True
+        self._started = False
+
+    @property
+    def now(self) -> Fraction:
+        return self.clock.exact
+
+    def send(self, data: bytes) -> None:
+        if data:
+            self.sent.append((self.clock.exact, data))
+            self.line.host.write(data)
+
+    def begin(self) -> None:
+        if not self._started:
+            self._started = True
+            self.send(self.front.start())
+            self._dirty = False
+
+    def strike(self, key: str) -> None:
+        """A key struck on the terminal's keyboard."""
+        self.terminal.key(key_to_bytes(key).decode("latin-1"))
+
+    def step(self, mouse: Iterable[MouseSample] = (), keys: Iterable[str] = ()) -> None:
+        """One poll: input in, screen update out, terminal fed; then TICK of line time."""
+        self.begin()
+        for k in keys:
+            self.strike(k)
+        events = self.pointer_source.poll(list(mouse))
+        if events:
+            self.front.pointer(events)
+            self._dirty = True
+        data = self.line.host.read()
+        if data:
+            self.front.keys(data)
+            self._dirty = True
+        if self._dirty and self.line.host.drain_time_exact() <= self.clock.exact:
+            self.send(self.front.update())
+            self.updates += 1
+            self._dirty = False
+        self.terminal.feed(self.line.device.read())
+        self.clock.advance(TICK)
+
+    def due(self, events: list[TimedEvent], i: int) -> tuple[list[MouseSample], list[str], int]:
+        """Script events from index ``i`` that are due now, as mouse samples and keys."""
+        mouse: list[MouseSample] = []
+        keys: list[str] = []
+        while i < len(events) and events[i].t <= self.clock.exact:
+            ev = events[i]
+            if ev.kind == "pointer":
+                mx, my = L.field_to_mouse(ev.x, ev.y)
+                mouse.append(MouseSample(mx, my, 1 if ev.down else 0, (L.SCREEN_W, L.SCREEN_H)))
+            elif ev.kind == "key":
+                keys.append(ev.key)
+            i += 1
+        return mouse, keys, i
+
+    def run_script(self, events: list[TimedEvent], settle: bool = True) -> None:
+        self.begin()
+        i = 0
+        while i < len(events):
+            mouse, keys, i = self.due(events, i)
+            self.step(mouse, keys)
+        if settle:
+            self.settle()
+
+    def busy(self) -> bool:
+        return bool(self._dirty or self.line.host.in_flight() or self.line.device.in_flight())
+
+    def settle(self, limit: float = 3600.0) -> None:
+        """Run until the screen is up to date and the line is quiet."""
+        self.begin()
+        end = self.clock.exact + Fraction(limit)
+        while self.busy():
+            if self.clock.exact > end:
+                raise RuntimeError(f"the session did not settle within {limit} s of line time")
+            self.step()
+
+
+def load_timed_script(path: Any) -> list[TimedEvent]:
+    """Read and parse a script file; an unreadable or non-UTF-8 file names the file."""
+    from pathlib import Path
+
+    try:
+        text = Path(path).read_bytes().decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise KasFileError(str(path), 1, f"not UTF-8 text (byte {exc.start})") from None
+    return parse_timed_script(text, str(path))

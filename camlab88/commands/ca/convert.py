@@ -1,0 +1,28 @@
+"""``camlab88 ca convert``: a pattern converted between native, RLE and .cells."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    p = actions.add_parser("convert", help="convert a pattern between native, RLE and .cells",
+                          description="Read a pattern and write it in the format given by the "
+                          "output file's extension (.rle, .cells, anything else native).")
+    p.add_argument("source", help="pattern file or library name")
+    p.add_argument("dest", help="output file")
+    p.set_defaults(handler=_convert)
+
+
+def _convert(args: argparse.Namespace) -> int:
+    from apps.ca import library
+    from apps.ca.patterns import PatternError, read_pattern, write_pattern
+
+    try:
+        write_pattern(args.dest, read_pattern(library.pattern_path(args.source)))
+    except (FileNotFoundError, PatternError, ValueError) as exc:
+        print(f"camlab88 ca convert: {exc}", file=sys.stderr)
+        return 2
+    print(f"wrote {args.dest}")
+    return 0

@@ -1,0 +1,18 @@
+"""``camlab88 ca library``: the shipped rule sets and patterns."""
+
+from __future__ import annotations
+
+import argparse
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    p = actions.add_parser("library", help="list the shipped rule sets and patterns")
+    p.set_defaults(handler=_library)
+
+
+def _library(args: argparse.Namespace) -> int:
+    from apps.ca import library
+
+    for kind, items in library.names().items():
+        print(f"{kind}: {' '.join(items)}")
+    return 0

@@ -1,0 +1,105 @@
+"""``camlab88 ca program``: the interactive cellular automaton on the emulated Rainbow."""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+from camlab88.runopts import add_run_options, fail, run_options
+
+COMMAND = "camlab88 ca program"
+KEYS = ("left button pans; middle: menus; right: edit / step; Finish (menu) or close the "
+        "window to quit")
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    p = actions.add_parser(
+        "program", help="the interactive program on the emulated Rainbow (sections 7.3.1-2)",
+        description="The interactive cellular automaton on the emulated Rainbow: mouse "
+        "(left button pans, middle button menus, right button edits / steps) and keyboard. "
+        "Log, RecordPansAndZooms, Checkpoint, Script and ReplayPansAndZooms as in section "
+        "7.3.1. Headless it needs --events (the run ends with the script) or --stop-after N. "
+        "A --screenshot run writes no log and no checkpoint.")
+    p.add_argument("--rules", default="life", help="rule file or library name (life)")
+    p.add_argument("--pattern", help="pattern loaded at the centre of the view")
+    p.add_argument("--log", metavar="L", help="Log: record every intervention in file L")
+    p.add_argument("--record-pans", action="store_true",
+                   help="RecordPansAndZooms: the log also records pans and zooms")
+    p.add_argument("--checkpoint", type=int, default=0, metavar="N",
+                   help="Checkpoint: write L<generation> every N generations")
+    p.add_argument("--script", metavar="S", help="Script: replay the log S")
+    p.add_argument("--replay-pans", action="store_true",
+                   help="ReplayPansAndZooms: also repeat the script's pans and zooms")
+    p.add_argument("--start", type=int, metavar="G",
+                   help="begin the script at generation G (asked for if omitted)")
+    p.add_argument("--edges", choices=("wrap", "bounded"),
+                   help="plane edges (default wrap; a script's log header decides)")
+    p.add_argument("--seed", type=int,
+                   help="seed of random outcomes (default 0; a script's log header decides)")
+    p.add_argument("--events", metavar="FILE",
+                   help="scripted mouse/keyboard input (the Rainbow script format, "
+                   "docs/harness.md)")
+    add_run_options(p)
+    p.add_argument("--json", action="store_true", help="print the final statistics as JSON")
+    p.set_defaults(handler=program)
+
+
+def program(args: argparse.Namespace) -> int:
+    from apps.ca.log import LogError
+    from apps.ca.patterns import PatternError
+    from apps.ca.rules import RuleError
+    from protocols.rainbow.script import Player, ScriptError, load
+
+    try:
+        player = Player(load(args.events)) if args.events else None
+        useful = "playing the --events script" if player else (
+            "for --stop-after frames" if args.stop_after else None)
+        opts = run_options(args, COMMAND, useful, "give --headless with --events FILE",
+                           getattr(args, "_argv", None))
+        if opts.headless and player is None and opts.stop_after is None:
+            opts.stop_after = 100
+        stats = _run(_options(args, preview=opts.screenshot is not None), player, opts)
+    except (OSError, LogError, RuleError, PatternError, ScriptError, ValueError) as exc:
+        return fail(COMMAND, exc)
+    _print_stats(stats, args.json)
+    return 0
+
+
+def _options(args: argparse.Namespace, preview: bool):  # noqa: ANN202
+    """The program's options; a screenshot (preview) run keeps no log and no checkpoints,
+    so it never rewrites the user's files."""
+    from apps.ca.program.program import Options
+
+    return Options(rules=args.rules, pattern=args.pattern,
+                   log=None if preview else args.log, record_pans=args.record_pans,
+                   checkpoint=0 if preview else max(0, args.checkpoint), script=args.script,
+                   replay_pans=args.replay_pans, start=args.start, edges=args.edges,
+                   seed=args.seed)
+
+
+def _run(options, player, opts) -> dict:  # noqa: ANN001
+    from apps.ca.program.program import CAProgram
+    from emulator.harness import run
+    from emulator.harness.rainbow import RainbowTarget
+    from emulator.rainbow.session import in_process
+
+    session = in_process(record=opts.record is not None)
+    prog = CAProgram(session.client, options)
+
+    def step() -> bool:
+        prog.frame()
+        return not prog.finished
+
+    end_with_script = opts.headless or opts.screenshot is not None
+    run(RainbowTarget(session, step, "camlab88 ca", KEYS, player, end_with_script), opts)
+    return prog.session.statistics()
+
+
+def _print_stats(stats: dict, as_json: bool) -> None:
+    if as_json:
+        print(json.dumps(stats, sort_keys=True))
+        return
+    box = stats["bbox"]
+    kinds = ", ".join(f"{k}: {v}" for k, v in stats["by_type"].items()) or "none"
+    print(f"generation {stats['generation']}  population {stats['population']}  "
+          f"by type {{{kinds}}}  bbox {'empty' if box is None else tuple(box)}")

@@ -1,0 +1,46 @@
+"""``camlab88 demo``: the main job — the emulated devices running the thesis's programs.
+
+The acts (camlab88.commands.demo.acts.ACTS, one registry entry each) play one after another
+on the harness: in a window if there is a display (Space: next act; Esc or close: quit),
+else headless, writing every frame as PNG and one animated GIF per act.
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from camlab88.commands.demo.acts import ACTS, Act
+from protocols.sigma.demo import sigma_demo_stream, sigma_picture_stream
+
+__all__ = ["ACTS", "Act", "register", "sigma_demo_stream", "sigma_picture_stream"]
+
+
+def _description() -> str:
+    lines = "; ".join(f"{i}. {a.name}: {a.about}" for i, a in enumerate(ACTS, 1))
+    return ("Play the demo: the emulated devices running the thesis's programs, at 25 frames "
+            f"a second of device time. The acts: {lines}. With a display it opens a window "
+            "(Space: next act, Esc: quit); with none, or --headless, it writes every frame as "
+            "PNG and one animated GIF per act into --out.")
+
+
+def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    p = subparsers.add_parser("demo", help="play the demo session (all acts)",
+                              description=_description())
+    p.add_argument("--headless", action="store_true", help="no window, write files")
+    p.add_argument("--out", type=Path, default=Path("camlab88-demo"),
+                   help="output directory when headless (default ./camlab88-demo)")
+    p.add_argument("--scale", type=int, default=1, help="window scale")
+    p.add_argument("--screenshot", type=Path,
+                   help="play unpaced, save the last screen of the last act and exit")
+    p.add_argument("--fast", action="store_true", help="do not pace to the wall clock")
+    p.add_argument("--only", action="append", choices=[a.name for a in ACTS], metavar="ACT",
+                   help="play only this act (repeatable): " + ", ".join(a.name for a in ACTS))
+    p.set_defaults(handler=demo)
+
+
+def demo(args: argparse.Namespace) -> int:
+    from camlab88.commands.demo.play import play_acts
+
+    acts = [a for a in ACTS if not args.only or a.name in args.only]
+    return play_acts(acts, args)

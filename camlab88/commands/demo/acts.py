@@ -1,0 +1,98 @@
+"""The demo's acts: a registry, one entry an act.  Each act's ``frames`` names a function
+(``module:function``, imported when the act plays) yielding (h, w, 3) uint8 frames at 25 a
+second of device time, made by a program talking to an emulated device."""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Any
+
+FPS = 25
+
+
+@dataclass(frozen=True)
+class Act:
+    name: str
+    title: str
+    size: tuple[int, int]   # device pixels (w, h)
+    frames: str             # "module:function" yielding the act's frames
+    about: str              # one line for --help
+
+    def play(self) -> Iterator[Any]:
+        module, func = self.frames.rsplit(":", 1)
+        make: Callable[[], Iterator[Any]] = getattr(importlib.import_module(module), func)
+        return make()
+
+
+_HERE = "camlab88.commands.demo.acts"
+ACTS: tuple[Act, ...] = (
+    Act("sigma", "Sigma T5684 on a 9600-baud line", (768, 512), f"{_HERE}:sigma_frames",
+        "a host session over the line: vectors, dash masks, ellipses, fill, LUT animation, "
+        "double buffering (§3.1.4)"),
+    Act("kas", "KAS keyframe editor and line test on the T5684", (768, 512),
+        f"{_HERE}:kas_frames", "KAS's editor drawing a stroke, then a line test of 'a line "
+        "taking a walk'"),
+    Act("snooker", "snooker motion development on the Rainbow", (768, 576),
+        f"{_HERE}:snooker_frames", "a break simulated and replayed at 25 frames a second"),
+    Act("ca", "the programmable cellular automaton on the Rainbow", (768, 576),
+        f"{_HERE}:ca_frames", "Life's Gosper gun in auto mode, panned and zoomed by scripted "
+        "mouse input"),
+)
+
+
+def sigma_frames() -> Iterator[Any]:
+    """The Sigma showcase: the screen after each 1/25 s of line time at 9600 baud."""
+    from emulator.sigma import Terminal
+    from protocols.link import LineSettings, chunks_by_period
+    from protocols.sigma.demo import sigma_demo_stream
+
+    term = Terminal("t5684")
+    for _k, chunk in chunks_by_period(sigma_demo_stream(), LineSettings(baud=9600),
+                                      Fraction(1, FPS)):
+        term.feed(chunk)
+        yield term.frame()
+
+
+def kas_frames() -> Iterator[Any]:
+    """KAS on the T5684: the host's chunks written to a 9600-baud line at their times."""
+    from apps.kas.program import demo_session
+    from emulator.sigma import Terminal
+
+    term = Terminal("t5684")
+    for _k, data in demo_session().arrivals(Fraction(1, FPS)):
+        term.feed(data)
+        yield term.frame()
+
+
+def snooker_frames() -> Iterator[Any]:
+    """The snooker program's replay on the Rainbow: a break simulated and shown (ball pads
+    double-buffered over the table pad by LUT transparency)."""
+    from apps.snooker.program.demo import play_break
+    from emulator.rainbow.session import in_process
+
+    frames: list[Any] = []
+    play_break(in_process(on_frame=lambda f: frames.append(f.copy())).client, 4.0)
+    yield from frames
+
+
+def ca_frames() -> Iterator[Any]:
+    """The cellular automaton on the Rainbow: the Gosper gun in auto mode, panned and zoomed,
+    driven by the program's own scripted mouse events."""
+    from apps.ca.program.demo import demo_events
+    from apps.ca.program.program import CAProgram, Options
+    from apps.ca.program.script_events import parse, play
+    from emulator.rainbow.session import in_process
+
+    session = in_process()
+    program = CAProgram(session.client, Options(rules="life", pattern="gosper_gun"))
+    frames: list[Any] = []
+
+    def frame() -> None:
+        program.frame()
+        frames.append(session.executor.last_frame.copy())
+
+    play(parse(demo_events(60), "<ca demo>"), session.inject, frame, lambda: program.finished)
+    yield from frames

@@ -1,0 +1,70 @@
+"""``camlab88 kas ...``: the keyframe animation suite of thesis chapter 3.
+
+The model programs (in-betweener, superimposer, plotter, exporter, schedule, the editor
+model on a script) and the programs on the emulated Sigma T5684 (``edit``, ``path``,
+``view``, run by the harness over a 9600-baud line).  File names may be library names.
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from camlab88.areas import register_area
+
+HELP = "KAS, the keyframe animation suite (chapter 3)"
+ACTIONS = ("inbetween", "superimpose", "plot", "export", "schedule", "edit_script",
+           "path_script", "edit", "path", "view", "demo", "library")
+
+
+def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    register_area(subparsers, __name__, "kas", HELP, ACTIONS,
+                  "KAS: keyframe editor model, in-betweener, superimposer, viewer schedule "
+                  "and hard copy (thesis ch. 3). File names may be library names (see "
+                  "'kas library').")
+
+
+def front_options(p: argparse.ArgumentParser) -> None:
+    """The options of the programs on the Sigma (``kas edit``, ``kas path``)."""
+    from camlab88.runopts import add_run_options
+
+    p.add_argument("--script", type=Path, help="event script (docs/kas.md; times optional)")
+    p.add_argument("--tablet", metavar="SOURCE", help="tablet source (see 'camlab88 tablet'); "
+                   "default: the mouse")
+    p.add_argument("--background", choices=("black", "white"), default="black")
+    p.add_argument("--baud", type=int, default=9600)
+    add_run_options(p, stop_after=False)
+
+
+def run_front(front, args: argparse.Namespace, command: str, keys: str):  # noqa: ANN001, ANN201
+    """Run a KAS program on an emulated T5684 over the line, on the harness: from a script
+    and/or a window.  Returns the program's session (protocols side)."""
+    from apps.kas.program.keyboard import KEY_BYTES
+    from apps.kas.program.layout import TABLET_AREA
+    from apps.kas.program.script import Session, load_timed_script
+    from camlab88.runopts import run_options
+    from emulator.harness import run
+    from emulator.harness.sigma import SigmaProgramTarget
+    from emulator.sigma import Terminal
+    from emulator.tablet.pointer_input import TabletInput
+    from protocols.link import LineSettings
+
+    events = load_timed_script(args.script) if args.script is not None else []
+    useful = "playing the --script" if args.script is not None else None
+    opts = run_options(args, command, useful, "give --headless with --script FILE",
+                       getattr(args, "_argv", None))
+    if opts.record is not None and args.tablet:
+        raise ValueError("--record cannot record a --tablet's reports; record with the mouse")
+    notices: list[str] = []
+    tablet = TabletInput(args.tablet, area=TABLET_AREA, notify=notices.append)
+    session = Session(front, Terminal("t5684"), LineSettings(baud=args.baud), pointer=tablet)
+    end = opts.headless or opts.screenshot is not None
+    target = SigmaProgramTarget(session, f"{command} - Sigma T5684", keys,
+                                frozenset(KEY_BYTES), events, end)
+    try:
+        run(target, opts)
+    finally:
+        tablet.close()
+        for n in notices:
+            print(f"{command}: {n}")
+    return session

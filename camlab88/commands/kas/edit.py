@@ -1,0 +1,72 @@
+"""``camlab88 kas edit FILE``: the keyframe editor on the emulated Sigma T5684."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from camlab88.commands.kas import front_options
+from camlab88.runopts import fail
+
+COMMAND = "camlab88 kas edit"
+KEYS = "F2 saves; Esc/close quits (asks if unsaved); the mouse is the stylus"
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    p = actions.add_parser("edit", help="the keyframe editor on the emulated Sigma T5684",
+                           description="Edit keyframe FILE (created, empty, if missing) on an "
+                           "emulated Sigma T5684 over a 9600-baud line: the stylus is the "
+                           "tablet (--tablet SOURCE) or the mouse, keys are typed on the "
+                           "terminal. F2 saves. --script runs an event script (docs/kas.md); "
+                           "--headless needs one. A --screenshot run saves nothing but the PNG.")
+    p.add_argument("file")
+    front_options(p)
+    p.add_argument("--over", help="previous keyframe to draw over (§2.3 guide)")
+    p.add_argument("--seed", type=int, default=0, help="de-regularise random seed")
+    p.set_defaults(handler=edit)
+
+
+def edit(args: argparse.Namespace) -> int:
+    from apps.kas import files, library
+    from apps.kas.editor import Editor
+    from apps.kas.program import EditorFront
+
+    target = Path(args.file)
+    preview = args.screenshot is not None  # a screenshot run never touches the user's files
+    saved: list[int] = []
+    try:
+        if not target.exists() and not preview:
+            files.save_keyframe(target, Editor(None, None, args.seed).drawing)
+            print(f"{COMMAND}: created {target} (an empty keyframe)")
+        start = files.load_keyframe(target) if target.exists() else None
+        over = files.load_drawing_or_frame(library.resolve(args.over)) if args.over else None
+
+        def save(drawing) -> None:  # noqa: ANN001
+            if not preview:
+                files.save_keyframe(target, drawing)
+                saved.append(len(drawing.chains))
+            front.editor.message = f"saved {target.name}" if not preview else "(preview)"
+
+        front = EditorFront(Editor(start, over, args.seed), args.background, save)
+        session = _run(front, args)
+    except (OSError, ValueError) as exc:
+        return fail(COMMAND, exc)
+    _report(front.editor, session, target, saved)
+    return 0
+
+
+def _run(front, args: argparse.Namespace):  # noqa: ANN001, ANN202
+    from camlab88.commands.kas import run_front
+
+    return run_front(front, args, COMMAND, KEYS)
+
+
+def _report(ed, session, target: Path, saved: list[int]) -> None:  # noqa: ANN001
+    if not saved:
+        state = "NOT saved (F2 saves)" if ed.dirty else "nothing to save"
+    elif ed.dirty:
+        state = f"saved {target} earlier, but the last edits are NOT saved"
+    else:
+        state = f"saved {target}"
+    print(f"kas edit: {len(ed.drawing.chains)} chains, {ed.drawing.n_points} points; {state}; "
+          f"{session.line.stats['host_to_device_bytes']} characters to the Sigma")

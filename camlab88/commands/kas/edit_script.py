@@ -1,0 +1,39 @@
+"""``camlab88 kas edit-script``: the keyframe editor model on an event script, headless."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from camlab88.runopts import fail
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    p = actions.add_parser("edit-script", help="run the keyframe editor model on an event script",
+                        description="Headless: feed the editor model the events of SCRIPT "
+                        "(move/down/up X Y, key K, menu ITEM, type TEXT) and save the keyframe.")
+    p.add_argument("script")
+    p.add_argument("--start", help="keyframe to start from (default empty)")
+    p.add_argument("--over", help="previous keyframe to draw over (§2.3 guide)")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--out", required=True)
+    p.set_defaults(handler=_edit_script)
+
+
+def _edit_script(args: argparse.Namespace) -> int:
+    from apps.kas import files, library
+    from apps.kas.editor import Editor
+    from apps.kas.events import parse_script
+
+    try:
+        start = files.load_keyframe(library.resolve(args.start)) if args.start else None
+        over = files.load_drawing_or_frame(library.resolve(args.over)) if args.over else None
+        events = parse_script(Path(args.script).read_text(encoding="utf-8"), args.script)
+        ed = Editor(start, over, args.seed)
+        ed.run(events)
+        files.save_keyframe(args.out, ed.drawing)
+    except (OSError, ValueError) as exc:
+        return fail("camlab88 kas edit-script", exc)
+    print(f"{args.out}: {len(ed.drawing.chains)} chains, {ed.drawing.n_points} points"
+          + (f"; {ed.message}" if ed.message else ""))
+    return 0

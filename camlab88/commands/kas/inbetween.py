@@ -1,0 +1,74 @@
+"""``camlab88 kas inbetween``: in-between keyframes into a sequence."""
+
+from __future__ import annotations
+
+import argparse
+
+from camlab88.runopts import fail
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    p = actions.add_parser("inbetween", help="in-between keyframes into a sequence",
+                        description="Frames from keyframe A to B (both included) along a "
+                        "sample path, placed by a timing (tick marks or a curve); with more "
+                        "than two keyframes a spline goes through them all.")
+    p.add_argument("keys", nargs="+", metavar="KEY", help="two or more keyframe files")
+    p.add_argument("--path", help="sample path file (two keyframes only)")
+    p.add_argument("--timing", help="timing file (ticks or curve) or a built-in curve name: "
+                    "linear, ease-in, ease-out, ease-in-out, overshoot")
+    p.add_argument("--frames", type=int, help="frames per pair of keyframes, both included")
+    p.add_argument("--missing", default="copy-nearest",
+                    choices=("copy-nearest", "grow", "stay"),
+                    help="what chains missing from a keyframe do (default copy-nearest)")
+    p.add_argument("--fit", default="stretch", choices=("stretch", "similarity"),
+                    help="how the path is fitted to each point pair (default stretch)")
+    p.add_argument("--method", default="catmull-rom",
+                    choices=("linear", "overhauser", "catmull-rom", "kochanek-bartels"),
+                    help="spline through three or more keyframes (default catmull-rom)")
+    p.add_argument("--tension", type=float, default=0.0)
+    p.add_argument("--continuity", type=float, default=0.0)
+    p.add_argument("--bias", type=float, default=0.0)
+    p.add_argument("--keep-redundant", action="store_true",
+                    help="keep collinear points instead of dropping them")
+    p.add_argument("--fps", type=float, default=25.0)
+    p.add_argument("--out", required=True, help="sequence file to write")
+    p.set_defaults(handler=_inbetween)
+
+
+def _timing(name: str | None):
+    from apps.kas import files, library, timing
+
+    if name is None:
+        return None
+    path = library.resolve(name)
+    if not path.exists() and name in timing.BUILTIN:
+        return timing.curve(name)
+    return files.load_timing(path)
+
+
+def _inbetween(args: argparse.Namespace) -> int:
+    from apps.kas import files, library
+    from apps.kas.inbetween import inbetween, inbetween_keys
+
+    try:
+        keys = [files.load_drawing_or_frame(library.resolve(k)) for k in args.keys]
+        if len(keys) < 2:
+            raise ValueError("give at least two keyframes")
+        tm = _timing(args.timing)
+        if len(keys) == 2:
+            path = files.load_path(library.resolve(args.path)) if args.path else None
+            seq = inbetween(keys[0], keys[1], args.frames, path, tm, args.missing, args.fit,
+                            not args.keep_redundant, args.fps)
+        else:
+            if args.path:
+                raise ValueError("--path works between two keyframes; split the sequence")
+            if args.frames is None and (tm is None or tm.kind != "ticks"):
+                raise ValueError("--frames is needed")
+            seq = inbetween_keys(keys, args.frames, args.method, tm, args.missing,
+                                 args.tension, args.continuity, args.bias,
+                                 not args.keep_redundant, args.fps)
+        files.save_sequence(args.out, seq)
+    except (OSError, ValueError) as exc:
+        return fail("camlab88 kas inbetween", exc)
+    print(f"{args.out}: {len(seq)} frames, {sum(f.n_points for f in seq.frames)} points")
+    return 0

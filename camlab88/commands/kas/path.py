@@ -1,0 +1,86 @@
+"""``camlab88 kas path A B --out P``: draw a sample path and tick marks on the Sigma."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from camlab88.commands.kas import front_options
+from camlab88.runopts import fail
+
+COMMAND = "camlab88 kas path"
+KEYS = "draw the path with the stylus (mouse); t then touches place ticks; F2 saves; Esc quits"
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    p = actions.add_parser("path", help="draw a sample path and tick marks on the Sigma",
+                           description="Keyframes A and B shown superimposed; the stylus draws "
+                           "the sample path, 't' then touches place tick marks; F2 (or the end "
+                           "of a headless script) saves the path to --out and the ticks to "
+                           "--ticks. A --screenshot run saves nothing but the PNG.")
+    p.add_argument("first")
+    p.add_argument("second")
+    p.add_argument("--out", required=True, help="sample path file to write")
+    p.add_argument("--ticks", help="tick timing file to write (default: OUT with _ticks)")
+    p.add_argument("--previous", help="the previous pair's path, shown for continuity "
+                   "(default: the path last saved for a pair ending at FIRST, if any)")
+    p.add_argument("--no-library", action="store_true", help="do not keep the path in the "
+                   "user library (nor look up the previous pair's)")
+    front_options(p)
+    p.set_defaults(handler=path)
+
+
+def path(args: argparse.Namespace) -> int:
+    from apps.kas import files, library
+    from apps.kas.path_editor import PathEditor
+    from apps.kas.program import PathFront
+    from camlab88.commands.kas import run_front
+
+    out = Path(args.out)
+    ticks = Path(args.ticks) if args.ticks else out.with_name(f"{out.stem}_ticks{out.suffix}")
+    try:
+        prev = _previous(args)
+        model = PathEditor(files.load_drawing_or_frame(library.resolve(args.first)),
+                           files.load_drawing_or_frame(library.resolve(args.second)), prev)
+        save = _saver(args, out, ticks)
+        run_front(PathFront(model, args.background, save), args, COMMAND, KEYS)
+        sample = model.sample_path()
+        if args.script is not None:
+            if sample is None:
+                raise ValueError(f"{args.script}: the script draws no path")
+            save(sample, model.timing())
+    except (OSError, ValueError) as exc:
+        return fail(COMMAND, exc)
+    if sample is not None:
+        wrote = "" if args.screenshot is not None else f" -> {out}" + (
+            f", {ticks}" if model.ticks else "")
+        print(f"kas path: {len(sample.points)} path points, {len(model.ticks)} ticks{wrote}")
+    return 0
+
+
+def _previous(args: argparse.Namespace):  # noqa: ANN202
+    from apps.kas import files, library
+
+    prev_file = library.resolve(args.previous) if args.previous else None
+    if prev_file is None and not args.no_library:
+        prev_file = library.previous_pair_path(args.first)
+        if prev_file is not None:
+            print(f"kas path: showing the previous pair's path {prev_file}")
+    return files.load_path(prev_file) if prev_file is not None else None
+
+
+def _saver(args: argparse.Namespace, out: Path, ticks: Path):  # noqa: ANN202
+    from apps.kas import files, library
+
+    def save(sample, timing) -> None:  # noqa: ANN001
+        if args.screenshot is not None:  # a screenshot run never touches the user's files
+            return
+        files.save_path(out, sample)
+        if len(timing.values):
+            files.save_timing(ticks, timing)
+        if not args.no_library:
+            p_name, t_name = library.pair_names(args.first, args.second)
+            files.save_path(library.user_file(p_name), sample)
+            if len(timing.values):
+                files.save_timing(library.user_file(t_name), timing)
+    return save

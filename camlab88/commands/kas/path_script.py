@@ -1,0 +1,42 @@
+"""``camlab88 kas path-script``: a sample path and tick marks from a script, headless."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from camlab88.runopts import fail
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    p = actions.add_parser("path-script", help="draw a sample path and tick marks from a script",
+                        description="Headless in-betweener set-up: keyframes A and B are "
+                        "shown, the SCRIPT's stylus stroke draws the path, 't' then touches "
+                        "place tick marks; writes the path and the tick timing.")
+    p.add_argument("first")
+    p.add_argument("second")
+    p.add_argument("script")
+    p.add_argument("--path-out", required=True)
+    p.add_argument("--timing-out", required=True)
+    p.set_defaults(handler=_path_script)
+
+
+def _path_script(args: argparse.Namespace) -> int:
+    from apps.kas import files, library
+    from apps.kas.events import parse_script
+    from apps.kas.path_editor import PathEditor
+
+    try:
+        pe = PathEditor(files.load_drawing_or_frame(library.resolve(args.first)),
+                        files.load_drawing_or_frame(library.resolve(args.second)))
+        pe.run(parse_script(Path(args.script).read_text(encoding="utf-8"), args.script))
+        path = pe.sample_path()
+        if path is None:
+            raise ValueError(f"{args.script}: the script draws no path")
+        files.save_path(args.path_out, path)
+        files.save_timing(args.timing_out, pe.timing())
+    except (OSError, ValueError) as exc:
+        return fail("camlab88 kas path-script", exc)
+    print(f"path of {len(path.points)} points, {len(pe.ticks)} ticks "
+          f"({len(pe.ticks) + 2} frames with the keyframes)")
+    return 0

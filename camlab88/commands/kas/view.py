@@ -1,0 +1,57 @@
+"""``camlab88 kas view SEQ``: the line test, a sequence played on the emulated Sigma."""
+
+from __future__ import annotations
+
+import argparse
+
+from camlab88.runopts import add_run_options, fail, run_options
+
+COMMAND = "camlab88 kas view"
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    p = actions.add_parser("view", help="the line test: play a sequence on the emulated Sigma",
+                           description="Play SEQ on an emulated Sigma T5684 over the line, "
+                           "double buffered in two 2-bit buffers (four colours). --realtime "
+                           "(default) keeps period-line time and drops the frames the line "
+                           "cannot carry; --every shows every frame however long it takes.")
+    p.add_argument("seq")
+    g = p.add_mutually_exclusive_group()
+    g.add_argument("--realtime", dest="mode", action="store_const", const="realtime")
+    g.add_argument("--every", dest="mode", action="store_const", const="every")
+    p.set_defaults(mode="realtime")
+    p.add_argument("--baud", type=int, default=9600)
+    p.add_argument("--fps", type=float, help="default: the sequence's")
+    p.add_argument("--swap", choices=("lut", "mask"), default="lut",
+                   help="buffer switch: rewrite the LUT (default) or the display mask")
+    p.add_argument("--background", choices=("black", "white"), default="black")
+    add_run_options(p, stop_after=False)
+    p.set_defaults(handler=view)
+
+
+def view(args: argparse.Namespace) -> int:
+    from apps.kas import files, library
+    from apps.kas.program.viewer import LineTest
+    from emulator.harness import run
+    from emulator.harness.sigma import PeriodTarget
+    from emulator.sigma import Terminal
+
+    opts = run_options(args, COMMAND, "playing the line test to its end",
+                       argv=getattr(args, "_argv", None))
+    try:
+        seq = files.load_sequence(library.resolve(args.seq))
+        test = LineTest(seq, args.swap, args.background)
+        term = Terminal("t5684")
+        fps = args.fps or seq.fps
+        periods = test.periods(args.mode, args.baud, args.fps, term)
+        h = run(PeriodTarget(term, periods, fps, f"{COMMAND} - Sigma T5684"), opts)
+    except (OSError, ValueError) as exc:
+        return fail(COMMAND, exc)
+    rep = h.target.result
+    if rep is None:
+        print("kas view: window closed")
+        return 0
+    print(rep.summary())
+    print("shown:", " ".join(map(str, rep.shown_frames)))
+    print("dropped:", " ".join(map(str, rep.dropped)) or "-")
+    return 0

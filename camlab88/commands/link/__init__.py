@@ -1,0 +1,15 @@
+"""``camlab88 link ...``: inspect link recordings and test connections (protocols.link.cli)."""
+
+from __future__ import annotations
+
+import argparse
+
+from camlab88.areas import register_area
+
+HELP = "serial-line tools: dump recordings, extract streams, echo device"
+ACTIONS = ("dump", "stream", "echo")
+
+
+def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    register_area(subparsers, __name__, "link", HELP, ACTIONS,
+                  "Tools for the emulated serial line (see docs/link.md).")

@@ -1,0 +1,55 @@
+"""``camlab88 rainbow render SCENE.json --out PNG``: one frame of a scene file."""
+
+from __future__ import annotations
+
+import argparse
+
+from camlab88.runopts import fail
+
+COMMAND = "camlab88 rainbow render"
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    r = actions.add_parser("render", help="render a scene file (JSON pad graph) to a PNG",
+                           description="Compile SCENE.json's pad graph to band structure and "
+                           "render one 768x576 frame.")
+    r.add_argument("scene", metavar="SCENE.json")
+    r.add_argument("--out", required=True, metavar="PNG", help="where to write the frame")
+    r.add_argument("--bands", metavar="FILE", help="also write the band structure as text")
+    r.add_argument("--reference", action="store_true",
+                   help="render with the per-pixel reference compositor instead")
+    r.add_argument("--strict", action="store_true",
+                   help="the relic's video memory (64K 16-bit words)")
+    r.set_defaults(handler=render)
+
+
+def render(args: argparse.Namespace) -> int:
+    from emulator.rainbow import Rainbow
+    from emulator.rainbow.errors import RainbowError
+    from emulator.rainbow.scene import SceneError, load_scene
+
+    try:
+        device = load_scene(args.scene, Rainbow(strict=args.strict))
+    except (SceneError, RainbowError) as exc:
+        return fail(COMMAND, exc)
+    try:  # compiling (or the reference walk) refuses graphs with too many paths
+        frame = device.reference() if args.reference else device.peek()
+        text = device.bands().to_text() if args.bands else None
+    except RainbowError as exc:
+        return fail(COMMAND, f"{args.scene}: {exc}")
+    return _write(args, frame, text)
+
+
+def _write(args: argparse.Namespace, frame, text: str | None) -> int:  # noqa: ANN001
+    from emulator.png import write_png
+    from protocols.atomicfile import write_atomic
+
+    try:
+        write_png(frame, args.out)
+        print(f"wrote {args.out}")
+        if text is not None:
+            write_atomic(args.bands, text.encode())
+            print(f"wrote {args.bands}")
+    except OSError as exc:
+        return fail(COMMAND, exc, 1)
+    return 0

@@ -1,0 +1,73 @@
+"""``camlab88 rainbow replay FILE``: a device recording (``rainbow run --record-stream``)
+fed to a fresh Rainbow, every reply checked; a session recording goes to ``camlab88 replay``."""
+
+from __future__ import annotations
+
+import argparse
+
+from camlab88.runopts import fail
+
+COMMAND = "camlab88 rainbow replay"
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    p = actions.add_parser("replay", help="replay a recorded command stream and check it",
+                           description="Feed a recording's commands and input events "
+                           "(rainbow run --record-stream) to a fresh Rainbow; every reply "
+                           "must match the recorded one. (Session recordings made with "
+                           "--record are replayed by 'camlab88 replay'.)")
+    p.add_argument("recording", metavar="FILE")
+    p.add_argument("--headless", action="store_true", help="no window")
+    p.add_argument("--screenshot", metavar="PNG", help="save the last frame")
+    p.add_argument("--scale", type=int, default=1, help="window scale factor")
+    p.add_argument("--strict", action="store_true",
+                   help="replay on the relic's video memory (for recordings made with --strict)")
+    p.set_defaults(handler=replay)
+
+
+def replay(args: argparse.Namespace) -> int:
+    import sys
+
+    from emulator.png import write_png
+    from emulator.rainbow.device import Rainbow
+    from emulator.rainbow.executor import Executor
+    from protocols.rainbow.recording import Recording, RecordingError
+    from protocols.rainbow.recording import replay as replay_on
+
+    try:
+        rec = Recording.load(args.recording)
+    except (OSError, RecordingError) as exc:
+        return fail(COMMAND, exc)
+    device = Rainbow(strict=args.strict)
+    window = _window(args)
+    try:
+        result = replay_on(rec, Executor(device, _show(window)).handle, device.post_event)
+    finally:
+        if window is not None:
+            window.close()
+    if args.screenshot:
+        write_png(device.peek(), args.screenshot)
+    print(f"{COMMAND}: {result.commands} commands, {result.events} input events, "
+          f"{device.frame_count} frames, {len(result.mismatches)} mismatches")
+    for m in result.mismatches[:10]:
+        print(f"  {m}", file=sys.stderr)
+    return 1 if result.mismatches else 0
+
+
+def _window(args: argparse.Namespace):  # noqa: ANN202
+    from emulator.harness import choose_headless
+
+    if choose_headless(COMMAND, args.headless, "checking the replies"):
+        return None
+    from emulator.window import Window
+
+    return Window("camlab88 Rainbow (replay)", (768, 576), scale=args.scale)
+
+
+def _show(window):  # noqa: ANN001, ANN202
+    def on_frame(frame) -> None:  # noqa: ANN001
+        if window is not None:
+            window.show(frame)
+            window.poll()
+            window.wait_frame(50)
+    return on_frame

@@ -1,0 +1,116 @@
+"""``camlab88 sigma render --in STREAM``: the final screen, or every frame, as PNG."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from fractions import Fraction
+from pathlib import Path
+
+from camlab88.runopts import frames_dir
+
+MODELS = ("t5684", "t5688")
+COMMAND = "camlab88 sigma render"
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    r = actions.add_parser("render", help="decode a stream and write the screen as PNG",
+                           description="Feed a Sigma byte stream (raw bytes or a link "
+                           "recording) to an emulated terminal and write the final screen, "
+                           "768x512 PNG, row 0 = top; or with --frames, the screen at every "
+                           "1/FPS s of line time.")
+    r.add_argument("--model", choices=MODELS, default="t5684")
+    r.add_argument("--in", dest="stream", required=True, type=Path, help="stream file")
+    r.add_argument("--out", type=Path, help="final screen PNG")
+    r.add_argument("--frames", type=frames_dir, metavar="DIR",
+                   help="directory for one PNG per frame period (frame_NNNNN.png)")
+    r.add_argument("--fps", type=int, default=25, help="frames per second of line time")
+    r.add_argument("--baud", type=int, default=9600,
+                   help="line speed that times --frames (a recording keeps its own times)")
+    r.set_defaults(handler=render)
+
+
+def _die(message: str) -> SystemExit:
+    return SystemExit(f"{COMMAND}: {message}")
+
+
+def render(args: argparse.Namespace) -> int:
+    from emulator.sigma import Terminal
+    from protocols.sigma.stream_file import StreamFileError, host_bytes, read_stream_file
+
+    if args.out is None and args.frames is None:
+        raise _die("give --out PNG and/or --frames DIR")
+    if args.fps < 1:
+        raise _die("--fps must be at least 1")
+    settings = _settings(args.baud)  # refuse a bad --baud even when no frames use it
+    try:
+        got = read_stream_file(args.stream)
+    except StreamFileError as exc:
+        raise _die(str(exc)) from None
+    term = Terminal(args.model)
+    if args.frames is not None:
+        n = _write_frames(term, got, settings, Fraction(1, args.fps), args.frames)
+        print(f"wrote {n} frames to {args.frames}")
+    else:
+        term.feed(host_bytes(got))
+    if args.out is not None:
+        _png(term.frame(), args.out)
+        print(f"wrote {args.out}")
+    _say_skipped(term, args.stream)
+    return 0
+
+
+def _settings(baud: int):  # noqa: ANN202
+    from protocols.link import LineSettings
+
+    try:
+        return LineSettings(baud=baud)
+    except ValueError as exc:
+        raise _die(str(exc)) from None
+
+
+def _png(frame, path: Path) -> None:  # noqa: ANN001
+    from emulator.png import write_png
+
+    try:
+        write_png(frame, path)
+    except OSError as exc:
+        raise _die(f"cannot write {path}: {exc.strerror or exc}") from None
+
+
+def _write_frames(term, got, settings, period: Fraction, directory: Path) -> int:  # noqa: ANN001
+    from emulator.png import frame_path
+
+    count = 0
+    for k, chunk in _periods(got, settings, period):
+        term.feed(chunk)
+        _png(term.frame(), frame_path(directory, k))
+        count += 1
+    return count
+
+
+def _periods(got, settings, period: Fraction):  # noqa: ANN001, ANN202
+    """(k, bytes arrived in period k): raw bytes sent back to back from t = 0, or a
+    recording's host-to-device bytes at their recorded arrival times."""
+    from protocols.link import VirtualClock, chunks_by_period
+    from protocols.link.replay import ReplayEndpoint
+
+    if isinstance(got, bytes):
+        yield from chunks_by_period(got, settings, period)
+        return
+    clock = VirtualClock()
+    ep = ReplayEndpoint(got, ">", clock)
+    k = 0
+    while not ep.finished:
+        clock.advance_to((k + 1) * period)
+        yield k, ep.read()
+        k += 1
+
+
+def _say_skipped(term, stream: Path) -> None:  # noqa: ANN001
+    s = term.stats
+    if s["unknown"] or s["malformed"] or s["errors"]:
+        print(f"skipped: {s['unknown']} unknown, {s['malformed']} malformed, "
+              f"{s['errors']} impossible orders", file=sys.stderr)
+    if s["bytes"] and not s["commands"]:
+        print(f"{COMMAND}: {stream} drew nothing: is it a Sigma stream?", file=sys.stderr)

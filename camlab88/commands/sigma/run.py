@@ -1,0 +1,157 @@
+"""``camlab88 sigma run``: a terminal on a paced 9600-baud line, its outside end a pty, a
+TCP port or a serial URL; in a window (or headless, line only) on the harness."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from fractions import Fraction
+from pathlib import Path
+
+from camlab88.runopts import add_run_options, run_options
+
+MODELS = ("t5684", "t5688")
+COMMAND = "camlab88 sigma run"
+FRAME = Fraction(1, 25)
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    u = actions.add_parser("run", help="an interactive terminal in a window",
+                           description="Run an emulated terminal in a window, its line on a "
+                           "pseudo-terminal (--pty) or a TCP port on 127.0.0.1 (--listen). "
+                           "Keys typed into the window go up the line; cursor keys move the "
+                           "crosshair, the mouse is the tablet. --screenshot: the screen at "
+                           "--seconds, else once the --in stream has arrived.")
+    u.add_argument("--model", choices=MODELS, default="t5684")
+    g = u.add_mutually_exclusive_group()
+    g.add_argument("--pty", action="store_true", help="open a pseudo-terminal (the default)")
+    g.add_argument("--listen", type=int, metavar="PORT", help="listen on 127.0.0.1:PORT")
+    g.add_argument("--serial", metavar="URL", help="any pyserial URL, e.g. /dev/ttyUSB0")
+    u.add_argument("--baud", type=int,
+                   help="line speed (default 9600, or that of an --in recording)")
+    u.add_argument("--in", dest="stream", type=Path,
+                   help="also play this stream down the line: raw bytes back to back from "
+                   "the start, a recording at its recorded times")
+    u.add_argument("--seconds", type=float, help="exit after this many seconds of line time")
+    u.add_argument("--record-line", type=Path, metavar="FILE",
+                   help="record the line (both directions) as a link recording")
+    add_run_options(u, stop_after=False)
+    u.set_defaults(handler=run)
+
+
+def _die(message: str) -> SystemExit:
+    return SystemExit(f"{COMMAND}: {message}")
+
+
+def run(args: argparse.Namespace) -> int:
+    from emulator.harness import replay
+    from emulator.harness import run as run_target
+
+    got, settings = _stream_and_settings(args)
+    opts = run_options(args, COMMAND, "serving the line without a window",
+                       argv=getattr(args, "_argv", None))
+    line, recorder = _line(args, settings)
+    target = _target(args, line, got)
+    try:
+        if replay.active() is None:
+            target.bridge = _open_bridge(args, settings, target.tap)
+        run_target(target, opts)
+    finally:
+        if target.bridge is not None:
+            target.bridge.close()
+        if recorder is not None:
+            line.finish()
+            recorder.close()
+            print(f"{COMMAND}: recorded the line to {args.record_line}")
+    s = target.term.stats
+    print(f"camlab88 sigma: {s['bytes']} bytes in, {s['unknown']} unknown and "
+          f"{s['malformed']} malformed orders skipped", flush=True)
+    return 0
+
+
+def _stream_and_settings(args: argparse.Namespace):  # noqa: ANN202
+    from protocols.link import LineSettings
+    from protocols.sigma.stream_file import StreamFileError, read_stream_file
+
+    try:
+        got = read_stream_file(args.stream) if args.stream is not None else b""
+    except StreamFileError as exc:
+        raise _die(str(exc)) from None
+    if not isinstance(got, bytes):  # a recording is replayed at its own speed and times
+        if args.baud is not None and args.baud != got.settings.baud:
+            raise _die(f"{args.stream} was recorded at {got.settings}, not --baud {args.baud}")
+        return got, got.settings
+    try:
+        return got, LineSettings(baud=9600 if args.baud is None else args.baud)
+    except ValueError as exc:
+        raise _die(str(exc)) from None
+
+
+def _line(args: argparse.Namespace, settings):  # noqa: ANN001, ANN202
+    from protocols.link import SerialLine, VirtualClock
+
+    recorder = None
+    if args.record_line is not None:
+        from protocols.link.recording import Recorder
+
+        try:
+            recorder = Recorder(args.record_line, settings)
+        except OSError as exc:
+            raise _die(f"cannot record to {args.record_line}: {exc.strerror or exc}") from None
+    return SerialLine(settings, clock=VirtualClock(), recorder=recorder), recorder
+
+
+def _target(args: argparse.Namespace, line, got):  # noqa: ANN001, ANN202
+    from emulator.harness.sigma import SigmaLineTarget
+    from emulator.sigma import Terminal
+    from protocols.link.replay import replay_into
+
+    if isinstance(got, bytes):
+        if got:
+            line.host.write(got)
+    else:
+        replay_into(got, line.host, ">")
+    until = None if args.seconds is None else Fraction(args.seconds)
+    if until is None and args.screenshot is not None:  # once the --in stream has arrived
+        until = Fraction(line.host.drain_time()) + FRAME
+    return SigmaLineTarget(Terminal(args.model), line, None,
+                           f"camlab88 Sigma {args.model.upper()}", until, _report)
+
+
+def _report(kind: str, detail: str) -> None:
+    print(f"camlab88 sigma: {kind}: {detail}", file=sys.stderr, flush=True)
+
+
+def _open_bridge(args: argparse.Namespace, settings, endpoint):  # noqa: ANN001, ANN202
+    """The line's outside end; an unusable port or URL is a one-line error (exit 1)."""
+    from protocols.link import transports as tr
+
+    if args.listen is not None:
+        try:
+            bridge = tr.TcpBridge(args.listen, endpoint=endpoint)
+        except OSError as exc:
+            raise _die(f"cannot listen on 127.0.0.1:{args.listen}: "
+                       f"{exc.strerror or exc}") from None
+        print(f"camlab88 sigma: {args.model} listening on 127.0.0.1:{bridge.port}", flush=True)
+        return bridge
+    if args.serial is not None:
+        return _serial_bridge(args, settings, endpoint)
+    try:
+        bridge = tr.PtyBridge(endpoint)
+    except OSError as exc:
+        raise _die(f"cannot open a pseudo-terminal: {exc.strerror or exc}") from None
+    print(f"camlab88 sigma: {args.model} on pty {bridge.slave_path}", flush=True)
+    return bridge
+
+
+def _serial_bridge(args: argparse.Namespace, settings, endpoint):  # noqa: ANN001, ANN202
+    from protocols.link import transports as tr
+
+    bridge = tr.SerialUrlBridge(args.serial, settings, endpoint=endpoint)
+    if not bridge.connected:
+        why = next((e.detail for e in reversed(bridge.events) if e.kind == "error"),
+                   f"cannot open {args.serial}")
+        bridge.close()
+        raise _die(why)
+    print(f"camlab88 sigma: {args.model} on serial port {args.serial}", flush=True)
+    return bridge

@@ -1,0 +1,28 @@
+"""``camlab88 snooker ...``: the snooker motion-development program (thesis ch. 6).
+
+``camlab88 snooker [SESSION]`` with no action is ``snooker play [SESSION]``.
+"""
+
+from __future__ import annotations
+
+import argparse
+
+from camlab88.areas import register_area
+
+HELP = ("snooker motion development (thesis chapter 6): `camlab88 snooker [SESSION]` runs the "
+        "interactive program (= `snooker play`); simulate shots; replay checkpoint files")
+ACTIONS = ("play", "simulate", "replay")
+
+
+def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    register_area(subparsers, __name__, "snooker", HELP, ACTIONS)
+
+
+def normalise_argv(argv: list[str]) -> list[str]:
+    """``camlab88 snooker [SESSION] [options]`` is the interactive program (issue 6): with no
+    action named, insert ``play`` so the session file and options reach it."""
+    if argv[:1] == ["snooker"]:
+        rest = argv[1:]
+        if not rest or rest[0] not in (*ACTIONS, "-h", "--help"):
+            return ["snooker", "play", *rest]
+    return argv

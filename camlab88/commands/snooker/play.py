@@ -1,0 +1,86 @@
+"""``camlab88 snooker play [SESSION]``: the interactive program on the emulated Rainbow."""
+
+from __future__ import annotations
+
+import argparse
+
+from camlab88.runopts import add_run_options, fail, run_options
+
+COMMAND = "camlab88 snooker"
+KEYS = ("middle button: menus; right: restart simulation; left held: mouse x4; "
+        "close the window to quit")
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    s = actions.add_parser(
+        "play", help="the interactive motion-development program on the emulated Rainbow",
+        description="The interactive program (thesis §6.2.1-§6.2.2) on the emulated Rainbow. "
+        "Middle button: menus and everything else; right: restart simulation; left held: "
+        "mouse movement x4. With SESSION you are asked: new game (n) or restore (r). "
+        "Headless it needs --events (the run ends with the script) or --stop-after N.")
+    s.add_argument("session", nargs="?", metavar="SESSION",
+                   help="a saved session file to offer for restoring (and to save to)")
+    s.add_argument("--events", metavar="FILE",
+                   help="scripted mouse/keyboard input (the Rainbow script format, "
+                   "docs/harness.md: move, glide, press, release, click, drag, key, type, wait)")
+    s.add_argument("--save", metavar="SESSION",
+                   help="where 'Exit from the program' saves (default: SESSION; "
+                   "with neither, Exit asks for a file name)")
+    add_run_options(s)
+    s.set_defaults(handler=play)
+
+
+def play(args: argparse.Namespace) -> int:
+    from apps.snooker.session import Session, SessionError
+    from protocols.rainbow.script import Player, ScriptError, load
+
+    try:
+        restore = Session.load(args.session) if _exists(args.session) else None
+        player = Player(load(args.events)) if args.events else None
+    except (SessionError, ScriptError) as exc:
+        return fail(COMMAND, exc)
+    useful = "playing the --events script" if player else (
+        "for --stop-after frames" if args.stop_after else None)
+    opts = run_options(args, COMMAND, useful, "give --headless with --events FILE",
+                       getattr(args, "_argv", None))
+    if opts.headless and player is None and opts.stop_after is None:
+        opts.stop_after = 100
+    try:
+        program, h = _run(args, opts, restore, player)
+    except SessionError as exc:
+        return fail(COMMAND, exc)
+    _report(program, h.frames_shown)
+    return 0
+
+
+def _exists(path: str | None) -> bool:
+    from pathlib import Path
+
+    return bool(path) and Path(path).exists()  # type: ignore[arg-type]
+
+
+def _run(args: argparse.Namespace, opts, restore, player):  # noqa: ANN001, ANN202
+    from apps.snooker.program.program import Program
+    from emulator.harness import run
+    from emulator.harness.rainbow import RainbowTarget
+    from emulator.rainbow.session import in_process
+
+    rb = in_process(record=opts.record is not None)
+    program = Program(rb.client, restore=restore, save_to=args.save or args.session,
+                      restore_name=str(args.session))
+
+    def step() -> bool:
+        program.step()
+        return not program.done
+
+    end_with_script = opts.headless or opts.screenshot is not None
+    target = RainbowTarget(rb, step, "camlab88 snooker", KEYS, player, end_with_script)
+    return program, run(target, opts)
+
+
+def _report(program, frames: int) -> None:  # noqa: ANN001
+    st = program.session.status()
+    saved = f"; saved {', '.join(map(str, program.saved))}" if program.saved else ""
+    print(f"camlab88 snooker: {frames} display frames; at frame {st['frame']} "
+          f"({len(program.session.timeline.time_frames)} time frames), scores "
+          f"{st['scores'][0]}-{st['scores'][1]}{saved}")

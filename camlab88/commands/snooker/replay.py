@@ -1,0 +1,57 @@
+"""``camlab88 snooker replay CHECKPOINT``: a checkpoint file played on the Rainbow."""
+
+from __future__ import annotations
+
+import argparse
+
+from camlab88.runopts import add_run_options, fail, run_options
+
+COMMAND = "camlab88 snooker replay"
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    s = actions.add_parser("replay", help="play a checkpoint file on the Rainbow at 25 fps",
+                           description="Play a §6.2.2 checkpoint file on the emulated Rainbow "
+                           "at 25 frames/s (real time in a window, virtual time headless).")
+    s.add_argument("checkpoint", metavar="CHECKPOINT")
+    s.add_argument("--first", type=int, default=0, help="first frame (default 0)")
+    s.add_argument("--last", type=int, help="last frame (default: the last)")
+    add_run_options(s)
+    s.set_defaults(handler=replay)
+
+
+def replay(args: argparse.Namespace) -> int:
+    from apps.snooker.checkpoint import CheckpointError, read, to_metres
+    from apps.snooker.table import Table
+
+    try:
+        cp = read(args.checkpoint)
+        last = cp.n_frames - 1 if args.last is None else args.last
+        cp = cp.subset(args.first, last)
+    except (CheckpointError, ValueError) as exc:
+        return fail(COMMAND, exc)
+    opts = run_options(args, COMMAND, "playing the checkpoint to its end",
+                       argv=getattr(args, "_argv", None))
+    table = Table()
+    pos = [to_metres(p) for p in cp.positions]
+    on = [[table.on_playing_area(x, y) for x, y in p] for p in pos]
+    h = _run(pos, on, opts)
+    print(f"{COMMAND}: {min(h.ticks, len(pos))} frames at 25 frames/s "
+          f"({h.target.session.device.frame_count} display frames, {len(pos) / 25:.2f} s)")
+    return 0
+
+
+def _run(pos, on, opts):  # noqa: ANN001, ANN202
+    from apps.snooker.program.program import Program
+    from emulator.harness import run
+    from emulator.harness.rainbow import RainbowTarget
+    from emulator.rainbow.session import in_process
+
+    rb = in_process(record=opts.record is not None)
+    steps = Program(rb.client).position_steps(pos, on)
+
+    def step() -> bool:
+        return next(steps, None) is not None
+
+    target = RainbowTarget(rb, step, "camlab88 snooker replay", "close the window to quit")
+    return run(target, opts)

@@ -1,0 +1,109 @@
+"""``camlab88 snooker simulate``: a shot simulated headless until every ball stops."""
+
+from __future__ import annotations
+
+import argparse
+
+from camlab88.runopts import fail
+
+COMMAND = "camlab88 snooker simulate"
+
+
+def _table_option(value: str) -> tuple[str, str]:
+    if "=" not in value:
+        raise argparse.ArgumentTypeError(f"expected NAME=VALUE, got {value!r}")
+    k, v = value.split("=", 1)
+    return k.strip(), v.strip()
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    s = actions.add_parser(
+        "simulate",
+        help="simulate a shot headlessly until every ball stops; write a checkpoint",
+        description="Simulate until all balls have stopped and write the §6.2.2 checkpoint "
+        "file (4096 units per foot). ANGLE_DEG is measured anticlockwise from straight up "
+        "the table (from the baulk end towards the black); SPIN is m/s along the shot "
+        "(+ top spin, - back spin).",
+    )
+    s.add_argument("--from", dest="source", metavar="SESSION|CHECKPOINT",
+                   help="start from a saved session (JSON) or the last frame of a checkpoint")
+    how = s.add_mutually_exclusive_group(required=True)
+    how.add_argument("--break", dest="break_speed", type=float, metavar="SPEED_M_S",
+                     help="the opening position, cue ball in the D struck at the pack")
+    how.add_argument("--shot", nargs="+", metavar="ARG",
+                     help="BALL SPEED_M_S ANGLE_DEG [SPIN_M_S]; BALL is 1..22 or a name "
+                     "(cue, yellow, ..., black, red1..red15)")
+    s.add_argument("--out", required=True, metavar="CHECKPOINT", help="checkpoint file to write")
+    s.add_argument("--save-session", metavar="SESSION", help="also save the session file")
+    s.add_argument("--first", type=int, default=0, help="first time frame to write (default 0)")
+    s.add_argument("--last", type=int, help="last time frame to write (default: the last)")
+    s.add_argument("--table", action="append", type=_table_option, default=[],
+                   metavar="NAME=VALUE",
+                   help="change a table constant, e.g. cushion_restitution=1.2 "
+                   "ball_diameter_m=0.2 (new games only)")
+    s.add_argument("--max-seconds", type=float, default=600.0,
+                   help="give up if balls are still moving after this long (default 600)")
+    s.set_defaults(handler=simulate)
+
+
+def simulate(args: argparse.Namespace) -> int:
+    from apps.snooker.checkpoint import CheckpointError
+    from apps.snooker.physics import SimulationError
+    from apps.snooker.session import SessionError
+
+    try:
+        session = _start(args)
+        if isinstance(session, str):
+            return fail(COMMAND, session)
+        session.simulate_to_rest(args.max_seconds)
+        cp = session.checkpoint(args.first, args.last)
+        cp.write(args.out)
+        if args.save_session:
+            session.save(args.save_session)
+    except (CheckpointError, SessionError, SimulationError, ValueError, OSError) as exc:
+        return fail(COMMAND, exc)
+    _report(session, cp, args)
+    return 0
+
+
+def _start(args: argparse.Namespace):  # noqa: ANN202 - a Session, or a message (str)
+    from apps.snooker.layout import break_off_direction
+    from apps.snooker.program.setup import start_from, table_with
+    from apps.snooker.session import Session
+    from apps.snooker.table import CUE, ball_index
+
+    table = table_with(args.table)
+    if args.break_speed is not None:
+        if args.source:
+            return "--break plays the opening position; it cannot be used with --from"
+        if not args.break_speed > 0:
+            return "the break speed must be positive"
+        session = Session.new_game(table)
+        ux, uy = break_off_direction(table, session.balls)
+        session.set_velocity(CUE, ux * args.break_speed, uy * args.break_speed)
+        return session
+    if len(args.shot) not in (3, 4):
+        return "--shot takes BALL SPEED_M_S ANGLE_DEG [SPIN_M_S]"
+    ball = ball_index(args.shot[0])
+    try:
+        speed, angle, *rest = (float(x) for x in args.shot[1:])
+    except ValueError:
+        return f"--shot: not numbers: {' '.join(args.shot[1:])}"
+    if speed < 0:
+        return "the speed must not be negative"
+    session = start_from(args.source, table) if args.source else Session.new_game(table)
+    session.strike(ball, speed, angle, rest[0] if rest else 0.0)
+    return session
+
+
+def _report(session, cp, args: argparse.Namespace) -> None:  # noqa: ANN001
+    from apps.snooker.table import BALL_NAMES
+
+    st = session.status()
+    tl = session.timeline
+    print(f"{len(tl.time_frames)} time frames ({tl.time_frames[-1].balls.t:.2f} s), "
+          f"{st['collision']} collisions; wrote frames {args.first}..{args.first + cp.n_frames - 1}"
+          f" to {args.out}")
+    potted = [BALL_NAMES[i] for i in range(22) if not session.balls.on_table[i]]
+    print(f"off the table: {', '.join(potted) or 'none'}; scores {st['scores'][0]}-"
+          f"{st['scores'][1]}; {st['message']}")

@@ -1,0 +1,22 @@
+"""``camlab88 tablet``: list, monitor, calibrate and emulate graphics tablets."""
+
+from __future__ import annotations
+
+import argparse
+
+from camlab88.areas import register_area
+from emulator.tablet.pointer_input import TabletInput
+
+HELP = "graphics tablets: real (HID/serial) and emulated"
+ACTIONS = ("list", "monitor", "calibrate", "emulate")
+SOURCE_HELP = (
+    "hid:VID:PID | serial:PORT?protocol=P[&baud=N] | URL?protocol=P (loop://, socket://...) | "
+    "emulated:P[?drive=demo]; P = wacom4, summa-mm, bitpad1, bitpad2, calcomp"
+)
+__all__ = ["ACTIONS", "SOURCE_HELP", "TabletInput", "register"]  # TabletInput: the old name
+
+
+def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    register_area(subparsers, __name__, "tablet", HELP, ACTIONS,
+                  "Graphics tablets over USB HID or serial, and an emulated tablet that "
+                  "speaks a real protocol on a pty.")

@@ -1,0 +1,75 @@
+"""``camlab88 tablet calibrate SOURCE``: touch two corners; saved per device."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+
+from camlab88.commands.tablet import SOURCE_HELP
+
+# the scripted stroke of an emulated ?drive=demo tablet: a tap near each corner
+TAPS = ([(0.1, 0.1, 0)] * 3 + [(0.1, 0.1, 1)] * 3 + [(0.1, 0.1, 0)] * 3
+        + [(0.9, 0.9, 0)] * 3 + [(0.9, 0.9, 1)] * 3 + [(0.9, 0.9, 0)] * 3)
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    s = actions.add_parser("calibrate", help="touch two corners; saved per device",
+                           description="Touch the top-left then the bottom-right corner of "
+                           "the working area. Saved under $CAMLAB88_CONFIG_DIR (else "
+                           "~/.config/camlab88)/calibration.json.")
+    s.add_argument("source", metavar="SOURCE", help=SOURCE_HELP)
+    s.add_argument("--seconds", type=float, default=120.0, help="give up after S seconds")
+    s.set_defaults(handler=calibrate)
+
+
+def calibrate(args: argparse.Namespace) -> int:
+    from emulator.tablet.emulated_source import open_tablet
+    from protocols.tablets.calibration import CalibrationSession, save_calibration
+
+    source, emu, spec = open_tablet(args.source, script=TAPS)
+    if emu is not None and emu.drive == "mouse":
+        emu.open_window()
+    session = CalibrationSession(spec.device_key)
+    print(session.prompt, flush=True)
+    try:
+        if not _touch(session, source, emu, args.seconds):
+            return 1
+    finally:
+        (emu or source).close()
+    try:
+        cal = session.result()
+        path = save_calibration(cal)
+    except (ValueError, OSError) as exc:
+        print(f"camlab88 tablet: {exc}", file=sys.stderr)
+        return 1
+    print(f"saved {spec.device_key}: top-left {cal.top_left}, bottom-right "
+          f"{cal.bottom_right} -> {path}")
+    return 0
+
+
+def _touch(session, source, emu, seconds: float) -> bool:  # noqa: ANN001
+    """Read reports until both corners are touched; False on a timeout or a lost tablet."""
+    from protocols.tablets.sources import SourceLost
+
+    start = time.monotonic()
+    while not session.done:
+        if time.monotonic() - start > seconds:
+            print(f"camlab88 tablet: calibration timed out after {seconds:g} s (no corner "
+                  "touched: is the tablet on that port?)", file=sys.stderr)
+            return False
+        if emu is not None:
+            emu.step()
+        try:
+            events = source.read(timeout=0.02)
+        except SourceLost as exc:
+            print(f"camlab88 tablet: {exc}", file=sys.stderr)
+            return False
+        if emu is not None:
+            emu.show(events)
+        for e in events:
+            if session.feed(e):
+                print(f"corner at x={e.x} y={e.y}", flush=True)
+                if session.prompt:
+                    print(session.prompt, flush=True)
+    return True

@@ -1,0 +1,63 @@
+"""``camlab88 tablet emulate``: an emulated tablet on a pty, driven by the mouse."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+
+COMMAND = "camlab88 tablet emulate"
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    s = actions.add_parser("emulate", help="an emulated tablet on a pty, driven by the mouse",
+                           description="Open a window; the mouse drives a tablet that writes "
+                           "its protocol's bytes to a pseudo-terminal (path printed) that any "
+                           "program can open as a serial port. Left button = tip, right = "
+                           "barrel, middle = button 2; key o = out of proximity, e = eraser "
+                           "end. Needs a display (the mouse), except with --demo.")
+    s.add_argument("--protocol", default="summa-mm", help="wacom4, summa-mm (default), "
+                   "bitpad1, bitpad2, calcomp, summa-flair")
+    s.add_argument("--demo", action="store_true", help="draw a scripted stroke, not the mouse")
+    s.add_argument("--seconds", type=float, default=None, help="exit after S seconds")
+    s.add_argument("--screenshot", default=None, help="save the window after a few frames, exit")
+    s.set_defaults(handler=emulate)
+
+
+def emulate(args: argparse.Namespace) -> int:
+    from emulator.harness import choose_headless
+    from emulator.tablet import demo_path
+    from emulator.tablet.emulated_source import EmulatedSource
+    from protocols.tablets.sources import parse_source
+
+    can = "the scripted stroke, no window" if args.demo and not args.screenshot else None
+    headless = choose_headless(COMMAND, False, can, "it is driven by the mouse; try --demo")
+    spec = parse_source(f"emulated:{args.protocol}" + ("?drive=demo" if args.demo else ""))
+    emu = EmulatedSource(spec, script=demo_path() if args.demo else None, reader=False)
+    if not headless:
+        emu.open_window()
+        print(f"{COMMAND}: window open; the mouse is the pen; close it to quit",
+              file=sys.stderr)
+    print(f"serial port: {emu.tablet.slave_path}  (open it with pyserial; "
+          f"{emu.tablet.line.describe()})", flush=True)
+    try:
+        _loop(emu, args)
+    finally:
+        emu.close()
+    return 0
+
+
+def _loop(emu, args: argparse.Namespace) -> None:  # noqa: ANN001
+    start = time.monotonic()
+    while emu.step() or (args.demo and emu.frames < 300):
+        if args.seconds is not None and time.monotonic() - start >= args.seconds:
+            break
+        emu.show(emu.take_local())
+        if args.screenshot and emu.frames >= (270 if args.demo else 30):
+            emu.window.screenshot(args.screenshot)
+            print(f"{COMMAND}: screenshot {args.screenshot}", file=sys.stderr)
+            break
+        if emu.window is not None:
+            emu.window.wait_frame(60)  # the demo too, so a client has time to open the port
+        else:
+            time.sleep(1 / 60)  # headless demo: the same pace for a client on the pty

@@ -1,0 +1,39 @@
+"""``camlab88 tablet list``: the HID digitizers and serial ports found."""
+
+from __future__ import annotations
+
+import argparse
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    s = actions.add_parser("list", help="HID digitizers and serial ports found")
+    s.set_defaults(handler=cmd_list)
+
+
+def cmd_list(args: argparse.Namespace) -> int:
+    from protocols.tablets.hid_source import list_digitizers
+
+    devices, note = list_digitizers()
+    print("HID digitizers:")
+    for d in devices:
+        print("  " + d.describe())
+    if not devices:
+        print("  (none found)" + (f": {note}" if note else ""))
+    print("Serial ports:")
+    try:
+        from serial.tools import list_ports
+
+        ports = sorted(list_ports.comports(), key=lambda p: p.device)
+    except (ImportError, OSError) as exc:
+        ports = []
+        print(f"  (cannot list: {exc})")
+    for port in ports:
+        extra = f"  {port.vid:04x}:{port.pid:04x}" if port.vid is not None else ""
+        print(f"  {port.device}  {port.description}{extra}")
+    if not ports:
+        print("  (none found)")
+    print("Serial protocols: wacom4, summa-mm, bitpad1, bitpad2, calcomp "
+          "(use serial:PORT?protocol=NAME)")
+    return 0
+
+

@@ -1,0 +1,86 @@
+"""``camlab88 tablet monitor SOURCE``: one line per decoded tablet event."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+
+from camlab88.commands.tablet import SOURCE_HELP
+from camlab88.runopts import positive
+
+COMMAND = "camlab88 tablet monitor"
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    s = actions.add_parser("monitor", help="print one line per decoded event",
+                           description="Print one line per decoded event: x and y in tablet "
+                           "units, pressure, buttons, proximity. An emulated tablet driven "
+                           "by the mouse needs a display; ?drive=demo runs without one.")
+    s.add_argument("source", metavar="SOURCE", help=SOURCE_HELP)
+    s.add_argument("--raw", action="store_true", help="also print the raw bytes/reports in hex")
+    s.add_argument("--count", type=positive, default=None, help="stop after N events (N >= 1)")
+    s.add_argument("--seconds", type=float, default=None, help="stop after S seconds")
+    s.add_argument("--screenshot", default=None,
+                   help="(emulated) save the window after a few frames and exit")
+    s.set_defaults(handler=monitor)
+
+
+def monitor(args: argparse.Namespace) -> int:
+    from emulator.tablet import demo_path
+    from emulator.tablet.emulated_source import open_tablet
+
+    def raw(data: bytes) -> None:
+        print("raw " + data.hex(" "), flush=True)
+
+    source, emu, _spec = open_tablet(args.source, raw if args.raw else None, demo_path())
+    try:
+        _maybe_window(emu, args)
+        for note in getattr(source, "size_notes", ()):  # a size reply we could not trust
+            print(f"camlab88 tablet: {note}", file=sys.stderr)
+        print(f"# {source.name}: {source.model.name}, 0..{source.model.max_x} x "
+              f"0..{source.model.max_y}, {source.model.lines_per_inch:g} lpi", flush=True)
+        return _loop(source, emu, args)
+    finally:
+        (emu or source).close()
+
+
+def _maybe_window(emu, args: argparse.Namespace) -> None:  # noqa: ANN001
+    """The emulated tablet's window: needed for the mouse (the one display rule)."""
+    from emulator.harness import choose_headless
+
+    if emu is None or not (emu.drive == "mouse" or args.screenshot):
+        return
+    can = None if emu.drive == "mouse" else "the scripted stroke, no window"
+    if not choose_headless(COMMAND, False, can, "use SOURCE?drive=demo, or a real tablet"):
+        emu.open_window()
+        print(f"{COMMAND}: window open; the mouse is the pen (o: out of proximity, "
+              "e: eraser); close it to quit", file=sys.stderr)
+
+
+def _loop(source, emu, args: argparse.Namespace) -> int:  # noqa: ANN001
+    from protocols.tablets.sources import SourceLost
+
+    count, idle, start = 0, 0, time.monotonic()
+    while args.seconds is None or time.monotonic() - start < args.seconds:
+        if emu is not None and not emu.step():
+            idle += 1
+            if (emu.window is not None and emu.script is None) or idle > 20:
+                break  # window closed, or the scripted stroke finished and drained
+        try:
+            events = source.read(timeout=0.02)
+        except SourceLost as exc:
+            print(f"camlab88 tablet: {exc}", file=sys.stderr)
+            return 1
+        for e in events[: None if args.count is None else args.count - count]:
+            print(e.describe(), flush=True)
+            count += 1
+        if emu is not None:
+            emu.show(events)
+            if args.screenshot and emu.frames >= 30 and emu.window is not None:
+                emu.window.screenshot(args.screenshot)
+                print(f"{COMMAND}: screenshot {args.screenshot}", file=sys.stderr)
+                break
+        if args.count is not None and count >= args.count:
+            break
+    return 0

@@ -1,0 +1,98 @@
+"""The run flags every interactive command shares, meaning one thing everywhere.
+
+``--headless``   no window (the display rule of emulator.harness.display otherwise decides)
+``--screenshot PNG``  run to the end unpaced, save the last screen, exit; writes no other file
+``--frames DIR``  every frame shown as DIR/frame_NNNNN.png (always a directory)
+``--stop-after N``  stop after N frames (the count that ``--frames N`` used to be)
+``--record FILE``  a session recording for ``camlab88 replay``
+``--scale N``    window scale
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from emulator.harness import RunOptions, choose_headless
+
+
+def frames_dir(text: str) -> Path:
+    """``--frames DIR``; a bare number is the old count, refused with the new spelling."""
+    if text.isascii() and text.isdigit():
+        raise argparse.ArgumentTypeError(
+            f"--frames is a directory of frame_NNNNN.png now; for a count of {text} frames "
+            f"use --stop-after {text}")
+    return Path(text)
+
+
+def positive(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, not {value}")
+    return value
+
+
+def add_run_options(p: argparse.ArgumentParser, record: bool = True,
+                    stop_after: bool = True) -> None:
+    """Add the shared run flags to an action's parser."""
+    p.add_argument("--headless", action="store_true", help="no window (virtual time)")
+    p.add_argument("--screenshot", type=Path, metavar="PNG",
+                   help="run to the end unpaced, save the last screen as PNG and exit")
+    p.add_argument("--frames", type=frames_dir, metavar="DIR",
+                   help="write every frame shown as DIR/frame_NNNNN.png")
+    if stop_after:
+        p.add_argument("--stop-after", type=positive, metavar="N",
+                       help="stop after N frames")
+    if record:
+        p.add_argument("--record", type=Path, metavar="FILE",
+                       help="record the session (replay it with 'camlab88 replay FILE')")
+    p.add_argument("--scale", type=positive, default=1, help="window scale (default 1)")
+
+
+def run_options(args: argparse.Namespace, command: str, can_headless: str | None,
+                refuse_hint: str = "give --headless", argv: list[str] | None = None,
+                ) -> RunOptions:
+    """RunOptions from the shared flags; the display rule decides window or headless."""
+    headless = choose_headless(command, bool(args.headless), can_headless, refuse_hint)
+    record = getattr(args, "record", None)
+    if record is not None:
+        _check_writable(command, Path(record), "record to")
+    return RunOptions(
+        headless=headless, scale=getattr(args, "scale", 1),
+        screenshot=getattr(args, "screenshot", None), frames=getattr(args, "frames", None),
+        record=getattr(args, "record", None), stop_after=getattr(args, "stop_after", None),
+        command=command, argv=list(sys.argv[1:] if argv is None else argv))
+
+
+def _check_writable(command: str, path: Path, doing: str) -> None:
+    """Refuse at the start, not after the session, a file that cannot be written."""
+    import os
+
+    parent = path.parent if str(path.parent) else Path(".")
+    if not parent.is_dir() or not os.access(parent, os.W_OK):
+        raise SystemExit(f"{command}: cannot {doing} {path}: no writable directory {parent}")
+
+
+def fail(command: str, message: object, status: int = 2) -> int:
+    """Print ``command: message`` on stderr and return ``status``."""
+    print(f"{command}: {message}", file=sys.stderr)
+    return status
+
+
+def progress(label: str):  # noqa: ANN201 - a callback (i, n) or None
+    """A text progress bar on a terminal; nothing when stderr is a file or pipe."""
+    if not sys.stderr.isatty():
+        return None
+
+    def show(i: int, n: int) -> None:
+        width = 30
+        done = width * i // max(n, 1)
+        sys.stderr.write(f"\r{label} [{'#' * done}{'.' * (width - done)}] {i}/{n}")
+        if i >= n:
+            sys.stderr.write("\n")
+        sys.stderr.flush()
+    return show

@@ -1,0 +1,192 @@
+"""One run loop for every interactive program: a *target* (a program wired to a device) is
+ticked on the virtual clock, shown in a window or run headless, with plugin hooks around each
+tick (the PyBoy model: ``handle_events``, ``post_tick``, a frame limiter).
+
+One tick::
+
+    events = window.poll()                  (headless: [])
+    for plugin: events = plugin.handle_events(harness, events)   (record / replay input)
+    Quit in events and target.may_close()  -> stop
+    target.handle_events(events)            (host input -> the device's input)
+    alive = target.tick()                   (one step of virtual time)
+    if target.time() reached the next frame: window.show(frame); plugin.on_frame(harness, frame)
+    for plugin: plugin.post_tick(harness)
+    stop if not alive, after ``stop_after`` frames, or when a plugin called harness.stop()
+    pace: sleep until the wall clock reaches target.time() (``paced`` only)
+
+At the end ``plugin.finish(harness)`` runs for every plugin, then the window closes.
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass, field
+from fractions import Fraction
+from pathlib import Path
+from typing import Any, Protocol
+
+import numpy as np
+
+from emulator.host_input import HostEvent, Quit
+
+
+class Target(Protocol):
+    """What the harness runs: a program wired to a device.
+
+    ``title``, ``size`` (device pixels w, h), ``fps`` (frames shown per virtual second) and
+    ``keys`` (the one-line key hint printed when a window opens) are attributes.  Optional
+    methods the harness uses when present: ``may_close() -> bool`` (a window close is
+    refused while e.g. unsaved work is asked about), ``wire() -> list[tuple[str, bytes]]``
+    (the wire traffic since the last call, for recordings), ``put_wire(data)`` (replayed
+    outside input on the wire) and ``finish()``.
+    """
+
+    title: str
+    size: tuple[int, int]
+    fps: float
+    keys: str
+
+    def handle_events(self, events: list[HostEvent]) -> None: ...
+    def tick(self) -> bool: ...
+    def frame(self) -> np.ndarray: ...
+    def time(self) -> Fraction: ...
+
+
+class Plugin:
+    """A hook around each tick; subclasses override what they need."""
+
+    def start(self, harness: Harness) -> None:
+        """Called once before the first tick."""
+
+    def handle_events(self, harness: Harness, events: list[HostEvent]) -> list[HostEvent]:
+        return events
+
+    def on_frame(self, harness: Harness, frame: np.ndarray) -> None:
+        """Called with every frame shown (window or not)."""
+
+    def post_tick(self, harness: Harness) -> None:
+        """Called after every tick."""
+
+    def finish(self, harness: Harness) -> None:
+        """Called once at the end (also after an error)."""
+
+
+@dataclass
+class RunOptions:
+    """How to run: the flags that mean one thing in every command."""
+
+    headless: bool = True
+    paced: bool = True                  # wall clock follows virtual time (window only)
+    scale: int = 1
+    screenshot: Path | None = None      # save the last screen here at the end
+    frames: Path | None = None          # DIR: every frame shown as DIR/frame_NNNNN.png
+    record: Path | None = None          # a session recording (protocols.session)
+    stop_after: int | None = None       # stop after this many frames
+    command: str = "camlab88"           # for messages: "camlab88 kas edit"
+    argv: list[str] = field(default_factory=list)   # for recordings
+    inputs: list[Path] = field(default_factory=list)  # extra input files to record
+
+
+class Harness:
+    """Runs one target with its options and plugins; see the module docstring."""
+
+    def __init__(self, target: Target, options: RunOptions,
+                 plugins: list[Plugin] | None = None) -> None:
+        from emulator.harness.plugins import standard_plugins
+
+        self.target = target
+        self.options = options
+        self.plugins: list[Plugin] = [*standard_plugins(options), *(plugins or [])]
+        self.window: Any = None
+        self.ticks = 0
+        self.frames_shown = 0
+        self.last_frame: np.ndarray | None = None
+        self.quit = False               # the window was closed / Escape
+        self._stop = False
+        self._next_show = Fraction(0)
+        self._shown_at = Fraction(-1)  # virtual time of the last frame shown
+
+    def stop(self) -> None:
+        """End the run after this tick (a plugin's or the program's request)."""
+        self._stop = True
+
+    def run(self) -> Harness:
+        """Tick until the target finishes, the window closes or a stop; returns self."""
+        from protocols.link import Throttle
+
+        self._open_window()
+        throttle = Throttle(1.0 if self._paced() else None)
+        try:
+            for p in self.plugins:
+                p.start(self)
+            while self._tick_once():
+                throttle.pace(self.target.time())
+        finally:
+            self._finish()
+        return self
+
+    def _paced(self) -> bool:
+        o = self.options
+        return self.window is not None and o.paced and o.screenshot is None
+
+    def _open_window(self) -> None:
+        if self.options.headless:
+            return
+        from emulator.window import Window
+
+        t = self.target
+        self.window = Window(t.title, t.size, scale=self.options.scale)
+        print(f"{self.options.command}: window open; {t.keys}", file=sys.stderr, flush=True)
+
+    def _tick_once(self) -> bool:
+        events = self.window.poll() if self.window is not None else []
+        for p in self.plugins:
+            events = p.handle_events(self, events)
+        if any(isinstance(e, Quit) for e in events) and self._may_close():
+            self.quit = True
+            return False
+        self.target.handle_events([e for e in events if not isinstance(e, Quit)])
+        alive = self.target.tick()
+        self.ticks += 1
+        now = self.target.time()
+        if now >= self._next_show or (not alive and now > self._shown_at):
+            self._show()  # and the last picture, if time moved on since the last frame
+        for p in self.plugins:
+            p.post_tick(self)
+        limit = self.options.stop_after
+        return alive and not self._stop and (limit is None or self.frames_shown < limit)
+
+    def _show(self) -> None:
+        frame = self.target.frame()
+        self.last_frame = frame
+        self.frames_shown += 1
+        self._shown_at = self.target.time()
+        self._next_show = self.target.time() + Fraction(1) / Fraction(self.target.fps)
+        if self.window is not None:
+            self.window.show(frame)
+        for p in self.plugins:
+            p.on_frame(self, frame)
+
+    def _may_close(self) -> bool:
+        may_close = getattr(self.target, "may_close", None)
+        return True if may_close is None else bool(may_close())
+
+    def screen(self) -> np.ndarray:
+        """The screen now (the last frame shown, or a fresh one)."""
+        return self.target.frame()
+
+    def _finish(self) -> None:
+        try:
+            for p in self.plugins:
+                p.finish(self)
+            finish = getattr(self.target, "finish", None)
+            if finish is not None:
+                finish()
+        finally:
+            if self.window is not None:
+                self.window.close()
+
+
+def run(target: Target, options: RunOptions, plugins: list[Plugin] | None = None) -> Harness:
+    """``Harness(target, options, plugins).run()``."""
+    return Harness(target, options, plugins).run()

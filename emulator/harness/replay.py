@@ -1,0 +1,158 @@
+"""Replaying a session recording through the harness.
+
+``camlab88 replay`` re-runs the recorded command inside :func:`replaying`; while that context
+is active, every harness the command builds takes its input from the recording (not the
+window), feeds recorded outside wire bytes back to the target (``target.put_wire``), ignores
+``--record``, takes ``--headless`` / ``--period`` / ``--frames`` / ``--screenshot`` from the
+replay, and (with ``check``) compares every screen hash, stopping at the first difference.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
+from dataclasses import dataclass, field
+from fractions import Fraction
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from emulator.harness import codec
+from emulator.harness.loop import Plugin, RunOptions
+from emulator.harness.session_record import screen_hash
+from emulator.host_input import HostEvent, Quit
+from protocols.session import ScreenHash, SessionRecording
+
+if TYPE_CHECKING:
+    from emulator.harness.loop import Harness
+
+
+@dataclass(frozen=True)
+class Mismatch:
+    """The first screen that differs from the recording."""
+
+    frame: int
+    tick: int
+    time: Fraction
+    expected: str
+    got: str
+
+    def describe(self) -> str:
+        return (f"frame {self.frame} (tick {self.tick}, t = {float(self.time):.3f} s) differs "
+                f"from the recording: expected {_short(self.expected)}, got {_short(self.got)}")
+
+
+def _short(text: str) -> str:
+    return text[:16] if len(text) == 64 else text
+
+
+@dataclass
+class Replay:
+    """An active replay: the recording and what the replay was asked to do."""
+
+    rec: SessionRecording
+    headless: bool = True
+    period: bool = False
+    check: bool = False
+    frames: Path | None = None
+    screenshot: Path | None = None
+    mismatch: Mismatch | None = None
+    compared: int = 0
+    runs: int = 0
+    ended: ScreenHash | None = field(default=None)
+
+    def adjust(self, options: RunOptions) -> None:
+        options.headless = self.headless
+        options.paced = self.period
+        options.frames, options.screenshot, options.record = self.frames, self.screenshot, None
+        options.stop_after = None  # the recording's events and end decide
+        self.runs += 1
+
+    def plugins(self) -> list[Plugin]:
+        return [RecordedInput(self), HashCheck(self)]
+
+
+_ACTIVE: ContextVar[Replay | None] = ContextVar("camlab88_replay", default=None)
+
+
+def active() -> Replay | None:
+    """The replay in progress, or None (a command asks before opening e.g. a pty)."""
+    return _ACTIVE.get()
+
+
+@contextmanager
+def replaying(replay: Replay) -> Iterator[Replay]:
+    token = _ACTIVE.set(replay)
+    try:
+        yield replay
+    finally:
+        _ACTIVE.reset(token)
+
+
+class RecordedInput(Plugin):
+    """The recording's events at their ticks instead of the window's (a window close still
+    stops the replay); outside wire bytes back to the target; stop at the recorded end."""
+
+    def __init__(self, replay: Replay) -> None:
+        rec = replay.rec
+        self.events: dict[int, list[HostEvent]] = {}
+        for tick, _t, obj in rec.events:
+            self.events.setdefault(tick, []).append(codec.decode(obj))
+        self.wire: dict[int, list[bytes]] = {}
+        for tick, d, data in rec.wire:
+            if d == "+":
+                self.wire.setdefault(tick - 1, []).append(data)  # recorded after the tick
+        self.end_tick = rec.ticks
+
+    def handle_events(self, harness: Harness, events: list[HostEvent]) -> list[HostEvent]:
+        put = getattr(harness.target, "put_wire", None)
+        for data in self.wire.get(harness.ticks, []):
+            if put is not None:
+                put(data)
+        window_quit = [e for e in events if isinstance(e, Quit)]
+        return self.events.get(harness.ticks, []) + window_quit
+
+    def post_tick(self, harness: Harness) -> None:
+        if harness.ticks >= self.end_tick:
+            harness.stop()
+
+
+class HashCheck(Plugin):
+    """With ``check``: compare each recorded screen hash; the first difference stops the run."""
+
+    def __init__(self, replay: Replay) -> None:
+        self.replay = replay
+        self.expected = {h.frame: h for h in replay.rec.hashes}
+
+    def on_frame(self, harness: Harness, frame: np.ndarray) -> None:
+        want = self.expected.get(harness.frames_shown)
+        if self.replay.check and want is not None and self.replay.mismatch is None:
+            self._compare(harness, want, frame)
+
+    def _compare(self, harness: Harness, want: ScreenHash, frame: np.ndarray) -> None:
+        got = screen_hash(frame)
+        self.replay.compared += 1
+        if got != want.sha256:
+            self.replay.mismatch = Mismatch(want.frame, harness.ticks, harness.target.time(),
+                                            want.sha256, got)
+            harness.stop()
+
+    def finish(self, harness: Harness) -> None:
+        end = self.replay.rec.end
+        frame = harness.last_frame if harness.last_frame is not None else harness.screen()
+        self.replay.ended = ScreenHash(harness.frames_shown, harness.ticks,
+                                       harness.target.time(), screen_hash(frame))
+        if not self.replay.check or self.replay.mismatch is not None or end is None:
+            return
+        if harness.frames_shown != end.frame or harness.ticks != end.tick:
+            self.replay.mismatch = Mismatch(
+                min(end.frame, harness.frames_shown), harness.ticks, harness.target.time(),
+                f"the end at frame {end.frame}, tick {end.tick}",
+                f"the end at frame {harness.frames_shown}, tick {harness.ticks}")
+            return
+        self.replay.compared += 1
+        got = self.replay.ended.sha256
+        if got != end.sha256:
+            self.replay.mismatch = Mismatch(end.frame, end.tick, end.time, end.sha256, got)

@@ -1,0 +1,135 @@
+"""The session recording format, version 1: JSON Lines, one record a line, UTF-8.
+
+A recording holds everything needed to run a program's session again on its own::
+
+    {"type": "header", "format": "camlab88-session", "version": 1,
+     "argv": ["kas", "edit", "key.kas", "--script", "s.txt"], "hash_every": 25}
+    {"type": "file", "name": "s.txt", "sha256": "...", "data": "<base64 of zlib>"}   inputs
+    {"type": "event", "tick": 12, "time": "3/25", "event": {"kind": "KeyDown", ...}}
+    {"type": "wire", "tick": 12, "dir": ">", "data": "<base64 of zlib>"}   the wire
+    {"type": "hash", "frame": 25, "tick": 100, "time": "1", "sha256": "..."}   screen hashes
+    {"type": "end", "frames": 130, "ticks": 520, "time": "26/5", "sha256": "..."}
+
+``time`` is virtual time in seconds as an exact fraction; ``tick`` counts harness ticks.
+``event`` is a host input event (emulator.host_input) as the window delivered it; ``wire``
+records every byte the program and device exchanged (``>`` host to device, ``<`` device to
+host, ``+`` bytes that came from outside, which a replay feeds back in).  A ``hash`` is the
+SHA-256 of the shown frame's RGB bytes, every ``hash_every`` frames; ``end`` is always last,
+so a recording without it is truncated.  A reader refuses other formats and newer versions
+with the file, line and column.
+"""
+
+from __future__ import annotations
+
+import base64
+import json
+import os
+import zlib
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import Any
+
+FORMAT = "camlab88-session"
+VERSION = 1
+_KEYS: dict[str, dict[str, type | tuple[type, ...]]] = {
+    "header": {"format": str, "version": int, "argv": list, "hash_every": int},
+    "file": {"name": str, "sha256": str, "data": str},
+    "event": {"tick": int, "time": str, "event": dict},
+    "wire": {"tick": int, "dir": str, "data": str},
+    "hash": {"frame": int, "tick": int, "time": str, "sha256": str},
+    "end": {"frames": int, "ticks": int, "time": str, "sha256": str},
+}
+
+
+class SessionFileError(ValueError):
+    """A recording that cannot be read: ``path:line:col: what was wrong``."""
+
+    def __init__(self, path: str, line: int, col: int, message: str) -> None:
+        super().__init__(f"{path}:{line}:{col}: {message}")
+        self.path, self.line, self.col = path, line, col
+
+
+@dataclass(frozen=True)
+class ScreenHash:
+    frame: int
+    tick: int
+    time: Fraction
+    sha256: str
+
+
+@dataclass
+class SessionRecording:
+    """A whole recording in memory (see the module docstring)."""
+
+    argv: list[str]
+    hash_every: int = 25
+    files: dict[str, bytes] = field(default_factory=dict)
+    events: list[tuple[int, Fraction, dict[str, Any]]] = field(default_factory=list)
+    wire: list[tuple[int, str, bytes]] = field(default_factory=list)
+    hashes: list[ScreenHash] = field(default_factory=list)
+    end: ScreenHash | None = None
+    ticks: int = 0
+
+
+def _b64(data: bytes) -> str:
+    """Binary data: zlib-compressed, then base64 (wire traffic repeats itself a lot)."""
+    return base64.b64encode(zlib.compress(data, 9)).decode("ascii")
+
+
+def _records(rec: SessionRecording) -> list[dict[str, Any]]:
+    import hashlib
+
+    out: list[dict[str, Any]] = [{"type": "header", "format": FORMAT, "version": VERSION,
+                                  "argv": rec.argv, "hash_every": rec.hash_every}]
+    out += [{"type": "file", "name": n, "sha256": hashlib.sha256(d).hexdigest(),
+             "data": _b64(d)} for n, d in rec.files.items()]
+    body: list[tuple[int, int, dict[str, Any]]] = []
+    body += [(t, 0, {"type": "event", "tick": t, "time": str(v), "event": e})
+             for t, v, e in rec.events]
+    body += [(t, 1, {"type": "wire", "tick": t, "dir": d, "data": _b64(b)})
+             for t, d, b in rec.wire]
+    body += [(h.tick, 2, _hash_record("hash", h)) for h in rec.hashes]
+    out += [r for _, _, r in sorted(body, key=lambda x: (x[0], x[1]))]
+    if rec.end is not None:
+        end = _hash_record("end", rec.end)
+        end["ticks"] = rec.ticks
+        out.append(end)
+    return out
+
+
+def _hash_record(kind: str, h: ScreenHash) -> dict[str, Any]:
+    key = "frame" if kind == "hash" else "frames"
+    return {"type": kind, key: h.frame, "tick": h.tick, "time": str(h.time), "sha256": h.sha256}
+
+
+def dumps(rec: SessionRecording) -> str:
+    """The recording as text, one JSON record a line."""
+    lines = []
+    for r in _records(rec):
+        if r["type"] == "end":
+            r.pop("tick", None)
+        lines.append(json.dumps(r, sort_keys=False, separators=(",", ":")))
+    return "\n".join(lines) + "\n"
+
+
+def write(path: str | os.PathLike[str], rec: SessionRecording) -> None:
+    """Write atomically (protocols.atomicfile)."""
+    from protocols.atomicfile import write_atomic
+
+    write_atomic(path, dumps(rec).encode("utf-8"))
+
+
+def read(path: str | os.PathLike[str]) -> SessionRecording:
+    """Read and check a recording; a bad one raises SessionFileError naming line and column."""
+    name = os.fspath(path)
+    try:
+        raw = open(name, "rb").read()
+    except OSError as exc:
+        raise SessionFileError(name, 0, 0, f"cannot read: {exc.strerror or exc}") from None
+    return loads(raw, name)
+
+
+def loads(raw: bytes, name: str = "<session>") -> SessionRecording:
+    from protocols.session.parse import parse_lines
+
+    return parse_lines(raw, name)

@@ -1,0 +1,167 @@
+"""Reading a session recording (format: protocols.session.format), checking every record.
+
+Every refusal names the file, line and column: bad UTF-8 or JSON, an unknown record type, a
+missing or mistyped key, another format, a newer version, ticks going back, a file whose
+content does not match its hash, or no ``end`` record (a truncated recording).
+"""
+
+from __future__ import annotations
+
+import base64
+import binascii
+import hashlib
+import json
+import zlib
+from fractions import Fraction
+from typing import Any
+
+from protocols.session.format import (
+    _KEYS,
+    FORMAT,
+    VERSION,
+    ScreenHash,
+    SessionFileError,
+    SessionRecording,
+)
+
+MAX_DATA = 256 * 1024 * 1024  # one record's data, inflated: more is a damaged or hostile file
+
+
+class _Reader:
+    def __init__(self, name: str) -> None:
+        self.name = name
+        self.line = 0
+        self.rec: SessionRecording | None = None
+        self.last_tick = 0
+        self.ended = False
+
+    def fail(self, message: str, col: int = 1) -> SessionFileError:
+        return SessionFileError(self.name, self.line, col, message)
+
+    def record(self, text: str) -> dict[str, Any]:
+        try:
+            obj = json.loads(text)
+        except json.JSONDecodeError as exc:
+            raise SessionFileError(self.name, self.line, exc.colno,
+                                   f"not JSON: {exc.msg}") from None
+        except RecursionError:
+            raise self.fail("not JSON: nested too deeply") from None
+        if not isinstance(obj, dict) or not isinstance(obj.get("type"), str):
+            raise self.fail('expected a JSON object with a "type"')
+        keys = _KEYS.get(obj["type"])
+        if keys is None:
+            raise self.fail(f"unknown record type {obj['type']!r}; expected one of "
+                            f"{', '.join(_KEYS)}")
+        for key, kind in keys.items():
+            if key not in obj or not isinstance(obj[key], kind) or \
+                    (kind is int and isinstance(obj[key], bool)):
+                raise self.fail(f"{obj['type']} record: {key!r} missing or not "
+                                f"{getattr(kind, '__name__', kind)}")
+        return obj
+
+    def header(self, obj: dict[str, Any]) -> None:
+        if obj["type"] != "header" or obj["format"] != FORMAT:
+            raise self.fail(f"not a camlab88 session recording (expected a {FORMAT} header)")
+        if obj["version"] > VERSION:
+            raise self.fail(f"written by a newer camlab88 (format version {obj['version']}); "
+                            f"this one reads version {VERSION}: upgrade camlab88")
+        if obj["version"] != VERSION:
+            raise self.fail(f"unknown format version {obj['version']} (expected {VERSION})")
+        if not all(isinstance(a, str) for a in obj["argv"]) or not obj["argv"]:
+            raise self.fail("header: argv must be a non-empty list of strings")
+        if obj["hash_every"] < 1:
+            raise self.fail("header: hash_every must be at least 1")
+        self.rec = SessionRecording(list(obj["argv"]), obj["hash_every"])
+
+    def tick(self, obj: dict[str, Any], key: str = "tick") -> int:
+        t = obj[key]
+        if t < self.last_tick:
+            raise self.fail(f"{key} {t} goes back (after {self.last_tick})")
+        self.last_tick = t
+        return t
+
+    def time(self, text: str) -> Fraction:
+        try:
+            if not text.replace("/", "", 1).isascii():
+                raise ValueError
+            value = Fraction(text)
+        except (ValueError, ZeroDivisionError):
+            raise self.fail(f"time {text!r} is not a number of seconds") from None
+        if value < 0:
+            raise self.fail(f"time {text} is negative")
+        return value
+
+    def data(self, text: str) -> bytes:
+        try:
+            packed = base64.b64decode(text.encode("ascii"), validate=True)
+        except (binascii.Error, UnicodeEncodeError):
+            raise self.fail("data is not base64") from None
+        inflate = zlib.decompressobj()
+        try:
+            data = inflate.decompress(packed, MAX_DATA + 1)
+        except zlib.error:
+            raise self.fail("data is not zlib-compressed") from None
+        if len(data) > MAX_DATA or not inflate.eof:
+            raise self.fail(f"data is damaged or larger than {MAX_DATA} bytes")
+        return data
+
+    def body(self, obj: dict[str, Any]) -> None:
+        assert self.rec is not None
+        kind = obj["type"]
+        if self.ended:
+            raise self.fail("a record after the end record")
+        if kind == "header":
+            raise self.fail("a second header")
+        getattr(self, f"_{kind}")(obj)
+
+    def _file(self, obj: dict[str, Any]) -> None:
+        data = self.data(obj["data"])
+        if hashlib.sha256(data).hexdigest() != obj["sha256"]:
+            raise self.fail(f"file {obj['name']!r}: content does not match its sha256")
+        self.rec.files[obj["name"]] = data  # type: ignore[union-attr]
+
+    def _event(self, obj: dict[str, Any]) -> None:
+        self.rec.events.append((self.tick(obj), self.time(obj["time"]), obj["event"]))  # type: ignore[union-attr]
+
+    def _wire(self, obj: dict[str, Any]) -> None:
+        if obj["dir"] not in (">", "<", "+"):
+            raise self.fail(f"wire direction {obj['dir']!r}; expected >, < or +")
+        self.rec.wire.append((self.tick(obj), obj["dir"], self.data(obj["data"])))  # type: ignore[union-attr]
+
+    def _hash(self, obj: dict[str, Any]) -> None:
+        self.rec.hashes.append(self._screen(obj, obj["frame"]))  # type: ignore[union-attr]
+
+    def _end(self, obj: dict[str, Any]) -> None:
+        self.rec.end = self._screen(obj, obj["frames"])  # type: ignore[union-attr]
+        self.rec.ticks = obj["ticks"]  # type: ignore[union-attr]
+        self.ended = True
+
+    def _screen(self, obj: dict[str, Any], frame: int) -> ScreenHash:
+        sha = obj["sha256"]
+        if len(sha) != 64 or any(c not in "0123456789abcdef" for c in sha):
+            raise self.fail("sha256 must be 64 lowercase hex digits")
+        tick = self.tick(obj, "tick" if "tick" in obj else "ticks")
+        return ScreenHash(frame, tick, self.time(obj["time"]), sha)
+
+
+def parse_lines(raw: bytes, name: str) -> SessionRecording:
+    """The recording in ``raw`` (the bytes of file ``name``)."""
+    reader = _Reader(name)
+    for reader.line, line in enumerate(raw.split(b"\n"), start=1):
+        if not line.strip():
+            continue
+        try:
+            text = line.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            raise reader.fail("not UTF-8", exc.start + 1) from None
+        obj = reader.record(text)
+        if reader.rec is None:
+            reader.header(obj)
+        else:
+            reader.body(obj)
+    if reader.rec is None:
+        raise SessionFileError(name, 1, 1, "empty: not a camlab88 session recording")
+    if not reader.ended:
+        raise SessionFileError(name, reader.line, 1, "truncated: the recording has no end "
+                               "record (was the program stopped while recording?)")
+    return reader.rec
