@@ -13,18 +13,13 @@ import numpy as np
 
 from apps.snooker.render import kernels as K
 from apps.snooker.render.balls import ball_params
-from apps.snooker.render.frame import (
-    FrameGeometry,
-    camera_params,
-    clip_project,
-    frame_geometry,
-    shadow_boxes,
-)
+from apps.snooker.render.frame import FrameGeometry, camera_params, clip_project, frame_geometry
 from apps.snooker.render.gamma import encode
 from apps.snooker.render.materials import BACKGROUND
 from apps.snooker.render.painter import BallItem, PolygonItem, ShadowItem
 from apps.snooker.render.scene import Scene
 from apps.snooker.render.shading import lights_array
+from apps.snooker.render.shadow_pass import shadow_dimming
 from apps.snooker.render.specks import speck_directions
 
 
@@ -66,31 +61,11 @@ def render_linear(scene: Scene, view: object, options: RenderOptions | None = No
     return img
 
 
-def shadow_occlusion(g: FrameGeometry, item: ShadowItem, n_lights: int, height: int,
-                     width: int) -> np.ndarray:
-    """(lights, H, W, 1): how much of each light's share of the baize is shadowed."""
-    occ = np.zeros((n_lights, height, width, 1), dtype=np.float64)
-    one = np.ones(1)
-    for li, poly in item.cushions:
-        xy = clip_project(g.pin, poly)
-        if xy is not None:
-            K.polygon(occ[li], xy, one)
-    return occ
-
-
 def apply_shadows(img: np.ndarray, g: FrameGeometry, item: ShadowItem) -> None:
-    h, w = img.shape[:2]
-    occ = shadow_occlusion(g, item, len(item.removed), h, w)
-    ell, boxes = shadow_boxes(g.pin, item.ellipses)
-    if len(ell):
-        K.shadows(occ, camera_params(g.pin), ell, boxes, g.half_length, g.half_width)
-    touched = np.nonzero(occ.any(axis=(0, 3)))
-    if len(touched[0]) == 0:
-        return
-    ys, xs = touched
-    y0, y1, x0, x1 = ys.min(), ys.max() + 1, xs.min(), xs.max() + 1
-    dim = np.tensordot(occ[:, y0:y1, x0:x1, 0], item.removed, axes=(0, 0))
-    np.maximum(img[y0:y1, x0:x1] - dim, 0.0, out=img[y0:y1, x0:x1])
+    box, dim = shadow_dimming(g, item, img.shape[0], img.shape[1])
+    if box is not None:
+        y0, y1, x0, x1 = box
+        np.maximum(img[y0:y1, x0:x1] - dim, 0.0, out=img[y0:y1, x0:x1])
 
 
 def draw_ball(img: np.ndarray, scene: Scene, g: FrameGeometry, item: BallItem,
