@@ -13,7 +13,7 @@ import pytest
 from apps.snooker.camera import ccl, motion
 from apps.snooker.camera.views import View
 from apps.snooker.visualiser import display as vdisplay
-from apps.snooker.visualiser.program import Visualiser, ViewsError
+from apps.snooker.visualiser.program import ViewsError, Visualiser
 from emulator.rainbow.session import in_process
 from protocols.rainbow.client import parse_colour
 from tests.snooker_camera.helpers import R, make, still
@@ -102,7 +102,7 @@ def test_double_buffering_and_table_redrawn_only_when_the_view_changes() -> None
     vis = Visualiser(rb.client, make(c), views)
     d = vis.display
     fronts = []
-    for f in range(4):
+    for _ in range(4):
         front_balls = rb.client.get_pixels(d.balls.front, 0, 0, 768, 576)
         vis.draw()
         # drawing went to the back pad (now swapped to the front): the pad that was on
