@@ -1,0 +1,39 @@
+"""Selecting writes 1s into the highlight plane only; clearing clears that plane only; the
+LUT shows the highlight colour whatever the other seven planes hold (thesis §3.3)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from apps.kas.paint import planes
+from apps.kas.paint.ops import Op, OpsFile
+from apps.kas.paint.program import HIGHLIGHT_RGB, Line, PaintProgram
+from emulator.sigma import Terminal
+from tests.kas_paint.helpers import walk
+
+
+def test_select_and_clear_touch_only_the_highlight_plane() -> None:
+    seq = walk(5)
+    prog = PaintProgram(seq, OpsFile(ops=[Op("fill", 3, chains=(2,)), Op("fill", 5, chains=(1,))]))
+    term = Terminal("t5688")
+    line = Line(term)
+    line.send(prog.setup())
+    data, _ = prog.frame(3)
+    line.send(data)
+    before = term.planes.copy()
+    line.send(prog.select(3, (1, 2)))
+    assert np.array_equal(term.planes & 0x7F, before & 0x7F)
+    assert np.sum(term.planes & 0x80) > 100
+    frame = term.frame()
+    lit = np.argwhere((term.indices()[::-1] & 0x80) != 0)
+    assert all(tuple(frame[y, x]) == HIGHLIGHT_RGB for y, x in lit[:50])
+    line.send(prog.clear_selection())
+    assert np.array_equal(term.planes, before)
+
+
+def test_lut_highlight_wins_then_outline_then_fill() -> None:
+    fills = [(i, i, i) for i in range(32)]
+    outs = [(0, 0, 0), (1, 2, 3), (4, 5, 6), (7, 8, 9)]
+    lut = planes.lut(fills, outs, (9, 9, 9))
+    assert all(lut[i] == (9, 9, 9) for i in range(128, 256))
+    assert lut[0x20 | 7] == (1, 2, 3) and lut[0x60] == (7, 8, 9) and lut[17] == (17, 17, 17)
