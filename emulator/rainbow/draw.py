@@ -175,8 +175,3 @@ class Canvas:
         v = values[ya - y: yb - y, xa - x: xb - x].astype(np.uint8) << np.uint8(self.pad.plane)
         sub = self.region[ya:yb, xa:xb]
         sub[:] = (sub & ~self.mask) | v
-
-
-def text_width(s: str, scale: int = 1) -> int:
-    cw, _, _ = load_font()
-    return len(s) * cw * scale

@@ -89,7 +89,3 @@ class VideoMemory:
         gh = -(-a.height // GRANULE)
         self._used[gy : gy + gh, gx : gx + gw] &= ~np.uint8(a.plane_mask)
 
-    def free_fraction(self) -> float:
-        """Fraction of granule-planes still free (for diagnostics)."""
-        bits = np.unpackbits(self._used).sum()
-        return 1.0 - float(bits) / (self._used.size * PLANES)

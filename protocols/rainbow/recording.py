@@ -33,6 +33,14 @@ class RecordingError(ValueError):
 @dataclass
 class Recording:
     entries: list[tuple[str, bytes]] = field(default_factory=list)
+    source: str = "<recording>"  # the file it was loaded from, for replay's messages
+    lines: list[int] = field(default_factory=list)  # each entry's line in that file
+
+    def where(self, n: int) -> str:
+        """``file:line`` of entry ``n`` (or ``<recording> entry n`` when not from a file)."""
+        if n < len(self.lines):
+            return f"{self.source}:{self.lines[n]}"
+        return f"{self.source} entry {n}"
 
     def save(self, path: str | Path) -> None:
         path = Path(path)
@@ -44,7 +52,7 @@ class Recording:
         lines = read_text(path, error=RecordingError, bom=False).splitlines()
         if not lines or lines[0].strip() != MAGIC:
             raise RecordingError(f"{path}:1: not a camlab88 rainbow recording")
-        rec = cls()
+        rec = cls(source=str(path))
         for n, line in enumerate(lines[1:], 2):
             if not line.strip():
                 continue
@@ -58,6 +66,7 @@ class Recording:
             if d == "i":
                 decode_events(data, f"{path}:{n}")
             rec.entries.append((d, data))
+            rec.lines.append(n)
         return rec
 
 
@@ -98,12 +107,14 @@ def replay(rec: Recording, call: Callable[[bytes], bytes],
             result.commands += 1
         elif d == "<":
             if expect is None:
-                result.mismatches.append(f"entry {n}: a reply with no command before it")
+                result.mismatches.append(f"{rec.where(n)}: a reply with no command before it")
             elif expect != data:
-                result.mismatches.append(f"entry {n}: reply differs from the recording")
+                result.mismatches.append(f"{rec.where(n)}: the reply differs from the "
+                                         f"recording (got {quote(expect.hex(), 40)}, recorded "
+                                         f"{quote(data.hex(), 40)})")
             expect = None
         else:
-            for e in decode_events(data, f"entry {n}"):
+            for e in decode_events(data, rec.where(n)):
                 inject(e)
                 result.events += 1
     return result

@@ -1,4 +1,6 @@
-"""Regression tests for defects a review found (each failed before its fix)."""
+"""Rainbow edge cases: strict video memory and virtual pads, the compiler's path limit, scene
+files' key and name checks, device ids, frame copies, strict-memory record and replay
+(each test failed before its fix)."""
 
 from __future__ import annotations
 
@@ -35,7 +37,7 @@ def test_strict_memory_too_big_pad_is_out_of_memory_not_a_range_error() -> None:
 
 
 def test_run_demo_headless_in_strict_memory(capsys) -> None:
-    assert main(["rainbow", "run", "--headless", "--strict", "--frames", "5"]) == 0
+    assert main(["rainbow", "run", "--headless", "--strict", "--stop-after", "5"]) == 0
     assert "5 frames" in capsys.readouterr().out
 
 
@@ -178,7 +180,7 @@ def test_frame_copy_survives_later_frames() -> None:
 
 def test_strict_run_records_and_replays_on_strict_memory(tmp_path, capsys) -> None:
     rec, a, b = tmp_path / "s.rec", tmp_path / "a.png", tmp_path / "b.png"
-    assert main(["rainbow", "run", "--headless", "--strict", "--frames", "6", "--record",
+    assert main(["rainbow", "run", "--headless", "--strict", "--stop-after", "6", "--record",
                  str(rec), "--screenshot", str(a), "--screenshot-frame", "6"]) == 0
     assert main(["rainbow", "replay", str(rec), "--headless", "--strict", "--screenshot",
                  str(b)]) == 0
