@@ -190,7 +190,7 @@ def parse_int(text: str, name: str, lo: int, hi: int,
     saying what was expected — never int()'s own message, never a number the format
     cannot hold."""
     if not _DIGITS.fullmatch(text.strip()):
-        raise error(f"{name}: {what} must be a whole number, not {quote(text, 24)}")
+        raise error(f"{name}: bad {what} {quote(text, 24)} (a whole number is expected)")
     stripped = text.strip()
     if len(stripped.lstrip("-")) > max(len(str(lo)), len(str(hi))) + 1:
         raise error(f"{name}: {what} {quote(stripped, 24)} is outside {lo}..{hi}")
