@@ -1,0 +1,68 @@
+"""Golden images: the four working areas of figure 3.7 (the quarter-size preview, KQ4) and a
+figure-3.8-like example (a simple outline image, painted)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from apps.kas.model import AnimSequence, Chain, Drawing
+from apps.kas.paint import areas
+from apps.kas.paint.ops import Op, OpsFile
+from apps.kas.paint.program import Line, PaintProgram
+from apps.kas.paint.replay import replay
+from emulator.sigma import Terminal
+from tests.kas_paint.helpers import walk
+from tests.support.golden import assert_matches_golden
+
+DATA = Path(__file__).parents[1] / "data" / "kas_paint"
+
+
+def _circle(cx: float, cy: float, r: float, n: int = 24, pen: int = 1) -> Chain:
+    t = np.linspace(0, 2 * np.pi, n + 1)
+    return Chain.from_points(np.column_stack([cx + r * np.cos(t), cy + r * np.sin(t)]), pen)
+
+
+def figure_38() -> AnimSequence:
+    """A face in a hat: head, two eyes, a smile (an open chain closed by select), a hat
+    whose brim crosses the head, made of two chains."""
+    head = _circle(0, -0.5, 2.0, 40)
+    eyes = [_circle(-0.7, 0.0, 0.3, 16, 3), _circle(0.7, 0.0, 0.3, 16, 3)]
+    smile = Chain.from_points([(-1.0, -1.2), (-0.5, -1.6), (0.0, -1.75), (0.5, -1.6),
+                               (1.0, -1.2)], 2)
+    crown = Chain.from_points([(-1.2, 1.0), (-1.0, 3.0), (1.0, 3.0), (1.2, 1.0)])
+    brim = Chain.from_points([(2.2, 1.0), (-2.2, 1.0)])
+    return AnimSequence([Drawing([head, *eyes, smile, crown, brim])])
+
+
+FIG_OPS = [Op("fill", 10, chains=(1,)), Op("fill", 1, chains=(2,)), Op("fill", 1, chains=(3,)),
+           Op("fill", 2, chains=(4,)), Op("fill", 4, chains=(5, 6)), Op("line", 5, chains=(6,))]
+
+
+def test_figure_38_painted_outline_image() -> None:
+    term = Terminal("t5688")
+    prog = PaintProgram(figure_38(), OpsFile(ops=FIG_OPS))
+    line = Line(term)
+    line.send(prog.setup())
+    data, plan = prog.frame(1)
+    assert plan.failures == []
+    line.send(data + prog.show(areas.PAINTING.view))
+    assert_matches_golden(term.frame(), DATA / "figure_3_8.png")
+
+
+def test_four_working_areas_quarter_size() -> None:
+    seq = walk(4)
+    ops = OpsFile(ops=[Op("fill", 3, chains=(2,)), Op("fill", 5, chains=(1,))], painted=2)
+    term = Terminal("t5688")
+    prog = PaintProgram(seq, ops)
+    line = Line(term)
+    replay(prog, line, frames=range(1, 3))           # the two double buffers
+    line.send(prog.frame(3)[0] + prog.mixing_area() + prog.show(areas.PREVIEW))
+    assert_matches_golden(term.frame(), DATA / "four_areas.png")
+    # a palette edit shows at once in every area, nothing redrawn
+    ops.palette.step(5, "blue", 200)
+    sent = prog.palette_entry(5)
+    assert len(sent) == 10
+    line.send(sent)
+    assert_matches_golden(term.frame(), DATA / "four_areas_edited.png")
