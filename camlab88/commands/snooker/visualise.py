@@ -1,0 +1,80 @@
+"""``camlab88 snooker visualise CHECKPOINT VIEWS``: the perspective view of every frame on
+the Rainbow (thesis §6.3.2), at 25 frames/s; ``--frames DIR`` writes frame_NNNNN.png
+numbered as the checkpoint's frames (from 1)."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from camlab88.runopts import add_run_options, fail, run_options
+
+COMMAND = "camlab88 snooker visualise"
+KEYS = ("space play/pause, left/right step, page up/down 25 frames, home/end, "
+        "drag with the left button to scrub, escape quits")
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    s = actions.add_parser(
+        "visualise", help="the perspective view of every frame on the Rainbow (§6.3.2)",
+        description="Play a view file (from 'snooker ccl') over a checkpoint or session on "
+        f"the emulated Rainbow at 25 frames/s. Keys: {KEYS}. Headless it plays every frame "
+        "once; --frames DIR writes DIR/frame_NNNNN.png numbered as the checkpoint's frames.")
+    s.add_argument("motion", metavar="CHECKPOINT|SESSION")
+    s.add_argument("views", metavar="VIEWS", help="the view file")
+    add_run_options(s)
+    s.set_defaults(handler=visualise)
+
+
+def visualise(args: argparse.Namespace) -> int:
+    from apps.snooker.camera import motion
+    from apps.snooker.camera.views import ViewFileError, read_views
+    from apps.snooker.checkpoint import CheckpointError
+    from apps.snooker.session import SessionError
+    from apps.snooker.visualiser.program import ViewsError
+
+    try:
+        shot = motion.load(args.motion)
+        views = read_views(args.views)
+        frames_dir, args.frames = args.frames, None  # written here, numbered by frame
+        opts = run_options(args, COMMAND, "playing every frame once",
+                           argv=getattr(args, "_argv", None))
+        h, vis = _run(shot, views, opts, frames_dir)
+    except (CheckpointError, SessionError, ViewFileError, ViewsError, OSError) as exc:
+        return fail(COMMAND, exc)
+    d = vis.display
+    print(f"{COMMAND}: {h.frames_shown} frames shown ({len(views)} in the view file, "
+          f"frames {views[0].frame}-{views[-1].frame}); table redrawn {d.table_redraws} times",
+          file=sys.stderr)
+    return 0
+
+
+def _run(shot, views, opts, frames_dir):  # noqa: ANN001, ANN202
+    from apps.snooker.visualiser.program import Visualiser
+    from emulator.harness import run
+    from emulator.harness.loop import Plugin
+    from emulator.harness.rainbow import RainbowTarget
+    from emulator.png import frame_path, write_png
+    from emulator.rainbow.session import in_process
+
+    rb = in_process(record=opts.record is not None)
+    vis = Visualiser(rb.client, shot, views)
+    once = opts.headless or opts.screenshot is not None
+
+    def step() -> bool:
+        last = vis.index == len(vis.views) - 1
+        vis.step()
+        return not vis.done and not (once and last)
+
+    class Frames(Plugin):
+        """Each newly drawn frame as DIR/frame_NNNNN.png, NNNNN its checkpoint frame."""
+
+        written: int | None = None
+
+        def on_frame(self, harness, frame) -> None:  # noqa: ANN001
+            if frames_dir is not None and vis.drawn is not None and vis.drawn != self.written:
+                write_png(frame, frame_path(frames_dir, vis.views[vis.drawn].frame))
+                self.written = vis.drawn
+
+    target = RainbowTarget(rb, step, COMMAND, KEYS)
+    return run(target, opts, [Frames()]), vis
