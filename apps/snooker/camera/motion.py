@@ -109,3 +109,16 @@ def load(path: str | os.PathLike[str]) -> Motion:
 
         return from_session(Session.load(path))
     return from_checkpoint(cpfile.read(path))
+
+
+def timeline_events(m: Motion) -> list[tuple[int, str, int]]:
+    """(frame, "strike" | "start" | "stop", ball) for every event a script can name, in
+    frame order (strikes name the ball struck)."""
+    moved = m.moved
+    starts = moved[1:-1] & ~moved[:-2]
+    stops = moved[1:-1] & ~moved[2:]
+    out = [(f, "strike", b) for f, b in m.strikes]
+    for kind, rows in (("start", starts), ("stop", stops)):
+        frames, balls = np.nonzero(rows)
+        out += [(int(f) + 1, kind, int(b)) for f, b in zip(frames, balls)]
+    return sorted(out)
