@@ -1,0 +1,67 @@
+"""``camlab88 snooker camera SCRIPT CHECKPOINT``: the camera script beside the live view,
+re-interpreted on every edit (thesis §6.5's interactive system)."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from camlab88.runopts import add_run_options, fail, run_options
+
+COMMAND = "camlab88 snooker camera"
+KEYS = ("type to edit the script (it is re-interpreted at once; saving it from another editor "
+        "works too); ctrl-s saves, ctrl-r reloads; tab play/pause; page up/down step; left "
+        "button on the time line scrubs; escape quits")
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    s = actions.add_parser(
+        "camera", help="edit a camera script with the live view beside it (§6.5)",
+        description="The camera script beside the live perspective view on the emulated "
+        "Rainbow: every edit, typed here or saved to SCRIPT from any text editor, is "
+        "re-interpreted and the view updates at once; errors are marked at their lines "
+        f"while the preview goes on. Keys: {KEYS}. Headless it needs --events (the run ends "
+        "with the script) or --stop-after N.")
+    s.add_argument("script", metavar="SCRIPT", help="the camera script (created if missing)")
+    s.add_argument("motion", metavar="CHECKPOINT|SESSION")
+    s.add_argument("--events", metavar="FILE",
+                   help="scripted mouse/keyboard input (protocols/rainbow/script.py format)")
+    add_run_options(s)
+    s.set_defaults(handler=camera)
+
+
+def camera(args: argparse.Namespace) -> int:
+    from apps.snooker.camera import motion
+    from apps.snooker.checkpoint import CheckpointError
+    from apps.snooker.session import SessionError
+    from protocols.rainbow.script import Player, ScriptError, load
+
+    try:
+        shot = motion.load(args.motion)
+        player = Player(load(args.events)) if args.events else None
+    except (CheckpointError, SessionError, ScriptError, OSError) as exc:
+        return fail(COMMAND, exc)
+    useful = "playing the --events script" if player else (
+        "for --stop-after frames" if args.stop_after else None)
+    opts = run_options(args, COMMAND, useful, "give --headless with --events FILE",
+                       argv=getattr(args, "_argv", None))
+    h, tool = _run(shot, args.script, player, opts)
+    r = tool.result
+    n = len(r.errors) if r is not None else 0
+    print(f"{COMMAND}: {h.frames_shown} frames shown; script interpreted "
+          f"{tool.interpretations} times; {n} error{'' if n == 1 else 's'} now"
+          + ("; unsaved edits" if tool.modified else ""), file=sys.stderr)
+    return 0
+
+
+def _run(shot, script, player, opts):  # noqa: ANN001, ANN202
+    from apps.snooker.camera_tool.tool import CameraTool
+    from emulator.harness import run
+    from emulator.harness.rainbow import RainbowTarget
+    from emulator.rainbow.session import in_process
+
+    rb = in_process(record=opts.record is not None)
+    tool = CameraTool(rb.client, shot, script)
+    end_with_script = opts.headless or opts.screenshot is not None
+    target = RainbowTarget(rb, tool.step, COMMAND, KEYS, player, end_with_script)
+    return run(target, opts), tool
