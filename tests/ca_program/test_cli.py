@@ -24,17 +24,22 @@ def test_program_headless_events_log_and_script(tmp_path: Path, capsys) -> None:
     log_path = tmp_path / "run.log"
     shot = tmp_path / "shot.png"
     assert main(["ca", "program", "--headless", "--pattern", "acorn", "--events", str(events),
-                 "--log", str(log_path), "--record-pans", "--checkpoint", "4",
-                 "--screenshot", str(shot), "--json"]) == 0
+                 "--log", str(log_path), "--record-pans", "--checkpoint", "4", "--json"]) == 0
     stats = _json_last(capsys)
     assert stats["generation"] == 8 and stats["viewport"][2] == "4"
-    img = np.asarray(Image.open(shot))
-    assert img.shape == (576, 768, 3)
     assert (tmp_path / "run.log4").exists() and (tmp_path / "run.log8").exists()
+    # a screenshot run of the same session shows the same state and writes no log
+    before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    assert main(["ca", "program", "--headless", "--pattern", "acorn", "--events", str(events),
+                 "--log", str(log_path), "--record-pans", "--checkpoint", "4",
+                 "--screenshot", str(shot), "--json"]) == 0
+    assert _json_last(capsys) == stats
+    assert np.asarray(Image.open(shot)).shape == (576, 768, 3)
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir() if p != shot} == before
     assert " zoom 4" in log_path.read_text()
     # the log as a Script, begun at generation 8, reaches the same state
     assert main(["ca", "program", "--headless", "--script", str(log_path), "--start", "8",
-                 "--replay-pans", "--frames", "1", "--json"]) == 0
+                 "--replay-pans", "--stop-after", "1", "--json"]) == 0
     again = _json_last(capsys)
     assert again == stats
     assert main(["ca", "replay", "--script", str(log_path), "--generation", "8",
@@ -47,7 +52,7 @@ def test_program_reports_bad_files(tmp_path: Path, capsys) -> None:
     bad = tmp_path / "bad.events"
     bad.write_text("move 1 2\nwiggle\n")
     assert main(["ca", "program", "--headless", "--events", str(bad)]) == 2
-    assert "bad.events:2: unknown command 'wiggle'" in capsys.readouterr().err
+    assert "bad.events:2:1: unknown command 'wiggle'" in capsys.readouterr().err
     assert main(["ca", "program", "--headless", "--rules", "nosuch"]) == 2
     assert "no rules file or library entry named 'nosuch'" in capsys.readouterr().err
 

@@ -13,12 +13,18 @@ from tests.kas_front.helpers import DATA, model_only
 def test_edit_headless_saves_and_screenshots(tmp_path, capsys) -> None:  # noqa: ANN001
     key, shot = tmp_path / "k.kas", tmp_path / "shot.png"
     assert main(["kas", "edit", str(key), "--script", str(DATA / "edit_all.txt"),
-                 "--headless", "--seed", "1", "--screenshot", str(shot)]) == 0
+                 "--headless", "--seed", "1"]) == 0
     out = capsys.readouterr().out
-    assert "saved" in out and "characters to the Sigma" in out
+    assert f"created {key}" in out and f"saved {key}" in out and "characters to the Sigma" in out
     got = files.load_keyframe(key)
     want = model_only("edit_all.txt").drawing
     assert [len(c) for c in got.chains] == [len(c) for c in want.chains]
+    # a screenshot run of a new file shows the same screen and writes nothing but the PNG
+    other = tmp_path / "new.kas"
+    assert main(["kas", "edit", str(other), "--script", str(DATA / "edit_all.txt"),
+                 "--headless", "--seed", "1", "--screenshot", str(shot)]) == 0
+    assert "screenshot run: nothing saved" in capsys.readouterr().out
+    assert not other.exists()
     img = np.asarray(Image.open(shot))
     assert img.shape == (512, 768, 3) and img.any()
     # editing it again starts from the saved file
@@ -175,7 +181,8 @@ def test_closing_the_window_with_unsaved_edits_warns_once(tmp_path, capsys, monk
     assert main(["kas", "edit", str(target), "--script", str(script)]) == 0
     assert len(quits) == 2  # the first close only warned; the second one closed
     out = capsys.readouterr().out
-    assert "1 chains, 2 points" in out and "NOT saved" in out and not target.exists()
+    assert "1 chains, 2 points" in out and "NOT saved" in out
+    assert files.load_keyframe(target).chains == []  # created empty on opening, never saved
     # nothing drawn: the first close closes
     polls.clear()
     quits.clear()

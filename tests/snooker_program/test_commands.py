@@ -54,7 +54,7 @@ def test_play_reports_bad_files(tmp_path, capsys):
     bad = tmp_path / "bad.events"
     bad.write_text("move 1 2\nfly\n")
     assert main(["snooker", "play", "--headless", "--events", str(bad)]) == 2
-    assert "bad.events:2: unknown command 'fly'" in capsys.readouterr().err
+    assert "bad.events:2:1: unknown command 'fly'" in capsys.readouterr().err
     sess = tmp_path / "s.json"
     sess.write_text("{nope")
     assert main(["snooker", "play", str(sess), "--headless"]) == 2
@@ -75,10 +75,10 @@ def test_replay_plays_a_checkpoint_at_25_fps(tmp_path, capsys):
     assert "missing.cp" in capsys.readouterr().err
 
 
-def test_demo_function_replays_a_break():
-    from camlab88.commands.snooker import rainbow_demo
+def test_demo_act_replays_a_break():
+    from camlab88.commands.demo.acts import ACTS
 
-    frames = []
-    rb = rainbow_demo(on_frame=lambda f: frames.append(f[300, 600].copy()), seconds=1.0)
-    assert rb.device.frame_count == 50 == len(frames)  # 25 time frames, 2 display frames each
+    act = next(a for a in ACTS if a.name == "snooker")
+    frames = [f[300, 600].copy() for f in act.play()]
+    assert len(frames) == 200  # 4 s: 100 time frames, 2 display frames each
     assert len({tuple(f) for f in frames}) > 1  # something moved

@@ -49,6 +49,8 @@ def run_front(front, args: argparse.Namespace, command: str, keys: str):  # noqa
     from emulator.tablet.pointer_input import TabletInput
     from protocols.link import LineSettings
 
+    if args.headless and args.script is None:
+        raise ValueError("--headless needs --script")
     events = load_timed_script(args.script) if args.script is not None else []
     useful = "playing the --script" if args.script is not None else None
     opts = run_options(args, command, useful, "give --headless with --script FILE",

@@ -36,8 +36,7 @@ def edit(args: argparse.Namespace) -> int:
     saved: list[int] = []
     try:
         if not target.exists() and not preview:
-            files.save_keyframe(target, Editor(None, None, args.seed).drawing)
-            print(f"{COMMAND}: created {target} (an empty keyframe)")
+            _create(target, Editor(None, None, args.seed).drawing)
         start = files.load_keyframe(target) if target.exists() else None
         over = files.load_drawing_or_frame(library.resolve(args.over)) if args.over else None
 
@@ -51,8 +50,20 @@ def edit(args: argparse.Namespace) -> int:
         session = _run(front, args)
     except (OSError, ValueError) as exc:
         return fail(COMMAND, exc)
-    _report(front.editor, session, target, saved)
+    _report(front.editor, session, target, saved, preview)
     return 0
+
+
+def _create(target: Path, empty) -> None:  # noqa: ANN001
+    """``kas edit FILE`` makes FILE (an empty keyframe) if it is missing."""
+    from apps.kas import files
+
+    try:
+        files.save_keyframe(target, empty)
+    except OSError as exc:
+        print(f"{COMMAND}: cannot create {target} yet ({exc.strerror or exc}); F2 tries again")
+        return
+    print(f"{COMMAND}: created {target} (an empty keyframe)")
 
 
 def _run(front, args: argparse.Namespace):  # noqa: ANN001, ANN202
@@ -61,8 +72,10 @@ def _run(front, args: argparse.Namespace):  # noqa: ANN001, ANN202
     return run_front(front, args, COMMAND, KEYS)
 
 
-def _report(ed, session, target: Path, saved: list[int]) -> None:  # noqa: ANN001
-    if not saved:
+def _report(ed, session, target: Path, saved: list[int], preview: bool) -> None:  # noqa: ANN001
+    if preview:
+        state = "screenshot run: nothing saved"
+    elif not saved:
         state = "NOT saved (F2 saves)" if ed.dirty else "nothing to save"
     elif ed.dirty:
         state = f"saved {target} earlier, but the last edits are NOT saved"

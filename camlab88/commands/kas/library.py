@@ -23,11 +23,15 @@ def _library(args: argparse.Namespace) -> int:
 
     if args.save:
         from apps.kas import files
+        from protocols.atomicfile import write_atomic
 
         src, name = args.save
         loaders = {"keyframe": files.parse_keyframe, "sequence": files.parse_sequence,
                    "path": files.parse_path, "timing": files.parse_timing}
         try:
+            if not Path(src).is_file():
+                raise ValueError(f"{src} does not exist: make it first (e.g. 'camlab88 kas "
+                                 f"path A B --out {src}'), then save it into the library")
             text = Path(src).read_text(encoding="utf-8")
             first = text.split("\n", 1)[0].split()
             kind = first[1] if len(first) == 3 and first[0] == "KAS" else ""
@@ -36,7 +40,7 @@ def _library(args: argparse.Namespace) -> int:
                                          "timing file")
             loaders[kind](text, src)  # refuse a bad file before it enters the library
             dest = library.user_file(name)
-            files.atomic_write(dest, text)
+            write_atomic(dest, text.encode("utf-8"))
         except (OSError, ValueError, UnicodeDecodeError) as exc:
             return fail("camlab88 kas library", exc)
         print(f"kas library: {kind} {src} saved as {dest}")
