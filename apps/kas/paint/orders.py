@@ -19,10 +19,23 @@ from protocols.sigma import Encoder
 
 def poly(enc: Encoder, px: np.ndarray, origin: tuple[int, int]) -> bytes:
     """A polyline in abbreviated mode (about half the characters, §3.1.4)."""
-    pts = [(int(x) + origin[0], int(y) + origin[1]) for x, y in px]
+    key = (id(px), origin, enc.high_res)
+    hit = _POLY_MEMO.get(key)
+    if hit is not None and hit[0] is px:
+        return hit[1]
+    pts = (px + np.asarray(origin)).tolist()
     if len(pts) == 1:
         pts = pts * 2  # a dot: a vector of length 0
-    return enc.abbreviated_polyline(pts)
+    data = enc.abbreviated_polyline(pts)
+    if len(_POLY_MEMO) > 4096:
+        _POLY_MEMO.clear()
+    _POLY_MEMO[key] = (px, data)  # the array is held, so its id is not reused meanwhile
+    return data
+
+
+# One frame's walls are sent again by every region step; the bytes depend only on the
+# points, the area and the encoder's high-resolution flag.
+_POLY_MEMO: dict[tuple[int, tuple[int, int], bool], tuple[np.ndarray, bytes]] = {}
 
 
 def clear_area(enc: Encoder, box: tuple[int, int, int, int]) -> bytes:

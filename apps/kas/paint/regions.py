@@ -36,6 +36,7 @@ class Arrangement:
     owner: np.ndarray   # chain index + 1 per window pixel, 0 = no chain
     param: np.ndarray   # arc-length bin of that chain there
     chains: list[np.ndarray]  # chain points in inches
+    arcs: list[np.ndarray]    # their arc-length fractions at the points
 
 
 def _arc(points: np.ndarray) -> np.ndarray:
@@ -57,7 +58,7 @@ def arrangement(frame: Drawing, gap: float) -> Arrangement:
         t = _arc(px.astype(np.float64)) if len(px) > 1 else np.zeros(1)
         owner[y - oy, x - ox] = j + 1
         param[y - oy, x - ox] = np.minimum((t[np.minimum(seg, len(t) - 1)] * BINS), BINS - 1)
-    return Arrangement(walls, gaps, f, owner, param, chains)
+    return Arrangement(walls, gaps, f, owner, param, chains, [_arc(p) for p in chains])
 
 
 def signature(arr: Arrangement, k: int) -> set[tuple[int, int]]:
@@ -72,19 +73,24 @@ def signature(arr: Arrangement, k: int) -> set[tuple[int, int]]:
     return set(zip(arr.owner[near].tolist(), arr.param[near].tolist(), strict=True))
 
 
-def _at(chain: np.ndarray, t: float) -> np.ndarray:
-    a = _arc(chain)
-    return np.array([np.interp(t, a, chain[:, 0]), np.interp(t, a, chain[:, 1])])
+def _at(arr: Arrangement, j: int, t: np.ndarray) -> np.ndarray:
+    """Points at arc fractions ``t`` along chain j (0-based), (len(t), 2)."""
+    a, c = arr.arcs[j], arr.chains[j]
+    return np.column_stack([np.interp(t, a, c[:, 0]), np.interp(t, a, c[:, 1])])
 
 
 def carry(point: tuple[float, float], sig: set[tuple[int, int]], src: Arrangement,
           dst: Arrangement) -> tuple[float, float]:
     """Move ``point`` (inches) with the mean motion of the chain stretches bounding it."""
-    moves = [_at(dst.chains[j - 1], (b + 0.5) / BINS) - _at(src.chains[j - 1], (b + 0.5) / BINS)
-             for j, b in sorted(sig) if j - 1 < len(dst.chains)]
-    if not moves:
+    by_chain: dict[int, list[float]] = {}
+    for j, b in sorted(sig):
+        if j - 1 < len(dst.chains):
+            by_chain.setdefault(j - 1, []).append((b + 0.5) / BINS)
+    if not by_chain:
         return point
-    d = np.mean(moves, axis=0)
+    moves = np.concatenate([_at(dst, j, np.array(t)) - _at(src, j, np.array(t))
+                            for j, t in by_chain.items()])
+    d = moves.mean(axis=0)
     return point[0] + float(d[0]), point[1] + float(d[1])
 
 
