@@ -47,6 +47,7 @@ ALIASES = {"stretch": "similarity-reflect"}  # the name used before the thesis's
 FIT_CHOICES = FIT_MODES + tuple(ALIASES)
 DEFAULT_FIT = "similarity-reflect"
 DEGENERATE = 0.25  # axis-stretch: chord components under this fraction of |c| are blended
+MIN_LENGTH = 1e-6  # inches: a path shorter than this is a slip of the stylus, not a path
 
 
 def canonical(mode: str) -> str:
@@ -62,8 +63,9 @@ def check(path: SamplePath) -> None:
     p = path.points
     if len(p) < 2:
         raise ValueError(f"a sample path needs at least two points (this one has {len(p)})")
-    if not np.hypot(*np.diff(p, axis=0).T).sum() > 0:
-        raise ValueError("the sample path has no length (all its points coincide)")
+    if not np.hypot(*np.diff(p, axis=0).T).sum() >= MIN_LENGTH:
+        raise ValueError("the sample path has no length (its points lie within a millionth "
+                         "of an inch)")
 
 
 def load_checked(file: str | os.PathLike[str]) -> SamplePath:

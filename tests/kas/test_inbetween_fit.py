@@ -124,3 +124,20 @@ def test_path_file_with_no_points_names_the_file_and_line(tmp_path) -> None:  # 
     good = tmp_path / "good.kas"
     good.write_text("KAS path 1\npoints 2\n0 0\n1 1\nend\n")
     assert pathfit.load_checked(good).points.shape == (2, 2)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.tuples(st.integers(-3, 3), st.integers(-3, 3)), max_size=4),
+       st.integers(0, 6))
+def test_any_path_file_loads_fits_or_names_its_line(tmp_path_factory, pts, n) -> None:  # noqa: ANN001
+    f = tmp_path_factory.mktemp("paths") / "p.kas"
+    rows = "".join(f"{x} {y}\n" for x, y in pts)
+    f.write_text(f"KAS path 1\npoints {n}\n{rows}end\n")
+    try:
+        path = pathfit.load_checked(f)
+    except KasFileError as exc:
+        assert str(exc).startswith(f"{f}:") and exc.line >= 1
+        return
+    pos = pathfit.fit(np.zeros((1, 2)), np.ones((1, 2)), np.linspace(0, 1, 5), path,
+                      "axis-stretch")
+    assert np.isfinite(pos).all()
