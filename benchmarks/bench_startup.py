@@ -1,0 +1,110 @@
+"""Whole-process start-up of the ordinary commands, cold (first run after install) and warm.
+
+    python benchmarks/bench_startup.py                 # every command, 5 warm runs each
+    python benchmarks/bench_startup.py --runs 7 --cold-runs 2 --only snooker
+    python benchmarks/bench_startup.py --demo          # also `camlab88 demo --headless`
+
+Each command runs as its own process, as a user types it, in a scratch directory with the
+shipped examples/. *Cold* gives every run an empty numba cache (NUMBA_CACHE_DIR), so every
+kernel the command needs is compiled, as on the first run after install; *warm* runs share
+one cache filled by an uncounted first run. Wall time per run (perf_counter around the
+process), min and median; the load average is printed before and after, because on a shared
+2-core machine the figures move with it (docs/perf/startup.md).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import platform
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+BUDGET_S = 0.6  # issue 18: every ordinary command, warm, whole process
+
+COMMANDS: dict[str, list[str]] = {
+    "snooker simulate --break": ["snooker", "simulate", "--break", "5", "--out", "break.cp"],
+    "ca run (small)": ["ca", "run", "--rules", "life", "--pattern", "glider",
+                       "--generations", "30"],
+    "kas inbetween": ["kas", "inbetween", "sun_a", "sun_b", "--timing", "ease-in-out",
+                      "--frames", "20", "--out", "sun.kas"],
+    "rainbow render": ["rainbow", "render", "examples/rainbow/scene.json", "--out", "scene.png"],
+    "sigma render (small stream)": ["sigma", "render", "--in", "examples/sigma/pgplot_goc.sig",
+                                    "--out", "screen.png"],
+    "camlab88 --help": ["--help"],
+}
+DEMO = {"demo --headless": ["demo", "--headless"]}
+
+
+def camlab88() -> list[str]:
+    script = Path(sys.executable).with_name("camlab88")
+    return [str(script)] if script.exists() else [sys.executable, "-m", "camlab88"]
+
+
+def load() -> str:
+    return " ".join(f"{x:.2f}" for x in os.getloadavg())
+
+
+def run_once(argv: list[str], cwd: Path, cache: Path) -> float:
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(cache), SDL_VIDEODRIVER="dummy")
+    env.pop("DISPLAY", None)
+    # as on a user's machine: Python keeps compiled modules (this sandbox sets
+    # PYTHONDONTWRITEBYTECODE, which recompiles every module of ours in every process)
+    env.pop("PYTHONDONTWRITEBYTECODE", None)
+    t0 = time.perf_counter()
+    done = subprocess.run(camlab88() + argv, cwd=cwd, env=env, capture_output=True)
+    took = time.perf_counter() - t0
+    if done.returncode != 0:
+        raise SystemExit(f"camlab88 {' '.join(argv)} failed:\n{done.stderr.decode()[-2000:]}")
+    return took
+
+
+def measure(argv: list[str], work: Path, runs: int, cold_runs: int) -> tuple[list[float], ...]:
+    cold = []
+    for _ in range(cold_runs):
+        with tempfile.TemporaryDirectory(dir=work) as fresh:
+            cold.append(run_once(argv, work, Path(fresh)))
+    warm_cache = work / "warm-cache"
+    run_once(argv, work, warm_cache)  # fills the cache; not counted
+    warm = [run_once(argv, work, warm_cache) for _ in range(runs)]
+    return cold, warm
+
+
+def fmt(xs: list[float]) -> str:
+    return f"{min(xs):.2f} / {statistics.median(xs):.2f}" if xs else "-"
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--runs", type=int, default=5, help="warm runs per command (default 5)")
+    ap.add_argument("--cold-runs", type=int, default=2, help="cold runs per command (default 2)")
+    ap.add_argument("--only", help="only commands whose name contains this")
+    ap.add_argument("--demo", action="store_true", help="also time `demo --headless`")
+    args = ap.parse_args(argv)
+    commands = {**COMMANDS, **(DEMO if args.demo else {})}
+    if args.only:
+        commands = {k: v for k, v in commands.items() if args.only in k}
+    print(f"# bench_startup: {platform.machine()} {platform.python_version()}, "
+          f"{os.cpu_count()} CPUs, {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}")
+    print("| command | cold s (min / median) | warm s (min / median) | load before -> after |")
+    print("|---|---|---|---|")
+    with tempfile.TemporaryDirectory(prefix="camlab88-startup-") as tmp:
+        work = Path(tmp)
+        shutil.copytree(ROOT / "examples", work / "examples")
+        for name, cmd in commands.items():
+            before = load()
+            cold, warm = measure(cmd, work, args.runs, args.cold_runs)
+            flag = "" if statistics.median(warm) <= BUDGET_S or "demo" in name else " (over)"
+            print(f"| `{name}` | {fmt(cold)} | {fmt(warm)}{flag} | {before} -> {load()} |",
+                  flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
