@@ -169,8 +169,9 @@ def ball(img, cam, b, lights, specks):  # noqa: ANN001, ANN201 - numba kernel
     """Blend one Phong-lit ball over ``img`` by its coverage of each pixel (thesis 6.4.1).
 
     The disc is the ball's radius projected at its centre's depth (the visualiser's disc);
-    a pixel's coverage is r + 1/2 - (distance of its centre from the disc's centre),
-    clamped (the disc's area within the pixel to first order). The normal comes from the
+    a pixel's coverage is r' + 1/2 - (distance of its centre from the disc's centre),
+    clamped (the disc's area within the pixel to first order), r' = sqrt(r^2 - 1/12) so the
+    coverages sum to the disc's area. The normal comes from the
     sphere itself: the pixel's offset in the disc gives its right and up components, the
     rest points back at the observer; outside the disc (edge pixels) the limb normal.
     The light and eye directions are computed per pixel from the surface point (point
@@ -180,6 +181,9 @@ def ball(img, cam, b, lights, specks):  # noqa: ANN001, ANN201 - numba kernel
     h = img.shape[0]
     w = img.shape[1]
     cx, cy, r = b[B_CX], b[B_CY], b[B_RPX]
+    # the ramp r + 1/2 - d integrates to pi r^2 + pi/12 over a disc: shrink r to make the
+    # ball's total coverage its area exactly
+    r_edge = math.sqrt(max(r * r - 1.0 / 12.0, 0.0))
     touched = 0
     i0 = max(int(math.floor(cx - r - 1.0)), 0)
     i1 = min(int(math.floor(cx + r + 1.0)), w - 1)
@@ -191,7 +195,7 @@ def ball(img, cam, b, lights, specks):  # noqa: ANN001, ANN201 - numba kernel
             ux = (i + 0.5 - cx) / r
             uy = (cy - (j + 0.5)) / r
             rho = math.sqrt(ux * ux + uy * uy)
-            cov = r + 0.5 - rho * r
+            cov = r_edge + 0.5 - rho * r
             if cov <= 0.0:
                 continue
             if cov > 1.0:

@@ -56,6 +56,7 @@ class SigmaFrame:
     data: bytes
     intended: np.ndarray  # (512, 768) uint8 indices the host meant, row 0 = top
     bytes_by_kind: dict[str, int] = field(default_factory=dict)
+    flat_colours: frozenset[int] = frozenset()  # the polygons' fill colours this frame
 
 
 class SigmaHost:
@@ -97,6 +98,7 @@ class _FrameJob:
         self.runs = RunWriter(host.enc, SCREEN_H)
         self.out = bytearray()
         self.kinds: dict[str, int] = {}
+        self.flat: set[int] = set()
 
     def _emit(self, kind: str, data: bytes) -> None:
         self.out += data
@@ -113,7 +115,8 @@ class _FrameJob:
                 self.shadows(item)
             elif isinstance(item, BallItem):
                 self.ball(item)
-        return SigmaFrame(bytes(self.out), self.idx.copy(), dict(self.kinds))
+        return SigmaFrame(bytes(self.out), self.idx.copy(), dict(self.kinds),
+                          frozenset(self.flat))
 
     # -------------------------------------------------------------- polygons
     def polygon(self, item: PolygonItem) -> None:
@@ -124,6 +127,7 @@ class _FrameJob:
         if len(v) < 3 or abs(signed_area(v)) < 0.5:
             return  # thinner than a pixel once its corners are whole pixels: not drawn
         c = int(self.host.palette.index(item.colour))
+        self.flat.add(c)
         ring = outline_pixels(v)
         xs, rows = ring[:, 0], ring[:, 1]
         under_lin, under_idx = self.lin[rows, xs].copy(), self.idx[rows, xs].copy()
@@ -146,18 +150,21 @@ class _FrameJob:
         return self.runs.set_colour(c) + e.polyline([*dev, dev[0]])
 
     def _fill(self, v: np.ndarray, c: int, colour: np.ndarray) -> None:
-        seed = interior_seed(v, self.idx, c)
-        if seed is None:
+        found = interior_seed(v, self.idx, c)
+        if found is None:
             return
-        sx, sy = seed
+        (sx, sy), safe = found
         before = self.idx.copy()
-        HK.fill4(self.idx, np.int64(sx), np.int64(sy), np.uint8(c), self._stack_for())
-        self.lin[self.idx != before] = colour
-        e = self.host.enc
-        self._emit("fill", self.runs.set_colour(c) + e.move(sx, SCREEN_H - 1 - sy) + e.fill8(c))
-
-    def _stack_for(self) -> np.ndarray:
-        return self.host._stack
+        HK.fill4(self.idx, np.int64(sx), np.int64(sy), np.uint8(c), self.host._stack)
+        filled = self.idx != before
+        self.lin[filled] = colour
+        if safe:
+            e = self.host.enc
+            self._emit("fill", self.runs.set_colour(c) + e.move(sx, SCREEN_H - 1 - sy)
+                       + e.fill8(c))
+        else:  # too thin to seed the filler where no outline can pass: send the pixels
+            rows, xs = np.nonzero(filled)
+            self._emit("fill", self.runs.pixels(rows, xs, np.full(len(rows), c)))
 
     # -------------------------------------------------------------- shadows and balls
     def shadows(self, item: ShadowItem) -> None:
@@ -204,10 +211,12 @@ class _FrameJob:
         self._emit(kind, self.runs.pixels(rows[send], xs[send], idx[send]))
 
 
-def interior_seed(v: np.ndarray, idx: np.ndarray, c: int) -> tuple[int, int] | None:
+def interior_seed(v: np.ndarray, idx: np.ndarray,
+                  c: int) -> tuple[tuple[int, int], bool] | None:
     """The pixel deepest inside the polygon (integer vertices v, centres at +0.5) whose index
-    is not yet ``c``, preferably 1.5 pixels from every edge so the firmware's outline, which
-    may step a pixel later than Bresenham's, cannot pass through it; None if there is none.
+    is not yet ``c``, and whether it is safe for the terminal's filler: 1.5 pixels from every
+    edge, so the firmware's outline, which may step a pixel later than Bresenham's, cannot
+    pass through it. None if the polygon has no pixel inside its outline.
     (Margins are measured from pixel corners' lattice: centres are at v + 0.5 and so are
     the vertices, so the offset cancels.)"""
     lo, hi = v.min(axis=0), v.max(axis=0)
@@ -233,5 +242,5 @@ def interior_seed(v: np.ndarray, idx: np.ndarray, c: int) -> tuple[int, int] | N
         ok = (margin >= need) & free
         if ok.any():
             k = int(np.argmax(np.where(ok, margin, -np.inf)))
-            return int(px[k]), int(py[k])
+            return (int(px[k]), int(py[k])), need > 1.0
     return None

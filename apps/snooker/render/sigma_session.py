@@ -14,7 +14,7 @@ from typing import Protocol
 
 import numpy as np
 
-from apps.snooker.render.leaks import count_leaks
+from apps.snooker.render.leaks import classify
 from apps.snooker.render.sigma_host import SigmaFrame, SigmaHost
 from protocols.link import LineSettings, SerialLine, VirtualClock
 
@@ -29,7 +29,8 @@ class TerminalLike(Protocol):
 class SentFrame:
     frame: SigmaFrame
     line_seconds: float  # time on the line for this frame's orders
-    leaks: int  # pixels whose colour the host did not mean (leaks.count_leaks)
+    leaks: int  # fill colour where the host did not put it (leaks.classify)
+    gaps: int  # other pixels the terminal shows wrong
     screen: np.ndarray  # (512, 768) uint8 indices the terminal shows, row 0 = top
 
 
@@ -53,4 +54,5 @@ class SigmaSession:
         f = self.host.frame(view, frame)
         seconds = self._send(f.data)
         screen = np.ascontiguousarray(self.terminal.indices()[::-1])
-        return SentFrame(f, seconds, count_leaks(screen, f.intended), screen)
+        leaks, gaps = classify(screen, f.intended, f.flat_colours)
+        return SentFrame(f, seconds, leaks, gaps, screen)

@@ -1,0 +1,70 @@
+"""Shadow ellipses against the light geometry (thesis 6.4.1: "one axis is the diameter of
+the ball and the eccentricity and position are related to the direction from the ball to
+the light source"), and the rendered shadow where the ellipse says."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from apps.snooker.render.frame import frame_geometry
+from apps.snooker.render.lights import Lights
+from apps.snooker.render.painter import ShadowItem
+from apps.snooker.render.shadow_pass import shadow_occlusion
+from apps.snooker.render.shadows import ball_shadow_ellipses, cushion_shadow_polygons
+from tests.snooker_render.helpers import one_ball_scene, overhead
+
+R = 0.0262
+
+
+def test_ellipse_axes_and_centre_from_the_light_direction() -> None:
+    ball = np.array([[0.2, 0.1, R]])
+    light = np.array([[0.2 + 0.6, 0.1 + 0.8, 1.1]])  # 1 m away horizontally, along (0.6, 0.8)
+    (cx, cy, ux, uy, a, b, li), = ball_shadow_ellipses(ball, R, light)
+    drop = 1.1 - R
+    sin_e = drop / math.hypot(1.0, drop)
+    assert b == R  # across the light's direction: the ball's diameter
+    assert math.isclose(a, R / sin_e, rel_tol=1e-12)  # along it: stretched by 1 / sin(elevation)
+    assert np.allclose((ux, uy), (-0.6, -0.8))  # pointing away from the light
+    t = R / drop  # the ray from the light through the centre meets the baize ...
+    assert np.allclose((cx, cy), (0.2 - 0.6 * t, 0.1 - 0.8 * t))  # ... beyond the ball
+    assert li == 0
+
+
+def test_light_straight_above_gives_a_circle_under_the_ball() -> None:
+    (cx, cy, _ux, _uy, a, b, _li), = ball_shadow_ellipses(
+        np.array([[0.5, -0.3, R]]), R, np.array([[0.5, -0.3, 1.0]]))
+    assert (cx, cy) == (0.5, -0.3) and a == b == R
+
+
+def test_rendered_shadow_covers_the_ellipse_on_the_baize() -> None:
+    light = Lights(np.array([[0.9, 0.5, 1.0]]), np.full((1, 3), 0.3), np.full(3, 0.2))
+    scene = one_ball_scene(0.1, 0.0, light)
+    view = overhead(1, focal=90.0)
+    g = frame_geometry(scene, np.array(view.observer), np.array(view.viewpoint),
+                       view.focal_mm, 1, 768, 512)
+    item = next(i for i in g.items if isinstance(i, ShadowItem))
+    occ = shadow_occlusion(g, item, 512, 768)[0, :, :, 0]
+    (cx, cy, ux, uy, a, b, _), = item.ellipses
+    ys, xs = np.mgrid[0:512, 0:768]
+    ground, _hit = g.pin.ground(xs + 0.5, ys + 0.5)
+    du = (ground[..., 0] - cx) * ux + (ground[..., 1] - cy) * uy
+    dv = -(ground[..., 0] - cx) * uy + (ground[..., 1] - cy) * ux
+    q = np.sqrt((du / a) ** 2 + (dv / b) ** 2)
+    px_m = 3.2 / g.pin.focal_px  # metres per pixel on the baize, looking straight down
+    margin = 1.0 * px_m / b
+    assert np.all(occ[q < 1 - margin] == 1.0)
+    assert np.all(occ[q > 1 + 2 * margin] == 0.0)
+    edge = np.abs(q - 1) < 0.3 * margin  # centres within 0.3 pixel of the outline
+    assert np.mean((occ[edge] > 0) & (occ[edge] < 1)) > 0.5  # anti-aliased at its edge
+    assert np.isclose(occ.sum() * px_m * px_m, math.pi * a * b, rtol=0.02)  # the area
+
+
+def test_cushion_shadows_only_from_lights_beyond_the_cushion() -> None:
+    hl, hw = 1.8, 0.9
+    assert cushion_shadow_polygons(hl, hw, np.array([[0.0, 0.0, 1.0]])) == []
+    polys = cushion_shadow_polygons(hl, hw, np.array([[2.5, 0.0, 1.0]]))  # beyond the top
+    assert len(polys) == 1
+    li, poly = polys[0]
+    assert li == 0 and np.all(poly[:, 0] <= hl + 1e-12) and poly[:, 0].min() < hl

@@ -1,0 +1,88 @@
+"""The period and fixed modes on the emulated T5688 over the 9600-baud line (thesis 6.4.1):
+period leaks polygon colour outside the anti-aliased edges, fixed does not (both counted);
+the stream is Sigma orders and nothing else; the frame takes its line time."""
+
+from __future__ import annotations
+
+from collections import Counter
+
+import numpy as np
+import pytest
+
+from apps.snooker.render.palette import fixed_palette
+from apps.snooker.render.sigma_host import SigmaHost
+from apps.snooker.render.sigma_session import SigmaSession
+from emulator.sigma import Terminal
+from protocols.sigma import AlphaText, Decoder, GraphicsFlag, Order, Point, Points
+from tests.snooker_render.helpers import break_scene, break_views
+
+
+@pytest.fixture(scope="module")
+def sent() -> dict[str, tuple]:
+    scene = break_scene()
+    view = break_views()[12]
+    pal = fixed_palette(scene)
+    out = {}
+    for mode in ("period", "fixed"):
+        term = Terminal("t5688")
+        session = SigmaSession(SigmaHost(scene, pal, mode), term)
+        out[mode] = (session.show(view), term, session)
+    return out
+
+
+def test_period_leaks_and_fixed_does_not(sent) -> None:  # noqa: ANN001
+    period, fixed = sent["period"][0], sent["fixed"][0]
+    assert fixed.leaks == 0 and fixed.gaps == 0
+    assert np.array_equal(fixed.screen, fixed.frame.intended)
+    assert period.leaks > 10  # counted: fill colour outside the anti-aliased edges
+    # the picture the host meant is the same in both modes; only the outlines differ
+    assert np.array_equal(period.frame.intended, fixed.frame.intended)
+
+
+def test_leaking_pixels_are_polygon_colour_just_outside_an_edge(sent) -> None:  # noqa: ANN001
+    period = sent["period"][0]
+    screen, meant = period.screen, period.frame.intended
+    ys, xs = np.nonzero((screen != meant) & np.isin(screen, list(period.frame.flat_colours)))
+    assert len(ys) == period.leaks
+    fills = set(screen[ys, xs].tolist())
+    # every leaking colour is a polygon's flat colour the host meant somewhere else nearby
+    for y, x in zip(ys, xs):
+        c = screen[y, x]
+        near = meant[max(y - 2, 0):y + 3, max(x - 2, 0):x + 3]
+        assert (near == c).any(), (x, y, c)
+    assert len(fills) < len(ys)  # a few polygon colours, many pixels
+
+
+def test_the_stream_is_only_sigma_orders(sent) -> None:  # noqa: ANN001
+    for mode in ("period", "fixed"):
+        frame, term, session = sent[mode]
+        data = session.host.setup() + frame.frame.data
+        dec = Decoder()
+        commands = dec.feed(data)
+        # the CR before the graphics flag (as every driver sends it) is the only alpha byte
+        assert isinstance(commands[0], AlphaText) and commands[0].data == b"\r"
+        kinds = Counter(type(c).__name__ for c in commands[1:])
+        assert dec.stats.unknown == 0 and dec.stats.malformed == 0
+        assert set(kinds) <= {Order.__name__, Point.__name__, Points.__name__,
+                              GraphicsFlag.__name__}
+        assert term.stats["unknown"] == 0 and term.stats["malformed"] == 0
+        assert term.stats["errors"] == 0
+        assert term.stats["bytes"] == len(data)  # all of it crossed the line to the terminal
+        codes = Counter(c.code for c in Decoder().feed(data) if isinstance(c, Order))
+        assert codes["KK"] > 0 and codes["KI"] > 0 and codes["KG"] == 256
+        if mode == "period":
+            assert codes["GJ"] > 0  # firmware outlines
+
+
+def test_line_time_is_the_bytes_at_9600_baud(sent) -> None:  # noqa: ANN001
+    for mode in ("period", "fixed"):
+        frame = sent[mode][0]
+        assert frame.line_seconds == pytest.approx(len(frame.frame.data) * 10 / 9600)
+    # the software outlines cost line time: the cure is slower on the wire
+    assert sent["fixed"][0].line_seconds > sent["period"][0].line_seconds
+
+
+def test_fixed_mode_on_the_terminal_shows_the_host_picture_through_the_lut(sent) -> None:  # noqa: ANN001, E501
+    frame, term, session = sent["fixed"]
+    shown = term.frame()
+    assert np.array_equal(shown, session.host.palette.lut[frame.frame.intended])
