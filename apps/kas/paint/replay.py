@@ -82,3 +82,30 @@ def write_movie(images: list[np.ndarray], out: str | os.PathLike[str], fps: floa
     frames = [Drawing() for _ in images]
     by_id = {id(f): img for f, img in zip(frames, images, strict=True)}
     return export(AnimSequence(frames, fps), out, render_frame=lambda f: by_id[id(f)])
+
+
+def periods(program: PaintProgram, terminal: object, baud: int = 9600, fps: float = 25,
+            frames: range | None = None):  # noqa: ANN201 - a generator of period indices
+    """The replay one 1/fps of line time at a time, for a run loop that shows the screen
+    at that rate: yields k once the bytes that arrived in period k are fed to ``terminal``
+    (anything with ``feed``).  Returns the number of painted frames shown."""
+    from fractions import Fraction
+
+    from protocols.link import LineSettings, SerialLine, VirtualClock
+
+    clock = VirtualClock()
+    line = SerialLine(LineSettings(baud=baud), clock, xonxoff=False)
+    period = 1 / Fraction(fps).limit_denominator(10000)
+    line.host.write(program.setup())
+    k = 0
+    shown = 0
+    for j, n in enumerate(frames or range(1, len(program.seq.frames) + 1)):
+        buf = BUFFERS[j % 2]
+        line.host.write(program.frame(n, buf)[0] + program.show(buf.view))
+        shown += 1
+        while clock.exact < line.host.drain_time_exact():
+            clock.advance(period)
+            terminal.feed(line.device.read())  # type: ignore[attr-defined]
+            yield k
+            k += 1
+    return shown

@@ -14,7 +14,7 @@ from camlab88.areas import register_area
 
 HELP = "KAS, the keyframe animation suite (chapter 3)"
 ACTIONS = ("inbetween", "superimpose", "plot", "export", "schedule", "edit_script",
-           "path_script", "edit", "path", "view", "demo", "library")
+           "path_script", "edit", "path", "view", "demo", "library", "paint")
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
