@@ -27,7 +27,7 @@ from apps.snooker.state import BallState
 from apps.snooker.table import BALL_NAMES, Table
 from apps.snooker.timeline import Cursor, Frame, Timeline, Unit
 from protocols.atomicfile import write_atomic
-from protocols.textinput import read_json
+from protocols.textinput import quote, read_json
 
 FORMAT = "camlab88-snooker-session"
 VERSION = 1
@@ -240,7 +240,7 @@ class Session:
         if not isinstance(data, dict) or data.get("format") != FORMAT:
             raise SessionError(f"not a snooker session file (format {FORMAT!r} expected)")
         if data.get("version") != VERSION:
-            raise SessionError(f"unsupported session version {data.get('version')!r}")
+            raise SessionError(f"unsupported session version {quote(data.get('version'))}")
         try:
             table = Table(**data["table"])
         except (TypeError, ValueError) as exc:
@@ -261,7 +261,7 @@ class Session:
             if kind not in ("time", "event") or pos < 0:
                 raise ValueError
         except (TypeError, ValueError, KeyError, IndexError):
-            raise SessionError(f"bad cursor {data.get('cursor')!r}") from None
+            raise SessionError(f"bad cursor {quote(data.get('cursor'))}") from None
         return cls(tl, cursor)
 
 

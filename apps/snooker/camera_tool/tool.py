@@ -12,6 +12,7 @@ quits.  The left button on the time line scrubs; on the script it places the cur
 from __future__ import annotations
 
 import os
+import textwrap
 from pathlib import Path
 
 from apps.snooker.camera import ccl
@@ -124,7 +125,10 @@ class CameraTool:
         ]
         n = len(r.errors)
         lines.append((f"{n} error{'' if n == 1 else 's'}" if n else "no errors", 2 if n else 1))
-        lines += [(f"{e.line}:{e.col}: {e.message}", 2) for e in r.errors[:10]]
+        for e in r.errors[:10]:  # wrapped to the pane, continuation rows indented
+            rows = textwrap.wrap(f"{e.line}:{e.col}: {e.message}", layout.INFO_COLS - 2,
+                                 subsequent_indent="    ")
+            lines += [(row, 2) for row in rows]
         return lines
 
     # -- input ---------------------------------------------------------------------------

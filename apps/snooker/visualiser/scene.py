@@ -28,9 +28,8 @@ def ball_value(ball: int) -> int:
 
 def table_picture(camera: Camera, table: Table, width: int, height: int) -> np.ndarray:
     img = np.zeros((height, width), dtype=np.uint8)
-    for box in table_model.painter_order(table_model.boxes(table), camera.observer):
-        for corners, value in box.faces(camera.observer):
-            raster.draw_polygon(img, camera, corners, value)
+    order = table_model.painter_order(table_model.boxes(table), camera.observer)
+    raster.draw_polygons(img, camera, [f for box in order for f in box.faces(camera.observer)])
     return img
 
 
