@@ -79,7 +79,7 @@ def test_bad_tablet_source_is_a_clear_error(capsys) -> None:
     import pytest
 
     with pytest.raises(SystemExit, match="--tablet nonsense"):
-        main(["rainbow", "run", "--headless", "--frames", "1", "--tablet", "nonsense"])
+        main(["rainbow", "run", "--headless", "--stop-after", "1", "--tablet", "nonsense"])
 
 
 def test_demo_menu_by_mouse() -> None:
@@ -143,7 +143,7 @@ def test_serve_command_runs_a_program_over_a_socket(tmp_path) -> None:
 
 def test_run_record_then_replay_reproduces_the_frame(tmp_path, capsys) -> None:
     rec, a, b = tmp_path / "demo.rec", tmp_path / "a.png", tmp_path / "b.png"
-    assert main(["rainbow", "run", "--headless", "--frames", "12", "--record", str(rec),
+    assert main(["rainbow", "run", "--headless", "--stop-after", "12", "--record-stream", str(rec),
                  "--screenshot", str(a), "--screenshot-frame", "12"]) == 0
     assert main(["rainbow", "replay", str(rec), "--headless", "--screenshot", str(b)]) == 0
     assert "0 mismatches" in capsys.readouterr().out

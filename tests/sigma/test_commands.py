@@ -108,7 +108,7 @@ def test_pty_end_to_end_with_pyserial(tmp_path: Path) -> None:
     rec = tmp_path / "pty.rec"
     proc = subprocess.Popen(
         [sys.executable, "-m", "camlab88", "sigma", "run", "--headless", "--pty",
-         "--seconds", "4", "--screenshot", str(shot), "--record", str(rec)],
+         "--seconds", "4", "--screenshot", str(shot), "--record-line", str(rec)],
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:
         first = proc.stdout.readline()

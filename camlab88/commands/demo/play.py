@@ -45,7 +45,7 @@ class ActTarget:
             return False
         nxt = next(self.frames, None)
         if nxt is None:
-            self.k += 1  # holding: time goes on (paced), the picture stays
+            self.k += self.hold  # holding: time goes on (paced), the picture stays
             return self.hold
         self.last, self.k = nxt, self.k + 1
         return True
