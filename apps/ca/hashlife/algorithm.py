@@ -16,14 +16,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from apps.ca.hashlife import convert, evolve
-from apps.ca.hashlife.leaf import LeafRule, deterministic_reason, leaf_rule, order_matters
+from apps.ca.hashlife.leaf import deterministic_reason, order_matters, pack
 from apps.ca.hashlife.plane import frame
 from apps.ca.hashlife.store import TOP_LEVEL, NodeStore
 from apps.ca.rules import RuleSet
 
 # Leaves are this many levels above the smallest possible (2**(s+2) cells square, one
 # generation): bigger leaves run more generations directly per memoised result.
-LEAF_EXTRA = 1
+LEAF_EXTRA = 0
 DEFAULT_MEMORY = 512 << 20  # bytes of node table, as Golly's default "maximum memory"
 # Generations the direct engine takes at a time while order-dependent rules have live cells
 # at the wrapping plane's seam.
@@ -55,41 +55,38 @@ class Tree:
 
     def cells(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(ys, xs, types) of the live cells, row by row."""
-        rows = convert.cells(np.int64(self.node), self.store.ch, self.store.empty)
+        rows = convert.cells(np.int64(self.node), self.store.nodes, self.store.empty)
         return rows[:, 0].copy(), rows[:, 1].copy(), rows[:, 2].copy()
 
 
 @dataclass
 class _Run:
-    """What one rule set's jumps need: its node table and compiled leaf rule."""
+    """What one rule set's jumps need: its node table and packed rules."""
 
     store: NodeStore
-    rule: LeafRule
+    packed: np.ndarray
     params: np.ndarray  # int64 (leaf level, s, reach)
-    tables: tuple
-    grids: np.ndarray
+    grids: np.ndarray  # the leaf's scratch grids: cells, next cells, node ids, messages
     order_matters: bool
 
     @classmethod
     def of(cls, rules: RuleSet, memory: int) -> _Run:
         run = rules._tables.get("hashlife_run")
         if run is None:
-            rule = leaf_rule(rules)
-            leaf = rule.shift + 2 + LEAF_EXTRA
-            side = 1 << leaf
-            tables = tuple(np.ascontiguousarray(t, np.int64) for t in (
-                rule.inc, rule.mop, rule.mval, rule.lookup, rule.kind, rule.a, rule.b,
-                rule.form))
-            run = cls(NodeStore(limit_bytes=memory), rule,
-                      np.array([leaf, rule.shift, max(rule.ry, rule.rx, 1)], np.int64),
-                      tables, np.zeros((3, side, side), np.int64), order_matters(rules))
+            ry, rx = rules.reach
+            reach = max(ry, rx, 1)
+            shift = (reach - 1).bit_length()  # 2**shift >= the reach
+            leaf = shift + 2 + LEAF_EXTRA
+            run = cls(NodeStore(limit_bytes=memory), pack(rules),
+                      np.array([leaf, shift, reach], np.int64),
+                      np.zeros((4, 1 << leaf, 1 << leaf), np.int64), order_matters(rules))
             rules._tables["hashlife_run"] = run
         run.store.limit_bytes = int(memory)
         return run
 
     @property
     def max_j(self) -> int:
-        return TOP_LEVEL - 2 - self.rule.shift
+        return TOP_LEVEL - 2 - int(self.params[1])
 
 
 class HashLife:
@@ -129,7 +126,7 @@ class HashLife:
         """The longest jump, at most 2**j, in which no message can reach a cell within
         the reach of the seam (-1: none can)."""
         r = int(run.params[2])
-        while j >= 0 and convert.near_seam(node, r * ((1 << j) + 1), run.store.ch,
+        while j >= 0 and convert.near_seam(node, r * ((1 << j) + 1), run.store.nodes,
                                            run.store.empty):
             j -= 1
         return j
@@ -143,27 +140,34 @@ class HashLife:
         order = np.argsort(keys)
         s = run.store
         for _ in range(3):
-            node = int(convert.build(keys[order], ts[order], s.ch, s.lvl, s.slots, s.meta,
+            node = int(convert.build(keys[order], ts[order], s.nodes, s.slots, s.meta,
                                      s.empty))
             if node >= 0:
                 return node
-            s.make_room([])
+            if not s.grow_if_full():
+                s.make_room([])
         raise MemoryError("the plane does not fit the HashLife memory limit "
                           f"({s.limit_bytes >> 20} MB)")
 
     def _jump(self, run: _Run, node: int, j: int, edges: str) -> int:
-        """The plane ``node`` after 2**j generations; on a full table collect garbage (or
-        grow) and retry, and as a last resort take two jumps of half the length."""
+        """The plane ``node`` after 2**j generations; on a full table grow it (within the
+        memory limit) or collect garbage and retry, and as a last resort take two jumps of
+        half the length."""
         s = run.store
-        for _ in range(2):
+        collected = False
+        while True:
             try:
-                out = int(evolve.step(np.int64(frame(s, node, edges)), np.int64(j),
-                                      run.params, s.ch, s.lvl, s.res, s.resj, s.slots,
-                                      s.meta, s.empty, run.tables, run.grids))
+                out = evolve.advance(frame(s, node, edges), j, run.params, s, run.packed,
+                                     run.grids)
             except MemoryError:  # framing the plane found the table full
                 out = -1
             if out >= 0:
                 return out
+            if s.grow_if_full():
+                continue
+            if collected:
+                break
+            collected = True
             try:
                 (node,) = s.make_room([node])
             except MemoryError:

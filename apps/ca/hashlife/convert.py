@@ -24,7 +24,7 @@ def _morton(xs, ys):
 
 
 @njit(cache=True)
-def build(keys, values, ch, lvl, slots, meta, empty):
+def build(keys, values, nodes, slots, meta, empty):
     """The plane's node from cells sorted by Morton key (distinct keys, values > 0): each
     level groups runs of equal key >> 2 into a parent, absent quadrants empty; -1 if full."""
     n = keys.shape[0]
@@ -42,7 +42,7 @@ def build(keys, values, ch, lvl, slots, meta, empty):
             while i < n and keys[i] >> 2 == parent:
                 quads[keys[i] & 3] = ids[i]
                 i += 1
-            node = join(quads[0], quads[1], quads[2], quads[3], ch, lvl, slots, meta)
+            node = join(quads[0], quads[1], quads[2], quads[3], nodes, slots, meta)
             if node < 0:
                 return np.int64(-1)
             keys[m] = parent
@@ -53,19 +53,19 @@ def build(keys, values, ch, lvl, slots, meta, empty):
 
 
 @njit(cache=True)
-def _count(node, level, ch, empty):
+def _count(node, level, nodes, empty):
     if level == 0:
         return np.int64(1 if 0 < node < WALL else 0)
     if node == empty[level]:
         return np.int64(0)
     total = np.int64(0)
     for q in range(4):
-        total += _count(np.int64(ch[node, q]), level - 1, ch, empty)
+        total += _count(np.int64(nodes[node, q]), level - 1, nodes, empty)
     return total
 
 
 @njit(cache=True)
-def _emit(node, level, y0, x0, ch, empty, out, n):
+def _emit(node, level, y0, x0, nodes, empty, out, n):
     """Append (y, x, value) of the live cells of ``node`` to ``out`` from row ``n``."""
     if level == 0:
         if 0 < node < WALL:
@@ -76,24 +76,24 @@ def _emit(node, level, y0, x0, ch, empty, out, n):
         return n
     h = np.int64(1) << (level - 1)
     k = level - 1
-    n = _emit(np.int64(ch[node, 0]), k, y0, x0, ch, empty, out, n)
-    n = _emit(np.int64(ch[node, 1]), k, y0, x0 + h, ch, empty, out, n)
-    n = _emit(np.int64(ch[node, 2]), k, y0 + h, x0, ch, empty, out, n)
-    return _emit(np.int64(ch[node, 3]), k, y0 + h, x0 + h, ch, empty, out, n)
+    n = _emit(np.int64(nodes[node, 0]), k, y0, x0, nodes, empty, out, n)
+    n = _emit(np.int64(nodes[node, 1]), k, y0, x0 + h, nodes, empty, out, n)
+    n = _emit(np.int64(nodes[node, 2]), k, y0 + h, x0, nodes, empty, out, n)
+    return _emit(np.int64(nodes[node, 3]), k, y0 + h, x0 + h, nodes, empty, out, n)
 
 
 @njit(cache=True)
-def cells(node, ch, empty):
+def cells(node, nodes, empty):
     """(y, x, value) rows of the plane node's live cells, sorted row by row."""
     top = np.int64(PLANE_LEVEL)
-    out = np.empty((_count(node, top, ch, empty), 3), np.int64)
-    _emit(node, top, np.int64(0), np.int64(0), ch, empty, out, np.int64(0))
+    out = np.empty((_count(node, top, nodes, empty), 3), np.int64)
+    _emit(node, top, np.int64(0), np.int64(0), nodes, empty, out, np.int64(0))
     order = np.argsort(out[:, 0] * (np.int64(1) << PLANE_LEVEL) + out[:, 1])
     return out[order]
 
 
 @njit(cache=True)
-def any_live(node, level, y0, x0, top, bottom, left, right, ch, empty):
+def any_live(node, level, y0, x0, top, bottom, left, right, nodes, empty):
     """Whether ``node`` (its corner at y0, x0) has a live cell in rows top..bottom-1,
     columns left..right-1."""
     side = np.int64(1) << level
@@ -104,16 +104,16 @@ def any_live(node, level, y0, x0, top, bottom, left, right, ch, empty):
         return 0 < node < WALL
     h = side >> 1
     k = level - 1
-    return (any_live(np.int64(ch[node, 0]), k, y0, x0, top, bottom, left, right, ch, empty)
-            or any_live(np.int64(ch[node, 1]), k, y0, x0 + h, top, bottom, left, right, ch,
+    return (any_live(np.int64(nodes[node, 0]), k, y0, x0, top, bottom, left, right, nodes, empty)
+            or any_live(np.int64(nodes[node, 1]), k, y0, x0 + h, top, bottom, left, right, nodes,
                         empty)
-            or any_live(np.int64(ch[node, 2]), k, y0 + h, x0, top, bottom, left, right, ch,
+            or any_live(np.int64(nodes[node, 2]), k, y0 + h, x0, top, bottom, left, right, nodes,
                         empty)
-            or any_live(np.int64(ch[node, 3]), k, y0 + h, x0 + h, top, bottom, left, right,
-                        ch, empty))
+            or any_live(np.int64(nodes[node, 3]), k, y0 + h, x0 + h, top, bottom, left, right,
+                        nodes, empty))
 
 
-def near_seam(node: int, distance: int, ch: np.ndarray, empty: np.ndarray) -> bool:
+def near_seam(node: int, distance: int, nodes: np.ndarray, empty: np.ndarray) -> bool:
     """Whether the plane ``node`` has a live cell within ``distance`` of the wrapping
     plane's seam (the first or last ``distance`` rows or columns)."""
     side = 1 << PLANE_LEVEL
@@ -121,7 +121,7 @@ def near_seam(node: int, distance: int, ch: np.ndarray, empty: np.ndarray) -> bo
     strips = ((0, d, 0, side), (side - d, side, 0, side), (0, side, 0, d),
               (0, side, side - d, side))
     return any(any_live(np.int64(node), np.int64(PLANE_LEVEL), np.int64(0), np.int64(0),
-                        *(np.int64(v) for v in strip), ch, empty) for strip in strips)
+                        *(np.int64(v) for v in strip), nodes, empty) for strip in strips)
 
 
 def morton(xs: np.ndarray, ys: np.ndarray) -> np.ndarray:

@@ -7,6 +7,11 @@ overlapping sub-squares advance 2**(j-1) and the four squares built from their r
 advance 2**(j-1) more (Gosper 1984); below full speed the nine contribute their centres
 unadvanced and the four advance 2**j.  Leaves (level ``base``) run the rules directly
 (``leaf.generation``).  Every kernel returns -1 when the node table is full.
+
+Written for numba's costs as measured: the recursion is self-recursive only (a cached
+mutually recursive pair crashed the next process), passes few arrays (each array argument
+is reference-counted per call), keeps the nine and four squares in scalars (no heap
+allocation per call) and looks up memoised results before calling.
 """
 
 from __future__ import annotations
@@ -15,129 +20,177 @@ import numpy as np
 from numba import njit
 
 from apps.ca.hashlife.leaf import generation
-from apps.ca.hashlife.store import join
+from apps.ca.hashlife.store import LEVEL, RES, RESJ, join
 
 
 @njit(cache=True)
-def to_grid(node, level, g, y0, x0, ch, empty):
-    """Write the cells of ``node`` into g[y0:, x0:]."""
-    if level == 0:
-        g[y0, x0] = node
-        return
+def to_grid(node, level, G, p, nodes):
+    """Write the cells of ``node`` into plane ``p`` of G, splitting in place."""
     side = np.int64(1) << level
-    if node == empty[level]:
-        g[y0:y0 + side, x0:x0 + side] = 0
-        return
-    h = side >> 1
-    k = level - 1
-    to_grid(np.int64(ch[node, 0]), k, g, y0, x0, ch, empty)
-    to_grid(np.int64(ch[node, 1]), k, g, y0, x0 + h, ch, empty)
-    to_grid(np.int64(ch[node, 2]), k, g, y0 + h, x0, ch, empty)
-    to_grid(np.int64(ch[node, 3]), k, g, y0 + h, x0 + h, ch, empty)
+    G[p, 0, 0] = node
+    half = side
+    while half > 1:
+        quarter = half >> 1
+        for y in range(0, side, half):
+            for x in range(0, side, half):
+                n = G[p, y, x]
+                G[p, y, x] = nodes[n, 0]
+                G[p, y, x + quarter] = nodes[n, 1]
+                G[p, y + quarter, x] = nodes[n, 2]
+                G[p, y + quarter, x + quarter] = nodes[n, 3]
+        half = quarter
 
 
 @njit(cache=True)
-def from_grid(g, y0, x0, level, ids, ch, lvl, slots, meta):
-    """The node of the 2**level square g[y0:, x0:], built bottom-up in ``ids`` (scratch at
-    least that square); -1 if the table is full."""
+def from_grid(G, p, y0, x0, level, nodes, slots, meta):
+    """The node of the 2**level square at (y0, x0) of plane ``p``, built bottom-up in
+    plane 2; -1 if the table is full."""
     side = np.int64(1) << level
     for y in range(side):
         for x in range(side):
-            ids[y, x] = g[y0 + y, x0 + x]
+            G[2, y, x] = G[p, y0 + y, x0 + x]
     step = np.int64(1)
     while step < side:
         for y in range(0, side, 2 * step):
             for x in range(0, side, 2 * step):
-                n = join(ids[y, x], ids[y, x + step], ids[y + step, x],
-                         ids[y + step, x + step], ch, lvl, slots, meta)
+                n = join(G[2, y, x], G[2, y, x + step], G[2, y + step, x],
+                         G[2, y + step, x + step], nodes, slots, meta)
                 if n < 0:
                     return np.int64(-1)
-                ids[y, x] = n
+                G[2, y, x] = n
         step *= 2
-    return np.int64(ids[0, 0])
+    return np.int64(G[2, 0, 0])
 
 
 @njit(cache=True)
-def leaf_step(node, j, r, ch, lvl, slots, meta, empty, rule, grids):
-    """Centre of leaf ``node`` after 2**j generations, by running the rules on its grid."""
-    inc, mop, mval, lookup, kind, a, b, form = rule
-    level = np.int64(lvl[node])
+def leaf_step(node, j, r, nodes, slots, meta, R, G):
+    """Centre of leaf ``node`` after 2**j generations, by running the rules on its grid
+    (planes 0 and 1 of G in turn)."""
+    level = np.int64(nodes[node, LEVEL])
     n = np.int64(1) << level
-    src, dst, ids = grids[0], grids[1], grids[2]
-    to_grid(node, level, src, np.int64(0), np.int64(0), ch, empty)
+    to_grid(node, level, G, np.int64(0), nodes)
     total = np.int64(1) << j
+    s = np.int64(0)
     for g in range(1, total + 1):
         lo = n // 4 - (total - g) * r  # only what the later generations still need
-        generation(src, dst, lo, n - lo, inc, mop, mval, lookup, kind, a, b, form)
-        src, dst = dst, src
-    return from_grid(src, n // 4, n // 4, level - 1, ids, ch, lvl, slots, meta)
+        generation(G, s, 1 - s, lo, n - lo, R)
+        s = 1 - s
+    return from_grid(G, s, n // 4, n // 4, level - 1, nodes, slots, meta)
+
+
+@njit(cache=True, inline="always")
+def _q(nodes, n, q):
+    return np.int64(nodes[n, q])
 
 
 @njit(cache=True)
-def _centre(n, ch, lvl, slots, meta):
-    return join(np.int64(ch[ch[n, 0], 3]), np.int64(ch[ch[n, 1], 2]),
-                np.int64(ch[ch[n, 2], 1]), np.int64(ch[ch[n, 3], 0]), ch, lvl, slots, meta)
+def _centre(n, nodes, slots, meta):
+    """The centre half of ``n`` (no time passes); -1 if the table is full."""
+    return join(_q(nodes, _q(nodes, n, 0), 3), _q(nodes, _q(nodes, n, 1), 2),
+                _q(nodes, _q(nodes, n, 2), 1), _q(nodes, _q(nodes, n, 3), 0), nodes, slots,
+                meta)
+
+
+@njit(cache=True, inline="always")
+def _memo(n, j, nodes):
+    """The memoised result of ``n`` for 2**j generations, -2 if none (-1: n is -1)."""
+    if n < 0:
+        return n
+    if nodes[n, RESJ] == j:
+        return np.int64(nodes[n, RES])
+    return np.int64(-2)
 
 
 @njit(cache=True)
-def step(node, j, P, ch, lvl, res, resj, slots, meta, empty, rule, grids):
+def step(node, j, P, nodes, slots, meta, empty, R, G):
     """Centre of ``node`` after 2**j generations (j <= level - 2 - s); -1 if the table is
-    full.  ``P`` = (leaf level, s, reach).  Self-recursive only: numba's cache reloads a
-    mutually recursive pair wrongly (measured: a crash in the second process)."""
-    if resj[node] == j:
-        return np.int64(res[node])
-    k = np.int64(lvl[node])
+    full.  ``P`` = (leaf level, s, reach)."""
+    k = np.int64(nodes[node, LEVEL])
     if node == empty[k]:
         return np.int64(empty[k - 1])
     if k == P[0]:
-        out = leaf_step(node, j, P[2], ch, lvl, slots, meta, empty, rule, grids)
-        if out >= 0:
-            res[node] = out
-            resj[node] = j
-        return out
-    full = j == k - 2 - P[1]
-    nine = _nine(node, ch, lvl, slots, meta)
-    jj = j - 1 if full else j
-    for i in range(9):
-        if nine[i] < 0:
-            return np.int64(-1)
-        if full:
-            nine[i] = step(nine[i], jj, P, ch, lvl, res, resj, slots, meta, empty, rule, grids)
-        else:
-            nine[i] = _centre(nine[i], ch, lvl, slots, meta)
-        if nine[i] < 0:
-            return np.int64(-1)
-    four = np.empty(4, np.int64)
-    for q in range(4):
-        y, x = q // 2, q % 2
-        m = join(nine[3 * y + x], nine[3 * y + x + 1], nine[3 * y + x + 3],
-                 nine[3 * y + x + 4], ch, lvl, slots, meta)
-        if m < 0:
-            return np.int64(-1)
-        four[q] = step(m, jj, P, ch, lvl, res, resj, slots, meta, empty, rule, grids)
-        if four[q] < 0:
-            return np.int64(-1)
-    out = join(four[0], four[1], four[2], four[3], ch, lvl, slots, meta)
+        out = leaf_step(node, j, P[2], nodes, slots, meta, R, G)
+    else:
+        full = j == k - 2 - P[1]
+        jj = j - 1 if full else j
+        a, b, c, d = _q(nodes, node, 0), _q(nodes, node, 1), _q(nodes, node, 2), \
+            _q(nodes, node, 3)
+        nine = (a, join(_q(nodes, a, 1), _q(nodes, b, 0), _q(nodes, a, 3), _q(nodes, b, 2),
+                        nodes, slots, meta),
+                b, join(_q(nodes, a, 2), _q(nodes, a, 3), _q(nodes, c, 0), _q(nodes, c, 1),
+                        nodes, slots, meta),
+                join(_q(nodes, a, 3), _q(nodes, b, 2), _q(nodes, c, 1), _q(nodes, d, 0),
+                     nodes, slots, meta),
+                join(_q(nodes, b, 2), _q(nodes, b, 3), _q(nodes, d, 0), _q(nodes, d, 1),
+                     nodes, slots, meta),
+                c, join(_q(nodes, c, 1), _q(nodes, d, 0), _q(nodes, c, 3), _q(nodes, d, 2),
+                        nodes, slots, meta),
+                d)
+        # the order above: r00, r01, r02, r10, r11, r12, r20, r21, r22 (row by row)
+        r00 = r01 = r02 = r10 = r11 = r12 = r20 = r21 = r22 = np.int64(-1)
+        for i in range(9):
+            n = nine[i]
+            if n < 0:
+                return np.int64(-1)
+            if full:
+                v = _memo(n, jj, nodes)
+                if v == -2:
+                    v = step(n, jj, P, nodes, slots, meta, empty, R, G)
+            else:
+                v = _centre(n, nodes, slots, meta)
+            if v < 0:
+                return np.int64(-1)
+            if i == 0:
+                r00 = v
+            elif i == 1:
+                r01 = v
+            elif i == 2:
+                r02 = v
+            elif i == 3:
+                r10 = v
+            elif i == 4:
+                r11 = v
+            elif i == 5:
+                r12 = v
+            elif i == 6:
+                r20 = v
+            elif i == 7:
+                r21 = v
+            else:
+                r22 = v
+        four = (join(r00, r01, r10, r11, nodes, slots, meta),
+                join(r01, r02, r11, r12, nodes, slots, meta),
+                join(r10, r11, r20, r21, nodes, slots, meta),
+                join(r11, r12, r21, r22, nodes, slots, meta))
+        t0 = t1 = t2 = t3 = np.int64(-1)
+        for i in range(4):
+            n = four[i]
+            if n < 0:
+                return np.int64(-1)
+            v = _memo(n, jj, nodes)
+            if v == -2:
+                v = step(n, jj, P, nodes, slots, meta, empty, R, G)
+            if v < 0:
+                return np.int64(-1)
+            if i == 0:
+                t0 = v
+            elif i == 1:
+                t1 = v
+            elif i == 2:
+                t2 = v
+            else:
+                t3 = v
+        out = join(t0, t1, t2, t3, nodes, slots, meta)
     if out >= 0:
-        res[node] = out
-        resj[node] = j
+        nodes[node, RES] = out
+        nodes[node, RESJ] = j
     return out
 
 
-@njit(cache=True)
-def _nine(node, ch, lvl, slots, meta):
-    """The nine overlapping half-size squares of ``node``, row by row (-1: table full)."""
-    a, b, c, d = ch[node, 0], ch[node, 1], ch[node, 2], ch[node, 3]
-    nine = np.empty(9, np.int64)
-    nine[0], nine[2], nine[6], nine[8] = a, b, c, d
-    nine[1] = join(np.int64(ch[a, 1]), np.int64(ch[b, 0]), np.int64(ch[a, 3]),
-                   np.int64(ch[b, 2]), ch, lvl, slots, meta)
-    nine[3] = join(np.int64(ch[a, 2]), np.int64(ch[a, 3]), np.int64(ch[c, 0]),
-                   np.int64(ch[c, 1]), ch, lvl, slots, meta)
-    nine[4] = join(np.int64(ch[a, 3]), np.int64(ch[b, 2]), np.int64(ch[c, 1]),
-                   np.int64(ch[d, 0]), ch, lvl, slots, meta)
-    nine[5] = join(np.int64(ch[b, 2]), np.int64(ch[b, 3]), np.int64(ch[d, 0]),
-                   np.int64(ch[d, 1]), ch, lvl, slots, meta)
-    nine[7] = join(np.int64(ch[c, 1]), np.int64(ch[d, 0]), np.int64(ch[c, 3]),
-                   np.int64(ch[d, 2]), ch, lvl, slots, meta)
-    return nine
+def advance(node: int, j: int, params: np.ndarray, store, rules: np.ndarray,  # noqa: ANN001
+            grids: np.ndarray) -> int:
+    """The centre of ``node`` after 2**j generations (-1: the table filled up)."""
+    if store.nodes[node, RESJ] == j:
+        return int(store.nodes[node, RES])
+    return int(step(np.int64(node), np.int64(j), params, store.nodes, store.slots,
+                    store.meta, store.empty, rules, grids))

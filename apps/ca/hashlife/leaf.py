@@ -1,16 +1,13 @@
 """One generation of a rule set on a small grid of life-form values: HashLife's base case.
 
-The direct engine sends messages from each live cell (thesis section 7.5); here each cell
-gathers the messages it would receive, which is the same computation seen from the target:
-senders row by row, left to right (the order the engine applies them, so mixed operations
-give the same value), each sender contributing its one grid entry for this offset.  A cell
-that receives nothing is dead next generation, whatever the interpretation of 0 says; the
-``WALL`` outside a bounded plane sends nothing and never changes.
+The same computation as the direct engine's window kernel (thesis section 7.5): every live
+cell sends its messages, senders row by row and left to right, each sender's grid row by
+row, so mixed operations give the same value; a cell that receives nothing is dead next
+generation, whatever the interpretation of 0 says; the ``WALL`` outside a bounded plane
+sends nothing and never changes.  The rules travel as one packed int64 array (``pack``).
 """
 
 from __future__ import annotations
-
-from dataclasses import dataclass
 
 import numpy as np
 from numba import njit
@@ -20,29 +17,15 @@ from apps.ca.rules import OP_ADD, OP_AND, OP_OR, OP_XOR, RuleSet
 from apps.ca.tables import LOOKUP_SIZE, compile_rules
 
 M32 = 0xFFFFFFFF
+# Header of the packed rules: counts, then where each table starts in the array.
+H_TYPES, H_LINES, H_RY, H_RX, H_START, H_DY, H_DX, H_OP, H_VAL, H_LOOKUP, H_KIND, H_A, H_B, \
+    H_FORM = range(14)
+HEADER = 16
 
 
 class NotDeterministic(ValueError):
     """The rule set has section 8.1 probabilistic outcomes or broadcasts: HashLife cannot
     memoise it (the result of a region would depend on where and when it is)."""
-
-
-@dataclass(frozen=True)
-class LeafRule:
-    """The rules as gather tables: ``inc[t, oy + ry, ox + rx]`` is the message a life-form
-    ``t`` at offset (oy, ox) from a cell sends to it (-1: none)."""
-
-    inc: np.ndarray  # int64[T, 2ry+1, 2rx+1]
-    mop: np.ndarray  # int64[M] operation of each message
-    mval: np.ndarray  # int64[M]
-    lookup: np.ndarray  # int64[65536]: interpretation line of small values, -1 = dies
-    kind: np.ndarray  # int64[I] the lines, for values beyond the lookup table
-    a: np.ndarray
-    b: np.ndarray
-    form: np.ndarray  # int64[I] the life-form each line gives
-    ry: int
-    rx: int
-    shift: int  # s: 2**s >= the reach, so a level-k node steps 2**(k-2-s) generations
 
 
 def deterministic_reason(rules: RuleSet) -> str | None:
@@ -80,27 +63,25 @@ def order_matters(rules: RuleSet) -> bool:
     return bool(bits & ((1 << most.bit_length()) - 1))
 
 
-def leaf_rule(rules: RuleSet) -> LeafRule:
-    """The gather tables of ``rules`` (cached on the rule set)."""
-    cached = rules._tables.get("hashlife_leaf")
-    if cached is not None:
-        return cached
+def pack(rules: RuleSet) -> np.ndarray:
+    """The rules' tables in one int64 array: a header of counts and offsets, then the
+    send tables, the interpretation lookup and lines, and each line's life-form."""
     reason = deterministic_reason(rules)
     if reason is not None:
         raise NotDeterministic(f"HashLife cannot run {rules.source}: {reason}")
     t = compile_rules(rules)
-    ry, rx = t.reach_y, t.reach_x
-    ntypes = t.send_start.shape[0] - 1
-    inc = np.full((ntypes, 2 * ry + 1, 2 * rx + 1), -1, np.int64)
-    for form in range(1, ntypes):
-        for k in range(t.send_start[form], t.send_start[form + 1]):
-            inc[form, ry - t.send_dy[k], rx - t.send_dx[k]] = k
-    reach = max(ry, rx, 1)
-    rule = LeafRule(inc, t.send_op.copy(), t.send_val.copy(), t.lookup, t.interp_kind,
-                    t.interp_a, t.interp_b, t.out_form[t.out_start[:-1]].copy(), ry, rx,
-                    (reach - 1).bit_length())
-    rules._tables["hashlife_leaf"] = rule
-    return rule
+    form = t.out_form[t.out_start[:-1]]
+    parts = [t.send_start, t.send_dy, t.send_dx, t.send_op, t.send_val, t.lookup,
+             t.interp_kind, t.interp_a, t.interp_b, form]
+    head = np.zeros(HEADER, np.int64)
+    head[H_TYPES] = t.send_start.shape[0] - 1
+    head[H_LINES] = t.interp_kind.shape[0]
+    head[H_RY], head[H_RX] = t.reach_y, t.reach_x
+    at = HEADER
+    for h, part in zip(range(H_START, H_FORM + 1), parts):
+        head[h] = at
+        at += part.shape[0]
+    return np.concatenate([head, *(np.asarray(p, np.int64) for p in parts)])
 
 
 @njit(cache=True, inline="always")
@@ -115,46 +96,55 @@ def _apply(cur, op, val):
 
 
 @njit(cache=True)
-def _interpret(v, lookup, kind, a, b, form):
+def _interpret(v, R):
+    """The life-form a cell with message value ``v`` becomes (0: dies)."""
     if v < LOOKUP_SIZE:
-        i = lookup[v]
+        i = R[R[H_LOOKUP] + v]
     else:
         i = -1
-        for j in range(kind.shape[0]):
-            if kind[j] == 0:
-                hit = v == a[j]
-            elif kind[j] == 1:
-                hit = (v & a[j]) == b[j]
+        kind, a, b = R[H_KIND], R[H_A], R[H_B]
+        for j in range(R[H_LINES]):
+            k = R[kind + j]
+            if k == 0:
+                hit = v == R[a + j]
+            elif k == 1:
+                hit = (v & R[a + j]) == R[b + j]
             else:
-                hit = a[j] <= v <= b[j]
+                hit = R[a + j] <= v <= R[b + j]
             if hit:
                 i = j
                 break
-    return 0 if i < 0 else form[i]
+    return np.int64(0) if i < 0 else R[R[H_FORM] + i]
 
 
 @njit(cache=True)
-def generation(src, dst, lo, hi, inc, mop, mval, lookup, kind, a, b, form):
-    """dst[y, x] = next value of src[y, x] for lo <= y, x < hi (the caller keeps the reach
-    of every such cell inside src)."""
-    ntypes, h, w = inc.shape
-    ry, rx = h // 2, w // 2
+def generation(G, s, d, lo, hi, R):
+    """G[d, y, x] = next value of G[s, y, x] for lo <= y, x < hi (the caller keeps the
+    reach of every such cell inside the grid); G[3] is the message scratch.  (Planes of
+    one array, not views: numba reference-counts every view.)"""
+    ntypes, ry, rx = R[H_TYPES], R[H_RY], R[H_RX]
+    start, sdy, sdx, sop, sval = R[H_START], R[H_DY], R[H_DX], R[H_OP], R[H_VAL]
     for y in range(lo, hi):
         for x in range(lo, hi):
-            c = src[y, x]
-            if c == WALL:
-                dst[y, x] = WALL
+            G[3, y, x] = -1  # -1: received nothing (message values are 32-bit, >= 0)
+    for y in range(lo - ry, hi + ry):
+        for x in range(lo - rx, hi + rx):
+            t = G[s, y, x]
+            if t <= 0 or t >= ntypes:
                 continue
-            got = False
-            v = np.int64(0)  # int64, not literal 0: one cached signature for _interpret
-            for oy in range(h):
-                row = src[y + oy - ry]
-                for ox in range(w):
-                    t = row[x + ox - rx]
-                    if t <= 0 or t >= ntypes:
-                        continue
-                    k = inc[t, oy, ox]
-                    if k >= 0:
-                        v = _apply(v, mop[k], mval[k])
-                        got = True
-            dst[y, x] = _interpret(np.int64(v), lookup, kind, a, b, form) if got else 0
+            for k in range(R[start + t], R[start + t + 1]):
+                ty = y + R[sdy + k]
+                tx = x + R[sdx + k]
+                if lo <= ty < hi and lo <= tx < hi:
+                    cur = G[3, ty, tx]
+                    G[3, ty, tx] = _apply(cur if cur >= 0 else np.int64(0), R[sop + k],
+                                         R[sval + k])
+    for y in range(lo, hi):
+        for x in range(lo, hi):
+            v = G[3, y, x]
+            if G[s, y, x] == WALL:
+                G[d, y, x] = WALL
+            elif v < 0:
+                G[d, y, x] = 0
+            else:
+                G[d, y, x] = _interpret(v, R)

@@ -17,7 +17,7 @@ from apps.ca.hashlife.store import NodeStore
 
 def frame(store: NodeStore, plane: int, edges: str) -> int:
     """The level-17 node whose centre is the level-16 ``plane`` on a plane with ``edges``."""
-    nw, ne, sw, se = (int(q) for q in store.ch[plane])
+    nw, ne, sw, se = store.quadrants(plane)
     if edges == "wrap":
         rolled = store.join(se, sw, ne, nw)
         return store.join(rolled, rolled, rolled, rolled)

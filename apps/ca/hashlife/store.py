@@ -1,11 +1,12 @@
 """The hash-consed node table (numba open addressing) and its garbage collection.
 
 Node ids below ``LEAF_IDS`` are level-0 nodes: the life-form value itself (0 = dead, 1..65535)
-or ``WALL``, the outside of a bounded plane.  Every other id is a row of ``ch`` (the four
-quadrants nw, ne, sw, se), created at most once per distinct quadruple by :func:`join`.
-Each node also keeps one memoised result (``res``) and the generation exponent it is for
-(``resj``, -1 = none).  Kernels return -1 when the table is full; the caller collects
-garbage or grows the table and tries again.
+or ``WALL``, the outside of a bounded plane.  Every other id is a row of ``nodes``, created
+at most once per distinct quadruple of quadrants by :func:`join`.  A row holds, packed in one
+int32 array so the recursion passes one array (measured: numba reference-counts every array
+argument of every call): the quadrants nw, ne, sw, se; the memoised result and the
+generation exponent it is for (-1: none); the level.  Kernels return -1 when the table is
+full; the caller collects garbage or grows the table and tries again.
 """
 
 from __future__ import annotations
@@ -16,7 +17,9 @@ from numba import njit
 WALL = 65536  # level-0 value outside a bounded plane: never changes, sends nothing
 LEAF_IDS = WALL + 1
 TOP_LEVEL = 17  # the 65536-square plane is level 16; stepping frames it in a level-17 node
-BYTES_PER_NODE = 4 * 4 + 1 + 4 + 1 + 2 * 4  # ch, lvl, res, resj, two hash slots
+RES, RESJ, LEVEL = 4, 5, 6  # columns of a node row after its four quadrants
+ROW = 8  # int32 per row (two spare: rows stay 32-byte aligned)
+BYTES_PER_NODE = 4 * ROW + 2 * 4  # the row and two hash slots
 MIN_CAPACITY = 1 << 17  # a power of two (so is the hash index, twice as long) > LEAF_IDS
 
 
@@ -29,8 +32,8 @@ def _hash4(a, b, c, d, mask):
     return np.int64((h ^ (h >> np.uint64(29))) & np.uint64(mask))
 
 
-@njit(cache=True)
-def join(a, b, c, d, ch, lvl, slots, meta):
+@njit(cache=True, inline="always")
+def join(a, b, c, d, nodes, slots, meta):
     """The node with quadrants a, b, c, d (nw, ne, sw, se; equal levels), made at most once;
     -1 if the table is full."""
     mask = slots.shape[0] - 1
@@ -39,36 +42,37 @@ def join(a, b, c, d, ch, lvl, slots, meta):
         i = slots[s]
         if i < 0:
             break
-        if ch[i, 0] == a and ch[i, 1] == b and ch[i, 2] == c and ch[i, 3] == d:
+        if nodes[i, 0] == a and nodes[i, 1] == b and nodes[i, 2] == c and nodes[i, 3] == d:
             return np.int64(i)
         s = (s + 1) & mask
     n = meta[0]
-    if n >= ch.shape[0]:
+    if n >= nodes.shape[0]:
         return np.int64(-1)
     slots[s] = n
-    ch[n, 0] = a
-    ch[n, 1] = b
-    ch[n, 2] = c
-    ch[n, 3] = d
-    lvl[n] = lvl[a] + 1
+    nodes[n, 0] = a
+    nodes[n, 1] = b
+    nodes[n, 2] = c
+    nodes[n, 3] = d
+    nodes[n, RESJ] = -1
+    nodes[n, LEVEL] = (nodes[a, LEVEL] if a >= LEAF_IDS else 0) + 1
     meta[0] = n + 1
     return np.int64(n)
 
 
 @njit(cache=True)
-def rehash(ch, slots, n):
+def rehash(nodes, slots, n):
     """Enter nodes LEAF_IDS..n-1 (all distinct) into an empty hash index."""
     mask = slots.shape[0] - 1
     for i in range(LEAF_IDS, n):
-        s = _hash4(np.int64(ch[i, 0]), np.int64(ch[i, 1]), np.int64(ch[i, 2]),
-                   np.int64(ch[i, 3]), mask)
+        s = _hash4(np.int64(nodes[i, 0]), np.int64(nodes[i, 1]), np.int64(nodes[i, 2]),
+                   np.int64(nodes[i, 3]), mask)
         while slots[s] >= 0:
             s = (s + 1) & mask
         slots[s] = i
 
 
 @njit(cache=True)
-def collect(roots, ch, lvl, resj, slots, meta):
+def collect(roots, nodes, slots, meta):
     """Keep only the nodes reachable from ``roots`` (renumbered, children before parents,
     as they were made), forget every memoised result, rebuild the hash; roots are rewritten
     with their new ids.  Returns the number of nodes kept."""
@@ -86,7 +90,7 @@ def collect(roots, ch, lvl, resj, slots, meta):
             continue
         keep[i] = 1
         for q in range(4):
-            stack[top] = ch[i, q]
+            stack[top] = nodes[i, q]
             top += 1
     new = np.arange(n, dtype=np.int64)
     m = LEAF_IDS
@@ -94,13 +98,13 @@ def collect(roots, ch, lvl, resj, slots, meta):
         if keep[i]:
             new[i] = m
             for q in range(4):
-                ch[m, q] = new[ch[i, q]]
-            lvl[m] = lvl[i]
+                nodes[m, q] = new[nodes[i, q]]
+            nodes[m, RESJ] = -1
+            nodes[m, LEVEL] = nodes[i, LEVEL]
             m += 1
-    resj[:] = -1
     slots[:] = -1
     meta[0] = m
-    rehash(ch, slots, np.int64(m))
+    rehash(nodes, slots, np.int64(m))
     for r in range(roots.shape[0]):
         roots[r] = new[roots[r]]
     return m
@@ -109,7 +113,7 @@ def collect(roots, ch, lvl, resj, slots, meta):
 class NodeStore:
     """The arrays of one rule set's node table, its memory limit and garbage collection."""
 
-    def __init__(self, capacity: int = 1 << 18, limit_bytes: int = 512 << 20) -> None:
+    def __init__(self, capacity: int = 1 << 20, limit_bytes: int = 512 << 20) -> None:
         self.limit_bytes = int(limit_bytes)
         self.epoch = 0  # bumped by every collection: node ids of older epochs are void
         cap = MIN_CAPACITY
@@ -124,12 +128,9 @@ class NodeStore:
         self.wall = self._tower(WALL)
 
     def _allocate(self, cap: int) -> None:
-        self.ch = np.zeros((cap, 4), np.int32)
-        self.lvl = np.zeros(cap, np.int8)
-        self.res = np.zeros(cap, np.int32)
-        self.resj = np.full(cap, -1, np.int8)
-        hcap = 2 * cap  # load factor at most 1/2
-        self.slots = np.full(hcap, -1, np.int32)
+        self.nodes = np.zeros((cap, ROW), np.int32)
+        self.nodes[:, RESJ] = -1
+        self.slots = np.full(2 * cap, -1, np.int32)  # load factor at most 1/2
         self.meta = np.array([LEAF_IDS], np.int64)
 
     @property
@@ -138,52 +139,57 @@ class NodeStore:
 
     @property
     def capacity(self) -> int:
-        return int(self.ch.shape[0])
+        return int(self.nodes.shape[0])
 
     @property
     def bytes(self) -> int:
-        return self.ch.nbytes + self.lvl.nbytes + self.res.nbytes + self.resj.nbytes \
-            + self.slots.nbytes
+        return self.nodes.nbytes + self.slots.nbytes
+
+    def quadrants(self, node: int) -> tuple[int, int, int, int]:
+        nw, ne, sw, se = (int(q) for q in self.nodes[node, :4])
+        return nw, ne, sw, se
 
     def _tower(self, value: int) -> np.ndarray:
         """The uniform node of every level 0..TOP_LEVEL filled with ``value``."""
         ids = np.zeros(TOP_LEVEL + 1, np.int64)
         ids[0] = value
         for k in range(1, TOP_LEVEL + 1):
-            a = np.int64(ids[k - 1])
-            ids[k] = join(a, a, a, a, self.ch, self.lvl, self.slots, self.meta)
+            ids[k] = self.join(*(int(ids[k - 1]),) * 4)
         return ids
 
     def join(self, a: int, b: int, c: int, d: int) -> int:
-        n = int(join(np.int64(a), np.int64(b), np.int64(c), np.int64(d), self.ch, self.lvl,
+        n = int(join(np.int64(a), np.int64(b), np.int64(c), np.int64(d), self.nodes,
                      self.slots, self.meta))
         if n < 0:
             raise MemoryError("node table full")
         return n
 
     def make_room(self, roots: list[int]) -> list[int]:
-        """Collect garbage keeping ``roots`` (returned renumbered); then, if the table is
-        still over half full, double it while that stays within the memory limit.  Raises
-        MemoryError if neither freed anything."""
+        """Collect garbage keeping ``roots`` (returned renumbered).  Raises MemoryError if
+        that freed (almost) nothing."""
         keep = np.array([*roots, *self.empty, *self.wall], np.int64)
-        collect(keep, self.ch, self.lvl, self.resj, self.slots, self.meta)
+        collect(keep, self.nodes, self.slots, self.meta)
         self.epoch += 1
         n = len(roots)
         self.empty, self.wall = keep[n:n + TOP_LEVEL + 1], keep[n + TOP_LEVEL + 1:]
-        if 2 * self.count > self.capacity and 2 * self.bytes <= self.limit_bytes:
-            self._grow()
-        elif 10 * self.count > 9 * self.capacity:  # collecting freed (almost) nothing
+        if 10 * self.count > 9 * self.capacity:
             raise MemoryError(f"the HashLife node table is full ({self.count} nodes, "
                               f"{self.bytes >> 20} MB) and the memory limit "
                               f"({self.limit_bytes >> 20} MB) allows no more")
         return [int(r) for r in keep[:n]]
 
+    def grow_if_full(self) -> bool:
+        """Double the table instead of collecting while it is small (results survive
+        growing, not collecting); False once the memory limit stops it."""
+        if 2 * self.bytes > self.limit_bytes:
+            return False
+        self._grow()
+        return True
+
     def _grow(self) -> None:
         """Double the table; every node keeps its id and its memoised result."""
-        old = (self.ch, self.lvl, self.res, self.resj)
-        n = self.count
+        old, n = self.nodes, self.count
         self._allocate(2 * self.capacity)
-        for new, was in zip((self.ch, self.lvl, self.res, self.resj), old):
-            new[:n] = was[:n]
+        self.nodes[:n] = old[:n]
         self.meta[0] = n
-        rehash(self.ch, self.slots, np.int64(n))
+        rehash(self.nodes, self.slots, np.int64(n))
