@@ -2,23 +2,65 @@
 
 Kept apart from the Python-level logic so the rules they implement can be read in
 compiler.py / video.py and the per-pixel reference without wading through loops.
+
+Compiled lazily, like emulator.sigma.raster: importing this module (so emulator.rainbow, so
+any command module that names a Rainbow type) does not import numba, about 0.15-0.2 s, nor
+load a kernel from the cache (another 0.2 s); the first call of any kernel does both, for
+all of them.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
 import numpy as np
-from numba import njit
 
-from protocols.kernel_notice import announce_compiles
+_PY: dict[str, Callable[..., Any]] = {}  # kernel name -> plain Python definition, in order
+_SIGNATURES: dict[str, str] = {}  # kernel name -> its explicit numba signature, if it has one
 
-announce_compiles("Rainbow", 9.0, __name__)  # cold compile time, measured
+
+def _compile_all() -> None:
+    from numba import njit
+
+    from protocols.kernel_notice import announce_compiles
+
+    announce_compiles("Rainbow", 9.0, __name__)  # cold compile time, measured
+    g = globals()
+    for name, fn in _PY.items():  # callees first, so callers resolve them as compiled kernels
+        if getattr(g[name], "_lazy", False) and g[name].py_func is fn:
+            sig = _SIGNATURES.get(name)
+            g[name] = njit(sig, cache=True)(fn) if sig else njit(cache=True)(fn)
+
+
+def _kernel(fn: Callable[..., Any], signature: str | None = None) -> Callable[..., Any]:
+    """Register a numba kernel; the module name is bound to a stub until the first call."""
+    _PY[fn.__name__] = fn
+    if signature:
+        _SIGNATURES[fn.__name__] = signature
+
+    def first_call(*args: Any) -> Any:
+        _compile_all()
+        return globals()[fn.__name__](*args)
+
+    first_call.__name__ = fn.__name__
+    first_call.__doc__ = fn.__doc__
+    first_call.py_func = fn  # type: ignore[attr-defined]
+    first_call._lazy = True  # type: ignore[attr-defined]
+    return first_call
+
+
+def _signed(signature: str) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
+    """``_kernel`` with an explicit numba signature."""
+    return lambda fn: _kernel(fn, signature)
+
 
 # Columns of the instance table handed to the compiler kernel.
 I_Y0, I_Y1, I_X0, I_X1, I_OX, I_OY, I_RANK, I_PAD, I_MX, I_MY, I_PLANE, I_DEPTH, I_PAGE = range(13)
 INSTANCE_COLUMNS = 13
 
 
-@njit(cache=True)
+@_kernel
 def _grow(a, need):
     if need <= a.shape[0]:
         return a
@@ -27,7 +69,7 @@ def _grow(a, need):
     return b
 
 
-@njit(cache=True)
+@_kernel
 def _less(a, i, j):
     for c in range(a.shape[1]):
         if a[i, c] != a[j, c]:
@@ -38,7 +80,7 @@ def _less(a, i, j):
 # An explicit signature: compile_rows first types ``nc`` as the literal 0, and a second
 # (literal) signature in the on-disk cache can be mixed up with this one by two processes
 # compiling at once (docs/development.md, "numba's cache").
-@njit("int64(int64[:, ::1], int64)", cache=True)
+@_signed("int64(int64[:, ::1], int64)")
 def _sort_unique(cand, nc):
     """Sort the first nc rows lexicographically and drop repeats: a canonical tie order."""
     for p in range(1, nc):
@@ -59,7 +101,7 @@ def _sort_unique(cand, nc):
     return m
 
 
-@njit(cache=True)
+@_kernel
 def compile_rows(ya, yb, width, inst):
     """Band structure for screen rows ya..yb-1 from the instance table (see bands.py)."""
     n = inst.shape[0]
@@ -207,7 +249,7 @@ def compile_rows(ya, yb, width, inst):
     return bands[:nb].copy(), spans[:nsp].copy(), srcs[:nsr].copy()
 
 
-@njit(cache=True)
+@_kernel
 def scanout(bands, spans, srcs, words, lut, out):
     """Fill ``out`` (h, w, 3) from the band structure, memory words and the 4096-entry LUT."""
     for b in range(bands.shape[0]):
