@@ -72,3 +72,13 @@ def test_periods_and_the_session_file_give_the_same(result: ccl.Interpretation) 
     text = (DATA / "thesis_example.ccl").read_text()
     again = ccl.compile_script(text, motion.load(DATA / "pink_shot.session.json"))
     assert again.views() == result.views()
+
+
+def test_the_demo_plays_the_example_as_printed() -> None:
+    from apps.snooker.visualiser.demo import EXAMPLE_SCRIPT, play_example
+    from emulator.rainbow.session import in_process
+
+    assert EXAMPLE_SCRIPT == (DATA / "thesis_example.ccl").read_text()
+    rb = in_process()
+    shown: list[int] = []
+    assert play_example(rb.client, shown.append) == 75 and shown == list(range(1, 76))
