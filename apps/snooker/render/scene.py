@@ -14,10 +14,10 @@ from functools import cached_property
 import numpy as np
 
 from apps.snooker import checkpoint as ckpt
+from apps.snooker.camera import motion
 from apps.snooker.camera.space import checkpoint_centres
 from apps.snooker.render.lights import Lights, canopy
 from apps.snooker.render.specks import orientations
-from apps.snooker.session import Session
 from apps.snooker.table import Table
 
 
@@ -55,11 +55,7 @@ class Scene:
 
 
 def load_scene(path: str | os.PathLike[str], lights: Lights | None = None) -> Scene:
-    """A checkpoint (§6.2.2) or a saved session (JSON) -> Scene; errors name file:line."""
-    p = os.fspath(path)
-    with open(p, "rb") as fh:
-        head = fh.read(64).lstrip()
-    if head.startswith(b"{"):
-        session = Session.load(p)
-        return Scene.from_checkpoint(session.checkpoint(), session.table, lights)
-    return Scene.from_checkpoint(ckpt.read(p), None, lights)
+    """A checkpoint (§6.2.2) or a saved session (JSON) -> Scene, read as the camera issue
+    reads it (so frame numbers agree with the view file); errors name file:line."""
+    m = motion.load(path)
+    return Scene(m.table, m.centres, m.on_table, lights or canopy())

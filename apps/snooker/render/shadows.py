@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from apps.snooker.render.clip import clip_box
 from apps.snooker.render.tablemodel import CUSHION_H_M, OUTWARD, SIDES
 
 
@@ -58,27 +59,7 @@ def cushion_shadow_polygons(hl: float, hw: float,
             inward = [-(p[0] * ox + p[1] * oy - edge) for p in tip]  # > 0: on the baize
             if max(inward) <= 0:
                 continue
-            poly = _clip_box(np.array([foot[0], foot[1], tip[1], tip[0]]), hl, hw)
+            poly = clip_box(np.array([foot[0], foot[1], tip[1], tip[0]]), hl, hw)
             if len(poly) >= 3:
                 out.append((li, np.hstack([poly, np.zeros((len(poly), 1))])))
     return out
-
-
-def _clip_box(poly: np.ndarray, hl: float, hw: float) -> np.ndarray:
-    """Sutherland-Hodgman clip of a 2-D polygon to |x| <= hl, |y| <= hw."""
-    pts = [p for p in poly]
-    for axis, lim, sign in ((0, hl, 1), (0, hl, -1), (1, hw, 1), (1, hw, -1)):
-        res = []
-        for k, p in enumerate(pts):
-            q = pts[(k + 1) % len(pts)] if pts else p
-            pin = sign * p[axis] <= lim + 1e-12
-            qin = sign * q[axis] <= lim + 1e-12
-            if pin:
-                res.append(p)
-            if pin != qin:
-                t = (lim * sign - p[axis]) / (q[axis] - p[axis])
-                res.append(p + t * (q - p))
-        pts = res
-        if not pts:
-            break
-    return np.array(pts, dtype=np.float64).reshape(-1, 2)

@@ -1,8 +1,9 @@
 """The host program and a terminal joined by the 9600-baud line (virtual clock).
 
 The terminal is whatever the caller plugs in (the command wires the emulated T5688): it
-only has to take the bytes that arrive (``feed``) and show its screen's LUT indices
-(``indices``, row 0 at the bottom, as the Sigma's y axis points up). The host writes each
+only has to take the bytes that arrive (``feed``), show its screen's LUT indices
+(``indices``, row 0 at the bottom, as the Sigma's y axis points up) and its picture
+(``frame``, RGB, row 0 at the top). The host writes each
 frame's orders to the line; the line delivers them at 9600 baud; the frame's line time is
 when its last byte arrives minus when its first was sent.
 """
@@ -23,6 +24,8 @@ class TerminalLike(Protocol):
     def feed(self, data: bytes) -> None: ...
 
     def indices(self) -> np.ndarray: ...
+
+    def frame(self) -> np.ndarray: ...
 
 
 @dataclass(frozen=True)

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from apps.snooker.render.clip import clip_box
 from apps.snooker.table import Table
 
 CUSHION_W_M = 0.05
@@ -77,15 +78,10 @@ def _vertical(side: str, hl: float, hw: float, d: float, z0: float, z1: float,
 
 
 def _pocket(name: str, cx: float, cy: float, r: float, hl: float, hw: float) -> Face | None:
+    """A pocket's mouth on the baize: its circle, clipped to the playing surface."""
     ang = np.linspace(0.0, 2 * math.pi, 24, endpoint=False)
-    ring = [(cx + r * math.cos(a), cy + r * math.sin(a)) for a in ang]
-    inside = [(min(max(x, -hl), hl), min(max(y, -hw), hw)) for x, y in ring]
-    pts: list[tuple[float, float]] = []
-    for q in inside:  # clamping a convex ring to a box keeps it convex; drop repeats
-        if not pts or math.dist(q, pts[-1]) > 1e-9:
-            pts.append(q)
-    if len(pts) > 1 and math.dist(pts[0], pts[-1]) < 1e-9:
-        pts.pop()
+    ring = np.stack([cx + r * np.cos(ang), cy + r * np.sin(ang)], axis=1)
+    pts = clip_box(ring, hl, hw)
     if len(pts) < 3:
         return None
     return _face(f"pocket {name}", "pocket", "", [(x, y, 0.0) for x, y in pts], "pocket")

@@ -1,0 +1,114 @@
+"""``camlab88 snooker render CHECKPOINT|SESSION VIEWS --frames DIR``: finished frames
+(thesis 6.4, 6.4.1) — ``period`` and ``fixed`` on the emulated Sigma T5688 over the
+9600-baud line, ``truecolour`` in 24-bit at any size; frame_NNNNN.png numbered as the
+checkpoint's frames (from 1)."""
+
+from __future__ import annotations
+
+import argparse
+import os
+import shutil
+import sys
+import tempfile
+from pathlib import Path
+
+from camlab88.runopts import fail, frames_dir, positive, progress
+
+COMMAND = "camlab88 snooker render"
+
+
+def _size(text: str) -> tuple[int, int]:
+    w, sep, h = text.lower().partition("x")
+    if not (sep and w.isascii() and w.isdigit() and h.isascii() and h.isdigit()):
+        raise argparse.ArgumentTypeError(f"expected WxH such as 768x512, not {text!r}")
+    if not (8 <= int(w) <= 8192 and 8 <= int(h) <= 8192):
+        raise argparse.ArgumentTypeError(f"{text}: each side must be 8..8192 pixels")
+    return int(w), int(h)
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    s = actions.add_parser(
+        "render", help="finished frames on the emulated Sigma T5688 or in true colour (§6.4)",
+        description="Render every frame of a view file over a checkpoint or session. "
+        "--mode period: the 1984 program on the emulated T5688 over the 9600-baud line "
+        "(firmware outlines + flood fill: polygon colour leaks past the anti-aliased edges, "
+        "counted); fixed: the same with software Bresenham outlines (no leaks); truecolour: "
+        "24-bit at --size. Writes DIR/frame_NNNNN.png numbered as the checkpoint's frames.")
+    s.add_argument("motion", metavar="CHECKPOINT|SESSION")
+    s.add_argument("views", metavar="VIEWS", help="the view file (from 'snooker ccl')")
+    s.add_argument("--frames", type=frames_dir, metavar="DIR", required=True,
+                   help="write DIR/frame_NNNNN.png")
+    s.add_argument("--mode", choices=("period", "fixed", "truecolour"), default="period")
+    s.add_argument("--palette", choices=("fixed", "adaptive"), default="fixed",
+                   help="the T5688's 256 colours: fixed (period) or chosen for the sequence")
+    s.add_argument("--size", type=_size, default=(768, 512), metavar="WxH",
+                   help="truecolour picture size (the Sigma modes are 768x512)")
+    s.add_argument("--first", type=positive, metavar="N", help="first frame (default: all)")
+    s.add_argument("--last", type=positive, metavar="M", help="last frame")
+    s.add_argument("--lights", type=Path, metavar="FILE",
+                   help="lights file: 'x y z [intensity | r g b]' a line (default: a canopy "
+                   "of four bulbs)")
+    s.add_argument("--no-specks", action="store_true", help="leave out the dust specks")
+    s.set_defaults(handler=render)
+
+
+def render(args: argparse.Namespace) -> int:
+    from apps.snooker.camera.views import ViewFileError, read_views
+    from apps.snooker.checkpoint import CheckpointError
+    from apps.snooker.render.lights import LightsError, read_lights
+    from apps.snooker.render.scene import load_scene
+    from apps.snooker.render.sequence import SequenceError, select_views
+    from apps.snooker.session import SessionError
+
+    if args.mode == "truecolour" and args.palette != "fixed":
+        return fail(COMMAND, "--palette is for the 256-colour Sigma modes (period, fixed)")
+    if args.mode != "truecolour" and args.size != (768, 512):
+        return fail(COMMAND, f"--mode {args.mode} draws the T5688's 768x512 screen; --size "
+                    "is for truecolour")
+    try:
+        lights = read_lights(args.lights) if args.lights is not None else None
+        scene = load_scene(args.motion, lights)
+        views = select_views(read_views(args.views), scene, args.first, args.last,
+                             str(args.views))
+        return _render(args, scene, views)
+    except (CheckpointError, SessionError, ViewFileError, LightsError, SequenceError,
+            OSError) as exc:
+        return fail(COMMAND, exc)
+
+
+def _render(args: argparse.Namespace, scene, views) -> int:  # noqa: ANN001
+    from apps.snooker.render.sequence import choose_palette, render_sequence
+    from emulator.png import frame_path, write_png
+    from emulator.sigma import Terminal
+
+    palette = None
+    if args.mode != "truecolour":
+        palette = choose_palette(scene, views, args.palette,
+                                 progress(f"{COMMAND}: choosing 256 colours"))
+    out = Path(args.frames)
+    out.mkdir(parents=True, exist_ok=True)
+    stage = Path(tempfile.mkdtemp(prefix=".render-", dir=out))
+    show = progress(COMMAND)
+    line = leaks = gaps = 0.0
+    try:  # every frame goes to a staging directory first: nothing half-written
+        for k, f in enumerate(render_sequence(scene, views, args.mode, args.size, palette,
+                                              lambda: Terminal("t5688"), not args.no_specks),
+                              start=1):
+            write_png(f.image, frame_path(stage, f.frame))
+            if f.line_seconds is not None:
+                line += f.line_seconds
+                leaks += f.leaks or 0
+                gaps += f.gaps or 0
+            if show is not None:
+                show(k, len(views))
+        for f in sorted(stage.iterdir()):
+            os.replace(f, out / f.name)
+    finally:
+        shutil.rmtree(stage, ignore_errors=True)
+    msg = f"{COMMAND}: {len(views)} frames ({views[0].frame}-{views[-1].frame}) -> {out}"
+    if args.mode != "truecolour":
+        msg += (f"; {args.palette} palette; line time {line:.1f} s at 9600 baud "
+                f"({line / len(views):.1f} s a frame); leaking pixels {int(leaks)}"
+                f" ({leaks / len(views):.1f} a frame), gaps {int(gaps)}")
+    print(msg, file=sys.stderr)
+    return 0
