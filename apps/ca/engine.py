@@ -214,8 +214,8 @@ class Engine:
     # -- cells ----------------------------------------------------------------
     @property
     def population(self) -> int:
-        if self._tree_only:
-            self._sync()
+        if self._tree_only:  # counted on the tree: a jump may leave too many cells to list
+            return sum(self.by_type().values())
         if self._dense is not None:
             return self._dense_pop
         return int(self._ts.shape[0])
@@ -307,6 +307,8 @@ class Engine:
 
     # -- statistics -------------------------------------------------------------
     def by_type(self) -> dict[int, int]:
+        if self._tree_only:
+            return self.tree.by_type(self.rules.max_form)
         types, counts = np.unique(self.ts, return_counts=True)
         return {int(t): int(c) for t, c in zip(types, counts)}
 
@@ -316,11 +318,14 @@ class Engine:
         shorter); with bounded edges plain minimum and maximum."""
         if self.population == 0:
             return None
+        if self._tree_only:  # the occupied columns and rows, read from the tree
+            xs, ys = self.tree.occupied(1), self.tree.occupied(0)
+        else:
+            xs, ys = self.xs, self.ys
         if self.edges == "bounded":
-            return Rect(int(self.xs.min()), int(self.ys.min()), int(self.xs.max()),
-                        int(self.ys.max()))
-        x0, x1 = _wrapped_interval(self.xs)
-        y0, y1 = _wrapped_interval(self.ys)
+            return Rect(int(xs.min()), int(ys.min()), int(xs.max()), int(ys.max()))
+        x0, x1 = _wrapped_interval(xs)
+        y0, y1 = _wrapped_interval(ys)
         return Rect(x0, y0, x1, y1)
 
     def stats(self) -> dict:

@@ -11,11 +11,11 @@ engines (they rebuild theirs from their cells).
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
-from apps.ca.hashlife import convert, evolve
+from apps.ca.hashlife import census, convert, evolve
 from apps.ca.hashlife.leaf import deterministic_reason, order_matters, pack
 from apps.ca.hashlife.plane import frame
 from apps.ca.hashlife.store import TOP_LEVEL, NodeStore
@@ -49,9 +49,26 @@ class Tree:
     store: NodeStore
     epoch: int
     node: int
+    _census: dict = field(default_factory=dict, repr=False, compare=False)
 
     def valid(self, store: NodeStore) -> bool:
         return self.store is store and self.epoch == store.epoch
+
+    def by_type(self, forms: int) -> dict[int, int]:
+        """{life-form: cells} for life-forms 1..forms, without listing the cells."""
+        key = ("by_type", forms)
+        if key not in self._census:
+            self._census[key] = census.counts(self.node, forms, self.store.nodes,
+                                              self.store.count)
+        return dict(self._census[key])
+
+    def occupied(self, axis: int) -> np.ndarray:
+        """Sorted rows (axis 0) or columns (axis 1) that hold a live cell."""
+        key = ("occupied", axis)
+        if key not in self._census:
+            self._census[key] = census.occupied(self.node, axis, self.store.nodes,
+                                                self.store.empty, self.store.count)
+        return self._census[key]
 
     def cells(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(ys, xs, types) of the live cells, row by row."""

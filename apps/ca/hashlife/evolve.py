@@ -96,7 +96,7 @@ def _memo(n, j, nodes):
     """The memoised result of ``n`` for 2**j generations, -2 if none (-1: n is -1)."""
     if n < 0:
         return n
-    if nodes[n, RESJ] == j:
+    if nodes[n, RESJ] == j + 1:
         return np.int64(nodes[n, RES])
     return np.int64(-2)
 
@@ -183,14 +183,14 @@ def step(node, j, P, nodes, slots, meta, empty, R, G):
         out = join(t0, t1, t2, t3, nodes, slots, meta)
     if out >= 0:
         nodes[node, RES] = out
-        nodes[node, RESJ] = j
+        nodes[node, RESJ] = j + 1
     return out
 
 
 def advance(node: int, j: int, params: np.ndarray, store, rules: np.ndarray,  # noqa: ANN001
             grids: np.ndarray) -> int:
     """The centre of ``node`` after 2**j generations (-1: the table filled up)."""
-    if store.nodes[node, RESJ] == j:
+    if store.nodes[node, RESJ] == j + 1:
         return int(store.nodes[node, RES])
     return int(step(np.int64(node), np.int64(j), params, store.nodes, store.slots,
                     store.meta, store.empty, rules, grids))

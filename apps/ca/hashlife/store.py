@@ -4,8 +4,8 @@ Node ids below ``LEAF_IDS`` are level-0 nodes: the life-form value itself (0 = d
 or ``WALL``, the outside of a bounded plane.  Every other id is a row of ``nodes``, created
 at most once per distinct quadruple of quadrants by :func:`join`.  A row holds, packed in one
 int32 array so the recursion passes one array (measured: numba reference-counts every array
-argument of every call): the quadrants nw, ne, sw, se; the memoised result and the
-generation exponent it is for (-1: none); the level.  Kernels return -1 when the table is
+argument of every call): the quadrants nw, ne, sw, se; the memoised result and 1 + the
+generation exponent it is for (0: none); the level.  Kernels return -1 when the table is
 full; the caller collects garbage or grows the table and tries again.
 """
 
@@ -40,7 +40,7 @@ def join(a, b, c, d, nodes, slots, meta):
     s = _hash4(a, b, c, d, mask)
     while True:
         i = slots[s]
-        if i < 0:
+        if i == 0:  # empty slot (real nodes have ids >= LEAF_IDS)
             break
         if nodes[i, 0] == a and nodes[i, 1] == b and nodes[i, 2] == c and nodes[i, 3] == d:
             return np.int64(i)
@@ -53,7 +53,7 @@ def join(a, b, c, d, nodes, slots, meta):
     nodes[n, 1] = b
     nodes[n, 2] = c
     nodes[n, 3] = d
-    nodes[n, RESJ] = -1
+    nodes[n, RESJ] = 0
     nodes[n, LEVEL] = (nodes[a, LEVEL] if a >= LEAF_IDS else 0) + 1
     meta[0] = n + 1
     return np.int64(n)
@@ -66,7 +66,7 @@ def rehash(nodes, slots, n):
     for i in range(LEAF_IDS, n):
         s = _hash4(np.int64(nodes[i, 0]), np.int64(nodes[i, 1]), np.int64(nodes[i, 2]),
                    np.int64(nodes[i, 3]), mask)
-        while slots[s] >= 0:
+        while slots[s] != 0:
             s = (s + 1) & mask
         slots[s] = i
 
@@ -99,10 +99,10 @@ def collect(roots, nodes, slots, meta):
             new[i] = m
             for q in range(4):
                 nodes[m, q] = new[nodes[i, q]]
-            nodes[m, RESJ] = -1
+            nodes[m, RESJ] = 0
             nodes[m, LEVEL] = nodes[i, LEVEL]
             m += 1
-    slots[:] = -1
+    slots[:] = 0
     meta[0] = m
     rehash(nodes, slots, np.int64(m))
     for r in range(roots.shape[0]):
@@ -128,9 +128,10 @@ class NodeStore:
         self.wall = self._tower(WALL)
 
     def _allocate(self, cap: int) -> None:
+        # Zeros mean "none" in both (no memo; empty slot), so the pages stay untouched
+        # until used: allocating a large table costs nothing up front.
         self.nodes = np.zeros((cap, ROW), np.int32)
-        self.nodes[:, RESJ] = -1
-        self.slots = np.full(2 * cap, -1, np.int32)  # load factor at most 1/2
+        self.slots = np.zeros(2 * cap, np.int32)  # load factor at most 1/2
         self.meta = np.array([LEAF_IDS], np.int64)
 
     @property

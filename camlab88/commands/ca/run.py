@@ -29,6 +29,12 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
                      help="also write a picture of the final population's bounding box")
     p.add_argument("--zoom", type=int, default=4, help="pixels per cell for --png")
     p.add_argument("--monochrome", action="store_true", help="--png in white on black")
+    p.add_argument("--engine", choices=("auto", "hashlife", "direct"), default="auto",
+                   help="hashlife jumps (deterministic rules only), direct steps one "
+                   "generation at a time; auto picks hashlife for long runs (default)")
+    p.add_argument("--memory", type=int, default=512, metavar="MB",
+                   help="HashLife node-table limit; past it the table is garbage-collected "
+                   "(default 512)")
     p.set_defaults(handler=_run)
 
 
@@ -48,14 +54,21 @@ def _run(args: argparse.Namespace) -> int:
     if args.generations < 0:
         print("camlab88 ca run: --generations must be >= 0", file=sys.stderr)
         return 2
-    engine = Engine(rules, edges=args.edges, seed=args.seed)
+    from apps.ca.jump_progress import ProgressLine
+
+    engine = Engine(rules, edges=args.edges, seed=args.seed, algorithm=args.engine)
+    engine.hashlife_memory = args.memory << 20
     engine.set_cells(xs, ys, ts)
     done = 0
     while done < args.generations:
         chunk = args.generations - done
         if args.every > 0:
             chunk = min(chunk, args.every)
-        engine.step(chunk)
+        try:
+            engine.step(chunk, ProgressLine(start_generation=done))
+        except (ValueError, MemoryError) as exc:  # HashLife forced where it cannot run
+            print(f"camlab88 ca run: {exc}", file=sys.stderr)
+            return 2
         done += chunk
         if args.every > 0 and done < args.generations:
             _print_stats(engine.stats(), False)

@@ -1,0 +1,125 @@
+"""Benchmark of the CA engine's HashLife beside lifelib's (run by hand:
+python benchmarks/bench_hashlife.py [--no-process]).
+
+Life written in the rule language (thesis figure 7.6) jumped by apps/ca/hashlife, and the
+same patterns run by lifelib (Adam P. Goucher's C++ HashLife, "python-lifelib" on PyPI),
+in the same run on the same machine:
+
+* acorn to generation 5206, the Gosper gun to 100,000, the puffer train to 30,000;
+* a long jump that fills much of the plane: the spacefiller to 65,000 generations, when it
+  covers about 65000 x 65000 of the 65536-square plane (population known in closed form:
+  [(t+17)^2+511]/4 for t divisible by 4).
+
+Each figure is the minimum and median of several runs, each with an empty node table (a
+fresh lifelib lifetree), as CPU time (this process's) and wall time; the machine is shared
+with other work, so the load average is printed beside each.  Then the whole process of
+``camlab88 ca run --engine hashlife`` for the three patterns, start-up included.
+
+lifelib is for this benchmark only, not a dependency of camlab88:
+``.venv/bin/pip install python-lifelib`` (its first use compiles C++ with g++, about a minute).
+"""
+
+from __future__ import annotations
+
+import os
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from apps.ca.engine import CENTRE, Engine
+from apps.ca.library import pattern_path, rules_path
+from apps.ca.patterns import read_pattern
+from apps.ca.rules import load_rules
+
+HERE = Path(__file__).parent
+CASES = [("acorn", pattern_path("acorn"), 5206),
+         ("gosper_gun", pattern_path("gosper_gun"), 100_000),
+         ("puffer_train", str(HERE / "patterns" / "puffer_train.rle"), 30_000),
+         ("spacefiller", str(HERE / "patterns" / "spacefiller.rle"), 65_000)]
+RUNS = 5
+
+
+def load() -> str:
+    return f"load {os.getloadavg()[0]:.2f}"
+
+
+def rle_body(path: str) -> str:
+    lines = [ln for ln in Path(path).read_text().splitlines()
+             if ln and not ln.startswith(("#", "x"))]
+    return "".join(lines)
+
+
+def ours(path: str, generations: int) -> tuple[list[float], list[float], int, int]:
+    rules = load_rules(rules_path("life"))
+    xs, ys, ts = read_pattern(path).placed(CENTRE, CENTRE, "identity")
+    cpu, wall = [], []
+    for _ in range(RUNS):
+        rules._tables.pop("hashlife_run", None)  # an empty node table each run
+        e = Engine(rules, algorithm="hashlife")
+        e.set_cells(xs, ys, ts)
+        c, w = time.process_time(), time.perf_counter()
+        e.step(generations)
+        pop = e.population
+        cpu.append(time.process_time() - c)
+        wall.append(time.perf_counter() - w)
+    return cpu, wall, pop, rules._tables["hashlife_run"].store.bytes
+
+
+def theirs(path: str, generations: int) -> tuple[list[float], list[float], int] | str:
+    try:
+        import lifelib
+    except ImportError:
+        return "lifelib not installed (.venv/bin/pip install python-lifelib)"
+    sess = lifelib.load_rules("b3s23")
+    body = rle_body(path)
+    cpu, wall = [], []
+    for _ in range(RUNS):
+        lt = sess.lifetree(memory=1000)
+        p = lt.pattern(body)
+        c, w = time.process_time(), time.perf_counter()
+        pop = p[generations].population
+        cpu.append(time.process_time() - c)
+        wall.append(time.perf_counter() - w)
+    return cpu, wall, pop
+
+
+def fmt(xs: list[float]) -> str:
+    return f"{min(xs) * 1e3:8.1f} / {statistics.median(xs) * 1e3:8.1f} ms"
+
+
+def whole_processes() -> None:
+    """Three ``ca run`` processes, one after another, as a user would type them."""
+    exe = str(Path(sys.executable).with_name("camlab88"))
+    for attempt in range(3):
+        start = time.perf_counter()
+        for name, path, gens in CASES[:3]:
+            subprocess.run([exe, "ca", "run", "--rules", "life", "--pattern", path,
+                            "--generations", str(gens), "--engine", "hashlife"], check=True,
+                           stdout=subprocess.DEVNULL)
+        print(f"  three ca run processes together: {time.perf_counter() - start:.2f} s "
+              f"wall   {load()}")
+
+
+def main() -> None:
+    print(f"python {sys.version.split()[0]}, {os.cpu_count()} cores, {load()}")
+    print("pattern        generations   population   ours cpu min / median    "
+          "lifelib cpu min / median   ratio   ours wall min / median   table")
+    for name, path, gens in CASES:
+        cpu, wall, pop, table = ours(path, gens)
+        ref = theirs(path, gens)
+        if isinstance(ref, str):
+            print(f"{name:14} {gens:>11,} {pop:>12,}  {fmt(cpu)}   {ref}")
+            continue
+        rcpu, _, rpop = ref
+        same = "" if rpop == pop else f"  POPULATIONS DIFFER: lifelib {rpop}"
+        ratio = min(cpu) / max(min(rcpu), 1e-4)
+        print(f"{name:14} {gens:>11,} {pop:>12,}  {fmt(cpu)}   {fmt(rcpu)}   {ratio:5.1f}x  "
+              f"{fmt(wall)}  {table >> 20} MB   {load()}{same}")
+    if "--no-process" not in sys.argv:
+        whole_processes()
+
+
+if __name__ == "__main__":
+    main()
