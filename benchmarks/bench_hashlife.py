@@ -92,9 +92,9 @@ def fmt(xs: list[float]) -> str:
 def whole_processes() -> None:
     """Three ``ca run`` processes, one after another, as a user would type them."""
     exe = str(Path(sys.executable).with_name("camlab88"))
-    for attempt in range(3):
+    for _ in range(3):
         start = time.perf_counter()
-        for name, path, gens in CASES[:3]:
+        for _name, path, gens in CASES[:3]:
             subprocess.run([exe, "ca", "run", "--rules", "life", "--pattern", path,
                             "--generations", str(gens), "--engine", "hashlife"], check=True,
                            stdout=subprocess.DEVNULL)
