@@ -56,12 +56,14 @@ def frame_current(enc: Encoder, current: int, previous: int | None = None) -> by
     return bytes(out)
 
 
-def editor(enc: Encoder, palette: Palette, current: int) -> bytes:
-    """The RGB editor: one bar per gun, as long as its proportion, and the values."""
+def editor(enc: Encoder, palette: Palette, current: int, slot: int = 1) -> bytes:
+    """The RGB editor: one bar per gun, as long as its proportion, and the values, drawn
+    in outline colour ``slot``."""
     x0, y0 = _origin()
+    top = y0 + BAR_Y + 3 * (BAR_H + BAR_GAP) + 14  # above the label's glyphs
     out = bytearray(enc.write_mask(ALL_PLANES) + enc.colour8(0))
-    out += _block(enc, (x0 + 8, y0 + BAR_Y - 4, x0 + 767, y0 + BAR_Y + 3 * (BAR_H + BAR_GAP)))
-    out += enc.write_mask(OUTLINE_MASK) + enc.colour8(1 << OUTLINE_SHIFT)
+    out += _block(enc, (x0 + 8, y0 + BAR_Y - 4, x0 + 767, top))
+    out += enc.write_mask(OUTLINE_MASK) + enc.colour8(slot << OUTLINE_SHIFT)
     for g, (name, value) in enumerate(zip("BGR", palette[current][::-1], strict=True)):
         y = y0 + BAR_Y + g * (BAR_H + BAR_GAP)
         out += enc.move(x0 + 16, y + 6) + enc.text(f"{name} {value:3d}")
@@ -73,8 +75,8 @@ def editor(enc: Encoder, palette: Palette, current: int) -> bytes:
     return bytes(out)
 
 
-def area(enc: Encoder, palette: Palette, current: int) -> bytes:
+def area(enc: Encoder, palette: Palette, current: int, slot: int = 1) -> bytes:
     x0, y0, x1, y1 = MIXING.box()
     out = enc.write_mask(ALL_PLANES) + enc.colour8(0) + _block(enc, (x0, y0, x1, y1))
-    return out + swatches(enc, palette) + frame_current(enc, current) + editor(enc, palette,
-                                                                                current)
+    return (out + swatches(enc, palette) + frame_current(enc, current)
+            + editor(enc, palette, current, slot))

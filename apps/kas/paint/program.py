@@ -102,7 +102,15 @@ class PaintProgram:
         return orders.clear_highlight(self.enc) + self.enc.write_mask(planes.ALL_PLANES)
 
     def mixing_area(self) -> bytes:
-        return mixing.area(self.enc, self.ops.palette, self.current)
+        return mixing.area(self.enc, self.ops.palette, self.current, self._text_slot())
+
+    def editor(self) -> bytes:
+        """The RGB editor redrawn for the current entry."""
+        return mixing.editor(self.enc, self.ops.palette, self.current, self._text_slot())
+
+    def _text_slot(self) -> int:
+        """The brightest outline colour, for the editor's bars and figures."""
+        return max(range(1, 4), key=lambda s: (sum(self.outline.rgb[s]), -s))
 
 
 def nearest_chain(seq: AnimSequence, n: int, point: tuple[float, float]) -> int:

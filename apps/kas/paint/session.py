@@ -114,8 +114,7 @@ class PaintSession:
     def pick(self, colour: int) -> bytes:
         self.ops.palette._index(colour)
         old, self.program.current = self.program.current, colour
-        return (mixing.frame_current(self.program.enc, colour, old)
-                + mixing.editor(self.program.enc, self.ops.palette, colour))
+        return mixing.frame_current(self.program.enc, colour, old) + self.program.editor()
 
     def rgb(self, gun: str, delta: int) -> bytes:
         self.ops.palette.step(self.program.current, gun, delta)
@@ -126,9 +125,7 @@ class PaintSession:
         return self._entry_changed()
 
     def _entry_changed(self) -> bytes:
-        c = self.program.current
-        return self.program.palette_entry(c) + mixing.editor(self.program.enc,
-                                                             self.ops.palette, c)
+        return self.program.palette_entry(self.program.current) + self.program.editor()
 
     # ------------------------------------------------------------ views and frames
     def show(self, which: str) -> bytes:
