@@ -13,7 +13,7 @@ from camlab88.runopts import add_run_options, fail, run_options
 COMMAND = "camlab88 kas paint"
 KEYS = ("click: select chain / pick swatch; f fill, l colour lines, r region, t touch at the "
         "pointer, c clear; r/g/b (+shift) RGB steps; w painting, m mixing, p preview; , . "
-        "frames; a auto-paint; s save")
+        "frames; a auto-paint (saved at the end)")
 TICK = Fraction(1, 25)
 
 
