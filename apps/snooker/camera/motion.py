@@ -12,9 +12,12 @@ Strikes of the cue ball: from a session file, its ball-ball collision events (a 
 at time t in ((n-1)/rate, n/rate] shows first in time frame n).  From a checkpoint they are
 inferred: frame f is a strike of ball b when b's displacement over the frame changes by more
 than KICK_M from the frame before (it was pushed) and the cue ball came within touching
-distance of it during the frame: the closest approach of the two centres, both moving in a
-straight line from f-1 to f, is at most a diameter plus CONTACT_SLACK (of the distances the
-two moved, since the real paths bend at the contact) plus CONTACT_TOL_M.
+distance of it during the frame: both going on from f-1 as they moved into it, their
+centres come within a diameter plus CONTACT_TOL_M, or, both moving in a straight line from
+f-1 to f, within a diameter plus CONTACT_SLACK (of the distances the two moved, since the
+real paths bend at the contact) plus CONTACT_TOL_M.  A contact seen in two frames is one
+strike; of several balls pushed in one frame, the one reached first (going on as before, if
+any) is the one struck.
 """
 
 from __future__ import annotations
@@ -70,18 +73,33 @@ def infer_strikes(c: np.ndarray, on: np.ndarray, r: float) -> tuple[tuple[int, i
     kick = np.zeros(on.shape, dtype=bool)
     kick[1:] = np.linalg.norm(d[1:] - d[:-1], axis=2) > KICK_M
     rel0 = c[:-1, :, :2] - c[:-1, CUE:CUE + 1, :2]  # relative to the cue ball, at f-1
-    rel1 = c[1:, :, :2] - c[1:, CUE:CUE + 1, :2]  # and at f
-    step = rel1 - rel0
-    ss = np.maximum(np.einsum("fbk,fbk->fb", step, step), 1e-300)
-    t = np.clip(-np.einsum("fbk,fbk->fb", rel0, step) / ss, 0.0, 1.0)
-    closest = np.linalg.norm(rel0 + t[..., None] * step, axis=2)
+    chord = (c[1:, :, :2] - c[1:, CUE:CUE + 1, :2]) - rel0  # as both moved into f
+    ahead = d[:-1] - d[:-1, CUE:CUE + 1]  # as both would have moved, going on as before
     travel = np.linalg.norm(d[1:], axis=2)
     reach = 2 * r + CONTACT_SLACK * (travel + travel[:, CUE:CUE + 1]) + CONTACT_TOL_M
-    hit = kick[1:] & (closest <= reach) & on[:-1] & on[:-1, CUE:CUE + 1]
+    straight = _contact_time(rel0, ahead, np.full_like(reach, 2 * r + CONTACT_TOL_M))
+    # the paths going on as before are straight up to the contact: rank by them first
+    t = np.where(np.isfinite(straight), straight, 1.0 + _contact_time(rel0, chord, reach))
+    hit = kick[1:] & np.isfinite(t) & on[:-1] & on[:-1, CUE:CUE + 1]  # t in [0, 2]
     hit[:, CUE] = False
     hit[1:] &= ~hit[:-1]  # one contact seen over two frames is one strike
-    frames, balls = np.nonzero(hit)
+    # one strike a frame: the pushed ball reached first (a ball the struck ball pushes on
+    # in the same frame may be within reach too)
+    frames = np.flatnonzero(hit.any(axis=1))
+    balls = np.argmin(np.where(hit[frames], t[frames], np.inf), axis=1)
     return tuple((int(f) + 2, int(b)) for f, b in zip(frames, balls))
+
+
+def _contact_time(p0: np.ndarray, step: np.ndarray, reach: np.ndarray) -> np.ndarray:
+    """First t in [0, 1] with |p0 + t step| <= reach (inf if none), over (frames, balls)."""
+    a = np.einsum("fbk,fbk->fb", step, step)
+    b = 2.0 * np.einsum("fbk,fbk->fb", p0, step)
+    cc = np.einsum("fbk,fbk->fb", p0, p0) - reach * reach
+    disc = b * b - 4.0 * a * cc
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = (-b - np.sqrt(np.maximum(disc, 0.0))) / (2.0 * a)
+    t = np.where((disc >= 0.0) & (a > 0.0) & (t >= 0.0) & (t <= 1.0), t, np.inf)
+    return np.where(cc <= 0.0, 0.0, t)
 
 
 def from_session(session: object) -> Motion:
