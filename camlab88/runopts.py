@@ -57,7 +57,13 @@ def run_options(args: argparse.Namespace, command: str, can_headless: str | None
                 refuse_hint: str = "give --headless", argv: list[str] | None = None,
                 ) -> RunOptions:
     """RunOptions from the shared flags; the display rule decides window or headless."""
-    headless = choose_headless(command, bool(args.headless), can_headless, refuse_hint)
+    from emulator.harness import replay
+
+    active = replay.active()
+    if active is not None:  # the program decides as in the recorded run; the replay's own
+        headless = active.rec.headless  # --headless decides the window (Replay.adjust)
+    else:
+        headless = choose_headless(command, bool(args.headless), can_headless, refuse_hint)
     record = getattr(args, "record", None)
     if record is not None:
         _check_writable(command, Path(record), "record to")

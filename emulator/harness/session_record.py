@@ -66,7 +66,9 @@ class SessionRecorder(Plugin):
     def __init__(self, options: RunOptions) -> None:
         self.path = Path(options.record)  # type: ignore[arg-type]
         argv = replay_argv(options.argv)
-        self.rec = SessionRecording(argv, HASH_EVERY, input_files(argv, options.inputs))
+        self.rec = SessionRecording(argv, HASH_EVERY, options.headless,
+                                    input_files(argv, options.inputs))
+        self._pending: dict[str, bytearray] = {}
 
     def handle_events(self, harness: Harness, events: list[HostEvent]) -> list[HostEvent]:
         t = harness.target.time()
@@ -75,16 +77,31 @@ class SessionRecorder(Plugin):
 
     def post_tick(self, harness: Harness) -> None:
         wire = getattr(harness.target, "wire", None)
-        if wire is not None:
-            self.rec.wire += [(harness.ticks, d, b) for d, b in wire() if b]
+        if wire is None:
+            return
+        for d, data in wire():
+            if d == "+" and data:  # outside input: at its tick, for the replay to feed back
+                self.rec.wire.append((harness.ticks, d, data))
+            elif data:
+                self._pending.setdefault(d, bytearray()).extend(data)
+
+    def _flush_wire(self, tick: int) -> None:
+        """The program/device traffic since the last flush, one record a direction (one
+        record a tick would cost more in JSON than the bytes themselves)."""
+        for d, data in sorted(self._pending.items()):
+            if data:
+                self.rec.wire.append((tick, d, bytes(data)))
+        self._pending = {}
 
     def on_frame(self, harness: Harness, frame: np.ndarray) -> None:
         n = harness.frames_shown
         if n % HASH_EVERY == 0:
+            self._flush_wire(harness.ticks)
             self.rec.hashes.append(ScreenHash(n, harness.ticks, harness.target.time(),
                                               screen_hash(frame)))
 
     def finish(self, harness: Harness) -> None:
+        self._flush_wire(harness.ticks)
         frame = harness.last_frame if harness.last_frame is not None else harness.screen()
         self.rec.end = ScreenHash(harness.frames_shown, harness.ticks, harness.target.time(),
                                   screen_hash(frame))

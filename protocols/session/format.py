@@ -3,17 +3,20 @@
 A recording holds everything needed to run a program's session again on its own::
 
     {"type": "header", "format": "camlab88-session", "version": 1,
-     "argv": ["kas", "edit", "key.kas", "--script", "s.txt"], "hash_every": 25}
+     "argv": ["kas", "edit", "key.kas", "--script", "s.txt"], "headless": true,
+     "hash_every": 10}
     {"type": "file", "name": "s.txt", "sha256": "...", "data": "<base64 of zlib>"}   inputs
     {"type": "event", "tick": 12, "time": "3/25", "event": {"kind": "KeyDown", ...}}
     {"type": "wire", "tick": 12, "dir": ">", "data": "<base64 of zlib>"}   the wire
     {"type": "hash", "frame": 25, "tick": 100, "time": "1", "sha256": "..."}   screen hashes
     {"type": "end", "frames": 130, "ticks": 520, "time": "26/5", "sha256": "..."}
 
-``time`` is virtual time in seconds as an exact fraction; ``tick`` counts harness ticks.
+``headless`` says whether the recorded run had no window (a replay makes the program take
+the same decisions whether or not it shows a window).  ``time`` is virtual time in seconds as an exact fraction; ``tick`` counts harness ticks.
 ``event`` is a host input event (emulator.host_input) as the window delivered it; ``wire``
 records every byte the program and device exchanged (``>`` host to device, ``<`` device to
-host, ``+`` bytes that came from outside, which a replay feeds back in).  A ``hash`` is the
+host: the traffic since the previous record of that direction, up to its tick; ``+`` bytes
+that came from outside during that tick, which a replay feeds back in).  A ``hash`` is the
 SHA-256 of the shown frame's RGB bytes, every ``hash_every`` frames; ``end`` is always last,
 so a recording without it is truncated.  A reader refuses other formats and newer versions
 with the file, line and column.
@@ -32,7 +35,8 @@ from typing import Any
 FORMAT = "camlab88-session"
 VERSION = 1
 _KEYS: dict[str, dict[str, type | tuple[type, ...]]] = {
-    "header": {"format": str, "version": int, "argv": list, "hash_every": int},
+    "header": {"format": str, "version": int, "argv": list, "headless": bool,
+               "hash_every": int},
     "file": {"name": str, "sha256": str, "data": str},
     "event": {"tick": int, "time": str, "event": dict},
     "wire": {"tick": int, "dir": str, "data": str},
@@ -62,7 +66,8 @@ class SessionRecording:
     """A whole recording in memory (see the module docstring)."""
 
     argv: list[str]
-    hash_every: int = 25
+    hash_every: int = 10
+    headless: bool = True
     files: dict[str, bytes] = field(default_factory=dict)
     events: list[tuple[int, Fraction, dict[str, Any]]] = field(default_factory=list)
     wire: list[tuple[int, str, bytes]] = field(default_factory=list)
@@ -80,7 +85,8 @@ def _records(rec: SessionRecording) -> list[dict[str, Any]]:
     import hashlib
 
     out: list[dict[str, Any]] = [{"type": "header", "format": FORMAT, "version": VERSION,
-                                  "argv": rec.argv, "hash_every": rec.hash_every}]
+                                  "argv": rec.argv, "headless": rec.headless,
+                                  "hash_every": rec.hash_every}]
     out += [{"type": "file", "name": n, "sha256": hashlib.sha256(d).hexdigest(),
              "data": _b64(d)} for n, d in rec.files.items()]
     body: list[tuple[int, int, dict[str, Any]]] = []
@@ -123,7 +129,8 @@ def read(path: str | os.PathLike[str]) -> SessionRecording:
     """Read and check a recording; a bad one raises SessionFileError naming line and column."""
     name = os.fspath(path)
     try:
-        raw = open(name, "rb").read()
+        with open(name, "rb") as fh:
+            raw = fh.read()
     except OSError as exc:
         raise SessionFileError(name, 0, 0, f"cannot read: {exc.strerror or exc}") from None
     return loads(raw, name)

@@ -48,6 +48,7 @@ class _Reader:
             raise self.fail("not JSON: nested too deeply") from None
         if not isinstance(obj, dict) or not isinstance(obj.get("type"), str):
             raise self.fail('expected a JSON object with a "type"')
+        self.newer(obj)  # before the key checks: a newer version may have other keys
         keys = _KEYS.get(obj["type"])
         if keys is None:
             raise self.fail(f"unknown record type {obj['type']!r}; expected one of "
@@ -59,19 +60,23 @@ class _Reader:
                                 f"{getattr(kind, '__name__', kind)}")
         return obj
 
+    def newer(self, obj: dict[str, Any]) -> None:
+        v = obj.get("version")
+        if obj["type"] == "header" and obj.get("format") == FORMAT and isinstance(v, int) \
+                and v > VERSION:
+            raise self.fail(f"written by a newer camlab88 (format version {v}); this one "
+                            f"reads version {VERSION}: upgrade camlab88")
+
     def header(self, obj: dict[str, Any]) -> None:
         if obj["type"] != "header" or obj["format"] != FORMAT:
             raise self.fail(f"not a camlab88 session recording (expected a {FORMAT} header)")
-        if obj["version"] > VERSION:
-            raise self.fail(f"written by a newer camlab88 (format version {obj['version']}); "
-                            f"this one reads version {VERSION}: upgrade camlab88")
         if obj["version"] != VERSION:
             raise self.fail(f"unknown format version {obj['version']} (expected {VERSION})")
         if not all(isinstance(a, str) for a in obj["argv"]) or not obj["argv"]:
             raise self.fail("header: argv must be a non-empty list of strings")
         if obj["hash_every"] < 1:
             raise self.fail("header: hash_every must be at least 1")
-        self.rec = SessionRecording(list(obj["argv"]), obj["hash_every"])
+        self.rec = SessionRecording(list(obj["argv"]), obj["hash_every"], obj["headless"])
 
     def tick(self, obj: dict[str, Any], key: str = "tick") -> int:
         t = obj[key]
