@@ -6,9 +6,9 @@ import numpy as np
 
 from apps.kas import files
 from apps.kas.events import Key, Pointer
-from apps.kas.program import PathFront, Session, demo_session
 from apps.kas.library import LIBRARY
 from apps.kas.path_editor import PathEditor
+from apps.kas.program import PathFront, Session, demo_session
 from emulator.sigma import Terminal
 from protocols.sigma import Decoder
 from tests.kas_front.helpers import GOLDEN, script

@@ -9,11 +9,11 @@ from hypothesis import strategies as st
 from apps.kas import files
 from apps.kas.editor import Editor
 from apps.kas.files import KasFileError
+from apps.kas.library import LIBRARY
 from apps.kas.program import EditorFront, Session, parse_timed_script
 from apps.kas.program import layout as L
 from apps.kas.program.draw import Painter, chain_prims, clip_polyline, encode
 from apps.kas.program.keyboard import bytes_to_keys
-from apps.kas.library import LIBRARY
 from emulator.sigma import Terminal
 from protocols.sigma import Decoder, Encoder
 
