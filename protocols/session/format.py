@@ -12,14 +12,15 @@ A recording holds everything needed to run a program's session again on its own:
     {"type": "end", "frames": 130, "ticks": 520, "time": "26/5", "sha256": "..."}
 
 ``headless`` says whether the recorded run had no window (a replay makes the program take
-the same decisions whether or not it shows a window).  ``time`` is virtual time in seconds
-as an exact fraction; ``tick`` counts harness ticks.  ``event`` is a host input event (emulator.host_input) as the window delivered it; ``wire``
-records every byte the program and device exchanged (``>`` host to device, ``<`` device to
-host: the traffic since the previous record of that direction, up to its tick; ``+`` bytes
-that came from outside during that tick, which a replay feeds back in).  A ``hash`` is the
-SHA-256 of the shown frame's size and RGB bytes, every ``hash_every`` frames; ``end`` is always last,
-so a recording without it is truncated.  A reader refuses other formats and newer versions
-with the file, line and column.
+the same decisions whether or not it shows a window). ``time`` is virtual time in seconds as
+an exact fraction; ``tick`` counts harness ticks. ``event`` is a host input event
+(emulator.host_input) as the window delivered it; ``wire`` records every byte the program
+and device exchanged (``>`` host to device, ``<`` device to host: the traffic since the
+previous record of that direction, up to its tick; ``+`` bytes that came from outside during
+that tick, which a replay feeds back in). A ``hash`` is the SHA-256 of the shown frame's
+size and RGB bytes, every ``hash_every`` frames; ``end`` is always last, so a recording
+without it is truncated. A reader refuses other formats and newer versions with the file,
+line and column.
 """
 
 from __future__ import annotations
