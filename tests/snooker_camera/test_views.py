@@ -5,8 +5,17 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
-from apps.snooker.camera.views import View, ViewFileError, parse_views, read_views, write_views
+from apps.snooker.camera.views import (
+    View,
+    ViewFileError,
+    parse_views,
+    read_views,
+    views_text,
+    write_views,
+)
 
 
 def test_round_trip_is_bit_identical(tmp_path: Path) -> None:
@@ -40,3 +49,26 @@ def test_non_ascii_byte_position(tmp_path: Path) -> None:
     p.write_bytes(b"1 0 0 0 1 1 1 50\n2 0 \xb2 0 1 1 1 50\n")
     with pytest.raises(ViewFileError, match=r"v:2:5: non-ASCII"):
         read_views(p)
+
+
+finite = st.floats(allow_nan=False, allow_infinity=False, min_value=-1e6, max_value=1e6)
+vec = st.tuples(finite, finite, finite)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.integers(1, 10**6), st.lists(st.tuples(vec, vec, st.floats(8, 2000)), min_size=1,
+                                      max_size=8))
+def test_any_views_round_trip(first: int, rows: list) -> None:  # type: ignore[type-arg]
+    rows = [r for r in rows if r[0] != r[1]]
+    views = [View(first + i, o, v, f) for i, (o, v, f) in enumerate(rows)]
+    if views:
+        assert parse_views(views_text(views)) == views
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.text(alphabet="0123456789 .-+e#\nnaif,x", max_size=120))
+def test_random_text_is_read_or_refused_with_a_position(text: str) -> None:
+    try:
+        parse_views(text, "r.views")
+    except ViewFileError as exc:
+        assert exc.line >= 1 and exc.col >= 1 and str(exc).startswith("r.views:")
