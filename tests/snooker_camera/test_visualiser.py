@@ -142,3 +142,20 @@ def test_frames_are_reported_numbered_as_the_checkpoint() -> None:
     n = Visualiser(rb.client, m, r.views()[:6]).play_through(seen.append)
     assert n == 6 and seen == [1, 2, 3, 4, 5, 6]
     assert rb.device.frame_count == 12  # two device frames each: 25 frames/s at 50 Hz
+
+
+def test_clipped_at_the_observer_nothing_behind_it_drawn() -> None:
+    c = still(1)
+    c[0, :] = (9.0, 9.0, R)
+    c[0, 0] = (-0.5, 0.0, R)  # the cue ball behind the observer
+    c[0, 5] = (1.0, 0.0, R)  # the pink in front
+    o = (0.0, 0.0, 0.05)  # 5 cm above the cloth, looking level up the table
+    rb, _ = shown(make(c), [View(1, o, (1.0, 0.0, 0.05), 50.0)])
+    frame = rb.executor.last_frame
+    assert not colour_mask(frame, "#f4f4f0").any()
+    sx, sy, _ = independent_projection(o, (1.0, 0.0, 0.05), 50.0, c[0, 5])
+    assert frame[int(sy), int(sx)].tolist() == list(parse_colour("#f890b0"))
+    cloth = colour_mask(frame, vdisplay.TABLE_COLOURS[1])
+    assert cloth[300:].mean() > 0.9 and not cloth[:280].any()  # the cloth fills below the
+    # horizon (row 288) right down to the picture's bottom edge: its part behind the
+    # observer was clipped away, not projected upside down
