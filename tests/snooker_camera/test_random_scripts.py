@@ -9,8 +9,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from apps.snooker.camera import ccl
+from apps.snooker.camera.cursor import KEYWORDS
 from apps.snooker.camera.errors import CclErrors
-from apps.snooker.camera.parser import KEYWORDS
 from tests.snooker_camera.helpers import pink_rolls
 
 MOTION = pink_rolls()

@@ -8,9 +8,14 @@ BALL`` for CUEBALL, ``HIT BALL`` for HITBALL, ``START``/``STOP``/``STRIKE`` for
 
 from __future__ import annotations
 
-import math
-
-from apps.snooker.camera.errors import CclError, did_you_mean
+from apps.snooker.camera.cursor import (
+    COLOUR_WORDS,
+    PLURAL,
+    SUBCOMMANDS,
+    Cursor,
+    Fail,
+)
+from apps.snooker.camera.errors import CclError
 from apps.snooker.camera.lexer import Token, tokenize
 from apps.snooker.camera.projection import FOCAL_MAX_MM, FOCAL_MIN_MM
 from apps.snooker.camera.syntax import (
@@ -27,104 +32,11 @@ from apps.snooker.camera.syntax import (
     Time,
 )
 
-COLOUR_WORDS = ("YELLOW", "GREEN", "BROWN", "BLUE", "PINK", "BLACK")
-SUBCOMMANDS = ("FROM", "UNTIL", "OBSERVER", "VIEWPOINT", "FOCAL", "CAMERA", "COORDS")
-KEYWORDS = frozenset((
-    *SUBCOMMANDS, *COLOUR_WORDS, "AT", "MOVING", "TO", "FOLLOWING", "LENGTH", "OF", "FRAME",
-    "CUEBALL", "CUE", "STRIKES", "ANY", "BALL", "BALLS", "STARTS", "ALL", "STOP", "STOPS",
-    "END", "RED", "HITBALL", "HIT", "SPOT", "BOTTOM", "TOP", "LEFT", "RIGHT", "CENTRE",
-    "POCKET",
-))
-_PLURAL = {"START": "STARTS", "STOP": "STOPS", "STRIKE": "STRIKES", "CENTER": "CENTRE",
-           "MIDDLE": "CENTRE"}
-
-
-class _Fail(Exception):
-    def __init__(self, error: CclError) -> None:
-        self.error = error
-
-
-def _alternatives(words: tuple[str, ...]) -> str:
-    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " or " + words[-1]
-
-
-class _Cursor:
-    """The tokens of one sub-command, ending with its delimiter (or the script's end)."""
-
-    def __init__(self, toks: list[Token]) -> None:
-        self.toks = toks
-        self.i = 0
-
-    def peek(self) -> Token:
-        return self.toks[self.i]
-
-    def take(self) -> Token:
-        t = self.toks[self.i]
-        if self.i < len(self.toks) - 1:
-            self.i += 1
-        return t
-
-    def word(self) -> str:
-        t = self.peek()
-        return _PLURAL.get(t.upper, t.upper) if t.kind == "word" else ""
-
-    def at(self, *words: str) -> bool:
-        return self.word() in words
-
-    def fail(self, expected: str, hints: tuple[str, ...] = ()) -> _Fail:
-        t = self.peek()
-        hint = did_you_mean(t.text, hints or KEYWORDS) if t.kind == "word" else ""
-        return _Fail(CclError(t.line, t.col, f"expected {expected} but found {t.describe()}"
-                                             f"{hint}"))
-
-    def expect(self, *words: str, what: str = "") -> Token:
-        if self.at(*words):
-            return self.take()
-        raise self.fail(what or _alternatives(words), words)
-
-    def punct(self, ch: str, what: str = "") -> Token:
-        if self.peek().kind == "punct" and self.peek().text == ch:
-            return self.take()
-        raise self.fail(what or f"'{ch}'")
-
-    def sign(self) -> float | None:
-        t = self.peek()
-        if t.kind == "punct" and t.text in "+-":
-            self.take()
-            return -1.0 if t.text == "-" else 1.0
-        return None
-
-    def number(self, what: str = "a number") -> tuple[float, Token]:
-        start = self.peek()
-        s = self.sign() or 1.0
-        t = self.peek()
-        if t.kind != "number":
-            raise self.fail(what)
-        self.take()
-        v = s * float(t.text)
-        if not math.isfinite(v):
-            raise _Fail(CclError(t.line, t.col, f"the number {t.text} is too large"))
-        return v, start
-
-    def integer(self, what: str, lo: int, hi: int | None = None) -> tuple[int, Token]:
-        t = self.peek()
-        if t.kind != "number":
-            raise self.fail(what)
-        self.take()
-        if not t.text.isdigit():
-            raise _Fail(CclError(t.line, t.col, f"{what} must be a whole number, not {t.text}"))
-        n = int(t.text)
-        if n < lo or (hi is not None and n > hi):
-            rng = f"{lo} to {hi}" if hi is not None else f"at least {lo}"
-            raise _Fail(CclError(t.line, t.col, f"{what} must be {rng}, not {n}"))
-        return n, t
-
-
 # --- balls, events and time ----------------------------------------------------------------
 _BALL_START = ("CUEBALL", "CUE", *COLOUR_WORDS, "RED", "HITBALL", "HIT")
 
 
-def ball(c: _Cursor) -> BallRef:
+def ball(c: Cursor) -> BallRef:
     t = c.peek()
     w = c.word()
     if w == "CUEBALL" or w == "HITBALL":
@@ -148,7 +60,7 @@ def ball(c: _Cursor) -> BallRef:
 _EVENT_START = ("FRAME", "CUEBALL", "ANY", "ALL", "END", *_BALL_START)
 
 
-def event(c: _Cursor) -> Event:
+def event(c: Cursor) -> Event:
     t = c.peek()
     ev = _event_body(c, t)
     s = c.sign()
@@ -158,7 +70,7 @@ def event(c: _Cursor) -> Event:
     return Event(ev.kind, ev.tok, ev.frame, ev.ball, int(s) * n)
 
 
-def _event_body(c: _Cursor, t: Token) -> Event:
+def _event_body(c: Cursor, t: Token) -> Event:
     if t.kind == "number":
         n, _ = c.integer("a frame number", 1)
         return Event("frame", t, frame=n)
@@ -191,10 +103,10 @@ def _event_body(c: _Cursor, t: Token) -> Event:
 
 
 def _verb(t: Token) -> str:
-    return _PLURAL.get(t.upper, t.upper)
+    return PLURAL.get(t.upper, t.upper)
 
 
-def time(c: _Cursor) -> Time:
+def time(c: Cursor) -> Time:
     start = None
     if c.at("FROM"):
         c.take()
@@ -206,7 +118,7 @@ def time(c: _Cursor) -> Time:
 
 
 # --- coordinates ----------------------------------------------------------------------------
-def simple(c: _Cursor) -> Simple:
+def simple(c: Cursor) -> Simple:
     t = c.punct("(", "a coordinate such as (1.5, -0.2, 0.8)")
     user = c.peek().kind == "punct" and c.peek().text == "#"
     if user:
@@ -224,7 +136,7 @@ _POCKET_START = ("BOTTOM", "TOP", "LEFT", "RIGHT")
 _NAME_START = (*_BALL_START, "CAMERA", *_POCKET_START)
 
 
-def name(c: _Cursor) -> Name:
+def name(c: Cursor) -> Name:
     t = c.peek()
     w = c.word()
     if w in COLOUR_WORDS and c.toks[c.i + 1].upper == "SPOT":
@@ -251,7 +163,7 @@ def name(c: _Cursor) -> Name:
                  "CAMERA <n> or a pocket such as TOP LEFT POCKET)", _NAME_START)
 
 
-def coordinate(c: _Cursor) -> Coord:
+def coordinate(c: Cursor) -> Coord:
     t = c.peek()
     if t.kind == "punct" and t.text == "(":
         return Coord(t, simple=simple(c))
@@ -263,7 +175,7 @@ def coordinate(c: _Cursor) -> Coord:
 
 
 # --- sub-commands ---------------------------------------------------------------------------
-def place(c: _Cursor) -> Place:
+def place(c: Cursor) -> Place:
     t = c.take()
     what = t.upper.lower()
     mode = c.expect("AT", "MOVING", "FOLLOWING")
@@ -282,15 +194,15 @@ def place(c: _Cursor) -> Place:
     return Place(what, "following", t, ball=b, offset=simple(c), sign=s)
 
 
-def _focal_number(c: _Cursor) -> float:
+def _focal_number(c: Cursor) -> float:
     f, t = c.number("a focal length in mm")
     if not FOCAL_MIN_MM <= f <= FOCAL_MAX_MM:
-        raise _Fail(CclError(t.line, t.col, f"a focal length of {f:g} mm is out of range: it "
+        raise Fail(CclError(t.line, t.col, f"a focal length of {f:g} mm is out of range: it "
                                             f"must be {FOCAL_MIN_MM:g} to {FOCAL_MAX_MM:g} mm"))
     return f
 
 
-def focal(c: _Cursor) -> Focal:
+def focal(c: Cursor) -> Focal:
     t = c.take()
     c.expect("LENGTH", what="LENGTH (FOCAL LENGTH OF <mm> or FOCAL LENGTH FROM <mm> TO <mm>)")
     how = c.expect("OF", "FROM")
@@ -301,25 +213,25 @@ def focal(c: _Cursor) -> Focal:
     return Focal(a, t, _focal_number(c))
 
 
-def camera(c: _Cursor) -> CameraDef:
+def camera(c: Cursor) -> CameraDef:
     t = c.take()
     n, _ = c.integer("a camera number", 0, 9)
     c.expect("AT")
     return CameraDef(n, coordinate(c), t)
 
 
-def coords(c: _Cursor) -> CoordsDef:
+def coords(c: Cursor) -> CoordsDef:
     t = c.take()
     origin = coordinate(c)
     if origin.simple is not None and origin.simple.user:
         s = origin.simple.tok
-        raise _Fail(CclError(s.line, s.col, "the COORDS origin is in the default space (metres "
+        raise Fail(CclError(s.line, s.col, "the COORDS origin is in the default space (metres "
                                             "from the table's centre), so it cannot use '#'"))
     factors = []
     for axis in "xyz":
         f, ft = c.number(f"the number of user units per metre in {axis}")
         if f == 0:
-            raise _Fail(CclError(ft.line, ft.col, f"user units per metre in {axis} cannot be 0"))
+            raise Fail(CclError(ft.line, ft.col, f"user units per metre in {axis} cannot be 0"))
         factors.append(f)
     return CoordsDef(origin, (factors[0], factors[1], factors[2]), t)
 
@@ -328,7 +240,7 @@ _SUBCOMMAND_HELP = ("a sub-command (FROM, UNTIL, OBSERVER, VIEWPOINT, FOCAL LENG
                     "or COORDS)")
 
 
-def _subcommand(c: _Cursor, cmd: Command) -> None:
+def _subcommand(c: Cursor, cmd: Command) -> None:
     w = c.word()
     t = c.peek()
     if w in ("FROM", "UNTIL"):
@@ -345,13 +257,13 @@ def _subcommand(c: _Cursor, cmd: Command) -> None:
         raise c.fail(_SUBCOMMAND_HELP, SUBCOMMANDS)
     end = c.peek()
     if end.kind != "end" and not (end.kind == "punct" and end.text in ":;"):
-        raise _Fail(CclError(end.line, end.col, f"unexpected {end.describe()} after a complete "
+        raise Fail(CclError(end.line, end.col, f"unexpected {end.describe()} after a complete "
                                                 "sub-command (is a ';' missing before it?)"))
 
 
 def _set_once(cmd: Command, attr: str, value: object, t: Token, what: str) -> None:
     if getattr(cmd, attr) is not None:
-        raise _Fail(CclError(t.line, t.col, f"a second {what} in one command (each command "
+        raise Fail(CclError(t.line, t.col, f"a second {what} in one command (each command "
                                             "has at most one; start a new command with ':')"))
     setattr(cmd, attr, value)
 
@@ -376,8 +288,8 @@ def parse_tokens(tokens: list[Token]) -> tuple[list[Command], list[CclError]]:
             if len(sub) == 1:
                 continue  # an empty sub-command (";;", or a command ending with ';')
             try:
-                _subcommand(_Cursor(sub), cmd)
-            except _Fail as f:
+                _subcommand(Cursor(sub), cmd)
+            except Fail as f:
                 errors.append(f.error)
         if cmd.time or cmd.sets_view or cmd.definitions:
             commands.append(cmd)
