@@ -13,8 +13,10 @@ from __future__ import annotations
 import argparse
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from emulator.harness import RunOptions, choose_headless
+if TYPE_CHECKING:
+    from emulator.harness import RunOptions
 
 
 def frames_dir(text: str) -> Path:
@@ -57,7 +59,7 @@ def run_options(args: argparse.Namespace, command: str, can_headless: str | None
                 refuse_hint: str = "give --headless", argv: list[str] | None = None,
                 ) -> RunOptions:
     """RunOptions from the shared flags; the display rule decides window or headless."""
-    from emulator.harness import replay
+    from emulator.harness import RunOptions, choose_headless, replay
 
     active = replay.active()
     if active is not None:  # the program decides as in the recorded run; the replay's own

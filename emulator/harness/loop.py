@@ -23,11 +23,12 @@ import sys
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
-from typing import Any, Protocol
-
-import numpy as np
+from typing import TYPE_CHECKING, Any, Protocol
 
 from emulator.host_input import HostEvent, Quit
+
+if TYPE_CHECKING:
+    import numpy as np
 
 
 class Target(Protocol):

@@ -8,12 +8,24 @@ else headless, writing every frame as PNG and one animated GIF per act.
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
+from typing import Any
 
-from camlab88.commands.demo.acts import ACTS, Act
-from protocols.sigma.demo import sigma_demo_stream, sigma_picture_stream
+from camlab88.commands.demo.acts import ACTS, FPS, Act
 
-__all__ = ["ACTS", "Act", "register", "sigma_demo_stream", "sigma_picture_stream"]
+__all__ = ["ACTS", "Act", "register"]
+COMMAND = "camlab88 demo"
+KEYS = "Space: next act; Esc or close: quit"
+
+
+def __getattr__(name: str) -> Any:
+    """The demo's Sigma streams under their old names (now protocols.sigma.demo)."""
+    if name in ("sigma_demo_stream", "sigma_picture_stream"):
+        from protocols.sigma import demo
+
+        return getattr(demo, name)
+    raise AttributeError(name)
 
 
 def _description() -> str:
@@ -40,7 +52,29 @@ def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[ty
 
 
 def demo(args: argparse.Namespace) -> int:
-    from camlab88.commands.demo.play import play_acts
-
     acts = [a for a in ACTS if not args.only or a.name in args.only]
     return play_acts(acts, args)
+
+
+def play_acts(acts: list[Act], args: argparse.Namespace) -> int:
+    """Each act on the harness: a window per act, or headless into PNGs and a GIF."""
+    from emulator.harness import Plugin, RunOptions, choose_headless, run
+    from emulator.harness.stream import FrameStream, PngGifWriter
+
+    headless = choose_headless(COMMAND, args.headless,
+                               f"writing every frame as PNG and a GIF per act into {args.out}")
+    for i, act in enumerate(acts, 1):
+        print(f"{COMMAND}: act {i}/{len(acts)}: {act.title}", file=sys.stderr, flush=True)
+        last = i == len(acts)
+        hold = not headless and last and args.screenshot is None
+        target = FrameStream(act.play(), act.size, FPS, f"{COMMAND} - {act.title}", KEYS, hold)
+        opts = RunOptions(headless=headless, paced=not args.fast, scale=args.scale,
+                          screenshot=args.screenshot if last else None, command=COMMAND)
+        plugins: list[Plugin] = []
+        if headless:
+            args.out.mkdir(parents=True, exist_ok=True)
+            plugins.append(PngGifWriter(args.out, act.name, act.title, FPS, COMMAND))
+        h = run(target, opts, plugins)
+        if target.quit or h.quit:
+            return 0
+    return 0

@@ -3,13 +3,22 @@
 from __future__ import annotations
 
 import argparse
+from typing import Any
 
 from camlab88.areas import register_area
-from emulator.rainbow.host_input import host_to_rainbow_event, tablet_event
 
 HELP = "the Rainbow workstation emulator"
 ACTIONS = ("render", "run", "serve", "replay")
-__all__ = ["ACTIONS", "host_to_rainbow_event", "register", "tablet_event"]  # old names
+__all__ = ["ACTIONS", "register"]
+
+
+def __getattr__(name: str) -> Any:
+    """The host-input adapters under their old names (now emulator.rainbow.host_input)."""
+    if name in ("host_to_rainbow_event", "tablet_event"):
+        from emulator.rainbow import host_input
+
+        return getattr(host_input, name)
+    raise AttributeError(name)
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]

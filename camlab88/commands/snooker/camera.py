@@ -54,14 +54,26 @@ def camera(args: argparse.Namespace) -> int:
     return 0
 
 
-def _run(shot, script, player, opts):  # noqa: ANN001, ANN202
+def _run(shot, script, player, opts, plugins=()):  # noqa: ANN001, ANN202
     from apps.snooker.camera_tool.tool import CameraTool
     from emulator.harness import run
     from emulator.harness.rainbow import RainbowTarget
     from emulator.rainbow.session import in_process
 
+    class Target(RainbowTarget):
+        """The script as read from disk during the run is outside input: recorded, and fed
+        back by `camlab88 replay`."""
+
+        def wire(self) -> list[tuple[str, bytes]]:
+            out = [("+", t.encode("utf-8")) for t in tool.outside]
+            tool.outside.clear()
+            return super().wire() + out
+
+        def put_wire(self, data: bytes) -> None:
+            tool.feed(data.decode("utf-8"))
+
     rb = in_process(record=opts.record is not None)
     tool = CameraTool(rb.client, shot, script)
     end_with_script = opts.headless or opts.screenshot is not None
-    target = RainbowTarget(rb, tool.step, COMMAND, KEYS, player, end_with_script)
-    return run(target, opts), tool
+    target = Target(rb, tool.step, COMMAND, KEYS, player, end_with_script)
+    return run(target, opts, list(plugins)), tool

@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 import argparse
+from typing import Any
 
 from camlab88.areas import register_area
-from emulator.tablet.pointer_input import TabletInput
 
 HELP = "graphics tablets: real (HID/serial) and emulated"
 ACTIONS = ("list", "monitor", "calibrate", "emulate")
@@ -13,7 +13,16 @@ SOURCE_HELP = (
     "hid:VID:PID | serial:PORT?protocol=P[&baud=N] | URL?protocol=P (loop://, socket://...) | "
     "emulated:P[?drive=demo]; P = wacom4, summa-mm, bitpad1, bitpad2, calcomp"
 )
-__all__ = ["ACTIONS", "SOURCE_HELP", "TabletInput", "register"]  # TabletInput: the old name
+__all__ = ["ACTIONS", "SOURCE_HELP", "register"]
+
+
+def __getattr__(name: str) -> Any:
+    """``TabletInput`` under its old name (now emulator.tablet.pointer_input)."""
+    if name == "TabletInput":
+        from emulator.tablet.pointer_input import TabletInput
+
+        return TabletInput
+    raise AttributeError(name)
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
