@@ -49,3 +49,30 @@ def test_paint_errors(tmp_path, capsys) -> None:  # noqa: ANN001
     assert f"{bad}:7:6: line-chain 9 does not exist" in capsys.readouterr().err
     assert main(["kas", "paint", str(seq_path), "--headless"]) == 2
     assert "--script" in capsys.readouterr().err
+
+
+def test_window_input_selects_fills_and_picks() -> None:
+    """The window's mouse and keys drive the same session: click near a chain, f to fill;
+    in the preview a click on a swatch picks it and r steps its red."""
+    from apps.kas.paint import areas, mixing
+    from apps.kas.paint.ops import OpsFile
+    from apps.kas.paint.session import PaintSession
+    from camlab88.commands.kas.paint import PaintTarget
+    from emulator.host_input import KeyDown, PointerButton
+    from emulator.sigma import Terminal
+
+    seq = walk(4)
+    s = PaintSession(seq, OpsFile(painted=2))
+    t = PaintTarget(s, Terminal("t5688"), 9600, [], end=False)
+    px = areas.to_px(seq.frames[1].chains[1].points[:1])[0]   # painting area = screen (KQ1)
+    t.handle_events([PointerButton(int(px[0]), 511 - int(px[1]), 1, True), KeyDown("f", "f")])
+    assert [(o.kind, o.chains, o.colour) for o in s.ops.ops] == [("fill", (2,), 1)]
+    t.handle_events([KeyDown("p", "p")])
+    x0, y0, x1, y1 = mixing.swatch_box(6)
+    # preview: the drawing area at half size
+    t.handle_events([PointerButton((x0 + x1) // 4, 511 - (y0 + y1) // 4, 1, True),
+                     KeyDown("r", "r")])
+    assert s.program.current == 6 and s.ops.palette[6][0] == min(40 + 8, 255)
+    for _ in range(200):
+        t.tick()
+    assert t.term.reg.view == 4

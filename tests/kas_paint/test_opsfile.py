@@ -116,3 +116,34 @@ def test_palette_mix_and_rgb_steps() -> None:
     assert p.proportions(1) == (1.0, 0.0, 0.0)
     with pytest.raises(ValueError, match="colour 7 is not in the palette"):
         p.step(7, "red", 1)
+
+
+def test_frames_outside_the_sequence_are_refused_with_their_place() -> None:
+    seq = one_frame(*_squares())
+    with pytest.raises(opsfile.OpsFileError, match=r"^x\.ops:8:9: painted frame 4 outside 1\.\.1"):
+        opsfile.check(opsfile.parse(TEXT.replace("painted 1", "painted 4"), "x.ops"), seq)
+    with pytest.raises(opsfile.OpsFileError, match=r"^x\.ops:12:7: frame 3 outside 1\.\.1"):
+        opsfile.check(opsfile.parse(TEXT.replace("frame 1 ops", "frame 3 ops"), "x.ops"), seq)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.data())
+def test_any_damage_is_a_clear_error(data: st.DataObject) -> None:
+    """Cut, changed or inserted text never crashes the reader: it parses or it raises an
+    OpsFileError naming a line and column inside the file (or just after its end)."""
+    lines = TEXT.splitlines()
+    i = data.draw(st.integers(0, len(lines) - 1))
+    how = data.draw(st.sampled_from(["cut", "replace", "insert"]))
+    junk = data.draw(st.text(st.characters(codec="utf-8", exclude_categories=("Cs",)),
+                             max_size=20))
+    if how == "cut":
+        lines = lines[:i]
+    elif how == "replace":
+        lines[i] = junk
+    else:
+        lines.insert(i, junk)
+    text = "\n".join(lines) + "\n"
+    try:
+        opsfile.parse(text, "x.ops")
+    except opsfile.OpsFileError as exc:
+        assert 1 <= exc.line <= len(text.splitlines()) + 1 and exc.col >= 1

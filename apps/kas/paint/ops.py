@@ -57,6 +57,8 @@ class OpsFile:
     gap: float = 0.0
     painted: int = 1
     name: str = "<operations>"
+    # where the 'painted' value and each 'frame N' number stand in the file (line, column)
+    at: dict[str, tuple[int, int]] = field(default_factory=dict, compare=False)
 
     def ops_for(self, frame: int) -> list[Op]:
         """Everything to do in ``frame`` (1-based), front-most last."""

@@ -182,12 +182,13 @@ def parse(text: str, name: str = "<operations>") -> OpsFile:
     gap = r.float_at(ln, w, "gap")
     if gap < 0:
         raise r.error(ln, w[0], "the gap tolerance cannot be negative")
-    ln, (w,) = r.keyword("painted", 1)
-    painted = r.int_at(ln, w, 1, 10**6, "painted frame")
+    pln, (w,) = r.keyword("painted", 1)
+    painted = r.int_at(pln, w, 1, 10**6, "painted frame")
+    pcol = w[0]
     ln, (w,) = r.keyword("ops", 1)
     ops = [_op(r, *r.next("an operation"), len(pal), None)
            for _ in range(r.int_at(ln, w, 0, 10**6, "operation count"))]
-    out = OpsFile(pal, ops, {}, gap, painted, name)
+    out = OpsFile(pal, ops, {}, gap, painted, name, {"painted": (pln, pcol)})
     while True:
         ln, words = r.next("'end'")
         if words[0][1] == "end" and len(words) == 1:
@@ -195,6 +196,7 @@ def parse(text: str, name: str = "<operations>") -> OpsFile:
         frame, count = _frame_header(r, ln, words)
         if frame in out.frame_ops:
             raise r.error(ln, words[1][0], f"frame {frame} has a second section")
+        out.at[f"frame {frame}"] = (ln, words[1][0])
         out.frame_ops[frame] = [_op(r, *r.next("an operation"), len(pal), frame)
                                 for _ in range(count)]
     if r.i < len(r.lines):
@@ -226,11 +228,12 @@ def check(f: OpsFile, seq: AnimSequence) -> None:
     n = len(seq.frames)
     most = max((len(fr.chains) for fr in seq.frames), default=0)
     if not 1 <= f.painted <= n:
-        raise OpsFileError(f.name, 0, 0, f"painted frame {f.painted} outside 1..{n}")
+        raise OpsFileError(f.name, *f.at.get("painted", (0, 0)),
+                           f"painted frame {f.painted} outside 1..{n}")
     for frame, ops in [(None, f.ops)] + sorted(f.frame_ops.items()):
         if frame is not None and not 1 <= frame <= n:
-            line = ops[0].line_no - 1 if ops else 0
-            raise OpsFileError(f.name, line, 7, f"frame {frame} outside 1..{n}")
+            raise OpsFileError(f.name, *f.at.get(f"frame {frame}", (0, 0)),
+                               f"frame {frame} outside 1..{n} (the sequence's frames)")
         have = most if frame is None else len(seq.frames[frame - 1].chains)
         for op in ops:
             for c, col in zip(op.chains, op.cols or (0,) * len(op.chains), strict=True):
