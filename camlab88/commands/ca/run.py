@@ -59,19 +59,11 @@ def _run(args: argparse.Namespace) -> int:
     engine = Engine(rules, edges=args.edges, seed=args.seed, algorithm=args.engine)
     engine.hashlife_memory = args.memory << 20
     engine.set_cells(xs, ys, ts)
-    done = 0
-    while done < args.generations:
-        chunk = args.generations - done
-        if args.every > 0:
-            chunk = min(chunk, args.every)
-        try:
-            engine.step(chunk, ProgressLine(start_generation=done))
-        except (ValueError, MemoryError) as exc:  # HashLife forced where it cannot run
-            print(f"camlab88 ca run: {exc}", file=sys.stderr)
-            return 2
-        done += chunk
-        if args.every > 0 and done < args.generations:
-            _print_stats(engine.stats(), False)
+    try:
+        _advance(engine, args, ProgressLine)
+    except (ValueError, MemoryError) as exc:  # HashLife forced where it cannot run
+        print(f"camlab88 ca run: {exc}", file=sys.stderr)
+        return 2
     stats = engine.stats()
     stats["origin"] = [CENTRE, CENTRE]
     if args.png:
@@ -82,6 +74,19 @@ def _run(args: argparse.Namespace) -> int:
         print(f"wrote {args.png}", file=sys.stderr if args.json else sys.stdout)
     _print_stats(stats, args.json)
     return 0
+
+
+def _advance(engine, args: argparse.Namespace, progress) -> None:  # noqa: ANN001
+    """Run ``args.generations``, printing statistics every ``args.every`` on the way."""
+    done = 0
+    while done < args.generations:
+        chunk = args.generations - done
+        if args.every > 0:
+            chunk = min(chunk, args.every)
+        engine.step(chunk, progress(start_generation=done))
+        done += chunk
+        if args.every > 0 and done < args.generations:
+            _print_stats(engine.stats(), False)
 
 
 def _print_stats(stats: dict, as_json: bool) -> None:
