@@ -99,8 +99,9 @@ def main(argv: list[str] | None = None) -> int:
         commands = {k: v for k, v in commands.items() if args.only in k}
     print(f"# bench_startup: {platform.machine()} {platform.python_version()}, "
           f"{os.cpu_count()} CPUs, {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}")
-    print("| command | cold wall s | warm wall s | warm CPU s | load before -> after |")
-    print("|---|---|---|---|---|")
+    print("| command | cold wall s | cold CPU s | warm wall s | warm CPU s "
+          "| load before -> after |")
+    print("|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory(prefix="camlab88-startup-") as tmp:
         work = Path(tmp)
         shutil.copytree(ROOT / "examples", work / "examples")
@@ -108,8 +109,9 @@ def main(argv: list[str] | None = None) -> int:
             before = load()
             cold, warm = measure(cmd, work, args.runs, args.cold_runs)
             over = statistics.median(w for w, _ in warm) > BUDGET_S and "demo" not in name
-            print(f"| `{name}` | {fmt(cold, 0)} | {fmt(warm, 0)}{' (over)' if over else ''} "
-                  f"| {fmt(warm, 1)} | {before} -> {load()} |", flush=True)
+            print(f"| `{name}` | {fmt(cold, 0)} | {fmt(cold, 1)} "
+                  f"| {fmt(warm, 0)}{' (over)' if over else ''} | {fmt(warm, 1)} "
+                  f"| {before} -> {load()} |", flush=True)
     return 0
 
 
