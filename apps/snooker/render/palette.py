@@ -122,42 +122,109 @@ def _to_white(lit: np.ndarray, n: int) -> np.ndarray:
     return np.clip(lit, 0, 1) * (1 - t) + t
 
 
-def adaptive_palette(frames_linear: list[np.ndarray], iterations: int = 12,
-                     samples: int = 120_000, seed: int = 1984) -> Palette:
-    """k-means (Lloyd) in L*a*b* over pixels sampled evenly from every frame, seeded by
-    median cut; deterministic for a given seed."""
-    rng = np.random.default_rng(seed)
-    per = max(samples // max(len(frames_linear), 1), 1)
-    pts = []
-    for f in frames_linear:
-        flat = f.reshape(-1, 3)
-        pts.append(flat[rng.choice(len(flat), size=min(per, len(flat)), replace=False)])
-    data = lab(np.concatenate(pts))
-    centres = median_cut(data, SIZE)
+def adaptive_palette(frames_linear: list[np.ndarray], iterations: int = 10,
+                     exact_share: float = 1e-4) -> Palette:
+    """The 256 colours that serve these frames best: every colour covering at least
+    ``exact_share`` of all pixels gets an entry of its own (the constant-shaded faces), and
+    the rest are k-means (Lloyd) centres in L*a*b* over the remaining colours weighted by
+    how many pixels have them, seeded by a weighted median cut. Deterministic."""
+    keys = np.concatenate([_keys(f) for f in frames_linear])
+    uniq, count = np.unique(keys, return_counts=True)
+    common = count >= exact_share * keys.size
+    order = np.argsort(-count[common], kind="stable")[: SIZE // 4]
+    exact = uniq[common][order]
+    rest, weight = uniq[~np.isin(uniq, exact)], count[~np.isin(uniq, exact)].astype(float)
+    chosen = [_key_lab(exact)]
+    k = SIZE - len(exact)
+    if len(rest) <= k:
+        chosen.append(_key_lab(rest))
+    else:
+        chosen.append(_cluster(_key_lab(rest), weight, k, iterations))
+    lab_all = np.concatenate(chosen)
+    if len(lab_all) < SIZE:
+        lab_all = np.concatenate([lab_all, np.repeat(lab_all[-1:], SIZE - len(lab_all), 0)])
+    return Palette(np.clip(lab_to_linear(lab_all), 0.0, 1.0))
+
+
+def _cluster(data: np.ndarray, weight: np.ndarray, k: int, iterations: int) -> np.ndarray:
+    """Lloyd's k-means from a weighted median cut, with the cheapest clusters moved to where
+    the error is (LBG-style relocation), then Weiszfeld steps (each centre towards its
+    cluster's weighted geometric median: the score is the mean dE, an absolute error,
+    which medians minimise and means do not)."""
+    centres = median_cut(data, k, weight)
     for _ in range(iterations):
+        centres = _lloyd(data, weight, centres, 2, median=False)
+        centres = _relocate(data, weight, centres, max(k // 20, 1))
+    return _lloyd(data, weight, centres, iterations, median=True)
+
+
+def _lloyd(data: np.ndarray, weight: np.ndarray, centres: np.ndarray, steps: int,
+           median: bool) -> np.ndarray:
+    centres = centres.copy()
+    for _ in range(steps):
         label = nearest(data, centres)
+        w = weight
+        if median:
+            w = weight / np.maximum(np.linalg.norm(data - centres[label], axis=1), 0.05)
         sums = np.zeros_like(centres)
-        np.add.at(sums, label, data)
-        count = np.bincount(label, minlength=len(centres))
-        live = count > 0
-        centres[live] = sums[live] / count[live, None]
-    return Palette(np.clip(lab_to_linear(centres), 0.0, 1.0))
+        np.add.at(sums, label, data * w[:, None])
+        total = np.bincount(label, weights=w, minlength=len(centres))
+        live = total > 0
+        centres[live] = sums[live] / total[live, None]
+    return centres
 
 
-def median_cut(data: np.ndarray, k: int) -> np.ndarray:
-    """k centres: split the box with the widest extent at its median, until k boxes."""
-    boxes = [data]
+def _relocate(data: np.ndarray, weight: np.ndarray, centres: np.ndarray,
+              n: int) -> np.ndarray:
+    """Move the n clusters that cost least to keep onto the n worst-served colours."""
+    label = nearest(data, centres)
+    err = weight * np.linalg.norm(data - centres[label], axis=1)
+    cost = np.bincount(label, weights=err, minlength=len(centres))
+    mass = np.bincount(label, weights=weight, minlength=len(centres))
+    # removing a cluster sends its colours to their next-nearest entry: ~ its mass times the
+    # spacing of entries; approximate that by mass * (its error + 1) and drop the cheapest
+    cheap = np.argsort(mass * (cost / np.maximum(mass, 1e-12) + 1.0), kind="stable")[:n]
+    worst = np.argsort(-err, kind="stable")
+    out = centres.copy()
+    taken: list[int] = []
+    for idx in worst:
+        if len(taken) == n:
+            break
+        if label[idx] in cheap:
+            continue
+        if all(np.linalg.norm(data[idx] - data[t]) > 1.0 for t in taken):
+            taken.append(int(idx))
+    for c, idx in zip(cheap, taken):
+        out[c] = data[idx]
+    return out
+
+
+def _keys(linear: np.ndarray) -> np.ndarray:
+    return encode(linear.reshape(-1, 3)).astype(np.int64) @ np.array([65536, 256, 1])
+
+
+def _key_lab(keys: np.ndarray) -> np.ndarray:
+    rgb = np.stack([keys >> 16, (keys >> 8) & 255, keys & 255], axis=1) / 255.0
+    return lab(rgb ** 2.2)
+
+
+def median_cut(data: np.ndarray, k: int, weight: np.ndarray | None = None) -> np.ndarray:
+    """k centres: split the box with the widest extent at its (weighted) median, until k."""
+    w = np.ones(len(data)) if weight is None else weight
+    boxes = [np.arange(len(data))]
     while len(boxes) < k:
-        widths = [float(np.ptp(b, axis=0).max()) if len(b) > 1 else -1.0 for b in boxes]
+        widths = [float(np.ptp(data[b], axis=0).max()) if len(b) > 1 else -1.0
+                  for b in boxes]
         i = int(np.argmax(widths))
         if widths[i] <= 0:
             break
         b = boxes.pop(i)
-        axis = int(np.argmax(np.ptp(b, axis=0)))
-        order = np.argsort(b[:, axis], kind="stable")
-        half = len(b) // 2
-        boxes += [b[order[:half]], b[order[half:]]]
-    centres = np.array([b.mean(axis=0) for b in boxes])
+        axis = int(np.argmax(np.ptp(data[b], axis=0)))
+        b = b[np.argsort(data[b, axis], kind="stable")]
+        cum = np.cumsum(w[b])
+        half = int(np.clip(np.searchsorted(cum, cum[-1] / 2.0), 1, len(b) - 1))
+        boxes += [b[:half], b[half:]]
+    centres = np.array([np.average(data[b], axis=0, weights=w[b]) for b in boxes])
     if len(centres) < k:  # fewer distinct colours than entries: repeat the last
         centres = np.concatenate([centres, np.repeat(centres[-1:], k - len(centres), 0)])
     return centres
