@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 import shutil
 from pathlib import Path
 
@@ -74,3 +75,33 @@ def test_camera_tool_headless_with_scripted_input(tmp_path: Path, capsys) -> Non
     assert main(["snooker", "camera", str(script), SHOT, "--events", str(events),
                  "--headless", "--screenshot", str(shot)]) == 0
     assert "1 error now; unsaved edits" in capsys.readouterr().err and shot.exists()
+
+
+def test_a_recorded_session_replays_the_script_saved_from_outside(tmp_path: Path,
+                                                                  monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    import argparse
+
+    from apps.snooker.camera import motion
+    from camlab88.commands.snooker import camera as command
+    from camlab88.runopts import run_options
+    from emulator.harness.loop import Plugin
+
+    monkeypatch.chdir(tmp_path)
+    shutil.copy(DATA / "thesis_example.ccl", "cam.ccl")
+    shutil.copy(SHOT, "shot.cp")
+    argv = ["snooker", "camera", "cam.ccl", "shot.cp", "--headless", "--stop-after", "12",
+            "--record", "rec.jsonl"]
+    args = argparse.Namespace(headless=True, screenshot=None, frames=None, stop_after=12,
+                              record=Path("rec.jsonl"), scale=1)
+    opts = run_options(args, command.COMMAND, "test", argv=argv)
+
+    class Editor(Plugin):  # another editor saves the script while the tool runs
+        def post_tick(self, harness) -> None:  # type: ignore[no-untyped-def]
+            if harness.ticks == 5:
+                Path("cam.ccl").write_text(":focal length of 300\n")
+                os.utime("cam.ccl", ns=(1, 3))
+
+    _, tool = command._run(motion.load("shot.cp"), "cam.ccl", None, opts, [Editor()])
+    assert tool.result.focal[0] == 300
+    Path("cam.ccl").write_text((DATA / "thesis_example.ccl").read_text())  # as at the start
+    assert main(["replay", "rec.jsonl", "--headless", "--check"]) == 0

@@ -39,6 +39,10 @@ class CameraTool:
         self.client, self.motion, self.path = client, motion, Path(script)
         self.buf = TextBuffer(self._read())
         self.watch = FileWatch(self.path)
+        # Texts read from disk after the start, for session recordings (the harness's
+        # "outside" wire); a replay feeds them back instead of reading the disk.
+        self.outside: list[str] = []
+        self.fed: list[str] | None = None
         x, y, w, h = layout.VIEW
         self.view = ViewDisplay(client, SCREEN, x, y, w, h, VIEW_PAGE)
         self.script_pane, self.info, self.timeline = (ScriptPane(client), InfoPane(client),
@@ -74,10 +78,25 @@ class CameraTool:
             self.frame = self.frame % self.motion.n_frames + 1
         return not self.done
 
-    def poll_file(self) -> None:
-        if not self.watch.changed():
-            return
+    def read_outside(self) -> str:
+        """The script as it is on disk now (recorded), or as it was when recorded (replay)."""
+        if self.fed is not None:
+            return self.fed.pop(0) if self.fed else self.buf.text
         text = self._read()
+        self.outside.append(text)
+        return text
+
+    def feed(self, text: str) -> None:
+        """A replay: the text the recorded run read from disk at this point."""
+        self.fed = (self.fed or []) + [text]
+
+    def _disk_changed(self) -> bool:
+        return bool(self.fed) if self.fed is not None else self.watch.changed()
+
+    def poll_file(self) -> None:
+        if not self._disk_changed():
+            return
+        text = self.read_outside()
         if text == self.buf.text:
             return
         if self.modified:
@@ -189,7 +208,7 @@ class CameraTool:
         self.dirty = True
 
     def reload(self) -> None:
-        self.buf.replace(self._read())
+        self.buf.replace(self.read_outside())
         self.watch.seen()
         self.modified = False
         self.status = f"reloaded {self.path.name}"
