@@ -36,6 +36,8 @@ def test_round_trip_is_bit_identical(tmp_path: Path) -> None:
     ("1 0 0 0 0 0 0 50\n", "1:3", "the same point"),
     ("0 0 0 0 1 1 1 50\n", "1:1", "not an integer >= 1"),
     ("1 0 0 nan 1 1 1 50\n", "1:7", "not a finite number"),
+    ("1 0 0 1_0 1 1 1 50\n", "1:7", "oz '1_0' is not a finite number"),
+    ("1 0 0 1e999 1 1 1 50\n", "1:7", "not a finite number"),
     ("# only\n", "2:1", "no frames"),
 ])
 def test_errors_name_line_and_column(text: str, where: str, what: str) -> None:

@@ -27,6 +27,7 @@ from protocols.atomicfile import write_atomic
 
 Vec3 = tuple[float, float, float]
 _TOKEN = re.compile(r"\S+")
+_NUMBER = re.compile(r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?", re.ASCII)
 _FIELDS = ("frame", "ox", "oy", "oz", "vx", "vy", "vz", "focal")
 
 
@@ -54,10 +55,7 @@ class View:
 
 
 def _number(path: str, line: int, col: int, field: str, tok: str) -> float:
-    try:
-        x = float(tok) if tok.isascii() else math.nan
-    except ValueError:
-        x = math.nan
+    x = float(tok) if _NUMBER.fullmatch(tok) else math.nan  # not "1_000", "inf" or "nan"
     if not math.isfinite(x):
         raise ViewFileError(path, line, col, f"{field} {tok!r} is not a finite number")
     return x
