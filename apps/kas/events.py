@@ -32,9 +32,18 @@ class MenuPick:
 Event = Pointer | Key | MenuPick
 
 
+def is_time(word: str) -> bool:
+    """A script line's optional leading TIME: ``2.5`` (seconds) or ``+0.1`` (after the
+    previous event)."""
+    return bool(word) and word[0] in "+0123456789."
+
+
 def parse_script(text: str, name: str = "<script>") -> list[Event]:
-    """Events from a text script, one a line: ``move X Y`` / ``down X Y`` / ``up X Y`` /
-    ``key K`` / ``menu ITEM`` / ``type TEXT`` (one Key per character); ``#`` comments."""
+    """Events from a KAS script, one a line: ``[TIME] move X Y`` / ``down X Y`` / ``up X Y``
+    / ``key K`` / ``menu ITEM`` / ``type TEXT`` (one Key per character) / ``wait``; ``#``
+    comments.  This is the one KAS script format (apps/kas/program/script.py reads the same
+    files on the Sigma, where TIME matters); the editor model takes the events in order, so
+    TIME is checked and then ignored, and ``wait`` does nothing."""
     from apps.kas.files import KasFileError
 
     out: list[Event] = []
@@ -44,6 +53,11 @@ def parse_script(text: str, name: str = "<script>") -> list[Event]:
             continue
         word, _, rest = line.partition(" ")
         try:
+            if is_time(word):
+                _check_time(word)
+                word, _, rest = rest.strip().partition(" ")
+            if word == "wait" and not rest.strip():
+                continue
             if word in ("move", "down", "up"):
                 xs, ys = rest.split()
                 x, y = float(xs), float(ys)
@@ -59,6 +73,17 @@ def parse_script(text: str, name: str = "<script>") -> list[Event]:
             else:
                 raise ValueError
         except ValueError:
-            raise KasFileError(name, no, f"bad event {line!r} (expected move/down/up X Y, "
-                               "key K, menu ITEM or type TEXT)") from None
+            raise KasFileError(name, no, f"bad event {line!r} (expected [TIME] move/down/up X "
+                               "Y, key K, menu ITEM, type TEXT or wait)") from None
     return out
+
+
+def _check_time(word: str) -> None:
+    from fractions import Fraction
+
+    try:
+        v = Fraction(word[1:] if word.startswith("+") else word)
+    except ZeroDivisionError:
+        raise ValueError(word) from None  # ValueError: a bad line
+    if not 0 <= v <= 10**6:
+        raise ValueError(word)
