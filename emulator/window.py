@@ -96,16 +96,10 @@ class Window:
         return np.frombuffer(raw, dtype=np.uint8).reshape(height, width, 3).copy()
 
     def screenshot(self, path: str | os.PathLike[str]) -> Path:
-        """Save the window surface as a PNG, atomically."""
-        from PIL import Image
+        """Save the window surface as a PNG, atomically (emulator.png, the one writer)."""
+        from emulator.png import write_png
 
-        from protocols.atomicfile import atomic_output
-
-        target = Path(path)
-        target.parent.mkdir(parents=True, exist_ok=True)
-        with atomic_output(target) as fh:
-            Image.fromarray(self.pixels()).save(fh, format="PNG")
-        return target
+        return write_png(self.pixels(), path)
 
     def _device_xy(self, pos: tuple[int, int]) -> tuple[int, int]:
         w, h = self.size
@@ -221,7 +215,14 @@ def main(argv: list[str] | None = None) -> int:
         width, height = (int(v) for v in args.size.lower().split("x"))
     except ValueError:
         parser.error(f"--size must be WxH, not {args.size!r}")
+    from emulator.harness.display import display_available
+
+    if not display_available():  # the one display rule: never an invisible window
+        print("python -m emulator.window: no display for a window (set DISPLAY, or run "
+              "under xvfb-run)")
+        return 2
     frame = test_card(width, height)
+    print("window open: input events are printed; Escape or close to quit", flush=True)
     with Window("camlab88 window test card", (width, height), args.scale) as window:
         for n in range(10**9):
             window.show(frame)
