@@ -62,7 +62,7 @@ def test_errors_are_marked_and_the_preview_goes_on(tool) -> None:  # type: ignor
     assert "did you mean VIEWPOINT?" in t.result.errors[0].message
     # the rest of the script still runs: command 2 still moves the observer
     assert t.result.observer[43].tolist() == pytest.approx([7.3, -4.5, 1.2])
-    pane = rb.client.get_pixels(t.script_pane.pad, 0, 30, 288, 10)  # script line 4
+    pane = rb.client.get_pixels(t.script_pane.pad, 0, 30, layout.SCRIPT[2], 10)  # line 4
     assert (pane == 2).sum() > 200  # its row has the error background
     frame_before = t.frame
     t.step()
@@ -125,7 +125,7 @@ def test_scrub_on_the_time_line_and_step_keys(tool) -> None:  # type: ignore[no-
 def test_timeline_marks_the_strike_and_the_tool_screen(tool) -> None:  # type: ignore[no-untyped-def]
     rb, t = tool
     assert (44, "strike", 5) in t.events and (75, "stop", 5) in t.events
-    tl = rb.client.get_pixels(t.timeline.pad, 0, 0, 480, 48)
+    tl = rb.client.get_pixels(t.timeline.pad, 0, 0, *layout.TIMELINE[2:])
     x = layout.timeline_x(44, 75)
     assert (tl[6:42, x] == 2).all()  # the strike's red tick
     rb.inject(MouseEvent(0, layout.timeline_x(50, 75), layout.TIMELINE[1] + 5, LEFT, 1, True))

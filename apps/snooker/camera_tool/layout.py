@@ -4,15 +4,15 @@ time line under the view."""
 
 from __future__ import annotations
 
-VIEW = (0, 0, 480, 360)
-SCRIPT = (480, 0, 288, 576)
-INFO = (0, 360, 480, 168)
-TIMELINE = (0, 528, 480, 48)
+VIEW = (0, 0, 432, 324)
+SCRIPT = (432, 0, 336, 576)  # 55 columns: the thesis's longest script line is 49
+INFO = (0, 324, 432, 204)
+TIMELINE = (0, 528, 432, 48)
 CHAR_W, CHAR_H = 6, 10  # the Rainbow's text cells
 SCRIPT_COLS = SCRIPT[2] // CHAR_W - 1
 SCRIPT_ROWS = SCRIPT[3] // CHAR_H - 1  # the last row is the file's status
 INFO_COLS = INFO[2] // CHAR_W
-TIMELINE_X0, TIMELINE_X1 = 10, 470  # frame 1 .. the last frame
+TIMELINE_X0, TIMELINE_X1 = 10, 422  # frame 1 .. the last frame
 
 
 def timeline_x(frame: int, n_frames: int) -> int:
