@@ -45,7 +45,9 @@ def test_rendered_shadow_covers_the_ellipse_on_the_baize() -> None:
     g = frame_geometry(scene, np.array(view.observer), np.array(view.viewpoint),
                        view.focal_mm, 1, 768, 512)
     item = next(i for i in g.items if isinstance(i, ShadowItem))
-    occ = shadow_occlusion(g, item, 512, 768)[0, :, :, 0]
+    box, x0, y0 = shadow_occlusion(g, item, 512, 768)
+    occ = np.zeros((512, 768))
+    occ[y0:y0 + box.shape[1], x0:x0 + box.shape[2]] = box[0, :, :, 0]
     (cx, cy, ux, uy, a, b, _), = item.ellipses
     ys, xs = np.mgrid[0:512, 0:768]
     ground, _hit = g.pin.ground(xs + 0.5, ys + 0.5)

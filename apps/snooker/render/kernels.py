@@ -61,14 +61,53 @@ def polygon(img, verts, colour):  # noqa: ANN001, ANN201 - numba kernel
             continue
         i0 = max(int(math.floor(lo)) - 1, 0)
         i1 = min(int(math.floor(hi)) + 1, w - 1)
+        f0, f1 = full_span(verts, orient, yc)
         for i in range(i0, i1 + 1):
-            cov = coverage_at(verts, orient, i + 0.5, yc)
+            xc = i + 0.5
+            if f0 <= xc <= f1:  # inside every edge by half a pixel or more: covered
+                for c in range(img.shape[2]):
+                    img[j, i, c] = colour[c]
+                touched += 1
+                continue
+            cov = coverage_at(verts, orient, xc, yc)
             if cov <= 0.0:
                 continue
             touched += 1
             for c in range(img.shape[2]):
                 img[j, i, c] = cov * colour[c] + (1.0 - cov) * img[j, i, c]
     return touched
+
+
+@njit(cache=True, nogil=True)
+def full_span(verts, orient, yc):  # noqa: ANN001, ANN201 - numba kernel
+    """(x0, x1): the pixel centres on row centre yc that every edge covers wholly. Along a
+    row each edge's 0.5 + d is linear in x, so each edge bounds the run on one side."""
+    k = verts.shape[0]
+    x0 = -1e300
+    x1 = 1e300
+    for e in range(k):
+        f = (e + 1) % k
+        ax, ay = verts[e, 0], verts[e, 1]
+        dx = verts[f, 0] - ax
+        dy = verts[f, 1] - ay
+        if dx == 0.0 and dy == 0.0:
+            continue
+        # 0.5 + d = alpha + beta * x (as in coverage_at)
+        if abs(dx) >= abs(dy):
+            sgn = (1.0 if dx > 0 else -1.0) * orient
+            beta = -dy / dx * sgn
+            alpha = 0.5 + (yc - ay + ax * dy / dx) * sgn
+        else:
+            sgn = (1.0 if dy > 0 else -1.0) * orient
+            beta = -sgn
+            alpha = 0.5 + (ax + (yc - ay) * dx / dy) * sgn
+        if beta > 0.0:
+            x0 = max(x0, (1.0 - alpha) / beta)
+        elif beta < 0.0:
+            x1 = min(x1, (1.0 - alpha) / beta)
+        elif alpha < 1.0:
+            return 1.0, 0.0
+    return x0 + 1e-9, x1 - 1e-9
 
 
 @njit(cache=True, nogil=True)
@@ -120,12 +159,12 @@ def _ellipse_q(e, gx, gy):  # noqa: ANN001, ANN202 - numba kernel
 
 
 @njit(cache=True, nogil=True)
-def shadows(occ, cam, ellipses, boxes, hl, hw):  # noqa: ANN001, ANN201 - numba kernel
+def shadows(occ, cam, ellipses, boxes, hl, hw, x0, y0):  # noqa: ANN001, ANN201 - numba kernel
     """Ball shadows on the baize: for each ellipse row (cx, cy, ux, uy, a, b, light) in
     ground metres and its screen box (i0, j0, i1, j1), OR its coverage c into occ[light]
     (occ = c + (1 - c) * occ). Coverage from the ellipse's implicit function over its
     screen-space gradient (one pixel either way), clipped to the playing area |x| <= hl,
-    |y| <= hw. Returns pixels touched."""
+    |y| <= hw. ``occ`` covers the screen from pixel (x0, y0). Returns pixels touched."""
     touched = 0
     for m in range(ellipses.shape[0]):
         e = ellipses[m]
@@ -154,7 +193,7 @@ def shadows(occ, cam, ellipses, boxes, hl, hw):  # noqa: ANN001, ANN201 - numba 
                     continue
                 if cov > 1.0:
                     cov = 1.0
-                occ[li, j, i, 0] = cov + (1.0 - cov) * occ[li, j, i, 0]
+                occ[li, j - y0, i - x0, 0] = cov + (1.0 - cov) * occ[li, j - y0, i - x0, 0]
                 touched += 1
     return touched
 
@@ -264,3 +303,28 @@ def speck_mix(b, specks, nx, ny, nz, r_px):  # noqa: ANN001, ANN201 - numba kern
         if m > best:
             best = min(m, 1.0)
     return best
+
+
+@njit(cache=True, nogil=True)
+def dim(img, occ, removed, x0, y0):  # noqa: ANN001, ANN201 - numba kernel
+    """Take each light's shadowed share of the baize away: img -= sum_l occ_l * removed_l
+    (occ covers img from (x0, y0)), never below black."""
+    for j in range(occ.shape[1]):
+        for i in range(occ.shape[2]):
+            for c in range(3):
+                v = img[j + y0, i + x0, c]
+                for li in range(occ.shape[0]):
+                    v -= occ[li, j, i, 0] * removed[li, c]
+                img[j + y0, i + x0, c] = v if v > 0.0 else 0.0
+
+
+@njit(cache=True, nogil=True)
+def encode(out, linear, table):  # noqa: ANN001, ANN201 - numba kernel
+    """Linear light -> gamma-encoded uint8 through the gamma module's 65536-entry table."""
+    n = table.shape[0] - 1
+    for j in range(linear.shape[0]):
+        for i in range(linear.shape[1]):
+            for c in range(3):
+                v = linear[j, i, c] * n + 0.5
+                k = 0 if v <= 0.0 else (n if v >= n else int(v))
+                out[j, i, c] = table[k]

@@ -43,7 +43,7 @@ from apps.snooker.render.palette import Palette
 from apps.snooker.render.runs import RunWriter
 from apps.snooker.render.scene import Scene
 from apps.snooker.render.shading import lights_array
-from apps.snooker.render.shadow_pass import shadow_dimming
+from apps.snooker.render.shadow_pass import shadow_occlusion
 from apps.snooker.render.specks import speck_directions
 from protocols.sigma import Encoder
 
@@ -168,12 +168,11 @@ class _FrameJob:
 
     # -------------------------------------------------------------- shadows and balls
     def shadows(self, item: ShadowItem) -> None:
-        box, dim = shadow_dimming(self.g, item, SCREEN_H, SCREEN_W)
-        if box is None:
+        occ, x0, y0 = shadow_occlusion(self.g, item, SCREEN_H, SCREEN_W)
+        if occ.size == 0:
             return
-        y0, y1, x0, x1 = box
-        region = self.lin[y0:y1, x0:x1]
-        new = np.maximum(region - dim, 0.0)
+        new = self.lin[y0:y0 + occ.shape[1], x0:x0 + occ.shape[2]].copy()  # C order
+        K.dim(new, occ, np.ascontiguousarray(item.removed), np.int64(0), np.int64(0))
         self._send_changed("shadows", new, y0, x0)
 
     def ball(self, item: BallItem) -> None:

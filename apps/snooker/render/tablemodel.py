@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
@@ -87,8 +88,9 @@ def _pocket(name: str, cx: float, cy: float, r: float, hl: float, hw: float) -> 
     return _face(f"pocket {name}", "pocket", "", [(x, y, 0.0) for x, y in pts], "pocket")
 
 
+@lru_cache(maxsize=8)
 def table_faces(table: Table) -> tuple[Face, ...]:
-    """Every face of the table model."""
+    """Every face of the table model (the same objects for equal tables)."""
     hl, hw = table.length_m / 2.0, table.width_m / 2.0
     faces = [_face("playing surface", "surface", "",
                    [(-hl, -hw, 0.0), (hl, -hw, 0.0), (hl, hw, 0.0), (-hl, hw, 0.0)], "baize")]

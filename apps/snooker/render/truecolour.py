@@ -14,12 +14,12 @@ import numpy as np
 from apps.snooker.render import kernels as K
 from apps.snooker.render.balls import ball_params
 from apps.snooker.render.frame import FrameGeometry, camera_params, clip_project, frame_geometry
-from apps.snooker.render.gamma import encode
+from apps.snooker.render.gamma import encode_image
 from apps.snooker.render.materials import BACKGROUND
 from apps.snooker.render.painter import BallItem, PolygonItem, ShadowItem
 from apps.snooker.render.scene import Scene
 from apps.snooker.render.shading import lights_array
-from apps.snooker.render.shadow_pass import shadow_dimming
+from apps.snooker.render.shadow_pass import apply_shadows
 from apps.snooker.render.specks import speck_directions
 
 
@@ -35,7 +35,7 @@ def render_frame(scene: Scene, view: object, options: RenderOptions | None = Non
                  frame: int | None = None) -> np.ndarray:
     """(H, W, 3) uint8, gamma-encoded, row 0 = top. ``view`` has observer, viewpoint,
     focal_mm and frame (the camera issue's View); ``frame`` overrides view.frame."""
-    return encode(render_linear(scene, view, options, frame))
+    return encode_image(render_linear(scene, view, options, frame))
 
 
 def render_linear(scene: Scene, view: object, options: RenderOptions | None = None,
@@ -59,13 +59,6 @@ def render_linear(scene: Scene, view: object, options: RenderOptions | None = No
         elif isinstance(item, BallItem):
             draw_ball(img, scene, g, item, lights, o.specks)
     return img
-
-
-def apply_shadows(img: np.ndarray, g: FrameGeometry, item: ShadowItem) -> None:
-    box, dim = shadow_dimming(g, item, img.shape[0], img.shape[1])
-    if box is not None:
-        y0, y1, x0, x1 = box
-        np.maximum(img[y0:y1, x0:x1] - dim, 0.0, out=img[y0:y1, x0:x1])
 
 
 def draw_ball(img: np.ndarray, scene: Scene, g: FrameGeometry, item: BallItem,
