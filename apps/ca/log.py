@@ -249,7 +249,7 @@ def _parse_header(lines: list[str], source: str) -> tuple[LogSettings, int]:
         if word == "edges":
             if rest.strip() not in EDGES:
                 raise LogError(f"{source}:{i + 1}: edges must be wrap or bounded, "
-                               f"found {rest.strip()!r}")
+                               f"found {quote(rest.strip())}")
             edges = rest.strip()
         elif word == "seed":
             if not re.fullmatch(r"-?[0-9]+", rest.strip()):
@@ -289,7 +289,7 @@ def parse_log(text: str, source: str = "<log>") -> list[Event]:
             continue
         parts = raw.split()
         if len(parts) < 2 or not re.fullmatch(r"[0-9]+", parts[0]):
-            raise LogError(f"{source}:{i}: expected 'generation kind ...', found {raw!r}")
+            raise LogError(f"{source}:{i}: expected 'generation kind ...', found {quote(raw)}")
         here = f"{source}:{i}"
 
         def num(text: str, lo: int = -MAX_LOG_NUMBER - 1, hi: int = MAX_LOG_NUMBER,

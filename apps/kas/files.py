@@ -201,7 +201,7 @@ class _Reader:
         no, text = self.next(f"'{word}'")
         parts = text.split()
         if parts[0] != word:
-            raise KasFileError(self.name, no, f"expected '{word}', found {parts[0]!r}")
+            raise KasFileError(self.name, no, f"expected '{word}', found {quote(parts[0])}")
         return no, parts[1:]
 
     def count(self, word: str) -> int:
@@ -254,7 +254,7 @@ class _Reader:
                 vals = []
             if len(parts) != cols or len(vals) != cols or not np.isfinite(vals).all():
                 raise KasFileError(self.name, no, f"expected {cols} finite numbers "
-                                   f"for a {what}, found {t!r}")
+                                   f"for a {what}, found {quote(t)}")
             rows.append(vals)
             nos.append(no)
         self.rows = nos
@@ -263,7 +263,7 @@ class _Reader:
     def finish(self) -> None:
         no, text = self.next("'end'")
         if text != "end":
-            raise KasFileError(self.name, no, f"expected 'end', found {text!r}")
+            raise KasFileError(self.name, no, f"expected 'end', found {quote(text)}")
         if not self.at_end():
             raise self.error("unexpected text after 'end'")
 
@@ -278,7 +278,7 @@ def _header(r: _Reader, kind: str) -> None:
     if parts[1] != kind:
         raise KasFileError(r.name, no, f"this is a KAS {parts[1]} file, not a {kind} file")
     if parts[2] != str(VERSION):
-        raise KasFileError(r.name, no, f"unsupported {kind} file version {parts[2]!r} "
+        raise KasFileError(r.name, no, f"unsupported {kind} file version {quote(parts[2])} "
                            f"(this program reads version {VERSION})")
 
 

@@ -25,7 +25,7 @@ from emulator.rainbow.colour import parse_hex
 from emulator.rainbow.device import Rainbow
 from emulator.rainbow.errors import RainbowError
 from emulator.rainbow.graph import SCREEN
-from protocols.textinput import read_json
+from protocols.textinput import quote, read_json
 
 
 class SceneError(ValueError):
@@ -137,7 +137,7 @@ def _build(r: Rainbow, top: dict) -> None:
                 names[name] = pid = r.create_pad(w, h, depth, plane, page)
                 _fill(r, pid, spec, p, w, h, depth)
             else:
-                raise SceneError(f"{p}.type: must be \"pad\" or \"cluster\", got {kind!r}")
+                raise SceneError(f"{p}.type: must be \"pad\" or \"cluster\", got {quote(kind)}")
         except RainbowError as exc:
             raise SceneError(f"{p}: {_named(str(exc), ids)}") from None
         ids[names[name]] = name
@@ -155,11 +155,11 @@ def _build(r: Rainbow, top: dict) -> None:
             ends.append(names[spec[end]])
         parent, child = spec["parent"], spec["child"]
         if r.node_kind(ends[0]) == "pad":
-            raise SceneError(f"{p}.parent: {parent!r} is a pad, not a cluster")
+            raise SceneError(f"{p}.parent: {quote(parent)} is a pad, not a cluster")
         if ends[1] == SCREEN:
             raise SceneError(f"{p}.child: the screen cannot be mapped into anything")
         if r.graph.reaches(ends[1], ends[0]):
-            raise SceneError(f"{p}: mapping {child!r} into {parent!r} would make a cycle")
+            raise SceneError(f"{p}: mapping {quote(child)} into {quote(parent)} would make a cycle")
         on = spec.get("on", True)
         if not isinstance(on, bool):
             raise SceneError(f"{p}.on: must be true or false")

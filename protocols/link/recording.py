@@ -32,7 +32,7 @@ from typing import IO
 from protocols.link.clock import TimeLike, to_time
 from protocols.link.line import XOFF, XON
 from protocols.link.settings import LineSettings
-from protocols.textinput import read_text
+from protocols.textinput import quote, read_text
 
 MAGIC = "camlab88-link-recording"
 VERSION = 1
@@ -257,7 +257,7 @@ def parse_recording(text: str, name: str = "<recording>") -> Recording:
     if not lines or lines[0].split() != [MAGIC, str(VERSION)]:
         first = lines[0].split()[:2] if lines else []
         if len(first) == 2 and first[0] == MAGIC:
-            raise fail(1, f"unsupported recording version {first[1]!r} (this reads {VERSION})")
+            raise fail(1, f"unsupported recording version {quote(first[1])} (this reads {VERSION})")
         raise fail(1, f"not a camlab88 link recording (expected '{MAGIC} {VERSION}')")
     settings: LineSettings | None = None
     xonxoff: bool | None = None
@@ -304,7 +304,7 @@ def parse_recording(text: str, name: str = "<recording>") -> Recording:
         except ValueError as exc:
             raise fail(lineno, str(exc)) from None
         if direction not in DIRECTIONS:
-            raise fail(lineno, f"direction must be '>' or '<', not {direction!r}")
+            raise fail(lineno, f"direction must be '>' or '<', not {quote(direction)}")
         if not _HEX.match(hex_text):
             raise fail(lineno, f"bad hex bytes {hex_text[:40]!r} (need an even number of 0-9a-f)")
         data = bytes.fromhex(hex_text)
