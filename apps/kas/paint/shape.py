@@ -65,6 +65,8 @@ def gap_segments(frame: Drawing, tol: float) -> list[np.ndarray]:
                 i = int(np.argmin(d))
                 if d[i] < best:
                     best, target = d[i], near[i]
-            if 0 < best <= tol:
-                out.append(np.array([end, target]))
+            seg = np.array([end, target])
+            # a chain's two ends near each other would give the same segment twice
+            if 0 < best <= tol and not any(np.array_equal(seg[::-1], o) for o in out):
+                out.append(seg)
     return out
