@@ -22,30 +22,28 @@ def _library(args: argparse.Namespace) -> int:
     from apps.kas import library
 
     if args.save:
-        from apps.kas import files
-        from protocols.atomicfile import write_atomic
-
-        src, name = args.save
-        loaders = {"keyframe": files.parse_keyframe, "sequence": files.parse_sequence,
-                   "path": files.parse_path, "timing": files.parse_timing}
-        try:
-            if not Path(src).is_file():
-                raise ValueError(f"{src} does not exist: make it first (e.g. 'camlab88 kas "
-                                 f"path A B --out {src}'), then save it into the library")
-            text = Path(src).read_text(encoding="utf-8")
-            first = text.split("\n", 1)[0].split()
-            kind = first[1] if len(first) == 3 and first[0] == "KAS" else ""
-            if kind not in loaders:
-                raise files.KasFileError(src, 1, "not a KAS keyframe, sequence, path or "
-                                         "timing file")
-            loaders[kind](text, src)  # refuse a bad file before it enters the library
-            dest = library.user_file(name)
-            write_atomic(dest, text.encode("utf-8"))
-        except (OSError, ValueError, UnicodeDecodeError) as exc:
-            return fail("camlab88 kas library", exc)
-        print(f"kas library: {kind} {src} saved as {dest}")
-        return 0
+        return _save(*args.save)
     print(f"user library: {library.user_dir()}")
     for name, kind, where in library.entries():
         print(f"{name:28} {kind:9} {where}")
+    return 0
+
+
+def _save(src: str, name: str) -> int:
+    """``--save FILE NAME``: FILE checked, then copied into the user library as NAME."""
+    from apps.kas import library
+    from apps.kas.program.file_kind import kind_of
+    from protocols.atomicfile import write_atomic
+
+    try:
+        if not Path(src).is_file():
+            raise ValueError(f"{src} does not exist: make it first (e.g. 'camlab88 kas "
+                             f"path A B --out {src}'), then save it into the library")
+        text = Path(src).read_text(encoding="utf-8")
+        kind = kind_of(text, src)
+        dest = library.user_file(name)
+        write_atomic(dest, text.encode("utf-8"))
+    except (OSError, ValueError, UnicodeDecodeError) as exc:
+        return fail("camlab88 kas library", exc)
+    print(f"kas library: {kind} {src} saved as {dest}")
     return 0

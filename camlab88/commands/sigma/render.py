@@ -56,7 +56,7 @@ def render(args: argparse.Namespace) -> int:
     if args.out is not None:
         _png(term.frame(), args.out)
         print(f"wrote {args.out}")
-    _say_skipped(term, args.stream)
+    _say_skipped(term, args.stream, host_bytes(got))
     return 0
 
 
@@ -107,10 +107,13 @@ def _periods(got, settings, period: Fraction):  # noqa: ANN001, ANN202
         k += 1
 
 
-def _say_skipped(term, stream: Path) -> None:  # noqa: ANN001
+def _say_skipped(term, stream: Path, data: bytes) -> None:  # noqa: ANN001
+    from protocols.sigma.orders import GRAPHICS_FLAG
+
     s = term.stats
     if s["unknown"] or s["malformed"] or s["errors"]:
         print(f"skipped: {s['unknown']} unknown, {s['malformed']} malformed, "
               f"{s['errors']} impossible orders", file=sys.stderr)
-    if s["bytes"] and not s["commands"]:
-        print(f"{COMMAND}: {stream} drew nothing: is it a Sigma stream?", file=sys.stderr)
+    if data and GRAPHICS_FLAG not in data:  # text only: it went to the alpha screen
+        print(f"{COMMAND}: {stream} drew nothing: is it a Sigma stream? (it never sends "
+              f"the graphics flag {GRAPHICS_FLAG.decode('latin-1')})", file=sys.stderr)
