@@ -187,7 +187,7 @@ class _FrameJob:
         y1 = min(int(np.floor(cy + r)) + 3, SCREEN_H)
         if x0 >= x1 or y0 >= y1:
             return
-        sub = np.ascontiguousarray(self.lin[y0:y1, x0:x1])
+        sub = self.lin[y0:y1, x0:x1].copy()  # C order, never a view of the picture
         params = ball_params(np.array([cx - x0, cy - y0]), r, item.centre, scene.table.radius,
                              item.albedo, scene.orientations[g.row, b], scene.lights,
                              self.host.specks)
