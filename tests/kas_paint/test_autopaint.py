@@ -109,3 +109,12 @@ def test_shape_that_no_longer_closes_is_listed() -> None:
     _, rep = _paint(seq, ops)
     assert [(f.frame, f.line, f.reason) for f in rep.failures] == [
         (2, 3, "the joined line-chains enclose no area")]
+
+
+def test_same_input_bit_identical_frames() -> None:
+    seq = walk(5)
+    ops = OpsFile(ops=WALK_OPS, painted=3)
+    a, ra = _paint(seq, ops)
+    b, rb = _paint(seq, ops)
+    assert all(np.array_equal(x, y) for x, y in zip(a, b, strict=True))
+    assert ra.chars == rb.chars and ra.frame_times == rb.frame_times
