@@ -1,0 +1,30 @@
+"""Golden frames (regenerate with CAMLAB88_REGEN_GOLDEN=1 and look at them first)."""
+
+from __future__ import annotations
+
+from apps.snooker.render.palette import fixed_palette
+from apps.snooker.render.sigma_host import SigmaHost
+from apps.snooker.render.sigma_session import SigmaSession
+from apps.snooker.render.truecolour import RenderOptions, render_frame
+from emulator.sigma import Terminal
+from tests.snooker_render.helpers import DATA, break_scene, break_views, overhead
+from tests.support.golden import assert_matches_golden
+
+GOLDEN = DATA / "golden"
+
+
+def test_truecolour_break_from_behind_baulk() -> None:
+    frame = render_frame(break_scene(), break_views()[14], RenderOptions(384, 256))
+    assert_matches_golden(frame, GOLDEN / "truecolour_break_15.png")
+
+
+def test_truecolour_close_up_from_above() -> None:
+    frame = render_frame(break_scene(), overhead(16, focal=120.0), RenderOptions(256, 192))
+    assert_matches_golden(frame, GOLDEN / "truecolour_overhead_16.png")
+
+
+def test_period_frame_on_the_t5688() -> None:
+    scene = break_scene()
+    term = Terminal("t5688")
+    SigmaSession(SigmaHost(scene, fixed_palette(scene), "period"), term).show(break_views()[14])
+    assert_matches_golden(term.frame(), GOLDEN / "period_break_15.png")
