@@ -11,7 +11,7 @@ from camlab88.areas import register_area
 
 HELP = ("snooker motion development (thesis chapter 6): `camlab88 snooker [SESSION]` runs the "
         "interactive program (= `snooker play`); simulate shots; replay checkpoint files")
-ACTIONS = ("play", "simulate", "replay", "ccl", "visualise", "camera", "render")
+ACTIONS = ("play", "simulate", "replay", "ccl", "visualise", "camera", "render", "film")
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]

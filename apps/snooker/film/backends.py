@@ -1,0 +1,146 @@
+"""Where frames are rendered: a local process pool (one process per core) or a Dask cluster
+(``distributed``: a running scheduler's address, or a LocalCluster started here).
+
+Both hand out ``concurrent.futures``-style futures of ``render_png(scene, task)``; the scene
+goes to every worker once (the pool's initializer, Dask's scatter), tasks carry only the
+frame and its view. Workers return PNG bytes, so a remote cluster needs no shared disk.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+from concurrent.futures import Future, ProcessPoolExecutor
+from typing import Any, Protocol
+
+from apps.snooker.film.task import FrameTask, render_png
+from apps.snooker.render.scene import Scene
+
+_WORKER_SCENE: Scene | None = None
+
+
+class Backend(Protocol):
+    name: str
+    workers: int
+
+    def submit(self, task: FrameTask) -> Future: ...
+
+    def restart(self) -> None: ...
+
+    def close(self) -> None: ...
+
+
+def _init_worker(scene: Scene) -> None:
+    global _WORKER_SCENE
+    _WORKER_SCENE = scene
+
+
+def _render_here(task: FrameTask) -> bytes:
+    assert _WORKER_SCENE is not None, "the pool's initializer sets the scene"
+    return render_png(_WORKER_SCENE, task)
+
+
+class LocalPool:
+    """One process per core (``spawn``: nothing of the parent's threads is inherited)."""
+
+    def __init__(self, scene: Scene, workers: int | None = None) -> None:
+        self.scene = scene
+        self.workers = workers or os.cpu_count() or 1
+        self.name = f"local pool of {self.workers} processes"
+        self._pool = self._start()
+
+    def _start(self) -> ProcessPoolExecutor:
+        return ProcessPoolExecutor(self.workers, multiprocessing.get_context("spawn"),
+                                   initializer=_init_worker, initargs=(self.scene,))
+
+    def submit(self, task: FrameTask) -> Future:
+        return self._pool.submit(_render_here, task)
+
+    def pids(self) -> list[int]:
+        return list(getattr(self._pool, "_processes", {}) or {})
+
+    def restart(self) -> None:
+        """After a worker died (BrokenProcessPool): a fresh pool."""
+        self._pool.shutdown(wait=True, cancel_futures=True)
+        self._pool = self._start()
+
+    def close(self) -> None:
+        self._pool.shutdown(wait=True, cancel_futures=True)
+
+
+class InProcess:
+    """No pool: every frame in this process (benchmarks' one-process figure, tests)."""
+
+    workers = 1
+    name = "this process"
+
+    def __init__(self, scene: Scene) -> None:
+        self.scene = scene
+
+    def submit(self, task: FrameTask) -> Future:
+        f: Future = Future()
+        try:
+            f.set_result(render_png(self.scene, task))
+        except Exception as exc:  # noqa: BLE001 - reported per frame like a worker's error
+            f.set_exception(exc)
+        return f
+
+    def restart(self) -> None:
+        pass
+
+    def close(self) -> None:
+        pass
+
+
+class DaskCluster:
+    """``address`` = a scheduler's ``tcp://host:port``, or ``local`` for a LocalCluster of
+    ``workers`` single-threaded worker processes started (and stopped) here."""
+
+    def __init__(self, scene: Scene, address: str, workers: int | None = None,
+                 timeout_s: float = 30.0) -> None:
+        from distributed import Client, LocalCluster
+
+        self._cluster: Any = None
+        if address == "local":
+            n = workers or os.cpu_count() or 1
+            self._cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                                         dashboard_address=None, host="127.0.0.1")
+            self._client = Client(self._cluster, timeout=timeout_s)
+        else:
+            self._client = Client(address, timeout=timeout_s)
+        self.workers = max(1, len(self._client.scheduler_info()["workers"]))
+        where = self._client.scheduler_info()["address"]
+        self.name = f"Dask cluster at {where} ({self.workers} workers)"
+        self._scene = self._client.scatter(scene, broadcast=True, hash=False)
+
+    def submit(self, task: FrameTask) -> Future:
+        # pure=False: a frame asked for again (a retry) is computed again, not looked up
+        dask_future = self._client.submit(render_png, self._scene, task, pure=False)
+        return _as_concurrent(dask_future)
+
+    def restart(self) -> None:
+        pass  # the scheduler moves a dead worker's tasks by itself
+
+    def close(self) -> None:
+        self._client.close()
+        if self._cluster is not None:
+            self._cluster.close()
+
+
+def _as_concurrent(dask_future: Any) -> Future:
+    out: Future = Future()
+
+    def done(f: Any) -> None:
+        try:
+            out.set_result(f.result())
+        except BaseException as exc:  # noqa: BLE001 - KilledWorker, CancelledError, ...
+            out.set_exception(exc)
+    dask_future.add_done_callback(done)
+    return out
+
+
+def open_backend(scene: Scene, dask: str | None = None, workers: int | None = None) -> Backend:
+    if dask is None:
+        return LocalPool(scene, workers) if (workers or os.cpu_count() or 1) > 1 \
+            else InProcess(scene)
+    return DaskCluster(scene, dask, workers)

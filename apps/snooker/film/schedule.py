@@ -1,0 +1,146 @@
+"""Rendering a film's frames in parallel, resumably (thesis 6.4: each frame is independent,
+"compiled into a finished sequence" afterwards).
+
+Frames whose PNG is already complete, and was made from the same scene, view and look (the
+keys in ``DIR/film.json``), are skipped; the others are handed to the backend, at
+most ``2 x workers`` at a time so a dead worker costs little; each result is checked (it
+decodes whole, at the right size) and written atomically, so the directory never holds a
+broken PNG. A frame that fails, or whose worker dies, is tried again up to ``attempts``
+times; every failed attempt is reported.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from collections.abc import Callable, Sequence
+from concurrent.futures import FIRST_COMPLETED, Future, wait
+from concurrent.futures.process import BrokenProcessPool
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from apps.snooker.film.backends import Backend
+from apps.snooker.film.pngcheck import is_complete, png_size
+from apps.snooker.film.task import FrameTask, task_key
+from protocols.atomicfile import write_atomic
+
+
+class Manifest:
+    """frame -> key of what its PNG shows, rewritten atomically after each frame (a frame
+    whose key did not reach the disk is simply rendered again)."""
+
+    def __init__(self, path: Path) -> None:
+        self.path = path
+        try:
+            raw = json.loads(path.read_text(encoding="utf-8"))
+            self.keys = {int(k): str(v) for k, v in raw.get("frames", {}).items()}
+        except (OSError, ValueError, AttributeError):
+            self.keys = {}  # missing or damaged: every frame is rendered again
+
+    def get(self, frame: int) -> str | None:
+        return self.keys.get(frame)
+
+    def put(self, frame: int, key: str) -> None:
+        self.keys[frame] = key
+        text = json.dumps({"frames": {str(k): v for k, v in sorted(self.keys.items())}},
+                          indent=0)
+        write_atomic(self.path, text + "\n")
+
+Progress = Callable[[int, int], None]
+MANIFEST = "film.json"
+
+
+class FilmError(RuntimeError):
+    pass
+
+
+@dataclass
+class FilmReport:
+    rendered: list[int] = field(default_factory=list)
+    skipped: list[int] = field(default_factory=list)
+    retries: list[tuple[int, str]] = field(default_factory=list)  # (frame, what went wrong)
+    failed: list[int] = field(default_factory=list)
+
+
+def frame_file(directory: str | os.PathLike[str], frame: int) -> Path:
+    """``DIR/frame_NNNNN.png``, as every camlab88 command names a sequence's frames."""
+    return Path(directory) / f"frame_{frame:05d}.png"
+
+
+def render_film(tasks: Sequence[FrameTask], out_dir: str | os.PathLike[str], backend: Backend,
+                digest: str, progress: Progress | None = None,
+                attempts: int = 3) -> FilmReport:
+    """``digest``: task.scene_digest of the scene the backend renders."""
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    report = FilmReport()
+    keys = Manifest(out / MANIFEST)
+    todo = []
+    for t in tasks:
+        done = (keys.get(t.frame) == task_key(digest, t)
+                and is_complete(frame_file(out, t.frame), (t.width, t.height)))
+        (report.skipped.append(t.frame) if done else todo.append(t))
+    run = _Run(backend, out, report, progress, attempts, len(tasks))
+    run.written = lambda t: keys.put(t.frame, task_key(digest, t))
+    run.go(todo)
+    if report.failed:
+        raise FilmError(f"frames {', '.join(map(str, report.failed))} failed after "
+                        f"{attempts} attempts: {report.retries[-1][1]}")
+    return report
+
+
+class _Run:
+    def __init__(self, backend: Backend, out: Path, report: FilmReport,
+                 progress: Progress | None, attempts: int, total: int) -> None:
+        self.backend, self.out, self.report = backend, out, report
+        self.progress, self.attempts, self.total = progress, attempts, total
+        self.tries: dict[int, int] = {}
+        self.running: dict[Future, FrameTask] = {}
+        self.written: Callable[[FrameTask], None] = lambda t: None
+
+    def go(self, todo: list[FrameTask]) -> None:
+        queue = list(reversed(todo))
+        self._tick()
+        while queue or self.running:
+            while queue and len(self.running) < 2 * self.backend.workers:
+                t = queue.pop()
+                self.running[self.backend.submit(t)] = t
+            finished, _ = wait(list(self.running), return_when=FIRST_COMPLETED)
+            broken = False
+            for f in finished:
+                t = self.running.pop(f)
+                problem = self._take(f, t)
+                if problem is not None:
+                    broken |= isinstance(f.exception(), BrokenProcessPool)
+                    self._failed(t, problem, queue)
+            if broken:  # every frame still in the dead pool is lost with it
+                for t in self.running.values():
+                    self._failed(t, "its worker process died", queue)
+                self.running.clear()
+                self.backend.restart()
+
+    def _take(self, f: Future, t: FrameTask) -> str | None:
+        exc = f.exception()
+        if exc is not None:
+            return f"{type(exc).__name__}: {exc}"
+        data = f.result()
+        if png_size(data) != (t.width, t.height):
+            return "the worker returned a PNG that does not decode at the film's size"
+        write_atomic(frame_file(self.out, t.frame), data)
+        self.written(t)
+        self.report.rendered.append(t.frame)
+        self._tick()
+        return None
+
+    def _failed(self, t: FrameTask, problem: str, queue: list[FrameTask]) -> None:
+        n = self.tries.get(t.frame, 0) + 1
+        self.tries[t.frame] = n
+        self.report.retries.append((t.frame, problem))
+        if n >= self.attempts:
+            self.report.failed.append(t.frame)
+        else:
+            queue.append(t)
+
+    def _tick(self) -> None:
+        if self.progress is not None:
+            self.progress(len(self.report.rendered) + len(self.report.skipped), self.total)

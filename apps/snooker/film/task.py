@@ -1,0 +1,71 @@
+"""One frame of a film as a pure task: picklable inputs (the scene, the view, the options)
+-> PNG bytes, byte-identical in whichever process renders it (thesis 6.4: "the production
+of high quality versions of the frames in the sequence")."""
+
+from __future__ import annotations
+
+import hashlib
+import io
+from dataclasses import dataclass, fields
+
+import numpy as np
+
+from apps.snooker.film.shutter import SHUTTER_S, at_times, sample_offsets
+from apps.snooker.render.gamma import encode_image
+from apps.snooker.render.scene import Scene
+from apps.snooker.render.truecolour import RenderOptions, render_linear
+
+
+@dataclass(frozen=True)
+class FrameTask:
+    """Frame ``frame`` (the checkpoint's numbering, from 1) seen through ``view``."""
+
+    frame: int
+    view: object  # the camera issue's View (observer, viewpoint, focal_mm, frame)
+    width: int = 768
+    height: int = 512
+    specks: bool = True
+    shadows: bool = True
+    blur_samples: int = 1  # 1: an instantaneous frame; more: motion blur over the shutter
+    shutter_s: float = SHUTTER_S
+
+
+def render_image(scene: Scene, task: FrameTask) -> np.ndarray:
+    """(H, W, 3) uint8, row 0 = top."""
+    opts = RenderOptions(task.width, task.height, task.specks, task.shadows)
+    if task.blur_samples < 2:
+        return encode_image(render_linear(scene, task.view, opts, task.frame))
+    sub = at_times(scene, task.frame, sample_offsets(task.blur_samples, task.shutter_s))
+    acc = np.zeros((task.height, task.width, 3), dtype=np.float64)
+    for k in range(sub.n_frames):
+        acc += render_linear(sub, task.view, opts, k + 1)
+    return encode_image(acc / sub.n_frames)
+
+
+def encode_png(image: np.ndarray) -> bytes:
+    """The project's PNG encoding (Pillow, no metadata, as emulator.png.write_png)."""
+    from PIL import Image
+
+    buf = io.BytesIO()
+    Image.fromarray(np.ascontiguousarray(image, dtype=np.uint8)).save(buf, format="PNG")
+    return buf.getvalue()
+
+
+def render_png(scene: Scene, task: FrameTask) -> bytes:
+    return encode_png(render_image(scene, task))
+
+
+def scene_digest(scene: Scene) -> str:
+    """What the frames were rendered from (the motion, table, lights), as a hash."""
+    h = hashlib.sha256()
+    for a in (scene.centres, scene.on_table):
+        h.update(np.ascontiguousarray(a).tobytes())
+    for f in fields(scene.lights):
+        h.update(np.ascontiguousarray(getattr(scene.lights, f.name), dtype=np.float64).tobytes())
+    h.update(repr(scene.table).encode())
+    return h.hexdigest()
+
+
+def task_key(digest: str, task: FrameTask) -> str:
+    """A frame's identity for resuming: same scene, view and look -> same key."""
+    return hashlib.sha256(f"{digest}\n{task!r}".encode()).hexdigest()[:32]

@@ -1,0 +1,124 @@
+"""``camlab88 snooker film CHECKPOINT|SESSION SCRIPT.ccl --out shot.mp4``: the chapter-6
+pipeline in one command (thesis 6.3.1, 6.4) — camera script -> views -> frames -> film, with
+``shot.views`` and ``shot_frames/frame_NNNNN.png`` kept beside the film. Truecolour frames
+render in parallel (a local pool, or ``--dask ADDRESS|local``) and resume; the Sigma modes
+draw on one emulated T5688 over the 9600-baud line, frame after frame, as in 1984."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from camlab88.runopts import fail, positive
+
+COMMAND = "camlab88 snooker film"
+
+
+def _size(text: str) -> tuple[int, int]:
+    w, sep, h = text.lower().partition("x")
+    if not (sep and w.isascii() and w.isdigit() and h.isascii() and h.isdigit()):
+        raise argparse.ArgumentTypeError(f"expected WxH such as 768x512, not {text!r}")
+    if not (8 <= int(w) <= 8192 and 8 <= int(h) <= 8192):
+        raise argparse.ArgumentTypeError(f"{text}: each side must be 8..8192 pixels")
+    return int(w), int(h)
+
+
+def _movie(text: str) -> Path:
+    if Path(text).suffix.lower() not in (".mp4", ".gif"):
+        raise argparse.ArgumentTypeError(f"{text}: the film is .mp4 or .gif")
+    return Path(text)
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    s = actions.add_parser(
+        "film", help="camera script -> views -> rendered frames -> MP4/GIF (§6.3-6.4)",
+        description="Interpret the camera script over the shot, render every frame and "
+        "film them at 25 frames/s (no sound). Beside --out: OUT.views and OUT_frames/. "
+        "Frames already rendered (complete PNGs of the right size) are skipped, so a "
+        "stopped film resumes. Truecolour frames render on a local process pool (one "
+        "process per core), or on a Dask cluster: --dask tcp://HOST:8786 (started with "
+        "'dask scheduler' and 'dask worker tcp://HOST:8786'), or --dask local.")
+    s.add_argument("motion", metavar="CHECKPOINT|SESSION")
+    s.add_argument("script", metavar="SCRIPT.ccl", help="the camera script (§6.3.1)")
+    s.add_argument("--out", type=_movie, required=True, metavar="FILM",
+                   help="the film: .mp4 (H.264) or .gif")
+    s.add_argument("--gif", type=_movie, metavar="FILE", help="also a GIF of the film")
+    s.add_argument("--mode", choices=("truecolour", "period", "fixed"), default="truecolour")
+    s.add_argument("--size", type=_size, default=(768, 512), metavar="WxH",
+                   help="truecolour frame size")
+    s.add_argument("--dask", metavar="ADDRESS|local",
+                   help="render on a Dask cluster (a scheduler address, or 'local')")
+    s.add_argument("--workers", type=positive, metavar="N",
+                   help="processes (default: one per core; --dask local: its workers)")
+    s.add_argument("--motion-blur", action="store_true",
+                   help="integrate each frame over a 1/50 s shutter (§6.4)")
+    s.add_argument("--blur-samples", type=positive, default=12, metavar="N",
+                   help="renders averaged over the shutter with --motion-blur")
+    s.add_argument("--lights", type=Path, metavar="FILE", help="lights file (see render)")
+    s.add_argument("--no-specks", action="store_true", help="leave out the dust specks")
+    s.set_defaults(handler=film)
+
+
+def film(args: argparse.Namespace) -> int:
+    from apps.snooker.camera.errors import CclErrors
+    from apps.snooker.checkpoint import CheckpointError
+    from apps.snooker.film.schedule import FilmError
+    from apps.snooker.render.lights import LightsError
+    from apps.snooker.session import SessionError
+
+    if args.mode != "truecolour" and (args.size != (768, 512) or args.dask or args.motion_blur):
+        return fail(COMMAND, f"--mode {args.mode} draws the T5688's 768x512 screen one "
+                    "frame after another; --size, --dask and --motion-blur are truecolour's")
+    try:
+        return _film(args)
+    except CclErrors as exc:
+        print(exc, file=sys.stderr)
+        return fail(COMMAND, "the camera script has errors; nothing rendered")
+    except (CheckpointError, SessionError, LightsError, FilmError, OSError, ValueError) as exc:
+        return fail(COMMAND, exc)
+
+
+def _film(args: argparse.Namespace) -> int:
+    from apps.snooker.film import pipeline as P
+    from apps.snooker.film.movie import write_movie
+    from apps.snooker.film.progress import progress_bar
+    from apps.snooker.render.lights import read_lights
+
+    paths = P.FilmPaths.beside(args.out)
+    paths.movie.parent.mkdir(parents=True, exist_ok=True)
+    views = P.script_views(args.motion, args.script, paths.views)
+    scene = P.scene_of(args.motion, read_lights(args.lights) if args.lights else None)
+    if args.mode == "truecolour":
+        look = P.FilmLook(args.size[0], args.size[1], not args.no_specks, True,
+                          args.blur_samples if args.motion_blur else 1)
+        report = P.shoot(scene, views, paths.frames, look, args.dask, args.workers,
+                         progress_bar(COMMAND))
+        note = (f"{len(report.rendered)} rendered, {len(report.skipped)} already there"
+                + "".join(f"; frame {f} retried ({why})" for f, why in report.retries))
+    else:
+        note = _sigma_frames(args, scene, views, paths.frames)
+    files = P.frame_files(paths.frames, views)
+    for movie in (args.out, args.gif):
+        if movie is not None:
+            write_movie(files, movie)
+    print(f"{COMMAND}: {len(views)} frames -> {args.out} ({note}); views {paths.views}, "
+          f"frames {paths.frames}/", file=sys.stderr)
+    return 0
+
+
+def _sigma_frames(args: argparse.Namespace, scene, views, frames: Path) -> str:  # noqa: ANN001
+    from apps.snooker.film.schedule import frame_file
+    from apps.snooker.film.task import encode_png
+    from apps.snooker.render.sequence import choose_palette, render_sequence
+    from emulator.sigma import Terminal
+    from protocols.atomicfile import write_atomic
+
+    palette = choose_palette(scene, views, "fixed")
+    frames.mkdir(parents=True, exist_ok=True)
+    line = 0.0
+    for f in render_sequence(scene, views, args.mode, (768, 512), palette,
+                             lambda: Terminal("t5688"), not args.no_specks):
+        write_atomic(frame_file(frames, f.frame), encode_png(f.image))
+        line += f.line_seconds or 0.0
+    return f"{args.mode} on the emulated T5688, line time {line:.1f} s at 9600 baud"
