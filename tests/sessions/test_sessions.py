@@ -112,3 +112,23 @@ def test_unreadable_recordings_are_refused(tmp_path: Path, capsys) -> None:  # n
         assert f"{path}:" in err and message in err, (name, err)
     assert main(["replay", str(tmp_path / "missing.session")]) == 2
     assert "cannot read" in capsys.readouterr().err
+
+
+def test_a_replay_never_writes_outside_its_scratch_directory(tmp_path: Path, monkeypatch,  # noqa: ANN001
+                                                             capsys) -> None:
+    script = Path(__file__).resolve().parents[1] / "data" / "kas_front" / "path.txt"
+    lib, out = tmp_path / "lib", tmp_path / "elsewhere" / "p.kas"
+    out.parent.mkdir()
+    monkeypatch.setenv("CAMLAB88_KAS_LIBRARY", str(lib))
+    rec = tmp_path / "p.session"
+    assert main(["kas", "path", "walk_a", "walk_b", "--out", str(out), "--script", str(script),
+                 "--headless", "--record", str(rec)]) == 0
+    assert out.exists() and any(lib.iterdir())  # the run saved the path and kept it
+    out.unlink()
+    before = sorted(p.name for p in lib.iterdir())
+    for p in lib.iterdir():
+        p.write_text("the user's own\n")
+    assert main(["replay", str(rec), "--check", "--headless"]) == 0
+    assert not out.exists()  # the absolute --out went into the scratch directory
+    assert sorted(p.name for p in lib.iterdir()) == before
+    assert all(p.read_text() == "the user's own\n" for p in lib.iterdir())

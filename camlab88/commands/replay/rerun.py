@@ -11,31 +11,30 @@ from pathlib import Path, PurePosixPath
 from typing import Any
 
 
-def place_files(files: dict[str, bytes], root: Path) -> dict[str, str]:
-    """Write each recorded input file under ``root``; returns {recorded name: new path} for
-    names that must change (absolute paths, or paths climbing out with ``..``)."""
-    renamed: dict[str, str] = {}
+def _inside(name: str) -> str | None:
+    """The scratch-directory path for a name that points outside it (absolute, or climbing
+    out with ``..``), else None: a replay never reads or writes outside its directory."""
+    parts = [p for p in PurePosixPath(name.replace("\\", "/")).parts if p not in ("/", "")]
+    if not (os.path.isabs(name) or ".." in parts):
+        return None
+    return str(Path("_outside", *[p for p in parts if p != ".."]))
+
+
+def place_files(files: dict[str, bytes], root: Path) -> None:
+    """Write each recorded input file under ``root``, where the rewritten argv finds it."""
     for name, data in files.items():
-        parts = [p for p in PurePosixPath(name.replace("\\", "/")).parts if p not in ("/", "")]
-        safe = os.path.isabs(name) or ".." in parts
-        rel = Path("_inputs", *[p for p in parts if p != ".."]) if safe else Path(*parts)
-        target = root / rel
+        target = root / (_inside(name) or name)
         target.parent.mkdir(parents=True, exist_ok=True)
         target.write_bytes(data)
-        if safe:
-            renamed[name] = str(rel)
-    return renamed
 
 
-def rewrite_argv(argv: list[str], renamed: dict[str, str]) -> list[str]:
+def rewrite_argv(argv: list[str]) -> list[str]:
+    """Every path pointing outside the scratch directory (an input or an output) moved in."""
     out = []
     for a in argv:
-        if a in renamed:
-            a = renamed[a]
-        elif a.startswith("--") and "=" in a and a.split("=", 1)[1] in renamed:
-            opt, value = a.split("=", 1)
-            a = f"{opt}={renamed[value]}"
-        out.append(a)
+        opt, eq, value = a.partition("=") if a.startswith("--") else ("", "", a)
+        moved = _inside(value) if value else None
+        out.append(a if moved is None else f"{opt}{eq}{moved}")
     return out
 
 
@@ -47,13 +46,35 @@ def rerun(ctx: Any) -> int:
 
     home = Path.cwd()
     with tempfile.TemporaryDirectory(prefix="camlab88-replay-") as tmp:
-        argv = rewrite_argv(ctx.rec.argv, place_files(ctx.rec.files, Path(tmp)))
+        place_files(ctx.rec.files, Path(tmp))
         os.chdir(tmp)
         try:
-            with replaying(ctx), contextlib.redirect_stdout(_Err()):
-                return _main(cli, argv)
+            with replaying(ctx), _own_library(Path(tmp)), contextlib.redirect_stdout(_Err()):
+                return _main(cli, rewrite_argv(ctx.rec.argv))
         finally:
             os.chdir(home)
+
+
+@contextlib.contextmanager
+def _own_library(root: Path) -> Any:
+    """A copy of the user's KAS library for the replay, so a program that saves into the
+    library (kas path) changes the copy, never the user's."""
+    import shutil
+
+    from apps.kas import library
+
+    copy = root / "_kas_library"
+    if library.user_dir().is_dir():
+        shutil.copytree(library.user_dir(), copy)
+    old = os.environ.get(library.ENV)
+    os.environ[library.ENV] = str(copy)
+    try:
+        yield
+    finally:
+        if old is None:
+            os.environ.pop(library.ENV, None)
+        else:
+            os.environ[library.ENV] = old
 
 
 def _main(cli: Any, argv: list[str]) -> int:
