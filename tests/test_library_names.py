@@ -1,5 +1,5 @@
-"""Misspelt library names get "did you mean", a missing --frames is named as missing, and
-`kas library --save` says what it needs (issue 18 items 9-10)."""
+"""Misspelt library names get "did you mean" and a missing --frames is named as missing
+(issue 18 item 9)."""
 
 from __future__ import annotations
 
@@ -52,19 +52,3 @@ def test_a_missing_frame_count_is_named_as_missing() -> None:
     with pytest.raises(ValueError, match="at least 2 .*not 1"):
         timing.fractions(timing.curve("ease-in"), 1)
     assert np.allclose(timing.fractions(None, 3), [0.0, 0.5, 1.0])
-
-
-def test_library_save_needs_an_existing_file_and_then_keeps_it(
-        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setenv(library.ENV, str(tmp_path / "lib"))
-    with pytest.raises(FileNotFoundError, match=r"p\.kas: no such file to save"):
-        library.save(tmp_path / "p.kas", "my_arc")
-    src = tmp_path / "p.kas"
-    src.write_text((library.LIBRARY / "walk_path.kas").read_text(encoding="utf-8"))
-    kind, dest = library.save(src, "my_arc")
-    assert (kind, dest) == ("path", tmp_path / "lib" / "my_arc.kas")
-    assert library.resolve("my_arc") == dest
-    bad = tmp_path / "bad.kas"
-    bad.write_text("hello\n")
-    with pytest.raises(ValueError, match=r"bad\.kas:1: not a KAS"):
-        library.save(bad, "bad")

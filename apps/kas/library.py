@@ -19,7 +19,6 @@ import os
 import re
 from pathlib import Path
 
-from protocols.atomicfile import write_atomic
 from protocols.suggest import did_you_mean
 
 LIBRARY = Path(__file__).with_name("library")
@@ -82,29 +81,6 @@ def entries() -> list[tuple[str, str, str]]:
         if d.is_dir():
             out += [(f.stem, _kind(f), where) for f in sorted(d.glob("*.kas"))]
     return out
-
-
-def save(src: str | os.PathLike[str], name: str) -> tuple[str, Path]:
-    """Check the KAS file ``src`` and copy it into the user library as ``name``; returns
-    (its kind, where it went). The file must exist already: the library keeps files made
-    by the other commands (a path from ``kas path``, a sequence from ``kas inbetween``...)."""
-    from apps.kas import files
-
-    loaders = {"keyframe": files.parse_keyframe, "sequence": files.parse_sequence,
-               "path": files.parse_path, "timing": files.parse_timing}
-    if not Path(src).is_file():
-        raise FileNotFoundError(f"{src}: no such file to save in the library (it keeps an "
-                                "existing keyframe, sequence, path or timing file)")
-    text = Path(src).read_text(encoding="utf-8")
-    first = text.split("\n", 1)[0].split()
-    kind = first[1] if len(first) == 3 and first[0] == "KAS" else ""
-    if kind not in loaders:
-        raise files.KasFileError(str(src), 1, "not a KAS keyframe, sequence, path or timing "
-                                 "file (its first line should be 'KAS <kind> <version>')")
-    loaders[kind](text, str(src))  # refuse a bad file before it enters the library
-    dest = user_file(name)
-    write_atomic(dest, text)
-    return kind, dest
 
 
 def user_file(name: str) -> Path:
