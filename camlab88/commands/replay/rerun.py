@@ -29,11 +29,14 @@ def place_files(files: dict[str, bytes], root: Path) -> None:
 
 
 def rewrite_argv(argv: list[str]) -> list[str]:
-    """Every path pointing outside the scratch directory (an input or an output) moved in."""
+    """Every path pointing outside the scratch directory (an input or an output) moved in
+    (run with the scratch directory as the working directory)."""
     out = []
     for a in argv:
         opt, eq, value = a.partition("=") if a.startswith("--") else ("", "", a)
         moved = _inside(value) if value else None
+        if moved is not None:  # its directory exists there too, as it did for the original
+            Path(moved).parent.mkdir(parents=True, exist_ok=True)
         out.append(a if moved is None else f"{opt}{eq}{moved}")
     return out
 
