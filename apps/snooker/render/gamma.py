@@ -20,7 +20,7 @@ def encode(linear: np.ndarray) -> np.ndarray:
 
 def encode_image(linear: np.ndarray) -> np.ndarray:
     """encode() for a whole (H, W, 3) float64 picture, in one compiled pass (measured:
-    a quarter of the numpy version's time at 768 x 512, docs/perf/render.md)."""
+    about a sixth of the numpy version's time at 768 x 512, docs/perf/render.md)."""
     from apps.snooker.render.kernels import encode as kernel
 
     out = np.empty(linear.shape, dtype=np.uint8)

@@ -329,3 +329,80 @@ def encode(out, linear, table):  # noqa: ANN001, ANN201 - numba kernel
                 v = linear[j, i, c] * n + 0.5
                 k = 0 if v <= 0.0 else (n if v >= n else int(v))
                 out[j, i, c] = table[k]
+
+
+# the wood parameter row (wood.py W_*)
+@njit(cache=True, nogil=True)
+def wood_polygon(img, verts, cam, p, lights, ambient):  # noqa: ANN001, ANN201 - numba kernel
+    """A wooden face: coverage as ``polygon``; each pixel's colour from the point where its
+    ray meets the face (normal constant, light and eye directions per pixel: Phong) and the
+    grain there, anti-aliased by fading its contrast with the pixel's footprint."""
+    k = verts.shape[0]
+    h = img.shape[0]
+    w = img.shape[1]
+    area = 0.0
+    for e in range(k):
+        f = (e + 1) % k
+        area += verts[e, 0] * verts[f, 1] - verts[f, 0] * verts[e, 1]
+    if abs(area) < 1e-12:
+        return 0
+    orient = 1.0 if area > 0 else -1.0
+    j0 = max(int(math.floor(verts[:, 1].min())) - 1, 0)
+    j1 = min(int(math.floor(verts[:, 1].max())) + 1, h - 1)
+    i0 = max(int(math.floor(verts[:, 0].min())) - 1, 0)
+    i1 = min(int(math.floor(verts[:, 0].max())) + 1, w - 1)
+    touched = 0
+    for j in range(j0, j1 + 1):
+        for i in range(i0, i1 + 1):
+            cov = coverage_at(verts, orient, i + 0.5, j + 0.5)
+            if cov <= 0.0:
+                continue
+            rgb = wood_shade(cam, p, lights, ambient, i + 0.5, j + 0.5)
+            for c in range(3):
+                img[j, i, c] = cov * rgb[c] + (1.0 - cov) * img[j, i, c]
+            touched += 1
+    return touched
+
+
+@njit(cache=True, nogil=True)
+def wood_shade(cam, p, lights, ambient, x, y):  # noqa: ANN001, ANN201 - numba kernel
+    f = cam[12]
+    a = (x - cam[13] / 2.0) / f
+    b = (cam[14] / 2.0 - y) / f
+    dx = cam[9] + a * cam[3] + b * cam[6]
+    dy = cam[10] + a * cam[4] + b * cam[7]
+    dz = cam[11] + a * cam[5] + b * cam[8]
+    nx, ny, nz = p[3], p[4], p[5]
+    den = dx * nx + dy * ny + dz * nz
+    out = np.empty(3)
+    t = ((p[0] - cam[0]) * nx + (p[1] - cam[1]) * ny + (p[2] - cam[2]) * nz) / den \
+        if den != 0.0 else 0.0
+    px, py, pz = cam[0] + t * dx, cam[1] + t * dy, cam[2] + t * dz
+    u = px * p[6] + py * p[7] + pz * p[8]
+    v = px * p[9] + py * p[10] + pz * p[11]
+    # footprint: metres of face per pixel, from the ray's length and its slant to the face
+    dn = math.sqrt(dx * dx + dy * dy + dz * dz)
+    foot = t * dn / f / max(abs(den) / dn, 0.05)
+    period_px = 1.0 / (p[19] * max(foot, 1e-9))
+    fade = min(max((period_px - 2.0) / 4.0, 0.0), 1.0)
+    phase = p[19] * (v + 0.003 * math.sin(u * 7.3 + v * 40.0)) + 0.25 * math.sin(u * 1.7)
+    grain = math.sin(2.0 * math.pi * phase) * math.sin(2.0 * math.pi * phase * 0.37 + 1.0)
+    shade = 1.0 - p[20] * fade * grain
+    vx, vy, vz = cam[0] - px, cam[1] - py, cam[2] - pz
+    vn = math.sqrt(vx * vx + vy * vy + vz * vz)
+    vx, vy, vz = vx / vn, vy / vn, vz / vn
+    for c in range(3):
+        out[c] = p[15] * ambient[c] * p[12 + c] * shade
+    for m in range(lights.shape[0]):
+        lx, ly, lz = lights[m, 0] - px, lights[m, 1] - py, lights[m, 2] - pz
+        ln = math.sqrt(lx * lx + ly * ly + lz * lz)
+        lx, ly, lz = lx / ln, ly / ln, lz / ln
+        ndl = nx * lx + ny * ly + nz * lz
+        if ndl <= 0.0:
+            continue
+        rx, ry, rz = 2.0 * ndl * nx - lx, 2.0 * ndl * ny - ly, 2.0 * ndl * nz - lz
+        rdv = rx * vx + ry * vy + rz * vz
+        spec = p[17] * rdv ** p[18] if rdv > 0.0 else 0.0
+        for c in range(3):
+            out[c] += (p[16] * ndl * p[12 + c] * shade + spec) * lights[m, 3 + c]
+    return out

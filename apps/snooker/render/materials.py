@@ -43,4 +43,4 @@ SURFACES: dict[str, tuple[float, float, float]] = {
     "pocket": (0.004, 0.004, 0.004),
 }
 BACKGROUND = np.array((0.012, 0.010, 0.010))  # the dark room round the table
-WOOD_PHONG = Phong(ks=0.25, n=12.0)
+WOOD_PHONG = Phong(ks=0.12, n=20.0)  # lacquered, reconstructed

@@ -21,6 +21,7 @@ from apps.snooker.render.scene import Scene
 from apps.snooker.render.shading import lights_array
 from apps.snooker.render.shadow_pass import apply_shadows
 from apps.snooker.render.specks import speck_directions
+from apps.snooker.render.wood import is_wood, wood_params
 
 
 @dataclass(frozen=True)
@@ -29,6 +30,7 @@ class RenderOptions:
     height: int = 512
     specks: bool = True
     shadows: bool = True
+    wood: bool = True  # Phong + grain on the wooden surround (beyond the thesis: wood.py)
 
 
 def render_frame(scene: Scene, view: object, options: RenderOptions | None = None,
@@ -51,7 +53,12 @@ def render_linear(scene: Scene, view: object, options: RenderOptions | None = No
     for item in g.items:
         if isinstance(item, PolygonItem):
             xy = clip_project(g.pin, item.face.vertices)
-            if xy is not None:
+            if xy is None:
+                continue
+            if o.wood and is_wood(item.face):
+                K.wood_polygon(img, xy, camera_params(g.pin), wood_params(item.face), lights,
+                               np.ascontiguousarray(scene.lights.ambient, dtype=np.float64))
+            else:
                 K.polygon(img, xy, np.ascontiguousarray(item.colour, dtype=np.float64))
         elif isinstance(item, ShadowItem):
             if o.shadows:
