@@ -60,8 +60,12 @@ def where(name: str, line: int | None = None, column: int | None = None) -> str:
     return out
 
 
-def quote(text: str | bytes, limit: int = QUOTE_CHARS) -> str:
-    """repr() of ``text`` cut to about ``limit`` characters, saying how much was cut."""
+def quote(text: object, limit: int = QUOTE_CHARS) -> str:
+    """repr() of ``text`` cut to about ``limit`` characters, saying how much was cut (any
+    other value — a number or list from JSON — is shown by its repr, cut the same way)."""
+    if not isinstance(text, (str, bytes)):
+        shown = repr(text)
+        return shown if len(shown) <= limit else f"{shown[:limit]}... ({len(shown)} characters)"
     if len(text) <= limit:
         return repr(text)
     return f"{text[:limit]!r}... ({len(text)} characters)"

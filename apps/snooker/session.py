@@ -241,10 +241,12 @@ class Session:
             raise SessionError(f"not a snooker session file (format {FORMAT!r} expected)")
         if data.get("version") != VERSION:
             raise SessionError(f"unsupported session version {quote(data.get('version'))}")
+        if not isinstance(data.get("table"), dict):
+            raise SessionError("'table' must be an object of table constants")
         try:
             table = Table(**data["table"])
         except (TypeError, ValueError) as exc:
-            raise SessionError(f"table: {exc}") from None
+            raise SessionError(f"table: {_reason(exc)}") from None
         check_table(table)
         tl = Timeline(table, opening_state(table))
         tl.time_frames = _frames(data, "time_frames", "time")

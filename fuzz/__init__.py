@@ -1,0 +1,2 @@
+"""Fuzzing camlab88's decoders and parsers: targets, a seed corpus per format, and runners
+(``python fuzz/run.py --seconds N``; see docs/reliability.md)."""

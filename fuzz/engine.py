@@ -1,0 +1,98 @@
+"""The in-process fuzz loop: seeds first, then seeded mutations, each input watched for an
+unexpected exception, a hang (SIGALRM after ``timeout`` s) and memory growth."""
+
+from __future__ import annotations
+
+import hashlib
+import random
+import resource
+import signal
+import time
+import traceback
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from fuzz.mutate import mutate
+from fuzz.targets import Target
+
+FINDINGS = Path(__file__).parent / "findings"
+
+
+class Hang(Exception):
+    """An input took longer than the bound."""
+
+
+@dataclass
+class Report:
+    target: str
+    inputs: int = 0
+    seconds: float = 0.0
+    findings: list[str] = field(default_factory=list)
+    grew_mb: float = 0.0
+
+    def line(self) -> str:
+        rate = self.inputs / self.seconds if self.seconds else 0.0
+        return (f"{self.target:20s} {self.inputs:9d} inputs {self.seconds:7.1f} s "
+                f"{rate:9.0f}/s  memory +{self.grew_mb:.0f} MB  findings {len(self.findings)}")
+
+
+def _rss_mb() -> float:
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024  # Linux: KB
+
+
+def _alarm(signum: int, frame: object) -> None:
+    raise Hang
+
+
+def _save(target: Target, data: bytes, why: str, folder: Path) -> str:
+    digest = hashlib.sha1(data).hexdigest()[:12]
+    out = folder / target.name
+    out.mkdir(parents=True, exist_ok=True)
+    (out / digest).write_bytes(data)
+    return f"{target.name}: {why} (input saved as {out / digest})"
+
+
+def run_one(target: Target, data: bytes, timeout: float) -> str | None:
+    """None if the target handled ``data``; else what went wrong."""
+    old = signal.signal(signal.SIGALRM, _alarm)
+    signal.setitimer(signal.ITIMER_REAL, timeout)
+    try:
+        target.check(data)
+    except Hang:
+        return f"no answer within {timeout:g} s"
+    except Exception:  # noqa: BLE001 - any other exception is what fuzzing looks for
+        return traceback.format_exc(limit=-3).strip().splitlines()[-1]
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+    return None
+
+
+def fuzz(target: Target, seconds: float | None = None, inputs: int | None = None,
+         seed: int = 0, timeout: float = 20.0, memory_mb: float = 1024.0,
+         findings: Path = FINDINGS) -> Report:
+    """Every seed file, then mutations of them until ``seconds`` or ``inputs`` run out."""
+    rng = random.Random(f"{target.name}:{seed}")
+    seeds = target.seeds() or [b""]
+    report = Report(target.name)
+    start, base = time.monotonic(), _rss_mb()
+    k = 0
+    seen: set[str] = set()
+    while True:
+        if inputs is not None and k >= inputs + len(seeds):
+            break
+        if seconds is not None and k >= len(seeds) and time.monotonic() - start >= seconds:
+            break
+        data = seeds[k] if k < len(seeds) else mutate(rng.choice(seeds), rng)
+        why = run_one(target, data, timeout)
+        if why is not None and why not in seen:  # one report per distinct failure
+            seen.add(why)
+            report.findings.append(_save(target, data, why, findings))
+        report.grew_mb = max(report.grew_mb, _rss_mb() - base)
+        if report.grew_mb > memory_mb:
+            report.findings.append(_save(target, data, f"memory grew {report.grew_mb:.0f} MB",
+                                         findings))
+            break
+        k += 1
+    report.inputs, report.seconds = k, time.monotonic() - start
+    return report

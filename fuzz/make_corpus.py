@@ -1,0 +1,144 @@
+"""Write the seed corpus: valid files of every format, made by the project's own writers (or
+copied from its library and test data), so the fuzzers start from inputs that go deep.
+``python fuzz/make_corpus.py`` rewrites fuzz/corpus/; the result is committed."""
+
+from __future__ import annotations
+
+import shutil
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+
+from fuzz.targets import CORPUS  # noqa: E402
+
+CA_LIB = ROOT / "apps" / "ca" / "library"
+KAS_LIB = ROOT / "apps" / "kas" / "library"
+DATA = ROOT / "tests" / "data"
+
+
+def _put(target: str, name: str, data: bytes | str) -> None:
+    folder = CORPUS / target
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / name).write_bytes(data.encode() if isinstance(data, str) else data)
+
+
+def _copy(target: str, *paths: Path) -> None:
+    for p in paths:
+        _put(target, p.name, p.read_bytes())
+
+
+def _rainbow() -> None:
+    from emulator.rainbow.session import in_process
+    from protocols.rainbow.stream import encode
+
+    _put("rainbow-scene", "small.json", '{"lut": [[0, "#000000"], [1, "#ff0000"]], "nodes": '
+         '{"c": {"type": "cluster", "width": 64, "height": 32}, "p": {"type": "pad", "width": '
+         '16, "height": 8, "depth": 1, "fill": 1}}, "arcs": [{"parent": "screen", "child": "c", '
+         '"x": 5, "y": 6}, {"parent": "c", "child": "p", "priority": 1}]}')
+    rb = in_process(record=True)
+    c = rb.client
+    pad = c.create_pad(32, 16, 4)
+    c.map(0, pad, 10, 20)
+    c.set_lut(0, ["#000000", "#00ff00"])
+    c.rect(pad, 0, 0, 8, 8, 1)
+    c.text(pad, 1, 1, "hi", 1)
+    c.wait_frame()
+    (CORPUS / "rainbow-recording").mkdir(parents=True, exist_ok=True)
+    rb.recorder.recording.save(CORPUS / "rainbow-recording" / "session.rec")
+    frames = b"".join(d for kind, d in rb.recorder.recording.entries if kind == ">")
+    _put("rainbow-stream", "session.bin", frames)
+    _put("rainbow-stream", "hello.bin", encode("hello"))
+
+
+def _link_and_sigma() -> None:
+    from emulator.sigma import Terminal, state
+    from protocols.link import LineSettings, Recorder, SerialLine
+    from protocols.sigma.demo import sigma_demo_stream
+
+    stream = sigma_demo_stream()
+    _put("sigma-stream", "demo.sig", stream)
+    (CORPUS / "link-recording").mkdir(parents=True, exist_ok=True)
+    rec = Recorder(CORPUS / "link-recording" / "demo.rec", LineSettings(), xonxoff=True)
+    line = SerialLine(LineSettings(), recorder=rec)
+    line.host.write(stream[:600])
+    line.device.write(b"\x13\x11")
+    line.close()
+    term = Terminal("T5684")
+    term.feed(stream[: len(stream) // 2])
+    _put("sigma-state", "half.state", state.save(term, compress=True))
+
+
+def _kas() -> None:
+    from apps.kas import files
+    from apps.kas.model import AnimSequence
+
+    a = files.load_keyframe(KAS_LIB / "walk_a.kas")
+    b = files.load_keyframe(KAS_LIB / "walk_b.kas")
+    _copy("kas-keyframe", KAS_LIB / "walk_a.kas", KAS_LIB / "sun_a.kas")
+    _put("kas-sequence", "two.kas", files.sequence_text(AnimSequence([a, b], 25.0)))
+    _copy("kas-path", KAS_LIB / "walk_path.kas")
+    _copy("kas-timing", KAS_LIB / "walk_ticks.kas")
+
+
+def _snooker() -> None:
+    import json
+
+    from apps.snooker.session import Session
+
+    _put("snooker-session", "new.json", json.dumps(Session.new_game().to_json()))
+    _copy("snooker-checkpoint", DATA / "snooker" / "thesis_example.cp")
+
+
+def _ca() -> None:
+    from apps.ca import log
+    from apps.ca.engine import Engine
+    from apps.ca.patterns import read_pattern
+    from apps.ca.rules import load_rules
+
+    _copy("ca-rules", CA_LIB / "life.rules", CA_LIB / "maze.rules",
+          DATA / "ca" / "figure_7_6.rules")
+    _copy("ca-native", CA_LIB / "maze_demo.pat")
+    _copy("ca-rle", CA_LIB / "gosper_gun.rle", CA_LIB / "acorn.rle",
+          DATA / "ca" / "lifewiki_style.rle")
+    _copy("ca-cells", CA_LIB / "glider.cells")
+    rules = load_rules(str(CA_LIB / "life.rules"))
+    glider = read_pattern(CA_LIB / "glider.cells")
+    events = [log.ev_rules(0, "life", rules.text), log.ev_edit(0, 5, 5, 1),
+              log.ev_load(0, "glider", 10, 10, "rot90", glider), log.ev_advance(3, None)]
+    _put("ca-log", "session.log", log.format_log(events, True, log.LogSettings("wrap", 7)))
+    engine = Engine(rules)
+    engine.set_cells(*glider.placed(20, 20))
+    _put("ca-checkpoint", "glider.cp", log.format_checkpoint(engine))
+
+
+def _tablets() -> None:
+    from protocols.tablets.events import TabletEvent
+    from protocols.tablets.hid_descriptor import parse_hex_text
+    from protocols.tablets.registry import make_encoder
+
+    for name, proto in (("tablet-wacom4", "wacom4"), ("tablet-summa", "summa-mm"),
+                        ("tablet-bitpad1", "bitpad1"), ("tablet-bitpad2", "bitpad2"),
+                        ("tablet-calcomp", "calcomp")):
+        enc = make_encoder(proto)
+        events = [TabletEvent(100 * k, 50 * k, True, k % 2) for k in range(1, 6)]
+        _put(name, "stroke.bin", enc.startup() + b"".join(enc.encode(e) for e in events))
+    hexes = sorted((DATA / "tablets" / "linux-hid-selftests").glob("*.hex"))[:3]
+    for h in hexes:
+        _put("hid-descriptor", h.stem + ".bin", parse_hex_text(h.read_text(), str(h)))
+
+
+def main() -> int:
+    if CORPUS.exists():
+        shutil.rmtree(CORPUS)
+    for make in (_rainbow, _link_and_sigma, _kas, _snooker, _ca, _tablets):
+        make()
+    for folder in sorted(CORPUS.iterdir()):
+        files = list(folder.iterdir())
+        print(f"{folder.name:20s} {len(files)} files, {sum(f.stat().st_size for f in files)} bytes")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

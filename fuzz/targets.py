@@ -1,0 +1,208 @@
+"""One fuzz target per decoder or parser: bytes in, the format's own error or a result out.
+
+Each target feeds the bytes to the same reader the command line uses (through
+``protocols.textinput`` for text formats, as the file readers do). A target passes when the
+reader returns or raises the format's documented error (a ValueError subclass naming the
+input); any other exception — a traceback for the user — is a finding. docs/reliability.md
+lists what each format promises.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+CORPUS = Path(__file__).parent / "corpus"
+NAME = "<fuzz>"
+
+
+@dataclass(frozen=True)
+class Target:
+    name: str  # also the corpus directory's name
+    run: Callable[[bytes], object]
+    errors: tuple[type[BaseException], ...] = (ValueError,)
+
+    @property
+    def corpus(self) -> Path:
+        return CORPUS / self.name
+
+    def seeds(self) -> list[bytes]:
+        return [p.read_bytes() for p in sorted(self.corpus.glob("*")) if p.is_file()]
+
+    def check(self, data: bytes) -> None:
+        """Run one input; an expected error is swallowed, anything else propagates."""
+        try:
+            self.run(data)
+        except self.errors:
+            pass
+
+
+def _text(data: bytes) -> str:
+    from protocols.textinput import decode_utf8
+
+    return decode_utf8(data, NAME, bom=True)
+
+
+def _scene(data: bytes) -> object:
+    from emulator.rainbow.scene import SceneError, build_scene
+    from protocols.textinput import loads_json
+
+    return build_scene(loads_json(_text(data), NAME, SceneError), None, NAME)
+
+
+def _rainbow_error() -> type[BaseException]:
+    from emulator.rainbow.errors import RainbowError  # the command line reports these too
+
+    return RainbowError
+
+
+def _rainbow_recording(data: bytes) -> object:
+    from protocols.rainbow.recording import Recording
+
+    return _via_file(data, Recording.load)
+
+
+def _via_file(data: bytes, reader: Callable[[str], object], suffix: str = "") -> object:
+    """For readers that only take a path: one scratch file per process, rewritten."""
+    import os
+    import tempfile
+
+    path = _SCRATCH.get(suffix)
+    if path is None:
+        folder = "/dev/shm" if os.path.isdir("/dev/shm") else None
+        fd, path = tempfile.mkstemp(prefix="camlab88-fuzz-", suffix=suffix, dir=folder)
+        os.close(fd)
+        _SCRATCH[suffix] = path
+    with open(path, "wb") as fh:
+        fh.write(data)
+    return reader(path)
+
+
+_SCRATCH: dict[str, str] = {}
+
+
+def _link(data: bytes) -> object:
+    from protocols.link.recording import parse_recording
+
+    return parse_recording(_text(data), NAME)
+
+
+def _sigma_stream(data: bytes) -> object:
+    term = _terminal()
+    term.power_on()
+    term.feed(data)
+    return term.stats
+
+
+_TERMINALS: list = []
+
+
+def _terminal():  # noqa: ANN202 - emulator.sigma.Terminal
+    if not _TERMINALS:
+        from emulator.sigma import Terminal
+
+        _TERMINALS.append(Terminal("T5684"))
+    return _TERMINALS[0]
+
+
+def _sigma_state(data: bytes) -> object:
+    from emulator.sigma import state
+
+    return state.load(_terminal(), data)
+
+
+def _kas(kind: str) -> Callable[[bytes], object]:
+    def run(data: bytes) -> object:
+        from apps.kas import files
+
+        return getattr(files, f"parse_{kind}")(_text(data), NAME)
+    return run
+
+
+def _snooker_session(data: bytes) -> object:
+    from apps.snooker.session import Session, SessionError
+    from protocols.textinput import loads_json
+
+    return Session.from_json(loads_json(_text(data), NAME, SessionError))
+
+
+def _snooker_checkpoint(data: bytes) -> object:
+    from apps.snooker import checkpoint
+
+    return _via_file(data, checkpoint.read, ".cp")
+
+
+def _ca_pattern(suffix: str) -> Callable[[bytes], object]:
+    def run(data: bytes) -> object:
+        from apps.ca.patterns import read_pattern
+
+        return _via_file(data, read_pattern, suffix)
+    return run
+
+
+def _ca_rules(data: bytes) -> object:
+    from apps.ca.rules import parse_rules
+
+    return parse_rules(_text(data), NAME)
+
+
+def _ca_log(data: bytes) -> object:
+    from apps.ca.log import parse_log
+
+    return parse_log(_text(data), NAME)
+
+
+def _ca_checkpoint(data: bytes) -> object:
+    from apps.ca.log import parse_checkpoint
+
+    return parse_checkpoint(_text(data), NAME)
+
+
+def _hid(data: bytes) -> object:
+    from protocols.tablets.hid_descriptor import parse_descriptor
+
+    return parse_descriptor(data, NAME)
+
+
+def _tablet(protocol: str) -> Callable[[bytes], object]:
+    def run(data: bytes) -> object:
+        from protocols.tablets.registry import make_parser
+
+        parser = make_parser(protocol)
+        return parser.feed(data) + parser.flush()
+    return run
+
+
+def _rainbow_stream(data: bytes) -> object:
+    from protocols.rainbow.stream import Decoder
+
+    return Decoder().feed(data)
+
+
+TARGETS: dict[str, Target] = {t.name: t for t in (
+    Target("rainbow-scene", _scene, (ValueError, _rainbow_error())),
+    Target("rainbow-recording", _rainbow_recording),
+    Target("rainbow-stream", _rainbow_stream),
+    Target("link-recording", _link),
+    Target("sigma-stream", _sigma_stream),
+    Target("sigma-state", _sigma_state),
+    Target("kas-keyframe", _kas("keyframe")),
+    Target("kas-sequence", _kas("sequence")),
+    Target("kas-path", _kas("path")),
+    Target("kas-timing", _kas("timing")),
+    Target("snooker-session", _snooker_session),
+    Target("snooker-checkpoint", _snooker_checkpoint),
+    Target("ca-rules", _ca_rules),
+    Target("ca-native", _ca_pattern(".pat")),
+    Target("ca-rle", _ca_pattern(".rle")),
+    Target("ca-cells", _ca_pattern(".cells")),
+    Target("ca-log", _ca_log),
+    Target("ca-checkpoint", _ca_checkpoint),
+    Target("hid-descriptor", _hid),
+    Target("tablet-wacom4", _tablet("wacom4")),
+    Target("tablet-summa", _tablet("summa-mm")),
+    Target("tablet-bitpad1", _tablet("bitpad1")),
+    Target("tablet-bitpad2", _tablet("bitpad2")),
+    Target("tablet-calcomp", _tablet("calcomp")),
+)}
