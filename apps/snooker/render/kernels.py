@@ -42,26 +42,7 @@ def polygon(img, verts, colour):  # noqa: ANN001, ANN201 - numba kernel
     touched = 0
     for j in range(j0, j1 + 1):
         yc = j + 0.5
-        lo = 1e300
-        hi = -1e300
-        for e in range(k):  # x extent of the polygon in the row's band [j - 1, j + 2]
-            f = (e + 1) % k
-            ax, ay, bx, by = verts[e, 0], verts[e, 1], verts[f, 0], verts[f, 1]
-            ya = max(min(ay, by), j - 1.0)
-            yb = min(max(ay, by), j + 2.0)
-            if ya > yb:
-                continue
-            if by == ay:
-                xa, xb = ax, bx
-            else:
-                xa = ax + (ya - ay) * (bx - ax) / (by - ay)
-                xb = ax + (yb - ay) * (bx - ax) / (by - ay)
-            lo = min(lo, xa, xb)
-            hi = max(hi, xa, xb)
-        if lo > hi:
-            continue
-        i0 = max(int(math.floor(lo)) - 1, 0)
-        i1 = min(int(math.floor(hi)) + 1, w - 1)
+        i0, i1 = row_range(verts, j, w)
         f0, f1 = full_span(verts, orient, yc)
         for i in range(i0, i1 + 1):
             xc = i + 0.5
@@ -77,6 +58,32 @@ def polygon(img, verts, colour):  # noqa: ANN001, ANN201 - numba kernel
             for c in range(img.shape[2]):
                 img[j, i, c] = cov * colour[c] + (1.0 - cov) * img[j, i, c]
     return touched
+
+
+@njit(cache=True, nogil=True)
+def row_range(verts, j, w):  # noqa: ANN001, ANN201 - numba kernel
+    """(i0, i1): the pixels of row j the polygon can touch (its x extent over the band of
+    rows j - 1 .. j + 2, a pixel more each side), clipped to 0..w-1; i0 > i1 if none."""
+    k = verts.shape[0]
+    lo = 1e300
+    hi = -1e300
+    for e in range(k):
+        f = (e + 1) % k
+        ax, ay, bx, by = verts[e, 0], verts[e, 1], verts[f, 0], verts[f, 1]
+        ya = max(min(ay, by), j - 1.0)
+        yb = min(max(ay, by), j + 2.0)
+        if ya > yb:
+            continue
+        if by == ay:
+            xa, xb = ax, bx
+        else:
+            xa = ax + (ya - ay) * (bx - ax) / (by - ay)
+            xb = ax + (yb - ay) * (bx - ax) / (by - ay)
+        lo = min(lo, xa, xb)
+        hi = max(hi, xa, xb)
+    if lo > hi:
+        return 1, 0
+    return max(int(math.floor(lo)) - 1, 0), min(int(math.floor(hi)) + 1, w - 1)
 
 
 @njit(cache=True, nogil=True)
@@ -349,12 +356,12 @@ def wood_polygon(img, verts, cam, p, lights, ambient):  # noqa: ANN001, ANN201 -
     orient = 1.0 if area > 0 else -1.0
     j0 = max(int(math.floor(verts[:, 1].min())) - 1, 0)
     j1 = min(int(math.floor(verts[:, 1].max())) + 1, h - 1)
-    i0 = max(int(math.floor(verts[:, 0].min())) - 1, 0)
-    i1 = min(int(math.floor(verts[:, 0].max())) + 1, w - 1)
     touched = 0
     for j in range(j0, j1 + 1):
+        i0, i1 = row_range(verts, j, w)
+        f0, f1 = full_span(verts, orient, j + 0.5)
         for i in range(i0, i1 + 1):
-            cov = coverage_at(verts, orient, i + 0.5, j + 0.5)
+            cov = 1.0 if f0 <= i + 0.5 <= f1 else coverage_at(verts, orient, i + 0.5, j + 0.5)
             if cov <= 0.0:
                 continue
             rgb = wood_shade(cam, p, lights, ambient, i + 0.5, j + 0.5)
@@ -385,8 +392,8 @@ def wood_shade(cam, p, lights, ambient, x, y):  # noqa: ANN001, ANN201 - numba k
     foot = t * dn / f / max(abs(den) / dn, 0.05)
     period_px = 1.0 / (p[19] * max(foot, 1e-9))
     fade = min(max((period_px - 2.0) / 4.0, 0.0), 1.0)
-    phase = p[19] * (v + 0.003 * math.sin(u * 7.3 + v * 40.0)) + 0.25 * math.sin(u * 1.7)
-    grain = math.sin(2.0 * math.pi * phase) * math.sin(2.0 * math.pi * phase * 0.37 + 1.0)
+    phase = p[19] * v + 0.6 * math.sin(u * 1.7 + v * 30.0)  # stripes along u, wobbling
+    grain = math.sin(2.0 * math.pi * phase)
     shade = 1.0 - p[20] * fade * grain
     vx, vy, vz = cam[0] - px, cam[1] - py, cam[2] - pz
     vn = math.sqrt(vx * vx + vy * vy + vz * vz)
