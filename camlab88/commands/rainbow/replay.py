@@ -4,6 +4,7 @@ fed to a fresh Rainbow, every reply checked; a session recording goes to ``camla
 from __future__ import annotations
 
 import argparse
+import sys
 
 from camlab88.runopts import fail
 
@@ -14,26 +15,27 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
     p = actions.add_parser("replay", help="replay a recorded command stream and check it",
                            description="Feed a recording's commands and input events "
                            "(rainbow run --record-stream) to a fresh Rainbow; every reply "
-                           "must match the recorded one. (Session recordings made with "
-                           "--record are replayed by 'camlab88 replay'.)")
+                           "must match the recorded one. A session recording (--record) is run "
+                           "again with every screen hash checked, as 'camlab88 replay --check'.")
     p.add_argument("recording", metavar="FILE")
     p.add_argument("--headless", action="store_true", help="no window")
     p.add_argument("--screenshot", metavar="PNG", help="save the last frame")
     p.add_argument("--scale", type=int, default=1, help="window scale factor")
     p.add_argument("--strict", action="store_true",
-                   help="replay on the relic's video memory (for recordings made with --strict)")
+                   help="replay on the relic's video memory (for stream recordings made with "
+                   "--strict; a session recording repeats its own options)")
     p.set_defaults(handler=replay)
 
 
 def replay(args: argparse.Namespace) -> int:
-    import sys
-
     from emulator.png import write_png
     from emulator.rainbow.device import Rainbow
     from emulator.rainbow.executor import Executor
     from protocols.rainbow.recording import Recording, RecordingError
     from protocols.rainbow.recording import replay as replay_on
 
+    if _is_session(args.recording):
+        return _session(args)
     try:
         rec = Recording.load(args.recording)
     except (OSError, RecordingError) as exc:
@@ -52,6 +54,40 @@ def replay(args: argparse.Namespace) -> int:
     for m in result.mismatches[:10]:
         print(f"  {m}", file=sys.stderr)
     return 1 if result.mismatches else 0
+
+
+def _is_session(path: str) -> bool:
+    try:
+        with open(path, "rb") as fh:
+            return fh.read(40).startswith(b'{"type":"header"')
+    except OSError:
+        return False
+
+
+def _session(args: argparse.Namespace) -> int:
+    """A session recording (``rainbow run --record``): run again and every screen hash
+    checked, as ``camlab88 replay FILE --check`` does."""
+    from pathlib import Path
+
+    from camlab88.session_replay import rerun
+    from emulator.harness import choose_headless
+    from emulator.harness.replay import Replay
+    from protocols.session import SessionFileError, read
+
+    try:
+        rec = read(args.recording)
+    except SessionFileError as exc:
+        return fail(COMMAND, exc)
+    shot = Path(args.screenshot).resolve() if args.screenshot else None
+    ctx = Replay(rec, choose_headless(COMMAND, args.headless, "checking the screen hashes"),
+                 check=True, screenshot=shot)
+    status = rerun(ctx)
+    bad = ctx.mismatch is not None or status != 0
+    print(f"{COMMAND}: session recording, {ctx.compared} screen hashes compared, "
+          f"{int(bad)} mismatches")
+    if ctx.mismatch is not None:
+        print(f"  {ctx.mismatch.describe()}", file=sys.stderr)
+    return 1 if bad else 0
 
 
 def _window(args: argparse.Namespace):  # noqa: ANN202

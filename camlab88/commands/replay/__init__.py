@@ -35,7 +35,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[ty
 
 
 def replay(args: argparse.Namespace) -> int:
-    from camlab88.commands.replay.rerun import rerun
+    from camlab88.session_replay import rerun
     from emulator.harness import choose_headless
     from emulator.harness.replay import Replay
     from protocols.session import SessionFileError, read

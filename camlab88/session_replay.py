@@ -1,4 +1,5 @@
-"""Running a recording's command again in a scratch directory holding its input files."""
+"""Running a session recording's command again in a scratch directory holding its input
+files (``camlab88 replay``, and ``rainbow replay`` of a session recording)."""
 
 from __future__ import annotations
 
