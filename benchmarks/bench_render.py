@@ -51,10 +51,55 @@ def bench_truecolour(repeat: int) -> None:
           f"specks: min {lo * 1e3:.1f} ms, median {med * 1e3:.1f} ms ({repeat} runs; {load()})")
 
 
+def bench_numba_pays(repeat: int) -> None:
+    """The compiled kernels against numpy doing the same work (docs/development.md: numba
+    only where measured to pay)."""
+    from apps.snooker.render.frame import frame_geometry
+    from apps.snooker.render.gamma import encode, encode_image
+    from apps.snooker.render.materials import BALL_PHONG
+    from apps.snooker.render.painter import BallItem
+    from apps.snooker.render.shading import lights_array, phong
+    from apps.snooker.render.truecolour import draw_ball
+
+    scene, view = break_scene(), break_views()[0]
+    lin = render_linear(scene, view)
+    lo_np, _ = timed(lambda: encode(lin), repeat)
+    lo_nb, _ = timed(lambda: encode_image(lin), repeat)
+    print(f"gamma encode 768x512: numpy {lo_np * 1e3:.1f} ms, compiled {lo_nb * 1e3:.1f} ms "
+          f"(min of {repeat}; {load()})")
+    g = frame_geometry(scene, np.array(view.observer), np.array(view.viewpoint),
+                       view.focal_mm, 1, 768, 512)
+    balls = [i for i in g.items if isinstance(i, BallItem)]
+    lights = lights_array(scene.lights)
+    img = np.zeros((512, 768, 3))
+
+    def compiled() -> None:
+        for b in balls:
+            draw_ball(img, scene, g, b, lights, True)
+
+    def numpy_phong() -> None:  # the same normals and Phong terms, no specks, no coverage
+        for b in balls:
+            cx, cy = g.ball_xy[b.ball]
+            r = g.ball_r_px[b.ball]
+            ys, xs = np.mgrid[int(cy - r):int(cy + r) + 1, int(cx - r):int(cx + r) + 1]
+            ux, uy = (xs + 0.5 - cx) / r, (cy - ys - 0.5) / r
+            inside = ux ** 2 + uy ** 2 < 1
+            uz = np.sqrt(1 - ux[inside] ** 2 - uy[inside] ** 2)
+            n = (ux[inside, None] * g.pin.right + uy[inside, None] * g.pin.up
+                 - uz[:, None] * g.pin.forward)
+            phong(b.centre + scene.table.radius * n, n, g.pin.observer, scene.lights,
+                  b.albedo, BALL_PHONG)
+
+    lo_c, _ = timed(compiled, repeat)
+    lo_n, _ = timed(numpy_phong, repeat)
+    print(f"22 Phong balls: numpy (shading only) {lo_n * 1e3:.1f} ms, compiled (shading, "
+          f"specks, coverage, blend) {lo_c * 1e3:.1f} ms (min of {repeat}; {load()})")
+
+
 def bench_sigma(frames: list[int]) -> None:
     scene, views = break_scene(), break_views()
     pal = fixed_palette(scene)
-    for mode in ("period", "fixed"):
+    for mode in ("period", "fixed", "adapted"):
         term = Terminal("t5688")
         session = SigmaSession(SigmaHost(scene, pal, mode), term)
         for f in frames:
@@ -94,6 +139,7 @@ def main() -> None:
         return
     print(f"numpy {np.__version__}; {os.cpu_count()} CPUs; {load()}")
     bench_truecolour(5 if quick else 30)
+    bench_numba_pays(5 if quick else 20)
     bench_sigma([1, 20] if quick else [1, 12, 20, 40])
     bench_palette(8 if quick else 1)
 

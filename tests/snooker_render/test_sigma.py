@@ -23,7 +23,7 @@ def sent() -> dict[str, tuple]:
     view = break_views()[12]
     pal = fixed_palette(scene)
     out = {}
-    for mode in ("period", "fixed"):
+    for mode in ("period", "fixed", "adapted"):
         term = Terminal("t5688")
         session = SigmaSession(SigmaHost(scene, pal, mode), term)
         out[mode] = (session.show(view), term, session)
@@ -86,3 +86,21 @@ def test_fixed_mode_on_the_terminal_shows_the_host_picture_through_the_lut(sent)
     frame, term, session = sent["fixed"]
     shown = term.frame()
     assert np.array_equal(shown, session.host.palette.lut[frame.frame.intended])
+
+
+def test_adapted_anti_aliases_the_firmware_lines_no_leaks_at_period_cost(sent) -> None:  # noqa: ANN001, E501
+    period, adapted = sent["period"][0], sent["adapted"][0]
+    assert adapted.leaks == 0 and adapted.gaps == 0
+    assert np.array_equal(adapted.screen, adapted.frame.intended)
+    assert abs(len(adapted.frame.data) - len(period.frame.data)) < 0.01 * len(period.frame.data)
+
+
+def test_the_host_knows_the_firmware_line() -> None:
+    from apps.snooker.render.outline import firmware_line
+    from emulator.sigma.raster import firmware_line_points
+
+    rng = np.random.default_rng(5)
+    for _ in range(200):
+        x0, y0, x1, y1 = (int(v) for v in rng.integers(0, 500, 4))
+        got = sorted(map(tuple, firmware_line(x0, y0, x1, y1).tolist()))
+        assert got == firmware_line_points(x0, y0, x1, y1)

@@ -57,6 +57,35 @@ def bresenham(x0: int, y0: int, x1: int, y1: int) -> np.ndarray:
     return np.stack([x0 + np.sign(dx) * minor, y0 + np.sign(dy) * i], axis=1)
 
 
+FRACTION_BITS = 12  # the firmware vector's fixed point (docs/fidelity/sigma.md, reconstructed)
+
+
+def firmware_line(x0: int, y0: int, x1: int, y1: int) -> np.ndarray:
+    """(n, 2) pixels the Sigma's firmware sets for a vector (its 12-bit fixed-point DDA, as
+    docs/fidelity/sigma.md describes it): the major axis one pixel a step, the minor axis
+    the integer part of 1/2 plus the step times the slope truncated to 1/4096."""
+    dx, dy = x1 - x0, y1 - y0
+    sx, sy = (1 if dx >= 0 else -1), (1 if dy >= 0 else -1)
+    adx, ady = abs(dx), abs(dy)
+    i = np.arange(max(adx, ady) + 1, dtype=np.int64)
+    half = 1 << (FRACTION_BITS - 1)
+    if adx >= ady:
+        slope = (ady << FRACTION_BITS) // adx if adx else 0
+        return np.stack([x0 + sx * i, y0 + sy * ((half + i * slope) >> FRACTION_BITS)], 1)
+    slope = (adx << FRACTION_BITS) // ady
+    return np.stack([x0 + sx * ((half + i * slope) >> FRACTION_BITS), y0 + sy * i], 1)
+
+
+def firmware_outline(v: np.ndarray, height: int) -> np.ndarray:
+    """The pixels (x, row) the firmware sets for the closed polyline through ``v`` (x, row),
+    sent in device coordinates (y up) vertex by vertex and back to the first."""
+    dev = [(int(x), height - 1 - int(y)) for x, y in v]
+    parts = [firmware_line(*dev[k], *dev[(k + 1) % len(dev)]) for k in range(len(dev))]
+    pts = np.concatenate(parts)
+    pts[:, 1] = height - 1 - pts[:, 1]
+    return np.unique(pts, axis=0)
+
+
 def outline_pixels(v: np.ndarray) -> np.ndarray:
     """Every pixel of the closed outline through integer vertices (duplicates removed)."""
     parts = [bresenham(*v[k], *v[(k + 1) % len(v)]) for k in range(len(v))]

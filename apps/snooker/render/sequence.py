@@ -19,7 +19,7 @@ from apps.snooker.render.sigma_host import SCREEN_H, SCREEN_W, SigmaHost
 from apps.snooker.render.sigma_session import SigmaSession, TerminalLike
 from apps.snooker.render.truecolour import RenderOptions, render_frame, render_linear
 
-MODES = ("period", "fixed", "truecolour")
+MODES = ("period", "fixed", "adapted", "truecolour")
 PALETTES = ("fixed", "adaptive")
 
 

@@ -18,6 +18,12 @@ the terminal's screen counts the leaking pixels.
 boundaries using Bresenham's algorithm" — the host sends the outline's pixels itself (as
 horizontal runs, which any line drawer draws exactly), so the fill stops exactly where the
 anti-aliased boundary expects it: no leaks.
+
+``mode="adapted"`` is the thesis's other cure: "adapting the Pitteway and Watkinson
+algorithm to perform anti-aliasing along the lines produced by the Sigma". The outlines are
+the firmware's vectors again (as cheap on the line as ``period``), but the host knows where
+the firmware puts their pixels (its DDA, docs/fidelity/sigma.md) and anti-aliases those:
+no leaks either.
 """
 
 from __future__ import annotations
@@ -34,6 +40,7 @@ from apps.snooker.render.materials import BACKGROUND
 from apps.snooker.render.outline import (
     clip_to_screen,
     coverage,
+    firmware_outline,
     outline_pixels,
     pixel_vertices,
     signed_area,
@@ -47,7 +54,7 @@ from apps.snooker.render.shadow_pass import shadow_occlusion
 from apps.snooker.render.specks import speck_directions
 from protocols.sigma import Encoder
 
-MODES = ("period", "fixed")
+MODES = ("period", "fixed", "adapted")
 SCREEN_W, SCREEN_H = 768, 512  # the T5688's screen: the drawing area's first quadrant
 
 
@@ -128,7 +135,8 @@ class _FrameJob:
             return  # thinner than a pixel once its corners are whole pixels: not drawn
         c = int(self.host.palette.index(item.colour))
         self.flat.add(c)
-        ring = outline_pixels(v)
+        ring = firmware_outline(v, SCREEN_H) if self.host.mode == "adapted" else \
+            outline_pixels(v)
         xs, rows = ring[:, 0], ring[:, 1]
         under_lin, under_idx = self.lin[rows, xs].copy(), self.idx[rows, xs].copy()
         self.idx[rows, xs] = c

@@ -32,13 +32,16 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
         description="Render every frame of a view file over a checkpoint or session. "
         "--mode period: the 1984 program on the emulated T5688 over the 9600-baud line "
         "(firmware outlines + flood fill: polygon colour leaks past the anti-aliased edges, "
-        "counted); fixed: the same with software Bresenham outlines (no leaks); truecolour: "
-        "24-bit at --size. Writes DIR/frame_NNNNN.png numbered as the checkpoint's frames.")
+        "counted); fixed: the same with software Bresenham outlines (no leaks); adapted: "
+        "firmware outlines anti-aliased where the firmware puts them (no leaks, period's line "
+        "time); truecolour: 24-bit at --size. Writes DIR/frame_NNNNN.png numbered as the "
+        "checkpoint's frames.")
     s.add_argument("motion", metavar="CHECKPOINT|SESSION")
     s.add_argument("views", metavar="VIEWS", help="the view file (from 'snooker ccl')")
     s.add_argument("--frames", type=frames_dir, metavar="DIR", required=True,
                    help="write DIR/frame_NNNNN.png")
-    s.add_argument("--mode", choices=("period", "fixed", "truecolour"), default="period")
+    s.add_argument("--mode", choices=("period", "fixed", "adapted", "truecolour"),
+                   default="period")
     s.add_argument("--palette", choices=("fixed", "adaptive"), default="fixed",
                    help="the T5688's 256 colours: fixed (period) or chosen for the sequence")
     s.add_argument("--size", type=_size, default=(768, 512), metavar="WxH",
