@@ -26,6 +26,7 @@ from protocols.link.pty import PtyPort
 from protocols.link.settings import LineSettings
 
 MAX_EVENTS = 100  # events kept on .events; older ones are dropped
+BUSY = b"camlab88: another client is connected to this line; try again later\r\n"
 SETTLE_POLLS = 1000  # at most this many polls between clients spent waiting for an idle line
 MAX_HELD = 1 << 20  # a new client's bytes held while settling; more and it is hung up on
 
@@ -198,13 +199,18 @@ class TcpBridge(Bridge):
                 sock, addr = self._server.accept()
             except (BlockingIOError, InterruptedError):
                 return
+            if self._client is not None and self._client_gone():
+                self._drop_client("closed by the client")
             if self._client is None:
                 sock.setblocking(False)
                 sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
                 self._client = sock
                 self._event("connected", f"{addr[0]}:{addr[1]}")
-            else:
-                sock.close()  # one client at a time
+            else:  # one client at a time: say so, then hang up
+                with contextlib.suppress(OSError):
+                    sock.setblocking(False)
+                    sock.send(BUSY)
+                sock.close()
                 self._event("refused", f"{addr[0]}:{addr[1]} (a client is already connected)")
 
     def disconnect(self) -> None:
@@ -227,8 +233,12 @@ class TcpBridge(Bridge):
     def _read_outside(self, timeout: float) -> bytes:
         watch = [self._server] + ([self._client] if self._client else [])
         ready, _, _ = select.select(watch, [], [], max(0.0, timeout))
-        if self._server in ready:
+        data = self._read_client(ready)
+        if self._server in ready:  # after the client's own news: it may just have left
             self._accept_waiting()
+        return data
+
+    def _read_client(self, ready: list) -> bytes:
         if self._client is None or (self._client not in ready and not self._client_ready()):
             return b""
         try:
@@ -241,6 +251,16 @@ class TcpBridge(Bridge):
         if not data:
             self._drop_client("closed by the client")
         return data
+
+    def _client_gone(self) -> bool:
+        """Whether the current client has closed or reset (looked at without reading)."""
+        assert self._client is not None
+        try:
+            return self._client_ready() and self._client.recv(1, socket.MSG_PEEK) == b""
+        except (BlockingIOError, InterruptedError):
+            return False
+        except OSError:
+            return True
 
     def _client_ready(self) -> bool:
         assert self._client is not None

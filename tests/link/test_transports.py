@@ -5,7 +5,7 @@ from __future__ import annotations
 import socket
 
 from protocols.link import SerialLine
-from protocols.link.transports import SerialUrlBridge, TcpBridge
+from protocols.link.transports import BUSY, SerialUrlBridge, TcpBridge
 
 
 def pump(line: SerialLine, bridge, want: int, endpoint_read) -> bytes:
@@ -42,7 +42,8 @@ def test_tcp_client_talks_to_the_device_end_and_may_reconnect() -> None:
         line.clock.advance(1)
         bridge.poll(timeout=0.2)
         assert recv_exactly(client, 2) == b"ok"
-        assert second.recv(10) == b""  # closed by the bridge
+        assert recv_exactly(second, len(BUSY)) == BUSY  # told why, then closed
+        assert second.recv(10) == b""
         second.close()
         assert "refused" in [e.kind for e in bridge.events]
         client.close()
