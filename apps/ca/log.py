@@ -74,8 +74,10 @@ def _rect_args(rect: Rect | None) -> tuple:
 
 
 def _rect(args: tuple) -> Rect | None:
-    if args[0] == "all":
+    if args[:1] == ("all",):
         return None
+    if len(args) < 4:
+        raise LogError(f"a rectangle is 'all' or four corners x0 y0 x1 y1, not {quote(args)}")
     return Rect(*(parse_int(str(a), "a rectangle", -MAX_LOG_NUMBER - 1, MAX_LOG_NUMBER,
                             LogError, "corner") for a in args[:4]))
 

@@ -197,6 +197,8 @@ def parse_native(text: str, source: str = "<pattern>") -> Pattern:
             ref = _ints(rest, 2, source, i, raw, "'ref x y'")  # type: ignore[assignment]
         elif word == "cells":
             (count,) = _ints(rest, 1, source, i, raw, "'cells n'")
+            if count < 0:
+                raise PatternError(source, i, 1, f"a cell count cannot be negative ({count})")
             break
         else:
             raise PatternError(source, i, 1, f"expected name, rules, author, comment, ref or "
