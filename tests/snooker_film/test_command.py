@@ -1,0 +1,38 @@
+"""`camlab88 snooker film`: script -> views -> frames -> MP4 and GIF, intermediates kept
+beside the film, a second run renders nothing, a bad script renders nothing."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import imageio.v3 as iio
+
+from camlab88.cli import main
+from tests.snooker_film.helpers import BREAK, SCRIPT
+
+
+def test_the_pipeline_in_one_command(tmp_path: Path, capsys) -> None:  # noqa: ANN001
+    out = tmp_path / "shot.mp4"
+    args = ["snooker", "film", str(BREAK), str(SCRIPT), "--out", str(out), "--gif",
+            str(tmp_path / "shot.gif"), "--size", "48x32", "--workers", "1"]
+    assert main(args) == 0
+    assert (tmp_path / "shot.views").read_text().count("\n") > 40
+    frames = sorted((tmp_path / "shot_frames").glob("frame_*.png"))
+    assert [f.name for f in frames[:2]] == ["frame_00001.png", "frame_00002.png"]
+    assert len(frames) == 40
+    gif = iio.imread(tmp_path / "shot.gif")
+    assert gif.shape == (40, 32, 48, 3)
+    meta = iio.immeta(out)
+    assert round(meta["fps"]) == 25 and "audio_codec" not in meta
+    assert "40 rendered, 0 already there" in capsys.readouterr().err
+    assert main(args) == 0
+    assert "0 rendered, 40 already there" in capsys.readouterr().err
+
+
+def test_a_bad_script_renders_nothing(tmp_path: Path, capsys) -> None:  # noqa: ANN001
+    bad = tmp_path / "bad.ccl"
+    bad.write_text(":\nfrom frame 1 until frame 40;\nobserver at (1, 2);\n")
+    code = main(["snooker", "film", str(BREAK), str(bad), "--out", str(tmp_path / "s.mp4")])
+    err = capsys.readouterr().err
+    assert code == 2 and f"{bad}:3:" in err
+    assert not (tmp_path / "s_frames").exists() and not (tmp_path / "s.mp4").exists()
