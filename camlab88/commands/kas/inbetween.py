@@ -16,7 +16,9 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
     p.add_argument("--path", help="sample path file (two keyframes only)")
     p.add_argument("--timing", help="timing file (ticks or curve) or a built-in curve name: "
                     "linear, ease-in, ease-out, ease-in-out, overshoot")
-    p.add_argument("--frames", type=int, help="frames per pair of keyframes, both included")
+    p.add_argument("--count", "--frames", dest="frames", type=int, metavar="N",
+                   help="frames per pair of keyframes, both included (--frames N is the old "
+                   "spelling: elsewhere --frames names a directory of PNGs)")
     p.add_argument("--missing", default="copy-nearest",
                     choices=("copy-nearest", "grow", "stay"),
                     help="what chains missing from a keyframe do (default copy-nearest)")
@@ -63,7 +65,7 @@ def _inbetween(args: argparse.Namespace) -> int:
             if args.path:
                 raise ValueError("--path works between two keyframes; split the sequence")
             if args.frames is None and (tm is None or tm.kind != "ticks"):
-                raise ValueError("--frames is needed")
+                raise ValueError("--count N is needed (frames per pair of keyframes)")
             seq = inbetween_keys(keys, args.frames, args.method, tm, args.missing,
                                  args.tension, args.continuity, args.bias,
                                  not args.keep_redundant, args.fps)
