@@ -37,6 +37,9 @@ def run(args: argparse.Namespace) -> int:
                        argv=getattr(args, "_argv", None))
     opts.stop_after = args.stop_after or args.stop_after_old or (
         HEADLESS_FRAMES if opts.headless else None)
+    if opts.record is not None and args.tablet:
+        raise SystemExit(f"{COMMAND}: --record cannot record a --tablet's reports; record "
+                         "with the mouse")
     tablet = _open_tablet(args.tablet)
     target = _target(args, opts, tablet)
     try:
