@@ -10,6 +10,10 @@ flood fill and solid blocks; the animation cycles the LUT and then double-buffer
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from protocols.sigma import Encoder
 
 
 def sigma_demo_stream() -> bytes:
@@ -22,52 +26,63 @@ def sigma_picture_stream() -> bytes:
     from protocols.sigma import Encoder
 
     e = Encoder()
-    out = bytearray()
-    put = out.extend
-    # power-on banner on the alpha screen, then into graphics like the RAL GKS driver does
-    put(b"\r" + e.flag() + e.reset() + e.flag_anywhere() + e.sequence_length(0))
-    put(e.graphics_on() + e.alpha_on() + e.alpha_mode())
-    put(b"camlab88: Sigma T5684 on a 9600 baud line\r\n")
-    put(b"\r" + e.flag() + e.cursor_off())
+    parts = (_power_on, _vectors, _dash_masks, _ellipses, _flood_fill, _blocks)
+    return b"".join(part(e) for part in parts)
+
+
+def _power_on(e: Encoder) -> bytes:
+    """A banner on the alpha screen, then into graphics as the RAL GKS driver does; a LUT."""
+    out = (b"\r" + e.flag() + e.reset() + e.flag_anywhere() + e.sequence_length(0)
+           + e.graphics_on() + e.alpha_on() + e.alpha_mode()
+           + b"camlab88: Sigma T5684 on a 9600 baud line\r\n" + b"\r" + e.flag() + e.cursor_off())
     for i, rgb in enumerate(((0, 0, 0), (15, 15, 15), (15, 3, 3), (3, 15, 3), (4, 6, 15),
                              (15, 15, 2), (15, 4, 15), (3, 15, 15))):
-        put(e.lut(i, *rgb))
+        out += e.lut(i, *rgb)
+    return out
 
-    # 1. a star of vectors in abbreviated mode
+
+def _vectors(e: Encoder) -> bytes:
+    """1. A star of vectors in abbreviated mode."""
     cx, cy = 200, 330
-    put(e.colour(7))
+    out = e.colour(7)
     for k in range(24):
         a = 2 * math.pi * k / 24
-        put(e.abbreviated_polyline([(cx, cy), (cx + int(150 * math.cos(a)),
-                                               cy + int(150 * math.sin(a)))]))
-    put(e.colour(1) + e.move(40, 462) + e.text("VECTORS (ABBREVIATED MODE)"))
+        out += e.abbreviated_polyline([(cx, cy), (cx + int(150 * math.cos(a)),
+                                                  cy + int(150 * math.sin(a)))])
+    return out + e.colour(1) + e.move(40, 462) + e.text("VECTORS (ABBREVIATED MODE)")
 
-    # 2. dash masks, continuing across vectors
-    y = 300
+
+def _dash_masks(e: Encoder) -> bytes:
+    """2. Dash masks, continuing across vectors."""
+    out, y = b"", 300
     for colour, mask in ((2, 0xF0F0), (3, 0x8888), (5, 0xFE10), (6, 0xF888)):
-        put(e.colour(colour) + e.dash(mask))
-        put(e.abbreviated_polyline([(400, y), (500, y + 40), (600, y), (720, y + 40)]))
+        out += e.colour(colour) + e.dash(mask)
+        out += e.abbreviated_polyline([(400, y), (500, y + 40), (600, y), (720, y + 40)])
         y += 35
-    put(e.line_reset() + e.line_solid())
-    put(e.colour(1) + e.move(400, 462) + e.text("DL DASH MASKS"))
+    return (out + e.line_reset() + e.line_solid()
+            + e.colour(1) + e.move(400, 462) + e.text("DL DASH MASKS"))
 
-    # 3. firmware ellipses
+
+def _ellipses(e: Encoder) -> bytes:
+    """3. Firmware ellipses."""
+    out = b""
     for k, (x, r, ratio, solid) in enumerate(((460, 40, 1.0, False), (560, 45, 1.8, True),
                                               (670, 35, 0.6, False))):
-        put(e.colour(2 + k) + e.move(x, 200) + e.ellipse(r, ratio, solid))
-    put(e.colour(1) + e.move(430, 130) + e.text("JO/JM/JN ELLIPSES"))
+        out += e.colour(2 + k) + e.move(x, 200) + e.ellipse(r, ratio, solid)
+    return out + e.colour(1) + e.move(430, 130) + e.text("JO/JM/JN ELLIPSES")
 
-    # 4. polygon outline + firmware flood fill from a seed
+
+def _flood_fill(e: Encoder) -> bytes:
+    """4. A polygon outline and the firmware flood fill from a seed inside it."""
     pts = [(60, 40), (330, 60), (260, 150), (170, 110), (90, 170), (60, 40)]
-    put(e.colour(5) + e.polyline(pts))
-    put(e.colour(4) + e.move(120, 80) + e.fill(5))
-    put(e.colour(1) + e.move(40, 15) + e.text("JK FLOOD FILL"))
+    return (e.colour(5) + e.polyline(pts) + e.colour(4) + e.move(120, 80) + e.fill(5)
+            + e.colour(1) + e.move(40, 15) + e.text("JK FLOOD FILL"))
 
-    # 5. solid blocks: a colour bar
-    for k in range(8):
-        put(e.colour(k) + e.move(420 + 40 * k, 20) + e.block(450 + 40 * k, 60))
 
-    return bytes(out)
+def _blocks(e: Encoder) -> bytes:
+    """5. Solid blocks: a colour bar."""
+    return b"".join(e.colour(k) + e.move(420 + 40 * k, 20) + e.block(450 + 40 * k, 60)
+                    for k in range(8))
 
 
 def sigma_animation_stream() -> bytes:
