@@ -62,7 +62,7 @@ def choose_palette(scene: Scene, views: Sequence[object], kind: str,
         return fixed_palette(scene)
     if kind != "adaptive":
         raise SequenceError(f"unknown palette {kind!r}; choose from {', '.join(PALETTES)}")
-    opts = RenderOptions(SCREEN_W, SCREEN_H)
+    opts = RenderOptions(SCREEN_W, SCREEN_H, wood=False)  # what the Sigma modes draw
     frames = []
     for k, v in enumerate(views, start=1):
         frames.append(render_linear(scene, v, opts))
