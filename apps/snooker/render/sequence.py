@@ -74,11 +74,11 @@ def choose_palette(scene: Scene, views: Sequence[object], kind: str,
 def render_sequence(scene: Scene, views: Sequence[object], mode: str, size: tuple[int, int],
                     palette: Palette | None = None,
                     terminal_factory: Callable[[], TerminalLike] | None = None,
-                    specks: bool = True) -> Iterator[RenderedFrame]:
+                    specks: bool = True, wood: bool = True) -> Iterator[RenderedFrame]:
     """Each view's frame in turn. ``truecolour`` at ``size``; the Sigma modes at 768 x 512
     through one terminal for the whole sequence (its LUT loaded once)."""
     if mode == "truecolour":
-        opts = RenderOptions(size[0], size[1], specks)
+        opts = RenderOptions(size[0], size[1], specks, wood=wood)
         for v in views:
             yield RenderedFrame(int(v.frame), render_frame(scene, v, opts))
         return

@@ -41,7 +41,7 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
     s.add_argument("--frames", type=frames_dir, metavar="DIR", required=True,
                    help="write DIR/frame_NNNNN.png")
     s.add_argument("--mode", choices=("period", "fixed", "adapted", "truecolour"),
-                   default="period")
+                   default="period", help="(default period)")
     s.add_argument("--palette", choices=("fixed", "adaptive"), default="fixed",
                    help="the T5688's 256 colours: fixed (period) or chosen for the sequence")
     s.add_argument("--size", type=_size, default=(768, 512), metavar="WxH",
@@ -52,6 +52,8 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
                    help="lights file: 'x y z [intensity | r g b]' a line (default: a canopy "
                    "of four bulbs)")
     s.add_argument("--no-specks", action="store_true", help="leave out the dust specks")
+    s.add_argument("--no-wood", action="store_true",
+                   help="truecolour: constant-shaded wood, as the Sigma modes draw it")
     s.set_defaults(handler=render)
 
 
@@ -95,7 +97,8 @@ def _render(args: argparse.Namespace, scene, views) -> int:  # noqa: ANN001
     line = leaks = gaps = 0.0
     try:  # every frame goes to a staging directory first: nothing half-written
         for k, f in enumerate(render_sequence(scene, views, args.mode, args.size, palette,
-                                              lambda: Terminal("t5688"), not args.no_specks),
+                                              lambda: Terminal("t5688"), not args.no_specks,
+                                              not args.no_wood),
                               start=1):
             write_png(f.image, frame_path(stage, f.frame))
             if f.line_seconds is not None:
