@@ -78,6 +78,7 @@ class RunOptions:
 
     headless: bool = True
     paced: bool = True                  # wall clock follows virtual time (window only)
+    realtime: bool = False              # ... headless too (replay --period)
     scale: int = 1
     screenshot: Path | None = None      # save the last screen here at the end
     frames: Path | None = None          # DIR: every frame shown as DIR/frame_NNNNN.png
@@ -128,7 +129,7 @@ class Harness:
 
     def _paced(self) -> bool:
         o = self.options
-        return self.window is not None and o.paced and o.screenshot is None
+        return o.screenshot is None and ((self.window is not None and o.paced) or o.realtime)
 
     def _open_window(self) -> None:
         if self.options.headless:

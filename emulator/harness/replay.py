@@ -65,7 +65,7 @@ class Replay:
 
     def adjust(self, options: RunOptions) -> None:
         options.headless = self.headless
-        options.paced = self.period
+        options.paced = options.realtime = self.period
         options.frames, options.screenshot, options.record = self.frames, self.screenshot, None
         options.stop_after = None  # the recording's events and end decide
         self.runs += 1
