@@ -50,6 +50,29 @@ class AlphaScreen:
             # other control characters (NUL, BEL, XON/XOFF ...) do nothing on the screen
         self._mask = None
 
+    # ------------------------------------------------------------------ state
+    def save_state(self) -> tuple[dict[str, object], np.ndarray]:
+        """(the cursor as JSON-able values, the character cells) — the screen's own state."""
+        return {"row": self.row, "col": self.col}, self.chars
+
+    @staticmethod
+    def check_state(cursor: object, chars: np.ndarray) -> None:
+        """ValueError unless ``cursor`` and ``chars`` are a state this screen can be in."""
+        if chars.shape != (ROWS, COLS):
+            raise ValueError(f"alpha cells have shape {chars.shape}, the screen is "
+                             f"{(ROWS, COLS)}")
+        if not (isinstance(cursor, dict) and set(cursor) == {"row", "col"}
+                and all(type(v) is int for v in cursor.values())
+                and 0 <= cursor["row"] < ROWS and 0 <= cursor["col"] < COLS):
+            raise ValueError(f"alpha cursor {cursor!r} is not a cell of the screen")
+
+    def load_state(self, cursor: dict[str, int], chars: np.ndarray) -> None:
+        """Restore save_state()'s values (check_state them first)."""
+        self.check_state(cursor, chars)
+        self.chars = np.array(chars, dtype=np.uint8)
+        self.row, self.col = cursor["row"], cursor["col"]
+        self._mask = None
+
     def _newline(self) -> None:
         self.row += 1
         if self.row >= ROWS:

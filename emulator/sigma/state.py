@@ -15,12 +15,12 @@ from __future__ import annotations
 import io
 import json
 import zlib
-from dataclasses import asdict, fields
+from dataclasses import asdict
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from protocols.sigma.orders import Mode
+from protocols.sigma.decoder_state import DecoderState
 
 if TYPE_CHECKING:
     from emulator.sigma.terminal import Terminal
@@ -31,40 +31,23 @@ READABLE = (1, 2)
 
 
 def save(t: Terminal, compress: bool = True) -> bytes:
+    """The file: each part of the terminal gives its own state (PyBoy's mb.save_state)."""
+    reg, planes, lut, errors = t.own_state()
+    cursor, chars = t.alpha.save_state()
     header = {
         "arrays": "zlib" if compress else "raw",
         "version": VERSION,
         "model": t.model.name,
-        "registers": asdict(t.reg),
+        "registers": asdict(reg),
         "decoder": t.decoder.get_state(),
-        "alpha_cursor": [t.alpha.row, t.alpha.col],
-        "errors": t.errors,
+        "alpha_cursor": [cursor["row"], cursor["col"]],
+        "errors": errors,
     }
     raw = b"".join(np.ascontiguousarray(a, dtype=np.uint8).tobytes()
-                   for a in (t.planes, t.lut, t.alpha.chars))
+                   for a in (planes, lut, chars))
     head = json.dumps(header, sort_keys=True).encode("utf-8")
     return MAGIC + len(head).to_bytes(4, "big") + head + (zlib.compress(raw, 1) if compress
                                                           else raw)
-
-
-def _registers(t: Terminal, regs: object):  # noqa: ANN202 - a terminal.Registers
-    from emulator.sigma.terminal import Registers
-
-    if not isinstance(regs, dict):
-        raise ValueError("Sigma state 'registers' is not a mapping")
-    known = {f.name: f for f in fields(Registers)}
-    for name in regs:
-        if name not in known:
-            raise ValueError(f"Sigma state has an unknown register {name!r}")
-    for name in known:
-        if name not in regs:
-            raise ValueError(f"Sigma state lacks the register {name!r}")
-    defaults = Registers()
-    for name, v in regs.items():
-        want = type(getattr(defaults, name))
-        if type(v) is not want or (want is int and not -(1 << 31) <= v < 1 << 31):
-            raise ValueError(f"Sigma state register {name!r}={v!r} is not a {want.__name__}")
-    return Registers(**regs)
 
 
 def _split(raw: bytes, t: Terminal) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -113,30 +96,23 @@ def load(t: Terminal, data: bytes) -> None:
     for key in ("registers", "decoder", "alpha_cursor", "errors"):
         if key not in header:
             raise ValueError(f"Sigma state header lacks {key!r}")
-    reg = _registers(t, header["registers"])
-    cursor = header["alpha_cursor"]
-    rows, cols = t.alpha.chars.shape
-    if not (isinstance(cursor, list) and len(cursor) == 2 and all(type(v) is int for v in cursor)
-            and 0 <= cursor[0] < rows and 0 <= cursor[1] < cols):
-        raise ValueError(f"Sigma state 'alpha_cursor'={cursor!r} is not a cell of the screen")
+    _restore(t, header, version, planes, lut, alpha)
+
+
+def _restore(t: Terminal, header: dict, version: int, planes: np.ndarray, lut: np.ndarray,
+             alpha: np.ndarray) -> None:
+    """Check every part's state first, then hand each part its own."""
+    from emulator.sigma.alpha import AlphaScreen
+    from emulator.sigma.terminal import Registers
+
+    reg = Registers.from_json(header["registers"])
+    c = header["alpha_cursor"]
+    cursor = {"row": c[0], "col": c[1]} if isinstance(c, list) and len(c) == 2 else c
+    AlphaScreen.check_state(cursor, alpha)
     if type(header["errors"]) is not int or header["errors"] < 0:
         raise ValueError(f"Sigma state 'errors'={header['errors']!r} is not a count")
-    dec = header["decoder"]
-    if version >= 2:
-        t.decoder.set_state(dec)  # validates everything before changing anything
-    else:
-        try:
-            t.decoder._clear_partial()
-            t.decoder.mode = Mode(dec["mode"])
-            t.decoder.coord_digits = int(dec["coord_digits"])
-            t.decoder.gh = bool(dec["gh"])
-            t.decoder._line_start = bool(dec["line_start"])
-        except (KeyError, TypeError, ValueError) as exc:
-            raise ValueError(f"Sigma state 'decoder' is corrupt: {exc!r}") from None
-    t.planes = planes.astype(np.uint8)
-    t.lut = lut.astype(np.uint8)
-    t.alpha.chars = alpha.astype(np.uint8)
-    t.alpha.row, t.alpha.col = cursor
-    t.alpha._mask = None
-    t.reg = reg
-    t.errors = header["errors"]
+    dec = (DecoderState.from_json(header["decoder"], t.decoder.MAX_TEXT) if version >= 2
+           else DecoderState.from_v1(header["decoder"]))
+    t.restore_own(reg, planes, lut, header["errors"])
+    t.alpha.load_state(cursor, alpha)
+    t.decoder.resume(dec)

@@ -8,7 +8,7 @@ Registers are named after the orders that set them (see protocols.sigma.orders).
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 
@@ -32,6 +32,7 @@ from protocols.sigma import (
     Points,
     format_report,
 )
+from protocols.sigma.decoder_state import check_keys
 from roms.sigma import load_font, load_lut
 
 TEXT_CELL_W = 8  # graphics text (BA) advance, reconstructed
@@ -43,6 +44,20 @@ FEED_PIECE = 1 << 16
 @dataclass
 class Registers:
     """Everything the orders set. Names follow protocols.sigma.orders."""
+
+    @classmethod
+    def from_json(cls, regs: object) -> Registers:
+        """asdict()'s mapping back, every register present and of its type (ValueError)."""
+        if not isinstance(regs, dict):
+            raise ValueError("Sigma state 'registers' is not a mapping")
+        check_keys(regs, [f.name for f in fields(cls)], "register")
+        defaults = cls()
+        for name, v in regs.items():
+            want = type(getattr(defaults, name))
+            if type(v) is not want or (want is int and not -(1 << 31) <= v < 1 << 31):
+                raise ValueError(f"Sigma state register {name!r}={v!r} is not a "
+                                 f"{want.__name__}")
+        return cls(**regs)
 
     pen_x: int = 0
     pen_y: int = 0
@@ -401,6 +416,20 @@ class Terminal:
                 self._report(TABLET_KEY)
 
     # ------------------------------------------------------------------ state
+    def own_state(self) -> tuple[Registers, np.ndarray, np.ndarray, int]:
+        """The terminal's own part of a saved state (its parts save theirs: the decoder's
+        get_state, the alpha screen's save_state): registers, planes, LUT, error count."""
+        return self.reg, self.planes, self.lut, self.errors
+
+    def restore_own(self, reg: Registers, planes: np.ndarray, lut: np.ndarray,
+                    errors: int) -> None:
+        """Put back own_state()'s values (the caller has checked their shapes)."""
+        if planes.shape != self.planes.shape or lut.shape != self.lut.shape:
+            raise ValueError("Sigma state arrays have the wrong shapes for this model")
+        self.reg, self.errors = reg, errors
+        self.planes = np.array(planes, dtype=np.uint8)
+        self.lut = np.array(lut, dtype=np.uint8)
+
     def save_state(self, compress: bool = True) -> bytes:
         from emulator.sigma.state import save
 

@@ -9,6 +9,7 @@ one held DJ letter) and can be saved and restored (get_state / set_state).
 
 from __future__ import annotations
 
+import copy
 import re
 from collections.abc import Callable
 
@@ -30,6 +31,7 @@ from protocols.sigma.commands import (
     Point,
     Points,
 )
+from protocols.sigma.decoder_state import DecoderState
 from protocols.sigma.orders import (
     BY_CODE,
     CR,
@@ -90,26 +92,35 @@ class Decoder:
     # ------------------------------------------------------------------ state
     def get_state(self) -> dict[str, object]:
         """Everything the decoder holds between feeds, as JSON-able values (see set_state)."""
-        s = self.stats
-        return {
-            "mode": self.mode.value, "coord_digits": self.coord_digits, "gh": self.gh,
-            "line_start": self._line_start, "flag_k": self._flag_k, "letter": self._letter,
-            "spec": None if self._spec is None else self._spec.code,
-            "field_i": self._field_i, "digits_left": self._digits_left, "value": self._value,
-            "args": list(self._args), "pair": list(self._pair),
-            "ags": [int(v) for v in self._ags_state], "ags_first": self._ags_first,
-            "esc": None if self._esc is None else list(self._esc),
-            "text": self._text.decode("latin-1"), "text_over": self._text_over,
-            "dots_hold": self._dots_hold,
-            "stats": {"unknown": s.unknown, "malformed": s.malformed, "bytes_in": s.bytes_in,
-                      "commands": s.commands, "unknown_codes": dict(s.unknown_codes)},
-        }
+        return self.capture().to_json()
 
     def set_state(self, state: dict[str, object]) -> None:
-        """Restore get_state()'s dict; ValueError naming the first bad or unknown entry."""
-        from protocols.sigma.decoder_state import restore
+        """Restore get_state()'s dict; ValueError naming the first bad or unknown entry
+        (checked completely before anything changes)."""
+        self.resume(DecoderState.from_json(state, self.MAX_TEXT))
 
-        restore(self, state)
+    def capture(self) -> DecoderState:
+        """The partial state as a value (the decoder's own fields, copied)."""
+        return DecoderState(
+            self.mode, self.coord_digits, self.gh, self._line_start, self._flag_k,
+            self._letter, self._spec, self._field_i, self._digits_left, self._value,
+            list(self._args), list(self._pair), [int(v) for v in self._ags_state],
+            self._ags_first, None if self._esc is None else list(self._esc), bytes(self._text),
+            self._text_over, self._dots_hold, copy.deepcopy(self.stats))
+
+    def resume(self, st: DecoderState) -> None:
+        """Continue from a captured (or restored) state."""
+        self._clear_partial()
+        self.mode, self.coord_digits, self.gh = st.mode, st.coord_digits, st.gh
+        self._line_start, self._flag_k, self._letter = st.line_start, st.flag_k, st.letter
+        self._spec, self._field_i, self._digits_left = st.spec, st.field_i, st.digits_left
+        self._value, self._args, self._pair = st.value, list(st.args), list(st.pair)
+        self._ags_state = np.array(st.ags, dtype=np.int32)
+        self._ags_first = st.ags_first
+        self._esc = None if st.esc is None else list(st.esc)
+        self._text, self._text_over = bytearray(st.text), st.text_over
+        self._dots_hold = st.dots_hold
+        self.stats = copy.deepcopy(st.stats)
 
     # ------------------------------------------------------------------ public
     def feed(self, data: bytes | bytearray | memoryview) -> list[Command]:

@@ -83,7 +83,7 @@ def test_load_state_errors_are_clear() -> None:
     good = t.save_state()
     with pytest.raises(ValueError, match="unknown register 'pen_colour'"):
         t.load_state(_edit(good, lambda h: h["registers"].update(pen_colour=3)))
-    with pytest.raises(ValueError, match="lacks the register 'colour'"):
+    with pytest.raises(ValueError, match="register 'colour' is missing"):
         t.load_state(_edit(good, lambda h: h["registers"].pop("colour")))
     with pytest.raises(ValueError, match="'pen_x'"):
         t.load_state(_edit(good, lambda h: h["registers"].update(pen_x="12")))
