@@ -44,7 +44,12 @@ def long_break(frames: int) -> Scene:
     s.strike(CUE, 6.0, math.degrees(math.atan2(red[1] - cue[1], red[0] - cue[0])))
     for _ in range(frames - 1):
         s.simulate_frame()
-    return Scene.from_checkpoint(s.checkpoint(0, frames - 1))
+    import numpy as np
+
+    shot = Scene.from_checkpoint(s.checkpoint(0, min(frames, s.frame_number + 1) - 1))
+    pad = frames - shot.n_frames  # the balls came to rest: the last frame held
+    return Scene(shot.table, np.concatenate([shot.centres] + [shot.centres[-1:]] * pad),
+                 np.concatenate([shot.on_table] + [shot.on_table[-1:]] * pad), shot.lights)
 
 
 def tasks_for(scene: Scene, size: tuple[int, int]) -> list[FrameTask]:

@@ -74,3 +74,11 @@ def scene_of(motion_path: str | os.PathLike[str], lights: Lights | None = None) 
     from apps.snooker.render.scene import load_scene
 
     return load_scene(motion_path, lights)
+
+
+def title_film(word: str) -> tuple[Scene, list[View]]:
+    """The §6.5 title shot spelling ``word`` and its (fixed) camera's views."""
+    from apps.snooker.film.titles import title_scene, title_views
+
+    scene, view = title_scene(word)
+    return scene, title_views(scene, view)

@@ -32,6 +32,12 @@ class FrameTask:
 
 def render_image(scene: Scene, task: FrameTask) -> np.ndarray:
     """(H, W, 3) uint8, row 0 = top."""
+    from apps.snooker.film.titles import TitleScene
+
+    if isinstance(scene, TitleScene):  # §6.5: the table invisible, letters on the balls
+        from apps.snooker.film.letterballs import render_title
+
+        return render_title(scene, task.view, task.frame, task.width, task.height)
     opts = RenderOptions(task.width, task.height, task.specks, task.shadows)
     if task.blur_samples < 2:
         return encode_image(render_linear(scene, task.view, opts, task.frame))

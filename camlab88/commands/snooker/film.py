@@ -30,6 +30,12 @@ def _movie(text: str) -> Path:
     return Path(text)
 
 
+def _word(text: str) -> str:
+    if not (1 <= len(text) <= 8 and all(c.isascii() and c.isprintable() for c in text)):
+        raise argparse.ArgumentTypeError(f"{text!r}: 1 to 8 printable ASCII letters")
+    return text.upper()
+
+
 def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     s = actions.add_parser(
         "film", help="camera script -> views -> rendered frames -> MP4/GIF (§6.3-6.4)",
@@ -39,8 +45,12 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
         "stopped film resumes. Truecolour frames render on a local process pool (one "
         "process per core), or on a Dask cluster: --dask tcp://HOST:8786 (started with "
         "'dask scheduler' and 'dask worker tcp://HOST:8786'), or --dask local.")
-    s.add_argument("motion", metavar="CHECKPOINT|SESSION")
-    s.add_argument("script", metavar="SCRIPT.ccl", help="the camera script (§6.3.1)")
+    s.add_argument("motion", metavar="CHECKPOINT|SESSION", nargs="?")
+    s.add_argument("script", metavar="SCRIPT.ccl", nargs="?",
+                   help="the camera script (§6.3.1)")
+    s.add_argument("--titles", metavar="WORD", type=_word,
+                   help="instead of a shot: the §6.5 title animation, WORD spelled by "
+                   "giant lettered balls aimed with 'set up next shot' (e.g. CAMLAB88)")
     s.add_argument("--out", type=_movie, required=True, metavar="FILM",
                    help="the film: .mp4 (H.264) or .gif")
     s.add_argument("--gif", type=_movie, metavar="FILE", help="also a GIF of the film")
@@ -67,6 +77,10 @@ def film(args: argparse.Namespace) -> int:
     from apps.snooker.render.lights import LightsError
     from apps.snooker.session import SessionError
 
+    if (args.titles is None) == (args.motion is None or args.script is None):
+        return fail(COMMAND, "give CHECKPOINT|SESSION and SCRIPT.ccl, or --titles WORD")
+    if args.titles and args.mode != "truecolour":
+        return fail(COMMAND, "--titles renders in truecolour")
     if args.mode != "truecolour" and (args.size != (768, 512) or args.dask or args.motion_blur):
         return fail(COMMAND, f"--mode {args.mode} draws the T5688's 768x512 screen one "
                     "frame after another; --size, --dask and --motion-blur are truecolour's")
@@ -80,6 +94,7 @@ def film(args: argparse.Namespace) -> int:
 
 
 def _film(args: argparse.Namespace) -> int:
+    from apps.snooker.camera.views import write_views
     from apps.snooker.film import pipeline as P
     from apps.snooker.film.movie import write_movie
     from apps.snooker.film.progress import progress_bar
@@ -87,8 +102,12 @@ def _film(args: argparse.Namespace) -> int:
 
     paths = P.FilmPaths.beside(args.out)
     paths.movie.parent.mkdir(parents=True, exist_ok=True)
-    views = P.script_views(args.motion, args.script, paths.views)
-    scene = P.scene_of(args.motion, read_lights(args.lights) if args.lights else None)
+    if args.titles:
+        scene, views = P.title_film(args.titles)
+        write_views(paths.views, views, [f"camlab88 snooker film --titles {args.titles}"])
+    else:
+        views = P.script_views(args.motion, args.script, paths.views)
+        scene = P.scene_of(args.motion, read_lights(args.lights) if args.lights else None)
     if args.mode == "truecolour":
         look = P.FilmLook(args.size[0], args.size[1], not args.no_specks, True,
                           args.blur_samples if args.motion_blur else 1)
