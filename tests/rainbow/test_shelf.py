@@ -104,3 +104,18 @@ def test_components_occupy_their_own_planes_at_one_priority() -> None:
         (2, 2 * i, shelf.SHELF_PAGE) for i in range(4)]
     assert {g.arc(a).priority for a in demo.shelf.arcs.values()} == {0}
     assert {g.arc(a).parent for a in demo.shelf.arcs.values()} == {demo.shelf.cluster}
+
+
+def test_rainbow_run_demo_shelf(tmp_path) -> None:  # noqa: ANN001
+    from PIL import Image
+
+    from camlab88.cli import main
+
+    shot = tmp_path / "shelf.png"
+    assert main(["rainbow", "run", "--demo", "shelf", "--headless", "--stop-after", "3",
+                 "--screenshot", str(shot)]) == 0
+    s = in_process()
+    demo = shelf.ShelfDemo(s.client)
+    for _ in range(3):
+        demo.step()
+    assert np.array_equal(np.asarray(Image.open(shot).convert("RGB")), s.executor.last_frame)

@@ -24,6 +24,10 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
                    help="record the device's command stream and input for 'rainbow replay'")
     u.add_argument("--strict", action="store_true",
                    help="the relic's video memory (64K 16-bit words)")
+    u.add_argument("--demo", choices=("pads", "shelf"), default="pads",
+                   help="pads: the Appendix I transparency example and double-buffered pads "
+                   "(default); shelf: Appendix I's shelf unit of translucent components on "
+                   "four pads sliding apart (left button pauses)")
     u.add_argument("--tablet", metavar="SOURCE",
                    help="also feed a real tablet (hid:VID:PID, serial:PORT?protocol=P, or a "
                    "pyserial URL?protocol=P) to the Rainbow's tablet input")
@@ -63,7 +67,12 @@ def _target(args: argparse.Namespace, opts, tablet):  # noqa: ANN001, ANN202
 
     record = bool(args.record_stream) or opts.record is not None
     session = in_process(Rainbow(strict=args.strict), record=record)
-    demo = Demo(session.client)
+    if getattr(args, "demo", "pads") == "shelf":
+        from protocols.rainbow.shelf import ShelfDemo
+
+        demo = ShelfDemo(session.client)
+    else:
+        demo = Demo(session.client)
 
     def step() -> bool:
         if target.tablet is not None:
