@@ -31,6 +31,8 @@ import threading
 from dataclasses import dataclass, field
 from typing import Any
 
+from protocols.kernel_load import lean_cache_loads
+
 INTERRUPTED_STATUS = 130  # the shell's status for a process ended by SIGINT
 
 
@@ -62,6 +64,7 @@ def announce_compiles(label: str, seconds: float, *modules: str) -> None:
             _state.groups.setdefault(name, group)
         if not _state.listening:
             _listen()
+            lean_cache_loads()  # a warm run's first kernel call: ~0.2 s less (issue 18)
             _state.listening = True
 
 
