@@ -124,3 +124,15 @@ def test_real_cluster_matches_and_loses_no_frame_to_a_killed_worker(
     assert killed and workers[0].wait(timeout=10) == -signal.SIGKILL
     assert sorted(report.rendered) == [t.frame for t in slow]
     assert frame_bytes(tmp_path / "b", slow) == _in_process(slow, tmp_path / "ref")
+
+
+def test_film_frames_are_the_renderers_frames(reference: dict[int, bytes],
+                                              tmp_path: Path) -> None:
+    """The same bytes `snooker render --mode truecolour` writes (render_frame + write_png)."""
+    from apps.snooker.render.truecolour import RenderOptions, render_frame
+    from emulator.png import write_png
+
+    t = small_tasks()[3]
+    write_png(render_frame(break_scene(), t.view, RenderOptions(t.width, t.height)),
+              tmp_path / "f.png")
+    assert (tmp_path / "f.png").read_bytes() == reference[t.frame]
