@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from emulator.harness.loop import Plugin, RunOptions
-from emulator.png import frame_path, write_png
+from protocols.png import frame_path, write_png
 
 if TYPE_CHECKING:
     from emulator.harness.loop import Harness

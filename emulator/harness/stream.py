@@ -65,7 +65,7 @@ class PngGifWriter(Plugin):
         self.count = 0
 
     def on_frame(self, harness: Any, frame: np.ndarray) -> None:
-        from emulator.png import write_png
+        from protocols.png import write_png
 
         write_png(frame, self.out / f"{self.name}_{self.count:04d}.png")
         if self.count % GIF_EVERY == 0:

@@ -23,8 +23,8 @@ def run_demo(headless: bool = True, screenshot: str | None = None, scale: int = 
     from apps.ca.program.demo import demo_events
     from apps.ca.program.program import CAProgram, Options
     from apps.ca.program.script_events import parse, play
-    from emulator.png import write_png
     from emulator.rainbow.session import in_process
+    from protocols.png import write_png
 
     session = in_process()
     program = CAProgram(session.client, Options(rules="life", pattern="gosper_gun"))

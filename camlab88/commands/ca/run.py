@@ -68,7 +68,7 @@ def _run(args: argparse.Namespace) -> int:
     stats["origin"] = [CENTRE, CENTRE]
     if args.png:
         from apps.ca.program.picture import picture
-        from emulator.png import write_png
+        from protocols.png import write_png
 
         write_png(picture(engine, args.zoom, args.monochrome), args.png)
         print(f"wrote {args.png}", file=sys.stderr if args.json else sys.stdout)

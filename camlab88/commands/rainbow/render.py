@@ -41,8 +41,8 @@ def render(args: argparse.Namespace) -> int:
 
 
 def _write(args: argparse.Namespace, frame, text: str | None) -> int:  # noqa: ANN001
-    from emulator.png import write_png
     from protocols.atomicfile import write_atomic
+    from protocols.png import write_png
 
     try:
         write_png(frame, args.out)

@@ -28,9 +28,9 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
 
 
 def replay(args: argparse.Namespace) -> int:
-    from emulator.png import write_png
     from emulator.rainbow.device import Rainbow
     from emulator.rainbow.executor import Executor
+    from protocols.png import write_png
     from protocols.rainbow.recording import Recording, RecordingError
     from protocols.rainbow.recording import replay as replay_on
 

@@ -70,7 +70,7 @@ def _settings(baud: int):  # noqa: ANN202
 
 
 def _png(frame, path: Path) -> None:  # noqa: ANN001
-    from emulator.png import write_png
+    from protocols.png import write_png
 
     try:
         write_png(frame, path)
@@ -79,7 +79,7 @@ def _png(frame, path: Path) -> None:  # noqa: ANN001
 
 
 def _write_frames(term, got, settings, period: Fraction, directory: Path) -> int:  # noqa: ANN001
-    from emulator.png import frame_path
+    from protocols.png import frame_path
 
     count = 0
     for k, chunk in _periods(got, settings, period):
