@@ -20,18 +20,23 @@ def test_paint_session_then_every_frame(tmp_path, capsys) -> None:  # noqa: ANN0
     ring, wander = mid.chains[1].points[0], mid.chains[0].points[5]
     script = tmp_path / "s.txt"
     script.write_text(f"colour 3\nselect {ring[0]} {ring[1]}\nfill\n"
-                      f"colour 5\nselect {wander[0]} {wander[1]}\nfill\n")
+                      f"colour 5\nselect {wander[0]} {wander[1]}\nfill\nautopaint\n")
     assert main(["kas", "paint", str(seq_path), "--script", str(script), "--headless",
                  "--save", str(ops_path)]) == 0
     assert "saved" in capsys.readouterr().out
     ops = opsfile.load(ops_path)
     assert [(o.chains, o.colour) for o in ops.ops] == [((2,), 3), ((1,), 5)]
+    # auto-paint kept every other frame's seed points in the file (§3.3)
+    assert sorted(ops.frame_seeds) == [1, 2, 4, 5, 6]
+    ops_path.write_text(ops_path.read_text().split("frame 1 ops")[0] + "end\n")
+    again = tmp_path / "again.ops"
     out = tmp_path / "frames"
     gif = tmp_path / "w.gif"
     assert main(["kas", "paint", str(seq_path), "--ops", str(ops_path), "--frames", str(out),
-                 "--gif", str(gif), "--headless"]) == 0
+                 "--gif", str(gif), "--headless", "--save", str(again)]) == 0
     text = capsys.readouterr().out
     assert "6 frames painted" in text and gif.exists()
+    assert opsfile.load(again).frame_seeds == ops.frame_seeds  # recomputed the same
     names = sorted(p.name for p in out.iterdir())
     assert names == [f"frame_{i:05d}.png" for i in range(1, 7)]
     img = np.asarray(Image.open(out / "frame_00003.png"))

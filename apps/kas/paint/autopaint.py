@@ -13,13 +13,13 @@ segments for a region).  The Sigma orders are in ``orders``.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from apps.kas.model import AnimSequence, Drawing
 from apps.kas.paint import areas, regions, seeds, shape
-from apps.kas.paint.ops import Op, OpsFile
+from apps.kas.paint.ops import Op, OpsFile, Seeds, op_key
 
 
 @dataclass
@@ -68,12 +68,55 @@ class AutoPainter:
     def plan(self, n: int) -> FramePlan:
         frame = self.seq.frames[n - 1]
         steps, fails = [], []
-        for op in self.ops.ops_for(n):
+        for i, op in enumerate(self.ops.ops_for(n)):
             try:
-                steps.append(self._step(op, n, frame))
+                step = self._step(op, n, frame)
+                if i < len(self.ops.ops):
+                    step = self._use_recorded(step, n, i)
+                steps.append(step)
             except (shape.MissingChain, NoShape) as exc:
                 fails.append(Failure(n, op.line_no, str(exc)))
         return FramePlan(n, steps, fails)
+
+    def _use_recorded(self, step: Step, n: int, i: int) -> Step:
+        """The seeds the operations file holds for this frame replace the computed ones
+        (§3.3: seed points "on a frame by frame basis"), each checked to lie inside a closed
+        piece of this frame's boundary, so an edited or stale seed can never leak."""
+        op = step.op
+        if op.kind not in ("fill", "region"):
+            return step
+        rec = self.ops.recorded_seeds(n, i)
+        got, where = ((rec.seeds, rec.line_no) if rec is not None
+                      else (op.seeds, op.line_no) if n == self.ops.painted and op.seeds
+                      else (None, 0))
+        if got is None:
+            return step
+        f = seeds.faces(step.walls)
+        px = [tuple(int(v) for v in areas.to_px(np.array([p]))[0]) for p in got]
+        for (x, y), p in zip(px, got, strict=True):
+            k = f.label_at(x, y)
+            if k <= 0 or not f.bounded[k]:
+                raise NoShape(f"the seed ({p[0]:g}, {p[1]:g}) recorded at line {where} is not "
+                              f"inside a closed piece of the shape")
+        return replace(step, seeds=px)
+
+    def _sequence(self, op: Op) -> bool:
+        return any(op is o for o in self.ops.ops)
+
+    def record(self, plans: list[FramePlan]) -> None:
+        """Keep the seeds every sequence operation used in every frame (but the painted
+        one, whose seeds are on the operation's own line) in the operations file."""
+        # the painted frame last: it replaces operations, and the others match them by identity
+        for p in sorted(plans, key=lambda p: p.frame == self.ops.painted):
+            if p.frame == self.ops.painted:
+                self._record_painted(p)
+                continue
+            recs = [Seeds(op_key(s.op), tuple(areas.to_field(x, y) for x, y in s.seeds))
+                    for s in p.steps if s.op.kind in ("fill", "region") and self._sequence(s.op)]
+            if recs:
+                self.ops.frame_seeds[p.frame] = recs
+            else:
+                self.ops.frame_seeds.pop(p.frame, None)
 
     def plan_all(self) -> tuple[list[FramePlan], list[Failure]]:
         plans = [self.plan(n) for n in range(1, len(self.seq.frames) + 1)]
@@ -119,6 +162,14 @@ class AutoPainter:
         if not k:
             raise NoShape("the region was not found in this frame")
         return k
+
+
+    def _record_painted(self, p: FramePlan) -> None:
+        for s in p.steps:
+            if s.op.kind == "fill" and not s.op.seeds and self._sequence(s.op):
+                i = next(i for i, o in enumerate(self.ops.ops) if o is s.op)
+                self.ops.ops[i] = replace(s.op, seeds=tuple(areas.to_field(x, y)
+                                                            for x, y in s.seeds))
 
 
 class NoShape(ValueError):

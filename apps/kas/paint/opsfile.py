@@ -10,8 +10,10 @@
     ops 2                     # sequence operations, front-most last
     fill 1 2 colour 2 seeds -3.9 -1.2
     region 0.5 -1.0 colour 1
-    frame 5 ops 1             # frame 5's own operations, after the sequence's
+    frame 5 ops 1 seeds 2     # frame 5's own operations, then its seeds
     touch 0.3 0.4 colour 2
+    seeds fill 1 2 at -3.7 -1.1          # the seeds 'fill 1 2' used in frame 5
+    seeds region 0.5 -1.0 at 0.6 -0.9    # ... and the region's
     end
 
 Errors name the file, line and column; counts are declared before their records and the
@@ -26,7 +28,7 @@ import re
 from pathlib import Path
 
 from apps.kas.model import AnimSequence
-from apps.kas.paint.ops import Op, OpsFile
+from apps.kas.paint.ops import Op, OpsFile, Seeds, op_key
 from apps.kas.paint.palette import Palette
 from protocols.atomicfile import write_atomic
 
@@ -64,10 +66,18 @@ def ops_text(f: OpsFile) -> str:
     lines += [f"colour {i} {r} {g} {b}" for i, (r, g, b) in enumerate(f.palette.entries)]
     lines += [f"gap {_num(f.gap)}", f"painted {f.painted}", f"ops {len(f.ops)}"]
     lines += [op_text(o) for o in f.ops]
-    for n in sorted(f.frame_ops):
-        lines.append(f"frame {n} ops {len(f.frame_ops[n])}")
-        lines += [op_text(o) for o in f.frame_ops[n]]
+    for n in sorted(set(f.frame_ops) | set(f.frame_seeds)):
+        own, recs = f.frame_ops.get(n, []), f.frame_seeds.get(n, [])
+        lines.append(f"frame {n} ops {len(own)}" + (f" seeds {len(recs)}" if recs else ""))
+        lines += [op_text(o) for o in own] + [seeds_text(r) for r in recs]
     return "\n".join(lines + ["end"]) + "\n"
+
+
+def seeds_text(r: Seeds) -> str:
+    kind, what = r.key
+    head = " ".join(map(str, what)) if kind in ("fill", "line") else \
+        f"{_num(what[0])} {_num(what[1])}"  # type: ignore[index]
+    return " ".join([f"seeds {kind} {head} at"] + [_num(v) for p in r.seeds for v in p])
 
 
 def save(path: str | os.PathLike[str], f: OpsFile) -> None:
@@ -193,24 +203,58 @@ def parse(text: str, name: str = "<operations>") -> OpsFile:
         ln, words = r.next("'end'")
         if words[0][1] == "end" and len(words) == 1:
             break
-        frame, count = _frame_header(r, ln, words)
-        if frame in out.frame_ops:
+        frame, count, n_seeds = _frame_header(r, ln, words)
+        if f"frame {frame}" in out.at:
             raise r.error(ln, words[1][0], f"frame {frame} has a second section")
         out.at[f"frame {frame}"] = (ln, words[1][0])
-        out.frame_ops[frame] = [_op(r, *r.next("an operation"), len(pal), frame)
-                                for _ in range(count)]
+        if count:
+            out.frame_ops[frame] = [_op(r, *r.next("an operation"), len(pal), frame)
+                                    for _ in range(count)]
+        if n_seeds:
+            out.frame_seeds[frame] = [_seeds(r, *r.next("a 'seeds' line"))
+                                      for _ in range(n_seeds)]
     if r.i < len(r.lines):
         ln, words = r.lines[r.i]
         raise r.error(ln, words[0][0], "text after 'end'")
     return out
 
 
-def _frame_header(r: _Reader, ln: int, words: list[tuple[int, str]]) -> tuple[int, int]:
-    if len(words) != 4 or words[0][1] != "frame" or words[2][1] != "ops":
-        raise r.error(ln, words[0][0], f"expected 'frame N ops K' or 'end', found "
-                                       f"{words[0][1]!r}")
+def _frame_header(r: _Reader, ln: int,
+                  words: list[tuple[int, str]]) -> tuple[int, int, int]:
+    names = [w for _, w in words]
+    if (len(words) not in (4, 6) or names[0] != "frame" or names[2] != "ops"
+            or (len(words) == 6 and names[4] != "seeds")):
+        raise r.error(ln, words[0][0], f"expected 'frame N ops K [seeds M]' or 'end', found "
+                                       f"{' '.join(names)!r}")
+    n_seeds = r.int_at(ln, words[5], 0, 10**6, "seeds count") if len(words) == 6 else 0
     return (r.int_at(ln, words[1], 1, 10**6, "frame number"),
-            r.int_at(ln, words[3], 0, 10**6, "operation count"))
+            r.int_at(ln, words[3], 0, 10**6, "operation count"), n_seeds)
+
+
+def _seeds(r: _Reader, ln: int, words: list[tuple[int, str]]) -> Seeds:
+    """``seeds fill|line C ... at X Y ...`` or ``seeds region X Y at X Y ...``."""
+    names = [w for _, w in words]
+    if names[0] != "seeds" or len(words) < 3 or names[1] not in ("fill", "region"):
+        raise r.error(ln, words[0][0], "expected 'seeds fill C ... at X Y ...' or "
+                                       "'seeds region X Y at X Y ...'")
+    if "at" not in names:
+        raise r.error(ln, words[-1][0] + len(words[-1][1]), "missing 'at X Y ...'")
+    k = names.index("at")
+    head, tail = words[2:k], words[k + 1:]
+    if len(tail) % 2:
+        raise r.error(ln, tail[-1][0], "seed coordinates come in pairs (x y)")
+    if names[1] == "fill":
+        if not head:
+            raise r.error(ln, words[1][0], "'seeds fill' names at least one line-chain")
+        what: tuple[object, ...] = tuple(r.int_at(ln, w, 1, 10**6, "line-chain number")
+                                         for w in head)
+    else:
+        if len(head) != 2:
+            raise r.error(ln, words[1][0], "'seeds region X Y at ...' expected")
+        what = (r.float_at(ln, head[0], "x"), r.float_at(ln, head[1], "y"))
+    v = [r.float_at(ln, w, "seed coordinate") for w in tail]
+    return Seeds((names[1], what), tuple(zip(v[0::2], v[1::2], strict=True)), ln,
+                 words[1][0])
 
 
 def load(path: str | os.PathLike[str]) -> OpsFile:
@@ -230,6 +274,7 @@ def check(f: OpsFile, seq: AnimSequence) -> None:
     if not 1 <= f.painted <= n:
         raise OpsFileError(f.name, *f.at.get("painted", (0, 0)),
                            f"painted frame {f.painted} outside 1..{n}")
+    _check_seeds(f, n)
     for frame, ops in [(None, f.ops)] + sorted(f.frame_ops.items()):
         if frame is not None and not 1 <= frame <= n:
             raise OpsFileError(f.name, *f.at.get(f"frame {frame}", (0, 0)),
@@ -240,3 +285,19 @@ def check(f: OpsFile, seq: AnimSequence) -> None:
                 if c > have:
                     raise OpsFileError(f.name, op.line_no, col,
                                        f"line-chain {c} does not exist (at most {have})")
+
+
+def _check_seeds(f: OpsFile, n: int) -> None:
+    """Each frame's seed records belong to a sequence operation (as many as there are)."""
+    for frame, recs in sorted(f.frame_seeds.items()):
+        if not 1 <= frame <= n:
+            raise OpsFileError(f.name, *f.at.get(f"frame {frame}", (0, 0)),
+                               f"frame {frame} outside 1..{n} (the sequence's frames)")
+        for i, r in enumerate(recs):
+            have = sum(op_key(o) == r.key for o in f.ops)
+            mine = sum(q.key == r.key for q in recs[:i + 1])
+            if mine > have:
+                raise OpsFileError(f.name, r.line_no, r.col,
+                                   f"seeds for '{seeds_text(r).split(' at')[0][6:]}' but "
+                                   f"{'only ' + str(have) if have else 'no'} such sequence "
+                                   f"operation")

@@ -141,8 +141,11 @@ class PaintSession:
         return self._repaint()
 
     def autopaint(self) -> list[Failure]:
-        """Plan every frame from the operations so far; the frames that could not take one."""
-        return self.program.painter.plan_all()[1]
+        """Plan every frame from the operations so far and record each frame's seeds in the
+        operations file; the frames that could not take an operation."""
+        plans, fails = self.program.painter.plan_all()
+        self.program.painter.record(plans)
+        return fails
 
     def area_point(self, sx: int, sy: int) -> tuple[float, float] | None:
         """A screen pixel (device units, y up) -> field inches in the painting area, or

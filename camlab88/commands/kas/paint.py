@@ -28,8 +28,8 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
                            "frame written as DIR/frame_NNNNN.png (from 1).")
     p.add_argument("seq", help="the sequence (.kas; library names work)")
     p.add_argument("--ops", type=Path, help="operations file to start from / replay")
-    p.add_argument("--save", type=Path, help="write the operations file here at the end "
-                   "(default: --ops when interactive)")
+    p.add_argument("--save", type=Path, help="write the operations file here at the end, "
+                   "with the seed points each frame used (default: --ops when interactive)")
     p.add_argument("--script", type=Path, help="painting script (docs/kas.md)")
     p.add_argument("--replay", action="store_true", help="paint every frame and play it")
     p.add_argument("--gif", type=Path, help="the painted sequence as a GIF")
@@ -71,6 +71,7 @@ class ReplayTarget:
         self.line = Line(term, baud)
         self.line.send(program.setup())
         self.n, self.shown, self.failures, self.chars = 0, [], [], 0
+        self.plans: list = []
 
     def handle_events(self, events: list) -> None:
         """Replay takes no input."""
@@ -86,6 +87,7 @@ class ReplayTarget:
         self.line.send(data + self.program.show(buf.view))
         self.chars += len(data)
         self.failures += plan.failures
+        self.plans.append(plan)
         if self.keep:
             self.shown.append(self.term.frame())
         return True
@@ -119,6 +121,12 @@ def _replay(seq: Any, ops: Any, args: argparse.Namespace) -> int:
           f"{float(target.time()):.1f} s of line time at {args.baud} baud")
     for f in target.failures:
         print(f"  {f}")
+    if args.save is not None:
+        from apps.kas.paint import opsfile
+
+        target.program.painter.record(target.plans)
+        opsfile.save(args.save, ops)
+        print(f"saved {args.save}: the seed points of {len(ops.frame_seeds) + 1} frame(s)")
     return 0
 
 
