@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import json
 import os
+import time
 from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_COMPLETED, Future, wait
 from concurrent.futures.process import BrokenProcessPool
@@ -26,11 +27,13 @@ from protocols.atomicfile import write_atomic
 
 
 class Manifest:
-    """frame -> key of what its PNG shows, rewritten atomically after each frame (a frame
-    whose key did not reach the disk is simply rendered again)."""
+    """frame -> key of what its PNG shows, rewritten atomically at most every ``every_s``
+    seconds and at the end (a frame whose key did not reach the disk before a kill is
+    simply rendered again; one fsync a frame would cap the frame rate)."""
 
-    def __init__(self, path: Path) -> None:
-        self.path = path
+    def __init__(self, path: Path, every_s: float = 0.5) -> None:
+        self.path, self.every_s = path, every_s
+        self.dirty, self.saved_at = False, time.monotonic()
         try:
             raw = json.loads(path.read_text(encoding="utf-8"))
             self.keys = {int(k): str(v) for k, v in raw.get("frames", {}).items()}
@@ -42,9 +45,16 @@ class Manifest:
 
     def put(self, frame: int, key: str) -> None:
         self.keys[frame] = key
-        text = json.dumps({"frames": {str(k): v for k, v in sorted(self.keys.items())}},
-                          indent=0)
-        write_atomic(self.path, text + "\n")
+        self.dirty = True
+        if time.monotonic() - self.saved_at >= self.every_s:
+            self.save()
+
+    def save(self) -> None:
+        if self.dirty:
+            text = json.dumps({"frames": {str(k): v for k, v in sorted(self.keys.items())}},
+                              indent=0)
+            write_atomic(self.path, text + "\n")
+            self.dirty, self.saved_at = False, time.monotonic()
 
 Progress = Callable[[int, int], None]
 MANIFEST = "film.json"
@@ -82,7 +92,10 @@ def render_film(tasks: Sequence[FrameTask], out_dir: str | os.PathLike[str], bac
         (report.skipped.append(t.frame) if done else todo.append(t))
     run = _Run(backend, out, report, progress, attempts, len(tasks))
     run.written = lambda t: keys.put(t.frame, task_key(digest, t))
-    run.go(todo)
+    try:
+        run.go(todo)
+    finally:
+        keys.save()
     if report.failed:
         raise FilmError(f"frames {', '.join(map(str, report.failed))} failed after "
                         f"{attempts} attempts: {report.retries[-1][1]}")
