@@ -495,7 +495,7 @@ def resolve_settings(recorded: LogSettings, edges: str | None, seed: int | None,
         warnings.append(f"the script was recorded with seed {recorded.seed}; replaying with "
                         f"it, not the command line's {seed}")
     final_edges = recorded.edges or edges or "wrap"
-    final_seed = recorded.seed if recorded.seed is not None else (seed or 0)
+    final_seed = check_seed(recorded.seed if recorded.seed is not None else (seed or 0))
     return final_edges, final_seed, warnings
 
 

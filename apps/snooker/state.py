@@ -50,10 +50,6 @@ class BallState:
     def any_moving(self) -> bool:
         return bool(np.any(self.on_table & np.any(self.vel != 0.0, axis=1)))
 
-    def moving_balls(self) -> list[int]:
-        ev = self.effective_velocity()
-        return [i for i in range(N_BALLS) if self.on_table[i] and (ev[i] != 0.0).any()]
-
     def same_as(self, other: BallState) -> bool:
         return self.t == other.t and all(
             np.array_equal(getattr(self, n), getattr(other, n)) for n in _ARRAYS

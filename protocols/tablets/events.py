@@ -69,10 +69,6 @@ class TabletModel:
         without physical units)."""
         return self.max_x / self.lines_per_inch if self.lines_per_inch > 0 else 0.0
 
-    @property
-    def height_inches(self) -> float:
-        return self.max_y / self.lines_per_inch if self.lines_per_inch > 0 else 0.0
-
 
 @dataclass(frozen=True)
 class DeviceReply:

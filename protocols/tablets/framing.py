@@ -18,9 +18,6 @@ class ParseStats:
     parity_errors: int = 0
     replies: int = 0
 
-    def as_dict(self) -> dict[str, int]:
-        return dict(self.__dict__)
-
 
 class SyncFramer:
     """Collects fixed-length packets whose first byte has ``sync_mask`` bits == ``sync_value``.
