@@ -3,6 +3,7 @@
     python benchmarks/bench_startup.py                 # every command, 5 warm runs each
     python benchmarks/bench_startup.py --runs 7 --cold-runs 2 --only snooker
     python benchmarks/bench_startup.py --demo          # also `camlab88 demo --headless`
+    python benchmarks/bench_startup.py --compare       # warm: lean cache loads vs numba's own
 
 Each command runs as its own process, as a user types it, in a scratch directory with the
 shipped examples/. *Cold* gives every run an empty numba cache (NUMBA_CACHE_DIR), so every
@@ -10,6 +11,9 @@ kernel the command needs is compiled, as on the first run after install; *warm* 
 one cache filled by an uncounted first run. Wall time per run (perf_counter around the
 process) and its CPU time, min / median; the load average is printed before and after,
 because on a shared 2-core machine the figures move with it (docs/perf/startup.md).
+``--compare`` times each warm command alternately with numba's own cache load (its full
+context refresh, ``CAMLAB88_NUMBA_FULL_REFRESH=1``) and with protocols.kernel_load's lean
+one, so both see the same load.
 """
 
 from __future__ import annotations
@@ -52,9 +56,10 @@ def load() -> str:
     return " ".join(f"{x:.2f}" for x in os.getloadavg())
 
 
-def run_once(argv: list[str], cwd: Path, cache: Path) -> tuple[float, float]:
+def run_once(argv: list[str], cwd: Path, cache: Path,
+             **extra: str) -> tuple[float, float]:
     """(wall, cpu) seconds of one process; CPU time (user + sys) moves less with the load."""
-    env = dict(os.environ, NUMBA_CACHE_DIR=str(cache), SDL_VIDEODRIVER="dummy")
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(cache), SDL_VIDEODRIVER="dummy", **extra)
     env.pop("DISPLAY", None)
     # as on a user's machine: Python keeps compiled modules (this sandbox sets
     # PYTHONDONTWRITEBYTECODE, which recompiles every module of ours in every process)
@@ -82,6 +87,22 @@ def measure(argv: list[str], work: Path, runs: int,
     return cold, warm
 
 
+def compare(commands: dict[str, list[str]], work: Path, runs: int) -> None:
+    """Warm runs, alternately numba's full refresh and the lean load (same load for both)."""
+    print("| command | full refresh: wall s | CPU s | lean load: wall s | CPU s | load |")
+    print("|---|---|---|---|---|---|")
+    for name, cmd in commands.items():
+        cache = work / "warm-cache"
+        run_once(cmd, work, cache)  # fills the cache; not counted
+        before = load()
+        full, lean = [], []
+        for _ in range(runs):
+            full.append(run_once(cmd, work, cache, CAMLAB88_NUMBA_FULL_REFRESH="1"))
+            lean.append(run_once(cmd, work, cache))
+        print(f"| `{name}` | {fmt(full, 0)} | {fmt(full, 1)} | {fmt(lean, 0)} "
+              f"| {fmt(lean, 1)} | {before} -> {load()} |", flush=True)
+
+
 def fmt(runs: list[tuple[float, float]], which: int) -> str:
     xs = [r[which] for r in runs]
     return f"{min(xs):.2f} / {statistics.median(xs):.2f}" if xs else "-"
@@ -93,18 +114,23 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--cold-runs", type=int, default=2, help="cold runs per command (default 2)")
     ap.add_argument("--only", help="only commands whose name contains this")
     ap.add_argument("--demo", action="store_true", help="also time `demo --headless`")
+    ap.add_argument("--compare", action="store_true",
+                    help="warm only: numba's full refresh against the lean cache load")
     args = ap.parse_args(argv)
     commands = {**COMMANDS, **(DEMO if args.demo else {})}
     if args.only:
         commands = {k: v for k, v in commands.items() if args.only in k}
     print(f"# bench_startup: {platform.machine()} {platform.python_version()}, "
           f"{os.cpu_count()} CPUs, {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}")
-    print("| command | cold wall s | cold CPU s | warm wall s | warm CPU s "
-          "| load before -> after |")
-    print("|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory(prefix="camlab88-startup-") as tmp:
         work = Path(tmp)
         shutil.copytree(ROOT / "examples", work / "examples")
+        if args.compare:
+            compare(commands, work, args.runs)
+            return 0
+        print("| command | cold wall s | cold CPU s | warm wall s | warm CPU s "
+              "| load before -> after |")
+        print("|---|---|---|---|---|---|")
         for name, cmd in commands.items():
             before = load()
             cold, warm = measure(cmd, work, args.runs, args.cold_runs)
