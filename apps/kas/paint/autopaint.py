@@ -59,6 +59,7 @@ class AutoPainter:
         self.seq, self.ops = seq, ops
         self._arr: dict[int, regions.Arrangement] = {}
         self._sig: dict[int, tuple[set[tuple[int, int]], int]] = {}
+        self._shapes: dict[tuple[int, tuple[int, ...]], tuple[np.ndarray, list]] = {}
 
     def arrangement(self, n: int) -> regions.Arrangement:
         if n not in self._arr:
@@ -124,8 +125,7 @@ class AutoPainter:
 
     def _step(self, op: Op, n: int, frame: Drawing) -> Step:
         if op.kind == "fill":
-            poly = areas.dedup(areas.to_px(shape.closed_shape(frame, op.chains)))
-            found = seeds.shape_seeds(poly)
+            poly, found = self._shape(n, frame, op.chains)
             if not found:
                 raise NoShape("the joined line-chains enclose no area")
             return Step(op, op.colour, [poly], found, [poly], clear=op.colour == 0)
@@ -136,6 +136,18 @@ class AutoPainter:
         k = self._region(op, n, arr)
         return Step(op, op.colour, arr.walls + arr.gaps, [arr.faces.seed(k)], list(arr.gaps),
                     clear=True)
+
+    def _shape(self, n: int, frame: Drawing,
+               chains: tuple[int, ...]) -> tuple[np.ndarray, list[tuple[int, int]]]:
+        """The closed shape of ``chains`` in frame ``n`` and its seeds, once per frame (an
+        animator often fills the same chains again, in another colour or order)."""
+        key = (n, chains)
+        if key not in self._shapes:
+            poly = areas.dedup(areas.to_px(shape.closed_shape(frame, chains)))
+            self._shapes = {k: v for k, v in self._shapes.items() if k[0] == n}
+            self._shapes[key] = poly, seeds.shape_seeds(poly)
+        poly, found = self._shapes[key]
+        return poly, list(found)
 
     def _region(self, op: Op, n: int, arr: regions.Arrangement) -> int:
         assert op.at is not None
