@@ -22,6 +22,7 @@ lifelib is for this benchmark only, not a dependency of camlab88:
 from __future__ import annotations
 
 import os
+import resource
 import statistics
 import subprocess
 import sys
@@ -89,17 +90,25 @@ def fmt(xs: list[float]) -> str:
     return f"{min(xs) * 1e3:8.1f} / {statistics.median(xs) * 1e3:8.1f} ms"
 
 
+def children_cpu() -> float:
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
 def whole_processes() -> None:
-    """Three ``ca run`` processes, one after another, as a user would type them."""
+    """Three ``ca run`` processes, one after another, as a user would type them; and the
+    same three with no generations (start-up, reading, statistics: the floor)."""
     exe = str(Path(sys.executable).with_name("camlab88"))
-    for _ in range(3):
-        start = time.perf_counter()
-        for _name, path, gens in CASES[:3]:
-            subprocess.run([exe, "ca", "run", "--rules", "life", "--pattern", path,
-                            "--generations", str(gens), "--engine", "hashlife"], check=True,
-                           stdout=subprocess.DEVNULL)
-        print(f"  three ca run processes together: {time.perf_counter() - start:.2f} s "
-              f"wall   {load()}")
+    for label, engine, zero in (("jumps", "hashlife", False), ("start-up only", "direct", True)):
+        for _ in range(3):
+            start, cpu = time.perf_counter(), children_cpu()
+            for _name, path, gens in CASES[:3]:
+                subprocess.run([exe, "ca", "run", "--rules", "life", "--pattern", path,
+                                "--generations", "0" if zero else str(gens), "--engine",
+                                engine], check=True, stdout=subprocess.DEVNULL,
+                               stderr=subprocess.DEVNULL)
+            print(f"  three ca run processes ({label}): {time.perf_counter() - start:.2f} s "
+                  f"wall, {children_cpu() - cpu:.2f} s CPU   {load()}")
 
 
 def main() -> None:

@@ -18,6 +18,9 @@ MAIN_LEFT = ["Advance area", "Alter display", "Change rules", "Clear area", "Sta
 MAIN_RIGHT = ["Centralise viewport", "Finish", "Step mode", "Auto mode", "Zoom 16", "Zoom 8",
               "Zoom 4", "Zoom 2", "Zoom 1", "Zoom subpixel"]
 MAIN_ITEMS = MAIN_LEFT + MAIN_RIGHT
+# Beyond the thesis (issue 17): a third column for HashLife's jumps, shown when the program
+# asks for it (MainMenu(..., jumps=True)); the twenty items keep their places.
+JUMP_ITEMS = ["Go to generation", "Fast forward"]
 EDIT_ITEMS = {"centre": "Leave editing", "up": "Step up", "down": "Step down",
               "left": "Set to value", "right": "Pick up colour"}
 EDIT_MODES = {"Step up": "step_up", "Step down": "step_down", "Set to value": "set_value",
@@ -31,18 +34,18 @@ def _cell(i: int) -> tuple[int, int]:
     return (i // 10) * COL_W, (i % 10) * ROW_H
 
 
-def main_menu_origin(cx: int, cy: int) -> tuple[int, int]:
+def main_menu_origin(cx: int, cy: int, columns: int = 2) -> tuple[int, int]:
     """Where the menu opens for a middle press at (cx, cy): 'Do nothing' under the cursor,
     kept on the screen."""
     fx, fy = _cell(MAIN_ITEMS.index("Do nothing"))
-    return (max(0, min(cx - fx - COL_W // 2, SCREEN_W - 2 * COL_W)),
+    return (max(0, min(cx - fx - COL_W // 2, SCREEN_W - columns * COL_W)),
             max(0, min(cy - fy - ROW_H // 2, SCREEN_H - 10 * ROW_H)))
 
 
-def main_item_point(item: str, cx: int, cy: int) -> tuple[int, int]:
+def main_item_point(item: str, cx: int, cy: int, jumps: bool = False) -> tuple[int, int]:
     """The centre of ``item`` in a menu opened at (cx, cy) (for scripted input)."""
-    x, y = main_menu_origin(cx, cy)
-    ix, iy = _cell(MAIN_ITEMS.index(item))
+    x, y = main_menu_origin(cx, cy, 3 if jumps else 2)
+    ix, iy = _cell((MAIN_ITEMS + JUMP_ITEMS).index(item))
     return x + ix + COL_W // 2, y + iy + ROW_H // 2
 
 
@@ -50,20 +53,25 @@ class MainMenu:
     """Two columns of ten items in one 5-bit pad (values: border, ink, one per item)."""
 
     def __init__(self, client: RainbowClient, lut_page: int = 15, colour: str = "#f8c890",
-                 priority: int = 100) -> None:
+                 priority: int = 100, jumps: bool = False) -> None:
         self.client = client
+        self.items = MAIN_ITEMS + (JUMP_ITEMS if jumps else [])
+        self.columns = 3 if jumps else 2
         self.base = lut_page * 256
         self.colour = colour
-        self.highlights = [pastel(i, len(MAIN_ITEMS)) for i in range(len(MAIN_ITEMS))]
-        self.width, self.height = 2 * COL_W, 10 * ROW_H
+        self.highlights = [pastel(i, len(self.items)) for i in range(len(self.items))]
+        self.width, self.height = self.columns * COL_W, 10 * ROW_H
         self.pad = client.create_pad(self.width, self.height, 5, 0, lut_page)
         self.arc = client.map(SCREEN, self.pad, 0, 0, priority, on=False)
         client.set_lut(self.base + BORDER, ["#ffffff"])
         client.set_lut(self.base + INK, ["#000000"])
-        client.set_lut(self.base + 2, [colour] * len(MAIN_ITEMS))
+        client.set_lut(self.base + 2, [colour] * (len(self.items) + 1))
         self.marked = ""
-        for i in range(len(MAIN_ITEMS)):
+        for i in range(len(self.items)):
             self._draw_item(i)
+        for i in range(len(self.items), 10 * self.columns):  # the third column's rest
+            x, y = _cell(i)
+            client.rect(self.pad, x, y, COL_W, ROW_H, 2 + len(self.items))
         self.first = MAIN_ITEMS.index("Do nothing")
         self.highlighted: int | None = None
         self.x = self.y = 0
@@ -74,16 +82,17 @@ class MainMenu:
         c = self.client
         c.rect(self.pad, x, y, COL_W, ROW_H, BORDER)
         c.rect(self.pad, x + 2, y + 2, COL_W - 4, ROW_H - 4, 2 + i)
-        c.text(self.pad, x + 8, y + 4, MAIN_ITEMS[i], INK)
-        if MAIN_ITEMS[i] == self.marked:
+        c.text(self.pad, x + 8, y + 4, self.items[i], INK)
+        if self.items[i] == self.marked:
             c.text(self.pad, x + COL_W - 14, y + 4, "<", INK)
 
     def mark(self, item: str) -> None:
-        """Show which of Step mode / Auto mode is active (a marker right of the item)."""
+        """Show which of Step mode / Auto mode / Fast forward is active (a marker right of
+        the item)."""
         old, self.marked = self.marked, item
         for name in (old, item):
-            if name in MAIN_ITEMS:
-                self._draw_item(MAIN_ITEMS.index(name))
+            if name in self.items:
+                self._draw_item(self.items.index(name))
 
     def _highlight(self, i: int | None) -> None:
         if i == self.highlighted:
@@ -95,7 +104,7 @@ class MainMenu:
         self.highlighted = i
 
     def open(self, cx: int, cy: int) -> None:
-        self.x, self.y = main_menu_origin(cx, cy)
+        self.x, self.y = main_menu_origin(cx, cy, self.columns)
         self.client.move(self.arc, self.x, self.y)
         self._highlight(self.first)
         self.client.set_on(self.arc, True)
@@ -104,15 +113,16 @@ class MainMenu:
     def track(self, cx: int, cy: int) -> str | None:
         dx, dy = cx - self.x, cy - self.y
         inside = 0 <= dx < self.width and 0 <= dy < self.height
-        self._highlight((dx // COL_W) * 10 + dy // ROW_H if inside else None)
-        return None if self.highlighted is None else MAIN_ITEMS[self.highlighted]
+        i = (dx // COL_W) * 10 + dy // ROW_H if inside else None
+        self._highlight(i if i is not None and i < len(self.items) else None)
+        return None if self.highlighted is None else self.items[self.highlighted]
 
     def close(self) -> str | None:
         self.client.set_on(self.arc, False)
         chosen = self.highlighted
         self._highlight(None)
         self.is_open = False
-        return None if chosen is None else MAIN_ITEMS[chosen]
+        return None if chosen is None else self.items[chosen]
 
 
 def edit_menu(client: RainbowClient) -> CrossMenu:

@@ -4,13 +4,27 @@ Section 7.3.2: "the program does not wait for this signal before performing the 
 and drawing of the next generation, only before displaying it". With a display frequency
 of N the look-ahead is N generations; checkpoints that fall inside it are kept and written
 only when that state is shown (an edit may still discard it).
+
+The look-ahead jumps (issue 17): the engine's "auto" algorithm takes HashLife for long
+stretches of deterministic rules, from checkpoint to checkpoint (a checkpoint after a jump
+equals one after stepping).  Beyond the thesis: "Go to generation N" (a look-ahead of
+N minus the shown generation, stopping where the script intervenes) and "Fast forward" (the
+display frequency doubles with every generation shown).
 """
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from apps.ca import log
 from apps.ca.engine import Engine
+from apps.ca.program.commands import ERROR, Ask, Dialogue
 from apps.ca.session import Session
+
+if TYPE_CHECKING:
+    from apps.ca.program.program import CAProgram
+
+FAST_FORWARD_MAX = 1 << 24  # generations per shown frame at most while fast-forwarding
 
 
 def ahead(session: Session, frequency: int, next_script: int | None) -> tuple[Engine,
@@ -18,16 +32,60 @@ def ahead(session: Session, frequency: int, next_script: int | None) -> tuple[En
     """A copy of the shown state stepped ``frequency`` generations (stopping where the
     script intervenes next), and copies of the states due for a checkpoint on the way."""
     engine = session.engine.copy()
+    engine.algorithm = "auto"  # HashLife where it applies and pays
     steps = frequency
     if next_script is not None:
         steps = max(1, min(steps, next_script - engine.generation))
     every = session.checkpoint_every if session.writer is not None else 0
+    target = engine.generation + steps
     due = []
-    for i in range(steps):
-        engine.step()
-        if every and engine.generation % every == 0 and i < steps - 1:
+    while engine.generation < target:
+        n = target - engine.generation
+        if every:
+            n = min(n, every - engine.generation % every)  # stop at each checkpoint
+        engine.step(n)
+        if every and engine.generation % every == 0 and engine.generation < target:
             due.append(engine.copy())
     return engine, due
+
+
+def next_frequency(frequency: int, fast_forward: bool) -> int:
+    """The display frequency after a generation is shown: doubled while fast-forwarding."""
+    return min(2 * frequency, FAST_FORWARD_MAX) if fast_forward else frequency
+
+
+def go_to_generation(p: CAProgram) -> Dialogue:
+    """Ask for N and jump there, showing the state at N (checkpoints on the way written,
+    the script's interventions applied where they fall)."""
+    now = p.session.generation
+    text = yield Ask("text", "Go to generation N =", default=str(now + 1000))
+    if text is None:
+        return
+    try:
+        target = int(text)
+        if target < now:
+            raise ValueError
+    except ValueError:
+        p.say(f"The generation must be a whole number from {now} on, not {text!r} (an "
+              "earlier generation: replay the log with 'camlab88 ca replay')", ERROR)
+        return
+    while p.session.generation < target:
+        p.pending, p.pending_checkpoints = ahead(p.session, target - p.session.generation,
+                                                 p.script.next_generation)
+        p.display.back.stale = True  # drawn by commit, once
+        p.commit()
+    p.say(f"Generation {target}")
+
+
+def fast_forward(p: CAProgram) -> Dialogue:
+    """Run automatically, doubling the display frequency with every generation shown
+    (Step mode, Auto mode or a new display frequency end it)."""
+    p.auto = True
+    p.fast_forward = True
+    p.main_menu.mark("Fast forward")
+    p.say("Fast forward: each frame jumps twice as far as the last")
+    return
+    yield  # a dialogue with no questions
 
 
 def write_checkpoints(session: Session, passed: list[Engine]) -> None:
