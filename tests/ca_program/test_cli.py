@@ -8,9 +8,11 @@ from pathlib import Path
 import numpy as np
 from PIL import Image
 
-from apps.ca.program.demo import choose, leave_editing
+from apps.ca.program.demo import choose, demo_events, leave_editing
+from apps.ca.program.program import CAProgram, Options
+from apps.ca.program.script_events import parse, play
 from camlab88.cli import main
-from camlab88.commands.ca import run_demo
+from emulator.rainbow.session import in_process
 
 
 def _json_last(capsys) -> dict:
@@ -57,7 +59,11 @@ def test_program_reports_bad_files(tmp_path: Path, capsys) -> None:
     assert "no rules file or library entry named 'nosuch'" in capsys.readouterr().err
 
 
-def test_demo_plays_sixty_generations_of_the_gun(tmp_path: Path) -> None:
-    stats = run_demo(headless=True, screenshot=str(tmp_path / "demo.png"))
+def test_demo_plays_sixty_generations_of_the_gun() -> None:
+    session = in_process()
+    program = CAProgram(session.client, Options(rules="life", pattern="gosper_gun"))
+    play(parse(demo_events(60), "<ca demo>"), session.inject, program.frame,
+         lambda: program.finished)
+    stats = program.session.statistics()
     assert stats["generation"] == 60 and stats["population"] == 46  # the gun and two gliders
     assert stats["viewport"][2] == "8"

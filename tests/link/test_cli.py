@@ -66,3 +66,17 @@ def test_echo_device_over_tcp() -> None:
             stop.set()
             worker.join(timeout=10)
     assert result == [4]
+
+
+def test_link_dump_of_a_session_recording_says_which_flag_makes_which(tmp_path: Path,
+                                                                      capsys) -> None:
+    from camlab88.cli import main as camlab88_main
+
+    session = Path(__file__).parents[1] / "data" / "sessions" / "sigma_run.session"
+    assert camlab88_main(["link", "dump", str(session)]) == 1
+    err = capsys.readouterr().err
+    assert "is a session recording, not a link recording" in err
+    assert "--record-line FILE` writes the link recording" in err
+    rec = tmp_path / "a.rec"
+    make_recording(rec)  # a real link recording still dumps through the command
+    assert camlab88_main(["link", "dump", str(rec)]) == 0

@@ -66,7 +66,7 @@ def test_run_headless_screenshot(tmp_path) -> None:
 
 
 def test_tablet_reports_become_rainbow_tablet_events() -> None:
-    from camlab88.commands.rainbow import tablet_event
+    from emulator.rainbow.host_input import tablet_event
     from protocols.rainbow.events import TabletEvent
     from protocols.tablets.events import TabletEvent as Report
 
@@ -157,8 +157,8 @@ def test_run_record_then_replay_reproduces_the_frame(tmp_path, capsys) -> None:
 
 
 def test_host_input_becomes_rainbow_events() -> None:
-    from camlab88.commands.rainbow import host_to_rainbow_event as convert
     from emulator.host_input import KeyDown, PointerButton, PointerMove, Quit
+    from emulator.rainbow.host_input import host_to_rainbow_event as convert
     from protocols.rainbow.events import KeyEvent, MouseEvent
 
     held = [0]

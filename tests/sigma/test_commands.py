@@ -131,7 +131,7 @@ def test_pty_end_to_end_with_pyserial(tmp_path: Path) -> None:
 
 
 def test_demo_headless_writes_frames_and_gif(tmp_path: Path) -> None:
-    from camlab88.commands.demo import sigma_demo_stream
+    from protocols.sigma.demo import sigma_demo_stream
 
     stream = sigma_demo_stream()
     t = Terminal("t5684")

@@ -9,36 +9,28 @@ from pathlib import Path
 import numpy as np
 from PIL import Image
 
-from camlab88.commands.sigma import _window_input
-from emulator.host_input import KeyDown, PointerButton, PointerMove, Quit
+from emulator.host_input import KeyDown, PointerButton, PointerMove
 from emulator.sigma import Terminal
+from emulator.sigma.host_input import to_terminal
 from protocols.sigma import Encoder
 
 
-class FakeWindow:
-    def __init__(self, events: list) -> None:  # noqa: ANN001
-        self.events = events
-
-    def poll(self) -> list:
-        out, self.events = self.events, []
-        return out
+def _feed(events: list, term: Terminal) -> None:  # noqa: ANN001
+    for ev in events:
+        to_terminal(ev, term)
 
 
 def test_window_input_goes_to_keyboard_cursor_and_tablet() -> None:
     t = Terminal("t5684")
     sent: list[bytes] = []
     t.on_output = sent.append
-    assert _window_input(FakeWindow([KeyDown("a", "a", frozenset()),
-                                     KeyDown("return", "", frozenset()),
-                                     KeyDown("right", "", frozenset({"shift"})),
-                                     KeyDown("up", "", frozenset())]), t)
+    _feed([KeyDown("a", "a", frozenset()), KeyDown("return", "", frozenset()),
+           KeyDown("right", "", frozenset({"shift"})), KeyDown("up", "", frozenset())], t)
     assert sent == [b"a", b"\r"]
     assert (t.reg.cursor_x, t.reg.cursor_y) == (8, 1)
     t.feed(b"\r+-*/GM3HF")
-    assert _window_input(FakeWindow([PointerMove(100, 11, frozenset()),
-                                     PointerButton(100, 11, 1, True)]), t)
+    _feed([PointerMove(100, 11, frozenset()), PointerButton(100, 11, 1, True)], t)
     assert sent[-1] == b"1100,500\r"  # window row 11 is device y 500
-    assert not _window_input(FakeWindow([Quit()]), t)
 
 
 def test_run_with_a_window_takes_a_screenshot(tmp_path: Path) -> None:

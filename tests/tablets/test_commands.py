@@ -69,7 +69,7 @@ def test_tablet_input_emulated_goes_through_the_protocol(tmp_path, monkeypatch) 
     import time
 
     monkeypatch.setenv("CAMLAB88_CONFIG_DIR", str(tmp_path))  # no stray user calibration
-    from camlab88.commands.tablet import TabletInput
+    from emulator.tablet.pointer_input import TabletInput
     from protocols.tablets.input_layer import MouseSample
 
     notes: list[str] = []
@@ -93,7 +93,7 @@ def test_tablet_input_emulated_goes_through_the_protocol(tmp_path, monkeypatch) 
 
 def test_tablet_input_without_device_uses_mouse(tmp_path, monkeypatch) -> None:
     monkeypatch.setenv("CAMLAB88_CONFIG_DIR", str(tmp_path))
-    from camlab88.commands.tablet import TabletInput
+    from emulator.tablet.pointer_input import TabletInput
     from protocols.tablets.input_layer import MouseSample
 
     notes: list[str] = []
@@ -108,7 +108,7 @@ def test_tablet_input_passes_protocol_options_through(source, tmp_path, monkeypa
     import time
 
     monkeypatch.setenv("CAMLAB88_CONFIG_DIR", str(tmp_path))
-    from camlab88.commands.tablet import TabletInput
+    from emulator.tablet.pointer_input import TabletInput
     from protocols.tablets.input_layer import MouseSample
 
     tin = TabletInput(source)

@@ -10,22 +10,12 @@ from __future__ import annotations
 import argparse
 import sys
 from pathlib import Path
-from typing import Any
 
 from camlab88.commands.demo.acts import ACTS, FPS, Act
 
 __all__ = ["ACTS", "Act", "register"]
 COMMAND = "camlab88 demo"
 KEYS = "Space: next act; Esc or close: quit"
-
-
-def __getattr__(name: str) -> Any:
-    """The demo's Sigma streams under their old names (now protocols.sigma.demo)."""
-    if name in ("sigma_demo_stream", "sigma_picture_stream"):
-        from protocols.sigma import demo
-
-        return getattr(demo, name)
-    raise AttributeError(name)
 
 
 def _description() -> str:

@@ -3,22 +3,12 @@
 from __future__ import annotations
 
 import argparse
-from typing import Any
 
 from camlab88.areas import register_area
 
 HELP = "the Rainbow workstation emulator"
 ACTIONS = ("render", "run", "serve", "replay")
 __all__ = ["ACTIONS", "register"]
-
-
-def __getattr__(name: str) -> Any:
-    """The host-input adapters under their old names (now emulator.rainbow.host_input)."""
-    if name in ("host_to_rainbow_event", "tablet_event"):
-        from emulator.rainbow import host_input
-
-        return getattr(host_input, name)
-    raise AttributeError(name)
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]

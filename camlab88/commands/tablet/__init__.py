@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-from typing import Any
 
 from camlab88.areas import register_area
 
@@ -14,15 +13,6 @@ SOURCE_HELP = (
     "emulated:P[?drive=demo]; P = wacom4, summa-mm, bitpad1, bitpad2, calcomp"
 )
 __all__ = ["ACTIONS", "SOURCE_HELP", "register"]
-
-
-def __getattr__(name: str) -> Any:
-    """``TabletInput`` under its old name (now emulator.tablet.pointer_input)."""
-    if name == "TabletInput":
-        from emulator.tablet.pointer_input import TabletInput
-
-        return TabletInput
-    raise AttributeError(name)
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
