@@ -38,7 +38,7 @@ def test_kas_act_is_the_kas_session_played_over_the_line(tmp_path: Path) -> None
 
 def test_acts_are_listed_in_help() -> None:
     names = [a.name for a in demo.ACTS]
-    assert names == ["sigma", "kas", "snooker", "ca"]
+    assert names == ["sigma", "kas", "paint", "snooker", "snooker_camera", "ca", "shelf"]
     assert len(set(names)) == len(names)
 
 
@@ -60,3 +60,29 @@ def test_snooker_act_replays_a_break_on_the_rainbow(tmp_path: Path) -> None:
     first, last = _png(pngs[0]), _png(pngs[-1])
     assert first.shape == (576, 768, 3)
     assert not np.array_equal(first, last)  # the balls have moved
+
+
+def test_paint_act_paints_the_walk_on_the_t5688(tmp_path: Path) -> None:
+    assert main(["demo", "--headless", "--only", "paint", "--out", str(tmp_path)]) == 0
+    pngs = sorted(tmp_path.glob("paint_*.png"))
+    assert len(pngs) > 20
+    last = _png(pngs[-1])
+    assert last.shape == (512, 768, 3)
+    # filled areas: many more colours than the four outline colours and the background
+    assert len(np.unique(last.reshape(-1, 3), axis=0)) >= 6
+
+
+def test_camera_act_plays_the_example_script_in_the_visualiser(tmp_path: Path) -> None:
+    assert main(["demo", "--headless", "--only", "snooker_camera", "--out", str(tmp_path)]) == 0
+    pngs = sorted(tmp_path.glob("snooker_camera_*.png"))
+    assert len(pngs) >= 50
+    first, last = _png(pngs[0]), _png(pngs[-1])
+    assert first.shape == (576, 768, 3)
+    assert not np.array_equal(first, last)  # the view and the balls move
+
+
+def test_shelf_act_slides_the_unit_apart(tmp_path: Path) -> None:
+    assert main(["demo", "--headless", "--only", "shelf", "--out", str(tmp_path)]) == 0
+    pngs = sorted(tmp_path.glob("shelf_*.png"))
+    assert len(pngs) == 100
+    assert not np.array_equal(_png(pngs[0]), _png(pngs[50]))

@@ -34,9 +34,9 @@ def test_pipeline(tmp_path, capsys):
 
 
 def test_schedule_command(capsys):
-    assert main(["kas", "schedule", "48,48,96,10,10,10"]) == 0
+    assert main(["kas", "schedule", ",".join(["300"] * 10)]) == 0
     out = capsys.readouterr().out
-    assert "4 shown, 2 dropped" in out and "dropped: 3 4" in out
+    assert "3 shown, 7 dropped" in out and "dropped: 2 3 4 5 6 8 9" in out
 
 
 def test_errors_name_file_and_line(tmp_path, capsys):

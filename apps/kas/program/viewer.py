@@ -231,7 +231,8 @@ class LineTest:
         t0 = send(setup(self.enc, self.plan, self.how))
         rep.start = float(t0)
         # the host program as a small state machine on the virtual clock
-        state = {"at": t0, "step": "choose", "last": -1, "buffer": 0, "j": 0, "swap": b""}
+        state = {"at": t0, "step": "choose", "last": -1, "buffer": 0, "j": 0, "swap": b"",
+                 "origin": t0}
 
         def host() -> None:
             now = clock.exact
@@ -239,7 +240,7 @@ class LineTest:
                 if mode == "every":
                     j = state["last"] + 1
                 else:
-                    due = math.floor((now - t0) * rate + Fraction(1, 10**9))
+                    due = math.floor((now - state["origin"]) * rate + Fraction(1, 10**9))
                     j = max(due, state["last"] + 1)
                 if j >= n:
                     rep.dropped.extend(range(state["last"] + 1, n))
@@ -250,10 +251,12 @@ class LineTest:
                 drawn = send(draw)
                 state.update(j=j, swap=sw, step="swap")
                 # the swap arrives when the frame is drawn, never before the frame is due
-                due_t = t0 + j / rate if mode == "realtime" else drawn
+                due_t = state["origin"] + j / rate if mode == "realtime" else drawn
                 state["at"] = max(drawn, due_t - len(sw) * ct)
             elif state["step"] == "swap":
                 shown = send(state["swap"])
+                if state["last"] < 0:  # §3.1.4: time runs from the first frame displayed
+                    state["origin"] = shown
                 rep.shown.append((state["j"], float(shown - t0)))
                 state.update(last=state["j"], buffer=1 - state["buffer"], step="choose",
                              at=shown)

@@ -35,11 +35,20 @@ ACTS: tuple[Act, ...] = (
     Act("kas", "KAS keyframe editor and line test on the T5684", (768, 512),
         f"{_HERE}:kas_frames", "KAS's editor drawing a stroke, then a line test of 'a line "
         "taking a walk'"),
+    Act("paint", "KAS painting on the T5688", (768, 512), f"{_HERE}:paint_frames",
+        "the demo walk auto-painted from its middle frame, replayed double-buffered at 9600 "
+        "baud (§3.3)"),
     Act("snooker", "snooker motion development on the Rainbow", (768, 576),
         f"{_HERE}:snooker_frames", "a break simulated and replayed at 25 frames a second"),
+    Act("snooker_camera", "snooker camera angles on the Rainbow", (768, 576),
+        f"{_HERE}:snooker_camera_frames", "the thesis's example camera script (§6.3.1) over "
+        "its shot, in the visualiser (§6.3.2)"),
     Act("ca", "the programmable cellular automaton on the Rainbow", (768, 576),
         f"{_HERE}:ca_frames", "Life's Gosper gun in auto mode, panned and zoomed by scripted "
         "mouse input"),
+    Act("shelf", "Appendix I's shelf unit on the Rainbow", (768, 576), f"{_HERE}:shelf_frames",
+        "four translucent pads slide apart and together; only arcs move, the LUT keeps the "
+        "translucence"),
 )
 
 
@@ -95,4 +104,48 @@ def ca_frames() -> Iterator[Any]:
         frames.append(session.executor.last_frame.copy())
 
     play(parse(demo_events(60), "<ca demo>"), session.inject, frame, lambda: program.finished)
+    yield from frames
+
+
+def shelf_frames() -> Iterator[Any]:
+    """Appendix I's shelf unit: four pads slide apart and back (4 s); only arcs move."""
+    from emulator.rainbow.session import in_process
+    from protocols.rainbow.shelf import ShelfDemo
+
+    session = in_process()
+    demo = ShelfDemo(session.client)
+    for _ in range(100):  # one slide apart and together again, at 25 frames a second
+        demo.step()
+        demo.step()  # the Rainbow's 50 Hz frames, two a demo frame
+        yield session.executor.last_frame.copy()
+
+
+def paint_frames() -> Iterator[Any]:
+    """The demo walk (with its rising sun) auto-painted from three operations done on its
+    middle frame, every fourth frame painted and replayed double-buffered on a T5688 at 9600
+    baud; one picture per 1/25 s of line time."""
+    from apps.kas import demo
+    from apps.kas.paint.ops import Op, OpsFile
+    from apps.kas.paint.program import PaintProgram
+    from apps.kas.paint.replay import periods
+    from emulator.sigma import Terminal
+
+    seq = demo.build()
+    mid = len(seq.frames) // 2
+    sun = tuple(seq.frames[mid - 1].chains[2].centre())
+    ops = OpsFile(ops=[Op("fill", 3, chains=(2,)), Op("fill", 5, chains=(1,)),
+                       Op("region", 27, at=sun)], painted=mid)
+    term = Terminal("t5688")
+    for _ in periods(PaintProgram(seq, ops), term, 9600, FPS, range(1, len(seq.frames) + 1, 4)):
+        yield term.frame()
+
+
+def snooker_camera_frames() -> Iterator[Any]:
+    """The thesis's example camera script over its shot, in the visualiser on the Rainbow."""
+    from apps.snooker.visualiser.demo import play_example
+    from emulator.rainbow.session import in_process
+
+    session = in_process()
+    frames: list[Any] = []
+    play_example(session.client, lambda _f: frames.append(session.executor.last_frame.copy()))
     yield from frames

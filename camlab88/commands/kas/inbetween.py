@@ -22,8 +22,11 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
     p.add_argument("--missing", default="copy-nearest",
                     choices=("copy-nearest", "grow", "stay"),
                     help="what chains missing from a keyframe do (default copy-nearest)")
-    p.add_argument("--fit", default="stretch", choices=("stretch", "similarity"),
-                    help="how the path is fitted to each point pair (default stretch)")
+    p.add_argument("--fit", default="similarity-reflect",
+                    choices=("similarity-reflect", "axis-stretch", "similarity", "stretch"),
+                    help="how the path is fitted to each point pair: axis-stretch is the "
+                    "thesis's literal per-axis stretch, similarity-reflect (default; 'stretch' "
+                    "is its old name) and similarity are ours (docs/kas.md)")
     p.add_argument("--method", default="catmull-rom",
                     choices=("linear", "overhauser", "catmull-rom", "kochanek-bartels"),
                     help="spline through three or more keyframes (default catmull-rom)")
@@ -49,7 +52,7 @@ def _timing(name: str | None):
 
 
 def _inbetween(args: argparse.Namespace) -> int:
-    from apps.kas import files, library
+    from apps.kas import files, library, pathfit
     from apps.kas.inbetween import inbetween, inbetween_keys
 
     try:
@@ -58,7 +61,7 @@ def _inbetween(args: argparse.Namespace) -> int:
             raise ValueError("give at least two keyframes")
         tm = _timing(args.timing)
         if len(keys) == 2:
-            path = files.load_path(library.resolve(args.path)) if args.path else None
+            path = pathfit.load_checked(library.resolve(args.path)) if args.path else None
             seq = inbetween(keys[0], keys[1], args.frames, path, tm, args.missing, args.fit,
                             not args.keep_redundant, args.fps)
         else:

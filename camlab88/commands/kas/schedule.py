@@ -18,6 +18,9 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
     p.add_argument("--fps", type=float, default=25.0)
     p.add_argument("--baud", type=float, default=9600)
     p.add_argument("--bits-per-char", type=float, default=10.0, help="10 for 8N1")
+    p.add_argument("--clock", choices=("first-shown", "first-sent"), default="first-shown",
+                   help="time runs from the first frame displayed (§3.1.4, default) or from "
+                   "its first character sent (the earlier model)")
     p.set_defaults(handler=_schedule)
 
 
@@ -31,7 +34,7 @@ def _schedule(args: argparse.Namespace) -> int:
         sizes = [int(s) for s in text.split(",") if s.strip()]
         if any(s < 0 for s in sizes):
             raise ValueError("sizes must not be negative")
-        sched = vs.realtime(sizes, args.fps, args.baud, args.bits_per_char)
+        sched = vs.realtime(sizes, args.fps, args.baud, args.bits_per_char, args.clock)
     except (OSError, ValueError) as exc:
         return fail("camlab88 kas schedule", exc)
     print(f"{len(sched.shown)} shown, {len(sched.dropped)} dropped, {sched.end:.3f} s")
