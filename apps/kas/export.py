@@ -8,13 +8,13 @@ from __future__ import annotations
 import os
 from collections.abc import Callable, Iterator
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 
 from apps.kas.model import AnimSequence, Drawing
 from apps.kas.raster import render
 from protocols.atomicfile import AtomicBatch, atomic_path
+from protocols.png import png_bytes
 
 Progress = Callable[[int, int], None]
 
@@ -47,7 +47,7 @@ def export(seq: AnimSequence, out: str | os.PathLike[str], width: int = 768,
             yield img
 
     if ext == ".png":
-        _png_sequence(out, frames(), iio)
+        _png_sequence(out, frames())
         return out.with_name(f"{out.stem}_0001.png")
     with atomic_path(out) as tmp:
         if ext == ".gif":
@@ -67,14 +67,14 @@ def export(seq: AnimSequence, out: str | os.PathLike[str], width: int = 768,
     return out
 
 
-def _png_sequence(out: Path, frames: Iterator[np.ndarray], iio: Any) -> None:
+def _png_sequence(out: Path, frames: Iterator[np.ndarray]) -> None:
     """out_0001.png ... as one whole: every frame is staged first and renamed in only when
     all are written, then frames left from a longer earlier export are removed — so a
     killed export never leaves old and new frames mixed."""
     with AtomicBatch() as batch:
         for i, img in enumerate(frames, start=1):
             batch.add(out.with_name(f"{out.stem}_{i:04d}.png"),
-                      iio.imwrite("<bytes>", img, extension=".png"))
+                      png_bytes(img))
     k = len(batch.staged) + 1
     while (old := out.with_name(f"{out.stem}_{k:04d}.png")).exists():
         old.unlink()

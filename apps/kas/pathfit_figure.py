@@ -18,7 +18,7 @@ from apps.kas import pathfit, raster
 from apps.kas.files import SamplePath
 from apps.kas.inbetween import inbetween
 from apps.kas.model import Chain, Drawing
-from protocols.atomicfile import write_atomic
+from protocols.png import write_png
 
 RECT = [(0, 0), (1.2, 0), (1.2, 0.8), (0, 0.8), (0, 0)]
 PATH = SamplePath([(-5, -3.5), (-4.6, -2.3), (-3.6, -1.3), (-2.2, -1.1), (-1, -1.5)])
@@ -47,18 +47,10 @@ def figure(mode: str, frames: int = 7) -> Drawing:
 
 
 def write(directory: str | Path, width: int = 384) -> list[Path]:
-    import io
-
-    from PIL import Image
-
     out = []
     for mode in ("axis-stretch", "similarity-reflect"):
-        img = raster.render(figure(mode), width)
-        buf = io.BytesIO()
-        Image.fromarray(img).save(buf, format="PNG")
         path = Path(directory) / f"kas_fit_{mode.replace('-', '_')}.png"
-        write_atomic(path, buf.getvalue())
-        out.append(path)
+        out.append(write_png(raster.render(figure(mode), width), path))
     return out
 
 
