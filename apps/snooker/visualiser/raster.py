@@ -9,6 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from apps.snooker.camera.projection import Camera, camera_basis, scale_px
+from apps.snooker.visualiser import spans
 
 NEAR_CLIP_M = 1e-2  # table faces are clipped 1 cm in front of the observer
 
@@ -42,28 +43,10 @@ def project_camera_space(pts: np.ndarray, k: float, width: int, height: int) -> 
 
 
 def fill_convex(img: np.ndarray, xy: np.ndarray, value: int) -> None:
-    """Fill the pixels whose centres lie inside the convex polygon `xy` (screen pixels)."""
-    h, w = img.shape
-    y0 = max(int(np.ceil(xy[:, 1].min() - 0.5)), 0)
-    y1 = min(int(np.ceil(xy[:, 1].max() - 0.5)), h)  # rows y0 .. y1-1
-    if y1 <= y0:
-        return
-    cy = np.arange(y0, y1) + 0.5
-    a, b = xy, np.roll(xy, -1, axis=0)
-    ya, yb = a[:, 1][None, :], b[:, 1][None, :]
-    crosses = (ya <= cy[:, None]) != (yb <= cy[:, None])
-    with np.errstate(divide="ignore", invalid="ignore"):
-        x = a[:, 0] + (cy[:, None] - ya) * (b[:, 0] - a[:, 0]) / (yb - ya)
-    xl = np.where(crosses, x, np.inf).min(axis=1)
-    xr = np.where(crosses, x, -np.inf).max(axis=1)
-    il = np.clip(np.ceil(xl - 0.5), 0, w).astype(np.int64)
-    ir = np.clip(np.ceil(xr - 0.5), 0, w).astype(np.int64)
-    rows = np.flatnonzero(ir > il)
-    if rows.size == 0:
-        return
-    # one slice per row: cheaper than a bounding-box mask for the big faces (measured)
-    for y, a, b in zip((rows + y0).tolist(), il[rows].tolist(), ir[rows].tolist()):
-        img[y, a:b] = value
+    """Fill the pixels whose centres lie inside the convex polygon `xy` (screen pixels): one
+    kernel, since per-face numpy arrays and per-row slices from Python were the host's
+    largest cost with the view moving (docs/perf/camera.md)."""
+    spans.fill_convex(img, xy, value)
 
 
 def draw_polygons(img: np.ndarray, camera: Camera, faces: list[tuple[np.ndarray, int]]) -> None:
