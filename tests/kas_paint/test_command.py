@@ -81,3 +81,24 @@ def test_window_input_selects_fills_and_picks() -> None:
     for _ in range(200):
         t.tick()
     assert t.term.reg.view == 4
+
+
+def test_readme_commands_as_printed(tmp_path, capsys, monkeypatch) -> None:  # noqa: ANN001
+    """The README's painting commands, in order, with the shipped script."""
+    from pathlib import Path
+
+    script = Path(__file__).resolve().parents[1] / "data" / "kas_paint" / "walk_paint.txt"
+    monkeypatch.chdir(tmp_path)
+    assert main(["kas", "inbetween", "walk_a", "walk_b", "--path", "walk_path", "--timing",
+                 "walk_ticks", "--out", "walk.kas"]) == 0
+    assert main(["kas", "paint", "walk.kas", "--script", str(script), "--save", "walk.ops",
+                 "--headless"]) == 0
+    assert "0 operation(s) could not apply" in capsys.readouterr().out
+    ops = opsfile.load("walk.ops")
+    assert [(o.kind, o.chains, o.colour) for o in ops.ops] == [
+        ("fill", (2,), 3), ("fill", (1,), 5), ("line", (1,), 8)]
+    assert sorted(ops.frame_seeds) == [n for n in range(1, 21) if n != ops.painted]
+    assert main(["kas", "paint", "walk.kas", "--ops", "walk.ops", "--frames", "out", "--gif",
+                 "walk.gif", "--headless"]) == 0
+    assert sorted(p.name for p in (tmp_path / "out").iterdir())[::19] == [
+        "frame_00001.png", "frame_00020.png"]
