@@ -67,3 +67,51 @@ def test_demo_plays_sixty_generations_of_the_gun() -> None:
     stats = program.session.statistics()
     assert stats["generation"] == 60 and stats["population"] == 46  # the gun and two gliders
     assert stats["viewport"][2] == "8"
+
+
+def test_tripos_form_does_what_the_flag_form_does(tmp_path: Path, capsys,  # noqa: ANN001
+                                                 monkeypatch) -> None:
+    """Section 7.3.1's argument form: Log/k, RecordPansAndZooms/s, Checkpoint (positional
+    too), Script/k, ReplayPansAndZooms/s give the same session as the --flag form."""
+    monkeypatch.chdir(tmp_path)
+    events = tmp_path / "s.events"
+    events.write_text(leave_editing() + "click right 600 500\nframes 1\n" * 4
+                      + choose("Zoom 4") + "click right 600 500\nframes 1\n" * 2)
+    runs = {}
+    for form, words in (("flags", ["--log", "f.log", "--record-pans", "--checkpoint", "3"]),
+                        ("tripos", ["Log", "t.log", "RecordPansAndZooms", "3"])):
+        assert main(["ca", "program", "--headless", "--pattern", "acorn", "--events",
+                     str(events), "--json", *words]) == 0
+        runs[form] = _json_last(capsys)
+    assert runs["tripos"] == runs["flags"]
+    assert " zoom 4" in (tmp_path / "t.log").read_text()  # RecordPansAndZooms took effect
+    assert (tmp_path / "t.log3").exists() and (tmp_path / "t.log6").exists()
+    assert (tmp_path / "t.log").read_text().replace("t.log", "f.log") \
+        == (tmp_path / "f.log").read_text().replace("t.log", "f.log")
+    # Script/k with ReplayPansAndZooms/s, in another case and with KEY=value
+    assert main(["ca", "program", "--headless", "script=t.log", "REPLAYPANSANDZOOMS",
+                 "--start", "6", "--stop-after", "1", "--json"]) == 0
+    assert _json_last(capsys) == runs["flags"]
+
+
+def test_tripos_form_errors_name_the_argument(capsys) -> None:
+    cases = [(["Log"], "argument 1 ('Log'): Log needs a value"),
+             (["Log", "a", "LOG", "b"], "argument 3 ('LOG'): Log given twice"),
+             (["5", "extra"], "argument 2 ('extra'): not a keyword of Log/k"),
+             (["RecordPansAndZooms=yes"], "RecordPansAndZooms is a switch"),
+             (["Checkpoint", "often"], "Checkpoint 'often': a number of generations"),
+             (["Log", "a", "--log", "b"], "Log given twice: in the Tripos form and as --log")]
+    for words, message in cases:
+        assert main(["ca", "program", "--headless", "--stop-after", "1", *words]) == 2
+        assert message in capsys.readouterr().err, words
+
+
+def test_help_says_which_form_is_which(capsys) -> None:
+    import pytest
+
+    with pytest.raises(SystemExit):
+        main(["ca", "program", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert "the thesis's Tripos form" in text and "ours, the --flag form" in text
+    assert "Log/k,RecordPansAndZooms/s,Checkpoint,Script/k,ReplayPansAndZooms/s" in text
+    assert "RecordPansAndZooms/s = --record-pans" in text

@@ -10,6 +10,18 @@ from camlab88.runopts import add_run_options, fail, run_options
 COMMAND = "camlab88 ca program"
 KEYS = ("left button pans; middle: menus; right: edit / step; Finish (menu) or close the "
         "window to quit")
+TEMPLATE = "Log/k,RecordPansAndZooms/s,Checkpoint,Script/k,ReplayPansAndZooms/s"
+# Tripos keyword -> the --flag form's destination (section 7.3.1)
+TRIPOS_DEST = {"Log": "log", "RecordPansAndZooms": "record_pans", "Checkpoint": "checkpoint",
+               "Script": "script", "ReplayPansAndZooms": "replay_pans"}
+TWO_FORMS = (
+    "The section 7.3.1 arguments come in two forms: the thesis's Tripos form, as positional "
+    "words (template " + TEMPLATE + "; /k: the keyword must be given before its value, "
+    "/s: a switch; Checkpoint's keyword may be left out), e.g. `camlab88 ca program Log "
+    "run.log RecordPansAndZooms Checkpoint 50`; and ours, the --flag form: Log/k = --log, "
+    "RecordPansAndZooms/s = --record-pans, Checkpoint = --checkpoint, Script/k = --script, "
+    "ReplayPansAndZooms/s = --replay-pans. Keywords are matched in any case; KEY=value works "
+    "too. Give each argument in one form only.")
 
 
 def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
@@ -19,7 +31,9 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
         "(left button pans, middle button menus, right button edits / steps) and keyboard. "
         "Log, RecordPansAndZooms, Checkpoint, Script and ReplayPansAndZooms as in section "
         "7.3.1. Headless it needs --events (the run ends with the script) or --stop-after N. "
-        "A --screenshot run writes no log and no checkpoint.")
+        "A --screenshot run writes no log and no checkpoint.", epilog=TWO_FORMS)
+    p.add_argument("tripos", nargs="*", metavar="ARG",
+                   help="the thesis's Tripos form: " + TEMPLATE + " (see below)")
     p.add_argument("--rules", default="life", help="rule file or library name (life)")
     p.add_argument("--pattern", help="pattern loaded at the centre of the view")
     p.add_argument("--log", metavar="L", help="Log: record every intervention in file L")
@@ -51,6 +65,7 @@ def program(args: argparse.Namespace) -> int:
     from protocols.rainbow.script import Player, ScriptError, load
 
     try:
+        _apply_tripos(args)
         player = Player(load(args.events)) if args.events else None
         useful = "playing the --events script" if player else (
             "for --stop-after frames" if args.stop_after else None)
@@ -60,9 +75,35 @@ def program(args: argparse.Namespace) -> int:
             opts.stop_after = 100
         stats = _run(_options(args, preview=opts.screenshot is not None), player, opts)
     except (OSError, LogError, RuleError, PatternError, ScriptError, ValueError) as exc:
+        # TriposArgsError is a ValueError
         return fail(COMMAND, exc)
     _print_stats(stats, args.json)
     return 0
+
+
+def _apply_tripos(args: argparse.Namespace) -> None:
+    """The Tripos-form words into the --flag form's fields; one form per argument."""
+    from camlab88.tripos_args import TriposArgsError, read_args
+
+    defaults = {"log": None, "record_pans": False, "checkpoint": 0, "script": None,
+                "replay_pans": False}
+    for keyword, value in read_args(args.tripos, TEMPLATE).items():
+        dest = TRIPOS_DEST[keyword]
+        if getattr(args, dest) != defaults[dest]:
+            flag = "--" + dest.replace("_", "-")
+            raise TriposArgsError(f"{keyword} given twice: in the Tripos form and as {flag}")
+        if dest == "checkpoint":
+            value = _checkpoint(str(value))
+        setattr(args, dest, value)
+
+
+def _checkpoint(text: str) -> int:
+    from camlab88.tripos_args import TriposArgsError
+
+    try:
+        return int(text)
+    except ValueError:
+        raise TriposArgsError(f"Checkpoint {text!r}: a number of generations") from None
 
 
 def _options(args: argparse.Namespace, preview: bool):  # noqa: ANN202
