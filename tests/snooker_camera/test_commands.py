@@ -105,3 +105,16 @@ def test_a_recorded_session_replays_the_script_saved_from_outside(tmp_path: Path
     assert tool.result.focal[0] == 300
     Path("cam.ccl").write_text((DATA / "thesis_example.ccl").read_text())  # as at the start
     assert main(["replay", "rec.jsonl", "--headless", "--check"]) == 0
+
+
+def test_readme_camera_tool_command(tmp_path: Path, capsys) -> None:  # type: ignore[no-untyped-def]
+    """The README's camera-tool screenshot command, headless, with the shipped events."""
+    script = tmp_path / "example.ccl"
+    shutil.copy(DATA / "thesis_example.ccl", script)
+    shot = tmp_path / "tool.png"
+    assert main(["snooker", "camera", str(script), SHOT, "--events",
+                 str(DATA / "typo.events"), "--headless", "--screenshot", str(shot)]) == 0
+    assert "1 error now; unsaved edits" in capsys.readouterr().err
+    img = np.asarray(Image.open(shot).convert("RGB"))
+    assert img.shape == (576, 768, 3)
+    assert script.read_text() == (DATA / "thesis_example.ccl").read_text()  # not saved
