@@ -5,16 +5,22 @@ invisible; the letters face the camera when the word forms."""
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from apps.snooker.film.letterballs import INK, render_title
 from apps.snooker.film.titles import WORD, slots, title_scene, title_session
 from apps.snooker.render.gamma import encode
 
 
-def test_the_aimed_balls_stop_together_on_their_slots() -> None:
+@pytest.fixture(scope="module")
+def title() -> tuple:
+    return title_scene()
+
+
+def test_the_aimed_balls_stop_together_on_their_slots(title: tuple) -> None:
     s = title_session()
     assert np.all(np.hypot(*s.balls.vel[: len(WORD)].T) > 0)  # each struck by its aim
-    scene, _view = title_scene()
+    scene, _view = title
     moving = np.any(np.diff(scene.centres[:, : len(WORD)], axis=0) != 0, axis=2)
     last_move = [int(np.flatnonzero(moving[:, b])[-1]) for b in range(len(WORD))]
     assert max(last_move) - min(last_move) <= 1  # the word forms at one moment
@@ -24,8 +30,8 @@ def test_the_aimed_balls_stop_together_on_their_slots() -> None:
     assert not scene.on_table[:, len(WORD):].any()  # no other balls
 
 
-def test_the_word_is_spelt_and_the_table_is_invisible() -> None:
-    scene, view = title_scene()
+def test_the_word_is_spelt_and_the_table_is_invisible(title: tuple) -> None:
+    scene, view = title
     img = render_title(scene, view, scene.n_frames, 384, 192)
     xy, _, _ = _project(scene, view, 384, 192)
     ink = encode(INK)

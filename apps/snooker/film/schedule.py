@@ -117,7 +117,13 @@ class _Run:
         while queue or self.running:
             while queue and len(self.running) < 2 * self.backend.workers:
                 t = queue.pop()
-                self.running[self.backend.submit(t)] = t
+                try:
+                    self.running[self.backend.submit(t)] = t
+                except BrokenProcessPool:  # the pool died since the last wait
+                    self._failed(t, "its worker process died", queue)
+                    self._lost(queue)
+            if not self.running:
+                continue
             finished, _ = wait(list(self.running), return_when=FIRST_COMPLETED)
             broken = False
             for f in finished:
@@ -126,11 +132,15 @@ class _Run:
                 if problem is not None:
                     broken |= isinstance(f.exception(), BrokenProcessPool)
                     self._failed(t, problem, queue)
-            if broken:  # every frame still in the dead pool is lost with it
-                for t in self.running.values():
-                    self._failed(t, "its worker process died", queue)
-                self.running.clear()
-                self.backend.restart()
+            if broken:
+                self._lost(queue)
+
+    def _lost(self, queue: list[FrameTask]) -> None:
+        """A dead pool: every frame still in it is lost with it; start a new one."""
+        for t in self.running.values():
+            self._failed(t, "its worker process died", queue)
+        self.running.clear()
+        self.backend.restart()
 
     def _take(self, f: Future, t: FrameTask) -> str | None:
         exc = f.exception()
