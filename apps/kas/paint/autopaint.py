@@ -1,8 +1,11 @@
 """Auto-paint (thesis §3.3): the operations done on one frame applied to every frame of the
 sequence "by chain number, in the same order", with seed points recomputed for each frame's
-own shapes.  A frame where an operation cannot apply (a chain missing, a shape that no
-longer closes, a region not found) is listed with the operations file's line number, and
-everything else is still painted.
+own shapes -- unless the operations file already holds that frame's seeds ("seed point
+coordinates, on a frame by frame basis"), which are then used, each checked to be inside;
+``record`` writes the seeds every frame used back into the file.  A frame where an
+operation cannot apply (a chain missing, a shape that no longer closes, a region not found,
+a recorded seed outside) is listed with the operations file's line number, and everything
+else is still painted.
 
 A frame's plan is a list of steps in front-to-back order.  Each step draws its *walls* (the
 boundary, in the highlight value 0x80 on all planes so that they are the only pixels of
