@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import os
-from pathlib import Path
 from typing import Any
 
 
@@ -12,19 +11,16 @@ class StreamFileError(ValueError):
 
 
 def read_stream_file(path: str | os.PathLike[str]) -> Any:
-    """The raw bytes, or a protocols.link Recording if the file is one."""
-    from protocols.link import recording
+    """The raw bytes, or a protocols.link Recording if the file is one. A directory, an
+    unreadable file, a bad recording, a recording behind a byte-order mark or one whose first
+    line is damaged raises StreamFileError naming the file (never drawn as raw bytes)."""
+    from protocols.link.recording import RecordingError
+    from protocols.link.sniff import read_link_input
 
     try:
-        data = Path(path).read_bytes()
-    except OSError as exc:
-        raise StreamFileError(f"cannot read {path}: {exc.strerror or exc}") from None
-    if data.startswith(recording.MAGIC.encode("ascii")):
-        try:
-            return recording.read_recording(path)
-        except ValueError as exc:
-            raise StreamFileError(str(exc)) from None
-    return data
+        return read_link_input(path)
+    except RecordingError as exc:
+        raise StreamFileError(str(exc)) from None
 
 
 def host_bytes(got: Any) -> bytes:

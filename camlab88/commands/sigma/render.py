@@ -79,14 +79,26 @@ def _png(frame, path: Path) -> None:  # noqa: ANN001
 
 
 def _write_frames(term, got, settings, period: Fraction, directory: Path) -> int:  # noqa: ANN001
+    from protocols.link.sniff import frame_count
     from protocols.png import frame_path
 
+    try:  # a damaged recording time must not mean hours of PNGs
+        frame_count(_duration(got, settings), int(1 / period), name=str(directory))
+    except ValueError as exc:
+        raise _die(str(exc)) from None
     count = 0
     for k, chunk in _periods(got, settings, period):
         term.feed(chunk)
         _png(term.frame(), frame_path(directory, k))
         count += 1
     return count
+
+
+def _duration(got, settings) -> Fraction:  # noqa: ANN001
+    """Line time the frames must cover: raw bytes back to back, or the recording's last time."""
+    if isinstance(got, bytes):
+        return Fraction(len(got)) * settings.char_time
+    return Fraction(got.duration)
 
 
 def _periods(got, settings, period: Fraction):  # noqa: ANN001, ANN202
