@@ -9,10 +9,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from apps.kas.model import AnimSequence, Chain, Drawing
 from apps.kas.paint import areas, opsfile
-from apps.kas.paint.ops import Op, OpsFile
+from apps.kas.paint.ops import Op, OpsFile, Seeds
 from apps.kas.paint.program import Line, PaintProgram
 from apps.kas.paint.replay import replay
 from apps.kas.paint.session import PaintSession
@@ -143,3 +145,21 @@ def test_truncated_seeds_section_noticed() -> None:
     cut = text[:text.index("seeds fill 1 at")]
     with pytest.raises(opsfile.OpsFileError, match="file ends before a 'seeds' line"):
         opsfile.parse(cut, "t.ops")
+
+
+_coord = st.floats(-5, 5, allow_nan=False).map(lambda v: round(v, 3))
+_seeds = st.lists(st.tuples(_coord, _coord), max_size=4).map(tuple)
+_record = st.one_of(
+    st.builds(lambda c, s: Seeds(("fill", tuple(c)), s),
+              st.lists(st.integers(1, 9), min_size=1, max_size=3), _seeds),
+    st.builds(lambda x, y, s: Seeds(("region", (x, y)), s), _coord, _coord, _seeds))
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.dictionaries(st.integers(1, 30), st.lists(_record, min_size=1, max_size=4),
+                       max_size=5))
+def test_frame_seeds_round_trip(frame_seeds: dict[int, list[Seeds]]) -> None:
+    f = OpsFile(ops=[Op("fill", 1, chains=(1,))], painted=2, frame_seeds=frame_seeds)
+    g = opsfile.parse(opsfile.ops_text(f))
+    assert g.frame_seeds == frame_seeds
+    assert opsfile.ops_text(g) == opsfile.ops_text(f)
