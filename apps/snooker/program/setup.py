@@ -7,7 +7,7 @@ import dataclasses
 import os
 from pathlib import Path
 
-from apps.snooker.session import Session
+from apps.snooker.session import Session, check_table
 from apps.snooker.table import Table
 
 
@@ -21,13 +21,16 @@ def table_with(changes: list[tuple[str, str]]) -> Table:
             raise ValueError(f"unknown table constant {name!r}; known: {', '.join(fields)}")
         cast = {"int": int, "str": str}.get(str(fields[name]), float)
         values[name] = cast(text)
-    return Table(**values)  # type: ignore[arg-type]
+    return check_table(Table(**values))  # type: ignore[arg-type]
 
 
 def is_session_file(path: str | os.PathLike[str]) -> bool:
     """A saved session is JSON (starts with ``{``); anything else is read as a checkpoint."""
     p = Path(path)
-    return p.exists() and p.read_bytes()[:64].lstrip().startswith(b"{")
+    if not p.is_file():  # a directory or a missing file is read (and refused) as a checkpoint
+        return False
+    with p.open("rb") as f:
+        return f.read(64).lstrip().startswith(b"{")
 
 
 def start_from(path: str | os.PathLike[str], table: Table) -> Session:

@@ -24,12 +24,19 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
 
 def _replay(args: argparse.Namespace) -> int:
     from apps.ca.engine import Engine
-    from apps.ca.log import LogError, read_log_settings, resolve_settings, start_from_script
+    from apps.ca.log import (
+        LogError,
+        check_seed,
+        read_log_settings,
+        resolve_settings,
+        start_from_script,
+    )
     from apps.ca.rules import RuleError
 
     try:
         edges, seed, warnings = resolve_settings(read_log_settings(args.script), args.edges,
                                                  args.seed)
+        check_seed(seed)
         for w in warnings:
             print(f"camlab88 ca replay: warning: {w}", file=sys.stderr)
         engine = start_from_script(args.script, args.generation,

@@ -41,10 +41,12 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
 def _run(args: argparse.Namespace) -> int:
     from apps.ca import library
     from apps.ca.engine import CENTRE, Engine
+    from apps.ca.log import check_seed
     from apps.ca.patterns import PatternError, read_pattern
     from apps.ca.rules import RuleError, load_rules
 
     try:
+        check_seed(args.seed)  # the kernels take an int64: a 20-digit seed is an error
         rules = load_rules(library.rules_path(args.rules))
         pattern = read_pattern(library.pattern_path(args.pattern))
         xs, ys, ts = pattern.placed(CENTRE, CENTRE, args.orientation)
