@@ -3,6 +3,8 @@ and the doubling "Fast forward", on the emulated Rainbow (headless)."""
 
 from __future__ import annotations
 
+import numpy as np
+
 from apps.ca import log
 from apps.ca.program import stepping
 from apps.ca.program.menus import JUMP_ITEMS, MAIN_ITEMS, MainMenu
@@ -65,3 +67,34 @@ def test_the_main_menu_can_show_the_jumps_in_a_third_column() -> None:
     assert menu.track(x, y) == "Fast forward"
     assert menu.track(x, y + 18) is None  # the column's empty rest
     assert menu.close() is None
+
+
+def test_go_to_generation_through_the_menu_equals_the_direct_engine() -> None:
+    d = Driver(Options(pattern="acorn"))
+    d.leave_editing()
+    ref = d.program.session.engine.copy()
+    d.main("Go to generation")  # middle press, move to the third column, release
+    assert d.program.asking is not None and d.program.asking.prompt == "Go to generation N ="
+    d.run("key backspace\n" * 4 + "frames 1")
+    d.type("2500")  # the offered default (1000) replaced by typing
+    e = d.program.session.engine
+    assert e.generation == 2500 and d.program.said[-1] == "Generation 2500"
+    ref.step_direct(2500)
+    assert e.same_state(ref) and e.population == ref.population
+    assert all(np.array_equal(a, b) for a, b in zip(e.cells(), ref.cells(), strict=True))
+
+
+def test_fast_forward_through_the_menu_doubles_then_step_mode_stops_it() -> None:
+    d = Driver(Options(pattern="glider"))
+    d.leave_editing()
+    d.main("Fast forward")
+    assert d.program.auto and d.program.fast_forward
+    d.frames(4)
+    assert d.program.frequency > 8  # doubled with every generation shown
+    g = d.program.session.generation
+    assert g == sum(1 << i for i in range(g.bit_length()))  # 1 + 2 + 4 + ...
+    d.main("Step mode")
+    f = d.program.frequency
+    assert not d.program.fast_forward and not d.program.auto
+    d.frames(3)
+    assert d.program.frequency == f

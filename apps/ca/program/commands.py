@@ -86,6 +86,7 @@ def alter_display(p: CAProgram) -> Dialogue:
                       ERROR)
                 return
             p.frequency = n
+            p.fast_forward = False
             p.pending = None
             p.say(f"Display every {n} generation{'s' if n > 1 else ''}")
 

@@ -12,7 +12,7 @@ from apps.ca.program.menus import CrossMenu, main_item_point
 
 def choose(item: str, x: int = 300, y: int = 300) -> str:
     """Script lines choosing ``item`` from the main menu opened at (x, y)."""
-    ix, iy = main_item_point(item, x, y)
+    ix, iy = main_item_point(item, x, y, jumps=True)  # the program's menu has 3 columns
     return f"press middle {x} {y}\nmove {ix} {iy}\nrelease middle {ix} {iy}\nframes 1\n"
 
 

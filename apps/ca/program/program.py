@@ -64,7 +64,7 @@ class CAProgram:
             writer = log.LogWriter(opts.log, opts.record_pans, self.settings)
         self.session = Session(self.fresh_engine(), writer, opts.checkpoint)
         self.editor = Editor(self.session)
-        self.main_menu = MainMenu(client)
+        self.main_menu = MainMenu(client, jumps=True)
         self.main_menu.mark("Step mode")
         self.cross = edit_menu(client)
         self.menu: str | None = None  # "main" or "edit" while the middle button is held
@@ -72,6 +72,7 @@ class CAProgram:
         self.editing = True  # the program starts in edit mode (section 7.3.1)
         self.auto = False  # ... and in single-step mode
         self.frequency = 1
+        self.fast_forward = False  # the display frequency doubles per shown frame
         self.pending: Engine | None = None
         self.pending_checkpoints: list[Engine] = []
         self.populations = 0
@@ -201,6 +202,7 @@ class CAProgram:
         self.display.swap()
         self.display.back.stale = True
         self.session.engine = self.pending
+        self.frequency = stepping.next_frequency(self.frequency, self.fast_forward)
         self.pending = None
         stepping.write_checkpoints(self.session, self.pending_checkpoints)
         self.pending_checkpoints = []
@@ -464,12 +466,17 @@ class CAProgram:
             self.finished = True
         elif item in ("Step mode", "Auto mode"):
             self.auto = item == "Auto mode"
+            self.fast_forward = False
             self.main_menu.mark(item)
         elif item == "Centralise viewport":
             w, h = self.view.cells_across()
             self.session.centralise(w, h)
             self.view.set_top_left(self.session.view.x, self.session.view.y)
             self.changed()
+        elif item == "Go to generation":
+            self._start(stepping.go_to_generation(self))
+        elif item == "Fast forward":
+            self._start(stepping.fast_forward(self))
         elif item in ZOOM_ITEMS:
             self.set_zoom(ZOOM_ITEMS[item])
         elif item in commands.MAIN:
