@@ -43,6 +43,7 @@ class Front:
         self._parked: tuple[int, int] | None = None
         self.done = False
         self.notices: list[str] = []
+        self._sent_lut: list[tuple[int, int, int]] = []
 
     # -- to be provided --------------------------------------------------------------------
     def prims(self) -> list[Prim]:
@@ -55,6 +56,10 @@ class Front:
     def on_key(self, key: str) -> None:
         raise NotImplementedError
 
+    def current_lut(self) -> list[tuple[int, int, int]]:
+        """The LUT the screen needs now (the editor reloads its dim entries, §3.1.1)."""
+        return self.lut
+
     def may_close(self) -> bool:
         """The window's close button: True to close now (the editor refuses once while it
         holds unsaved edits)."""
@@ -62,7 +67,8 @@ class Front:
 
     # -- driving ---------------------------------------------------------------------------
     def start(self) -> bytes:
-        out = setup_bytes(self.enc, self.lut) + self.painter.full(self.prims())
+        self._sent_lut = self.current_lut()
+        out = setup_bytes(self.enc, self._sent_lut) + self.painter.full(self.prims())
         return out + self._park()
 
     def pointer(self, events: list[PointerEvent]) -> None:
@@ -78,7 +84,7 @@ class Front:
             self.on_key(k)
 
     def update(self) -> bytes:
-        out = self.painter.update(self.prims())
+        out = self._lut_changes() + self.painter.update(self.prims())
         if out or self._parked != self.stylus_px:
             out += self._park()
         return out
@@ -86,6 +92,17 @@ class Front:
     def redraw(self) -> bytes:
         """Everything again from scratch (for comparison with the incremental screen)."""
         return self.painter.full(self.prims()) + self._park()
+
+    def _lut_changes(self) -> bytes:
+        """LUT orders for the entries whose colour changed: the terminal recolours what is
+        drawn in them at once (facts/sigma.md), so nothing is redrawn for it."""
+        lut = self.current_lut()
+        out = bytearray()
+        for i, rgb in enumerate(lut):
+            if i >= len(self._sent_lut) or self._sent_lut[i] != rgb:
+                out += self.enc.lut(i, *rgb)
+        self._sent_lut = lut
+        return bytes(out)
 
     def _park(self) -> bytes:
         self._parked = self.stylus_px

@@ -12,9 +12,10 @@ from collections.abc import Callable
 from apps.kas.editor import Editor
 from apps.kas.events import Key, Pointer
 from apps.kas.model import Drawing
+from apps.kas.program import layout as L
 from apps.kas.program.base import Front
 from apps.kas.program.draw import Prim
-from apps.kas.program.screen import editor_prims
+from apps.kas.program.screen import dim_pens, editor_prims
 
 
 class EditorFront(Front):
@@ -26,7 +27,14 @@ class EditorFront(Front):
             self.editor.on_save = on_save
 
     def prims(self) -> list[Prim]:
-        return editor_prims(self.editor)
+        return editor_prims(self.editor, dim_pens(self.editor))
+
+    def current_lut(self) -> list[tuple[int, int, int]]:
+        """Edit mode with the background shown: entries 11-13 hold the dim pens (§3.1.1)."""
+        ed = self.editor
+        if ed.mode != "edit" or not ed.background:
+            return self.lut
+        return L.dim_lut(self.lut, dim_pens(ed), self.background)
 
     def on_pointer(self, x: float, y: float, down: bool) -> None:
         self.editor.feed(Pointer(x, y, down))

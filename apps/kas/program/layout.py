@@ -29,6 +29,11 @@ TABLET_AREA = WorkingArea(SCREEN_W / SCALE, SCREEN_H / SCALE, "inch", "kas-scree
 # LUT plan (16 entries, 4 planes).  0 background; 1-8 the pens; then the editor's own colours.
 BG, MARKS, OLD, DIM, GUIDE, GUIDE_NEXT, TEXT, HILITE = 0, 9, 10, 11, 12, 13, 14, 15
 CYAN_PEN, MAGENTA_PEN = 6, 7  # the editing cursors use the cyan and magenta paint pots
+# Edit mode's dim versions of the pens (§3.1.1 "a dim version of the line's colour"): the
+# guide entries are free in edit mode (the guide keyframe shows in drawing mode only), so
+# 11, 12 and 13 are reloaded with dim pens while the background is shown (docs/fidelity/kas.md)
+DIM_ENTRIES = (DIM, GUIDE, GUIDE_NEXT)
+DIM_SHARE = 0.45  # a dim pen is 45 % of the way from the background to the pen
 
 
 def field_to_px(x: float, y: float) -> tuple[float, float]:
@@ -76,3 +81,19 @@ def lut_plan(background: str = "black") -> list[tuple[int, int, int]]:
         (15, 0, 0) if white else (15, 15, 15),       # 15 highlight frames
     ]
     return lut
+
+
+def dim_rgb(rgb: tuple[int, int, int], background: str = "black") -> tuple[int, int, int]:
+    """A pen's 4-bit colour dimmed: moved DIM_SHARE of the way from the background to it."""
+    bg = 15 if background == "white" else 0
+    return tuple(round(bg + (c - bg) * DIM_SHARE) for c in rgb)  # type: ignore[return-value]
+
+
+def dim_lut(lut: list[tuple[int, int, int]], pens: dict[int, int],
+            background: str = "black") -> list[tuple[int, int, int]]:
+    """``lut`` with each dim entry of ``pens`` (pen -> entry) loaded with that pen dimmed."""
+    out = list(lut)
+    for pen, entry in pens.items():
+        if entry in DIM_ENTRIES:
+            out[entry] = dim_rgb(lut[pen], background)
+    return out

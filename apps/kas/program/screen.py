@@ -33,7 +33,7 @@ SHORT = {
     "j": "collapse to line", "d": "delete points", "i": "insert points",
     "h": "colour chain", "b": "move back", "a": "move again",
 }
-STYLE_COLOUR = {"dim": L.DIM, "old": L.OLD, "guide": L.GUIDE, "guide-next": L.GUIDE_NEXT}
+STYLE_COLOUR = {"old": L.OLD, "guide": L.GUIDE, "guide-next": L.GUIDE_NEXT}
 PANEL_CHARS = (L.SCREEN_W - L.PANEL_X) // L.CHAR_W
 
 
@@ -98,8 +98,29 @@ def static_prims() -> list[Prim]:
     return field_marks() + menu_prims()
 
 
-def editor_prims(ed: Editor) -> list[Prim]:
-    """The whole editor screen, bottom to top."""
+def dim_pens(ed: Editor) -> dict[int, int]:
+    """Pen -> the LUT entry its unmoved chains are drawn in (§3.1.1's "dim version of the
+    line's colour"): the three pens with most unmoved points get L.DIM_ENTRIES in turn; a
+    fourth or later pen shares the dim entry of the nearest of those colours."""
+    count: dict[int, int] = {}
+    for item in ed.display_list():
+        if item.style == "dim":
+            for c in item.colours:
+                pen = int(c) if int(c) in PENS else 1
+                count[pen] = count.get(pen, 0) + 1
+    order = sorted(count, key=lambda p: (-count[p], p))
+    own = dict(zip(order, L.DIM_ENTRIES, strict=False))
+    lut = L.lut_plan("black")
+    for pen in order[len(own):]:
+        near = min(own, key=lambda q: (sum(abs(a - b) for a, b in zip(lut[pen], lut[q],
+                                                                        strict=True)), q))
+        own[pen] = own[near]
+    return own
+
+
+def editor_prims(ed: Editor, dims: dict[int, int] | None = None) -> list[Prim]:
+    """The whole editor screen, bottom to top; ``dims`` as from :func:`dim_pens`."""
+    dims = dim_pens(ed) if dims is None else dims
     out = static_prims()
     # selected pen and mode: frames round their menu boxes
     boxes = dict(menu_boxes())
@@ -121,8 +142,12 @@ def editor_prims(ed: Editor) -> list[Prim]:
         pts = np.column_stack([L.CENTRE_X + scr[:, 0] * L.SCALE,
                                L.CENTRE_Y + scr[:, 1] * L.SCALE])
         fixed = STYLE_COLOUR.get(item.style)
-        colour_of = (lambda c, f=fixed: f) if fixed is not None else \
-            (lambda c: c if c in PENS else 1)
+        if item.style == "dim":
+            colour_of = lambda c: dims.get(c if c in PENS else 1, L.DIM)  # noqa: E731
+        elif fixed is not None:
+            colour_of = lambda c, f=fixed: f  # noqa: E731
+        else:
+            colour_of = lambda c: c if c in PENS else 1  # noqa: E731
         out += chain_prims(pts, item.colours, FIELD_CLIP, colour_of)
     out += cursor_prims(ed)
     return out
