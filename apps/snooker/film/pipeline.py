@@ -11,7 +11,7 @@ from pathlib import Path
 from apps.snooker.camera import ccl, motion
 from apps.snooker.camera.views import View, write_views
 from apps.snooker.film.backends import open_backend
-from apps.snooker.film.schedule import FilmReport, Progress, frame_file, render_film
+from apps.snooker.film.schedule import MANIFEST, FilmReport, Progress, frame_file, render_film
 from apps.snooker.film.task import FrameTask, scene_digest
 from apps.snooker.render.lights import Lights
 from apps.snooker.render.scene import Scene
@@ -38,10 +38,11 @@ class FilmLook:
     specks: bool = True
     shadows: bool = True
     blur_samples: int = 1
+    wood: bool = True
 
     def task(self, view: View) -> FrameTask:
         return FrameTask(int(view.frame), view, self.width, self.height, self.specks,
-                         self.shadows, self.blur_samples)
+                         self.shadows, self.blur_samples, wood=self.wood)
 
 
 def script_views(motion_path: str | os.PathLike[str], script: str | os.PathLike[str],
@@ -56,12 +57,13 @@ def script_views(motion_path: str | os.PathLike[str], script: str | os.PathLike[
 
 def shoot(scene: Scene, views: Sequence[View], frames_dir: Path, look: FilmLook,
           dask: str | None = None, workers: int | None = None,
-          progress: Progress | None = None) -> FilmReport:
-    """Render every view's frame (skipping complete ones) on the chosen backend."""
+          progress: Progress | None = None, manifest: str = MANIFEST) -> FilmReport:
+    """Render every view's frame (skipping complete ones) on the chosen backend;
+    ``manifest``: the resume record's name in ``frames_dir``."""
     backend = open_backend(scene, dask, workers)
     try:
         return render_film([look.task(v) for v in views], frames_dir, backend,
-                           scene_digest(scene), progress)
+                           scene_digest(scene), progress, manifest=manifest)
     finally:
         backend.close()
 

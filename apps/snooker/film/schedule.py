@@ -79,12 +79,13 @@ def frame_file(directory: str | os.PathLike[str], frame: int) -> Path:
 
 def render_film(tasks: Sequence[FrameTask], out_dir: str | os.PathLike[str], backend: Backend,
                 digest: str, progress: Progress | None = None,
-                attempts: int = 3) -> FilmReport:
-    """``digest``: task.scene_digest of the scene the backend renders."""
+                attempts: int = 3, manifest: str = MANIFEST) -> FilmReport:
+    """``digest``: task.scene_digest of the scene the backend renders; ``manifest``: the
+    resume record's name in ``out_dir`` (``snooker render`` keeps it hidden)."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     report = FilmReport()
-    keys = Manifest(out / MANIFEST)
+    keys = Manifest(out / manifest)
     todo = []
     for t in tasks:
         done = (keys.get(t.frame) == task_key(digest, t)

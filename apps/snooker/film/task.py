@@ -28,6 +28,7 @@ class FrameTask:
     shadows: bool = True
     blur_samples: int = 1  # 1: an instantaneous frame; more: motion blur over the shutter
     shutter_s: float = SHUTTER_S
+    wood: bool = True  # Phong + grain on the surround; False: constant, as the Sigma draws it
 
 
 def render_image(scene: Scene, task: FrameTask) -> np.ndarray:
@@ -38,7 +39,7 @@ def render_image(scene: Scene, task: FrameTask) -> np.ndarray:
         from apps.snooker.film.letterballs import render_title
 
         return render_title(scene, task.view, task.frame, task.width, task.height)
-    opts = RenderOptions(task.width, task.height, task.specks, task.shadows)
+    opts = RenderOptions(task.width, task.height, task.specks, task.shadows, task.wood)
     if task.blur_samples < 2:
         return encode_image(render_linear(scene, task.view, opts, task.frame))
     sub = at_times(scene, task.frame, sample_offsets(task.blur_samples, task.shutter_s))

@@ -67,6 +67,8 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
                    help="renders averaged over the shutter with --motion-blur")
     s.add_argument("--lights", type=Path, metavar="FILE", help="lights file (see render)")
     s.add_argument("--no-specks", action="store_true", help="leave out the dust specks")
+    s.add_argument("--no-wood", action="store_true",
+                   help="truecolour: constant-shaded wood, as the Sigma modes draw it")
     s.set_defaults(handler=film)
 
 
@@ -110,7 +112,7 @@ def _film(args: argparse.Namespace) -> int:
         scene = P.scene_of(args.motion, read_lights(args.lights) if args.lights else None)
     if args.mode == "truecolour":
         look = P.FilmLook(args.size[0], args.size[1], not args.no_specks, True,
-                          args.blur_samples if args.motion_blur else 1)
+                          args.blur_samples if args.motion_blur else 1, not args.no_wood)
         report = P.shoot(scene, views, paths.frames, look, args.dask, args.workers,
                          progress_bar(COMMAND))
         note = (f"{len(report.rendered)} rendered, {len(report.skipped)} already there"

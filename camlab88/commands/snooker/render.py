@@ -1,7 +1,9 @@
 """``camlab88 snooker render CHECKPOINT|SESSION VIEWS --frames DIR``: finished frames
 (thesis 6.4, 6.4.1) — ``period`` and ``fixed`` on the emulated Sigma T5688 over the
 9600-baud line, ``truecolour`` in 24-bit at any size; frame_NNNNN.png numbered as the
-checkpoint's frames (from 1)."""
+checkpoint's frames (from 1). Truecolour frames render in parallel and resume through
+apps.snooker.film's scheduler (a local pool, or ``--dask ADDRESS|local``); the Sigma modes
+draw on one emulated T5688, frame after frame."""
 
 from __future__ import annotations
 
@@ -15,6 +17,7 @@ from pathlib import Path
 from camlab88.runopts import fail, frames_dir, positive, progress
 
 COMMAND = "camlab88 snooker render"
+RECORD = ".camlab88-render.json"  # the resume record, hidden among the frames
 
 
 def _size(text: str) -> tuple[int, int]:
@@ -35,7 +38,14 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
         "counted); fixed: the same with software Bresenham outlines (no leaks); adapted: "
         "firmware outlines anti-aliased where the firmware puts them (no leaks, period's line "
         "time); truecolour: 24-bit at --size. Writes DIR/frame_NNNNN.png numbered as the "
-        "checkpoint's frames.")
+        "checkpoint's frames. Truecolour renders in parallel: one process per core (--workers N), "
+        "or on a Dask cluster (--dask tcp://HOST:8786 from 'dask scheduler' + 'dask worker', "
+        "or --dask local); it resumes: a frame whose PNG is complete and was made from the "
+        "same shot, view and settings (DIR/.camlab88-render.json) is skipped; each frame is "
+        "written atomically and a failed frame or dead worker is retried and reported. The "
+        "Sigma modes draw every frame on one emulated T5688 over the 9600-baud line, one "
+        "after another as in 1984 (the terminal's screen and the line carry state from frame "
+        "to frame), so they are not parallel.")
     s.add_argument("motion", metavar="CHECKPOINT|SESSION")
     s.add_argument("views", metavar="VIEWS", help="the view file (from 'snooker ccl')")
     s.add_argument("--frames", type=frames_dir, metavar="DIR", required=True,
@@ -54,12 +64,29 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
     s.add_argument("--no-specks", action="store_true", help="leave out the dust specks")
     s.add_argument("--no-wood", action="store_true",
                    help="truecolour: constant-shaded wood, as the Sigma modes draw it")
+    s.add_argument("--workers", type=positive, metavar="N",
+                   help="truecolour: processes (default one per core; --dask local: workers)")
+    s.add_argument("--dask", metavar="ADDRESS|local",
+                   help="truecolour: render on a Dask cluster (a scheduler address, or 'local')")
+    s.add_argument("--mp4", type=_movie(".mp4"), metavar="FILE",
+                   help="also film the frames: H.264 at 25 frames/s, no sound")
+    s.add_argument("--gif", type=_movie(".gif"), metavar="FILE",
+                   help="also film the frames as a GIF at 25 frames/s")
     s.set_defaults(handler=render)
+
+
+def _movie(ext: str):  # noqa: ANN202 - an argparse type
+    def check(text: str) -> Path:
+        if Path(text).suffix.lower() != ext:
+            raise argparse.ArgumentTypeError(f"{text}: expected a {ext} file")
+        return Path(text)
+    return check
 
 
 def render(args: argparse.Namespace) -> int:
     from apps.snooker.camera.views import ViewFileError, read_views
     from apps.snooker.checkpoint import CheckpointError
+    from apps.snooker.film.schedule import FilmError
     from apps.snooker.render.lights import LightsError, read_lights
     from apps.snooker.render.scene import load_scene
     from apps.snooker.render.sequence import SequenceError, select_views
@@ -70,6 +97,9 @@ def render(args: argparse.Namespace) -> int:
     if args.mode != "truecolour" and args.size != (768, 512):
         return fail(COMMAND, f"--mode {args.mode} draws the T5688's 768x512 screen; --size "
                     "is for truecolour")
+    if args.mode != "truecolour" and (args.dask or args.workers):
+        return fail(COMMAND, f"--mode {args.mode} draws on one emulated T5688, frame after "
+                    "frame; --dask and --workers are for truecolour")
     try:
         lights = read_lights(args.lights) if args.lights is not None else None
         scene = load_scene(args.motion, lights)
@@ -77,20 +107,46 @@ def render(args: argparse.Namespace) -> int:
                              str(args.views))
         return _render(args, scene, views)
     except (CheckpointError, SessionError, ViewFileError, LightsError, SequenceError,
-            OSError) as exc:
+            FilmError, OSError) as exc:
         return fail(COMMAND, exc)
 
 
 def _render(args: argparse.Namespace, scene, views) -> int:  # noqa: ANN001
+    from apps.snooker.film.movie import write_movie
+    from apps.snooker.film.pipeline import frame_files
+
+    out = Path(args.frames)
+    if args.mode == "truecolour":
+        note = _truecolour(args, scene, views, out)
+    else:
+        note = _sigma(args, scene, views, out)
+    for movie in (args.mp4, args.gif):
+        if movie is not None:
+            write_movie(frame_files(out, views), movie)
+            note += f"; {movie}"
+    print(f"{COMMAND}: {len(views)} frames ({views[0].frame}-{views[-1].frame}) -> {out}"
+          f"{note}", file=sys.stderr)
+    return 0
+
+
+def _truecolour(args: argparse.Namespace, scene, views, out: Path) -> str:  # noqa: ANN001
+    from apps.snooker.film.pipeline import FilmLook, shoot
+    from apps.snooker.film.progress import progress_bar
+
+    look = FilmLook(args.size[0], args.size[1], not args.no_specks, True, 1, not args.no_wood)
+    r = shoot(scene, views, out, look, args.dask, args.workers, progress_bar(COMMAND),
+              manifest=RECORD)
+    return (f"; {len(r.rendered)} rendered, {len(r.skipped)} already there"
+            + "".join(f"; frame {f} retried ({why})" for f, why in r.retries))
+
+
+def _sigma(args: argparse.Namespace, scene, views, out: Path) -> str:  # noqa: ANN001
     from apps.snooker.render.sequence import choose_palette, render_sequence
     from emulator.png import frame_path, write_png
     from emulator.sigma import Terminal
 
-    palette = None
-    if args.mode != "truecolour":
-        palette = choose_palette(scene, views, args.palette,
-                                 progress(f"{COMMAND}: choosing 256 colours"))
-    out = Path(args.frames)
+    palette = choose_palette(scene, views, args.palette,
+                             progress(f"{COMMAND}: choosing 256 colours"))
     out.mkdir(parents=True, exist_ok=True)
     stage = Path(tempfile.mkdtemp(prefix=".render-", dir=out))
     show = progress(COMMAND)
@@ -101,20 +157,16 @@ def _render(args: argparse.Namespace, scene, views) -> int:  # noqa: ANN001
                                               not args.no_wood),
                               start=1):
             write_png(f.image, frame_path(stage, f.frame))
-            if f.line_seconds is not None:
-                line += f.line_seconds
-                leaks += f.leaks or 0
-                gaps += f.gaps or 0
+            line += f.line_seconds or 0.0
+            leaks += f.leaks or 0
+            gaps += f.gaps or 0
             if show is not None:
                 show(k, len(views))
         for f in sorted(stage.iterdir()):
             os.replace(f, out / f.name)
     finally:
         shutil.rmtree(stage, ignore_errors=True)
-    msg = f"{COMMAND}: {len(views)} frames ({views[0].frame}-{views[-1].frame}) -> {out}"
-    if args.mode != "truecolour":
-        msg += (f"; {args.palette} palette; line time {line:.1f} s at 9600 baud "
-                f"({line / len(views):.1f} s a frame); leaking pixels {int(leaks)}"
-                f" ({leaks / len(views):.1f} a frame), gaps {int(gaps)}")
-    print(msg, file=sys.stderr)
-    return 0
+    n = len(views)
+    return (f"; {args.palette} palette; line time {line:.1f} s at 9600 baud "
+            f"({line / n:.1f} s a frame); leaking pixels {int(leaks)}"
+            f" ({leaks / n:.1f} a frame), gaps {int(gaps)}")
