@@ -38,7 +38,7 @@ def test_kas_act_is_the_kas_session_played_over_the_line(tmp_path: Path) -> None
 
 def test_acts_are_listed_in_help() -> None:
     names = [a.name for a in demo.ACTS]
-    assert names == ["sigma", "kas", "paint", "snooker", "snooker_camera", "ca", "shelf"]
+    assert names == ["sigma", "kas", "paint", "snooker", "snooker_camera", "film", "ca", "shelf"]
     assert len(set(names)) == len(names)
 
 

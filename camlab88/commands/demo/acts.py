@@ -43,6 +43,9 @@ ACTS: tuple[Act, ...] = (
     Act("snooker_camera", "snooker camera angles on the Rainbow", (768, 576),
         f"{_HERE}:snooker_camera_frames", "the thesis's example camera script (§6.3.1) over "
         "its shot, in the visualiser (§6.3.2)"),
+    Act("film", "from motion development to rendered film", (768, 512),
+        f"{_HERE}:film_frames", "a break simulated, a camera script interpreted, 36 frames "
+        "rendered in true colour (§6.4)"),
     Act("ca", "the programmable cellular automaton on the Rainbow", (768, 576),
         f"{_HERE}:ca_frames", "Life's Gosper gun in auto mode, panned and zoomed by scripted "
         "mouse input"),
@@ -149,3 +152,10 @@ def snooker_camera_frames() -> Iterator[Any]:
     frames: list[Any] = []
     play_example(session.client, lambda _f: frames.append(session.executor.last_frame.copy()))
     yield from frames
+
+
+def film_frames() -> Iterator[Any]:
+    """A break from the motion program through a camera script to rendered frames."""
+    from apps.snooker.film.demo import film_frames as frames
+
+    yield from frames()
