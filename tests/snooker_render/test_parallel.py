@@ -1,6 +1,7 @@
 """``snooker render --mode truecolour`` through apps.snooker.film's scheduler (issue 14):
 frames from 2 local workers and from ``--dask local`` are byte-identical to the sequential
-renderer's, a rerun skips complete frames and re-renders a torn one, films are written."""
+renderer's, a rerun skips complete frames and re-renders a torn one, films are written;
+the Sigma modes in parallel (a fresh T5688 a frame) equal one terminal frame after frame."""
 
 from __future__ import annotations
 
@@ -80,8 +81,25 @@ def test_gif_and_mp4_are_written(tmp_path: Path, sequential: dict[int, bytes]) -
         assert r.count_frames() == len(sequential)
 
 
-def test_sigma_modes_refuse_workers(capsys: pytest.CaptureFixture[str],
-                                    tmp_path: Path) -> None:
+def test_sigma_modes_refuse_a_size(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
     assert main(["snooker", "render", str(BREAK), str(VIEWS), "--frames", str(tmp_path),
-                 "--workers", "2"]) == 2
-    assert "one emulated T5688" in capsys.readouterr().err
+                 "--workers", "2", "--size", "96x64"]) == 2
+    assert "768x512" in capsys.readouterr().err
+
+
+def test_period_frames_in_parallel_equal_one_terminal(tmp_path: Path,
+                                                      capsys: pytest.CaptureFixture[str]
+                                                      ) -> None:
+    """A fresh T5688 a frame (2 workers) draws exactly what one terminal drawing frame
+    after frame draws; the sequential run's record lets a parallel rerun skip its frames."""
+    period = ["snooker", "render", str(BREAK), str(VIEWS), "--first", "3", "--last", "4"]
+    one, two = tmp_path / "one", tmp_path / "two"
+    assert main([*period, "--frames", str(one)]) == 0
+    assert "line time" in capsys.readouterr().err
+    assert main([*period, "--frames", str(two), "--workers", "2"]) == 0
+    assert "2 rendered (a fresh T5688 each)" in capsys.readouterr().err
+    assert frames(two) == frames(one) and len(frames(one)) == 2
+    assert main([*period, "--frames", str(one), "--workers", "2"]) == 0
+    assert "0 rendered (a fresh T5688 each), 2 already there" in capsys.readouterr().err
+    assert main([*period, "--frames", str(one), "--workers", "2", "--mode", "fixed"]) == 0
+    assert "2 rendered" in capsys.readouterr().err

@@ -1,22 +1,27 @@
 """Where frames are rendered: a local process pool (one process per core) or a Dask cluster
 (``distributed``: a running scheduler's address, or a LocalCluster started here).
 
-Both hand out ``concurrent.futures``-style futures of ``render_png(scene, task)``; the scene
-goes to every worker once (the pool's initializer, Dask's scatter), tasks carry only the
-frame and its view. Workers return PNG bytes, so a remote cluster needs no shared disk.
+Both hand out ``concurrent.futures``-style futures of ``render(scene, task)`` (by default
+``render_png``; any picklable callable -> PNG bytes, e.g. the command layer's one-T5688-a-frame
+Sigma renderer); the scene goes to every worker once (the pool's initializer, Dask's
+scatter), tasks carry only the frame and its view. Workers return PNG bytes, so a remote
+cluster needs no shared disk.
 """
 
 from __future__ import annotations
 
 import multiprocessing
 import os
+from collections.abc import Callable
 from concurrent.futures import Future, ProcessPoolExecutor
 from typing import Any, Protocol
 
 from apps.snooker.film.task import FrameTask, render_png
 from apps.snooker.render.scene import Scene
 
+Render = Callable[[Scene, FrameTask], bytes]
 _WORKER_SCENE: Scene | None = None
+_WORKER_RENDER: Render = render_png
 
 
 class Backend(Protocol):
@@ -30,28 +35,30 @@ class Backend(Protocol):
     def close(self) -> None: ...
 
 
-def _init_worker(scene: Scene) -> None:
-    global _WORKER_SCENE
-    _WORKER_SCENE = scene
+def _init_worker(scene: Scene, render: Render) -> None:
+    global _WORKER_SCENE, _WORKER_RENDER
+    _WORKER_SCENE, _WORKER_RENDER = scene, render
 
 
 def _render_here(task: FrameTask) -> bytes:
     assert _WORKER_SCENE is not None, "the pool's initializer sets the scene"
-    return render_png(_WORKER_SCENE, task)
+    return _WORKER_RENDER(_WORKER_SCENE, task)
 
 
 class LocalPool:
     """One process per core (``spawn``: nothing of the parent's threads is inherited)."""
 
-    def __init__(self, scene: Scene, workers: int | None = None) -> None:
-        self.scene = scene
+    def __init__(self, scene: Scene, workers: int | None = None,
+                 render: Render = render_png) -> None:
+        self.scene, self.render = scene, render
         self.workers = workers or os.cpu_count() or 1
         self.name = f"local pool of {self.workers} processes"
         self._pool = self._start()
 
     def _start(self) -> ProcessPoolExecutor:
         return ProcessPoolExecutor(self.workers, multiprocessing.get_context("spawn"),
-                                   initializer=_init_worker, initargs=(self.scene,))
+                                   initializer=_init_worker,
+                                   initargs=(self.scene, self.render))
 
     def submit(self, task: FrameTask) -> Future:
         return self._pool.submit(_render_here, task)
@@ -74,13 +81,13 @@ class InProcess:
     workers = 1
     name = "this process"
 
-    def __init__(self, scene: Scene) -> None:
-        self.scene = scene
+    def __init__(self, scene: Scene, render: Render = render_png) -> None:
+        self.scene, self.render = scene, render
 
     def submit(self, task: FrameTask) -> Future:
         f: Future = Future()
         try:
-            f.set_result(render_png(self.scene, task))
+            f.set_result(self.render(self.scene, task))
         except Exception as exc:  # noqa: BLE001 - reported per frame like a worker's error
             f.set_exception(exc)
         return f
@@ -97,10 +104,11 @@ class DaskCluster:
     ``workers`` single-threaded worker processes started (and stopped) here."""
 
     def __init__(self, scene: Scene, address: str, workers: int | None = None,
-                 timeout_s: float = 30.0) -> None:
+                 timeout_s: float = 30.0, render: Render = render_png) -> None:
         from distributed import Client, LocalCluster
 
         self._cluster: Any = None
+        self._render = render
         if address == "local":
             n = workers or os.cpu_count() or 1
             self._cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
@@ -115,7 +123,7 @@ class DaskCluster:
 
     def submit(self, task: FrameTask) -> Future:
         # pure=False: a frame asked for again (a retry) is computed again, not looked up
-        dask_future = self._client.submit(render_png, self._scene, task, pure=False)
+        dask_future = self._client.submit(self._render, self._scene, task, pure=False)
         return _as_concurrent(dask_future)
 
     def restart(self) -> None:
@@ -139,8 +147,9 @@ def _as_concurrent(dask_future: Any) -> Future:
     return out
 
 
-def open_backend(scene: Scene, dask: str | None = None, workers: int | None = None) -> Backend:
+def open_backend(scene: Scene, dask: str | None = None, workers: int | None = None,
+                 render: Render = render_png) -> Backend:
     if dask is None:
-        return LocalPool(scene, workers) if (workers or os.cpu_count() or 1) > 1 \
-            else InProcess(scene)
-    return DaskCluster(scene, dask, workers)
+        return LocalPool(scene, workers, render) if (workers or os.cpu_count() or 1) > 1 \
+            else InProcess(scene, render)
+    return DaskCluster(scene, dask, workers, render=render)

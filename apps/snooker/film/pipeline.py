@@ -10,9 +10,9 @@ from pathlib import Path
 
 from apps.snooker.camera import ccl, motion
 from apps.snooker.camera.views import View, write_views
-from apps.snooker.film.backends import open_backend
+from apps.snooker.film.backends import Render, open_backend
 from apps.snooker.film.schedule import MANIFEST, FilmReport, Progress, frame_file, render_film
-from apps.snooker.film.task import FrameTask, scene_digest
+from apps.snooker.film.task import FrameTask, render_png, scene_digest
 from apps.snooker.render.lights import Lights
 from apps.snooker.render.scene import Scene
 
@@ -57,15 +57,25 @@ def script_views(motion_path: str | os.PathLike[str], script: str | os.PathLike[
 
 def shoot(scene: Scene, views: Sequence[View], frames_dir: Path, look: FilmLook,
           dask: str | None = None, workers: int | None = None,
-          progress: Progress | None = None, manifest: str = MANIFEST) -> FilmReport:
+          progress: Progress | None = None, manifest: str = MANIFEST,
+          render: Render = render_png) -> FilmReport:
     """Render every view's frame (skipping complete ones) on the chosen backend;
-    ``manifest``: the resume record's name in ``frames_dir``."""
-    backend = open_backend(scene, dask, workers)
+    ``manifest``: the resume record's name in ``frames_dir``; ``render``: scene, task ->
+    PNG bytes (its repr is part of every frame's resume key)."""
+    backend = open_backend(scene, dask, workers, render)
+    digest = film_digest(scene, render)
     try:
-        return render_film([look.task(v) for v in views], frames_dir, backend,
-                           scene_digest(scene), progress, manifest=manifest)
+        return render_film([look.task(v) for v in views], frames_dir, backend, digest,
+                           progress, manifest=manifest)
     finally:
         backend.close()
+
+
+def film_digest(scene: Scene, render: Render = render_png) -> str:
+    """What a frame is made from, for its resume key: the scene and (unless the truecolour
+    default) the renderer's repr (mode, palette, ...)."""
+    digest = scene_digest(scene)
+    return digest if render is render_png else f"{digest} {render!r}"
 
 
 def frame_files(frames_dir: Path, views: Sequence[View]) -> list[Path]:

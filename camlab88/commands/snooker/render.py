@@ -12,6 +12,7 @@ import os
 import shutil
 import sys
 import tempfile
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from camlab88.runopts import fail, frames_dir, positive, progress
@@ -43,9 +44,11 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
         "or --dask local); it resumes: a frame whose PNG is complete and was made from the "
         "same shot, view and settings (DIR/.camlab88-render.json) is skipped; each frame is "
         "written atomically and a failed frame or dead worker is retried and reported. The "
-        "Sigma modes draw every frame on one emulated T5688 over the 9600-baud line, one "
-        "after another as in 1984 (the terminal's screen and the line carry state from frame "
-        "to frame), so they are not parallel.")
+        "Sigma modes by default draw every frame on one emulated T5688 over the 9600-baud "
+        "line, one after another as in 1984, and report line time and leaks; with --workers "
+        "N or --dask they go parallel too: each frame on a fresh emulated T5688 (LUT loaded, "
+        "screen cleared), byte-identical to the sequential frames since every frame starts "
+        "from a cleared screen, but without the line statistics.")
     s.add_argument("motion", metavar="CHECKPOINT|SESSION")
     s.add_argument("views", metavar="VIEWS", help="the view file (from 'snooker ccl')")
     s.add_argument("--frames", type=frames_dir, metavar="DIR", required=True,
@@ -65,9 +68,10 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
     s.add_argument("--no-wood", action="store_true",
                    help="truecolour: constant-shaded wood, as the Sigma modes draw it")
     s.add_argument("--workers", type=positive, metavar="N",
-                   help="truecolour: processes (default one per core; --dask local: workers)")
+                   help="processes (truecolour default: one per core; Sigma modes: "
+                   "sequential unless given; --dask local: its workers)")
     s.add_argument("--dask", metavar="ADDRESS|local",
-                   help="truecolour: render on a Dask cluster (a scheduler address, or 'local')")
+                   help="render on a Dask cluster (a scheduler address, or 'local')")
     s.add_argument("--mp4", type=_movie(".mp4"), metavar="FILE",
                    help="also film the frames: H.264 at 25 frames/s, no sound")
     s.add_argument("--gif", type=_movie(".gif"), metavar="FILE",
@@ -97,9 +101,6 @@ def render(args: argparse.Namespace) -> int:
     if args.mode != "truecolour" and args.size != (768, 512):
         return fail(COMMAND, f"--mode {args.mode} draws the T5688's 768x512 screen; --size "
                     "is for truecolour")
-    if args.mode != "truecolour" and (args.dask or args.workers):
-        return fail(COMMAND, f"--mode {args.mode} draws on one emulated T5688, frame after "
-                    "frame; --dask and --workers are for truecolour")
     try:
         lights = read_lights(args.lights) if args.lights is not None else None
         scene = load_scene(args.motion, lights)
@@ -140,13 +141,81 @@ def _truecolour(args: argparse.Namespace, scene, views, out: Path) -> str:  # no
             + "".join(f"; frame {f} retried ({why})" for f, why in r.retries))
 
 
+@dataclass(frozen=True)
+class SigmaFrames:
+    """One frame on a fresh emulated T5688 (set up, LUT loaded, the frame's orders over the
+    9600-baud line, the screen read back) -> PNG bytes: a picklable renderer for the film
+    scheduler's workers. Byte-identical to one terminal drawing frame after frame, because
+    every frame starts from a cleared screen (checked in tests/snooker_render/test_parallel.py)."""
+
+    mode: str
+    specks: bool
+    palette_sha: str
+    palette: object = field(repr=False, compare=False)
+
+    def __call__(self, scene, task) -> bytes:  # noqa: ANN001
+        from apps.snooker.render.sequence import render_sequence
+        from emulator.sigma import Terminal
+        from protocols.png import png_bytes
+
+        f = next(render_sequence(scene, [task.view], self.mode, (768, 512), self.palette,
+                                 lambda: Terminal("t5688"), self.specks))
+        return png_bytes(f.image)
+
+
+def sigma_frames(mode: str, specks: bool, palette) -> SigmaFrames:  # noqa: ANN001
+    import hashlib
+
+    import numpy as np
+
+    lut = np.ascontiguousarray(palette.linear, dtype=np.float64).tobytes()
+    return SigmaFrames(mode, specks, hashlib.sha256(lut).hexdigest()[:32], palette)
+
+
+def _sigma_parallel(args: argparse.Namespace, scene, views, out: Path,  # noqa: ANN001
+                    render: SigmaFrames) -> str:
+    from apps.snooker.film.pipeline import FilmLook, shoot
+    from apps.snooker.film.progress import progress_bar
+
+    r = shoot(scene, views, out, FilmLook(specks=render.specks), args.dask, args.workers,
+              progress_bar(COMMAND), manifest=RECORD, render=render)
+    return (f"; {args.palette} palette; {len(r.rendered)} rendered (a fresh T5688 each), "
+            f"{len(r.skipped)} already there; line statistics: render without --workers"
+            + "".join(f"; frame {f} retried ({why})" for f, why in r.retries))
+
+
 def _sigma(args: argparse.Namespace, scene, views, out: Path) -> str:  # noqa: ANN001
-    from apps.snooker.render.sequence import choose_palette, render_sequence
-    from emulator.png import frame_path, write_png
-    from emulator.sigma import Terminal
+    from apps.snooker.render.sequence import choose_palette
 
     palette = choose_palette(scene, views, args.palette,
                              progress(f"{COMMAND}: choosing 256 colours"))
+    render = sigma_frames(args.mode, not args.no_specks, palette)
+    if args.workers or args.dask:
+        return _sigma_parallel(args, scene, views, out, render)
+    stats = _sigma_sequential(args, scene, views, out, palette)
+    _record(scene, views, out, render)
+    return stats
+
+
+def _record(scene, views, out: Path, render: SigmaFrames) -> None:  # noqa: ANN001
+    """The frames just drawn, in the resume record (a parallel rerun skips them)."""
+    from apps.snooker.film.pipeline import FilmLook, film_digest
+    from apps.snooker.film.schedule import Manifest
+    from apps.snooker.film.task import task_key
+
+    look = FilmLook(specks=render.specks)
+    record, digest = Manifest(out / RECORD), film_digest(scene, render)
+    for v in views:
+        record.put(int(v.frame), task_key(digest, look.task(v)))
+    record.save()
+
+
+def _sigma_sequential(args: argparse.Namespace, scene, views, out: Path,  # noqa: ANN001
+                      palette) -> str:  # noqa: ANN001
+    from apps.snooker.render.sequence import render_sequence
+    from emulator.png import frame_path, write_png
+    from emulator.sigma import Terminal
+
     out.mkdir(parents=True, exist_ok=True)
     stage = Path(tempfile.mkdtemp(prefix=".render-", dir=out))
     show = progress(COMMAND)
