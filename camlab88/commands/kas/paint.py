@@ -245,22 +245,3 @@ class PaintTarget:
     def time(self) -> Fraction:
         return self.clock.exact
 
-
-def demo_frames() -> Any:
-    """The demo's painting act: the demo walk (with its rising sun) auto-painted from three
-    operations done on its middle frame, every fourth frame painted and replayed double-
-    buffered on a T5688 at 9600 baud; one picture per 1/25 s of line time (about 9 s)."""
-    from apps.kas import demo
-    from apps.kas.paint.ops import Op, OpsFile
-    from apps.kas.paint.program import PaintProgram
-    from apps.kas.paint.replay import periods
-    from emulator.sigma import Terminal
-
-    seq = demo.build()
-    mid = len(seq.frames) // 2
-    sun = tuple(seq.frames[mid - 1].chains[2].centre())
-    ops = OpsFile(ops=[Op("fill", 3, chains=(2,)), Op("fill", 5, chains=(1,)),
-                       Op("region", 27, at=sun)], painted=mid)
-    term = Terminal("t5688")
-    for _ in periods(PaintProgram(seq, ops), term, 9600, 25, range(1, len(seq.frames) + 1, 4)):
-        yield term.frame()
