@@ -36,3 +36,24 @@ def test_a_bad_script_renders_nothing(tmp_path: Path, capsys) -> None:  # noqa: 
     err = capsys.readouterr().err
     assert code == 2 and f"{bad}:3:" in err
     assert not (tmp_path / "s_frames").exists() and not (tmp_path / "s.mp4").exists()
+
+
+def test_no_wood_frames_are_render_no_wood_frames(tmp_path: Path) -> None:
+    """--no-wood (constant-shaded surround, as the Sigma draws it) reaches every frame: the
+    film's frames are `snooker render --no-wood`'s over the film's own view file."""
+    out = tmp_path / "shot.gif"
+    args = ["snooker", "film", str(BREAK), str(SCRIPT), "--out", str(out), "--size", "48x32",
+            "--workers", "1"]
+    assert main([*args, "--no-wood"]) == 0
+    plain = tmp_path / "plain"
+    assert main(["snooker", "render", str(BREAK), str(tmp_path / "shot.views"), "--frames",
+                 str(plain), "--mode", "truecolour", "--size", "48x32", "--no-wood",
+                 "--first", "1", "--last", "3", "--workers", "1"]) == 0
+    for k in (1, 2, 3):
+        name = f"frame_0000{k}.png"
+        assert (plain / name).read_bytes() == (tmp_path / "shot_frames" / name).read_bytes()
+    wood = tmp_path / "wood"
+    assert main(["snooker", "render", str(BREAK), str(tmp_path / "shot.views"), "--frames",
+                 str(wood), "--mode", "truecolour", "--size", "48x32", "--first", "1",
+                 "--last", "1", "--workers", "1"]) == 0
+    assert (wood / "frame_00001.png").read_bytes() != (plain / "frame_00001.png").read_bytes()
