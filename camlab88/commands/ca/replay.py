@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 
 
@@ -49,10 +48,6 @@ def _replay(args: argparse.Namespace) -> int:
 
 
 def _print_stats(stats: dict, as_json: bool) -> None:
-    if as_json:
-        print(json.dumps(stats, sort_keys=True))
-        return
-    box = stats["bbox"]
-    kinds = ", ".join(f"{k}: {v}" for k, v in stats["by_type"].items()) or "none"
-    print(f"generation {stats['generation']}  population {stats['population']}  "
-          f"by type {{{kinds}}}  bbox {'empty' if box is None else tuple(box)}")
+    from apps.ca.stats_text import stats_text
+
+    print(stats_text(stats, as_json))
