@@ -31,8 +31,8 @@ class KasFileError(ValueError):
 
     def __init__(self, path: str | os.PathLike[str], line: int, message: str,
                  column: int = 0) -> None:
-        super().__init__(f"{path}:{line}:{column}: {message}" if column else
-                         f"{path}:{line}: {message}")
+        where = f"{path}:{line}:{column}" if column else f"{path}:{line}" if line else f"{path}"
+        super().__init__(f"{where}: {message}")  # line 0: the file as a whole
         self.path = str(path)
         self.line = line
 

@@ -91,3 +91,20 @@ def test_guide_keyframe_highlighted_on_screen() -> None:
     t2.feed(front.start())
     assert front.editor.next_guide_chain() == 1
     assert (t2.indices() == L.GUIDE_NEXT).sum() > 20
+
+
+def test_a_script_file_with_a_bad_byte_a_directory_or_no_file_is_named(tmp_path) -> None:
+    """Issue 15: non-UTF-8 KAS scripts named Python's codec, not the file, line and column."""
+    import pytest
+
+    from apps.kas.files import KasFileError
+    from apps.kas.program.script import load_timed_script
+
+    bad = tmp_path / "bad.script"
+    bad.write_bytes(b"wait 1\nkey a\n\xff\xfe bad\n")
+    with pytest.raises(KasFileError, match=r"bad\.script:3:1: byte 0xff is not UTF-8"):
+        load_timed_script(bad)
+    with pytest.raises(KasFileError, match=r": is a directory"):
+        load_timed_script(tmp_path)
+    with pytest.raises(KasFileError, match=r"missing\.script: cannot read"):
+        load_timed_script(tmp_path / "missing.script")

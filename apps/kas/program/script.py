@@ -231,10 +231,10 @@ class Session:
 
 def load_timed_script(path: Any) -> list[TimedEvent]:
     """Read and parse a script file; an unreadable or non-UTF-8 file names the file."""
-    from pathlib import Path
+    from protocols.textinput import InputError, read_text
 
-    try:
-        text = Path(path).read_bytes().decode("utf-8")
-    except UnicodeDecodeError as exc:
-        raise KasFileError(str(path), 1, f"not UTF-8 text (byte {exc.start})") from None
+    try:  # a directory, an unreadable file or a bad byte: named with its line and column
+        text = read_text(path)
+    except InputError as exc:
+        raise KasFileError(exc.name or str(path), exc.line, exc.reason, exc.column) from None
     return parse_timed_script(text, str(path))
