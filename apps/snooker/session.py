@@ -155,6 +155,22 @@ class Session:
 
         self._edit("all balls stopped", fn=fn)
 
+    def change_table(self, **changes: float) -> Table:
+        """Alter table constants (ball size, cushion restitution, friction, table size) from
+        the current frame on (§6.2; §6.5: "different sizes of balls and different
+        coefficients of restitution for the cushions"); the table view and the saved session
+        then use the new constants.  Refused if a ball on the table would no longer fit."""
+        if "frame_rate" in changes:  # time frame n is at n / frame_rate: fixed for a session
+            raise SessionError("the frame rate cannot change during a session")
+        try:
+            table = check_table(replace(self.table, **changes))
+        except (TypeError, ValueError) as exc:
+            raise SessionError(_reason(exc)) from None
+        _check_balls_fit(table, self.balls)
+        note = "table: " + ", ".join(f"{k}={v:g}" for k, v in changes.items())
+        self.cursor = self.timeline.change_table(self.cursor, table, note)
+        return table
+
     # --- aiming ----------------------------------------------------------------------
     def aim_to_pot(self, ball: int, x: float, y: float) -> aiming.Aim:
         """Aim at the pocket nearest the point (x, y) the animator indicated."""
@@ -279,6 +295,24 @@ def check_table(table: Table) -> Table:
     if not 1 <= table.frame_rate <= MAX_FRAME_RATE:
         raise SessionError(f"table: frame_rate {table.frame_rate} is outside 1..{MAX_FRAME_RATE}")
     return table
+
+
+def _check_balls_fit(table: Table, balls: BallState) -> None:
+    """Every ball on the table must lie clear of the cushions and of the other balls at the
+    new size; otherwise the collision equations of §6.2 have no valid first root."""
+    r, eps = table.radius, 1e-9
+    on = [i for i in range(len(BALL_NAMES)) if balls.on_table[i]]
+    for i in on:
+        x, y = balls.pos[i]
+        if not (r - eps <= x <= table.length_m - r + eps
+                and r - eps <= y <= table.width_m - r + eps):
+            raise SessionError(f"the {BALL_NAMES[i]} would not fit between the cushions")
+    for k, i in enumerate(on):
+        for j in on[k + 1:]:
+            d = math.hypot(*(balls.pos[i] - balls.pos[j]))
+            if d < 2 * r - eps:
+                raise SessionError(f"the {BALL_NAMES[i]} and the {BALL_NAMES[j]} would "
+                                   f"overlap ({d:.4f} m apart, diameter {2 * r:.4f} m)")
 
 
 def _reason(exc: BaseException) -> str:

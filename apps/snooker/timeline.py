@@ -202,6 +202,17 @@ class Timeline:
         self.event_frames.append(Frame("event", f.index, balls, f.game, shot, ev))
         return Cursor("event", len(self.event_frames) - 1)
 
+    def change_table(self, c: Cursor, table: Table, note: str) -> Cursor:
+        """The animator altered the table's constants at frame `c` (§6.2: they "may be
+        altered by the animator"): from `c` on the simulation uses `table`.  The change is a
+        significant event; the later frames become invalid and, having been simulated with
+        the old constants, cannot be recovered (nor can older invalid frames)."""
+        at = self.intervene(c, self.frame(c).balls, note)
+        self.table = table
+        self.physics = Physics(table)
+        self.invalid.clear()
+        return at
+
     def recover(self) -> bool:
         """Undo the most recent restart: the frames made invalid come back and what was
         simulated since is dropped.  False if there is nothing to recover."""

@@ -22,7 +22,7 @@ import numpy as np
 
 from apps.snooker import aiming
 from apps.snooker.events import EventKind
-from apps.snooker.program import arrows, layout, menus
+from apps.snooker.program import arrows, constants, layout, menus
 from apps.snooker.program.layout import TableView
 from apps.snooker.program.pads import (
     DOTS,
@@ -61,6 +61,7 @@ class Program:
         self.display = Display(client, TableView.fit(self.session.table))
         self.green = menus.green_menu(client)
         self.orange = menus.orange_menu(client)
+        self.constants = constants.table_menu(client)
         self.cursor = (layout.SCREEN_W / 2, layout.SCREEN_H / 2)
         self.mouse: tuple[int, int] | None = None
         self.buttons = 0
@@ -274,6 +275,9 @@ class Program:
             elif name in ("n", "escape"):
                 self.reject()
             return
+        if name == constants.KEY and self.mode in ("idle", "running", "replay"):
+            self.open_menu(table_constants=True)
+            return
         if not self.mode.startswith("keys:"):
             return
         if name == "return":
@@ -289,12 +293,17 @@ class Program:
             self.help_text = f"{self.prompt}\n> {self.text}_"
 
     # ------------------------------------------------------------------ menus
-    def open_menu(self) -> None:
+    def open_menu(self, table_constants: bool = False) -> None:
         if self.mode in ("running", "replay"):
-            self.mode = "idle"  # the middle button interrupts
+            self.mode = "idle"  # the middle button (or the table key) interrupts
         cx, cy = int(self.cursor[0]), int(self.cursor[1])
-        self.ball = self.selected()
-        if self.ball is None:
+        self.ball = None if table_constants else self.selected()
+        if table_constants:
+            m = self.constants
+            m.open(cx + m.width // 2 + 12, cy)
+            self.say("Table constants: move to an item and click the middle button\n"
+                     "(they apply from this frame on).", constants.COLOUR)
+        elif self.ball is None:
             m = self.green  # "just to the right of the cursor"
             m.open(cx + m.width // 2 + 12, cy)
         else:
@@ -312,6 +321,9 @@ class Program:
         self.mode = "idle"
         if item is None or item == menus.DO_NOTHING:
             self.say(START_HELP, HELP_COLOUR)
+            return
+        if item in constants.CONSTANTS:
+            self.ask("table:" + item, constants.prompt(item, self.session.table))
             return
         colour = menus.HIGHLIGHT[item]
         b = self.ball
@@ -368,6 +380,8 @@ class Program:
 
     @staticmethod
     def menu_item_colour(purpose: str) -> str | None:
+        if purpose.startswith("table:"):
+            return constants.HIGHLIGHT[purpose[6:]]
         return {"replay": menus.HIGHLIGHT[menus.REPLAY],
                 "position": menus.HIGHLIGHT[menus.POSITION_KEYS],
                 "velocity": menus.HIGHLIGHT[menus.VELOCITY_KEYS],
@@ -411,6 +425,8 @@ class Program:
                 self.mode = "replay"
                 self.say(f"Replaying frames {first}..{last} at 25 frames/s.\n"
                          "Middle button: stop.", colour)
+            elif purpose.startswith("table:"):
+                self.alter_table(purpose[6:], nums, colour)
             elif purpose == "aim_speed":
                 self.aim_speed = nums[0] if nums else 0.0
                 self.ask("aim_cushions", "Cushions to hit on the way, in order (left right "
@@ -456,6 +472,18 @@ class Program:
         self.restore = None
         self.mode = "idle"
         self.say(START_HELP, HELP_COLOUR)
+
+    def alter_table(self, item: str, nums: list[float], colour: str) -> None:
+        """New table constants from the current frame on; the table view is redrawn."""
+        if not nums:
+            self.say(f"{item} kept.", colour)
+            return
+        table = self.session.change_table(**constants.changes(item, nums))
+        self.display.view = TableView.fit(table)
+        self.display.draw_table()
+        self.display.last_scene = None  # the balls' size or place on the screen changed
+        self.say(f"{item} changed from this frame on. Right button: restart simulation.",
+                 colour)
 
     def begin_velocity(self, ball: int | None, colour: str) -> None:
         if ball is None or not self.session.balls.on_table[ball]:
