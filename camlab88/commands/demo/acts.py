@@ -5,16 +5,15 @@ second of device time, made by a program talking to an emulated device."""
 from __future__ import annotations
 
 import importlib
-from collections.abc import Callable, Iterator
-from dataclasses import dataclass
-from fractions import Fraction
-from typing import Any
+from typing import TYPE_CHECKING, Any, NamedTuple
+
+if TYPE_CHECKING:
+    from collections.abc import Iterator
 
 FPS = 25
 
 
-@dataclass(frozen=True)
-class Act:
+class Act(NamedTuple):  # a NamedTuple, not a dataclass: every command builds this parser
     name: str
     title: str
     size: tuple[int, int]   # device pixels (w, h)
@@ -23,8 +22,7 @@ class Act:
 
     def play(self) -> Iterator[Any]:
         module, func = self.frames.rsplit(":", 1)
-        make: Callable[[], Iterator[Any]] = getattr(importlib.import_module(module), func)
-        return make()
+        return getattr(importlib.import_module(module), func)()
 
 
 _HERE = "camlab88.commands.demo.acts"
@@ -57,6 +55,8 @@ ACTS: tuple[Act, ...] = (
 
 def sigma_frames() -> Iterator[Any]:
     """The Sigma showcase: the screen after each 1/25 s of line time at 9600 baud."""
+    from fractions import Fraction  # imported here: every command builds the demo's parser
+
     from emulator.sigma import Terminal
     from protocols.link import LineSettings, chunks_by_period
     from protocols.sigma.demo import sigma_demo_stream
@@ -70,6 +70,8 @@ def sigma_frames() -> Iterator[Any]:
 
 def kas_frames() -> Iterator[Any]:
     """KAS on the T5684: the host's chunks written to a 9600-baud line at their times."""
+    from fractions import Fraction
+
     from apps.kas.program import demo_session
     from emulator.sigma import Terminal
 
