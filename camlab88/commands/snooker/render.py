@@ -30,25 +30,29 @@ def _size(text: str) -> tuple[int, int]:
     return int(w), int(h)
 
 
+DESCRIPTION = (
+    "Render every frame of a view file over a checkpoint or session. "
+    "--mode period: the 1984 program on the emulated T5688 over the 9600-baud line "
+    "(firmware outlines + flood fill: polygon colour leaks past the anti-aliased edges, "
+    "counted); fixed: the same with software Bresenham outlines (no leaks); adapted: "
+    "firmware outlines anti-aliased where the firmware puts them (no leaks, period's line "
+    "time); truecolour: 24-bit at --size. Writes DIR/frame_NNNNN.png numbered as the "
+    "checkpoint's frames. Truecolour renders in parallel: one process per core (--workers N), "
+    "or on a Dask cluster (--dask tcp://HOST:8786 from 'dask scheduler' + 'dask worker', "
+    "or --dask local); it resumes: a frame whose PNG is complete and was made from the "
+    "same shot, view and settings (DIR/.camlab88-render.json) is skipped; each frame is "
+    "written atomically and a failed frame or dead worker is retried and reported. The "
+    "Sigma modes by default draw every frame on one emulated T5688 over the 9600-baud "
+    "line, one after another as in 1984, and report line time and leaks; with --workers "
+    "N or --dask they go parallel too: each frame on a fresh emulated T5688 (LUT loaded, "
+    "screen cleared), byte-identical to the sequential frames since every frame starts "
+    "from a cleared screen, but without the line statistics.")
+
+
 def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     s = actions.add_parser(
         "render", help="finished frames on the emulated Sigma T5688 or in true colour (§6.4)",
-        description="Render every frame of a view file over a checkpoint or session. "
-        "--mode period: the 1984 program on the emulated T5688 over the 9600-baud line "
-        "(firmware outlines + flood fill: polygon colour leaks past the anti-aliased edges, "
-        "counted); fixed: the same with software Bresenham outlines (no leaks); adapted: "
-        "firmware outlines anti-aliased where the firmware puts them (no leaks, period's line "
-        "time); truecolour: 24-bit at --size. Writes DIR/frame_NNNNN.png numbered as the "
-        "checkpoint's frames. Truecolour renders in parallel: one process per core (--workers N), "
-        "or on a Dask cluster (--dask tcp://HOST:8786 from 'dask scheduler' + 'dask worker', "
-        "or --dask local); it resumes: a frame whose PNG is complete and was made from the "
-        "same shot, view and settings (DIR/.camlab88-render.json) is skipped; each frame is "
-        "written atomically and a failed frame or dead worker is retried and reported. The "
-        "Sigma modes by default draw every frame on one emulated T5688 over the 9600-baud "
-        "line, one after another as in 1984, and report line time and leaks; with --workers "
-        "N or --dask they go parallel too: each frame on a fresh emulated T5688 (LUT loaded, "
-        "screen cleared), byte-identical to the sequential frames since every frame starts "
-        "from a cleared screen, but without the line statistics.")
+        description=DESCRIPTION)
     s.add_argument("motion", metavar="CHECKPOINT|SESSION")
     s.add_argument("views", metavar="VIEWS", help="the view file (from 'snooker ccl')")
     s.add_argument("--frames", type=frames_dir, metavar="DIR", required=True,
@@ -67,6 +71,12 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
     s.add_argument("--no-specks", action="store_true", help="leave out the dust specks")
     s.add_argument("--no-wood", action="store_true",
                    help="truecolour: constant-shaded wood, as the Sigma modes draw it")
+    _add_sequence_options(s)
+    s.set_defaults(handler=render)
+
+
+def _add_sequence_options(s: argparse.ArgumentParser) -> None:
+    """Where the frames are rendered, and the films made of them (issue 14)."""
     s.add_argument("--workers", type=positive, metavar="N",
                    help="processes (truecolour default: one per core; Sigma modes: "
                    "sequential unless given; --dask local: its workers)")
@@ -76,7 +86,6 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
                    help="also film the frames: H.264 at 25 frames/s, no sound")
     s.add_argument("--gif", type=_movie(".gif"), metavar="FILE",
                    help="also film the frames as a GIF at 25 frames/s")
-    s.set_defaults(handler=render)
 
 
 def _movie(ext: str):  # noqa: ANN202 - an argparse type
