@@ -47,7 +47,8 @@ MAX_TEXT = 60  # keyboard entry fits the help area
 HELP_COLOUR = "#e8e8e8"
 WARN_COLOUR = "#ffb0b0"
 START_HELP = ("Middle button: menu of options (over a ball: the ball's menu).\n"
-              "Right: restart simulation.  Left held: mouse moves x4.")
+              "Right: restart simulation.  Left held: mouse moves x4.\n"
+              "Key t: table constants (ball size, cushion restitution, friction).")
 
 
 class Program:
