@@ -67,6 +67,11 @@ def test_autopaint_records_every_frames_seeds_and_replay_uses_them() -> None:
     assert all(np.array_equal(x, y) for x, y in zip(a, b, strict=True))
 
 
+@pytest.mark.claim(
+    "§3.3: the operations file stores seed points frame by frame, so local changes in shading can"
+    " be made to individual frames",
+    measured="a seed removed by hand from one frame's entry changes that frame only",
+    verdict="agrees")
 def test_a_frames_seed_removed_by_hand_fills_one_lobe_in_that_frame_only() -> None:
     moved = Chain.from_points([(x + 0.25, y) for x, y in EIGHT_PTS])
     seq = AnimSequence([Drawing([EIGHT]), Drawing([moved])])

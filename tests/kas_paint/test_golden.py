@@ -6,6 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from apps.kas.model import AnimSequence, Chain, Drawing
 from apps.kas.paint import areas
@@ -40,6 +41,10 @@ FIG_OPS = [Op("fill", 10, chains=(1,)), Op("fill", 1, chains=(2,)), Op("fill", 1
            Op("fill", 2, chains=(4,)), Op("fill", 4, chains=(5, 6)), Op("line", 5, chains=(6,))]
 
 
+@pytest.mark.claim(
+    "§3.3: figure 3.8, a painted outline image",
+    measured="golden image of a painted frame on the emulated T5688",
+    verdict="agrees (the drawing is ours; the figure's artwork is not reproduced)")
 def test_figure_38_painted_outline_image() -> None:
     term = Terminal("t5688")
     prog = PaintProgram(figure_38(), OpsFile(ops=FIG_OPS))
@@ -51,6 +56,11 @@ def test_figure_38_painted_outline_image() -> None:
     assert_matches_golden(term.frame(), DATA / "figure_3_8.png")
 
 
+@pytest.mark.claim(
+    "§3.3: figure 3.7, the four working areas (painting, colour mixing, two double buffers) in "
+    "the T5688's drawing area four times the screen, shown at quarter size",
+    measured="golden image of the emulated terminal's whole drawing area shown reduced",
+    verdict="agrees")
 def test_four_working_areas_quarter_size() -> None:
     seq = walk(4)
     ops = OpsFile(ops=[Op("fill", 3, chains=(2,)), Op("fill", 5, chains=(1,))], painted=2)

@@ -4,6 +4,7 @@ LUT shows the highlight colour whatever the other seven planes hold (thesis §3.
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from apps.kas.paint import planes
 from apps.kas.paint.ops import Op, OpsFile
@@ -12,6 +13,11 @@ from emulator.sigma import Terminal
 from tests.kas_paint.helpers import walk
 
 
+@pytest.mark.claim(
+    "§3.3: highlighting writes a 1 into the highlight plane leaving the other seven planes "
+    "untouched; clearing that plane removes every highlight with no redraw",
+    measured="the T5688's planes before and after select and clear: only plane 7 changes",
+    verdict="agrees")
 def test_select_and_clear_touch_only_the_highlight_plane() -> None:
     seq = walk(5)
     prog = PaintProgram(seq, OpsFile(ops=[Op("fill", 3, chains=(2,)), Op("fill", 5, chains=(1,))]))
@@ -31,6 +37,11 @@ def test_select_and_clear_touch_only_the_highlight_plane() -> None:
     assert np.array_equal(term.planes, before)
 
 
+@pytest.mark.claim(
+    "§3.3: on the 8-plane T5688, 32 fill colours in five planes, the four-colour outlines in two,"
+    " one highlight plane; the lookup table shows the highlight colour wherever its bit is set",
+    measured="the lookup table over all 256 pixel values: highlight wins, then outline, then fill",
+    verdict="agrees")
 def test_lut_highlight_wins_then_outline_then_fill() -> None:
     fills = [(i, i, i) for i in range(32)]
     outs = [(0, 0, 0), (1, 2, 3), (4, 5, 6), (7, 8, 9)]

@@ -100,6 +100,11 @@ def _centre_colour(text: str) -> int:
     return int(term.planes[256, 768 + 384] & 0x1F)
 
 
+@pytest.mark.claim(
+    "§3.3: the order of shading is that of the first frame's colouring, and can be altered by "
+    "editing the operations file",
+    measured="two operations swapped by hand in the file: the other one comes out in front",
+    verdict="agrees")
 def test_hand_reordering_changes_front_to_back() -> None:
     text = TEXT.replace("frame 1 ops 1\ntouch 2.5 2.5 colour 2\n", "")
     assert _centre_colour(text) == 2
@@ -108,6 +113,10 @@ def test_hand_reordering_changes_front_to_back() -> None:
     assert _centre_colour(swapped) == 1
 
 
+@pytest.mark.claim(
+    "§3.3: palette entries edited by mixing defined colours or by stepping red, green and blue",
+    measured="the mixed and stepped entries' RGB values",
+    verdict="agrees")
 def test_palette_mix_and_rgb_steps() -> None:
     p = Palette([(0, 0, 0), (255, 0, 0), (0, 0, 255), (9, 9, 9)])
     assert p.mix(3, {1: 1, 2: 3}) == (64, 0, 191)

@@ -62,6 +62,10 @@ def test_from_until_and_default_start() -> None:
     assert r.focal.tolist()[:10] == [50, 50, 40, 40, 40, 40, 60, 60, 60, 60]
 
 
+@pytest.mark.claim(
+    "§6.3.1: moving and zooming commands change the parameter linearly over the frames they span",
+    measured="the parameter at each frame of a moving / zoom command",
+    verdict="agrees")
 def test_moving_and_zoom_are_linear_in_frame_number() -> None:
     r = run(": from 2 until 6; observer moving from (0,0,1) to (4,8,1); "
             "focal length from 20 to 100 :")

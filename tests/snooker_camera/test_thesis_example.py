@@ -46,6 +46,12 @@ def test_the_shipped_shot_is_what_the_aiming_tools_make() -> None:
     assert s.checkpoint().to_text() == (DATA / "pink_shot.checkpoint").read_text()
 
 
+@pytest.mark.claim(
+    "§6.3.1: the example script's commands give the observer, viewpoint and focal length each "
+    "frame as the text explains",
+    measured="observer, viewpoint and focal length of every frame against values worked out by "
+             "hand",
+    verdict="agrees")
 def test_observer_viewpoint_focal_frame_by_frame(result: ccl.Interpretation) -> None:
     p = read(DATA / "pink_shot.checkpoint").positions
     cam3 = np.array([7.3, -4.5, 1.2])
@@ -74,6 +80,11 @@ def test_periods_and_the_session_file_give_the_same(result: ccl.Interpretation) 
     assert again.views() == result.views()
 
 
+@pytest.mark.claim(
+    "§6.3.1: the example camera script, as printed, is interpreted and its sequence viewed",
+    measured="the printed script is the shipped one, byte for byte; the demo interprets it and "
+             "shows its 75 frames in order",
+    verdict="agrees")
 def test_the_demo_plays_the_example_as_printed() -> None:
     from apps.snooker.visualiser.demo import EXAMPLE_SCRIPT, play_example
     from emulator.rainbow.session import in_process

@@ -75,6 +75,12 @@ def test_straight_down_worked_by_hand() -> None:
     assert ys.mean() + 0.5 == pytest.approx(288 - k * 0.5 / (h - R), abs=0.5)
 
 
+@pytest.mark.claim(
+    "§6.3.2: a virtual one-colour background pad with no memory; the lookup tables put the balls "
+    "above the table above the background, empty parts transparent",
+    measured="pixels of each layer through the Rainbow's band structure; the background pad has "
+             "depth 0",
+    verdict="agrees")
 def test_layers_balls_over_table_over_background_and_potted_balls_hidden() -> None:
     c = still(1)
     c[0, 8:] = (9.0, 9.0, R)
@@ -90,6 +96,12 @@ def test_layers_balls_over_table_over_background_and_potted_balls_hidden() -> No
     assert rb.device.graph.nodes[d.background].depth == 0  # virtual: no memory
 
 
+@pytest.mark.claim(
+    "§6.3.2: two table pads and two ball pads double-buffered; the table is redrawn only when the"
+    " viewing parameters change",
+    measured="the pad on show is untouched while drawing; the ball pads swap every frame, the "
+             "table pads only when the view moved (2 redraws in 4 frames)",
+    verdict="agrees")
 def test_double_buffering_and_table_redrawn_only_when_the_view_changes() -> None:
     c = np.repeat(still(1), 4, axis=0)
     c[:, 7:] = (9.0, 9.0, R)
@@ -144,6 +156,10 @@ def test_frames_are_reported_numbered_as_the_checkpoint() -> None:
     assert rb.device.frame_count == 12  # two device frames each: 25 frames/s at 50 Hz
 
 
+@pytest.mark.claim(
+    "§6.3.2: the image is properly clipped to the viewing area",
+    measured="nothing behind the observer or off the picture is drawn",
+    verdict="agrees")
 def test_clipped_at_the_observer_nothing_behind_it_drawn() -> None:
     c = still(1)
     c[0, :] = (9.0, 9.0, R)

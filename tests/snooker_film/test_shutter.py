@@ -4,6 +4,7 @@ as its speed x the shutter time; the specks turn on with the roll inside the shu
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from apps.snooker.camera.views import View
 from apps.snooker.film.shutter import RATE, SHUTTER_S, at_times
@@ -47,6 +48,10 @@ def test_a_ball_at_rest_is_unchanged() -> None:
     assert np.array_equal(image(still, 9), image(still, 1))
 
 
+@pytest.mark.claim(
+    "§6.4: motion blur simulates a film camera's shutter open about 1/50 s each frame",
+    measured="a moving ball's streak = its speed x the shutter time",
+    verdict="agrees")
 def test_a_moving_balls_streak_is_speed_times_shutter() -> None:
     speed = 5.0
     scene = one_ball(speed)

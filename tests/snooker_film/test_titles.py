@@ -30,6 +30,11 @@ def test_the_aimed_balls_stop_together_on_their_slots(title: tuple) -> None:
     assert not scene.on_table[:, len(WORD):].any()  # no other balls
 
 
+@pytest.mark.claim(
+    "§6.5: for titles the table becomes invisible and the larger balls carry letters that line up"
+    " into words",
+    measured="the rendered title frame: the word's letters on the balls, no table pixels",
+    verdict="agrees")
 def test_the_word_is_spelt_and_the_table_is_invisible(title: tuple) -> None:
     scene, view = title
     img = render_title(scene, view, scene.n_frames, 384, 192)

@@ -10,6 +10,10 @@ from hypothesis import strategies as st
 from apps.snooker.render.lights import LightsError, canopy, parse_lights, read_lights
 
 
+@pytest.mark.claim(
+    "§6.4.1: multiple lights, commonly four bulbs in a canopy above the table",
+    measured="the default lights: four point sources above the table",
+    verdict="agrees")
 def test_canopy_is_four_bulbs_above_the_table() -> None:
     c = canopy()
     assert c.positions.shape == (4, 3) and np.all(c.positions[:, 2] > 0.5)

@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 
 from apps.snooker.render import kernels as K
 from apps.snooker.render.balls import ball_params
@@ -63,6 +64,11 @@ def test_ambient_only() -> None:
         assert np.allclose(img[j, i], 0.25 * ALBEDO, atol=1e-12)
 
 
+@pytest.mark.claim(
+    "§6.4.1: the Phong model's diffuse, specular and ambient terms for the balls, normals from "
+    "the sphere itself",
+    measured="each term against a hand computation",
+    verdict="agrees")
 def test_all_terms_against_a_hand_computation() -> None:
     p = Phong(ka=0.9, kd=0.8, ks=0.6, n=25.0)
     img, pin, disc = _draw(LIGHTS, p)

@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 
 from apps.snooker.render.frame import frame_geometry
 from apps.snooker.render.lights import Lights
@@ -18,6 +19,11 @@ from tests.snooker_render.helpers import one_ball_scene, overhead
 R = 0.0262
 
 
+@pytest.mark.claim(
+    "§6.4.1: each light's shadow of a ball on the baize is an ellipse, one axis the ball's "
+    "diameter, eccentricity and position from the direction to the light",
+    measured="the ellipse's axes and centre against a hand calculation",
+    verdict="agrees")
 def test_ellipse_axes_and_centre_from_the_light_direction() -> None:
     ball = np.array([[0.2, 0.1, R]])
     light = np.array([[0.2 + 0.6, 0.1 + 0.8, 1.1]])  # 1 m away horizontally, along (0.6, 0.8)
@@ -63,6 +69,10 @@ def test_rendered_shadow_covers_the_ellipse_on_the_baize() -> None:
     assert np.isclose(occ.sum() * px_m * px_m, math.pi * a * b, rtol=0.02)  # the area
 
 
+@pytest.mark.claim(
+    "§6.4.1: the shadows of the cushions on the table from the directions to the lights",
+    measured="cushion shadows drawn only for lights beyond the cushion",
+    verdict="agrees")
 def test_cushion_shadows_only_from_lights_beyond_the_cushion() -> None:
     hl, hw = 1.8, 0.9
     assert cushion_shadow_polygons(hl, hw, np.array([[0.0, 0.0, 1.0]])) == []

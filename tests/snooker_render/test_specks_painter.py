@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 
 from apps.snooker.render.painter import BallItem, PolygonItem, ShadowItem, plan
 from apps.snooker.render.specks import orientations, rolling_rotations
@@ -13,6 +14,10 @@ from tests.snooker_render.helpers import break_scene
 R = 0.0262
 
 
+@pytest.mark.claim(
+    "§6.5: specks of dust on the balls suggest that balls are rolling rather than sliding",
+    measured="a ball rolling forward turns its specks the way it rolls",
+    verdict="agrees")
 def test_rolling_forward_turns_the_top_forward() -> None:
     rot = rolling_rotations(np.array([[0.01, 0.0]]), R)[0]
     top = rot @ np.array([0.0, 0.0, 1.0])
@@ -63,6 +68,11 @@ def test_painters_order_from_above_puts_every_cushion_behind_the_balls() -> None
     assert k[0] == "leg"  # legs first, whatever the table will hide of them
 
 
+@pytest.mark.claim(
+    "§6.4.1: hidden surfaces by the painter's algorithm: legs, playing surface and shadows, far "
+    "cushions, balls back to front, near cushions last",
+    measured="the drawing order from behind baulk",
+    verdict="agrees")
 def test_painters_order_from_behind_baulk_draws_the_baulk_side_last() -> None:
     s = break_scene()
     eye = np.array([-2.6, 0.0, 0.6])  # beyond the baulk cushion, low
