@@ -17,6 +17,19 @@ from numba import njit
 
 
 @njit(cache=True, nogil=True)
+def _orientation(verts):  # noqa: ANN001, ANN202 - numba kernel
+    """+1 for an anticlockwise polygon (k, 2), -1 clockwise, 0 degenerate (no area)."""
+    k = verts.shape[0]
+    area = 0.0
+    for e in range(k):
+        f = (e + 1) % k
+        area += verts[e, 0] * verts[f, 1] - verts[f, 0] * verts[e, 1]
+    if abs(area) < 1e-12:
+        return 0.0
+    return 1.0 if area > 0 else -1.0
+
+
+@njit(cache=True, nogil=True)
 def polygon(img, verts, colour):  # noqa: ANN001, ANN201 - numba kernel
     """Blend a convex polygon (k, 2 screen pixels) of one colour over ``img`` (H, W, C) by
     its coverage of each pixel, Pitteway & Watkinson's area rule: along an edge whose x
@@ -25,16 +38,11 @@ def polygon(img, verts, colour):  # noqa: ANN001, ANN201 - numba kernel
     sides); across a y-major edge, the same sideways. Edges combine by summing what each
     excludes (exact unless two edges cut off the same part of a pixel). Returns pixels touched.
     """
-    k = verts.shape[0]
     h = img.shape[0]
     w = img.shape[1]
-    area = 0.0
-    for e in range(k):
-        f = (e + 1) % k
-        area += verts[e, 0] * verts[f, 1] - verts[f, 0] * verts[e, 1]
-    if abs(area) < 1e-12:
+    orient = _orientation(verts)
+    if orient == 0.0:
         return 0
-    orient = 1.0 if area > 0 else -1.0
     ymin = verts[:, 1].min()
     ymax = verts[:, 1].max()
     j0 = max(int(math.floor(ymin)) - 1, 0)
@@ -344,16 +352,11 @@ def wood_polygon(img, verts, cam, p, lights, ambient):  # noqa: ANN001, ANN201 -
     """A wooden face: coverage as ``polygon``; each pixel's colour from the point where its
     ray meets the face (normal constant, light and eye directions per pixel: Phong) and the
     grain there, anti-aliased by fading its contrast with the pixel's footprint."""
-    k = verts.shape[0]
     h = img.shape[0]
     w = img.shape[1]
-    area = 0.0
-    for e in range(k):
-        f = (e + 1) % k
-        area += verts[e, 0] * verts[f, 1] - verts[f, 0] * verts[e, 1]
-    if abs(area) < 1e-12:
+    orient = _orientation(verts)
+    if orient == 0.0:
         return 0
-    orient = 1.0 if area > 0 else -1.0
     j0 = max(int(math.floor(verts[:, 1].min())) - 1, 0)
     j1 = min(int(math.floor(verts[:, 1].max())) + 1, h - 1)
     touched = 0
