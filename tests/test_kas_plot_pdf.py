@@ -3,6 +3,7 @@ rendered page shows the registration crosses and the frame's coloured strokes.""
 
 from __future__ import annotations
 
+import os
 import shutil
 import subprocess
 
@@ -18,6 +19,8 @@ DPI = 20
 @pytest.fixture(scope="module")
 def pages(tmp_path_factory: pytest.TempPathFactory) -> tuple[list[np.ndarray], plot.PlotSize]:
     if shutil.which("pdftoppm") is None:
+        if os.environ.get("CI"):  # .ci/run installs poppler-utils: a missing reader is a CI fault
+            pytest.fail("pdftoppm (Debian's poppler-utils) is missing on CI")
         pytest.skip("pdftoppm (Debian's poppler-utils) is not installed")
     tmp = tmp_path_factory.mktemp("pdf")
     seq = demo.build()
