@@ -11,48 +11,20 @@ all of them.
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import Any
-
 import numpy as np
 
-_PY: dict[str, Callable[..., Any]] = {}  # kernel name -> plain Python definition, in order
-_SIGNATURES: dict[str, str] = {}  # kernel name -> its explicit numba signature, if it has one
+from protocols.lazy_kernels import LazyKernels
 
 
-def _compile_all() -> None:
-    from numba import njit
-
+def _announce() -> None:
     from protocols.kernel_notice import announce_compiles
 
     announce_compiles("Rainbow", 9.0, __name__)  # cold compile time, measured
-    g = globals()
-    for name, fn in _PY.items():  # callees first, so callers resolve them as compiled kernels
-        if getattr(g[name], "_lazy", False) and g[name].py_func is fn:
-            sig = _SIGNATURES.get(name)
-            g[name] = njit(sig, cache=True)(fn) if sig else njit(cache=True)(fn)
 
 
-def _kernel(fn: Callable[..., Any], signature: str | None = None) -> Callable[..., Any]:
-    """Register a numba kernel; the module name is bound to a stub until the first call."""
-    _PY[fn.__name__] = fn
-    if signature:
-        _SIGNATURES[fn.__name__] = signature
-
-    def first_call(*args: Any) -> Any:
-        _compile_all()
-        return globals()[fn.__name__](*args)
-
-    first_call.__name__ = fn.__name__
-    first_call.__doc__ = fn.__doc__
-    first_call.py_func = fn  # type: ignore[attr-defined]
-    first_call._lazy = True  # type: ignore[attr-defined]
-    return first_call
-
-
-def _signed(signature: str) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
-    """``_kernel`` with an explicit numba signature."""
-    return lambda fn: _kernel(fn, signature)
+_kernels = LazyKernels(globals(), _announce)
+_kernel = _kernels.kernel
+_signed = _kernels.signed
 
 
 # Columns of the instance table handed to the compiler kernel.

@@ -12,45 +12,25 @@ all of them, so a run that never draws never pays for numba.
 from __future__ import annotations
 
 import threading
-from collections.abc import Callable
-from typing import Any
 
 import numpy as np
 
-_PY: dict[str, Callable[..., Any]] = {}  # kernel name -> plain Python definition, in order
+from protocols.lazy_kernels import LazyKernels
 
 
-def _compile_all() -> None:
-    from numba import njit
-
+def _announce() -> None:
     from protocols.kernel_notice import announce_compiles
 
     # one line on stderr if the cache is cold; ~2 s is the measured cold compile
     announce_compiles("Sigma raster", 2.0, __name__, "protocols.sigma.abbreviated")
 
-    # Every kernel must be called with one set of argument types only: numba's on-disk cache
-    # numbers a function's signatures 1, 2, ... and two processes compiling *different*
-    # signatures at once can leave the index naming one signature's file holding the
-    # other's code (docs/development.md, "numba's cache").
-    g = globals()
-    for name, fn in _PY.items():  # callees first, so callers resolve them as compiled kernels
-        if name in g and getattr(g[name], "py_func", None) is fn and hasattr(g[name], "_lazy"):
-            g[name] = njit(cache=True, nogil=True)(fn)
 
-
-def _kernel(fn: Callable[..., Any]) -> Callable[..., Any]:
-    """Register a numba kernel; the module name is bound to a stub until the first call."""
-    _PY[fn.__name__] = fn
-
-    def first_call(*args: Any) -> Any:
-        _compile_all()
-        return globals()[fn.__name__](*args)
-
-    first_call.__name__ = fn.__name__
-    first_call.__doc__ = fn.__doc__
-    first_call.py_func = fn  # type: ignore[attr-defined]
-    first_call._lazy = True  # type: ignore[attr-defined]
-    return first_call
+# Every kernel must be called with one set of argument types only: numba's on-disk cache
+# numbers a function's signatures 1, 2, ... and two processes compiling *different*
+# signatures at once can leave the index naming one signature's file holding the
+# other's code (docs/development.md, "numba's cache").
+_kernels = LazyKernels(globals(), _announce, nogil=True)
+_kernel = _kernels.kernel
 
 FRACTION_BITS = 12  # the reconstructed DDA's fixed-point fraction (see firmware_line_points)
 HALF = 1 << (FRACTION_BITS - 1)
@@ -116,7 +96,7 @@ def draw_polyline(pix, xy, start_x, start_y, colour, wm, dash, dash_len, phase, 
     py = start_y
     cont = continuing
     for k in range(xy.shape[0]):
-        # int64 like every other caller's, so draw_line has one signature (see _compile_all)
+        # int64 like every other caller's, so draw_line has one signature (see the cache note above)
         x = np.int64(xy[k, 0])
         y = np.int64(xy[k, 1])
         phase = draw_line(pix, px, py, x, y, colour, wm, dash, dash_len, phase, cont)
