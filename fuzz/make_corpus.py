@@ -129,10 +129,21 @@ def _tablets() -> None:
         _put("hid-descriptor", h.stem + ".bin", parse_hex_text(h.read_text(), str(h)))
 
 
+def _scripts_and_views() -> None:
+    """Camera scripts, view and lights files, Rainbow and KAS input scripts (shipped files)."""
+    _copy("snooker-ccl", DATA / "snooker_camera" / "thesis_example.ccl")
+    _copy("snooker-views", DATA / "snooker_render" / "break.views")
+    _put("render-lights", "two_bulbs.lights", "# x y z (m) and intensity, or r g b\n"
+         "-0.9 -0.45 1.5 0.9\n0.9 0.45 1.5 1.0 0.95 0.85\n")
+    _copy("rainbow-script", DATA / "snooker_camera" / "typo.events", ROOT / "examples" / "ca" /
+          "session.events")
+    _copy("kas-script", ROOT / "examples" / "kas" / "arc.script")
+
+
 def main() -> int:
     if CORPUS.exists():
         shutil.rmtree(CORPUS)
-    for make in (_rainbow, _link_and_sigma, _kas, _snooker, _ca, _tablets):
+    for make in (_rainbow, _link_and_sigma, _kas, _snooker, _ca, _tablets, _scripts_and_views):
         make()
     for folder in sorted(CORPUS.iterdir()):
         files = list(folder.iterdir())

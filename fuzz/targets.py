@@ -180,6 +180,37 @@ def _rainbow_stream(data: bytes) -> object:
     return Decoder().feed(data)
 
 
+def _ccl(data: bytes) -> object:
+    from apps.snooker.camera.ccl import read_script
+    from apps.snooker.camera.parser import parse
+
+    return _via_file(data, lambda path: parse(read_script(path)), ".ccl")
+
+
+def _views(data: bytes) -> object:
+    from apps.snooker.camera.views import read_views
+
+    return _via_file(data, read_views, ".views")
+
+
+def _lights(data: bytes) -> object:
+    from apps.snooker.render.lights import read_lights
+
+    return _via_file(data, read_lights, ".lights")
+
+
+def _rainbow_script(data: bytes) -> object:
+    from protocols.rainbow.script import load
+
+    return _via_file(data, load, ".events")
+
+
+def _kas_script(data: bytes) -> object:
+    from apps.kas.program.script import load_timed_script
+
+    return _via_file(data, load_timed_script, ".script")
+
+
 TARGETS: dict[str, Target] = {t.name: t for t in (
     Target("rainbow-scene", _scene, (ValueError, _rainbow_error())),
     Target("rainbow-recording", _rainbow_recording),
@@ -205,4 +236,9 @@ TARGETS: dict[str, Target] = {t.name: t for t in (
     Target("tablet-bitpad1", _tablet("bitpad1")),
     Target("tablet-bitpad2", _tablet("bitpad2")),
     Target("tablet-calcomp", _tablet("calcomp")),
+    Target("snooker-ccl", _ccl),
+    Target("snooker-views", _views),
+    Target("render-lights", _lights),
+    Target("rainbow-script", _rainbow_script),
+    Target("kas-script", _kas_script),
 )}
