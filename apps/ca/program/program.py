@@ -73,6 +73,7 @@ class CAProgram:
         self.auto = False  # ... and in single-step mode
         self.frequency = 1
         self.fast_forward = False  # the display frequency doubles per shown frame
+        self.frequency_before_fast_forward = 1
         self.pending: Engine | None = None
         self.pending_checkpoints: list[Engine] = []
         self.populations = 0
@@ -466,7 +467,7 @@ class CAProgram:
             self.finished = True
         elif item in ("Step mode", "Auto mode"):
             self.auto = item == "Auto mode"
-            self.fast_forward = False
+            stepping.end_fast_forward(self)
             self.main_menu.mark(item)
         elif item == "Centralise viewport":
             w, h = self.view.cells_across()

@@ -80,12 +80,26 @@ def go_to_generation(p: CAProgram) -> Dialogue:
 def fast_forward(p: CAProgram) -> Dialogue:
     """Run automatically, doubling the display frequency with every generation shown
     (Step mode, Auto mode or a new display frequency end it)."""
+    if not p.fast_forward:
+        p.frequency_before_fast_forward = p.frequency  # restored when it ends
     p.auto = True
     p.fast_forward = True
     p.main_menu.mark("Fast forward")
     p.say("Fast forward: each frame jumps twice as far as the last")
     return
     yield  # a dialogue with no questions
+
+
+def end_fast_forward(p: CAProgram) -> None:
+    """Stop doubling and go back to the display frequency in use before fast forward; the
+    look-ahead already computed at the doubled frequency is dropped (recomputed at the
+    restored one, so the next shown generation is frequency generations on, not 2**k)."""
+    if not p.fast_forward:
+        return
+    p.fast_forward = False
+    p.frequency = p.frequency_before_fast_forward
+    p.pending = None
+    p.pending_checkpoints = []
 
 
 def write_checkpoints(session: Session, passed: list[Engine]) -> None:
