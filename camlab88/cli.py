@@ -10,7 +10,6 @@ stays fast.
 from __future__ import annotations
 
 import argparse
-import difflib
 import importlib
 import sys
 from collections.abc import Sequence
@@ -47,8 +46,9 @@ def _suggestion(message: str) -> str:
     if m is None:
         return ""
     choices = re.findall(r"'([^']*)'", m[2]) or [c.strip() for c in m[2].split(",")]
-    close = difflib.get_close_matches(m[1], choices, n=1, cutoff=0.6)
-    return f"; did you mean {close[0]!r}?" if close else ""
+    from protocols.suggest import did_you_mean
+
+    return did_you_mean(m[1], choices)
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -4,9 +4,10 @@ its line and column; a script's errors are all collected and reported together."
 
 from __future__ import annotations
 
-import difflib
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
+
+from protocols.suggest import close_names
 
 
 @dataclass(frozen=True, order=True)
@@ -30,5 +31,5 @@ class CclErrors(ValueError):
 
 def did_you_mean(word: str, candidates: Iterable[str]) -> str:
     """' (did you mean VIEWPOINT?)' for a near miss, else ''."""
-    close = difflib.get_close_matches(word.upper(), sorted(set(candidates)), n=1, cutoff=0.6)
+    close = close_names(word.upper(), candidates, n=1)  # keywords are shown unquoted
     return f" (did you mean {close[0]}?)" if close else ""
