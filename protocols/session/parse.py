@@ -11,6 +11,7 @@ import base64
 import binascii
 import hashlib
 import json
+import re
 import zlib
 from fractions import Fraction
 from typing import Any
@@ -25,6 +26,10 @@ from protocols.session.format import (
 )
 
 MAX_DATA = 256 * 1024 * 1024  # one record's data, inflated: more is a damaged or hostile file
+MAX_COUNT = 10**12  # ticks, frames, hash_every: 10^12 ticks is centuries of virtual time
+# what str(Fraction) writes (and a decimal by hand); no exponent, so '1e99999999999' cannot
+# make Fraction compute 10**99999999999
+_TIME = re.compile(r"[0-9]{1,40}(?:/[0-9]{1,40}|\.[0-9]{1,40})?")
 
 
 class _Reader:
@@ -46,6 +51,8 @@ class _Reader:
                                    f"not JSON: {exc.msg}") from None
         except RecursionError:
             raise self.fail("not JSON: nested too deeply") from None
+        except ValueError as exc:  # an integer past Python's 4300-digit conversion limit
+            raise self.fail(f"not JSON: {str(exc).split(':')[0]}") from None
         if not isinstance(obj, dict) or not isinstance(obj.get("type"), str):
             raise self.fail('expected a JSON object with a "type"')
         self.newer(obj)  # before the key checks: a newer version may have other keys
@@ -58,6 +65,9 @@ class _Reader:
                     (kind is int and isinstance(obj[key], bool)):
                 raise self.fail(f"{obj['type']} record: {key!r} missing or not "
                                 f"{getattr(kind, '__name__', kind)}")
+            if kind is int and key != "version" and not 0 <= obj[key] <= MAX_COUNT:
+                raise self.fail(f"{obj['type']} record: {key} {obj[key]} outside "
+                                f"0..{MAX_COUNT}")
         return obj
 
     def newer(self, obj: dict[str, Any]) -> None:
@@ -87,14 +97,12 @@ class _Reader:
 
     def time(self, text: str) -> Fraction:
         try:
-            if not text.replace("/", "", 1).isascii():
+            if not _TIME.fullmatch(text):
                 raise ValueError
-            value = Fraction(text)
+            return Fraction(text)
         except (ValueError, ZeroDivisionError):
-            raise self.fail(f"time {text!r} is not a number of seconds") from None
-        if value < 0:
-            raise self.fail(f"time {text} is negative")
-        return value
+            raise self.fail(f"time {text[:60]!r} is not a number of seconds (N, N/M or "
+                            f"N.M, at most 40 digits each)") from None
 
     def data(self, text: str) -> bytes:
         try:

@@ -86,6 +86,11 @@ def save(path: str | os.PathLike[str], f: OpsFile) -> None:
 
 # ------------------------------------------------------------------------ reading
 
+def _show(word: str, most: int = 40) -> str:
+    """A word quoted in an error, shortened: a damaged file's 'word' can be megabytes."""
+    return repr(word) if len(word) <= most else repr(word[:most]) + "..."
+
+
 class _Reader:
     """Lines as (number, [(column, word)]), comments and blank lines skipped."""
 
@@ -112,7 +117,7 @@ class _Reader:
     def keyword(self, what: str, n_args: int) -> tuple[int, list[tuple[int, str]]]:
         ln, words = self.next(f"'{what}'")
         if words[0][1] != what:
-            raise self.error(ln, words[0][0], f"expected '{what}', found {words[0][1]!r}")
+            raise self.error(ln, words[0][0], f"expected '{what}', found {_show(words[0][1])}")
         if len(words) != n_args + 1:
             raise self.error(ln, words[0][0], f"'{what}' takes {n_args} value(s)")
         return ln, words[1:]
@@ -120,7 +125,9 @@ class _Reader:
     def int_at(self, ln: int, w: tuple[int, str], lo: int, hi: int, what: str) -> int:
         col, s = w
         if not re.fullmatch(r"[+-]?[0-9]+", s):
-            raise self.error(ln, col, f"{what} must be a whole number, not {s!r}")
+            raise self.error(ln, col, f"{what} must be a whole number, not {_show(s)}")
+        if len(s.lstrip("+-").lstrip("0")) > 18:  # int() refuses over 4300 digits
+            raise self.error(ln, col, f"{what} {s[:20]}... outside {lo}..{hi}")
         v = int(s)
         if not lo <= v <= hi:
             raise self.error(ln, col, f"{what} {v} outside {lo}..{hi}")
@@ -131,9 +138,9 @@ class _Reader:
         try:
             v = float(s)
         except ValueError:
-            raise self.error(ln, col, f"{what} must be a number, not {s!r}") from None
+            raise self.error(ln, col, f"{what} must be a number, not {_show(s)}") from None
         if not math.isfinite(v) or not re.fullmatch(r"[0-9eE+\-.]+", s):
-            raise self.error(ln, col, f"{what} must be a finite number, not {s!r}")
+            raise self.error(ln, col, f"{what} must be a finite number, not {_show(s)}")
         return v
 
 
@@ -155,7 +162,7 @@ def _op(r: _Reader, ln: int, words: list[tuple[int, str]], n_colours: int,
     allowed = ("fill", "line", "region") + (("touch",) if frame is not None else ())
     if kind not in allowed:
         raise r.error(ln, words[0][0], f"expected an operation ({', '.join(allowed)}), "
-                                       f"found {kind!r}")
+                                       f"found {_show(kind)}")
     names = [w for _, w in words]
     if "colour" not in names:
         raise r.error(ln, words[-1][0] + len(words[-1][1]), "missing 'colour C'")
@@ -225,7 +232,7 @@ def _frame_header(r: _Reader, ln: int,
     if (len(words) not in (4, 6) or names[0] != "frame" or names[2] != "ops"
             or (len(words) == 6 and names[4] != "seeds")):
         raise r.error(ln, words[0][0], f"expected 'frame N ops K [seeds M]' or 'end', found "
-                                       f"{' '.join(names)!r}")
+                                       f"{_show(' '.join(names))}")
     n_seeds = r.int_at(ln, words[5], 0, 10**6, "seeds count") if len(words) == 6 else 0
     return (r.int_at(ln, words[1], 1, 10**6, "frame number"),
             r.int_at(ln, words[3], 0, 10**6, "operation count"), n_seeds)

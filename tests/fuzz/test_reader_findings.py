@@ -1,0 +1,56 @@
+"""Inputs the fuzz targets (or probes beside them) found that once escaped their reader
+with another exception or took unbounded time: each must now be the format's own error,
+naming the file, line and column, quickly."""
+
+from __future__ import annotations
+
+import re
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+
+from apps.kas.paint import opsfile
+from fuzz.engine import run_one
+from fuzz.targets import CORPUS, TARGETS
+from protocols.session import SessionFileError
+from protocols.session.format import loads
+
+SESSION = (CORPUS / "session-recording" / "every_record.session").read_bytes()
+OPS = (CORPUS / "kas-paint-ops" / "touch_up.ops").read_text()
+
+
+@pytest.mark.parametrize("old, new, where", [
+    # a 5000-digit tick: json's int() raised a bare ValueError (no file, line or column)
+    (b'"tick":3,', b'"tick":' + b"1" * 5000 + b",", "<s>:3:1: not JSON"),
+    # Fraction('1e99999999999') computes 10**99999999999: no answer, memory without bound
+    (b'"time":"3/25"', b'"time":"1e99999999999"', "<s>:3:1: time '1e99999999999'"),
+    (b'"tick":3,', b'"tick":10000000000000000,', "<s>:3:1: event record: tick"),
+])
+def test_session_recording_findings(old: bytes, new: bytes, where: str) -> None:
+    assert old in SESSION
+    # under the fuzz engine's alarm first, so a hang fails instead of hanging the test
+    assert run_one(TARGETS["session-recording"], SESSION.replace(old, new, 1), 5.0) is None
+    with pytest.raises(SessionFileError, match=re.escape(where)):
+        loads(SESSION.replace(old, new, 1), "<s>")
+
+
+def test_session_times_the_writer_writes_still_read() -> None:
+    for t in ("0", "3", "3/25", "0.5"):
+        rec = loads(SESSION.replace(b'"time":"3/25"', f'"time":"{t}"'.encode(), 1), "<s>")
+        assert rec.events[0][1] == Fraction(t)
+
+
+def test_ops_file_huge_number_is_its_own_error(tmp_path: Path) -> None:
+    # a 5000-digit 'painted': int() raised a bare ValueError without the file's name
+    path = tmp_path / "big.ops"
+    path.write_text(OPS.replace("painted 1", "painted " + "9" * 5000))
+    with pytest.raises(opsfile.OpsFileError, match=re.escape(f"{path}:7:9: painted frame")):
+        opsfile.load(path)
+
+
+def test_ops_file_errors_quote_a_long_word_shortened() -> None:
+    with pytest.raises(opsfile.OpsFileError) as exc:
+        opsfile.parse(OPS.replace("gap 0.05", "gap " + "x" * 10**6), "a.ops")
+    assert str(exc.value).startswith("a.ops:6:5: gap must be a number") and \
+        len(str(exc.value)) < 200
