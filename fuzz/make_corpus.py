@@ -140,10 +140,54 @@ def _scripts_and_views() -> None:
     _copy("kas-script", ROOT / "examples" / "kas" / "arc.script")
 
 
+def _kas_paint() -> None:
+    """Operations files written by opsfile: one as the program saves it after auto-paint
+    (every frame's seeds recorded), one with a frame's own touch-up operations."""
+    from apps.kas import files
+    from apps.kas.inbetween import inbetween
+    from apps.kas.paint import opsfile
+    from apps.kas.paint.ops import Op, OpsFile
+    from apps.kas.paint.palette import Palette
+    from apps.kas.paint.session import PaintSession
+
+    seq = inbetween(files.load_keyframe(KAS_LIB / "walk_a.kas"),
+                    files.load_keyframe(KAS_LIB / "walk_b.kas"),
+                    path=files.load_path(KAS_LIB / "walk_path.kas"), frames=4)
+    ops = OpsFile(ops=[Op("fill", 3, chains=(2,)), Op("fill", 5, chains=(1,)),
+                       Op("line", 8, chains=(1,))], painted=2)
+    session = PaintSession(seq, ops)
+    session.autopaint()
+    _put("kas-paint-ops", "walk_autopainted.ops", opsfile.ops_text(session.ops))
+    own = OpsFile(Palette([(0, 0, 0), (255, 0, 0), (0, 0, 255)]),
+                  [Op("fill", 1, chains=(1,)), Op("region", 2, at=(0.5, -1.0))],
+                  {1: [Op("touch", 2, at=(2.5, 2.5), frame=1)]}, 0.05, 1)
+    _put("kas-paint-ops", "touch_up.ops", opsfile.ops_text(own))
+
+
+def _sessions() -> None:
+    """Two recordings camlab88 made (tests/data/sessions, the small ones) and one written by
+    protocols.session.format with every record type (input events too)."""
+    from fractions import Fraction
+
+    from protocols.session.format import ScreenHash, SessionRecording, dumps
+
+    _copy("session-recording", DATA / "sessions" / "sigma_run.session",
+          DATA / "sessions" / "kas_edit.session")
+    sha = "0123456789abcdef" * 4
+    rec = SessionRecording(
+        ["ca", "program", "--headless", "--events", "e.events"], 2, True,
+        {"e.events": b"key space\nwait 1\n"},
+        [(3, Fraction(3, 25), {"kind": "KeyDown", "key": "space"})],
+        [(3, ">", b"\x1b[H hello"), (4, "<", b"\x11"), (4, "+", b"\x13")],
+        [ScreenHash(2, 4, Fraction(4, 25), sha)], ScreenHash(3, 5, Fraction(1, 5), sha), 5)
+    _put("session-recording", "every_record.session", dumps(rec))
+
+
 def main() -> int:
     if CORPUS.exists():
         shutil.rmtree(CORPUS)
-    for make in (_rainbow, _link_and_sigma, _kas, _snooker, _ca, _tablets, _scripts_and_views):
+    for make in (_rainbow, _link_and_sigma, _kas, _snooker, _ca, _tablets, _scripts_and_views,
+                 _kas_paint, _sessions):
         make()
     for folder in sorted(CORPUS.iterdir()):
         files = list(folder.iterdir())

@@ -211,6 +211,30 @@ def _kas_script(data: bytes) -> object:
     return _via_file(data, load_timed_script, ".script")
 
 
+def _kas_paint_ops() -> type[BaseException]:
+    from apps.kas.paint.opsfile import OpsFileError
+
+    return OpsFileError
+
+
+def _kas_ops(data: bytes) -> object:
+    from apps.kas.paint import opsfile
+
+    return _via_file(data, opsfile.load, ".ops")
+
+
+def _session_error() -> type[BaseException]:
+    from protocols.session.format import SessionFileError
+
+    return SessionFileError
+
+
+def _session(data: bytes) -> object:
+    from protocols.session.format import read
+
+    return _via_file(data, read, ".session")
+
+
 TARGETS: dict[str, Target] = {t.name: t for t in (
     Target("rainbow-scene", _scene, (ValueError, _rainbow_error())),
     Target("rainbow-recording", _rainbow_recording),
@@ -241,4 +265,7 @@ TARGETS: dict[str, Target] = {t.name: t for t in (
     Target("render-lights", _lights),
     Target("rainbow-script", _rainbow_script),
     Target("kas-script", _kas_script),
+    # the two below accept only their format's own error (every refusal names file:line:col)
+    Target("kas-paint-ops", _kas_ops, (_kas_paint_ops(),)),
+    Target("session-recording", _session, (_session_error(),)),
 )}
