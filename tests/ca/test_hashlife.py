@@ -168,20 +168,20 @@ def test_a_small_memory_limit_collects_garbage_and_stays_exact() -> None:
     e = soup(rules, 9, *PLACES[0], n=3000, side=100)
     ref = e.copy()
     e.algorithm = "hashlife"
-    e.hashlife_memory = 6 << 20  # room for the smallest table only: 131072 nodes, 5.2 MB
+    e.hashlife_memory = 1 << 20  # Life takes the binary path: 8192 nodes, 4096 leaves
     e.step(1000)
     ref.step(1000)
     assert e.same_state(ref)
-    store = rules._tables["hashlife_run"].store
+    store = rules._tables["hashlife_bits_run"].store
     assert store.epoch > 0  # it did collect
-    assert store.bytes <= 6 << 20
+    assert store.bytes <= 1 << 20
 
 
 def test_memory_limit_too_small_is_a_clear_error() -> None:
     rules = parse_rules(LIBRARY["life"].text, source="life-tiny-memory")
     e = soup(rules, 9, *PLACES[0], n=2000, side=80)
     e.algorithm = "hashlife"
-    e.hashlife_memory = 1 << 20  # below the table's fixed part (the level-0 ids)
+    e.hashlife_memory = 200 << 10  # below the smallest tables of either path
     with pytest.raises(MemoryError, match="memory limit"):
         e.step(64)
 

@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from apps.ca.hashlife import census, convert, evolve
+from apps.ca.hashlife.bits.run import MAX_J, BitRun, BitTree
 from apps.ca.hashlife.leaf import deterministic_reason, order_matters, pack
 from apps.ca.hashlife.plane import frame
 from apps.ca.hashlife.store import TOP_LEVEL, NodeStore
@@ -107,7 +108,9 @@ class _Run:
 
 
 class HashLife:
-    """The strategy: deterministic rules, no advance area; both edge modes exactly."""
+    """The strategy: deterministic rules, no advance area; both edge modes exactly.  Two-state
+    rules on a plane of 1s take the binary path (apps/ca/hashlife/bits), the rest the
+    generic one."""
 
     name = "hashlife"
 
@@ -119,6 +122,10 @@ class HashLife:
         reason = self.unsupported(engine)
         if reason is not None:
             raise ValueError(f"HashLife cannot step this plane: {reason}")
+        bits = self.binary(engine)
+        if bits is not None:
+            self._advance_bits(engine, bits, int(generations), progress)
+            return
         run = _Run.of(engine.rules, engine.hashlife_memory)
         seam = engine.edges == "wrap" and run.order_matters
         done, total = 0, int(generations)
@@ -136,6 +143,31 @@ class HashLife:
                 done += 1 << j
                 engine.generation += 1 << j
                 engine.adopt_tree(Tree(run.store, run.store.epoch, node))
+            if progress is not None:
+                progress(done, total)
+
+    @staticmethod
+    def binary(engine) -> BitRun | None:  # noqa: ANN001
+        """The binary path for this engine's rules and plane (None: the generic path)."""
+        bits = BitRun.of(engine.rules, engine.hashlife_memory)
+        if bits is None or isinstance(engine.tree, BitTree):
+            return bits
+        if engine.tree is not None:  # a generic tree: its census says which forms it holds
+            return bits if set(engine.by_type()) <= {1} else None
+        ts = engine.ts
+        return bits if ts.size == 0 or int(ts.max()) <= 1 else None
+
+    @staticmethod
+    def _advance_bits(engine, bits: BitRun, total: int,  # noqa: ANN001
+                      progress: Progress | None) -> None:
+        done = 0
+        while done < total:
+            node = bits.plane(engine)
+            j = min(MAX_J, (total - done).bit_length() - 1)
+            node = bits.jump(node, j, engine.edges)
+            done += 1 << j
+            engine.generation += 1 << j
+            engine.adopt_tree(bits.tree(node))
             if progress is not None:
                 progress(done, total)
 

@@ -1,0 +1,310 @@
+"""The binary path's two hash-consed tables (numba open addressing) and their collection.
+
+Leaves are 16 x 16 cells, a row of ``leaves`` (uint64 x 8): words 0..3 hold the live cells
+(row y in bits 16*(y%4).. of word y//4, column x in bit x of its row), words 4..7 the same
+for the wall (the outside of a bounded plane: nothing lives or is born there).  Leaf 1 is
+the empty leaf, leaf 2 the all-wall leaf.  Nodes of level 5..17 are rows of ``nodes``
+(int32 x 8): quadrants nw, ne, sw, se (leaf ids at level 5), the memoised result, 1 + its
+generation exponent (0: none), the level.  Id 0 of either table is never used (0 marks an
+empty hash slot).  ``meta`` packs the counts and the empty and wall towers, so kernels take
+one array for them (numba reference-counts every array argument of every call).  Kernels
+return -1 when a table is full; the caller grows it or collects garbage and retries.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+LEAF_LEVEL = 4  # 16 x 16 cells
+TOP_LEVEL = 17  # the 65536-square plane is level 16; stepping frames it in a level-17 node
+RES, RESJ, LEVEL = 4, 5, 6  # node row columns after the four quadrants
+ROW = 8
+EMPTY_LEAF, WALL_LEAF = 1, 2
+# meta: node count, leaf count, then the ids of the empty and the wall node of each level.
+N_NODES, N_LEAVES, EMPTY, WALL = 0, 1, 2, 2 + TOP_LEVEL + 1
+META = WALL + TOP_LEVEL + 1
+NODE_BYTES = 4 * ROW + 2 * 4  # a row and two hash slots (load factor at most 1/2)
+LEAF_BYTES = 8 * 8 + 2 * 4
+MIN_NODES, MIN_LEAVES = 1 << 12, 1 << 11
+_M = np.uint64(0xFFFFFFFFFFFFFFFF)
+
+
+@njit(cache=True, inline="always")
+def _mix(h):
+    h = (h ^ (h >> np.uint64(31))) * np.uint64(0x7FB5D329728EA185)
+    return h ^ (h >> np.uint64(27))
+
+
+@njit(cache=True, inline="always")
+def _hash4(a, b, c, d, mask):
+    h = (np.uint64(a) * np.uint64(0x9E3779B97F4A7C15)
+         ^ np.uint64(b) * np.uint64(0xC2B2AE3D27D4EB4F)
+         ^ np.uint64(c) * np.uint64(0x165667B19E3779F9)
+         ^ np.uint64(d) * np.uint64(0x85EBCA77C2B2AE63))
+    return np.int64((h ^ (h >> np.uint64(29))) & np.uint64(mask))
+
+
+@njit(cache=True, inline="always")
+def join(a, b, c, d, level, nodes, slots, meta):
+    """The node of ``level`` with quadrants a, b, c, d (nw, ne, sw, se), made at most
+    once (leaf and node ids overlap, so the level is part of the key); -1 if the table is
+    full."""
+    mask = slots.shape[0] - 1
+    s = _hash4(a, b, c, d ^ (level << 27), mask)
+    while True:
+        i = slots[s]
+        if i == 0:
+            break
+        if (nodes[i, 0] == a and nodes[i, 1] == b and nodes[i, 2] == c and nodes[i, 3] == d
+                and nodes[i, LEVEL] == level):
+            return np.int64(i)
+        s = (s + 1) & mask
+    n = meta[N_NODES]
+    if n >= nodes.shape[0]:
+        return np.int64(-1)
+    slots[s] = n
+    nodes[n, 0] = a
+    nodes[n, 1] = b
+    nodes[n, 2] = c
+    nodes[n, 3] = d
+    nodes[n, RESJ] = 0
+    nodes[n, LEVEL] = level
+    meta[N_NODES] = n + 1
+    return np.int64(n)
+
+
+@njit(cache=True, inline="always")
+def _leaf_hash(w, mask):
+    h = np.uint64(0)
+    for i in range(8):
+        h = _mix(h ^ w[i] ^ np.uint64(i))
+    return np.int64(h & np.uint64(mask))
+
+
+@njit(cache=True)
+def leaf(w, leaves, lslots, meta):
+    """The id of the leaf with words ``w`` (8 x uint64), made at most once; -1 if full."""
+    mask = lslots.shape[0] - 1
+    s = _leaf_hash(w, mask)
+    while True:
+        i = lslots[s]
+        if i == 0:
+            break
+        same = True
+        for q in range(8):
+            if leaves[i, q] != w[q]:
+                same = False
+                break
+        if same:
+            return np.int64(i)
+        s = (s + 1) & mask
+    n = meta[N_LEAVES]
+    if n >= leaves.shape[0]:
+        return np.int64(-1)
+    lslots[s] = n
+    for q in range(8):
+        leaves[n, q] = w[q]
+    meta[N_LEAVES] = n + 1
+    return np.int64(n)
+
+
+@njit(cache=True)
+def rehash(nodes, slots, leaves, lslots, meta):
+    """Enter every node and leaf (all distinct) into empty hash indexes."""
+    mask = slots.shape[0] - 1
+    for i in range(1, meta[N_NODES]):
+        s = _hash4(nodes[i, 0], nodes[i, 1], nodes[i, 2],
+                   np.int64(nodes[i, 3]) ^ (np.int64(nodes[i, LEVEL]) << 27), mask)
+        while slots[s] != 0:
+            s = (s + 1) & mask
+        slots[s] = i
+    mask = lslots.shape[0] - 1
+    for i in range(1, meta[N_LEAVES]):
+        s = _leaf_hash(leaves[i], mask)
+        while lslots[s] != 0:
+            s = (s + 1) & mask
+        lslots[s] = i
+
+
+@njit(cache=True)
+def collect(roots, nodes, slots, leaves, lslots, meta):
+    """Keep only the nodes and leaves reachable from ``roots`` (renumbered in the order they
+    were made, so children stay before parents), forget every memoised result, rebuild
+    both hashes; ``roots`` are rewritten with their new ids."""
+    n, m = meta[N_NODES], meta[N_LEAVES]
+    keep = np.zeros(n, np.uint8)
+    keep_leaf = np.zeros(m, np.uint8)
+    keep_leaf[EMPTY_LEAF] = keep_leaf[WALL_LEAF] = 1
+    stack = np.empty(4 * n + roots.shape[0] + 2 * TOP_LEVEL, np.int64)
+    top = 0
+    for r in range(roots.shape[0]):
+        stack[top] = roots[r]
+        top += 1
+    for lv in range(LEAF_LEVEL + 1, TOP_LEVEL + 1):
+        stack[top] = meta[EMPTY + lv]
+        stack[top + 1] = meta[WALL + lv]
+        top += 2
+    while top > 0:
+        top -= 1
+        i = stack[top]
+        if keep[i]:
+            continue
+        keep[i] = 1
+        for q in range(4):
+            if nodes[i, LEVEL] == LEAF_LEVEL + 1:
+                keep_leaf[nodes[i, q]] = 1
+            else:
+                stack[top] = nodes[i, q]
+                top += 1
+    new_leaf = np.zeros(m, np.int64)
+    k = 1
+    for i in range(1, m):
+        if keep_leaf[i]:
+            new_leaf[i] = k
+            leaves[k] = leaves[i]
+            k += 1
+    meta[N_LEAVES] = k
+    new = np.zeros(n, np.int64)
+    k = 1
+    for i in range(1, n):
+        if keep[i]:
+            new[i] = k
+            low = nodes[i, LEVEL] == LEAF_LEVEL + 1
+            for q in range(4):
+                nodes[k, q] = new_leaf[nodes[i, q]] if low else new[nodes[i, q]]
+            nodes[k, RESJ] = 0
+            nodes[k, LEVEL] = nodes[i, LEVEL]
+            k += 1
+    meta[N_NODES] = k
+    slots[:] = 0
+    lslots[:] = 0
+    rehash(nodes, slots, leaves, lslots, meta)
+    for r in range(roots.shape[0]):
+        roots[r] = new[roots[r]]
+    for lv in range(LEAF_LEVEL + 1, TOP_LEVEL + 1):
+        meta[EMPTY + lv] = new[meta[EMPTY + lv]]
+        meta[WALL + lv] = new[meta[WALL + lv]]
+    return k
+
+
+class BitStore:
+    """One binary rule's node and leaf tables, their memory limit and garbage collection."""
+
+    def __init__(self, limit_bytes: int = 512 << 20, nodes: int = 1 << 18,
+                 leaves: int = 1 << 16) -> None:
+        self.limit_bytes = int(limit_bytes)
+        self.epoch = 0  # bumped by every collection: ids of older epochs are void
+        cap_n, cap_l = MIN_NODES, MIN_LEAVES
+        while 2 * cap_n <= nodes and self._bytes(2 * cap_n, 2 * cap_l) <= self.limit_bytes:
+            cap_n *= 2
+            if 2 * cap_l <= leaves:
+                cap_l *= 2
+        if self._bytes(cap_n, cap_l) > self.limit_bytes:
+            raise MemoryError(f"the HashLife memory limit ({self.limit_bytes >> 20} MB) is "
+                              f"below the smallest node table "
+                              f"({self._bytes(cap_n, cap_l) / 2**20:.1f} MB)")
+        self.meta = np.zeros(META, np.int64)
+        self.meta[N_NODES] = self.meta[N_LEAVES] = 1
+        self.nodes, self.slots = self._table(cap_n, ROW, np.int32)
+        self.leaves, self.lslots = self._table(cap_l, 8, np.uint64)
+        self._towers()
+
+    @staticmethod
+    def _bytes(cap_n: int, cap_l: int) -> int:
+        return cap_n * NODE_BYTES + cap_l * LEAF_BYTES
+
+    @staticmethod
+    def _table(cap: int, row: int, dtype: type) -> tuple[np.ndarray, np.ndarray]:
+        # Zeros mean "none" (no memo, empty slot): the pages stay untouched until used.
+        return np.zeros((cap, row), dtype), np.zeros(2 * cap, np.int32)
+
+    def _towers(self) -> None:
+        words = np.zeros(8, np.uint64)
+        assert self.add_leaf(words) == EMPTY_LEAF
+        words[4:] = _M
+        assert self.add_leaf(words) == WALL_LEAF
+        for base, value in ((EMPTY, EMPTY_LEAF), (WALL, WALL_LEAF)):
+            self.meta[base + LEAF_LEVEL] = value
+            for k in range(LEAF_LEVEL + 1, TOP_LEVEL + 1):
+                q = int(self.meta[base + k - 1])
+                self.meta[base + k] = self.join(q, q, q, q, k)
+
+    @property
+    def empty(self) -> np.ndarray:
+        return self.meta[EMPTY:EMPTY + TOP_LEVEL + 1]
+
+    @property
+    def wall(self) -> np.ndarray:
+        return self.meta[WALL:WALL + TOP_LEVEL + 1]
+
+    @property
+    def count(self) -> int:
+        return int(self.meta[N_NODES])
+
+    @property
+    def leaf_count(self) -> int:
+        return int(self.meta[N_LEAVES])
+
+    @property
+    def bytes(self) -> int:
+        return self.nodes.nbytes + self.slots.nbytes + self.leaves.nbytes + \
+            self.lslots.nbytes
+
+    def quadrants(self, node: int) -> tuple[int, int, int, int]:
+        nw, ne, sw, se = (int(q) for q in self.nodes[node, :4])
+        return nw, ne, sw, se
+
+    def join(self, a: int, b: int, c: int, d: int, level: int) -> int:
+        n = int(join(np.int64(a), np.int64(b), np.int64(c), np.int64(d), np.int64(level),
+                     self.nodes, self.slots, self.meta))
+        if n < 0:
+            raise MemoryError("node table full")
+        return n
+
+    def add_leaf(self, words: np.ndarray) -> int:
+        n = int(leaf(words, self.leaves, self.lslots, self.meta))
+        if n < 0:
+            raise MemoryError("leaf table full")
+        return n
+
+    def make_room(self, roots: list[int]) -> list[int]:
+        """Collect garbage keeping ``roots`` (returned renumbered); see ``crowded``."""
+        keep = np.array(roots, np.int64)
+        collect(keep, self.nodes, self.slots, self.leaves, self.lslots, self.meta)
+        self.epoch += 1
+        return [int(r) for r in keep]
+
+    @property
+    def crowded(self) -> bool:
+        """Whether a table is still (almost) full: collecting freed too little."""
+        return (10 * self.count > 9 * self.nodes.shape[0]
+                or 10 * self.leaf_count > 9 * self.leaves.shape[0])
+
+    def full_error(self) -> MemoryError:
+        return MemoryError(f"the HashLife node table is full ({self.count} nodes, "
+                           f"{self.leaf_count} leaves, {self.bytes >> 20} MB) and the memory "
+                           f"limit ({self.limit_bytes >> 20} MB) allows no more")
+
+    def grow_if_full(self) -> bool:
+        """Double whichever table is full instead of collecting while there is room (results
+        survive growing, not collecting); False once the memory limit stops it."""
+        grow_nodes = 10 * self.count > 9 * self.nodes.shape[0]
+        grow_leaves = 10 * self.leaf_count > 9 * self.leaves.shape[0]
+        extra = (self.nodes.nbytes + self.slots.nbytes if grow_nodes else 0) + \
+            (self.leaves.nbytes + self.lslots.nbytes if grow_leaves else 0)
+        if not extra or self.bytes + extra > self.limit_bytes:
+            return False
+        if grow_nodes:
+            self.nodes, self.slots = self._grown(self.nodes, self.count)
+        if grow_leaves:
+            self.leaves, self.lslots = self._grown(self.leaves, self.leaf_count)
+        self.slots[:] = 0
+        self.lslots[:] = 0
+        rehash(self.nodes, self.slots, self.leaves, self.lslots, self.meta)
+        return True
+
+    def _grown(self, table: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
+        bigger, slots = self._table(2 * table.shape[0], table.shape[1], table.dtype)
+        bigger[:n] = table[:n]
+        return bigger, slots
