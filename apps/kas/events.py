@@ -8,7 +8,13 @@ through its view (enlargement, panning) to the working area.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
+
+# a script TIME's shape, checked before Fraction sees it: an exponent of many digits
+# ('1e99999999999') would make Fraction compute 10**N, taking hours and gigabytes
+TIME_WORD = re.compile(r"\+?(?:[0-9]{1,30}(?:\.[0-9]{0,30})?|\.[0-9]{1,30})(?:/[0-9]{1,30})?"
+                       r"(?:[eE][+-]?[0-9]{1,3})?")
 
 
 @dataclass(frozen=True)
@@ -81,6 +87,8 @@ def parse_script(text: str, name: str = "<script>") -> list[Event]:
 def _check_time(word: str) -> None:
     from fractions import Fraction
 
+    if not TIME_WORD.fullmatch(word):
+        raise ValueError(word)
     try:
         v = Fraction(word[1:] if word.startswith("+") else word)
     except ZeroDivisionError:

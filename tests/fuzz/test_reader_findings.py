@@ -54,3 +54,25 @@ def test_ops_file_errors_quote_a_long_word_shortened() -> None:
         opsfile.parse(OPS.replace("gap 0.05", "gap " + "x" * 10**6), "a.ops")
     assert str(exc.value).startswith("a.ops:6:5: gap must be a number") and \
         len(str(exc.value)) < 200
+
+
+@pytest.mark.parametrize("line", ["1e99999999999999999999999", "1e99999999999 wait",
+                                  "+1e99999999999 move 0 0"])
+def test_kas_script_time_with_a_huge_exponent_is_refused(line: str) -> None:
+    # the long fuzz (kas-script, seed 7): Fraction('1e99999...') ran past the 20 s alarm
+    from apps.kas.events import parse_script
+    from apps.kas.files import KasFileError
+    from apps.kas.program.script import parse_timed_script
+
+    data = (line + "\n").encode()
+    assert run_one(TARGETS["kas-script"], data, 5.0) is None
+    for parse in (parse_timed_script, parse_script):  # the one KAS script format, both readers
+        with pytest.raises(KasFileError, match=re.escape("s.txt:1: bad event")):
+            parse(line, "s.txt")
+
+
+def test_kas_script_times_in_the_documented_shapes_still_read() -> None:
+    from apps.kas.program.script import parse_timed_script
+
+    events = parse_timed_script("2.5 wait\n+0.1 wait\n3 wait\n.5e1 wait\n1e2 wait\n", "s.txt")
+    assert [e.t for e in events] == [Fraction(5, 2), Fraction(13, 5), 3, 5, 100]

@@ -30,6 +30,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any, Protocol
 
+from apps.kas.events import TIME_WORD
 from apps.kas.files import KasFileError
 from apps.kas.program import layout as L
 from apps.kas.program.base import Front
@@ -53,6 +54,8 @@ class TimedEvent:
 
 
 def _time(tok: str, prev: Fraction) -> Fraction:
+    if not TIME_WORD.fullmatch(tok):  # before Fraction: see TIME_WORD
+        raise ValueError
     rel = tok.startswith("+")
     v = Fraction(tok[1:] if rel else tok)
     if not 0 <= v <= MAX_TIME:
@@ -113,8 +116,9 @@ def parse_timed_script(text: str, name: str = "<script>") -> list[TimedEvent]:
         except KasFileError:
             raise
         except (ValueError, ZeroDivisionError, IndexError, OverflowError) as exc:
+            shown = repr(line[:60]) + ("..." if len(line) > 60 else "")  # a line can be 1 MB
             detail = str(exc) if str(exc).startswith("no Sigma key") else (
-                f"bad event {line!r} (expected [TIME] move/down/up X Y, menu ITEM, key K, "
+                f"bad event {shown} (expected [TIME] move/down/up X Y, menu ITEM, key K, "
                 "type TEXT or wait)")
             raise KasFileError(name, no, detail) from None
         prev = t
