@@ -105,6 +105,12 @@ class Pocket:
         return (ty, -tx)  # mouths run anticlockwise too, so the right-hand normal is outwards
 
 
+# lengths a table's constants may have: beyond these the geometry degenerates in floating
+# point (a 1e20 m table's middle pocket mouth rounds to zero width)
+MIN_LENGTH_M, MAX_LENGTH_M = 1e-3, 1e3
+_LENGTHS = ("length_m", "width_m", "ball_diameter_m", "corner_mouth_m", "middle_mouth_m")
+
+
 @dataclass(frozen=True)
 class Table:
     """All editable constants (§6.1.1 sizes, §6.2 friction/restitution).  Values above 1 for
@@ -144,6 +150,11 @@ class Table:
             value = getattr(self, name)
             if not (ok and math.isfinite(value)):
                 raise ValueError(f"table constant {name}={value!r} is out of range")
+        for name in _LENGTHS:  # giant balls yes, but a pocket must still have a width in floats
+            value = getattr(self, name)
+            if not MIN_LENGTH_M <= value <= MAX_LENGTH_M:
+                raise ValueError(f"table constant {name}={value!r} is out of range "
+                                 f"({MIN_LENGTH_M:g}..{MAX_LENGTH_M:g} m)")
         corner_leg = self.corner_mouth_m / math.sqrt(2.0)
         if 2 * corner_leg >= self.width_m or 2 * corner_leg + self.middle_mouth_m >= self.length_m:
             raise ValueError("pockets are wider than the cushions that hold them")

@@ -76,3 +76,20 @@ def test_kas_script_times_in_the_documented_shapes_still_read() -> None:
 
     events = parse_timed_script("2.5 wait\n+0.1 wait\n3 wait\n.5e1 wait\n1e2 wait\n", "s.txt")
     assert [e.t for e in events] == [Fraction(5, 2), Fraction(13, 5), 3, 5, 100]
+
+
+@pytest.mark.parametrize("key, value", [("length_m", 1e20), ("middle_mouth_m", 1e-300)])
+def test_snooker_session_table_too_large_for_its_pockets_is_refused(key: str,
+                                                                    value: float) -> None:
+    # the fuzz (snooker-session, seed 7): length_m 1e+20 made a middle pocket's mouth round to
+    # zero width in floats, and Table.pockets divided by it (ZeroDivisionError)
+    import json
+
+    from apps.snooker.session import SessionError
+
+    session = json.loads((CORPUS / "snooker-session" / "new.json").read_text())
+    session["table"][key] = value
+    data = json.dumps(session).encode()
+    assert run_one(TARGETS["snooker-session"], data, 5.0) is None
+    with pytest.raises((SessionError, ValueError), match=f"{key}=.* out of range"):
+        TARGETS["snooker-session"].run(data)
