@@ -280,12 +280,13 @@ class Terminal:
         if index >= len(self.lut):
             self.errors += 1
             return
-        rgb = np.array((red, green, blue), dtype=np.int32)
+        # plain ints, not a numpy array per entry: a LUT load is hundreds of these orders
+        rgb = (red, green, blue)
         if bits == 4:
-            rgb = rgb * 17
+            rgb = tuple(v * 17 for v in rgb)
         if self.model.gun_bits == 4:
-            rgb = (rgb >> 4) * 17  # a 4096-colour LUT keeps 4 bits per gun
-        self.lut[index] = rgb.astype(np.uint8)
+            rgb = tuple((v >> 4) * 17 for v in rgb)  # a 4096-colour LUT keeps 4 bits per gun
+        self.lut[index] = tuple(v & 0xFF for v in rgb)  # as uint8 arithmetic wraps
 
     def _reset(self) -> None:
         # HH: the device side only; the decoder has already reset its own coordinate width
