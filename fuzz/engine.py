@@ -9,6 +9,7 @@ import resource
 import signal
 import time
 import traceback
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -70,13 +71,16 @@ def run_one(target: Target, data: bytes, timeout: float) -> str | None:
 
 def fuzz(target: Target, seconds: float | None = None, inputs: int | None = None,
          seed: int = 0, timeout: float = 20.0, memory_mb: float = 1024.0,
-         findings: Path = FINDINGS) -> Report:
-    """Every seed file, then mutations of them until ``seconds`` or ``inputs`` run out."""
+         findings: Path = FINDINGS, progress: Callable[[Report], None] | None = None,
+         every: float = 60.0) -> Report:
+    """Every seed file, then mutations of them until ``seconds`` or ``inputs`` run out;
+    ``progress`` (if given) sees the report so far every ``every`` seconds and after each
+    new finding, so a run of hours can be watched."""
     rng = random.Random(f"{target.name}:{seed}")
     seeds = target.seeds() or [b""]
     report = Report(target.name)
     start, base = time.monotonic(), _rss_mb()
-    k = 0
+    k, shown = 0, start
     seen: set[str] = set()
     while True:
         if inputs is not None and k >= inputs + len(seeds):
@@ -85,14 +89,19 @@ def fuzz(target: Target, seconds: float | None = None, inputs: int | None = None
             break
         data = seeds[k] if k < len(seeds) else mutate(rng.choice(seeds), rng)
         why = run_one(target, data, timeout)
-        if why is not None and why not in seen:  # one report per distinct failure
+        news = why is not None and why not in seen  # one report per distinct failure
+        if news:
             seen.add(why)
-            report.findings.append(_save(target, data, why, findings))
+            report.findings.append(_save(target, data, f"input {k}: {why}", findings))
         report.grew_mb = max(report.grew_mb, _rss_mb() - base)
         if report.grew_mb > memory_mb:
             report.findings.append(_save(target, data, f"memory grew {report.grew_mb:.0f} MB",
                                          findings))
             break
         k += 1
+        if progress is not None and (news or time.monotonic() - shown >= every):
+            shown = time.monotonic()
+            report.inputs, report.seconds = k, shown - start
+            progress(report)
     report.inputs, report.seconds = k, time.monotonic() - start
     return report

@@ -18,7 +18,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from fuzz.engine import fuzz  # noqa: E402
+from fuzz.engine import FINDINGS, Report, fuzz  # noqa: E402
 from fuzz.targets import TARGETS  # noqa: E402
 
 
@@ -33,6 +33,19 @@ def _atheris(name: str, seconds: float) -> int:
         return subprocess.call(cmd, cwd=ROOT, env=env)
 
 
+def _progress(report: Report) -> None:
+    print(f"  ... {report.line()}  rss {_rss_now_mb():.0f} MB", flush=True)
+
+
+def _rss_now_mb() -> float:
+    """Resident memory now (ru_maxrss is only the peak), from /proc where there is one."""
+    try:
+        with open("/proc/self/statm") as fh:
+            return int(fh.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 2**20
+    except OSError:
+        return 0.0
+
+
 def main(argv: list[str] | None = None) -> int:
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--seconds", type=float, default=10.0, help="per target (default 10)")
@@ -41,6 +54,10 @@ def main(argv: list[str] | None = None) -> int:
                    help="only these (repeatable; default all)")
     p.add_argument("--engine", choices=["auto", "atheris", "mutate"], default="auto")
     p.add_argument("--seed", type=int, default=0, help="mutate engine's seed")
+    p.add_argument("--findings", type=Path, default=FINDINGS,
+                   help="mutate engine: save failing inputs here (default fuzz/findings)")
+    p.add_argument("--progress", type=float, metavar="S",
+                   help="mutate engine: a progress line every S seconds and at each finding")
     args = p.parse_args(argv)
     engine = args.engine
     if engine == "auto":
@@ -55,7 +72,8 @@ def main(argv: list[str] | None = None) -> int:
             failed |= _atheris(name, args.seconds) != 0
             continue
         report = fuzz(TARGETS[name], None if args.inputs else args.seconds, args.inputs,
-                      args.seed)
+                      args.seed, findings=args.findings, every=args.progress or 0.0,
+                      progress=_progress if args.progress else None)
         print(report.line(), flush=True)
         for f in report.findings:
             print("  " + f)
