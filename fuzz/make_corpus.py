@@ -55,10 +55,19 @@ def _rainbow() -> None:
 def _link_and_sigma() -> None:
     from emulator.sigma import Terminal, state
     from protocols.link import LineSettings, Recorder, SerialLine
-    from protocols.sigma.demo import sigma_demo_stream
+    from protocols.sigma.demo import (
+        sigma_animation_stream,
+        sigma_demo_stream,
+        sigma_picture_stream,
+    )
 
     stream = sigma_demo_stream()
+    # the whole demo, and its two halves on their own: the animation half is 664 LUT orders,
+    # so a mutation of the whole demo mostly lands in those; the picture half (955 bytes)
+    # holds every other kind of order and costs a seventh as much to run
     _put("sigma-stream", "demo.sig", stream)
+    _put("sigma-stream", "picture.sig", sigma_picture_stream())
+    _put("sigma-stream", "animation.sig", sigma_animation_stream())
     (CORPUS / "link-recording").mkdir(parents=True, exist_ok=True)
     rec = Recorder(CORPUS / "link-recording" / "demo.rec", LineSettings(), xonxoff=True)
     line = SerialLine(LineSettings(), recorder=rec)
