@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from apps.ca.hashlife import census, convert, evolve
-from apps.ca.hashlife.bits.run import MAX_J, BitRun, BitTree
+from apps.ca.hashlife.bits.run import MAX_JUMP, BitRun, BitTree
 from apps.ca.hashlife.leaf import deterministic_reason, order_matters, pack
 from apps.ca.hashlife.plane import frame
 from apps.ca.hashlife.store import TOP_LEVEL, NodeStore
@@ -160,13 +160,13 @@ class HashLife:
     @staticmethod
     def _advance_bits(engine, bits: BitRun, total: int,  # noqa: ANN001
                       progress: Progress | None) -> None:
+        """Jumps of up to MAX_JUMP generations, each any length (one pass of the tree)."""
         done = 0
         while done < total:
-            node = bits.plane(engine)
-            j = min(MAX_J, (total - done).bit_length() - 1)
-            node = bits.jump(node, j, engine.edges)
-            done += 1 << j
-            engine.generation += 1 << j
+            n = min(MAX_JUMP, total - done)
+            node = bits.jump(bits.plane(engine), n, engine.edges)
+            done += n
+            engine.generation += n
             engine.adopt_tree(bits.tree(node))
             if progress is not None:
                 progress(done, total)

@@ -1,10 +1,12 @@
 """The binary path's memoised recursion (Gosper 1984) over 16 x 16 leaves.
 
-A node of level k >= 5 knows its centre after 2**j generations for j <= k - 2.  At full
-speed (j = k - 2) the nine overlapping sub-squares advance 2**(j-1) and the four squares
-built from their results 2**(j-1) more; below full speed the nine give their centres
-unadvanced and the four advance 2**j.  Level 5 (four leaves) is the base case
-(leaves.base: up to 8 generations by bit operations).  Kernels return -1 when a table is
+A node of level k >= 5 knows its centre after T generations for any T <= 2**(k-2): the
+four squares built from the nine overlapping sub-squares' results advance
+t2 = min(T, 2**(k-3)) generations, the nine the rest, T - t2 (none: their centres as they
+are).  At full speed (T = 2**(k-2)) that is Gosper's; any other T costs one pass too, where
+jumps of powers of two would take one pass per binary digit.  The memo keeps one T per
+node.  Level 5 (four leaves) is the base case (leaves.base: up to 8 generations by bit
+operations).  Kernels return -1 when a table is
 full.  As in the generic recursion (../evolve.py): self-recursive only, the nine and four
 squares in scalars, memoised results looked up before calling.
 """
@@ -15,7 +17,7 @@ import numpy as np
 from numba import njit
 
 from apps.ca.hashlife.bits.leaves import base
-from apps.ca.hashlife.bits.store import EMPTY, LEAF_LEVEL, LEVEL, RES, RESJ, WALL, join
+from apps.ca.hashlife.bits.store import EMPTY, FULL, LEAF_LEVEL, LEVEL, RES, RESJ, WALL, join
 
 BASE = LEAF_LEVEL + 1
 
@@ -37,29 +39,34 @@ def _centre(n, nodes, slots, leaves, lslots, meta, R, G):
 
 
 @njit(cache=True, inline="always")
-def _memo(n, j, nodes):
-    """The memoised result of ``n`` for 2**j generations, -2 if none (-1: n is -1)."""
+def _known(n, T, level, nodes, meta):
+    """The result of ``n`` (of ``level``) for T generations if it is known without
+    recursing — an empty or wall node's, or memoised — else -2 (-1: n is -1)."""
     if n < 0:
         return n
-    if nodes[n, RESJ] == j + 1:
+    if n == meta[EMPTY + level]:
+        return meta[EMPTY + level - 1]
+    if n == meta[WALL + level]:
+        return meta[WALL + level - 1]
+    if T == np.int64(1) << (level - 2):
+        if nodes[n, FULL] > 0:
+            return np.int64(nodes[n, FULL])
+    elif nodes[n, RESJ] == T + 1:
         return np.int64(nodes[n, RES])
     return np.int64(-2)
 
 
 @njit(cache=True)
-def step(node, j, nodes, slots, leaves, lslots, meta, R, G):
-    """Centre of ``node`` after 2**j generations (j <= level - 2); -1 if a table is full."""
+def step(node, T, nodes, slots, leaves, lslots, meta, R, G):
+    """Centre of ``node`` after T generations (1 <= T <= 2**(level - 2)); -1 if a table is
+    full.  The caller has looked for a known result first (``_known``)."""
     k = np.int64(nodes[node, LEVEL])
-    if node == meta[EMPTY + k]:
-        return np.int64(meta[EMPTY + k - 1])
-    if node == meta[WALL + k]:
-        return np.int64(meta[WALL + k - 1])
     if k == BASE:
-        out = base(node, np.int64(1) << j, nodes, leaves, lslots, meta, R, G)
+        out = base(node, T, nodes, leaves, lslots, meta, R, G)
     else:
-        full = j == k - 2
-        jj = j - 1 if full else j
         h = k - 1
+        t2 = min(T, np.int64(1) << (k - 3))  # the four's share: full speed if it can
+        t1 = T - t2  # the nine's (0: their centres as they are)
         a, b, c, d = _q(nodes, node, 0), _q(nodes, node, 1), _q(nodes, node, 2), \
             _q(nodes, node, 3)
         nine = (a, join(_q(nodes, a, 1), _q(nodes, b, 0), _q(nodes, a, 3), _q(nodes, b, 2),
@@ -79,10 +86,10 @@ def step(node, j, nodes, slots, leaves, lslots, meta, R, G):
             n = nine[i]
             if n < 0:
                 return np.int64(-1)
-            if full:
-                v = _memo(n, jj, nodes)
+            if t1 > 0:
+                v = _known(n, t1, h, nodes, meta)
                 if v == -2:
-                    v = step(n, jj, nodes, slots, leaves, lslots, meta, R, G)
+                    v = step(n, t1, nodes, slots, leaves, lslots, meta, R, G)
             else:
                 v = _centre(n, nodes, slots, leaves, lslots, meta, R, G)
             if v < 0:
@@ -109,34 +116,38 @@ def step(node, j, nodes, slots, leaves, lslots, meta, R, G):
                 join(r01, r02, r11, r12, h, nodes, slots, meta),
                 join(r10, r11, r20, r21, h, nodes, slots, meta),
                 join(r11, r12, r21, r22, h, nodes, slots, meta))
-        t0 = t1 = t2 = t3 = np.int64(-1)
+        u0 = u1 = u2 = u3 = np.int64(-1)
         for i in range(4):
             n = four[i]
             if n < 0:
                 return np.int64(-1)
-            v = _memo(n, jj, nodes)
+            v = _known(n, t2, h, nodes, meta)
             if v == -2:
-                v = step(n, jj, nodes, slots, leaves, lslots, meta, R, G)
+                v = step(n, t2, nodes, slots, leaves, lslots, meta, R, G)
             if v < 0:
                 return np.int64(-1)
             if i == 0:
-                t0 = v
+                u0 = v
             elif i == 1:
-                t1 = v
+                u1 = v
             elif i == 2:
-                t2 = v
+                u2 = v
             else:
-                t3 = v
-        out = join(t0, t1, t2, t3, h, nodes, slots, meta)
-    if out >= 0:
+                u3 = v
+        out = join(u0, u1, u2, u3, h, nodes, slots, meta)
+    if out >= 0 and T == np.int64(1) << (k - 2):
+        nodes[node, FULL] = out
+    elif out >= 0:
         nodes[node, RES] = out
-        nodes[node, RESJ] = j + 1
+        nodes[node, RESJ] = T + 1
     return out
 
 
-def advance(node: int, j: int, store, R: np.ndarray, G: np.ndarray) -> int:  # noqa: ANN001
-    """The centre of ``node`` after 2**j generations (-1: a table filled up)."""
-    if store.nodes[node, RESJ] == j + 1:
-        return int(store.nodes[node, RES])
-    return int(step(np.int64(node), np.int64(j), store.nodes, store.slots, store.leaves,
+def advance(node: int, T: int, store, R: np.ndarray, G: np.ndarray) -> int:  # noqa: ANN001
+    """The centre of ``node`` after T generations (-1: a table filled up)."""
+    known = int(_known(np.int64(node), np.int64(T), np.int64(store.nodes[node, LEVEL]),
+                       store.nodes, store.meta))
+    if known != -2:
+        return known
+    return int(step(np.int64(node), np.int64(T), store.nodes, store.slots, store.leaves,
                     store.lslots, store.meta, R, G))

@@ -3,7 +3,7 @@ torus tiled for wrapping edges, the plane inside all-wall leaves for bounded one
 
 from __future__ import annotations
 
-from apps.ca.hashlife.bits.store import BitStore
+from apps.ca.hashlife.bits.store import HAS_WALL, BitStore
 
 PLANE_LEVEL = 16
 
@@ -15,6 +15,7 @@ def frame(store: BitStore, plane: int, edges: str) -> int:
     if edges == "wrap":
         rolled = store.join(se, sw, ne, nw, k)
         return store.join(rolled, rolled, rolled, rolled, k + 1)
+    store.meta[HAS_WALL] = 1
     w = int(store.wall[k - 1])
     return store.join(store.join(w, w, w, nw, k), store.join(w, w, ne, w, k),
                       store.join(w, sw, w, w, k), store.join(se, w, w, w, k), k + 1)

@@ -20,10 +20,12 @@ from apps.ca.hashlife.leaf import deterministic_reason, generation, order_matter
 from apps.ca.rules import RuleSet
 
 CENTRE = 4
-# R (uint16): kind, number of count terms, the terms (kind, count), then the lookup.
+# The kernels' table (uint64): kind, number of terms, each term (kind, then the four bits of
+# its block sum as all-0 or all-1 masks, so the kernel compares by XOR), then the lookup.
 KIND_TOTALISTIC, KIND_LOOKUP = 0, 1
 TERM_ANY, TERM_BIRTH, TERM_SURVIVAL = 0, 1, 2
-LUT = 32
+TERM = 5  # words per term
+LUT = 64
 
 
 @dataclass(frozen=True)
@@ -32,7 +34,7 @@ class BinaryRule:
 
     table: np.ndarray  # uint8[512]
     totalistic: bool
-    packed: np.ndarray  # uint16: header (LUT entries) and, for lookup rules, 65536 more
+    packed: np.ndarray  # uint64: header (LUT entries) and, for lookup rules, 65536 more
 
 
 def derive_table(rules: RuleSet) -> np.ndarray:
@@ -78,21 +80,26 @@ def _derive(rules: RuleSet) -> BinaryRule | str:
     table = table.astype(np.uint8)
     terms = totalistic_terms(table)
     if terms is not None:
-        packed = np.zeros(LUT, np.uint16)
+        packed = np.zeros(LUT, np.uint64)
         packed[0], packed[1] = KIND_TOTALISTIC, len(terms)
-        for i, (kind, count) in enumerate(terms):
-            packed[2 + 2 * i], packed[3 + 2 * i] = kind, count
+        for i, (kind, total) in enumerate(terms):
+            at = 2 + TERM * i
+            packed[at] = kind
+            packed[at + 1:at + TERM] = [0xFFFFFFFFFFFFFFFF if (total >> b) & 1 else 0
+                                        for b in range(4)]
         return BinaryRule(table, True, packed)
-    packed = np.zeros(LUT + 65536, np.uint16)
+    packed = np.zeros(LUT + 65536, np.uint64)
     packed[0] = KIND_LOOKUP
     packed[LUT:] = lookup_4x4(table)
     return BinaryRule(table, False, packed)
 
 
 def totalistic_terms(table: np.ndarray) -> list[tuple[int, int]] | None:
-    """The (kind, neighbour count) terms of an outer-totalistic table — a count that gives
-    life whatever the centre is one TERM_ANY, else TERM_BIRTH or TERM_SURVIVAL — or None
-    if the table depends on more than the centre and the count."""
+    """The (kind, block sum) terms of an outer-totalistic table, None if the table depends
+    on more than the centre and its neighbour count.  The block sum counts the 3 x 3 block,
+    centre included (n neighbours: n if the centre is dead, n + 1 if live); a sum that
+    gives life whatever the centre is one TERM_ANY, else TERM_BIRTH (dead centres only) or
+    TERM_SURVIVAL (live ones only)."""
     index = np.arange(512)
     centre = (index >> CENTRE) & 1
     count = np.array([bin(i & ~(1 << CENTRE)).count("1") for i in index])
@@ -102,14 +109,13 @@ def totalistic_terms(table: np.ndarray) -> list[tuple[int, int]] | None:
             return None
         outcome[c, n] = v
     terms = []
-    for n in range(9):
-        born, lives = outcome[0, n] == 1, outcome[1, n] == 1
+    for total in range(10):
+        born = total < 9 and outcome[0, total] == 1
+        lives = total > 0 and outcome[1, total - 1] == 1
         if born and lives:
-            terms.append((TERM_ANY, n))
+            terms.append((TERM_ANY, total))
         elif born or lives:
-            terms.append((TERM_BIRTH if born else TERM_SURVIVAL, n))
-    if 2 + 2 * len(terms) > LUT:
-        return None
+            terms.append((TERM_BIRTH if born else TERM_SURVIVAL, total))
     return terms
 
 

@@ -13,7 +13,7 @@ from apps.ca.hashlife.bits.rule import BinaryRule, binary_rule
 from apps.ca.hashlife.bits.store import BitStore
 from apps.ca.rules import RuleSet
 
-MAX_J = 15  # the level-17 frame's centre after 2**15 generations
+MAX_JUMP = 1 << 15  # generations: the level-17 frame's centre after at most 2**15
 
 
 @dataclass
@@ -91,14 +91,15 @@ class BitRun:
         raise MemoryError("the plane does not fit the HashLife memory limit "
                           f"({s.limit_bytes >> 20} MB)")
 
-    def jump(self, node: int, j: int, edges: str) -> int:
-        """The plane ``node`` after 2**j generations; on a full table grow it (within the
-        memory limit) or collect garbage and retry, as a last resort two half jumps."""
+    def jump(self, node: int, generations: int, edges: str) -> int:
+        """The plane ``node`` after ``generations`` (1..MAX_JUMP); on a full table grow it
+        (within the memory limit) or collect garbage and retry, as a last resort two jumps
+        of half the length."""
         s = self.store
         collected = False
         while True:
             try:
-                out = evolve.advance(frame(s, node, edges), j, s, self.rule.packed,
+                out = evolve.advance(frame(s, node, edges), generations, s, self.rule.packed,
                                      self.grids)
             except MemoryError:  # framing the plane found the table full
                 out = -1
@@ -112,6 +113,7 @@ class BitRun:
             (node,) = s.make_room([node])
             if s.crowded:
                 break
-        if j == 0:
+        if generations == 1:
             raise s.full_error()
-        return self.jump(self.jump(node, j - 1, edges), j - 1, edges)
+        first = generations // 2
+        return self.jump(self.jump(node, first, edges), generations - first, edges)

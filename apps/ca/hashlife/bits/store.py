@@ -4,11 +4,14 @@ Leaves are 16 x 16 cells, a row of ``leaves`` (uint64 x 8): words 0..3 hold the 
 (row y in bits 16*(y%4).. of word y//4, column x in bit x of its row), words 4..7 the same
 for the wall (the outside of a bounded plane: nothing lives or is born there).  Leaf 1 is
 the empty leaf, leaf 2 the all-wall leaf.  Nodes of level 5..17 are rows of ``nodes``
-(int32 x 8): quadrants nw, ne, sw, se (leaf ids at level 5), the memoised result, 1 + its
-generation exponent (0: none), the level.  Id 0 of either table is never used (0 marks an
-empty hash slot).  ``meta`` packs the counts and the empty and wall towers, so kernels take
-one array for them (numba reference-counts every array argument of every call).  Kernels
-return -1 when a table is full; the caller grows it or collects garbage and retries.
+(int32 x 8): quadrants nw, ne, sw, se (leaf ids at level 5); a memoised result for some T
+generations and 1 + T (0: none); the level; the memoised result at full speed, T =
+2**(level - 2) (0: none).  Two memos, as one pass of any length asks a level for two
+lengths (evolve.py), which would otherwise evict each other's results.  Id 0 of either
+table is never used (0 marks an empty hash slot).  ``meta`` packs the counts, the empty
+and wall towers and a flag, so kernels take one array for them (numba reference-counts
+every array argument of every call).  Kernels return -1 when a table is full; the caller
+grows it or collects garbage and retries.
 """
 
 from __future__ import annotations
@@ -18,12 +21,14 @@ from numba import njit
 
 LEAF_LEVEL = 4  # 16 x 16 cells
 TOP_LEVEL = 17  # the 65536-square plane is level 16; stepping frames it in a level-17 node
-RES, RESJ, LEVEL = 4, 5, 6  # node row columns after the four quadrants
+RES, RESJ, LEVEL, FULL = 4, 5, 6, 7  # node row columns after the four quadrants
 ROW = 8
 EMPTY_LEAF, WALL_LEAF = 1, 2
-# meta: node count, leaf count, then the ids of the empty and the wall node of each level.
+# meta: node count, leaf count, the ids of the empty and the wall node of each level, and
+# whether any leaf has a wall yet (a bounded plane was framed; until then kernels skip it).
 N_NODES, N_LEAVES, EMPTY, WALL = 0, 1, 2, 2 + TOP_LEVEL + 1
-META = WALL + TOP_LEVEL + 1
+HAS_WALL = WALL + TOP_LEVEL + 1
+META = HAS_WALL + 1
 NODE_BYTES = 4 * ROW + 2 * 4  # a row and two hash slots (load factor at most 1/2)
 LEAF_BYTES = 8 * 8 + 2 * 4
 MIN_NODES, MIN_LEAVES = 1 << 12, 1 << 11
@@ -70,6 +75,7 @@ def join(a, b, c, d, level, nodes, slots, meta):
     nodes[n, 3] = d
     nodes[n, RESJ] = 0
     nodes[n, LEVEL] = level
+    nodes[n, FULL] = 0
     meta[N_NODES] = n + 1
     return np.int64(n)
 
@@ -175,6 +181,7 @@ def collect(roots, nodes, slots, leaves, lslots, meta):
                 nodes[k, q] = new_leaf[nodes[i, q]] if low else new[nodes[i, q]]
             nodes[k, RESJ] = 0
             nodes[k, LEVEL] = nodes[i, LEVEL]
+            nodes[k, FULL] = 0
             k += 1
     meta[N_NODES] = k
     slots[:] = 0
@@ -191,8 +198,10 @@ def collect(roots, nodes, slots, leaves, lslots, meta):
 class BitStore:
     """One binary rule's node and leaf tables, their memory limit and garbage collection."""
 
-    def __init__(self, limit_bytes: int = 512 << 20, nodes: int = 1 << 18,
-                 leaves: int = 1 << 16) -> None:
+    def __init__(self, limit_bytes: int = 512 << 20, nodes: int = 1 << 13,
+                 leaves: int = 1 << 12) -> None:
+        # Small to start: a fresh page costs a fault at first touch, and the hash touches
+        # them at random, so a big empty table is slower than doubling a small one.
         self.limit_bytes = int(limit_bytes)
         self.epoch = 0  # bumped by every collection: ids of older epochs are void
         cap_n, cap_l = MIN_NODES, MIN_LEAVES
