@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 
 from camlab88.runopts import add_run_options, fail, run_options
 
@@ -72,12 +73,23 @@ def program(args: argparse.Namespace) -> int:
                            getattr(args, "_argv", None))
         if opts.headless and player is None and opts.stop_after is None:
             opts.stop_after = 100
-        stats = _run(_options(args, preview=opts.screenshot is not None), player, opts)
+        options = _options(args, preview=opts.screenshot is not None)
+        stats = _run(options, player, opts)
     except (OSError, LogError, RuleError, PatternError, ScriptError, ValueError) as exc:
         # TriposArgsError is a ValueError
         return fail(COMMAND, exc)
     _print_stats(stats, args.json)
+    _report_files(options)
     return 0
+
+
+def _report_files(options) -> None:  # noqa: ANN001
+    """Name the Log (and where its checkpoints go) that the run kept on disk."""
+    if options.log is None:
+        return
+    every = (f"; a checkpoint every {options.checkpoint} generations beside it as "
+             f"{options.log}<generation>" if options.checkpoint else "")
+    print(f"{COMMAND}: the Log is in {options.log}{every}", file=sys.stderr)
 
 
 def _apply_tripos(args: argparse.Namespace) -> None:

@@ -36,18 +36,12 @@ def front_options(p: argparse.ArgumentParser) -> None:
     add_run_options(p, stop_after=False)
 
 
-def run_front(front, args: argparse.Namespace, command: str, keys: str):  # noqa: ANN001, ANN201
-    """Run a KAS program on an emulated T5684 over the line, on the harness: from a script
-    and/or a window.  Returns the program's session (protocols side)."""
-    from apps.kas.program.keyboard import KEY_BYTES
-    from apps.kas.program.layout import TABLET_AREA
-    from apps.kas.program.script import Session, load_timed_script
+def prepare_front(args: argparse.Namespace, command: str):  # noqa: ANN201
+    """Everything that can refuse a KAS program's run, before anything is written: the
+    script read, the display rule applied, the --record and --tablet combination checked.
+    Returns what ``run_front`` needs."""
+    from apps.kas.program.script import load_timed_script
     from camlab88.runopts import run_options
-    from emulator.harness import run
-    from emulator.harness.sigma import SigmaProgramTarget
-    from emulator.sigma import Terminal
-    from emulator.tablet.pointer_input import TabletInput
-    from protocols.link import LineSettings
 
     if args.headless and args.script is None:
         raise ValueError("--headless needs --script")
@@ -57,6 +51,23 @@ def run_front(front, args: argparse.Namespace, command: str, keys: str):  # noqa
                        getattr(args, "_argv", None))
     if opts.record is not None and args.tablet:
         raise ValueError("--record cannot record a --tablet's reports; record with the mouse")
+    return events, opts
+
+
+def run_front(front, args: argparse.Namespace, command: str, keys: str,  # noqa: ANN001, ANN201
+              prepared=None):  # noqa: ANN001
+    """Run a KAS program on an emulated T5684 over the line, on the harness: from a script
+    and/or a window.  Returns the program's session (protocols side)."""
+    from apps.kas.program.keyboard import KEY_BYTES
+    from apps.kas.program.layout import TABLET_AREA
+    from apps.kas.program.script import Session
+    from emulator.harness import run
+    from emulator.harness.sigma import SigmaProgramTarget
+    from emulator.sigma import Terminal
+    from emulator.tablet.pointer_input import TabletInput
+    from protocols.link import LineSettings
+
+    events, opts = prepared or prepare_front(args, command)
     notices: list[str] = []
     tablet = TabletInput(args.tablet, area=TABLET_AREA, notify=notices.append)
     session = Session(front, Terminal("t5684"), LineSettings(baud=args.baud), pointer=tablet)

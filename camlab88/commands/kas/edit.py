@@ -30,11 +30,13 @@ def edit(args: argparse.Namespace) -> int:
     from apps.kas import files, library
     from apps.kas.editor import Editor
     from apps.kas.program import EditorFront
+    from camlab88.commands.kas import prepare_front
 
     target = Path(args.file)
     preview = args.screenshot is not None  # a screenshot run never touches the user's files
     saved: list[int] = []
     try:
+        prepared = prepare_front(args, COMMAND)  # a refused run creates no FILE
         if not target.exists() and not preview:
             _create(target, Editor(None, None, args.seed).drawing)
         start = files.load_keyframe(target) if target.exists() else None
@@ -47,7 +49,7 @@ def edit(args: argparse.Namespace) -> int:
             front.editor.message = f"saved {target.name}" if not preview else "(preview)"
 
         front = EditorFront(Editor(start, over, args.seed), args.background, save)
-        session = _run(front, args)
+        session = _run(front, args, prepared)
     except (OSError, ValueError) as exc:
         return fail(COMMAND, exc)
     _report(front.editor, session, target, saved, preview)
@@ -66,10 +68,10 @@ def _create(target: Path, empty) -> None:  # noqa: ANN001
     print(f"{COMMAND}: created {target} (an empty keyframe)")
 
 
-def _run(front, args: argparse.Namespace):  # noqa: ANN001, ANN202
+def _run(front, args: argparse.Namespace, prepared):  # noqa: ANN001, ANN202
     from camlab88.commands.kas import run_front
 
-    return run_front(front, args, COMMAND, KEYS)
+    return run_front(front, args, COMMAND, KEYS, prepared)
 
 
 def _report(ed, session, target: Path, saved: list[int], preview: bool) -> None:  # noqa: ANN001

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
 from camlab88.runopts import fail
 
@@ -24,11 +23,12 @@ def _edit_script(args: argparse.Namespace) -> int:
     from apps.kas import files, library
     from apps.kas.editor import Editor
     from apps.kas.events import parse_script
+    from protocols.textinput import read_text  # a missing file named, not [Errno 2]
 
     try:
         start = files.load_keyframe(library.resolve(args.start)) if args.start else None
         over = files.load_drawing_or_frame(library.resolve(args.over)) if args.over else None
-        events = parse_script(Path(args.script).read_text(encoding="utf-8"), args.script)
+        events = parse_script(read_text(args.script), args.script)
         ed = Editor(start, over, args.seed)
         ed.run(events)
         files.save_keyframe(args.out, ed.drawing)

@@ -116,7 +116,8 @@ def _replay(seq: Any, ops: Any, args: argparse.Namespace) -> int:
         if movie is not None and target.shown:
             print(f"wrote {write_movie(target.shown, movie, seq.fps)}")
     if args.frames:
-        print(f"wrote {target.n} frames to {args.frames}/frame_00001.png ..")
+        print(f"wrote {target.n} frames to {args.frames}/frame_00001.png .. "
+              f"frame_{target.n:05d}.png")
     print(f"{target.n} frames painted: {target.chars} characters, "
           f"{float(target.time()):.1f} s of line time at {args.baud} baud")
     for f in target.failures:

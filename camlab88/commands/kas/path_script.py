@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
 from camlab88.runopts import fail
 
@@ -25,11 +24,12 @@ def _path_script(args: argparse.Namespace) -> int:
     from apps.kas import files, library
     from apps.kas.events import parse_script
     from apps.kas.path_editor import PathEditor
+    from protocols.textinput import read_text  # a missing file named, not [Errno 2]
 
     try:
         pe = PathEditor(files.load_drawing_or_frame(library.resolve(args.first)),
                         files.load_drawing_or_frame(library.resolve(args.second)))
-        pe.run(parse_script(Path(args.script).read_text(encoding="utf-8"), args.script))
+        pe.run(parse_script(read_text(args.script), args.script))
         path = pe.sample_path()
         if path is None:
             raise ValueError(f"{args.script}: the script draws no path")
@@ -37,6 +37,6 @@ def _path_script(args: argparse.Namespace) -> int:
         files.save_timing(args.timing_out, pe.timing())
     except (OSError, ValueError) as exc:
         return fail("camlab88 kas path-script", exc)
-    print(f"path of {len(path.points)} points, {len(pe.ticks)} ticks "
-          f"({len(pe.ticks) + 2} frames with the keyframes)")
+    print(f"{args.path_out}: path of {len(path.points)} points; {args.timing_out}: "
+          f"{len(pe.ticks)} ticks ({len(pe.ticks) + 2} frames with the keyframes)")
     return 0

@@ -4,7 +4,11 @@ TCP port or a serial URL; in a window (or headless, line only) on the harness.""
 from __future__ import annotations
 
 import argparse
+import contextlib
+import signal
 import sys
+import threading
+from collections.abc import Iterator
 from fractions import Fraction
 from pathlib import Path
 
@@ -48,25 +52,48 @@ def run(args: argparse.Namespace) -> int:
     from emulator.harness import run as run_target
 
     got, settings = _stream_and_settings(args)
-    opts = run_options(args, COMMAND, "serving the line without a window",
-                       argv=getattr(args, "_argv", None))
+    ends = args.seconds is not None or args.screenshot is not None
+    opts = run_options(args, COMMAND, "serving the line without a window"
+                       + ("" if ends else " until Ctrl-C"), argv=getattr(args, "_argv", None))
     line, recorder = _line(args, settings)
     target = _target(args, line, got)
-    try:
+    # kill / a service manager: from the moment the line is open, the recording is written
+    with _sigterm_as_interrupt(), contextlib.ExitStack() as done:
+        done.callback(_finish, target, line, recorder, args)
         if replay.active() is None:
             target.bridge = _open_bridge(args, settings, target.tap)
         run_target(target, opts)
-    finally:
-        if target.bridge is not None:
-            target.bridge.close()
-        if recorder is not None:
-            line.finish()
-            recorder.close()
-            print(f"{COMMAND}: recorded the line to {args.record_line}")
     s = target.term.stats
     print(f"camlab88 sigma: {s['bytes']} bytes in, {s['unknown']} unknown and "
           f"{s['malformed']} malformed orders skipped", flush=True)
     return 0
+
+
+@contextlib.contextmanager
+def _sigterm_as_interrupt() -> Iterator[None]:
+    """SIGTERM ends the run as Ctrl-C does, so --record-line's file is finished and written;
+    without this a headless run (no SDL to turn SIGTERM into a quit) lost it."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def interrupt(signum: int, frame: object) -> None:
+        raise KeyboardInterrupt
+
+    old = signal.signal(signal.SIGTERM, interrupt)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, old)
+
+
+def _finish(target, line, recorder, args: argparse.Namespace) -> None:  # noqa: ANN001
+    if target.bridge is not None:
+        target.bridge.close()
+    if recorder is not None:
+        line.finish()
+        recorder.close()
+        print(f"{COMMAND}: recorded the line to {args.record_line}", flush=True)
 
 
 def _stream_and_settings(args: argparse.Namespace):  # noqa: ANN202

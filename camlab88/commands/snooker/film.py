@@ -86,6 +86,9 @@ def film(args: argparse.Namespace) -> int:
     if args.mode != "truecolour" and (args.size != (768, 512) or args.dask or args.motion_blur):
         return fail(COMMAND, f"--mode {args.mode} draws the T5688's 768x512 screen one "
                     "frame after another; --size, --dask and --motion-blur are truecolour's")
+    missing = [p for p in (args.motion, args.script) if p is not None and not Path(p).exists()]
+    if missing:  # before any work, and not as a raw [Errno 2]
+        return fail(COMMAND, f"{missing[0]}: no such file")
     try:
         return _film(args)
     except CclErrors as exc:
@@ -123,9 +126,15 @@ def _film(args: argparse.Namespace) -> int:
     for movie in (args.out, args.gif):
         if movie is not None:
             write_movie(files, movie)
-    print(f"{COMMAND}: {len(views)} frames -> {args.out} ({note}); views {paths.views}, "
-          f"frames {paths.frames}/", file=sys.stderr)
+    print(summary(args.out, args.gif, len(views), note, paths.views, paths.frames),
+          file=sys.stderr)
     return 0
+
+
+def summary(out: Path, gif: Path | None, n: int, note: str, views: Path, frames: Path) -> str:
+    """The closing line: every file the film wrote, named."""
+    films = f"{out} and {gif}" if gif is not None else f"{out}"
+    return f"{COMMAND}: {n} frames -> {films} ({note}); views {views}, frames {frames}/"
 
 
 def _sigma_frames(args: argparse.Namespace, scene, views, frames: Path) -> str:  # noqa: ANN001

@@ -107,3 +107,5 @@ def _report(session, cp, args: argparse.Namespace) -> None:  # noqa: ANN001
     potted = [BALL_NAMES[i] for i in range(22) if not session.balls.on_table[i]]
     print(f"off the table: {', '.join(potted) or 'none'}; scores {st['scores'][0]}-"
           f"{st['scores'][1]}; {st['message']}")
+    if args.save_session:
+        print(f"saved the session to {args.save_session}")

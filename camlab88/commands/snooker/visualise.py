@@ -39,13 +39,15 @@ def visualise(args: argparse.Namespace) -> int:
         frames_dir, args.frames = args.frames, None  # written here, numbered by frame
         opts = run_options(args, COMMAND, "playing every frame once",
                            argv=getattr(args, "_argv", None))
-        h, vis = _run(shot, views, opts, frames_dir)
+        h, vis, n_written = _run(shot, views, opts, frames_dir)
     except (CheckpointError, SessionError, ViewFileError, ViewsError, OSError) as exc:
         return fail(COMMAND, exc)
     d = vis.display
+    wrote = (f"; wrote {n_written} frames to {frames_dir}/frame_NNNNN.png"
+             if frames_dir is not None else "")
     print(f"{COMMAND}: {h.frames_shown} frames shown ({len(views)} in the view file, "
-          f"frames {views[0].frame}-{views[-1].frame}); table redrawn {d.table_redraws} times",
-          file=sys.stderr)
+          f"frames {views[0].frame}-{views[-1].frame}); table redrawn {d.table_redraws} "
+          f"times{wrote}", file=sys.stderr)
     return 0
 
 
@@ -70,11 +72,14 @@ def _run(shot, views, opts, frames_dir):  # noqa: ANN001, ANN202
         """Each newly drawn frame as DIR/frame_NNNNN.png, NNNNN its checkpoint frame."""
 
         written: int | None = None
+        count = 0
 
         def on_frame(self, harness, frame) -> None:  # noqa: ANN001
             if frames_dir is not None and vis.drawn is not None and vis.drawn != self.written:
                 write_png(frame, frame_path(frames_dir, vis.views[vis.drawn].frame))
                 self.written = vis.drawn
+                self.count += 1  # named in the closing line
 
     target = RainbowTarget(rb, step, COMMAND, KEYS)
-    return run(target, opts, [Frames()]), vis
+    frames = Frames()
+    return run(target, opts, [frames]), vis, frames.count
