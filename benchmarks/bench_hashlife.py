@@ -11,9 +11,13 @@ in the same run on the same machine:
   [(t+17)^2+511]/4 for t divisible by 4).
 
 Each figure is the minimum and median of several runs, each with an empty node table (a
-fresh lifelib lifetree), as CPU time (this process's) and wall time; the machine is shared
-with other work, so the load average is printed beside each.  Then the whole process of
-``camlab88 ca run --engine hashlife`` for the three patterns, start-up included.
+fresh lifelib lifetree), as CPU time (this process's) and wall time; the machine may be
+shared with other work, so the load average is printed beside each.  "ratio" is ours /
+lifelib on minimum CPU time (goal: at most 2).  "path" says which of our HashLife paths
+ran (binary: two-state rules on a plane of 1s, 16 x 16-cell bit leaves; generic: leaves of
+life-form values), then its table: bytes allocated, nodes and leaves made.  Then the whole
+process of ``camlab88 ca run --engine hashlife`` for the three patterns, start-up
+included (goal: under 3 s together).
 
 lifelib is for this benchmark only, not a dependency of camlab88:
 ``.venv/bin/pip install python-lifelib`` (its first use compiles C++ with g++, about a minute).
@@ -52,7 +56,7 @@ def rle_body(path: str) -> str:
     return "".join(lines)
 
 
-def ours(path: str, generations: int) -> tuple[list[float], list[float], int, int]:
+def ours(path: str, generations: int) -> tuple[list[float], list[float], int, str]:
     rules = load_rules(rules_path("life"))
     xs, ys, ts = read_pattern(path).placed(CENTRE, CENTRE, "identity")
     cpu, wall = [], []
@@ -66,8 +70,14 @@ def ours(path: str, generations: int) -> tuple[list[float], list[float], int, in
         pop = e.population
         cpu.append(time.process_time() - c)
         wall.append(time.perf_counter() - w)
-    run = rules._tables.get("hashlife_bits_run") or rules._tables["hashlife_run"]
-    return cpu, wall, pop, run.store.bytes
+    bits = rules._tables.get("hashlife_bits_run")
+    if bits is not None:
+        s = bits.store
+        table = f"binary {s.bytes / 2**20:.1f} MB, {s.count:,} nodes + {s.leaf_count:,} leaves"
+    else:
+        s = rules._tables["hashlife_run"].store
+        table = f"generic {s.bytes / 2**20:.1f} MB, {s.count:,} nodes"
+    return cpu, wall, pop, table
 
 
 def theirs(path: str, generations: int) -> tuple[list[float], list[float], int] | str:
@@ -113,10 +123,21 @@ def whole_processes() -> None:
                   f"wall, {children_cpu() - cpu:.2f} s CPU   {load()}")
 
 
+def machine() -> str:
+    cpu = "?"
+    info = Path("/proc/cpuinfo")
+    if info.exists():
+        names = [ln.split(":", 1)[1].strip() for ln in info.read_text().splitlines()
+                 if ln.startswith("model name")]
+        cpu = names[0] if names else cpu
+    return (f"{time.strftime('%Y-%m-%d %H:%M')}, {cpu}, {os.cpu_count()} cores, python "
+            f"{sys.version.split()[0]}, {load()}")
+
+
 def main() -> None:
-    print(f"python {sys.version.split()[0]}, {os.cpu_count()} cores, {load()}")
+    print(machine())
     print("pattern        generations   population   ours cpu min / median    "
-          "lifelib cpu min / median   ratio   ours wall min / median   table")
+          "lifelib cpu min / median   ratio   ours wall min / median   path and table")
     for name, path, gens in CASES:
         cpu, wall, pop, table = ours(path, gens)
         ref = theirs(path, gens)
@@ -127,7 +148,7 @@ def main() -> None:
         same = "" if rpop == pop else f"  POPULATIONS DIFFER: lifelib {rpop}"
         ratio = min(cpu) / max(min(rcpu), 1e-4)
         print(f"{name:14} {gens:>11,} {pop:>12,}  {fmt(cpu)}   {fmt(rcpu)}   {ratio:5.1f}x  "
-              f"{fmt(wall)}  {table >> 20} MB   {load()}{same}")
+              f"{fmt(wall)}  {table}   {load()}{same}")
     if "--no-process" not in sys.argv:
         whole_processes()
 
