@@ -86,17 +86,44 @@ def normalise_argv(argv: Sequence[str]) -> list[str]:
     return out
 
 
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, delivered the way Ctrl-C is, so every program's clean-up (a ``--record``
+    file finished and written, temporaries removed) runs for both."""
+
+
+def _terminate(signum: int, frame: object) -> None:
+    raise Terminated
+
+
+def _catch_sigterm() -> object:
+    """Install the SIGTERM handler (main thread only); returns the handler it replaced."""
+    import signal
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        return None
+    return signal.signal(signal.SIGTERM, _terminate)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     parser = build_parser()
     words = normalise_argv(sys.argv[1:] if argv is None else argv)
     args = parser.parse_args(words)
     args._argv = words  # what a --record recording stores and a replay re-runs
+    previous = _catch_sigterm()
     try:
         result = args.handler(args)
+    except Terminated:
+        return 143  # 128 + SIGTERM, as the shell reports a process it ended
     except KeyboardInterrupt:
         return 130
     except BrokenPipeError:
         return 0
+    finally:
+        if previous is not None:
+            import signal
+
+            signal.signal(signal.SIGTERM, previous)
     return int(result or 0)
 
 

@@ -86,7 +86,10 @@ def _check_writable(command: str, path: Path, doing: str) -> None:
 
 
 def fail(command: str, message: object, status: int = 2) -> int:
-    """Print ``command: message`` on stderr and return ``status``."""
+    """Print ``command: message`` on stderr and return ``status``; an OS error reads
+    ``file: reason`` (not Python's ``[Errno 2] No such file or directory: 'file'``)."""
+    if isinstance(message, OSError) and message.filename is not None and message.strerror:
+        message = f"{message.filename}: {message.strerror}"
     print(f"{command}: {message}", file=sys.stderr)
     return status
 

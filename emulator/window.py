@@ -7,6 +7,7 @@ the emulator package (or running headless) never loads pygame.
 from __future__ import annotations
 
 import os
+import sys
 import time
 from pathlib import Path
 from typing import Any
@@ -219,7 +220,7 @@ def main(argv: list[str] | None = None) -> int:
 
     if not display_available():  # the one display rule: never an invisible window
         print("python -m emulator.window: no display for a window (set DISPLAY, or run "
-              "under xvfb-run)")
+              "under xvfb-run)", file=sys.stderr)
         return 2
     frame = test_card(width, height)
     print("window open: input events are printed; Escape or close to quit", flush=True)

@@ -46,6 +46,17 @@ def _enable_parmrk(port: serial.Serial) -> bool:
         return False
 
 
+def _why(exc: BaseException) -> str:
+    """The reason a port did not open, once: pyserial's message repeats the port name and
+    nests the OS error ('could not open port X: [Errno 2] No such file ...: 'X'')."""
+    errno = getattr(exc, "errno", None)
+    if isinstance(errno, int) and errno > 0:
+        import os
+
+        return os.strerror(errno)
+    return str(exc)
+
+
 class SerialSource(TabletSource):
     def __init__(self, spec: SourceSpec, on_raw: Callable[[bytes], None] | None = None,
                  sleep: Callable[[float], None] = time.sleep,
@@ -68,7 +79,7 @@ class SerialSource(TabletSource):
                 timeout=0, write_timeout=WRITE_TIMEOUT, do_not_open=False,
             )
         except (serial.SerialException, OSError, ValueError) as exc:
-            raise SourceLost(f"{spec.text}: cannot open {spec.target}: {exc}") from exc
+            raise SourceLost(f"{spec.text}: cannot open {spec.target}: {_why(exc)}") from exc
         parmrk = spec.kind == "serial" and parity != "N" and _enable_parmrk(self.port)
         self.parser: TabletParser = make_parser(spec.protocol or "", spec.options, parmrk=parmrk)
         self.model = self.parser.model

@@ -33,6 +33,7 @@ def monitor(args: argparse.Namespace) -> int:
     def raw(data: bytes) -> None:
         print("raw " + data.hex(" "), flush=True)
 
+    _refuse_before_opening(args.source)
     source, emu, _spec = open_tablet(args.source, raw if args.raw else None, demo_path())
     try:
         _maybe_window(emu, args)
@@ -43,6 +44,20 @@ def monitor(args: argparse.Namespace) -> int:
         return _loop(source, emu, args)
     finally:
         (emu or source).close()
+
+
+def _refuse_before_opening(source_text: str) -> None:
+    """A mouse-driven emulated tablet needs a window: without a display refuse before its pty
+    is opened and announced (a newcomer saw the pty's path, then the refusal)."""
+    from emulator.harness import choose_headless
+    from protocols.tablets.sources import SourceError, parse_source
+
+    try:
+        spec = parse_source(source_text)
+    except (SourceError, ValueError):
+        return  # open_tablet reports it
+    if spec.kind == "emulated" and spec.options.get("drive", "mouse") == "mouse":
+        choose_headless(COMMAND, False, None, "use SOURCE?drive=demo, or a real tablet")
 
 
 def _maybe_window(emu, args: argparse.Namespace) -> None:  # noqa: ANN001
