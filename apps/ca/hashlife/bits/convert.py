@@ -33,7 +33,7 @@ def build(keys, xs, ys, nodes, slots, leaves, lslots, meta):
         return np.int64(meta[EMPTY + PLANE_LEVEL])
     lkeys = np.empty(n, np.int64)
     ids = np.empty(n, np.int64)
-    words = np.zeros(8, np.uint64)
+    words = np.zeros((1, 8), np.uint64)
     m = 0
     i = 0
     while i < n:
@@ -41,9 +41,9 @@ def build(keys, xs, ys, nodes, slots, leaves, lslots, meta):
         words[:] = 0
         while i < n and keys[i] == key:
             y, x = ys[i] & 15, xs[i] & 15
-            words[y >> 2] |= np.uint64(1) << np.uint64(16 * (y & 3) + x)
+            words[0, y >> 2] |= np.uint64(1) << np.uint64(16 * (y & 3) + x)
             i += 1
-        t = leaf(words, leaves, lslots, meta)
+        t = leaf(words, 0, 0, leaves, lslots, meta)
         if t < 0:
             return np.int64(-1)
         lkeys[m] = key

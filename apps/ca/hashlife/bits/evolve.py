@@ -27,7 +27,7 @@ def _q(nodes, n, q):
     return np.int64(nodes[n, q])
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _centre(n, nodes, slots, leaves, lslots, meta, R, G):
     """The centre half of ``n`` (no time passes); -1 if a table is full."""
     k = np.int64(nodes[n, LEVEL])

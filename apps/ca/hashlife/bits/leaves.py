@@ -36,7 +36,7 @@ def _pair(leaves, i, w, half):
     return (x & HALF) | ((x & np.uint64(0xFFFF0000)) << U16)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def load(nw, ne, sw, se, leaves, meta, G):
     """The 32 x 32 square of four leaves into planes 0 (live) and 2 (wall)."""
     walls = meta[HAS_WALL] != 0  # no wall anywhere until a bounded plane was framed
@@ -48,7 +48,7 @@ def load(nw, ne, sw, se, leaves, meta, G):
                 (_pair(leaves, se, w, half) << U16)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def centre(p, G, leaves, lslots, meta):
     """The leaf of the centre 16 x 16 of plane ``p`` (with the wall of plane 2); -1 if the
     leaf table is full."""
@@ -60,7 +60,7 @@ def centre(p, G, leaves, lslots, meta):
                 ((a >> np.uint64(8)) & HALF) | (((a >> np.uint64(40)) & HALF) << U16) | \
                 (((b >> np.uint64(8)) & HALF) << U32) | \
                 (((b >> np.uint64(40)) & HALF) << np.uint64(48))
-    return leaf(G[SCRATCH, WORDS_AT:], leaves, lslots, meta)
+    return leaf(G, SCRATCH, WORDS_AT, leaves, lslots, meta)
 
 
 @njit(cache=True, inline="always")
@@ -70,7 +70,7 @@ def _sum3(x):
     return left ^ x ^ right, (left & x) | (right & (left ^ x))
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def totalistic(s, d, lo, hi, R, G):
     """Plane d words lo..hi-1 = the next generation of plane s by the terms of R (block
     sums, rule.totalistic_terms): the sum of each 3 x 3 block, centre included, by
@@ -107,7 +107,7 @@ def totalistic(s, d, lo, hi, R, G):
         p0, p1, m0, m1 = m0, m1, q0, q1
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def lookup(s, d, lo, hi, R, G):
     """Plane d words lo..hi-1 = the next generation of plane s by R's 4 x 4 -> 2 x 2 table:
     each word's two rows from the four rows around them, two columns at a time (columns 0
@@ -129,7 +129,7 @@ def lookup(s, d, lo, hi, R, G):
         G[d, i] = (top | (bottom << U32)) & ~G[2, i]
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def base(node, gens, nodes, leaves, lslots, meta, R, G):
     """The centre leaf of level-5 ``node`` after ``gens`` (0..8) generations; -1 if the
     leaf table is full."""
