@@ -4,7 +4,8 @@ registry: one interface, one module per algorithm).
 * ``direct``: message passing one generation at a time (thesis section 7.5; engine.py and
   kernels.py) — every rule set, advance areas, section 8.1 random outcomes and broadcasts;
 * ``hashlife``: memoised quadtree jumps (apps/ca/hashlife) — deterministic rule sets on the
-  whole plane, any number of generations at once.
+  whole plane, any number of generations at once; two-state rules (found by running them,
+  hashlife/bits/rule.py) on a plane of 1s take its binary path of bit leaves.
 
 ``auto`` picks HashLife when it applies and the run is long enough to pay for building the
 tree (:func:`choose_engine`).

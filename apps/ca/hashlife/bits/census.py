@@ -68,13 +68,23 @@ def _occupy(node, level, y0, x0, axis, out, memo, done, nodes, leaves, meta):
         return
     h = np.int64(1) << (level - 1)
     k = level - 1
-    _occupy(np.int64(nodes[node, 0]), k, y0, x0, axis, out, memo, done, nodes, leaves, meta)
-    _occupy(np.int64(nodes[node, 1]), k, y0, x0 + h, axis, out, memo, done, nodes, leaves,
-            meta)
-    _occupy(np.int64(nodes[node, 2]), k, y0 + h, x0, axis, out, memo, done, nodes, leaves,
-            meta)
-    _occupy(np.int64(nodes[node, 3]), k, y0 + h, x0 + h, axis, out, memo, done, nodes,
-            leaves, meta)
+    nw, ne, sw, se = np.int64(nodes[node, 0]), np.int64(nodes[node, 1]), \
+        np.int64(nodes[node, 2]), np.int64(nodes[node, 3])
+    # Two equal quadrants side by side along the axis cover the same rows (columns): one
+    # visit (a plane filled with a regular pattern is otherwise a million visits).
+    _occupy(nw, k, y0, x0, axis, out, memo, done, nodes, leaves, meta)
+    if axis == 0:
+        if ne != nw:
+            _occupy(ne, k, y0, x0 + h, axis, out, memo, done, nodes, leaves, meta)
+        _occupy(sw, k, y0 + h, x0, axis, out, memo, done, nodes, leaves, meta)
+        if se != sw:
+            _occupy(se, k, y0 + h, x0 + h, axis, out, memo, done, nodes, leaves, meta)
+    else:
+        if sw != nw:
+            _occupy(sw, k, y0 + h, x0, axis, out, memo, done, nodes, leaves, meta)
+        _occupy(ne, k, y0, x0 + h, axis, out, memo, done, nodes, leaves, meta)
+        if se != ne:
+            _occupy(se, k, y0 + h, x0 + h, axis, out, memo, done, nodes, leaves, meta)
 
 
 def occupied(node: int, axis: int, store) -> np.ndarray:  # noqa: ANN001 - a BitStore

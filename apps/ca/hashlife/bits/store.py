@@ -197,6 +197,28 @@ def collect(roots, nodes, slots, leaves, lslots, meta):
     return k
 
 
+@njit(cache=True)
+def towers(nodes, slots, leaves, lslots, meta):
+    """Make the empty and the all-wall leaf (ids 1 and 2) and the uniform nodes of every
+    level above them, into meta (one call: 26 calls from Python cost 0.1 ms a store)."""
+    words = np.zeros((1, 8), np.uint64)
+    if leaf(words, 0, 0, leaves, lslots, meta) != EMPTY_LEAF:
+        return -1
+    words[0, 4:] = _M
+    if leaf(words, 0, 0, leaves, lslots, meta) != WALL_LEAF:
+        return -1
+    meta[EMPTY + LEAF_LEVEL] = EMPTY_LEAF
+    meta[WALL + LEAF_LEVEL] = WALL_LEAF
+    for base in (EMPTY, WALL):
+        for k in range(LEAF_LEVEL + 1, TOP_LEVEL + 1):
+            q = meta[base + k - 1]
+            n = join(q, q, q, q, np.int64(k), nodes, slots, meta)
+            if n < 0:
+                return -1
+            meta[base + k] = n
+    return 0
+
+
 class BitStore:
     """One binary rule's node and leaf tables, their memory limit and garbage collection."""
 
@@ -231,15 +253,8 @@ class BitStore:
         return np.zeros((cap, row), dtype), np.zeros(2 * cap, np.int32)
 
     def _towers(self) -> None:
-        words = np.zeros(8, np.uint64)
-        assert self.add_leaf(words) == EMPTY_LEAF
-        words[4:] = _M
-        assert self.add_leaf(words) == WALL_LEAF
-        for base, value in ((EMPTY, EMPTY_LEAF), (WALL, WALL_LEAF)):
-            self.meta[base + LEAF_LEVEL] = value
-            for k in range(LEAF_LEVEL + 1, TOP_LEVEL + 1):
-                q = int(self.meta[base + k - 1])
-                self.meta[base + k] = self.join(q, q, q, q, k)
+        if towers(self.nodes, self.slots, self.leaves, self.lslots, self.meta) < 0:
+            raise MemoryError("the HashLife node table cannot hold its fixed part")
 
     @property
     def empty(self) -> np.ndarray:
