@@ -56,7 +56,10 @@ def _known(n, T, level, nodes, meta):
     return np.int64(-2)
 
 
-@njit(cache=True)
+# _nrt=False: the recursion allocates nothing, and without numba's runtime its array
+# arguments are not reference counted — perf showed those atomic counts taking half the time
+# of small jumps (gun 1.6 -> 0.7 ms, spacefiller 1.7 -> 0.8, puffer 95 -> 77).
+@njit(cache=True, _nrt=False)
 def step(node, T, nodes, slots, leaves, lslots, meta, R, G):
     """Centre of ``node`` after T generations (1 <= T <= 2**(level - 2)); -1 if a table is
     full.  The caller has looked for a known result first (``_known``)."""
