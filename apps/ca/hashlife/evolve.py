@@ -8,10 +8,12 @@ advance 2**(j-1) more (Gosper 1984); below full speed the nine contribute their 
 unadvanced and the four advance 2**j.  Leaves (level ``base``) run the rules directly
 (``leaf.generation``).  Every kernel returns -1 when the node table is full.
 
-Written for numba's costs as measured: the recursion is self-recursive only (a cached
-mutually recursive pair crashed the next process), passes few arrays (each array argument
-is reference-counted per call), keeps the nine and four squares in scalars (no heap
-allocation per call) and looks up memoised results before calling.
+Written for numba's costs as measured: compiled without numba's runtime (``_nrt=False``:
+nothing here allocates), so array arguments are not atomically reference counted per call
+(on the binary path, bits/evolve.py, that was half the time of small jumps); the recursion
+is self-recursive only (a cached mutually recursive pair crashed the next process), passes
+few arrays, keeps the nine and four squares in scalars (no heap allocation per call) and
+looks up memoised results before calling.
 """
 
 from __future__ import annotations
@@ -23,7 +25,7 @@ from apps.ca.hashlife.leaf import generation
 from apps.ca.hashlife.store import LEVEL, RES, RESJ, join
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def to_grid(node, level, G, p, nodes):
     """Write the cells of ``node`` into plane ``p`` of G, splitting in place."""
     side = np.int64(1) << level
@@ -41,7 +43,7 @@ def to_grid(node, level, G, p, nodes):
         half = quarter
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def from_grid(G, p, y0, x0, level, nodes, slots, meta):
     """The node of the 2**level square at (y0, x0) of plane ``p``, built bottom-up in
     plane 2; -1 if the table is full."""
@@ -62,7 +64,7 @@ def from_grid(G, p, y0, x0, level, nodes, slots, meta):
     return np.int64(G[2, 0, 0])
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def leaf_step(node, j, r, nodes, slots, meta, R, G):
     """Centre of leaf ``node`` after 2**j generations, by running the rules on its grid
     (planes 0 and 1 of G in turn)."""
@@ -83,7 +85,7 @@ def _q(nodes, n, q):
     return np.int64(nodes[n, q])
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def _centre(n, nodes, slots, meta):
     """The centre half of ``n`` (no time passes); -1 if the table is full."""
     return join(_q(nodes, _q(nodes, n, 0), 3), _q(nodes, _q(nodes, n, 1), 2),
@@ -101,7 +103,7 @@ def _memo(n, j, nodes):
     return np.int64(-2)
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def step(node, j, P, nodes, slots, meta, empty, R, G):
     """Centre of ``node`` after 2**j generations (j <= level - 2 - s); -1 if the table is
     full.  ``P`` = (leaf level, s, reach)."""
