@@ -8,5 +8,7 @@ docs/ca.md ("Jumping ahead: HashLife") and docs/perf/ca.md.
 Modules: ``store`` (the node table and its garbage collection), ``leaf`` (one generation of
 the rules on a small grid), ``evolve`` (the memoised recursion), ``convert`` (cells to and
 from a tree), ``plane`` (the 65536-square plane's wrapping and bounded edges) and
-``algorithm`` (the strategy the engine calls).
+``algorithm`` (the strategy the engine calls).  Two-state rules on a plane of 1s take the
+``bits`` subpackage instead: 16 x 16-cell leaves of bits advanced by bit operations, the
+same answers with far fewer, cheaper nodes.
 """
