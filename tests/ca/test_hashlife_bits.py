@@ -184,3 +184,21 @@ def test_jumps_interleave_with_edits_and_direct_steps() -> None:
         e.step_direct(3)
         ref.step_direct(3)
     assert e.same_state(ref)
+
+
+def test_a_collection_for_one_engine_keeps_another_engines_tree() -> None:
+    rules = parse_rules(LIFE.text, source="life-bits-two-engines")  # its own tables
+    first, second = soup(rules, 21, *PLACES[0]), soup(rules, 22, 20000, 20000, n=3000,
+                                                       side=100)
+    ref = first.copy()
+    for e in (first, second):
+        e.algorithm = "hashlife"
+        e.hashlife_memory = 512 << 10
+    first.step(500)  # its state is now only a tree
+    second.step(1000)  # collects garbage, renumbering the first engine's tree too
+    assert rules._tables["hashlife_bits_run"].store.epoch > 0
+    ref.step_direct(500)
+    assert first.population == ref.population and first.same_state(ref)
+    first.step(100)
+    ref.step_direct(100)
+    assert first.same_state(ref)

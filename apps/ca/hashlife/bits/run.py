@@ -16,7 +16,7 @@ from apps.ca.rules import RuleSet
 MAX_JUMP = 1 << 15  # generations: the level-17 frame's centre after at most 2**15
 
 
-@dataclass
+@dataclass(eq=False)  # hashed by identity: the store keeps its live trees in a WeakSet
 class BitTree:
     """A binary plane's state as a node of a rule's tables (valid while the epoch matches);
     answers what the engine asks of a tree without listing the cells."""
@@ -29,9 +29,16 @@ class BitTree:
     def valid(self, store: object) -> bool:
         return self.store is store and self.epoch == self.store.epoch
 
+    def _check(self) -> None:
+        """Node ids of an older epoch name other nodes: refuse rather than answer wrongly
+        (collections renumber every live tree, BitStore.make_room, so this is a bug)."""
+        if self.epoch != self.store.epoch:
+            raise RuntimeError("a HashLife tree missed a garbage collection's renumbering")
+
     def by_type(self, forms: int) -> dict[int, int]:
         """{1: cells} (empty if none); ``forms`` is ignored: a binary plane has only 1s."""
         if "count" not in self._census:
+            self._check()
             self._census["count"] = census.count(self.node, self.store)
         n = self._census["count"]
         return {1: n} if n else {}
@@ -40,11 +47,13 @@ class BitTree:
         """Sorted rows (axis 0) or columns (axis 1) that hold a live cell."""
         key = ("occupied", axis)
         if key not in self._census:
+            self._check()
             self._census[key] = census.occupied(self.node, axis, self.store)
         return self._census[key]
 
     def cells(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(ys, xs, types) of the live cells, row by row."""
+        self._check()
         s = self.store
         rows = convert.cells(np.int64(self.node), s.nodes, s.leaves, s.meta)
         return rows[:, 0].copy(), rows[:, 1].copy(), np.ones(rows.shape[0], np.int64)
@@ -72,7 +81,11 @@ class BitRun:
         return run
 
     def tree(self, node: int) -> BitTree:
-        return BitTree(self.store, self.store.epoch, node)
+        """The tree an engine adopts; the store renumbers it if it collects garbage later
+        (another engine of these rules may hold its state only in a tree)."""
+        tree = BitTree(self.store, self.store.epoch, node)
+        self.store.trees.add(tree)
+        return tree
 
     def plane(self, engine) -> int:  # noqa: ANN001 - an Engine
         """The engine's plane as a node: its tree if that is ours and valid, else built

@@ -16,6 +16,8 @@ grows it or collects garbage and retries.
 
 from __future__ import annotations
 
+import weakref
+
 import numpy as np
 from numba import njit
 
@@ -228,6 +230,9 @@ class BitStore:
         # them at random, so a big empty table is slower than doubling a small one.
         self.limit_bytes = int(limit_bytes)
         self.epoch = 0  # bumped by every collection: ids of older epochs are void
+        # Trees engines hold (objects with .node and .epoch): kept and renumbered by every
+        # collection, so an engine whose state is only a tree never loses it.
+        self.trees: weakref.WeakSet = weakref.WeakSet()
         cap_n, cap_l = MIN_NODES, MIN_LEAVES
         while 2 * cap_n <= nodes and self._bytes(2 * cap_n, 2 * cap_l) <= self.limit_bytes:
             cap_n *= 2
@@ -295,11 +300,15 @@ class BitStore:
         return n
 
     def make_room(self, roots: list[int]) -> list[int]:
-        """Collect garbage keeping ``roots`` (returned renumbered); see ``crowded``."""
-        keep = np.array(roots, np.int64)
+        """Collect garbage keeping ``roots`` (returned renumbered) and every live tree
+        (renumbered in place); see ``crowded``."""
+        live = [t for t in self.trees if t.epoch == self.epoch]
+        keep = np.array([*roots, *(t.node for t in live)], np.int64)
         collect(keep, self.nodes, self.slots, self.leaves, self.lslots, self.meta)
         self.epoch += 1
-        return [int(r) for r in keep]
+        for tree, node in zip(live, keep[len(roots):]):
+            tree.node, tree.epoch = int(node), self.epoch
+        return [int(r) for r in keep[:len(roots)]]
 
     @property
     def crowded(self) -> bool:
