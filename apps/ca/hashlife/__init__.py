@@ -12,3 +12,11 @@ from a tree), ``plane`` (the 65536-square plane's wrapping and bounded edges) an
 ``bits`` subpackage instead: 16 x 16-cell leaves of bits advanced by bit operations, the
 same answers with far fewer, cheaper nodes.
 """
+
+from protocols.kernel_notice import announce_compiles
+
+# Cold compile times measured on the project's 2-core machine (docs/perf/startup.md).
+announce_compiles("HashLife", 12.0, *(f"{__name__}.{m}" for m in (
+    "store", "leaf", "evolve", "convert", "census")))
+announce_compiles("binary HashLife", 12.0, *(f"{__name__}.bits.{m}" for m in (
+    "rule", "store", "leaves", "evolve", "convert", "census", "frame", "run")))

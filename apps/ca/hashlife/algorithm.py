@@ -43,9 +43,10 @@ def reason_against(rules: RuleSet | None, advance_area: object = None) -> str | 
     return deterministic_reason(rules)
 
 
-@dataclass
+@dataclass(eq=False)  # hashed by identity: the store keeps its live trees in a WeakSet
 class Tree:
-    """A plane's state as a node of a rule set's table (valid while the epoch matches)."""
+    """A plane's state as a node of a rule set's table (valid while the epoch matches;
+    collections renumber every live tree, NodeStore.make_room)."""
 
     store: NodeStore
     epoch: int
@@ -142,7 +143,9 @@ class HashLife:
                 node = self._jump(run, node, j, engine.edges)
                 done += 1 << j
                 engine.generation += 1 << j
-                engine.adopt_tree(Tree(run.store, run.store.epoch, node))
+                tree = Tree(run.store, run.store.epoch, node)
+                run.store.trees.add(tree)  # renumbered if a later collection moves it
+                engine.adopt_tree(tree)
             if progress is not None:
                 progress(done, total)
 

@@ -11,6 +11,8 @@ full; the caller collects garbage or grows the table and tries again.
 
 from __future__ import annotations
 
+import weakref
+
 import numpy as np
 from numba import njit
 
@@ -116,6 +118,8 @@ class NodeStore:
     def __init__(self, capacity: int = 1 << 20, limit_bytes: int = 512 << 20) -> None:
         self.limit_bytes = int(limit_bytes)
         self.epoch = 0  # bumped by every collection: node ids of older epochs are void
+        # Trees engines hold (objects with .node and .epoch), renumbered by every collection.
+        self.trees: weakref.WeakSet = weakref.WeakSet()
         cap = MIN_CAPACITY
         while 2 * cap <= capacity and 2 * cap * BYTES_PER_NODE <= self.limit_bytes:
             cap *= 2
@@ -166,13 +170,17 @@ class NodeStore:
         return n
 
     def make_room(self, roots: list[int]) -> list[int]:
-        """Collect garbage keeping ``roots`` (returned renumbered).  Raises MemoryError if
-        that freed (almost) nothing."""
-        keep = np.array([*roots, *self.empty, *self.wall], np.int64)
+        """Collect garbage keeping ``roots`` (returned renumbered) and every live tree an
+        engine holds (renumbered in place: an engine whose state is only a tree survives
+        another engine's collection).  Raises MemoryError if that freed (almost) nothing."""
+        live = [t for t in self.trees if t.epoch == self.epoch]
+        n, towers = len(roots), 2 * (TOP_LEVEL + 1)
+        keep = np.array([*roots, *self.empty, *self.wall, *(t.node for t in live)], np.int64)
         collect(keep, self.nodes, self.slots, self.meta)
         self.epoch += 1
-        n = len(roots)
-        self.empty, self.wall = keep[n:n + TOP_LEVEL + 1], keep[n + TOP_LEVEL + 1:]
+        self.empty, self.wall = keep[n:n + TOP_LEVEL + 1], keep[n + TOP_LEVEL + 1:n + towers]
+        for tree, node in zip(live, keep[n + towers:], strict=True):
+            tree.node, tree.epoch = int(node), self.epoch
         if 10 * self.count > 9 * self.capacity:
             raise MemoryError(f"the HashLife node table is full ({self.count} nodes, "
                               f"{self.bytes >> 20} MB) and the memory limit "
