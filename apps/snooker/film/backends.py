@@ -111,8 +111,11 @@ class DaskCluster:
         self._render = render
         if address == "local":
             n = workers or os.cpu_count() or 1
+            # The scheduler always serves HTTP; with no address it takes port 8787 and, when
+            # another cluster holds it, warns (an error under the tests' warning filter):
+            # a free port of the loopback's instead.
             self._cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                         dashboard_address=None, host="127.0.0.1")
+                                         dashboard_address="127.0.0.1:0", host="127.0.0.1")
             self._client = Client(self._cluster, timeout=timeout_s)
         else:
             self._client = Client(address, timeout=timeout_s)
