@@ -27,6 +27,8 @@ HALF = np.uint64(0xFFFF)
 ONES = np.uint64(0xFFFFFFFFFFFFFFFF)
 U1, U16, U32 = np.uint64(1), np.uint64(16), np.uint64(32)
 SCRATCH, WORDS_AT = 3, 16  # plane 3: the lookup kernel's rows, from word 16 the leaf words
+X0, X1, N0, OUT = 4, 5, 6, 10  # the totalistic kernel's planes (row sums, block sums, out)
+PLANES = 11  # of the scratch G (run.py)
 
 
 @njit(cache=True, inline="always")
@@ -74,37 +76,42 @@ def _sum3(x):
 def totalistic(s, d, lo, hi, R, G):
     """Plane d words lo..hi-1 = the next generation of plane s by the terms of R (block
     sums, rule.totalistic_terms): the sum of each 3 x 3 block, centre included, by
-    bit-sliced adders."""
-    terms = np.int64(R[1])
-    p0, p1 = _sum3(G[s, lo - 1] if lo > 0 else np.uint64(0))
-    m0, m1 = _sum3(G[s, lo])
-    for i in range(lo, hi):
-        q0, q1 = _sum3(G[s, i + 1] if i < 15 else np.uint64(0))
+    bit-sliced adders.  Written as whole-plane passes with no loop-carried values (rows'
+    sums in planes X0/X1, one word of padding each side; the block sum's bits in N0..N3),
+    so LLVM vectorises each pass; words outside lo..hi are computed too and not used."""
+    for i in range(16):
+        x = G[s, i]
+        left, right = x << U1, x >> U1
+        G[X0, i + 1] = left ^ x ^ right
+        G[X1, i + 1] = (left & x) | (right & (left ^ x))
+    for i in range(16):
+        p0, p1 = G[X0, i], G[X1, i]
+        m0, m1 = G[X0, i + 1], G[X1, i + 1]
+        q0, q1 = G[X0, i + 2], G[X1, i + 2]
         # the rows above (2i-1, 2i) and below (2i+1, 2i+2) each word's two rows
         a0, a1 = (m0 << U32) | (p0 >> U32), (m1 << U32) | (p1 >> U32)
         c0, c1 = (m0 >> U32) | (q0 << U32), (m1 >> U32) | (q1 << U32)
-        n0 = a0 ^ m0 ^ c0
         k = (a0 & m0) | (c0 & (a0 ^ m0))  # a carry of 2
         t = a1 ^ m1 ^ c1
         u = (a1 & m1) | (c1 & (a1 ^ m1))  # a 4
-        n1 = t ^ k
         v = t & k  # another 4
-        n2 = u ^ v
-        n3 = u & v
-        b = G[s, i]
-        out = np.uint64(0)
-        for j in range(terms):
-            at = 2 + TERM * j
-            e = ~((n0 ^ R[at + 1]) | (n1 ^ R[at + 2]) | (n2 ^ R[at + 3]) | (n3 ^ R[at + 4]))
-            kind = R[at]
-            if kind == TERM_ANY:
-                out |= e
-            elif kind == TERM_BIRTH:
-                out |= e & ~b
-            else:
-                out |= e & b
-        G[d, i] = out & ~G[2, i]
-        p0, p1, m0, m1 = m0, m1, q0, q1
+        G[N0, i] = a0 ^ m0 ^ c0
+        G[N0 + 1, i] = t ^ k
+        G[N0 + 2, i] = u ^ v
+        G[N0 + 3, i] = u & v
+        G[OUT, i] = np.uint64(0)
+    for j in range(np.int64(R[1])):
+        at = 2 + TERM * j
+        v0, v1, v2, v3 = R[at + 1], R[at + 2], R[at + 3], R[at + 4]
+        kind = R[at]
+        keep = ONES if kind == TERM_ANY else np.uint64(0)  # else: births or survivals
+        flip = ONES if kind == TERM_BIRTH else np.uint64(0)
+        for i in range(16):
+            e = ~((G[N0, i] ^ v0) | (G[N0 + 1, i] ^ v1) | (G[N0 + 2, i] ^ v2)
+                  | (G[N0 + 3, i] ^ v3))
+            G[OUT, i] |= e & (keep | (G[s, i] ^ flip))
+    for i in range(lo, hi):
+        G[d, i] = G[OUT, i] & ~G[2, i]
 
 
 @njit(cache=True, inline="always")

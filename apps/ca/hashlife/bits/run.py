@@ -9,6 +9,7 @@ import numpy as np
 
 from apps.ca.hashlife.bits import census, convert, evolve
 from apps.ca.hashlife.bits.frame import frame
+from apps.ca.hashlife.bits.leaves import PLANES
 from apps.ca.hashlife.bits.rule import BinaryRule, binary_rule
 from apps.ca.hashlife.bits.store import BitStore
 from apps.ca.rules import RuleSet
@@ -65,7 +66,7 @@ class BitRun:
 
     store: BitStore
     rule: BinaryRule
-    grids: np.ndarray = field(default_factory=lambda: np.zeros((4, 32), np.uint64))
+    grids: np.ndarray = field(default_factory=lambda: np.zeros((PLANES, 32), np.uint64))
 
     @classmethod
     def of(cls, rules: RuleSet, memory: int) -> BitRun | None:
