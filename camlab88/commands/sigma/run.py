@@ -5,10 +5,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
-import signal
 import sys
-import threading
-from collections.abc import Iterator
 from fractions import Fraction
 from pathlib import Path
 
@@ -57,8 +54,8 @@ def run(args: argparse.Namespace) -> int:
                        + ("" if ends else " until Ctrl-C"), argv=getattr(args, "_argv", None))
     line, recorder = _line(args, settings)
     target = _target(args, line, got)
-    # kill / a service manager: from the moment the line is open, the recording is written
-    with _sigterm_as_interrupt(), contextlib.ExitStack() as done:
+    # Ctrl-C, or SIGTERM (cli.main delivers it as Ctrl-C): the recording is still written
+    with contextlib.ExitStack() as done:
         done.callback(_finish, target, line, recorder, args)
         if replay.active() is None:
             target.bridge = _open_bridge(args, settings, target.tap)
@@ -67,24 +64,6 @@ def run(args: argparse.Namespace) -> int:
     print(f"camlab88 sigma: {s['bytes']} bytes in, {s['unknown']} unknown and "
           f"{s['malformed']} malformed orders skipped", flush=True)
     return 0
-
-
-@contextlib.contextmanager
-def _sigterm_as_interrupt() -> Iterator[None]:
-    """SIGTERM ends the run as Ctrl-C does, so --record-line's file is finished and written;
-    without this a headless run (no SDL to turn SIGTERM into a quit) lost it."""
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-
-    def interrupt(signum: int, frame: object) -> None:
-        raise KeyboardInterrupt
-
-    old = signal.signal(signal.SIGTERM, interrupt)
-    try:
-        yield
-    finally:
-        signal.signal(signal.SIGTERM, old)
 
 
 def _finish(target, line, recorder, args: argparse.Namespace) -> None:  # noqa: ANN001

@@ -21,6 +21,8 @@ import weakref
 import numpy as np
 from numba import njit
 
+from apps.ca.hashlife.store import _hash4  # the generic table's hash of four ids
+
 LEAF_LEVEL = 4  # 16 x 16 cells
 TOP_LEVEL = 17  # the 65536-square plane is level 16; stepping frames it in a level-17 node
 RES, RESJ, LEVEL, FULL = 4, 5, 6, 7  # node row columns after the four quadrants
@@ -41,15 +43,6 @@ _M = np.uint64(0xFFFFFFFFFFFFFFFF)
 def _mix(h):
     h = (h ^ (h >> np.uint64(31))) * np.uint64(0x7FB5D329728EA185)
     return h ^ (h >> np.uint64(27))
-
-
-@njit(cache=True, inline="always")
-def _hash4(a, b, c, d, mask):
-    h = (np.uint64(a) * np.uint64(0x9E3779B97F4A7C15)
-         ^ np.uint64(b) * np.uint64(0xC2B2AE3D27D4EB4F)
-         ^ np.uint64(c) * np.uint64(0x165667B19E3779F9)
-         ^ np.uint64(d) * np.uint64(0x85EBCA77C2B2AE63))
-    return np.int64((h ^ (h >> np.uint64(29))) & np.uint64(mask))
 
 
 @njit(cache=True, inline="always")
