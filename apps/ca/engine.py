@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from apps.ca import algorithms, kernels
+from apps.ca import algorithms, grid_stats, kernels
 from apps.ca.hashlife.algorithm import DEFAULT_MEMORY, Tree
 from apps.ca.rules import RuleSet
 from apps.ca.tables import compile_rules
@@ -220,6 +220,12 @@ class Engine:
             return self._dense_pop
         return int(self._ts.shape[0])
 
+    @property
+    def dense_window(self) -> tuple[int, int, np.ndarray] | None:
+        """(top row, left column, uint8 grid of life-forms) while the state is a dense
+        grid (read only), else None."""
+        return None if self._tree_only else self._dense
+
     def cells(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(x, y, type) arrays of every live cell, row by row."""
         return self.xs.copy(), self.ys.copy(), self.ts.copy()
@@ -238,8 +244,14 @@ class Engine:
             raise ValueError(f"cell position outside the {SIDE}x{SIDE} plane")
         if nt.min() < 0:
             raise ValueError("life-form numbers are >= 0")
-        old_keys = self.ys * SIDE + self.xs
         new_keys = ny * SIDE + nx
+        if self.population == 0 and bool(np.all(new_keys[1:] > new_keys[:-1])):
+            # an empty plane and cells already in row order, each once (a pattern file's):
+            # nothing to merge, so no sort or set operations over millions of cells
+            live = nt > 0
+            self.ts, self.ys, self.xs = nt[live].copy(), ny[live].copy(), nx[live].copy()
+            return
+        old_keys = self.ys * SIDE + self.xs
         # Last write of each key wins: unique over the reversed list.
         rk, first = np.unique(new_keys[::-1], return_index=True)
         rt = nt[::-1][first]
@@ -251,6 +263,30 @@ class Engine:
         self.ts = types[order]
         self.ys = keys // SIDE
         self.xs = keys - self.ys * SIDE
+
+    def set_grid(self, left: int, top: int, grid: np.ndarray) -> None:
+        """Replace the plane's cells by a uint8 grid of life-forms whose top-left cell goes
+        to (left, top), not crossing the plane's edge.  Rules that can take the dense path
+        start from the grid itself (a byte a cell, no cell list made); others get cells."""
+        h, w = grid.shape
+        if left < 0 or top < 0 or left + w > SIDE or top + h > SIDE:
+            raise ValueError(f"a {w}x{h} grid at {left},{top} leaves the {SIDE}x{SIDE} plane")
+        self.clear()
+        plan = compile_rules(self.rules).dense if self.rules is not None else None
+        if plan is not None:
+            t = compile_rules(self.rules)
+            pad_y, pad_x = t.reach_y + DENSE_MARGIN, t.reach_x + DENSE_MARGIN
+            y0, x0 = top - pad_y, left - pad_x
+            if y0 >= 0 and x0 >= 0 and top + h + pad_y <= SIDE and left + w + pad_x <= SIDE:
+                window = np.zeros((h + 2 * pad_y, w + 2 * pad_x), np.uint8)
+                window[pad_y:pad_y + h, pad_x:pad_x + w] = grid
+                self._dense = (y0, x0, window)
+                self._dense_pop = int(np.count_nonzero(grid))
+                return
+        ys, xs = np.nonzero(grid)
+        self.ts = grid[ys, xs].astype(np.int64)
+        self.ys = ys.astype(np.int64) + top
+        self.xs = xs.astype(np.int64) + left
 
     def set(self, x: int, y: int, value: int) -> None:
         """Edit one cell (0 = dead)."""
@@ -286,6 +322,7 @@ class Engine:
     def clear(self, rect: Rect | None = None) -> None:
         """Remove every life-form (in ``rect``, or everywhere)."""
         if rect is None:
+            self._dense, self._tree_only = None, False  # nothing to convert: all goes
             self.ys, self.xs, self.ts = (np.zeros(0, np.int64) for _ in range(3))
             return
         keep = ~self._in_rect(rect)
@@ -309,6 +346,8 @@ class Engine:
     def by_type(self) -> dict[int, int]:
         if self._tree_only:
             return self.tree.by_type(self.rules.max_form)
+        if self._dense is not None:  # counted on the grid, no cell list made
+            return grid_stats.by_type(self._dense[2])
         types, counts = np.unique(self.ts, return_counts=True)
         return {int(t): int(c) for t, c in zip(types, counts)}
 
@@ -320,6 +359,10 @@ class Engine:
             return None
         if self._tree_only:  # the occupied columns and rows, read from the tree
             xs, ys = self.tree.occupied(1), self.tree.occupied(0)
+        elif self._dense is not None:  # the occupied rows and columns of the grid
+            y0, x0, grid = self._dense
+            ys = np.flatnonzero(grid.any(axis=1)) + y0
+            xs = np.flatnonzero(grid.any(axis=0)) + x0
         else:
             xs, ys = self.xs, self.ys
         if self.edges == "bounded":
@@ -348,7 +391,8 @@ class Engine:
     def step_direct(self, generations: int = 1,
                     progress: algorithms.Progress | None = None) -> None:
         """Advance one generation at a time by message passing (the direct algorithm)."""
-        self._sync()
+        if self._tree_only:  # a dense grid stays one: the first step takes it as it is
+            self._sync()
         self.tree = None
         for i in range(int(generations)):
             self._step_once()

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from apps.ca.rle_body import decode_body
+from apps.ca.rle_body import decode_compiled
 from protocols import atomicfile
 from protocols.textinput import InputError, quote, read_text, where
 
@@ -90,6 +90,12 @@ class Pattern:
     def height(self) -> int:
         return int(self.ys.max()) + 1 if self.ys.size else 0
 
+    def placed_grid(self, x: int, y: int, orientation: str = "identity"
+                    ) -> tuple[int, int, np.ndarray] | None:
+        """(left, top, uint8 grid) of a dense pattern placed as :meth:`placed` places its
+        cells; None for a sparse pattern or one that would wrap round the plane."""
+        return None
+
     def cell_set(self) -> set[tuple[int, int, int]]:
         return {(int(x), int(y), int(t)) for x, y, t in zip(self.xs, self.ys, self.ts)}
 
@@ -104,6 +110,66 @@ class Pattern:
         dx = self.xs - self.ref[0]
         dy = self.ys - self.ref[1]
         return ((x + a * dx + b * dy) % 65536, (y + c * dx + d * dy) % 65536, self.ts.copy())
+
+
+class GridPattern(Pattern):
+    """A dense pattern kept as a uint8 grid of life-forms (row y, column x; its top-left
+    cell is the pattern's (0, 0), and its edges hold live cells): a byte a cell instead of
+    24 a live cell.  The cell arrays are made only when something asks for them."""
+
+    def __init__(self, grid: np.ndarray, ref: tuple[int, int] = (0, 0), name: str = "",
+                 rule: str = "", comments: list[str] | None = None, author: str = "") -> None:
+        self.grid = grid
+        self.ref, self.name, self.rule, self.author = ref, name, rule, author
+        self.comments = list(comments or [])
+        self._cells: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
+
+    def _cell_arrays(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        if self._cells is None:
+            ys, xs = np.nonzero(self.grid)
+            self._cells = (xs.astype(np.int64), ys.astype(np.int64),
+                           self.grid[ys, xs].astype(np.int64))
+        return self._cells
+
+    xs = property(lambda self: self._cell_arrays()[0])
+    ys = property(lambda self: self._cell_arrays()[1])
+    ts = property(lambda self: self._cell_arrays()[2])
+
+    @property
+    def width(self) -> int:
+        return int(self.grid.shape[1])
+
+    @property
+    def height(self) -> int:
+        return int(self.grid.shape[0])
+
+    def placed_grid(self, x: int, y: int, orientation: str = "identity"
+                    ) -> tuple[int, int, np.ndarray] | None:
+        return _oriented_grid(self.grid, self.ref, x, y, orientation)
+
+
+def _oriented_grid(grid: np.ndarray, ref: tuple[int, int], x: int, y: int,
+                   orientation: str) -> tuple[int, int, np.ndarray] | None:
+    """(left, top, grid) of ``grid`` placed as Pattern.placed places its cells; None if it
+    would cross the plane's edge (then the cells wrap, which a grid cannot)."""
+    if orientation not in ORIENTATIONS:
+        raise ValueError(f"unknown orientation {orientation!r}; one of "
+                         f"{', '.join(ORIENTATIONS)}")
+    a, b, c, d = ORIENTATIONS[orientation]
+    h, w = grid.shape
+    if a == 0:  # the axes swap: column x' comes from row y (times b), row y' from x (c)
+        g = grid.T
+        g = g[::-1] if c < 0 else g
+        g = g[:, ::-1] if b < 0 else g
+    else:
+        g = grid[::-1] if d < 0 else grid
+        g = g[:, ::-1] if a < 0 else g
+    corners = [(cx - ref[0], cy - ref[1]) for cx in (0, w - 1) for cy in (0, h - 1)]
+    left = x + min(a * dx + b * dy for dx, dy in corners)
+    top = y + min(c * dx + d * dy for dx, dy in corners)
+    if left < 0 or top < 0 or left + g.shape[1] > 65536 or top + g.shape[0] > 65536:
+        return None
+    return left, top, np.ascontiguousarray(g)
 
 
 # -- files ---------------------------------------------------------------------------------
@@ -393,11 +459,13 @@ def parse_rle(text: str, source: str = "<rle>") -> Pattern:
         col = offset - (body.rfind("\n", 0, offset) + 1) + 1
         return PatternError(source, min(body_line + line + 1, max(1, len(lines))), col, message)
 
-    xs, ys, ts = decode_body(body, fail)
+    cells, (left, top) = decode_compiled(body, fail)
     # Golly reads cells beyond the header's box too; so do we. The reference point is
     # Golly's origin: Pos gives the box corner relative to it.
-    return Pattern(xs, ys, ts, (-pos[0], -pos[1]), name, rule, comments,
-                   "\n".join(authors)).shifted_to_origin()
+    ref = (-pos[0] - left, -pos[1] - top)
+    if isinstance(cells, np.ndarray):
+        return GridPattern(cells, ref, name, rule, comments, "\n".join(authors))
+    return Pattern(*cells, ref, name, rule, comments, "\n".join(authors)).shifted_to_origin()
 
 
 # -- plaintext .cells --------------------------------------------------------------------------

@@ -96,3 +96,49 @@ def decode_body(body: str, fail: Fail) -> tuple[np.ndarray, np.ndarray, np.ndarr
     cell_x = np.arange(int(reps.sum()), dtype=np.int64)
     cell_x -= np.repeat(np.cumsum(reps) - reps - xs[live], reps)
     return cell_x, np.repeat(ys[live], reps), np.repeat(state[live], reps)
+
+
+# A pattern filling at least 1/GRID_FILL of its box is decoded into a uint8 grid (a byte a
+# cell) rather than cell arrays (24 bytes a live cell): smaller from 1/24 full.
+GRID_FILL = 16
+
+
+def decode_compiled(body: str, fail: Fail
+                    ) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray] | np.ndarray,
+                               tuple[int, int]]:
+    """The live cells as (xs, ys, states) or, for a dense pattern, a uint8 grid of states;
+    both relative to the live cells' top-left corner, which is returned as (x, y).  Bodies
+    the compiled scanner does not take as they are (a fault, non-ASCII whitespace) go to
+    the token reader, which words the error or decodes what Python's ``\\s`` allows."""
+    from apps.ca import rle_scan
+
+    raw = body.encode("utf-8", "replace")
+    b = np.frombuffer(raw, np.uint8)
+    ry, rx, rn = (np.empty(b.shape[0], np.int32) for _ in range(3))
+    rs = np.empty(b.shape[0], np.uint8)
+    res = rle_scan.scan(b, ry, rx, rn, rs)
+    status, at, _end, runs, cells, top, bottom, left, right, _big = (int(v) for v in res)
+    odd_space = status == rle_scan.SYNTAX and at < len(body) and body[at].isspace()
+    if status != rle_scan.OK and len(raw) == len(body) and not odd_space:
+        # ASCII, so byte offsets are columns; the fault is not a space only Python knows
+        if status == rle_scan.HIGH_STATE:
+            sym = body[at - 1: at + 1]
+            raise fail(at, f"state {_state(sym)} is above 255")
+        if status == rle_scan.TOO_WIDE:
+            raise fail(at, "pattern is wider or taller than the 65536-cell plane")
+        raise fail(at, _why(body, at) if at < len(body) else
+                   "expected '!' ending the RLE pattern")
+    if status != rle_scan.OK:
+        xs, ys, ts = decode_body(body, fail)
+        return (xs, ys, ts), (0, 0)
+    if cells == 0:
+        empty = np.zeros(0, np.int64)
+        return (empty, empty, empty), (0, 0)
+    h, w = bottom - top + 1, right - left + 1
+    if cells * GRID_FILL >= h * w:
+        grid = np.zeros((h, w), np.uint8)
+        rle_scan.to_grid(ry, rx, rn, rs, runs, grid, top, left)
+        return grid, (left, top)
+    xs, ys, ts = (np.empty(cells, np.int64) for _ in range(3))
+    rle_scan.to_cells(ry, rx, rn, rs, runs, xs, ys, ts, top, left)
+    return (xs, ys, ts), (left, top)

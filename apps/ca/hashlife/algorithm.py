@@ -157,7 +157,8 @@ class HashLife:
             return bits
         if engine.tree is not None:  # a generic tree: its census says which forms it holds
             return bits if set(engine.by_type()) <= {1} else None
-        ts = engine.ts
+        window = engine.dense_window
+        ts = window[2] if window is not None else engine.ts
         return bits if ts.size == 0 or int(ts.max()) <= 1 else None
 
     @staticmethod

@@ -48,7 +48,8 @@ def _run(args: argparse.Namespace) -> int:
         check_seed(args.seed)  # the kernels take an int64: a 20-digit seed is an error
         rules = load_rules(library.rules_path(args.rules))
         pattern = read_pattern(library.pattern_path(args.pattern))
-        xs, ys, ts = pattern.placed(CENTRE, CENTRE, args.orientation)
+        grid = pattern.placed_grid(CENTRE, CENTRE, args.orientation)  # a dense pattern's
+        cells = pattern.placed(CENTRE, CENTRE, args.orientation) if grid is None else None
     except (FileNotFoundError, RuleError, PatternError, ValueError) as exc:
         print(f"camlab88 ca run: {exc}", file=sys.stderr)
         return 2
@@ -59,7 +60,10 @@ def _run(args: argparse.Namespace) -> int:
 
     engine = Engine(rules, edges=args.edges, seed=args.seed, algorithm=args.engine)
     engine.hashlife_memory = args.memory << 20
-    engine.set_cells(xs, ys, ts)
+    if grid is not None:
+        engine.set_grid(*grid)
+    else:
+        engine.set_cells(*cells)
     try:
         _advance(engine, args, ProgressLine)
     except (ValueError, MemoryError) as exc:  # HashLife forced where it cannot run

@@ -49,7 +49,64 @@ def build(keys, xs, ys, nodes, slots, leaves, lslots, meta):
         lkeys[m] = key
         ids[m] = t
         m += 1
-    n = m
+    return _levels(lkeys, ids, np.int64(m), nodes, slots, meta)
+
+
+@njit(cache=True)
+def _tile_key(tx, ty):
+    m = np.int64(0)
+    for bit in range(TILES):
+        m |= ((tx >> bit) & 1) << (2 * bit)
+        m |= ((ty >> bit) & 1) << (2 * bit + 1)
+    return m
+
+
+@njit(cache=True)
+def build_grid(top, left, grid, nodes, slots, leaves, lslots, meta):
+    """The plane's node from a uint8 grid (nonzero = live) whose cell (0, 0) is at
+    (left, top): each 16 x 16 tile of the plane it covers becomes a leaf straight from the
+    grid's bytes (no cell list), then the levels as in :func:`build`; -1 if full."""
+    h, w = grid.shape
+    ty0, ty1 = top >> LEAF_LEVEL, (top + h - 1) >> LEAF_LEVEL
+    tx0, tx1 = left >> LEAF_LEVEL, (left + w - 1) >> LEAF_LEVEL
+    cap = (ty1 - ty0 + 1) * (tx1 - tx0 + 1)
+    lkeys = np.empty(cap, np.int64)
+    ids = np.empty(cap, np.int64)
+    words = np.zeros((1, 8), np.uint64)
+    m = 0
+    for ty in range(ty0, ty1 + 1):
+        for tx in range(tx0, tx1 + 1):
+            words[:] = 0
+            live = False
+            for y in range(16):
+                gy = (ty << LEAF_LEVEL) + y - top
+                if gy < 0 or gy >= h:
+                    continue
+                row = np.uint64(0)
+                for x in range(16):
+                    gx = (tx << LEAF_LEVEL) + x - left
+                    if gx >= 0 and gx < w and grid[gy, gx] != 0:
+                        row |= np.uint64(1) << np.uint64(x)
+                if row:
+                    live = True
+                    words[0, y >> 2] |= row << np.uint64(16 * (y & 3))
+            if not live:
+                continue
+            t = leaf(words, 0, 0, leaves, lslots, meta)
+            if t < 0:
+                return np.int64(-1)
+            lkeys[m] = _tile_key(tx, ty)
+            ids[m] = t
+            m += 1
+    if m == 0:
+        return np.int64(meta[EMPTY + PLANE_LEVEL])
+    order = np.argsort(lkeys[:m])
+    return _levels(lkeys[:m][order], ids[:m][order], np.int64(m), nodes, slots, meta)
+
+
+@njit(cache=True)
+def _levels(lkeys, ids, n, nodes, slots, meta):
+    """The tree above leaves ``ids`` sorted by their Morton keys ``lkeys``."""
     quads = np.empty(4, np.int64)
     for level in range(LEAF_LEVEL, PLANE_LEVEL):
         m = 0
@@ -140,3 +197,10 @@ def to_tree(xs: np.ndarray, ys: np.ndarray, store) -> int:  # noqa: ANN001 - a B
     order = np.argsort(keys, kind="stable")
     return int(build(keys[order], xs[order], ys[order], store.nodes, store.slots,
                      store.leaves, store.lslots, store.meta))
+
+
+def grid_to_tree(top: int, left: int, grid: np.ndarray, store) -> int:  # noqa: ANN001
+    """The plane's node of a uint8 grid's live cells, its cell (0, 0) at (left, top);
+    -1 if a table filled up."""
+    return int(build_grid(np.int64(top), np.int64(left), np.ascontiguousarray(grid, np.uint8),
+                          store.nodes, store.slots, store.leaves, store.lslots, store.meta))

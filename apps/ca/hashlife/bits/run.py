@@ -94,14 +94,20 @@ class BitRun:
         tree = engine.tree
         if isinstance(tree, BitTree) and tree.valid(self.store):
             return tree.node
-        xs, ys = engine.xs, engine.ys
+        window = engine.dense_window
         s = self.store
-        for _ in range(3):
-            node = convert.to_tree(xs, ys, s)
+        collected = False
+        while True:  # a dense plane may need the tables doubled several times
+            node = (convert.grid_to_tree(window[0], window[1], window[2], s)
+                    if window is not None else convert.to_tree(engine.xs, engine.ys, s))
             if node >= 0:
                 return node
-            if not s.grow_if_full():
-                s.make_room([])
+            if s.grow_if_full():
+                continue
+            if collected:
+                break
+            collected = True
+            s.make_room([])
         raise MemoryError("the plane does not fit the HashLife memory limit "
                           f"({s.limit_bytes >> 20} MB)")
 
