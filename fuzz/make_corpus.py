@@ -103,7 +103,7 @@ def _snooker() -> None:
 def _ca() -> None:
     from apps.ca import log
     from apps.ca.engine import Engine
-    from apps.ca.patterns import read_pattern
+    from apps.ca.patterns import format_mc, read_pattern
     from apps.ca.rules import load_rules
 
     _copy("ca-rules", CA_LIB / "life.rules", CA_LIB / "maze.rules",
@@ -112,6 +112,9 @@ def _ca() -> None:
     _copy("ca-rle", CA_LIB / "gosper_gun.rle", CA_LIB / "acorn.rle",
           DATA / "ca" / "lifewiki_style.rle")
     _copy("ca-cells", CA_LIB / "glider.cells")
+    _copy("ca-mc", DATA / "ca" / "golly" / "broken-lines.mc")
+    _put("ca-mc", "wireworld.mc", "[M2]\n#R WireWorld\n1 0 3 3 1\n2 0 1 0 0\n3 2 0 2 2\n")
+    _put("ca-mc", "gun.mc", format_mc(read_pattern(CA_LIB / "gosper_gun.rle")))
     rules = load_rules(str(CA_LIB / "life.rules"))
     glider = read_pattern(CA_LIB / "glider.cells")
     events = [log.ev_rules(0, "life", rules.text), log.ev_edit(0, 5, 5, 1),

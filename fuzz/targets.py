@@ -252,6 +252,7 @@ TARGETS: dict[str, Target] = {t.name: t for t in (
     Target("ca-native", _ca_pattern(".pat")),
     Target("ca-rle", _ca_pattern(".rle")),
     Target("ca-cells", _ca_pattern(".cells")),
+    Target("ca-mc", _ca_pattern(".mc")),
     Target("ca-log", _ca_log),
     Target("ca-checkpoint", _ca_checkpoint),
     Target("hid-descriptor", _hid),

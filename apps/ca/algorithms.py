@@ -23,6 +23,11 @@ CHOICES = ("auto", "direct", "hashlife")
 # "auto" uses HashLife from this many generations on (docs/perf/ca.md: below it the direct
 # engine finishes first on the library's patterns, tree building included).
 AUTO_MIN_GENERATIONS = 256
+# ... and from this many on a dense plane (at least 1/64 of its box alive), where one direct
+# generation is a few vectorised passes and the tree has little to share: a random
+# 1024 x 1024 soup took 0.17 s direct / 0.56 s HashLife for 256 generations, 0.87 / 0.55 s
+# for 1024 (CPU, docs/perf/ca.md).
+AUTO_MIN_GENERATIONS_DENSE = 1024
 
 Progress = Callable[[int, int], None]
 
@@ -62,10 +67,11 @@ def get_algorithm(name: str) -> Algorithm:
 
 
 def choose_engine(rules: RuleSet | None, generations: int, advance_area: object = None,
-                  engine: str = "auto") -> str:
+                  engine: str = "auto", dense: bool = False) -> str:
     """The algorithm to run ``generations`` with: ``engine`` itself if forced (a clear
     ValueError if HashLife is forced where it cannot run), else HashLife when it applies
-    and the run is at least AUTO_MIN_GENERATIONS long."""
+    and the run is at least AUTO_MIN_GENERATIONS long (AUTO_MIN_GENERATIONS_DENSE on a
+    ``dense`` plane)."""
     if engine not in CHOICES:
         raise ValueError(f"engine must be one of {CHOICES}, not {engine!r}")
     reason = reason_against(rules, advance_area)
@@ -73,4 +79,5 @@ def choose_engine(rules: RuleSet | None, generations: int, advance_area: object 
         raise ValueError(f"HashLife cannot run here: {reason}; use the direct engine")
     if engine != "auto":
         return engine
-    return "hashlife" if reason is None and generations >= AUTO_MIN_GENERATIONS else "direct"
+    least = AUTO_MIN_GENERATIONS_DENSE if dense else AUTO_MIN_GENERATIONS
+    return "hashlife" if reason is None and generations >= least else "direct"

@@ -385,8 +385,23 @@ class Engine:
         """Advance ``generations`` with the chosen algorithm; ``progress(done, asked)`` is
         called on the way (after each jump, or each generation)."""
         name = algorithms.choose_engine(self.rules, int(generations), self.advance_area,
-                                        self.algorithm)
+                                        self.algorithm, self.algorithm == "auto"
+                                        and self.is_dense())
         algorithms.get_algorithm(name).advance(self, int(generations), progress)
+
+    def is_dense(self) -> bool:
+        """At least 1/DENSE_MIN_FILL of the live cells' box is alive (cells listed, not a
+        tree), as when the dense path runs."""
+        if self._tree_only:
+            return False
+        if self._dense is not None:
+            return True
+        n = self._ts.shape[0]
+        if n == 0:
+            return False
+        box = (int(self._ys[-1]) - int(self._ys[0]) + 1) * (int(self._xs.max())
+                                                           - int(self._xs.min()) + 1)
+        return n * DENSE_MIN_FILL >= box
 
     def step_direct(self, generations: int = 1,
                     progress: algorithms.Progress | None = None) -> None:

@@ -8,7 +8,7 @@ from __future__ import annotations
 import random
 from pathlib import Path
 
-from apps.ca import maze, turing
+from apps.ca import langtons_loops, maze, turing
 from apps.ca.patterns import Pattern, format_native, format_rle
 
 LIBRARY = Path(__file__).resolve().parent / "library"
@@ -24,7 +24,8 @@ def soup(size: int = 48, density: float = 0.35, seed: int = 7) -> Pattern:
 
 
 def generated() -> dict[str, str]:
-    files = {"turing_primes.rules": turing.rules_text()}
+    files = {"turing_primes.rules": turing.rules_text(),
+             "langtons_loops.rules": langtons_loops.rules_text()}
     for n in (25, 23):
         files[f"primes_{n}.pat"] = format_native(turing.pattern(n))
     files["maze_demo.pat"] = format_native(maze.build()[0])

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from apps.ca import macrocell
 from apps.ca.rle_body import decode_compiled
 from protocols import atomicfile
 from protocols.textinput import InputError, quote, read_text, where
@@ -180,6 +181,8 @@ def format_of(path: str) -> str:
         return "rle"
     if low.endswith(".cells"):
         return "cells"
+    if low.endswith(".mc"):
+        return "mc"
     return "native"
 
 
@@ -199,13 +202,16 @@ def parse_pattern(text: str, fmt: str, source: str = "<pattern>") -> Pattern:
         return parse_rle(text, source)
     if fmt == "cells":
         return parse_cells(text, source)
+    if fmt == "mc":
+        return parse_mc(text, source)
     return parse_native(text, source)
 
 
 def write_pattern(path: str | os.PathLike, pattern: Pattern) -> None:
     path = os.fspath(path)
     fmt = format_of(path)
-    text = {"rle": format_rle, "cells": format_cells, "native": format_native}[fmt](pattern)
+    text = {"rle": format_rle, "cells": format_cells, "native": format_native,
+            "mc": format_mc}[fmt](pattern)
     atomicfile.write_atomic(path, text)
 
 
@@ -329,7 +335,9 @@ def _ints(text: str, n: int, source: str, line: int, raw: str, what: str) -> tup
 # A library rule set (not a Golly rule) is named in a comment line, which Golly ignores.
 RULES_COMMENT = "#C camlab88 rules: "
 # Library rule sets that are Golly rules: the header gets the Golly rule string.
-GOLLY_NAMES = {"life": "B3/S23"}
+GOLLY_NAMES = {"life": "B3/S23", "wireworld": "WireWorld", "langtons_loops": "Langtons-Loops"}
+# Golly rule tables kept by name when a pattern made for them is written out again.
+GOLLY_TABLES = {"WireWorld", "Langtons-Loops"}
 # B/S and S/B notation, Generations (/C n), hexagonal/von Neumann suffixes, and a bounded
 # grid topology (':T100,100').
 _GOLLY_RULE = re.compile(
@@ -343,6 +351,8 @@ def golly_rule(rule: str) -> str | None:
     rule = rule.strip()
     if rule.lower() in GOLLY_NAMES:
         return GOLLY_NAMES[rule.lower()]
+    if rule in GOLLY_TABLES:
+        return rule
     return rule if rule and _GOLLY_RULE.fullmatch(rule) else None
 
 
@@ -466,6 +476,27 @@ def parse_rle(text: str, source: str = "<rle>") -> Pattern:
     if isinstance(cells, np.ndarray):
         return GridPattern(cells, ref, name, rule, comments, "\n".join(authors))
     return Pattern(*cells, ref, name, rule, comments, "\n".join(authors)).shifted_to_origin()
+
+
+# -- Golly's macrocell (.mc) ---------------------------------------------------------------
+
+def parse_mc(text: str, source: str = "<mc>") -> Pattern:
+    """A macrocell file (apps/ca/macrocell.py); Golly's origin becomes the reference point."""
+    try:
+        tree, rule, comments = macrocell.read_tree(text)
+        cells, ref = macrocell.cells_of(tree, max(1, text.count("\n")))
+    except macrocell.McError as exc:
+        raise PatternError(source, exc.line, exc.column, str(exc)) from None
+    if isinstance(cells, np.ndarray):
+        return GridPattern(cells, ref, "", rule, comments)
+    return Pattern(*cells, ref, "", rule, comments)
+
+
+def format_mc(p: Pattern) -> str:
+    golly = golly_rule(p.rule)
+    comments = list(p.comments) + ([f"camlab88 rules: {p.rule}"] if p.rule and not golly
+                                   else [])
+    return macrocell.format_mc(p.xs, p.ys, p.ts, p.ref, golly or "", comments)
 
 
 # -- plaintext .cells --------------------------------------------------------------------------

@@ -70,6 +70,8 @@ COMMANDS: dict[str, Argv] = {
     "ca-rle": lambda f, d: ["ca", "run", "--rules", str(LIFE), "--pattern", str(f),
                             "--generations", "2"],
     "ca-cells": lambda f, d: ["ca", "convert", str(f), str(d / "o.pat")],
+    "ca-mc": lambda f, d: ["ca", "run", "--rules", str(LIFE), "--pattern", str(f),
+                           "--generations", "2"],
     "ca-log": lambda f, d: ["ca", "replay", "--script", str(f), "--generation", "2"],
     "kas-paint-ops": lambda f, d: ["kas", "paint", _walk4(d), "--ops", str(f), "--headless",
                                    "--replay"],
@@ -79,6 +81,7 @@ COMMANDS: dict[str, Argv] = {
 # up (it is there to give the reader input events), so a --check replay rightly fails it
 READER_ONLY = {"session-recording": {"every_record.session"}}
 SUFFIX = {"ca-native": ".pat", "ca-rle": ".rle", "ca-cells": ".cells", "ca-rules": ".rules",
+          "ca-mc": ".mc",
           "snooker-checkpoint": ".cp", "snooker-session": ".json", "rainbow-scene": ".json",
           "kas-keyframe": ".kas", "kas-path": ".kas", "kas-timing": ".kas",
           "kas-paint-ops": ".ops", "session-recording": ".session"}

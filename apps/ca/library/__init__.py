@@ -8,7 +8,7 @@ from pathlib import Path
 from protocols.suggest import did_you_mean
 
 LIBRARY = Path(__file__).resolve().parent
-PATTERN_SUFFIXES = (".pat", ".rle", ".cells")
+PATTERN_SUFFIXES = (".pat", ".rle", ".cells", ".mc")
 
 
 def _resolve(name: str, suffixes: tuple[str, ...], what: str) -> str:

@@ -1,4 +1,5 @@
-"""``camlab88 ca convert``: a pattern converted between native, RLE and .cells."""
+"""``camlab88 ca convert``: a pattern converted between native, RLE, .cells and Golly's
+macrocell (.mc)."""
 
 from __future__ import annotations
 
@@ -7,9 +8,10 @@ import sys
 
 
 def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
-    p = actions.add_parser("convert", help="convert a pattern between native, RLE and .cells",
+    p = actions.add_parser("convert", help="convert a pattern between native, RLE, .cells and .mc",
                           description="Read a pattern and write it in the format given by the "
-                          "output file's extension (.rle, .cells, anything else native).")
+                          "output file's extension (.rle, .cells, .mc Golly's macrocell, anything "
+                          "else native).")
     p.add_argument("source", help="pattern file or library name")
     p.add_argument("dest", help="output file")
     p.set_defaults(handler=_convert)

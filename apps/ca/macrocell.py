@@ -1,0 +1,301 @@
+"""Golly's macrocell format (``.mc``): a pattern as the nodes of its quadtree, children first.
+
+The first line is ``[M2] ...``; ``#R rule``, ``#G generation``, ``#C``/``#N`` comment lines
+may follow. Each further line is one node, numbered from 1:
+
+* ``$``-separated rows of ``.`` and ``*`` (trailing dots and empty rows left out): an 8 x 8
+  leaf of a two-state pattern (level 3);
+* ``1 a b c d``: a 2 x 2 node of states a (north-west), b (north-east), c, d (multi-state);
+* ``L a b c d`` with L >= 2: a node of side 2**L whose quadrants are the nodes numbered a..d
+  (0 = empty), each of level L - 1.
+
+The last node is the whole pattern around Golly's origin, which becomes the pattern's
+reference point: the root of level L has its top-left cell at (-2**(L-1), 1 - 2**(L-1))
+(Golly's trees count rows upwards, cell (x, y) at tree row -1 - y; checked with bgolly,
+whose RLE of a file puts the same cells where our reader of its .mc does).
+A file can describe more cells than memory holds in a few lines, so the population and
+bounding box are worked out on the nodes first, and a pattern wider than the plane or with
+more than MAX_CELLS cells is refused before any cell is listed.
+"""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+
+MAX_LEVEL = 62  # 2**62: coordinates still fit an int64
+MAX_CELLS = 1 << 22  # cells of a sparse pattern listed at most (~0.1 GB as cell arrays)
+MAX_GRID = 1 << 28  # bytes of a dense pattern's grid at most (painted, never listed)
+GRID_FILL = 16  # as rle_body.GRID_FILL: a grid from 1/16 full
+SMALL = 256  # nodes of at most this many cells are listed once and reused
+_QUAD = ((0, 0), (1, 0), (0, 1), (1, 1))  # (x, y) of quadrants nw, ne, sw, se
+
+
+class McError(ValueError):
+    """A fault at (line, column) of a macrocell file."""
+
+    def __init__(self, line: int, column: int, message: str) -> None:
+        super().__init__(message)
+        self.line, self.column = line, column
+
+
+class _Tree:
+    """The nodes read so far: level, children (or a leaf's cells), population, box."""
+
+    def __init__(self) -> None:
+        # index 0 is the empty node of every level
+        self.level = [0]
+        self.kids: list[tuple[int, ...]] = [()]
+        self.leaf: list[tuple[np.ndarray, np.ndarray, np.ndarray] | None] = [None]
+        self.pop = [0]
+        self.box: list[tuple[int, int, int, int] | None] = [None]
+        self.top = 0  # largest state
+
+    def add_leaf(self, level: int, xs: np.ndarray, ys: np.ndarray, ts: np.ndarray) -> None:
+        self.level.append(level)
+        self.kids.append(())
+        self.leaf.append((xs, ys, ts))
+        self.pop.append(int(xs.size))
+        self.box.append((int(xs.min()), int(ys.min()), int(xs.max()), int(ys.max()))
+                        if xs.size else None)
+        self.top = max(self.top, int(ts.max()) if ts.size else 0)
+
+    def add_node(self, level: int, kids: tuple[int, ...]) -> None:
+        half = 1 << (level - 1)
+        boxes = [(b[0] + qx * half, b[1] + qy * half, b[2] + qx * half, b[3] + qy * half)
+                 for k, (qx, qy) in zip(kids, _QUAD) if (b := self.box[k]) is not None]
+        self.level.append(level)
+        self.kids.append(kids)
+        self.leaf.append(None)
+        self.pop.append(sum(self.pop[k] for k in kids))
+        self.box.append((min(b[0] for b in boxes), min(b[1] for b in boxes),
+                         max(b[2] for b in boxes), max(b[3] for b in boxes))
+                        if boxes else None)
+
+
+_ROW_BITS = str.maketrans(".*", "01")
+_LEAF_ROW = re.compile(r"[.*]{0,8}")
+_UNIT = np.arange(64, dtype=np.uint64)
+
+
+def _bitmap(text: str, line: int, cache: dict
+            ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The live cells of an 8 x 8 leaf written as rows of '.' and '*' each ended by '$'
+    (identical leaves, common in a file, are decoded once)."""
+    got = cache.get(text)
+    if got is not None:
+        return got
+    rows = text.split("$")
+    col = 1
+    bits = 0
+    for y, row in enumerate(rows[:-1] if rows[-1] == "" else rows):
+        if y >= 8 or not _LEAF_ROW.fullmatch(row):
+            bad = next((i for i, ch in enumerate(row) if ch not in ".*"), None)
+            if y < 8 and bad is not None:
+                raise McError(line, col + bad, f"expected '.', '*' or '$', found {row[bad]!r}")
+            raise McError(line, col + (8 if y < 8 else 0), "a leaf is 8 cells wide and 8 tall")
+        if row:
+            bits |= int(row.translate(_ROW_BITS)[::-1], 2) << (8 * y)
+        col += len(row) + 1
+    live = np.flatnonzero((np.uint64(bits) >> _UNIT) & np.uint64(1)).astype(np.int64)
+    got = (live & 7, live >> 3, np.ones(live.size, np.int64))
+    cache[text] = got
+    return got
+
+
+def _node_line(tree: _Tree, text: str, line: int) -> None:
+    parts = text.split()
+    if len(parts) != 5 or not all(p.isascii() and p.isdigit() and len(p) <= 10
+                                  for p in parts):
+        raise McError(line, 1, f"expected a node 'level a b c d' (five numbers) or a leaf "
+                               f"of '.', '*' and '$', found {text[:40]!r}")
+    level, *kids = (int(p) for p in parts)
+    if not 1 <= level <= MAX_LEVEL:
+        raise McError(line, 1, f"a node's level is 1..{MAX_LEVEL}, found {level}")
+    if level == 1:
+        bad = [k for k in kids if k > 255]
+        if bad:
+            raise McError(line, 1, f"a cell state is 0..255, found {bad[0]}")
+        q = [(qx, qy, t) for (qx, qy), t in zip(_QUAD, kids) if t]
+        tree.add_leaf(1, np.array([a for a, _, _ in q], np.int64),
+                      np.array([b for _, b, _ in q], np.int64),
+                      np.array([t for _, _, t in q], np.int64))
+        return
+    for k in kids:
+        if k >= len(tree.level):
+            raise McError(line, 1, f"node {k} is not defined before this line (nodes are "
+                                   f"numbered from 1 in order; this is node {len(tree.level)})")
+        if k and tree.level[k] != level - 1:
+            raise McError(line, 1, f"node {k} has level {tree.level[k]}, a quadrant of a "
+                                   f"level-{level} node needs level {level - 1}")
+    tree.add_node(level, tuple(kids))
+
+
+def read_tree(text: str) -> tuple[_Tree, str, list[str]]:
+    """The nodes, the rule (``#R``) and the comments of a macrocell file."""
+    lines = text.splitlines()
+    if not lines or not lines[0].startswith("[M2]"):
+        raise McError(1, 1, "expected '[M2]' starting a macrocell file")
+    tree, rule, comments = _Tree(), "", []
+    leaves: dict = {}
+    for n, raw in enumerate(lines[1:], start=2):
+        s = raw.strip()
+        if not s:
+            continue
+        if s.startswith("#"):
+            if s[:2] == "#R":
+                rule = s[2:].strip()
+            elif s[:2] in ("#C", "#N"):
+                comments.append(s[2:].strip())
+            continue
+        if s[0] in ".*$":
+            tree.add_leaf(3, *_bitmap(s, n, leaves))
+        else:
+            _node_line(tree, s, n)
+    if len(tree.level) == 1:
+        raise McError(max(1, len(lines)), 1, "expected at least one node, found none")
+    return tree, rule, comments
+
+
+def _small(tree: _Tree, k: int, memo: dict) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The cells of a small node relative to its top-left corner (each node listed once)."""
+    got = memo.get(k)
+    if got is not None:
+        return got
+    if tree.leaf[k] is not None:
+        got = tree.leaf[k]
+    elif tree.pop[k] == 0:
+        got = (np.zeros(0, np.int64),) * 3
+    else:
+        half = 1 << (tree.level[k] - 1)
+        parts = [(_small(tree, c, memo), qx, qy) for c, (qx, qy) in zip(tree.kids[k], _QUAD)]
+        got = (np.concatenate([p[0] + qx * half for p, qx, _ in parts]),
+               np.concatenate([p[1] + qy * half for p, _, qy in parts]),
+               np.concatenate([p[2] for p, _, _ in parts]))
+    memo[k] = got
+    return got
+
+
+def _pieces(tree: _Tree, k: int, x: int, y: int, memo: dict, emit) -> None:  # noqa: ANN001
+    """``emit(xs, ys, ts)`` the cells of node ``k`` placed with its top-left at (x, y), a
+    small node at a time."""
+    if tree.pop[k] == 0:
+        return
+    if tree.pop[k] <= SMALL or tree.leaf[k] is not None:
+        xs, ys, ts = _small(tree, k, memo)
+        emit(xs + x, ys + y, ts)
+        return
+    half = 1 << (tree.level[k] - 1)
+    for c, (qx, qy) in zip(tree.kids[k], _QUAD):
+        _pieces(tree, c, x + qx * half, y + qy * half, memo, emit)
+
+
+def cells_of(tree: _Tree, last_line: int
+             ) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray] | np.ndarray,
+                        tuple[int, int]]:
+    """The root's cells relative to its live box's top-left — as arrays, or a uint8 grid
+    for a dense pattern — and Golly's origin in those coordinates."""
+    root = len(tree.level) - 1
+    level, box, pop = tree.level[root], tree.box[root], tree.pop[root]
+    half = 1 << (level - 1)
+    if box is None:
+        empty = np.zeros(0, np.int64)
+        return (empty, empty, empty), (0, 0)
+    x0, y0, x1, y1 = box
+    w, h = x1 - x0 + 1, y1 - y0 + 1
+    if w > 65536 or h > 65536:
+        raise McError(last_line, 1, f"pattern is {w} x {h} cells, wider or taller than the "
+                                    "65536-cell plane")
+    grid = pop * GRID_FILL >= w * h and w * h <= MAX_GRID and tree.top <= 255
+    if not grid and pop > MAX_CELLS:
+        raise McError(last_line, 1, f"pattern has {pop} cells, more than {MAX_CELLS} can be "
+                                    "loaded")
+    origin = (half - x0, half - 1 - y0)
+    if grid:
+        g = np.zeros((h, w), np.uint8)
+
+        def paint(xs: np.ndarray, ys: np.ndarray, ts: np.ndarray) -> None:
+            g[ys, xs] = ts
+
+        _pieces(tree, root, -x0, -y0, {}, paint)
+        return g, origin
+    pieces: list = []
+    _pieces(tree, root, -x0, -y0, {}, lambda *piece: pieces.append(piece))
+    xs, ys, ts = (np.concatenate([p[i] for p in pieces]) for i in range(3))
+    order = np.lexsort((xs, ys))
+    return (xs[order], ys[order], ts[order]), origin
+
+
+# -- writing ------------------------------------------------------------------------------
+
+_ROW_TEXT = ["".join("*" if b >> x & 1 else "." for x in range(8)).rstrip(".") + "$"
+             for b in range(256)]
+
+
+def _bitmap_text(bits: int) -> str:
+    """An 8 x 8 leaf's line: rows ended by '$', trailing dots and empty rows left out."""
+    rows = [_ROW_TEXT[(bits >> (8 * y)) & 0xFF] for y in range(8)]
+    while rows and rows[-1] == "$":
+        rows.pop()
+    return "".join(rows)
+
+
+def _leaves(xs: np.ndarray, ys: np.ndarray, ts: np.ndarray, two_state: bool
+            ) -> tuple[np.ndarray, list[str]]:
+    """Leaf positions (Morton-free: (x, y) packed) and their node lines' keys."""
+    shift = 3 if two_state else 1
+    key = (ys >> shift) * (1 << 32) + (xs >> shift)
+    order = np.argsort(key, kind="stable")
+    key, xs, ys, ts = key[order], xs[order], ys[order], ts[order]
+    starts = np.flatnonzero(np.r_[True, key[1:] != key[:-1]])
+    if two_state:
+        bit = np.left_shift(np.uint64(1), ((ys & 7) * 8 + (xs & 7)).astype(np.uint64))
+        words = np.bitwise_or.reduceat(bit, starts)
+        return key[starts], [_bitmap_text(int(w)) for w in words]
+    quad = (ys & 1) * 2 + (xs & 1)
+    packed = np.add.reduceat(ts << (8 * quad), starts)
+    return key[starts], [" ".join(["1"] + [str((int(p) >> (8 * q)) & 0xFF) for q in range(4)])
+                         for p in packed]
+
+
+def format_mc(xs: np.ndarray, ys: np.ndarray, ts: np.ndarray, ref: tuple[int, int],
+              rule: str = "", comments: list[str] | None = None) -> str:
+    """A macrocell file of the cells, Golly's origin at the reference point ``ref``."""
+    dx, dy = xs - ref[0], ys - ref[1]
+    two_state = not ts.size or int(ts.max()) <= 1
+    level = 4 if two_state else 3
+    while ts.size and (int(dx.min()) < -(1 << (level - 1)) or int(dx.max()) >= 1 << (level - 1)
+                       or int(dy.min()) <= -(1 << (level - 1)) or int(dy.max()) > 1 << (level - 1)):
+        level += 1
+    head = ["[M2] (camlab88)"]
+    if rule:
+        head.append(f"#R {rule}")
+    head += [f"#C {c}" for c in (comments or [])]
+    if not ts.size:
+        return "\n".join(head + [f"{level} 0 0 0 0"]) + "\n"
+    half = 1 << (level - 1)
+    keys, texts = _leaves(dx + half, dy + half - 1, ts, two_state)
+    lines: list[str] = []
+    ids: dict[str, int] = {}
+
+    def node(text: str) -> int:
+        if text not in ids:
+            lines.append(text)
+            ids[text] = len(lines)
+        return ids[text]
+
+    kid = np.array([node(t) for t in texts], np.int64)
+    kx, ky = keys % (1 << 32), keys // (1 << 32)
+    for lv in range((3 if two_state else 1) + 1, level + 1):
+        px, py = kx >> 1, ky >> 1
+        pk = py * (1 << 32) + px
+        order = np.argsort(pk, kind="stable")
+        pk, q, kid = pk[order], ((ky & 1) * 2 + (kx & 1))[order], kid[order]
+        starts = np.flatnonzero(np.r_[True, pk[1:] != pk[:-1]])
+        quads = np.zeros((starts.size, 4), np.int64)
+        quads[np.searchsorted(pk[starts], pk), q] = kid
+        kid = np.array([node(f"{lv} {a} {b} {c} {d}") for a, b, c, d in quads.tolist()],
+                       np.int64)
+        kx, ky = pk[starts] % (1 << 32), pk[starts] // (1 << 32)
+    return "\n".join(head + lines) + "\n"
