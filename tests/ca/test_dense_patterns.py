@@ -130,3 +130,19 @@ def test_ca_run_takes_a_dense_block(tmp_path: Path, capsys, engine: str) -> None
     e.step(3)
     assert out["population"] == e.population
     assert out["bbox"] == e.stats()["bbox"]
+
+
+def test_auto_keeps_a_dense_plane_on_the_direct_engine_for_longer() -> None:
+    from apps.ca.algorithms import AUTO_MIN_GENERATIONS, AUTO_MIN_GENERATIONS_DENSE, choose_engine
+
+    assert choose_engine(LIFE, AUTO_MIN_GENERATIONS, dense=True) == "direct"
+    assert choose_engine(LIFE, AUTO_MIN_GENERATIONS_DENSE, dense=True) == "hashlife"
+    assert choose_engine(LIFE, AUTO_MIN_GENERATIONS) == "hashlife"
+    e = Engine(LIFE, algorithm="auto")
+    e.set_grid(3000, 3000, _soup(64, 5))
+    assert e.is_dense()
+    e.step(AUTO_MIN_GENERATIONS)
+    assert e.tree is None  # stepped directly: no HashLife tree was made
+    sparse = Engine(LIFE, algorithm="auto")
+    sparse.set_cells([100, 101, 102, 5000], [100, 100, 100, 5000], 1)
+    assert not sparse.is_dense()
