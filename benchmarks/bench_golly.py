@@ -1,4 +1,5 @@
-"""Benchmark beside Golly's bgolly, whole processes (run by hand: python benchmarks/bench_golly.py).
+"""Benchmark beside Golly's bgolly, whole processes (run by hand from the repository:
+PYTHONPATH=. python benchmarks/bench_golly.py).
 
 The same pattern files, the same generations, run by ``bgolly`` (Golly 3.3's command-line
 program, HashLife: ``-h`` for Life, ``-a RuleLoader`` with the rule table for WireWorld and
@@ -18,11 +19,8 @@ import sys
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-from tests.ca.golly_oracle import DATA, bgolly  # noqa: E402
-
-from apps.ca.library import pattern_path  # noqa: E402
+from apps.ca.library import pattern_path
+from tests.ca.golly_oracle import DATA, bgolly
 
 HERE = Path(__file__).parent
 RUNS = 3
