@@ -105,3 +105,46 @@ def test_fast_forward_through_the_menu_doubles_then_step_mode_stops_it() -> None
     assert not d.program.fast_forward and not d.program.auto
     d.frames(3)
     assert d.program.frequency == f
+
+
+class _Clock:
+    """A clock that moves two seconds each time it is read (and can act on a reading)."""
+
+    def __init__(self, on_read=None) -> None:  # noqa: ANN001 - called with the reading count
+        self.t, self.reads, self.on_read = 0.0, 0, on_read
+
+    def __call__(self) -> float:
+        self.reads += 1
+        if self.on_read is not None:
+            self.on_read(self.reads)
+        self.t += 2.0
+        return self.t
+
+
+def test_a_long_go_to_generation_shows_a_progress_bar() -> None:
+    d = Driver(Options(pattern="gosper_gun"))
+    d.leave_editing()
+    d.program.clock = _Clock()
+    d.program._start(stepping.go_to_generation(d.program))
+    d.type("100000")
+    bars = [s for s in d.program.said if s.startswith("Go to generation 100000: generation")]
+    assert bars and all("%   Escape stops" in s and "[#" in s for s in bars)
+    assert d.program.said[-1] == "Generation 100000"
+    assert d.program.session.generation == 100000
+
+
+def test_escape_stops_a_long_go_to_generation_and_keeps_the_shown_state() -> None:
+    from protocols.rainbow.events import KeyEvent
+
+    d = Driver(Options(pattern="gosper_gun"))
+    d.leave_editing()
+    shown = d.program.session.engine.copy()
+    # Escape arrives while the jump runs (the clock's third reading is inside it)
+    d.program.clock = _Clock(lambda n: n == 3 and d.session.inject(KeyEvent(0, "escape", "")))
+    d.program._start(stepping.go_to_generation(d.program))
+    d.type("100000")
+    assert d.program.said[-1].startswith("Go to generation 100000: stopped at generation 0")
+    assert d.program.session.engine.same_state(shown)
+    assert d.program.dialogue is None
+    d.frames(2)  # the program runs on: input is read again, nothing was left pending
+    assert d.program.session.generation == 0

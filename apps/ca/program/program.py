@@ -8,6 +8,7 @@ into the off-screen buffer before it is wanted, and discarded after any interven
 from __future__ import annotations
 
 import os
+import time
 from dataclasses import dataclass
 
 from apps.ca import library, log
@@ -87,6 +88,9 @@ class CAProgram:
         self.text_fresh = False
         self.questioning = False
         self.said: list[str] = []  # every message shown (tests and the log of a session)
+        # input read during a long jump (apps/ca/program/jump_bar.py), handled next frame
+        self.held_events: list[object] = []
+        self.clock = time.monotonic  # when a jump's progress bar shows (tests replace it)
         self.script = stepping.ScriptFeed()
         self.script_last = 0
         self.display.editing = True
@@ -159,6 +163,9 @@ class CAProgram:
     # -- the frame loop -------------------------------------------------------------------------
     def frame(self) -> None:
         """One frame: input, then the simulation's work, then let the device show it."""
+        held, self.held_events = self.held_events, []
+        for e in held:
+            self.handle(e)
         while True:  # read the whole queue, however much arrived this frame
             events = self.client.poll_events(POLL_LIMIT)
             for e in events:

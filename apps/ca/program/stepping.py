@@ -14,11 +14,13 @@ display frequency doubles with every generation shown).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from apps.ca import log
 from apps.ca.engine import Engine
 from apps.ca.program.commands import ERROR, Ask, Dialogue
+from apps.ca.program.jump_bar import JumpBar, JumpStopped
 from apps.ca.session import Session
 
 if TYPE_CHECKING:
@@ -27,10 +29,11 @@ if TYPE_CHECKING:
 FAST_FORWARD_MAX = 1 << 24  # generations per shown frame at most while fast-forwarding
 
 
-def ahead(session: Session, frequency: int, next_script: int | None) -> tuple[Engine,
-                                                                               list[Engine]]:
+def ahead(session: Session, frequency: int, next_script: int | None,
+          progress: Callable[[int], None] | None = None) -> tuple[Engine, list[Engine]]:
     """A copy of the shown state stepped ``frequency`` generations (stopping where the
-    script intervenes next), and copies of the states due for a checkpoint on the way."""
+    script intervenes next), and copies of the states due for a checkpoint on the way;
+    ``progress(generation)`` is called as the engine goes."""
     engine = session.engine.copy()
     engine.algorithm = "auto"  # HashLife where it applies and pays
     steps = frequency
@@ -43,7 +46,9 @@ def ahead(session: Session, frequency: int, next_script: int | None) -> tuple[En
         n = target - engine.generation
         if every:
             n = min(n, every - engine.generation % every)  # stop at each checkpoint
-        engine.step(n)
+        base = engine.generation
+        engine.step(n, None if progress is None
+                    else lambda done, _asked, base=base: progress(base + done))
         if every and engine.generation % every == 0 and engine.generation < target:
             due.append(engine.copy())
     return engine, due
@@ -69,11 +74,17 @@ def go_to_generation(p: CAProgram) -> Dialogue:
         p.say(f"The generation must be a whole number from {now} on, not {text!r} (an "
               "earlier generation: replay the log with 'camlab88 ca replay')", ERROR)
         return
-    while p.session.generation < target:
-        p.pending, p.pending_checkpoints = ahead(p.session, target - p.session.generation,
-                                                 p.script.next_generation)
-        p.display.back.stale = True  # drawn by commit, once
-        p.commit()
+    bar = JumpBar(p, now, target, p.clock)
+    try:
+        while p.session.generation < target:
+            p.pending, p.pending_checkpoints = ahead(p.session, target - p.session.generation,
+                                                     p.script.next_generation, bar)
+            p.display.back.stale = True  # drawn by commit, once
+            p.commit()
+    except JumpStopped:
+        p.pending, p.pending_checkpoints = None, []
+        p.say(f"Go to generation {target}: stopped at generation {p.session.generation}")
+        return
     p.say(f"Generation {target}")
 
 

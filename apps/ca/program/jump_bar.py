@@ -1,0 +1,69 @@
+"""The progress bar of a long "Go to generation" jump, and Escape to stop it.
+
+The jump runs inside one dialogue step, so the frame loop does not read input meanwhile:
+the engine's progress callback (after each HashLife jump, or each direct generation) does.
+Once the jump has taken SHOW_AFTER seconds it shows a bar on the prompt line every EVERY
+seconds and lets the device show a frame; Escape in the input queue stops the jump (the
+state already shown stays; nothing computed after it is kept), other input is held for
+the frame loop. Wall-clock time decides only when the bar is drawn and input read, never
+what the engine computes.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+from protocols.rainbow.events import KeyEvent
+
+if TYPE_CHECKING:
+    from apps.ca.program.program import CAProgram
+
+SHOW_AFTER = 1.0  # seconds before the bar first appears
+EVERY = 0.25  # seconds between redraws
+WIDTH = 40  # characters of bar
+POLL_LIMIT = 256
+COLOUR = "#fff0a0"  # the prompt line's colour for questions (program.PROMPT)
+
+
+class JumpStopped(Exception):
+    """Escape was pressed during a jump."""
+
+
+class JumpBar:
+    """``bar(generation)``: the jump towards ``target`` has reached ``generation``."""
+
+    def __init__(self, p: CAProgram, start: int, target: int,
+                 clock: Callable[[], float] = time.monotonic) -> None:
+        self.p, self.start, self.target, self.clock = p, start, target, clock
+        self.started = clock()
+        self.last: float | None = None
+        self.shown = False
+
+    def text(self, generation: int) -> str:
+        done = (generation - self.start) / max(1, self.target - self.start)
+        fill = int(WIDTH * done)
+        return (f"Go to generation {self.target}: generation {generation}\n"
+                f"[{'#' * fill}{'.' * (WIDTH - fill)}] {int(100 * done)} %   Escape stops")
+
+    def __call__(self, generation: int) -> None:
+        now = self.clock()
+        if now - self.started < SHOW_AFTER or (self.last is not None
+                                               and now - self.last < EVERY):
+            return
+        self.last = now
+        self._read_input()
+        self.shown = True
+        self.p.say(self.text(generation), COLOUR)
+        self.p.client.wait_frame()  # let the device show it
+
+    def _read_input(self) -> None:
+        while True:
+            events = self.p.client.poll_events(POLL_LIMIT)
+            for e in events:
+                if isinstance(e, KeyEvent) and e.pressed and e.key == "escape":
+                    raise JumpStopped
+                self.p.held_events.append(e)
+            if len(events) < POLL_LIMIT:
+                return
