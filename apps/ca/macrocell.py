@@ -298,4 +298,27 @@ def format_mc(xs: np.ndarray, ys: np.ndarray, ts: np.ndarray, ref: tuple[int, in
         kid = np.array([node(f"{lv} {a} {b} {c} {d}") for a, b, c, d in quads.tolist()],
                        np.int64)
         kx, ky = pk[starts] % (1 << 32), pk[starts] // (1 << 32)
-    return "\n".join(head + lines) + "\n"
+    return "\n".join(head + _golly_order(lines)) + "\n"
+
+
+def _golly_order(lines: list[str]) -> list[str]:
+    """The node lines renumbered in the order Golly writes them: each node right after
+    its quadrants (nw, ne, sw, se), depth first from the root (the last line)."""
+    new: dict[int, int] = {}
+    out: list[str] = []
+
+    def visit(k: int) -> int:
+        if k == 0:
+            return 0
+        if k not in new:
+            text = lines[k - 1]
+            parts = text.split()
+            if len(parts) == 5 and parts[0] != "1":
+                kids = [visit(int(c)) for c in parts[1:]]
+                text = " ".join([parts[0], *map(str, kids)])
+            out.append(text)
+            new[k] = len(out)
+        return new[k]
+
+    visit(len(lines))
+    return out

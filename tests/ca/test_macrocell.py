@@ -112,3 +112,12 @@ def test_ca_convert_writes_macrocell_and_ca_run_reads_it(tmp_path: Path, capsys)
                      "60", "--json"]) == 0
     a, b = (json.loads(line) for line in capsys.readouterr().out.strip().splitlines()[-2:])
     assert a == b and a["population"] > 36
+
+
+def test_ca_program_loads_a_macrocell_pattern() -> None:
+    from apps.ca.program.program import Options
+    from tests.ca_program.driver import Driver
+
+    d = Driver(Options(rules="wireworld", pattern=str(GOLLY / "primes.mc")))
+    e = d.program.session.engine
+    assert e.by_type() == {1: 3827, 2: 3911, 3: 54299}  # heads, tails, copper of the file

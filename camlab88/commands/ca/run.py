@@ -60,10 +60,7 @@ def _run(args: argparse.Namespace) -> int:
 
     engine = Engine(rules, edges=args.edges, seed=args.seed, algorithm=args.engine)
     engine.hashlife_memory = args.memory << 20
-    if grid is not None:
-        engine.set_grid(*grid)
-    else:
-        engine.set_cells(*cells)
+    engine.set_grid(*grid) if grid is not None else engine.set_cells(*cells)
     try:
         _advance(engine, args, ProgressLine)
     except (ValueError, MemoryError) as exc:  # HashLife forced where it cannot run
