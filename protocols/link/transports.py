@@ -38,6 +38,8 @@ BUSY = b"camlab88: another client is connected to this line; try again later\r\n
 SETTLE_POLLS = 1000  # at most this many polls between clients spent waiting for an idle line
 MAX_QUEUED = 4096  # bytes from outside waiting to go down the line (a tty driver's buffer)
 _RDHUP = getattr(select, "POLLRDHUP", 0)  # Linux: the peer shut its sending side
+PROBE_MS = 200  # how long a newcomer's arrival waits for a probed client's reset
+RCVBUF = 16384  # bytes of kernel receive buffer per client (Linux doubles it)
 BACKLOG = 8  # connections the kernel queues while one is served (each is then refused)
 
 
@@ -187,6 +189,9 @@ class TcpBridge(Bridge):
         self._server = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
         try:
             self._server.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+            # a small receive window (clients inherit it): what a client has sent and the line
+            # has not taken waits in the client's own buffers, not in ours
+            self._server.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, RCVBUF)
             self._server.bind((host, port))
             self._server.listen(BACKLOG)
             self._server.setblocking(False)
@@ -208,7 +213,7 @@ class TcpBridge(Bridge):
                 sock, addr = self._server.accept()
             except (BlockingIOError, InterruptedError):
                 return
-            if self._client is not None and self._client_gone():
+            if self._client is not None and (self._client_gone() or self._client_orphaned()):
                 self._drop_client("closed by the client", hang_up=True)
             if self._client is None:
                 if self._left:  # what the last client left on the line is not for this one
@@ -269,13 +274,30 @@ class TcpBridge(Bridge):
             self._drop_client("closed by the client", hang_up=False)
         return data
 
-    def _client_gone(self) -> bool:
+    def _client_orphaned(self) -> bool:
+        """Whether a client whose bytes wait for the line has in fact closed: its close sits
+        behind bytes its kernel has not yet sent us, so only a probe tells. One urgent
+        (out-of-band) byte: a closed socket answers any data with a reset; a live client
+        never sees it in its data (only a program that asked for out-of-band data inline
+        would). Asked only when a newcomer is waiting and the client's bytes are waiting."""
+        assert self._client is not None
+        if not self._client_ready():
+            return False  # nothing of its waits: a close would have shown already
+        try:
+            self._client.send(b"\0", socket.MSG_OOB)
+        except (BlockingIOError, InterruptedError):
+            return False
+        except OSError:
+            return True
+        return self._client_gone(wait_ms=PROBE_MS)
+
+    def _client_gone(self, wait_ms: int = 0) -> bool:
         """Whether the current client has shut its sending side, closed or reset, looked
         at without reading (POLLRDHUP sees it even with bytes of its still unread)."""
         assert self._client is not None
         watch = select.poll()
-        watch.register(self._client, select.POLLIN | _RDHUP)
-        events = watch.poll(0)
+        watch.register(self._client, _RDHUP | (0 if wait_ms else select.POLLIN))
+        events = watch.poll(wait_ms)
         if not events:
             return False
         if events[0][1] & (select.POLLHUP | select.POLLERR | _RDHUP):

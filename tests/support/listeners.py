@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import os
 import re
+import signal
 import socket
 import subprocess
 import sys
@@ -61,9 +62,14 @@ def port_of(first_line: str) -> int:
 
 
 def stop(proc: subprocess.Popen) -> tuple[str, str]:
-    """Kill the server we started (by its pid) and collect its output."""
+    """Stop the server we started (Ctrl-C, then SIGKILL after 10 s; by its pid) and
+    collect its output."""
     if proc.poll() is None:
-        proc.kill()
+        proc.send_signal(signal.SIGINT)
+        try:
+            return proc.communicate(timeout=10)
+        except subprocess.TimeoutExpired:
+            proc.kill()
     return proc.communicate(timeout=30)
 
 
