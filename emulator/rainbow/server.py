@@ -26,6 +26,7 @@ from protocols.rainbow.stream import REFUSED, Decoder, StreamError, encode_reply
 
 FRAME_TIMEOUT = 10.0  # s from a frame's first byte to its last
 IDLE_TIMEOUT = 60.0  # s of silence after which a client gives way to a waiting one
+BACKLOG = 128  # connections the kernel queues while one program is served (then refused)
 BUSY = b"the Rainbow is serving another program; try again when it has finished"
 
 
@@ -111,7 +112,7 @@ def listen(port: int = 0, host: str = "127.0.0.1") -> socket.socket:
     s = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
     s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
     s.bind((host, port))
-    s.listen(4)
+    s.listen(BACKLOG)
     return s
 
 

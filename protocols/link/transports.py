@@ -40,7 +40,7 @@ MAX_QUEUED = 4096  # bytes from outside waiting to go down the line (a tty drive
 _RDHUP = getattr(select, "POLLRDHUP", 0)  # Linux: the peer shut its sending side
 PROBE_MS = 200  # how long a newcomer's arrival waits for a probed client's reset
 RCVBUF = 16384  # bytes of kernel receive buffer per client (Linux doubles it)
-BACKLOG = 8  # connections the kernel queues while one is served (each is then refused)
+BACKLOG = 128  # connections the kernel queues between two polls (a burst is not dropped)
 
 
 @dataclass(frozen=True)

@@ -118,18 +118,24 @@ def test_an_idle_headless_listener_sleeps() -> None:
 
 def test_clients_that_reconnect_at_once_are_not_held_back() -> None:
     proc, first = start(["sigma", "run", "--headless", "--listen", "0"])
-    slowest = 0.0
+    times = []
     try:
         port = port_of(first)
-        for _ in range(12):
+        for _ in range(30):  # a burst: connect and leave, faster than the server polls
             t0 = time.monotonic()
-            with socket.create_connection(("127.0.0.1", port), timeout=5) as s:
-                slowest = max(slowest, time.monotonic() - t0)
-                s.sendall(b"x")
-                time.sleep(0.05)
+            socket.create_connection(("127.0.0.1", port), timeout=5).close()
+            times.append(time.monotonic() - t0)
+        held = []
+        for _ in range(4):  # and newcomers while a client holds the line
+            t0 = time.monotonic()
+            held.append(socket.create_connection(("127.0.0.1", port), timeout=5))
+            times.append(time.monotonic() - t0)
+        for s in held:
+            s.close()
     finally:
         stop(proc)
-    assert slowest < 0.5, f"a connect took {slowest:.2f} s"
+    # a dropped SYN is sent again after 1 s: that is what a too-short backlog costs
+    assert max(times) < 0.5, f"a connect took {max(times):.2f} s"
 
 
 def test_a_live_client_held_by_the_line_keeps_it_and_sees_nothing_of_a_newcomer() -> None:

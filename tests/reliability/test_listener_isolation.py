@@ -87,3 +87,31 @@ def test_a_sigma_line_starts_each_client_on_an_empty_line() -> None:
     # A's bytes, in order, stopped when B came: 1 s of line time and a tick is 970 bytes
     assert from_a == A_BYTES[:len(from_a)] and len(from_a) <= 972, len(from_a)
     assert when - joined <= Fraction(1, 10), float(when - joined)
+
+
+def test_link_echo_listen_as_attacked_a_30_kb_client_then_a_second_one() -> None:
+    """The trial's own steps: A sends 30 KB and closes; B connects 2 s later."""
+    import time
+
+    from tests.support.listeners import port_of, start, stop
+
+    proc, first = start(["link", "echo", "--listen", "0"])
+    try:
+        port = port_of(first)
+        with socket.create_connection(("127.0.0.1", port), timeout=5) as a:
+            a.sendall(A_BYTES)
+        time.sleep(2.0)
+        with socket.create_connection(("127.0.0.1", port), timeout=5) as b:
+            b.sendall(b"bee 123")
+            b.settimeout(0.1)
+            got, began = b"", time.monotonic()
+            while len(got) < 7 and time.monotonic() - began < 3.0:
+                try:
+                    got += b.recv(100)
+                except TimeoutError:
+                    pass
+            waited = time.monotonic() - began
+    finally:
+        stop(proc)
+    assert got == b"bee 123", got[:80]
+    assert waited < 1.0, waited  # its own echo at once (the trial: after 28.8 s)
