@@ -11,12 +11,14 @@ Per-connection rules (docs/reliability.md, "Listeners"):
   go down the line; the rest wait outside (TCP flow control, the pty's kernel buffer blocks
   the writer), as a real 9600-baud port makes a fast writer wait. Memory does not grow with
   what a client sends.
-* Isolated: when a client leaves, the line hangs up (``Endpoint.hang_up``): what it queued and
+* Isolated: when the line changes hands (a new client connects after one left, or the bridge
+  hangs up on one) the line hangs up (``Endpoint.hang_up``): what the old client queued and
   what was queued for it are dropped. Then the bridge *settles*: what the line still delivers
-  to its end (the device's answers to bytes that had already reached it) is dropped, and a
+  to its end (the device's answers to bytes that had already reached it) is dropped, and the
   new client is not read, until the line is idle both ways (or SETTLE_POLLS polls have
   passed, for a device that never goes quiet). One client never receives bytes that belong
-  to another, and a new client starts on an empty line.
+  to another, and a new client starts on an empty line. A client that closes while nobody is
+  waiting still has the bytes it sent go down the line.
 """
 
 from __future__ import annotations
