@@ -161,14 +161,15 @@ class Endpoint:
         return self._line._seconds_or_inf(self._line._predict_end(self._tx), exact=True)
 
     def queued(self) -> int:
-        """Bytes written from this end that have not yet started on the wire."""
+        """Bytes written from this end that have not started on the wire by the clock's now."""
+        self._line.flush()
         return self._tx.queued
 
     def hang_up(self) -> int:
-        """The party at this end hangs up: the bytes it queued and the bytes queued or
-        arrived for it are dropped, and XON/XOFF is back to running both ways, so whoever
-        comes next starts on an empty line. Characters already on the wire complete.
-        Returns how many bytes were dropped."""
+        """The party at this end hangs up: the bytes it queued and the bytes queued for it or
+        arrived (or arriving) at this end unread are dropped, and XON/XOFF is back to running
+        both ways, so whoever comes next starts on an empty line. Characters this end had
+        already started complete at the far end. Returns how many bytes were dropped."""
         return self._line._hang_up(self._tx, self._rx)
 
     def in_flight(self) -> int:

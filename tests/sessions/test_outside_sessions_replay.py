@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 
 from protocols.session import read
-from tests.support.listeners import port_of, start, stop
+from tests.support.listeners import port_of, start, stop, wait_idle
 
 ORDERS = b"\r+-*/HI2GI200200GJ600200600400200400200200"
 
@@ -51,7 +51,8 @@ def test_a_session_fed_through_the_pty_replays_with_check(tmp_path: Path, seed: 
             port.write(ORDERS[i:i + 5])
             port.flush()
             time.sleep(rng.uniform(0.0, 0.25))
-        time.sleep(1.0 + rng.uniform(0.0, 0.4))  # every byte drawn before the Ctrl-C
+        time.sleep(rng.uniform(0.0, 0.4))
+        assert wait_idle(proc.pid)  # every byte drawn before the Ctrl-C
         port.close()
     finally:
         out, err = stop(proc)  # Ctrl-C
@@ -79,7 +80,7 @@ def test_a_listen_session_with_a_client_leaving_replays_with_check(tmp_path: Pat
             for piece in (b"\r+-*/HI3GI100100", b"GJ700450", b"700050"):
                 b.sendall(piece)
                 time.sleep(rng.uniform(0.0, 0.3))
-            time.sleep(1.0)
+            assert wait_idle(proc.pid)
     finally:
         out, err = stop(proc)
     assert "recorded the session" in err, err

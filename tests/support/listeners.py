@@ -94,3 +94,15 @@ def wait_for(predicate, timeout: float, every: float = 0.05) -> bool:  # noqa: A
             return True
         time.sleep(every)
     return predicate()
+
+
+def wait_idle(pid: int, timeout: float = 30.0, window: float = 0.3) -> bool:
+    """Wait until process ``pid`` uses under 10 % of a core over ``window`` seconds (it has
+    dealt with what it was sent: drawn it, compiled what it needed); bounded."""
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        c0 = cpu_seconds(pid)
+        time.sleep(window)
+        if cpu_seconds(pid) - c0 < 0.1 * window:
+            return True
+    return False
