@@ -27,6 +27,7 @@ import contextlib
 import errno
 import select
 import socket
+import time
 from collections import deque
 from dataclasses import dataclass, field
 from typing import Any
@@ -40,7 +41,8 @@ BUSY = b"camlab88: another client is connected to this line; try again later\r\n
 SETTLE_POLLS = 1000  # at most this many polls between clients spent waiting for an idle line
 MAX_QUEUED = 4096  # bytes from outside waiting to go down the line (a tty driver's buffer)
 _RDHUP = getattr(select, "POLLRDHUP", 0)  # Linux: the peer shut its sending side
-PROBE_MS = 200  # how long a newcomer's arrival waits for a probed client's reset
+PROBE_MS = 50  # how long a newcomer's arrival waits for a probed client's reset
+PROBE_EVERY = 1.0  # s between two probes of one client (a late reset is seen at the next poll)
 RCVBUF = 16384  # bytes of kernel receive buffer per client (Linux doubles it)
 BACKLOG = 128  # connections the kernel queues between two polls (a burst is not dropped)
 
@@ -204,6 +206,7 @@ class TcpBridge(Bridge):
         self._client: socket.socket | None = None
         self._pending = bytearray()
         self._left = False  # a client left bytes on the line; hang it up for the next one
+        self._probed_at = -PROBE_EVERY
 
     @property
     def connected(self) -> bool:
@@ -283,8 +286,10 @@ class TcpBridge(Bridge):
         never sees it in its data (only a program that asked for out-of-band data inline
         would). Asked only when a newcomer is waiting and the client's bytes are waiting."""
         assert self._client is not None
-        if not self._client_ready():
-            return False  # nothing of its waits: a close would have shown already
+        now = time.monotonic()
+        if not self._client_ready() or now - self._probed_at < PROBE_EVERY:
+            return False  # nothing of its waits (a close would have shown), or probed lately
+        self._probed_at = now  # a flood of newcomers cannot stall the line with probes
         try:
             self._client.send(b"\0", socket.MSG_OOB)
         except (BlockingIOError, InterruptedError):

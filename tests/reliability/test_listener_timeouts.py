@@ -142,3 +142,19 @@ def test_sigma_run_listen_hangs_up_on_half_an_order_after_its_order_timeout() ->
         out, err = stop(proc)
     assert 1.0 <= waited <= 3.0, waited
     assert "half an order unfinished for 1 s of line time" in err, err
+
+
+def test_rainbow_serve_frame_timeout_from_the_command_line() -> None:
+    proc, first = start(["rainbow", "serve", "--headless", "--port", "0", "--frame-timeout",
+                         "1"])
+    try:
+        with socket.create_connection(("127.0.0.1", port_of(first)), timeout=5) as s:
+            s.sendall(encode("create_cluster", 5, 10, 10)[:7])  # half a frame, then silence
+            began = time.monotonic()
+            s.settimeout(6)
+            assert s.recv(100) == b""  # closed by the server
+            waited = time.monotonic() - began
+        assert proc.poll() is None  # still serving
+    finally:
+        stop(proc)
+    assert 1.0 <= waited <= 2.5, waited
