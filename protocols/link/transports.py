@@ -226,7 +226,7 @@ class TcpBridge(Bridge):
                     self._start_settling()
                 sock.setblocking(False)
                 sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
-                self._client = sock
+                self._client, self._probed_at = sock, -PROBE_EVERY
                 self._event("connected", f"{addr[0]}:{addr[1]}")
             else:  # one client at a time: say so, then hang up
                 with contextlib.suppress(OSError):
