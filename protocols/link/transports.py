@@ -41,6 +41,7 @@ BUSY = b"camlab88: another client is connected to this line; try again later\r\n
 SETTLE_POLLS = 1000  # at most this many polls between clients spent waiting for an idle line
 MAX_QUEUED = 4096  # bytes from outside waiting to go down the line (a tty driver's buffer)
 _RDHUP = getattr(select, "POLLRDHUP", 0)  # Linux: the peer shut its sending side
+IDLE_TIMEOUT = 60.0  # s of line time a silent client keeps the line from a newcomer (commands)
 PROBE_MS = 50  # how long a newcomer's arrival waits for a probed client's reset
 PROBE_EVERY = 1.0  # s between two probes of one client (a late reset is seen at the next poll)
 RCVBUF = 16384  # bytes of kernel receive buffer per client (Linux doubles it)
@@ -183,13 +184,18 @@ class PtyBridge(Bridge):
 class TcpBridge(Bridge):
     """A listening TCP port (127.0.0.1 by default); one client at a time, reconnects allowed.
 
-    ``port=0`` picks a free port; read the chosen one from ``.port``.
+    ``port=0`` picks a free port; read the chosen one from ``.port``. With ``idle_timeout``
+    (seconds of line time), a client that has sent nothing for that long gives way to a
+    newcomer instead of the newcomer being refused.
     """
 
     def __init__(
-        self, port: int, host: str = "127.0.0.1", *, endpoint: Endpoint | None = None
+        self, port: int, host: str = "127.0.0.1", *, endpoint: Endpoint | None = None,
+        idle_timeout: float | None = None,
     ) -> None:
         super().__init__(endpoint)
+        self.idle_timeout = idle_timeout
+        self._heard_at = 0.0  # line time the client last sent something
         self._server = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
         try:
             self._server.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
@@ -220,6 +226,9 @@ class TcpBridge(Bridge):
                 return
             if self._client is not None and (self._client_gone() or self._client_orphaned()):
                 self._drop_client("closed by the client", hang_up=True)
+            elif self._client is not None and self._client_idle():
+                self._drop_client(f"silent for {self.idle_timeout:g} s of line time while "
+                                  "another client waited", hang_up=True)
             if self._client is None:
                 if self._left:  # what the last client left on the line is not for this one
                     self._left = False
@@ -227,6 +236,7 @@ class TcpBridge(Bridge):
                 sock.setblocking(False)
                 sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
                 self._client, self._probed_at = sock, -PROBE_EVERY
+                self._heard_at = self._line_time()
                 self._event("connected", f"{addr[0]}:{addr[1]}")
             else:  # one client at a time: say so, then hang up
                 with contextlib.suppress(OSError):
@@ -277,7 +287,17 @@ class TcpBridge(Bridge):
             return b""
         if not data:
             self._drop_client("closed by the client", hang_up=False)
+        self._heard_at = self._line_time()
         return data
+
+    def _line_time(self) -> float:
+        return self.endpoint.line.clock.now if self.endpoint is not None else 0.0
+
+    def _client_idle(self) -> bool:
+        """Whether the client has been silent for ``idle_timeout`` (while a newcomer waits;
+        a client whose bytes wait for the line is not silent)."""
+        return (self.idle_timeout is not None and not self._client_ready()
+                and self._line_time() - self._heard_at >= self.idle_timeout)
 
     def _client_orphaned(self) -> bool:
         """Whether a client whose bytes wait for the line has in fact closed: its close sits

@@ -158,3 +158,38 @@ def test_rainbow_serve_frame_timeout_from_the_command_line() -> None:
     finally:
         stop(proc)
     assert 1.0 <= waited <= 2.5, waited
+
+
+def test_a_silent_line_client_gives_way_to_a_newcomer_after_the_idle_timeout() -> None:
+    line = SerialLine(LineSettings())
+    bridge = TcpBridge(0, endpoint=line.host, idle_timeout=5.0)
+    k = 0
+
+    def step() -> None:
+        nonlocal k
+        line.clock.advance_to(k * Fraction(1, 100))
+        bridge.poll(timeout=0.0)
+        k += 1
+
+    try:
+        with socket.create_connection(("127.0.0.1", bridge.port), timeout=5) as silent:
+            silent.sendall(b"hello")
+            for _ in range(300):  # 3 s of line time: not yet idle long enough
+                step()
+            early = socket.create_connection(("127.0.0.1", bridge.port), timeout=5)
+            early.settimeout(5)
+            for _ in range(5):
+                step()
+            assert early.recv(200).startswith(b"camlab88: another client")
+            early.close()
+            for _ in range(250):  # 5.5 s since it last spoke
+                step()
+            late = socket.create_connection(("127.0.0.1", bridge.port), timeout=5)
+            for _ in range(5):
+                step()
+            silent.settimeout(5)
+            assert silent.recv(200) == b""  # the silent client was hung up on
+            late.close()
+    finally:
+        bridge.close()
+    assert any("silent for 5 s" in e.detail for e in bridge.events)

@@ -37,6 +37,9 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
     u.add_argument("--order-timeout", type=_seconds, default=Fraction(10), metavar="S",
                    help="hang up on a --listen client that leaves half an order unfinished "
                    "this many seconds of line time (default 10)")
+    u.add_argument("--idle-timeout", type=_seconds, default=Fraction(60), metavar="S",
+                   help="a --listen client silent this many seconds of line time gives way "
+                   "to one that connects (default 60)")
     u.add_argument("--record-line", type=Path, metavar="FILE",
                    help="record the line (both directions) as a link recording")
     add_run_options(u, stop_after=False)
@@ -151,7 +154,8 @@ def _open_bridge(args: argparse.Namespace, settings, endpoint):  # noqa: ANN001,
 
     if args.listen is not None:
         try:
-            bridge = tr.TcpBridge(args.listen, endpoint=endpoint)
+            bridge = tr.TcpBridge(args.listen, endpoint=endpoint,
+                                  idle_timeout=float(args.idle_timeout))
         except OSError as exc:
             raise _die(f"cannot listen on 127.0.0.1:{args.listen}: "
                        f"{exc.strerror or exc}") from None
