@@ -114,17 +114,20 @@ class Harness:
 
     def run(self) -> Harness:
         """Tick until the target finishes, the window closes or a stop; returns self."""
+        from emulator.harness.signals import DeferredSignals
         from protocols.link import Throttle
 
         self._open_window()
         throttle = Throttle(1.0 if self._paced() else None)
-        try:
-            for p in self.plugins:
-                p.start(self)
-            while self._tick_once():
-                throttle.pace(self.target.time())
-        finally:
-            self._finish()
+        with DeferredSignals() as signals:  # Ctrl-C ends the run between ticks
+            try:
+                for p in self.plugins:
+                    p.start(self)
+                while self._tick_once() and signals.caught is None:
+                    throttle.pace(self.target.time())
+            finally:
+                self._finish()
+        signals.deliver()  # after the plugins finished (a recording is written)
         return self
 
     def _paced(self) -> bool:

@@ -100,17 +100,20 @@ class RecordedInput(Plugin):
         self.events: dict[int, list[HostEvent]] = {}
         for tick, _t, obj in rec.events:
             self.events.setdefault(tick, []).append(codec.decode(obj))
-        self.wire: dict[int, list[bytes]] = {}
+        self.wire: dict[int, list[tuple[str, bytes]]] = {}
         for tick, d, data in rec.wire:
-            if d == "+":
-                self.wire.setdefault(tick - 1, []).append(data)  # recorded after the tick
+            if d in ("+", "-"):  # recorded after the tick: fed back before it, in order
+                self.wire.setdefault(tick - 1, []).append((d, data))
         self.end_tick = rec.ticks
 
     def handle_events(self, harness: Harness, events: list[HostEvent]) -> list[HostEvent]:
         put = getattr(harness.target, "put_wire", None)
-        for data in self.wire.get(harness.ticks, []):
-            if put is not None:
+        hang_up = getattr(harness.target, "put_hang_up", None)
+        for d, data in self.wire.get(harness.ticks, []):
+            if d == "+" and put is not None:
                 put(data)
+            elif d == "-" and hang_up is not None:
+                hang_up()
         window_quit = [e for e in events if isinstance(e, Quit)]
         return self.events.get(harness.ticks, []) + window_quit
 

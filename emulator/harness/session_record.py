@@ -80,8 +80,8 @@ class SessionRecorder(Plugin):
         if wire is None:
             return
         for d, data in wire():
-            if d == "+" and data:  # outside input: at its tick, for the replay to feed back
-                self.rec.wire.append((harness.ticks, d, data))
+            if (d == "+" and data) or d == "-":  # outside input, a client leaving: at its
+                self.rec.wire.append((harness.ticks, d, data))  # tick, for a replay
             elif data:
                 self._pending.setdefault(d, bytearray()).extend(data)
 

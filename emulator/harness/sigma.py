@@ -1,6 +1,6 @@
-"""The harness target for a Sigma terminal on a paced serial line (``sigma run``): the line's
-outside end is a bridge (pty, TCP, pyserial URL) to any program; an optional stream is
-played down the line too.  One tick = 1/100 s of line time; 25 frames a second shown."""
+"""Harness targets for programs on a Sigma: a program session over the line (KAS's editor
+and path fronts) and a terminal fed period by period (KAS's line test).  The terminal on a
+line served to outside programs (``sigma run``) is emulator.harness.sigma_line."""
 
 from __future__ import annotations
 
@@ -10,78 +10,6 @@ from typing import Any
 import numpy as np
 
 from emulator.host_input import HostEvent
-from emulator.sigma.host_input import KEYS_HINT, to_terminal
-
-TICK = Fraction(1, 100)  # virtual seconds per tick
-
-
-class OutsideTap:
-    """The line's host endpoint as a bridge sees it, keeping a copy of what comes from
-    outside (the recording's ``+`` wire bytes, which a replay feeds back)."""
-
-    def __init__(self, endpoint: Any) -> None:
-        self._endpoint = endpoint
-        self.taken = bytearray()
-
-    def write(self, data: bytes) -> Any:
-        self.taken += data
-        return self._endpoint.write(data)
-
-    def __getattr__(self, name: str) -> Any:
-        return getattr(self._endpoint, name)
-
-
-class SigmaLineTarget:
-    """``term`` (emulator.sigma.Terminal) on ``line`` (protocols.link.SerialLine), whose
-    host end ``bridge`` serves (None in a replay: the recorded outside bytes come back
-    through ``put_wire``).  Runs until ``until`` seconds of line time (None: for ever)."""
-
-    fps = 25
-
-    def __init__(self, term: Any, line: Any, bridge: Any, title: str,
-                 until: Fraction | None = None, report: Any = None) -> None:
-        self.term, self.line, self.bridge = term, line, bridge
-        self.title, self.keys = title, KEYS_HINT
-        self.size = (768, 512)
-        self.until = until
-        self.report = report or (lambda kind, detail: None)
-        self._sent = bytearray()
-        self._received = b""
-        self.tap = OutsideTap(line.host)  # give this to the bridge as its endpoint
-        term.on_output = self._up
-
-    def _up(self, data: bytes) -> None:
-        self._sent += data
-        self.line.device.write(data)
-
-    def handle_events(self, events: list[HostEvent]) -> None:
-        for ev in events:
-            to_terminal(ev, self.term)
-
-    def tick(self) -> bool:
-        if self.bridge is not None:
-            for ev in self.bridge.poll(timeout=0.0).events:
-                if ev.kind in ("error", "disconnected", "refused"):
-                    self.report(ev.kind, ev.detail)
-        self._received = self.line.device.read()
-        self.term.feed(self._received)
-        self.line.clock.advance(TICK)
-        return self.until is None or self.line.clock.exact < self.until
-
-    def frame(self) -> np.ndarray:
-        return self.term.frame()
-
-    def time(self) -> Fraction:
-        return self.line.clock.exact
-
-    def wire(self) -> list[tuple[str, bytes]]:
-        """This tick's traffic: bytes the terminal received, sent, and what came from outside."""
-        sent, self._sent = bytes(self._sent), bytearray()
-        outside, self.tap.taken = bytes(self.tap.taken), bytearray()
-        return [("+", outside), (">", self._received), ("<", sent)]
-
-    def put_wire(self, data: bytes) -> None:
-        self.line.host.write(data)
 
 
 class SigmaProgramTarget:

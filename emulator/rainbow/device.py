@@ -35,6 +35,11 @@ class Rainbow:
         self.time_ms = 0
         self._compiled_version = -1
 
+    def new_session(self) -> None:
+        """Power-on state again for the next program (pads, clusters, arcs, colour tables,
+        pending input, the frame counter), with video memory of the same size."""
+        Rainbow.__init__(self, VideoMemory(self.memory.width, self.memory.height))
+
     # -- nodes and arcs --------------------------------------------------------------------
     def create_pad(self, width: int, height: int, depth: int, plane: int = 0,
                    lut_page: int = 0, node: int | None = None) -> int:

@@ -4,10 +4,13 @@ Policy (docs/reliability.md): the Rainbow serves one program at a time, as the r
 workstation served its one host. A second program that connects meanwhile gets a REFUSED
 frame saying so and is closed. Every connection starts with a fresh frame decoder, so a
 half frame left by one client never reaches the next and error offsets count from the
-connection's first byte. A client that resets, closes mid-frame or sends garbage loses its
-connection and nothing else: the server goes on to the next. A client that leaves half a
-frame unfinished for ``frame_timeout`` seconds, or says nothing for ``idle_timeout`` seconds
-while another program is waiting, is hung up on — so no client can wedge the server.
+connection's first byte. Each connection is also a fresh pad-library session: the pads,
+clusters, arcs, colour tables and pending input of one program never reach the next (node 77
+of one program is not "already there" for the next). A client that resets, closes mid-frame
+or sends garbage loses its connection and nothing else: the server goes on to the next. A
+frame still unfinished ``frame_timeout`` seconds after its first byte arrived (its age, however
+the bytes trickle in), or a client silent for ``idle_timeout`` seconds while another program
+is waiting, is hung up on — so no client can wedge the server.
 """
 
 from __future__ import annotations
@@ -21,8 +24,9 @@ from dataclasses import dataclass, field
 from emulator.rainbow.executor import Executor
 from protocols.rainbow.stream import REFUSED, Decoder, StreamError, encode_reply
 
-FRAME_TIMEOUT = 10.0  # s a half-received frame may wait for its rest
+FRAME_TIMEOUT = 10.0  # s from a frame's first byte to its last
 IDLE_TIMEOUT = 60.0  # s of silence after which a client gives way to a waiting one
+BACKLOG = 128  # connections the kernel queues while one program is served (then refused)
 BUSY = b"the Rainbow is serving another program; try again when it has finished"
 
 
@@ -48,14 +52,17 @@ def _refuse(conn: socket.socket, why: bytes) -> None:
 
 
 class _Client:
-    """One connection: its socket, its own decoder, and when it last sent anything."""
+    """One connection: its socket, its own decoder and pad-library session, when it last
+    sent anything and when the frame it has not finished began."""
 
-    def __init__(self, conn: socket.socket, executor: Executor) -> None:
+    def __init__(self, conn: socket.socket, executor: Executor, frame_timeout: float) -> None:
         self.conn = conn
         self.executor = executor
         executor.decoder = Decoder()  # per-connection state: nothing carries over
-        conn.settimeout(FRAME_TIMEOUT)  # sendall to a client that stops reading gives up
+        executor.device.new_session()
+        conn.settimeout(frame_timeout)  # sendall to a client that stops reading gives up
         self.last_heard = time.monotonic()
+        self.frame_began: float | None = None  # when the unfinished frame's first byte came
 
     def receive(self) -> str | None:
         """Handle what the client sent; returns why the connection ends, or None."""
@@ -67,10 +74,16 @@ class _Client:
             return "closed by the client" + (" mid-frame" if self.executor.decoder.pending
                                              else "")
         self.last_heard = time.monotonic()
+        decoder = self.executor.decoder
+        at = decoder.at
         try:
             replies = self.executor.feed(data)
         except StreamError:
             replies = b""
+        if not decoder.pending:
+            self.frame_began = None
+        elif self.frame_began is None or decoder.at != at:  # a new frame began in this data
+            self.frame_began = self.last_heard
         if replies and not _send(self.conn, replies):
             return "the client stopped taking replies"
         error = self.executor.decoder.error
@@ -83,8 +96,9 @@ class _Client:
     def overdue(self, now: float, someone_waiting: bool,
                 frame_timeout: float, idle_timeout: float) -> str | None:
         silent = now - self.last_heard
-        if self.executor.decoder.pending and silent > frame_timeout:
-            return f"half a frame unfinished for {silent:.0f} s"
+        began = self.frame_began
+        if began is not None and now - began > frame_timeout:
+            return f"a frame unfinished {now - began:.1f} s after its first byte"
         if someone_waiting and silent > idle_timeout:
             return f"idle for {silent:.0f} s while another program waited"
         return None
@@ -98,7 +112,7 @@ def listen(port: int = 0, host: str = "127.0.0.1") -> socket.socket:
     s = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
     s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
     s.bind((host, port))
-    s.listen(4)
+    s.listen(BACKLOG)
     return s
 
 
@@ -137,7 +151,7 @@ def serve(executor: Executor, sock: socket.socket, connections: int | None = Non
                     stats.dropped.append(why)
                 continue
             if sock in ready:
-                client = _accept(sock, executor, client, stats)
+                client = _accept(sock, executor, client, stats, frame_timeout)
     finally:
         if client is not None:
             client.close()
@@ -145,7 +159,7 @@ def serve(executor: Executor, sock: socket.socket, connections: int | None = Non
 
 
 def _accept(sock: socket.socket, executor: Executor, client: _Client | None,
-            stats: ServerStats) -> _Client | None:
+            stats: ServerStats, frame_timeout: float) -> _Client | None:
     try:
         conn, _ = sock.accept()
     except OSError:
@@ -154,4 +168,4 @@ def _accept(sock: socket.socket, executor: Executor, client: _Client | None,
         _refuse(conn, BUSY)
         stats.refused += 1
         return client
-    return _Client(conn, executor)
+    return _Client(conn, executor, frame_timeout)

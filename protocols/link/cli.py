@@ -123,14 +123,14 @@ def _sigterm_as_interrupt() -> Iterator[None]:
 
 
 def _echo(args: argparse.Namespace) -> int:
-    from protocols.link.transports import PtyBridge, SerialUrlBridge, TcpBridge
+    from protocols.link.transports import IDLE_TIMEOUT, PtyBridge, SerialUrlBridge, TcpBridge
 
     settings = LineSettings.parse(f"{args.baud} {args.framing}")
     recorder = Recorder(args.record, settings, xonxoff=not args.no_xonxoff) if args.record else None
     line = SerialLine(settings, xonxoff=not args.no_xonxoff, recorder=recorder)
     bridge: Any
     if args.listen is not None:
-        bridge = TcpBridge(args.listen, endpoint=line.host)
+        bridge = TcpBridge(args.listen, endpoint=line.host, idle_timeout=IDLE_TIMEOUT)
         print(f"echo device on a {settings} line: connect to 127.0.0.1:{bridge.port}", flush=True)
     elif args.url:
         bridge = SerialUrlBridge(args.url, settings, endpoint=line.host)

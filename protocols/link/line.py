@@ -104,6 +104,7 @@ class _Direction:
         self.tail_stale = False  # a pause delayed a start, so ``tail`` is not to be trusted
         self.sent = 0
         self.flow_sent = 0
+        self.queued = 0  # bytes written that have not started on the wire (O(1) to ask)
 
     def clone(self) -> _Direction:
         other = _Direction.__new__(_Direction)
@@ -158,6 +159,18 @@ class Endpoint:
 
     def drain_time_exact(self) -> Fraction | float:
         return self._line._seconds_or_inf(self._line._predict_end(self._tx), exact=True)
+
+    def queued(self) -> int:
+        """Bytes written from this end that have not started on the wire by the clock's now."""
+        self._line.flush()
+        return self._tx.queued
+
+    def hang_up(self) -> int:
+        """The party at this end hangs up: the bytes it queued and the bytes queued for it or
+        arrived (or arriving) at this end unread are dropped, and XON/XOFF is back to running
+        both ways, so whoever comes next starts on an empty line. Characters this end had
+        already started complete at the far end. Returns how many bytes were dropped."""
+        return self._line._hang_up(self._tx, self._rx)
 
     def in_flight(self) -> int:
         """Bytes written from this end that have not yet been read at the far end."""
@@ -225,6 +238,20 @@ class SerialLine:
         if close is not None:
             close()
 
+    def _hang_up(self, tx: _Direction, rx: _Direction) -> int:
+        now = self._ticks_down(self.clock.exact)
+        self._commit(self._h2d, self._d2h, now)  # what has started by now stays on the wire
+        dropped = sum(len(data) - off for _, data, off in rx.delivered)
+        rx.delivered.clear()
+        for d in (tx, rx):
+            dropped += d.queued
+            d.pending.clear()
+            d.pending_flows = d.queued = 0
+            d.control.clear()
+            d.base_paused = d.tail_stale = False
+            d.tail = d.tx_free
+        return dropped
+
     @property
     def stats(self) -> dict[str, int]:
         return {
@@ -268,6 +295,7 @@ class SerialLine:
         flows = (data.count(XON) + data.count(XOFF)) if self.xonxoff else 0
         tx.pending.append(_Segment(when, data, flows))
         tx.pending_flows += flows
+        tx.queued += len(data)
         tx.tail = max(tx.tail, tx.tx_free, when) + len(data) * tx.ct
         return self._predict_end(tx)
 
@@ -401,6 +429,7 @@ class SerialLine:
         if c > max(x.tx_free, seg.earliest):
             x.tail_stale = True  # a pause delayed this start
         seg.pos += n
+        x.queued -= n
         end = c + n * ct
         x.tx_free = end
         flow = self.xonxoff and data[-1] in _FLOW

@@ -5,10 +5,20 @@ virtual time (and are paced at the baud rate from there), bytes that have arrive
 bridged end are written out. A client going away is reported as an event, never raised:
 the device on the line keeps running and a new client may connect.
 
-Per-connection rule (docs/reliability.md): after a client goes away the bridge *settles* —
-whatever the line still delivers to its end is dropped, and a new client's bytes are held
-back — until the line is idle both ways (or SETTLE_POLLS polls have passed, for a device
-that never goes quiet), so one client never receives bytes that belong to another.
+Per-connection rules (docs/reliability.md, "Listeners"):
+
+* Bounded: a bridge takes bytes from outside only while fewer than MAX_QUEUED are waiting to
+  go down the line; the rest wait outside (TCP flow control, the pty's kernel buffer blocks
+  the writer), as a real 9600-baud port makes a fast writer wait. Memory does not grow with
+  what a client sends.
+* Isolated: when the line changes hands (a new client connects after one left, or the bridge
+  hangs up on one) the line hangs up (``Endpoint.hang_up``): what the old client queued and
+  what was queued for it are dropped. Then the bridge *settles*: what the line still delivers
+  to its end (the device's answers to bytes that had already reached it) is dropped, and the
+  new client is not read, until the line is idle both ways (or SETTLE_POLLS polls have
+  passed, for a device that never goes quiet). One client never receives bytes that belong
+  to another, and a new client starts on an empty line. A client that closes while nobody is
+  waiting still has the bytes it sent go down the line.
 """
 
 from __future__ import annotations
@@ -17,6 +27,7 @@ import contextlib
 import errno
 import select
 import socket
+import time
 from collections import deque
 from dataclasses import dataclass, field
 from typing import Any
@@ -28,7 +39,13 @@ from protocols.link.settings import LineSettings
 MAX_EVENTS = 100  # events kept on .events; older ones are dropped
 BUSY = b"camlab88: another client is connected to this line; try again later\r\n"
 SETTLE_POLLS = 1000  # at most this many polls between clients spent waiting for an idle line
-MAX_HELD = 1 << 20  # a new client's bytes held while settling; more and it is hung up on
+MAX_QUEUED = 4096  # bytes from outside waiting to go down the line (a tty driver's buffer)
+_RDHUP = getattr(select, "POLLRDHUP", 0)  # Linux: the peer shut its sending side
+IDLE_TIMEOUT = 60.0  # s of line time a silent client keeps the line from a newcomer (commands)
+PROBE_MS = 50  # how long a newcomer's arrival waits for a probed client's reset
+PROBE_EVERY = 1.0  # s between two probes of one client (a late reset is seen at the next poll)
+RCVBUF = 16384  # bytes of kernel receive buffer per client (Linux doubles it)
+BACKLOG = 128  # connections the kernel queues between two polls (a burst is not dropped)
 
 
 @dataclass(frozen=True)
@@ -57,7 +74,6 @@ class Bridge:
         self.closed = False
         self._new_events: list[BridgeEvent] = []
         self._settle = 0  # polls left to wait for the line to go idle between clients
-        self._held = bytearray()  # a new client's bytes while the line settles
 
     def attach(self, endpoint: Endpoint) -> None:
         self.endpoint = endpoint
@@ -85,34 +101,30 @@ class Bridge:
         if self.closed:
             raise ValueError(f"{type(self).__name__} is closed")
         result = PollResult()
-        data = self._read_outside(timeout)
-        if self._settle and self._settling():
-            self._held += data
-            self.dropped += len(out := self.endpoint.read())
-            result.dropped = len(out)
-            if len(self._held) > MAX_HELD:
-                self._held.clear()
-                self._hang_up("sent over 1 MiB while the line settled")
-            result.events, self._new_events = self._new_events, []
-            return result
-        if self._held:
-            data, self._held = bytes(self._held) + data, bytearray()
+        settling = bool(self._settle) and self._settling()
+        data = self._read_outside(timeout)  # at most self._room() bytes
         if data:
             self.endpoint.write(data)
             self.bytes_in += len(data)
             result.inbound = len(data)
         out = self.endpoint.read()
-        if out:
-            if self.connected:
-                self._write_outside(out)
-            if self.connected:
-                self.bytes_out += len(out)
-                result.outbound = len(out)
-            else:
-                self.dropped += len(out)
-                result.dropped = len(out)
+        if out and self.connected and not settling:
+            self._write_outside(out)
+        if out and self.connected and not settling:
+            self.bytes_out += len(out)
+            result.outbound = len(out)
+        elif out:
+            self.dropped += len(out)
+            result.dropped = len(out)
         result.events, self._new_events = self._new_events, []
         return result
+
+    def _room(self) -> int:
+        """How many bytes the bridge may take from outside now (none while settling)."""
+        assert self.endpoint is not None
+        if self._settle:
+            return 0
+        return max(0, MAX_QUEUED - self.endpoint.queued())
 
     def _settling(self) -> bool:
         """Still waiting for the line to go idle after a client left (counts one poll)."""
@@ -124,11 +136,10 @@ class Bridge:
         return self._settle > 0
 
     def _start_settling(self) -> None:
+        """A client left: the line hangs up (its bytes and the bytes for it are dropped)."""
+        assert self.endpoint is not None
+        self.dropped += self.endpoint.hang_up()
         self._settle = SETTLE_POLLS
-        self._held.clear()
-
-    def _hang_up(self, why: str) -> None:
-        """Subclasses that serve clients drop the current one."""
 
     def close(self) -> None:
         self.closed = True
@@ -156,7 +167,11 @@ class PtyBridge(Bridge):
         return not self.port.closed  # the pty exists whether or not a program has it open
 
     def _read_outside(self, timeout: float) -> bytes:
-        return self.port.read(timeout=timeout)
+        room = self._room()
+        if room == 0:  # the writer waits in the kernel's pty buffer (its write blocks)
+            self.port.flush()
+            return b""
+        return self.port.read(min(room, 4096), timeout=timeout)
 
     def _write_outside(self, data: bytes) -> None:
         self.port.write(data)
@@ -169,18 +184,26 @@ class PtyBridge(Bridge):
 class TcpBridge(Bridge):
     """A listening TCP port (127.0.0.1 by default); one client at a time, reconnects allowed.
 
-    ``port=0`` picks a free port; read the chosen one from ``.port``.
+    ``port=0`` picks a free port; read the chosen one from ``.port``. With ``idle_timeout``
+    (seconds of line time), a client that has sent nothing for that long gives way to a
+    newcomer instead of the newcomer being refused.
     """
 
     def __init__(
-        self, port: int, host: str = "127.0.0.1", *, endpoint: Endpoint | None = None
+        self, port: int, host: str = "127.0.0.1", *, endpoint: Endpoint | None = None,
+        idle_timeout: float | None = None,
     ) -> None:
         super().__init__(endpoint)
+        self.idle_timeout = idle_timeout
+        self._heard_at = 0.0  # line time the client last sent something
         self._server = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
         try:
             self._server.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+            # a small receive window (clients inherit it): what a client has sent and the line
+            # has not taken waits in the client's own buffers, not in ours
+            self._server.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, RCVBUF)
             self._server.bind((host, port))
-            self._server.listen(1)
+            self._server.listen(BACKLOG)
             self._server.setblocking(False)
         except OSError:
             self._server.close()
@@ -188,6 +211,8 @@ class TcpBridge(Bridge):
         self.host, self.port = self._server.getsockname()[:2]
         self._client: socket.socket | None = None
         self._pending = bytearray()
+        self._left = False  # a client left bytes on the line; hang it up for the next one
+        self._probed_at = -PROBE_EVERY
 
     @property
     def connected(self) -> bool:
@@ -199,12 +224,19 @@ class TcpBridge(Bridge):
                 sock, addr = self._server.accept()
             except (BlockingIOError, InterruptedError):
                 return
-            if self._client is not None and self._client_gone():
-                self._drop_client("closed by the client")
+            if self._client is not None and (self._client_gone() or self._client_orphaned()):
+                self._drop_client("closed by the client", hang_up=True)
+            elif self._client is not None and self._client_idle():
+                self._drop_client(f"silent for {self.idle_timeout:g} s of line time while "
+                                  "another client waited", hang_up=True)
             if self._client is None:
+                if self._left:  # what the last client left on the line is not for this one
+                    self._left = False
+                    self._start_settling()
                 sock.setblocking(False)
                 sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
-                self._client = sock
+                self._client, self._probed_at = sock, -PROBE_EVERY
+                self._heard_at = self._line_time()
                 self._event("connected", f"{addr[0]}:{addr[1]}")
             else:  # one client at a time: say so, then hang up
                 with contextlib.suppress(OSError):
@@ -213,50 +245,92 @@ class TcpBridge(Bridge):
                 sock.close()
                 self._event("refused", f"{addr[0]}:{addr[1]} (a client is already connected)")
 
-    def disconnect(self) -> None:
-        """Hang up on the current client (it may connect again)."""
-        self._drop_client("hung up by the bridge")
+    def disconnect(self, why: str = "hung up by the bridge") -> None:
+        """Hang up on the current client (it may connect again): the line hangs up too."""
+        self._drop_client(why, hang_up=True)
 
-    def _drop_client(self, why: str) -> None:
+    def _drop_client(self, why: str, hang_up: bool) -> None:
+        """Close the client's connection. ``hang_up``: the line hangs up now (the bridge
+        ended it, or a newcomer is waiting); otherwise bytes it sent that are already on the
+        line still go down it (``nc host port < plot`` draws the whole plot), and the line
+        hangs up when the next client connects."""
         if self._client is not None:
             with contextlib.suppress(OSError):
                 self._client.close()
             self._client = None
             self._pending.clear()
             self._event("disconnected", why)
-            if self.endpoint is not None:
+            self._left = self.endpoint is not None
+            if hang_up and self._left:
+                self._left = False
                 self._start_settling()
 
-    def _hang_up(self, why: str) -> None:
-        self._drop_client(why)
-
     def _read_outside(self, timeout: float) -> bytes:
-        watch = [self._server] + ([self._client] if self._client else [])
+        client, room = self._client, self._room()
+        watch = [self._server] + ([client] if client is not None and room else [])
         ready, _, _ = select.select(watch, [], [], max(0.0, timeout))
-        data = self._read_client(ready)
+        data = self._read_client(ready, room) if client is not None and room else b""
         if self._server in ready:  # after the client's own news: it may just have left
             self._accept_waiting()
-        return data
+        return data if self._client is client else b""  # a client gone: its bytes too
 
-    def _read_client(self, ready: list) -> bytes:
-        if self._client is None or (self._client not in ready and not self._client_ready()):
+    def _read_client(self, ready: list, room: int) -> bytes:
+        assert self._client is not None
+        if self._client not in ready and not self._client_ready():
             return b""
         try:
-            data = self._client.recv(65536)
+            data = self._client.recv(min(65536, room))
         except (BlockingIOError, InterruptedError):
             return b""
         except OSError as exc:
-            self._drop_client(f"{exc.strerror or exc}")
+            self._drop_client(f"{exc.strerror or exc}", hang_up=False)
             return b""
         if not data:
-            self._drop_client("closed by the client")
+            self._drop_client("closed by the client", hang_up=False)
+        self._heard_at = self._line_time()
         return data
 
-    def _client_gone(self) -> bool:
-        """Whether the current client has closed or reset (looked at without reading)."""
+    def _line_time(self) -> float:
+        return self.endpoint.line.clock.now if self.endpoint is not None else 0.0
+
+    def _client_idle(self) -> bool:
+        """Whether the client has been silent for ``idle_timeout`` (while a newcomer waits;
+        a client whose bytes wait for the line is not silent)."""
+        return (self.idle_timeout is not None and not self._client_ready()
+                and self._line_time() - self._heard_at >= self.idle_timeout)
+
+    def _client_orphaned(self) -> bool:
+        """Whether a client whose bytes wait for the line has in fact closed: its close sits
+        behind bytes its kernel has not yet sent us, so only a probe tells. One urgent
+        (out-of-band) byte: a closed socket answers any data with a reset; a live client
+        never sees it in its data (only a program that asked for out-of-band data inline
+        would). Asked only when a newcomer is waiting and the client's bytes are waiting."""
         assert self._client is not None
+        now = time.monotonic()
+        if not self._client_ready() or now - self._probed_at < PROBE_EVERY:
+            return False  # nothing of its waits (a close would have shown), or probed lately
+        self._probed_at = now  # a flood of newcomers cannot stall the line with probes
         try:
-            return self._client_ready() and self._client.recv(1, socket.MSG_PEEK) == b""
+            self._client.send(b"\0", socket.MSG_OOB)
+        except (BlockingIOError, InterruptedError):
+            return False
+        except OSError:
+            return True
+        return self._client_gone(wait_ms=PROBE_MS)
+
+    def _client_gone(self, wait_ms: int = 0) -> bool:
+        """Whether the current client has shut its sending side, closed or reset, looked
+        at without reading (POLLRDHUP sees it even with bytes of its still unread)."""
+        assert self._client is not None
+        watch = select.poll()
+        watch.register(self._client, _RDHUP | (0 if wait_ms else select.POLLIN))
+        events = watch.poll(wait_ms)
+        if not events:
+            return False
+        if events[0][1] & (select.POLLHUP | select.POLLERR | _RDHUP):
+            return True
+        try:
+            return self._client.recv(1, socket.MSG_PEEK) == b""
         except (BlockingIOError, InterruptedError):
             return False
         except OSError:
@@ -276,11 +350,11 @@ class TcpBridge(Bridge):
             except (BlockingIOError, InterruptedError):
                 break
             except OSError as exc:
-                self._drop_client(f"{exc.strerror or exc}")
+                self._drop_client(f"{exc.strerror or exc}", hang_up=False)
                 return
             del self._pending[:n]
         if len(self._pending) > 1 << 20:  # a client that never reads: bounded, then dropped
-            self._drop_client("client not reading (over 1 MiB pending)")
+            self._drop_client("client not reading (over 1 MiB pending)", hang_up=True)
 
     def close(self) -> None:
         if self.closed:

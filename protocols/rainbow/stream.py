@@ -146,6 +146,12 @@ class Decoder:
     def pending(self) -> int:
         return len(self._buf)
 
+    @property
+    def at(self) -> int:
+        """Stream offset of the first byte not yet part of a whole frame (the unfinished
+        frame's start): it moves whenever a frame is completed."""
+        return self._offset
+
 
 def split_reply(data: bytes) -> tuple[int, bytes, bytes]:
     """(status, payload, rest) from the front of ``data``; raises if it is incomplete."""

@@ -89,6 +89,24 @@ class Decoder:
         self._text_over = False
         self._dots_hold = -1  # a last dot A-F held back: with the next letter it may be an order
 
+    @property
+    def mid_order(self) -> bool:
+        """Whether part of an order has arrived and its rest has not: a graphics flag being
+        matched, an order's letters or fields, a bare coordinate pair, an ESC sequence, or a
+        graphics text (BA ... CR) not yet ended.  (AGS and dot modes between their points
+        are modes, not unfinished orders.)"""
+        if self.mode is Mode.TEXT:
+            return True
+        if self.mode is Mode.NGS and not self._idle():
+            return True
+        return bool(self._flag_k) or self._esc is not None
+
+    def drop_partial(self) -> None:
+        """Forget a half-received order (its sender has gone); modes and settings stay."""
+        if self.mode is Mode.TEXT:
+            self.mode = Mode.NGS
+        self._clear_partial()
+
     # ------------------------------------------------------------------ state
     def get_state(self) -> dict[str, object]:
         """Everything the decoder holds between feeds, as JSON-able values (see set_state)."""

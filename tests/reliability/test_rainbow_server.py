@@ -121,4 +121,4 @@ def test_a_half_frame_left_hanging_is_hung_up_on() -> None:
         s.sendall(encode("create_cluster", 5, 10, 10)[:7])
         assert s.recv(10) == b""  # the server hangs up by itself
     t.join(10)
-    assert any("half a frame" in d for d in stats[0].dropped)
+    assert any("a frame unfinished" in d for d in stats[0].dropped)

@@ -21,7 +21,21 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
     v.add_argument("--scale", type=int, default=1, help="window scale factor")
     v.add_argument("--strict", action="store_true",
                    help="the relic's video memory (64K 16-bit words)")
+    v.add_argument("--frame-timeout", type=_seconds, default=10.0, metavar="S",
+                   help="hang up on a program whose frame is unfinished S seconds after its "
+                   "first byte (default 10)")
+    v.add_argument("--idle-timeout", type=_seconds, default=60.0, metavar="S",
+                   help="a program silent for S seconds gives way to one waiting (default 60)")
     v.set_defaults(handler=serve)
+
+
+def _seconds(text: str) -> float:
+    import re
+
+    if not re.fullmatch(r"[0-9]{1,5}(\.[0-9]{1,6})?", text) or not 0 < float(text) <= 86400:
+        raise argparse.ArgumentTypeError(f"{text[:40]!r} is not a number of seconds in "
+                                         "(0, 86400]")
+    return float(text)
 
 
 def serve(args: argparse.Namespace) -> int:
@@ -40,7 +54,8 @@ def serve(args: argparse.Namespace) -> int:
         return fail(COMMAND, f"port {args.port}: {exc.strerror}", 1)
     print(f"{COMMAND}: listening on 127.0.0.1:{sock.getsockname()[1]}", flush=True)
     try:
-        serve_on(Executor(device, _on_frame(window, device)), sock, args.connections)
+        serve_on(Executor(device, _on_frame(window, device)), sock, args.connections,
+                 frame_timeout=args.frame_timeout, idle_timeout=args.idle_timeout)
     finally:
         sock.close()
         if window is not None:

@@ -34,10 +34,27 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
                    help="also play this stream down the line: raw bytes back to back from "
                    "the start, a recording at its recorded times")
     u.add_argument("--seconds", type=float, help="exit after this many seconds of line time")
+    u.add_argument("--order-timeout", type=_seconds, default=Fraction(10), metavar="S",
+                   help="hang up on a --listen client that leaves half an order unfinished "
+                   "this many seconds of line time (default 10)")
+    u.add_argument("--idle-timeout", type=_seconds, default=Fraction(60), metavar="S",
+                   help="a --listen client silent this many seconds of line time gives way "
+                   "to one that connects (default 60)")
     u.add_argument("--record-line", type=Path, metavar="FILE",
                    help="record the line (both directions) as a link recording")
     add_run_options(u, stop_after=False)
     u.set_defaults(handler=run)
+
+
+def _seconds(text: str) -> Fraction:
+    import re
+
+    if not re.fullmatch(r"[0-9]{1,5}(\.[0-9]{1,6})?", text):  # no exponent: 1e999999 hangs
+        raise argparse.ArgumentTypeError(f"{text[:40]!r} is not a number of seconds (N or N.M)")
+    value = Fraction(text)
+    if not 0 < value <= 86400:
+        raise argparse.ArgumentTypeError(f"{text} s is not in (0, 86400]")
+    return value
 
 
 def _die(message: str) -> SystemExit:
@@ -52,6 +69,8 @@ def run(args: argparse.Namespace) -> int:
     ends = args.seconds is not None or args.screenshot is not None
     opts = run_options(args, COMMAND, "serving the line without a window"
                        + ("" if ends else " until Ctrl-C"), argv=getattr(args, "_argv", None))
+    if replay.active() is None and opts.screenshot is None:
+        opts.realtime = True  # an outside program's line runs at its baud rate, idle asleep
     line, recorder = _line(args, settings)
     target = _target(args, line, got)
     # Ctrl-C, or SIGTERM (cli.main delivers it as Ctrl-C): the recording is still written
@@ -108,7 +127,7 @@ def _line(args: argparse.Namespace, settings):  # noqa: ANN001, ANN202
 
 
 def _target(args: argparse.Namespace, line, got):  # noqa: ANN001, ANN202
-    from emulator.harness.sigma import SigmaLineTarget
+    from emulator.harness.sigma_line import SigmaLineTarget
     from emulator.sigma import Terminal
     from protocols.link.replay import replay_into
 
@@ -121,7 +140,8 @@ def _target(args: argparse.Namespace, line, got):  # noqa: ANN001, ANN202
     if until is None and args.screenshot is not None:  # once the --in stream has arrived
         until = Fraction(line.host.drain_time()) + FRAME
     return SigmaLineTarget(Terminal(args.model), line, None,
-                           f"camlab88 Sigma {args.model.upper()}", until, _report)
+                           f"camlab88 Sigma {args.model.upper()}", until, _report,
+                           args.order_timeout)
 
 
 def _report(kind: str, detail: str) -> None:
@@ -134,7 +154,8 @@ def _open_bridge(args: argparse.Namespace, settings, endpoint):  # noqa: ANN001,
 
     if args.listen is not None:
         try:
-            bridge = tr.TcpBridge(args.listen, endpoint=endpoint)
+            bridge = tr.TcpBridge(args.listen, endpoint=endpoint,
+                                  idle_timeout=float(args.idle_timeout))
         except OSError as exc:
             raise _die(f"cannot listen on 127.0.0.1:{args.listen}: "
                        f"{exc.strerror or exc}") from None

@@ -1,0 +1,168 @@
+"""The harness target for a Sigma terminal on a paced serial line (``sigma run``): the line's
+outside end is a bridge (pty, TCP, pyserial URL) to any program; an optional stream is
+played down the line too.  One tick = 1/100 s of line time; 25 frames a second shown.
+
+What comes from outside is recorded at the tick it entered the line (``+`` bytes, ``-`` the
+line hanging up between clients), and a replay applies it at the same point of the same tick,
+where the bridge would have been polled, so a session fed by an outside program replays
+exactly.  A client that leaves half an order unfinished for ``order_timeout`` seconds of line
+time is hung up on; when the line hangs up, the half order goes with it (the next client
+starts on an order boundary; the screen, modes and registers stay, as on a terminal whose
+cable is swapped).
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Any
+
+import numpy as np
+
+from emulator.host_input import HostEvent
+from emulator.sigma.host_input import KEYS_HINT, to_terminal
+
+TICK = Fraction(1, 100)  # virtual seconds per tick
+ORDER_TIMEOUT = Fraction(10)  # s of line time a half-received order may wait for its rest
+
+
+class OutsideTap:
+    """The line's host endpoint as a bridge sees it, keeping what came from outside during
+    the current tick, in order: ``("+", bytes)`` that entered the line and ``("-", b"")``
+    when the line hung up between clients.  Only one tick's worth is ever kept (the target
+    forgets it at the next tick): what is not recorded is not kept."""
+
+    def __init__(self, endpoint: Any, on_hang_up: Any = None) -> None:
+        self._endpoint = endpoint
+        self._on_hang_up = on_hang_up
+        self.taken: list[tuple[str, bytes]] = []
+
+    def write(self, data: bytes) -> Any:
+        self.taken.append(("+", bytes(data)))
+        return self._endpoint.write(data)
+
+    def hang_up(self) -> int:
+        self.taken.append(("-", b""))
+        dropped = int(self._endpoint.hang_up())
+        if self._on_hang_up is not None:
+            self._on_hang_up()
+        return dropped
+
+    def take(self) -> list[tuple[str, bytes]]:
+        taken, self.taken = self.taken, []
+        return taken
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._endpoint, name)
+
+
+class SigmaLineTarget:
+    """``term`` (emulator.sigma.Terminal) on ``line`` (protocols.link.SerialLine), whose
+    host end ``bridge`` serves (None in a replay: the recorded outside traffic comes back
+    through ``put_wire`` / ``put_hang_up``).  Runs until ``until`` seconds of line time
+    (None: for ever)."""
+
+    fps = 25
+
+    def __init__(self, term: Any, line: Any, bridge: Any, title: str,
+                 until: Fraction | None = None, report: Any = None,
+                 order_timeout: Fraction = ORDER_TIMEOUT) -> None:
+        self.term, self.line, self.bridge = term, line, bridge
+        self.title, self.keys = title, KEYS_HINT
+        self.size = (768, 512)
+        self.until = until
+        self.report = report or (lambda kind, detail: None)
+        self.order_timeout = order_timeout
+        self._sent = bytearray()
+        self._received = b""
+        self._frame: np.ndarray | None = None  # the picture, until the terminal changes
+        self._replayed: list[tuple[str, bytes]] = []  # a replay's outside traffic, this tick
+        self._order_since: Fraction | None = None  # when the unfinished order began
+        self._commands = 0
+        self.tap = OutsideTap(line.host, self._line_hung_up)  # the bridge's endpoint
+        term.on_output = self._up
+
+    def _up(self, data: bytes) -> None:
+        self._sent += data
+        self.line.device.write(data)
+
+    def handle_events(self, events: list[HostEvent]) -> None:
+        # A new tick: an earlier tick's traffic nobody recorded is forgotten (memory bounded)
+        self.tap.take()
+        self._sent.clear()
+        if events:
+            self._frame = None
+        for ev in events:
+            to_terminal(ev, self.term)
+
+    def tick(self) -> bool:
+        self._outside()
+        self._received = self.line.device.read()
+        if self._received:
+            self._frame = None
+            self.term.feed(self._received)
+        self._watch_order()
+        self.line.clock.advance(TICK)
+        return self.until is None or self.line.clock.exact < self.until
+
+    def _outside(self) -> None:
+        """The outside end's turn: the bridge polled, or a replay's recorded traffic."""
+        for d, data in self._replayed:
+            if d == "+":
+                self.line.host.write(data)
+            else:
+                self.line.host.hang_up()
+                self._line_hung_up()
+        self._replayed = []
+        if self.bridge is None:
+            return
+        if self._order_overdue():
+            disconnect = getattr(self.bridge, "disconnect", None)  # a pty has no client
+            if disconnect is not None:
+                disconnect(f"half an order unfinished for {float(self.order_timeout):g} s "
+                           "of line time")
+        for ev in self.bridge.poll(timeout=0.0).events:
+            if ev.kind in ("error", "disconnected", "refused"):
+                self.report(ev.kind, ev.detail)
+
+    def _watch_order(self) -> None:
+        """Note when the order now unfinished at the terminal began (this tick, if an order
+        was completed or none was pending)."""
+        decoder = self.term.decoder
+        done, self._commands = self._commands != decoder.stats.commands, decoder.stats.commands
+        if not decoder.mid_order:
+            self._order_since = None
+        elif self._order_since is None or done:
+            self._order_since = self.line.clock.exact
+
+    def _order_overdue(self) -> bool:
+        since = self._order_since
+        return since is not None and self.line.clock.exact - since >= self.order_timeout
+
+    def _line_hung_up(self) -> None:
+        """A client's half order leaves with it: the next client starts on an order boundary."""
+        self.term.decoder.drop_partial()
+        self._order_since = None
+
+    def frame(self) -> np.ndarray:
+        """The terminal's picture; composed again only after bytes or input changed it (the
+        terminal changes no other way), so an idle line costs no drawing."""
+        if self._frame is None:
+            self._frame = self.term.frame()
+        return self._frame
+
+    def time(self) -> Fraction:
+        return self.line.clock.exact
+
+    def wire(self) -> list[tuple[str, bytes]]:
+        """This tick's traffic: what came from outside (``+`` bytes, ``-`` the line hanging
+        up, in order), then the bytes the terminal received and sent."""
+        sent, self._sent = bytes(self._sent), bytearray()
+        return [*self.tap.take(), (">", self._received), ("<", sent)]
+
+    def put_wire(self, data: bytes) -> None:
+        """A replay: recorded outside bytes, put on the line where the bridge would be polled."""
+        self._replayed.append(("+", data))
+
+    def put_hang_up(self) -> None:
+        """A replay: the line hung up here in the recorded run, so it hangs up again."""
+        self._replayed.append(("-", b""))
