@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-import select
 import time
 from collections.abc import Callable
 from dataclasses import replace
 
 import serial
 
+from protocols.link.serial_port import open_url, read_available
 from protocols.tablets import wacom4
 from protocols.tablets.base import TabletParser
 from protocols.tablets.events import DeviceReply, TabletEvent
@@ -73,10 +73,10 @@ class SerialSource(TabletSource):
         bytesize, parity, stopbits = self.line.wire
         baud = spec.baud or self.line.baud
         try:
-            self.port = serial.serial_for_url(
+            self.port = open_url(
                 spec.target, baudrate=baud, bytesize=bytesize, parity=_PARITY[parity],
                 stopbits=stopbits, xonxoff=self.line.xonxoff, rtscts=self.line.rtscts,
-                timeout=0, write_timeout=WRITE_TIMEOUT, do_not_open=False,
+                write_timeout=WRITE_TIMEOUT,
             )
         except (serial.SerialException, OSError, ValueError) as exc:
             raise SourceLost(f"{spec.text}: cannot open {spec.target}: {_why(exc)}") from exc
@@ -125,8 +125,7 @@ class SerialSource(TabletSource):
         deadline = time.monotonic() + FLUSH_LIMIT
         try:
             while time.monotonic() < deadline:
-                self._wait_readable(FLUSH_QUIET)
-                if not self.port.read(self.port.in_waiting or 1):
+                if not read_available(self.port, FLUSH_QUIET, self._sleep):
                     break
         except (serial.SerialException, OSError, TypeError) as exc:
             raise SourceLost(f"{self.name}: {exc}") from exc
@@ -210,27 +209,12 @@ class SerialSource(TabletSource):
     def write(self, data: bytes) -> None:
         self._write(data)
 
-    def _wait_readable(self, timeout: float) -> None:
-        try:
-            fd = self.port.fileno()
-        except (AttributeError, OSError, ValueError, serial.SerialException):
-            fd = None
-        if fd is not None:
-            select.select([fd], [], [], timeout)
-            return
-        deadline = time.monotonic() + timeout  # URL handlers without a file descriptor
-        while time.monotonic() < deadline and not self.port.in_waiting:
-            self._sleep(0.002)
-
     def read(self, timeout: float = 0.0) -> list[TabletEvent]:
         """Events decoded from whatever arrived, waiting up to ``timeout`` s for the first byte.
 
         The port stays non-blocking (changing pyserial's timeout reconfigures the tty)."""
         try:
-            data = self.port.read(self.port.in_waiting or 1)
-            if not data and timeout > 0:
-                self._wait_readable(timeout)
-                data = self.port.read(self.port.in_waiting or 1)
+            data = read_available(self.port, timeout, self._sleep)
         except (serial.SerialException, OSError, TypeError) as exc:
             raise SourceLost(f"{self.name}: {exc}") from exc
         now = self.clock()
