@@ -1,4 +1,6 @@
-"""USB HID tablets through hidapi (``import hid`` from the ``hidapi`` package)."""
+"""USB HID tablets through hidapi (``protocols.tablets.hid_backend`` picks its module:
+hidraw on Linux, libusb only as a fallback); reports come through a blocking-read pump
+(``protocols.tablets.hid_pump``)."""
 
 from __future__ import annotations
 
@@ -7,15 +9,21 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from protocols.tablets.events import TabletEvent
+from protocols.tablets.hid_backend import (
+    NoBackend,
+    absent_message,
+    cannot_open_message,
+    hid_backend,
+)
 from protocols.tablets.hid_decode import PenDecoder
 from protocols.tablets.hid_descriptor import parse_descriptor
 from protocols.tablets.hid_profiles import profile_for
+from protocols.tablets.hid_pump import ReportPump
 from protocols.tablets.sources import SourceLost, SourceSpec, TabletSource
 
 DIGITIZER_PAGE = 0x0D
 WACOM_PAGE = 0xFF0D  # newer Wacoms mirror the digitizer usages on this vendor page
 WACOM_VID = 0x056A
-READ_SIZE = 256
 
 
 @dataclass(frozen=True)
@@ -39,15 +47,23 @@ class HidDeviceInfo:
                 f"interface {self.interface}  {self.path.decode(errors='replace')}")
 
 
+def backend_name() -> str:
+    """What ``tablet list`` prints: the backend in use, or why there is none."""
+    try:
+        return hid_backend().describe()
+    except NoBackend as exc:
+        return f"none ({exc})"
+
+
 def list_digitizers() -> tuple[list[HidDeviceInfo], str | None]:
     """HID digitizer interfaces: usage page 0x0D or Wacom's 0xFF0D, and any Wacom device.
 
     Never raises: no hidapi, no hidraw access or no devices give an empty list and a note.
     """
     try:
-        import hid
-    except ImportError as exc:
-        return [], f"hidapi is not installed ({exc}); pip install hidapi==0.15.0"
+        hid = hid_backend().module
+    except NoBackend as exc:
+        return [], str(exc)
     try:
         found = hid.enumerate()
     except Exception as exc:  # hidapi raises plain OSError/IOError variants per platform
@@ -79,9 +95,10 @@ class HidSource(TabletSource):
 
     def __init__(self, spec: SourceSpec, on_raw: Callable[[bytes], None] | None = None) -> None:
         try:
-            import hid
-        except ImportError as exc:
-            raise SourceLost(f"{spec.text}: hidapi is not installed: {exc}") from exc
+            self.backend = hid_backend()
+        except NoBackend as exc:
+            raise SourceLost(f"{spec.text}: {exc}") from exc
+        hid = self.backend.module
         self.name = spec.text
         self.on_raw = on_raw
         self._t0 = time.monotonic()
@@ -89,10 +106,7 @@ class HidSource(TabletSource):
         self.profile = profile_for(vid, pid)
         self._profile_decode = self.profile.make_decoder() if self.profile else None
         self.pen: PenDecoder | None = None
-        try:
-            rows = [d for d in hid.enumerate(vid, pid) if d.get("path")]
-        except Exception as exc:  # hidapi raises plain OSError/IOError variants per platform
-            raise SourceLost(f"{spec.text}: cannot enumerate HID devices: {exc}") from exc
+        rows = self._enumerate(hid, spec, vid, pid)
         if self.profile is not None:  # the vendor profile knows the layout: one interface
             pen_pages = (DIGITIZER_PAGE, WACOM_PAGE)
             paths = [d["path"] for d in rows if int(d.get("usage_page", 0)) in pen_pages]
@@ -104,6 +118,19 @@ class HidSource(TabletSource):
             self.model = self.profile.model
         else:
             self._open_pen_interface(hid, spec, rows, vid, pid)
+        self.pump = ReportPump(self.device, spec.text)
+
+    @staticmethod
+    def _enumerate(hid, spec: SourceSpec, vid: int, pid: int) -> list[dict]:  # noqa: ANN001
+        """The device's interfaces; absent: 'no device VID:PID (found: ...)'."""
+        try:
+            rows = [d for d in hid.enumerate(vid, pid) if d.get("path")]
+            if rows:
+                return rows
+            everything = list(hid.enumerate())
+        except Exception as exc:  # hidapi raises plain OSError/IOError variants per platform
+            raise SourceLost(f"{spec.text}: cannot enumerate HID devices: {exc}") from exc
+        raise SourceLost(f"{spec.text}: {absent_message(vid, pid, everything)}")
 
     @staticmethod
     def _ranked(rows: list[dict]) -> list[bytes]:
@@ -124,13 +151,10 @@ class HidSource(TabletSource):
                 device.open_path(paths[0])
             else:
                 device.open(vid, pid)
-            # hidapi's read(n, 0) blocks until a report comes: a still pen would freeze the
-            # caller, so reads are non-blocking and waits use an explicit timeout.
-            device.set_nonblocking(1)
         except (OSError, ValueError) as exc:
-            raise SourceLost(f"{spec.text}: cannot open (check permissions, see docs/tablets.md):"
-                             f" {exc}") from exc
-        return device
+            path = paths[0].decode(errors="replace") if paths else ""
+            raise SourceLost(f"{spec.text}: {cannot_open_message(path, vid, pid, exc)}") from exc
+        return device  # blocking: reads run on the pump's thread
 
     def _open_pen_interface(self, hid, spec: SourceSpec, rows: list[dict], vid: int,
                             pid: int) -> None:
@@ -162,16 +186,17 @@ class HidSource(TabletSource):
         raise SourceLost(f"{spec.text}: no interface with a pen report: " + "; ".join(problems))
 
     def read(self, timeout: float = 0.0) -> list[TabletEvent]:
-        try:
-            if timeout <= 0:  # non-blocking (set at open): whatever is queued, or nothing
-                data = self.device.read(READ_SIZE)
-            else:
-                data = self.device.read(READ_SIZE, max(1, round(timeout * 1000)))
-        except (OSError, ValueError) as exc:
-            raise SourceLost(f"{self.name}: {exc}") from exc
-        if not data:
-            return []
-        report = bytes(data)
+        """Events from the reports that have come, waiting up to ``timeout`` s for one."""
+        reports = self.pump.take(timeout)
+        if not reports and self.pump.error is not None:
+            raise SourceLost(f"{self.name}: {self.pump.error} (unplugged?)")
+        events: list[TabletEvent] = []
+        for report in reports:
+            events += self.decode(report)
+        return events
+
+    def decode(self, report: bytes) -> list[TabletEvent]:
+        """One report as the tablet sent it (also what a replay feeds back)."""
         if self.on_raw is not None:
             self.on_raw(report)
         now = time.monotonic() - self._t0
@@ -189,7 +214,4 @@ class HidSource(TabletSource):
         return [] if event is None else [event]
 
     def close(self) -> None:
-        try:
-            self.device.close()
-        except (OSError, ValueError):
-            pass
+        self.pump.close()
