@@ -80,7 +80,7 @@ class SessionRecorder(Plugin):
         if wire is None:
             return
         for d, data in wire():
-            if d == "+" and data:  # outside input: at its tick, for the replay to feed back
+            if d in "+T" and data:  # outside input / tablet tape: at its tick, for the replay
                 self.rec.wire.append((harness.ticks, d, data))
             elif data:
                 self._pending.setdefault(d, bytearray()).extend(data)

@@ -17,10 +17,12 @@ an exact fraction; ``tick`` counts harness ticks. ``event`` is a host input even
 (emulator.host_input) as the window delivered it; ``wire`` records every byte the program
 and device exchanged (``>`` host to device, ``<`` device to host: the traffic since the
 previous record of that direction, up to its tick; ``+`` bytes that came from outside during
-that tick, which a replay feeds back in). A ``hash`` is the SHA-256 of the shown frame's
-size and RGB bytes, every ``hash_every`` frames; ``end`` is always last, so a recording
-without it is truncated. A reader refuses other formats and newer versions with the file,
-line and column.
+that tick, which a replay feeds back in; ``T`` a tablet tape's entries noted during that tick
+-- protocols.tablets.tape: what a ``--tablet`` sent, at which poll, and its decoder's setup
+-- from which a replay decodes the same reports without opening the tablet). A ``hash``
+is the SHA-256 of the shown frame's size and RGB bytes, every ``hash_every`` frames;
+``end`` is always last, so a recording without it is truncated. A reader refuses other
+formats and newer versions with the file, line and column.
 """
 
 from __future__ import annotations

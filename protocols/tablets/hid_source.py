@@ -90,6 +90,46 @@ def list_digitizers() -> tuple[list[HidDeviceInfo], str | None]:
     return out, None
 
 
+class HidReportDecoder:
+    """Pen reports -> events: a vendor profile's fixed layout, else the report descriptor's
+    (a tablet with two pen reports, Huion's 7 and 9, switches ``model`` with the report)."""
+
+    def __init__(self, vid: int, pid: int, descriptor: bytes | None, where: str) -> None:
+        self.profile = profile_for(vid, pid)
+        self._profile_decode = self.profile.make_decoder() if self.profile else None
+        self.pen: PenDecoder | None = None
+        if self.profile is not None:
+            self.model = self.profile.model
+        else:
+            if descriptor is None:
+                raise ValueError(f"{where}: no report descriptor and no vendor profile")
+            self.pen = PenDecoder(parse_descriptor(descriptor, where))
+            if not self.pen.pen_reports:
+                raise ValueError(f"{where}: no pen report")
+            self.model = next(iter(self.pen.pen_reports.values()))
+
+    def decode(self, report: bytes, now: float) -> TabletEvent | None:
+        if self._profile_decode is not None:
+            return self._profile_decode(report, now)
+        assert self.pen is not None
+        try:
+            event = self.pen.decode(report, now)
+        except ValueError:
+            return None  # a report the descriptor does not describe: skip it
+        if event is not None:
+            report_id, _ = self.pen.decoder.split(report)
+            self.model = self.pen.pen_reports[report_id]
+        return event
+
+    # the replay's interface (protocols.tablets.tape): one recorded report at a time
+    def feed(self, report: bytes) -> list[TabletEvent]:
+        event = self.decode(report, 0.0)
+        return [] if event is None else [event]
+
+    def flush(self) -> list[TabletEvent]:
+        return []
+
+
 class HidSource(TabletSource):
     """Reads pen reports; the descriptor decides the layout unless a vendor profile does."""
 
@@ -102,10 +142,9 @@ class HidSource(TabletSource):
         self.name = spec.text
         self.on_raw = on_raw
         self._t0 = time.monotonic()
-        vid, pid = spec.vid_pid
+        vid, pid = self.vid_pid = spec.vid_pid
         self.profile = profile_for(vid, pid)
-        self._profile_decode = self.profile.make_decoder() if self.profile else None
-        self.pen: PenDecoder | None = None
+        self.descriptor: bytes | None = None  # the pen interface's (None: a vendor profile)
         rows = self._enumerate(hid, spec, vid, pid)
         if self.profile is not None:  # the vendor profile knows the layout: one interface
             pen_pages = (DIGITIZER_PAGE, WACOM_PAGE)
@@ -115,10 +154,14 @@ class HidSource(TabletSource):
                 self.device.send_feature_report(list(self.profile.init_feature_report))
             except (OSError, ValueError):
                 pass
-            self.model = self.profile.model
         else:
             self._open_pen_interface(hid, spec, rows, vid, pid)
+        self.decoder = HidReportDecoder(vid, pid, self.descriptor, spec.text)
         self.pump = ReportPump(self.device, spec.text)
+
+    @property
+    def model(self):  # noqa: ANN201 - TabletModel
+        return self.decoder.model
 
     @staticmethod
     def _enumerate(hid, spec: SourceSpec, vid: int, pid: int) -> list[dict]:  # noqa: ANN001
@@ -170,8 +213,8 @@ class HidSource(TabletSource):
                 problems.append(str(exc))
                 continue
             try:
-                descriptor = parse_descriptor(bytes(device.get_report_descriptor()), where)
-                pen = PenDecoder(descriptor)
+                raw = bytes(device.get_report_descriptor())
+                pen = PenDecoder(parse_descriptor(raw, where))
             except (OSError, ValueError, AttributeError) as exc:
                 problems.append(f"{where}: cannot read the report descriptor: {exc}")
                 device.close()
@@ -180,8 +223,7 @@ class HidSource(TabletSource):
                 problems.append(f"{where}: no pen report")
                 device.close()
                 continue
-            self.device, self.pen = device, pen
-            self.model = next(iter(pen.pen_reports.values()))
+            self.device, self.descriptor = device, raw
             return
         raise SourceLost(f"{spec.text}: no interface with a pen report: " + "; ".join(problems))
 
@@ -199,18 +241,7 @@ class HidSource(TabletSource):
         """One report as the tablet sent it (also what a replay feeds back)."""
         if self.on_raw is not None:
             self.on_raw(report)
-        now = time.monotonic() - self._t0
-        if self._profile_decode is not None:
-            event = self._profile_decode(report, now)
-        else:
-            assert self.pen is not None
-            try:
-                event = self.pen.decode(report, now)
-            except ValueError:
-                return []  # a report the descriptor does not describe: skip it
-            if event is not None:  # tablets with two pen reports (Huion: 7 and 9) differ
-                report_id, _ = self.pen.decoder.split(report)
-                self.model = self.pen.pen_reports[report_id]
+        event = self.decoder.decode(report, time.monotonic() - self._t0)
         return [] if event is None else [event]
 
     def close(self) -> None:

@@ -57,6 +57,30 @@ def _why(exc: BaseException) -> str:
     return str(exc)
 
 
+def configure_wacom(parser: TabletParser, replies: list[DeviceReply]) -> bytes:
+    """Adopt a Wacom IV's ``~#``/``~R``/``~C`` answers (model, tilt, size); returns the
+    model's setup string to send.  Also what a replay applies to the recorded replies."""
+    assert isinstance(parser, wacom4.Wacom4Parser)
+    identity = None
+    for reply in replies:
+        try:
+            if reply.text.startswith("~#"):
+                identity = wacom4.parse_model_reply(reply.text)
+                parser.identify(identity)
+            elif reply.text.startswith("~R"):
+                settings = wacom4.parse_settings_reply(reply.text)
+                parser.set_tilt(settings.packet_length == 9)
+                if identity is None or identity.lines_per_inch is None:
+                    parser.model = replace(parser.model, lines_per_inch=settings.res_x)
+            elif reply.text.startswith("~C"):
+                mx, my = wacom4.parse_coords_reply(reply.text)
+                parser.model = replace(parser.model, max_x=mx, max_y=my)
+        except ValueError:
+            continue  # a garbled reply: keep the defaults
+    fallback = wacom4.WacomIdentity("UD", (1, 4), "")
+    return (identity or fallback).setup_string
+
+
 class SerialSource(TabletSource):
     def __init__(self, spec: SourceSpec, on_raw: Callable[[bytes], None] | None = None,
                  sleep: Callable[[float], None] = time.sleep,
@@ -66,6 +90,7 @@ class SerialSource(TabletSource):
         self.line: LineSetup = protocol_spec.line
         self.name = spec.text or spec.target
         self.on_raw = on_raw
+        self.on_flush: Callable[[], None] | None = None  # a silence ended a partial reply
         self._sleep = sleep
         self.clock = clock  # times events and silences (injectable: tests stay deterministic)
         self.stall_release, self.stall_fallback = STALL_RELEASE, STALL_FALLBACK
@@ -173,27 +198,7 @@ class SerialSource(TabletSource):
         self.size_notes.append(f"{self.name}: {note}; keeping 0..{m.max_x} x 0..{m.max_y}")
 
     def _configure_wacom(self) -> None:
-        parser = self.parser
-        assert isinstance(parser, wacom4.Wacom4Parser)
-        identity = None
-        for reply in self.replies:
-            try:
-                if reply.text.startswith("~#"):
-                    identity = wacom4.parse_model_reply(reply.text)
-                    parser.identify(identity)
-                elif reply.text.startswith("~R"):
-                    settings = wacom4.parse_settings_reply(reply.text)
-                    parser.set_tilt(settings.packet_length == 9)
-                    if identity is None or identity.lines_per_inch is None:
-                        parser.model = replace(parser.model, lines_per_inch=settings.res_x)
-                elif reply.text.startswith("~C"):
-                    mx, my = wacom4.parse_coords_reply(reply.text)
-                    parser.model = replace(parser.model, max_x=mx, max_y=my)
-            except ValueError:
-                continue  # a garbled reply: keep the defaults
-        setup = identity.setup_string if identity else wacom4.WacomIdentity("UD", (1, 4),
-                                                                          "").setup_string
-        self._write(setup)
+        self._write(configure_wacom(self.parser, self.replies))
 
     # -- I/O -------------------------------------------------------------------------------
     def _write(self, data: bytes) -> None:
@@ -226,7 +231,10 @@ class SerialSource(TabletSource):
             events = self.parser.feed(data, now - self._t0)
         elif now - self.last_data > REPLY_TIMEOUT:
             events = self.parser.flush(now - self._t0)
-        self.replies.extend(self.parser.take_replies())
+        replies = self.parser.take_replies()
+        if not data and (events or replies) and self.on_flush is not None:
+            self.on_flush()  # the silence decided something: a replay must flush here too
+        self.replies.extend(replies)
         return events
 
     def close(self) -> None:
