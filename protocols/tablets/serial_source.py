@@ -110,6 +110,7 @@ class SerialSource(TabletSource):
         self.model = self.parser.model
         self.replies: list[DeviceReply] = []
         self._t0 = self.last_data = clock()  # event times count from opening
+        self.heard = 0  # bytes received since opening (start-up replies and reports)
         if spec.init and self.line.init:
             try:
                 self.initialise()
@@ -119,7 +120,11 @@ class SerialSource(TabletSource):
 
     # -- start-up -----------------------------------------------------------------------
     def initialise(self) -> None:
-        """Send the protocol's reset/identify sequence and adopt what the tablet says."""
+        """Send the protocol's reset/identify sequence and adopt what the tablet says.
+
+        Raises SourceLost, naming what to check, if the protocol has queries and not one
+        byte came back: nothing is printed as found when nothing answered."""
+        started = time.monotonic()
         for step in self.line.init:
             if step.baud and step.baud != self.port.baudrate:
                 try:
@@ -135,9 +140,21 @@ class SerialSource(TabletSource):
                 self._sleep(step.wait)
             if step.flush:
                 self._flush_input()
+        queries = [s.data for s in self.line.init if s.expect_reply]
+        if queries and not self.heard:
+            raise SourceLost(self._no_answer(queries, time.monotonic() - started))
         if isinstance(self.parser, wacom4.Wacom4Parser):
             self._configure_wacom()
         self.model = self.parser.model
+
+    def _no_answer(self, queries: list[bytes], waited: float) -> str:
+        asked = ", ".join(repr(q.strip(b"\r").decode("ascii", "replace")) for q in queries)
+        baud = self.spec.baud or self.line.baud
+        return (f"{self.name}: no answer from a tablet in {waited:.1f} s to the "
+                f"{self.spec.protocol} start-up queries ({asked}); check the cable (plugged "
+                "in, the tablet switched on; a USB-serial adapter's port is /dev/ttyUSB0), "
+                f"the protocol (?protocol={self.spec.protocol}: is it that kind of tablet?) "
+                f"and the line speed ({baud} baud, {self.line.describe()}; ?baud=N)")
 
     def _flush_input(self) -> None:
         """Drop the reports already on their way (sent before prompt/stop mode took hold):
@@ -150,8 +167,10 @@ class SerialSource(TabletSource):
         deadline = time.monotonic() + FLUSH_LIMIT
         try:
             while time.monotonic() < deadline:
-                if not read_available(self.port, FLUSH_QUIET, self._sleep):
+                dropped = read_available(self.port, FLUSH_QUIET, self._sleep)
+                if not dropped:
                     break
+                self.heard += len(dropped)
         except (serial.SerialException, OSError, TypeError) as exc:
             raise SourceLost(f"{self.name}: {exc}") from exc
         self.parser = make_parser(self.spec.protocol or "", self.spec.options,
@@ -225,6 +244,7 @@ class SerialSource(TabletSource):
         now = self.clock()
         events: list[TabletEvent] = []
         if data:
+            self.heard += len(data)
             self.last_data = now
             if self.on_raw is not None:
                 self.on_raw(data)
