@@ -79,3 +79,28 @@ def test_kas_edit_draws_with_a_hidraw_tablet_and_replays_without_it(tmp_path: Pa
                          {"CAMLAB88_CONFIG_DIR": str(tmp_path / "empty")})
     assert replayed.returncode == 0, replayed.stdout + replayed.stderr
     assert _chains(replayed.stdout + replayed.stderr) == (chains, points)
+
+
+@pytest.mark.skipif(skip_reason() is not None, reason=skip_reason() or "")
+def test_a_program_keeps_running_through_an_unplug_and_its_replay_agrees(
+        tmp_path: Path) -> None:
+    """umockdev removes the tablet mid-session and adds it again: kas edit carries on, says
+    so both times, takes the tablet back; the recording (loss and return on the tape)
+    replays with --check."""
+    reports = [r for r in load_dump(DIGIMEND / "Gaomon_M106K/dumps/pen_cords.txt")
+               if r[0] == 0x0A]
+    scenario = dict(gaomon_m106k(reports[:40]), first_after=0.3, unplug_after=40,
+                    replug_after=0.5, reports_after_replug=[r.hex() for r in reports[40:]])
+    (tmp_path / "s.txt").write_text("5.5 key f2\n6.5 wait\n")
+    env = {"CAMLAB88_CONFIG_DIR": str(tmp_path / "config")}
+    done = run_in_bed(tmp_path, scenario, [
+        "kas", "edit", "u.kas", "--tablet", "hid:256c:006d", "--headless", "--script",
+        "s.txt", "--record", "u.rec"], env=env)
+    assert done.returncode == 0, done.stderr
+    assert "hid:256c:006d: lost (" in done.stdout and "using the mouse" in done.stdout
+    assert "hid:256c:006d: back; using the tablet again" in done.stdout
+    rec = read(tmp_path / "u.rec")
+    kinds = [entry[1] for _t, d, data in rec.wire if d == "T" for entry in json.loads(data)]
+    assert kinds.count("open") == 2 and kinds.count("lost") == 1
+    replayed = _camlab88(["replay", "u.rec", "--check"], tmp_path, env)
+    assert replayed.returncode == 0, replayed.stdout + replayed.stderr
