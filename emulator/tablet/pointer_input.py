@@ -35,7 +35,9 @@ class TabletInput:
             return
         spec = parse_source(source)
         self._emulated = spec.kind == "emulated"
-        recorded = _recorded_tape()
+        from emulator.tablet.taped import recorded_tape
+
+        recorded = recorded_tape()
         if recorded is not None:
             self.tape, self._replaying = recorded, True
             self.layer = _replay_layer(recorded, area, notify)
@@ -116,18 +118,6 @@ class TabletInput:
         self.layer.close()
         if self._emu is not None:
             self._emu.close()
-
-
-def _recorded_tape():  # noqa: ANN202
-    """In a replay: the session's tablet tape (the device is not opened); else None."""
-    from emulator.harness import replay
-    from protocols.tablets.tape import Tape
-
-    active = replay.active()
-    if active is None:
-        return None
-    return Tape.from_chunks([data for _t, d, data in active.rec.wire if d == "T"],
-                            "the recording's tablet tape")
 
 
 def _replay_layer(tape, area, notify):  # noqa: ANN001, ANN202

@@ -104,3 +104,19 @@ def test_a_program_keeps_running_through_an_unplug_and_its_replay_agrees(
     assert kinds.count("open") == 2 and kinds.count("lost") == 1
     replayed = _camlab88(["replay", "u.rec", "--check"], tmp_path, env)
     assert replayed.returncode == 0, replayed.stdout + replayed.stderr
+
+
+@pytest.mark.skipif(skip_reason() is not None, reason=skip_reason() or "")
+def test_rainbow_run_with_a_hidraw_tablet_records_and_replays_without_it(
+        tmp_path: Path) -> None:
+    reports = [r for r in load_dump(DIGIMEND / "Gaomon_M106K/dumps/pen_cords.txt")
+               if r[0] == 0x0A]
+    done = run_in_bed(tmp_path, dict(gaomon_m106k(reports), first_after=0.3), [
+        "rainbow", "run", "--tablet", "hid:256c:006d", "--headless", "--stop-after", "60",
+        "--record", "rb.rec"], timeout=120)
+    assert done.returncode == 0, done.stderr
+    rec = read(tmp_path / "rb.rec")
+    kinds = [entry[1] for _t, d, data in rec.wire if d == "T" for entry in json.loads(data)]
+    assert kinds[0] == "open" and kinds.count("raw") > 10
+    replayed = _camlab88(["replay", "rb.rec", "--check"], tmp_path)
+    assert replayed.returncode == 0, replayed.stdout + replayed.stderr
