@@ -112,3 +112,17 @@ def test_monitor_keeps_running_when_the_serial_line_closes_and_comes_back(
     assert "lost" in err and "waiting for it to come back" in err and "back" in err
     xs = [int(line.split("x=")[1].split()[0]) for line in out.splitlines() if " x=" in line]
     assert xs[:3] == [500, 501, 502]
+
+
+def test_monitor_of_a_tablet_without_a_query_says_what_to_check_when_nothing_comes() -> None:
+    """A Bit Pad One has no start-up query: an empty port cannot be told from a pen held
+    away from the tablet, so the monitor keeps listening but says, once, what to check."""
+    silent = PtyPort()
+    try:
+        source = f"serial:{silent.slave_path}?protocol=bitpad1"
+        done, _took = _camlab88(["tablet", "monitor", source, "--seconds", "5.5"])
+    finally:
+        silent.close()
+    assert done.returncode == 0
+    assert f"{source}: no report in 5 s; nothing at all came" in done.stderr
+    assert "check the cable" in done.stderr and done.stderr.count("no report in") == 1

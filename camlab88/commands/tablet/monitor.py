@@ -10,6 +10,7 @@ from camlab88.commands.tablet import SOURCE_HELP
 from camlab88.runopts import positive
 
 COMMAND = "camlab88 tablet monitor"
+SILENT_HINT = 5.0  # s without a single report before the monitor says what to check
 
 
 def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
@@ -59,6 +60,21 @@ class _Held:
     def __init__(self, source, spec, on_raw) -> None:  # noqa: ANN001
         self.source, self.spec, self.on_raw = source, spec, on_raw
         self._next_try = 0.0
+        self._opened_at = time.monotonic()
+        self._hinted = False
+
+    def hint_if_silent(self, count: int) -> None:
+        """Said once: nothing at all for SILENT_HINT s (a tablet without a start-up query
+        cannot be told from an empty port any sooner)."""
+        if count or self._hinted or time.monotonic() - self._opened_at < SILENT_HINT:
+            return
+        self._hinted = True
+        heard = getattr(self.source, "heard", 0)
+        what = ("bytes came but no report decoded: check the protocol and the baud" if heard
+                else "nothing at all came: put the pen on the tablet; if still nothing, check "
+                "the cable, that the tablet is switched on, the port, the protocol and the baud")
+        print(f"camlab88 tablet: {self.spec.text}: no report in {SILENT_HINT:g} s; {what} "
+              "(still listening)", file=sys.stderr, flush=True)
 
     def read(self, timeout: float) -> list:
         from protocols.tablets.sources import SourceLost, open_source
@@ -128,6 +144,7 @@ def _loop(held: _Held, emu, args: argparse.Namespace) -> int:  # noqa: ANN001
         for e in events[: None if args.count is None else args.count - count]:
             print(e.describe(), flush=True)
             count += 1
+        held.hint_if_silent(count)
         if emu is not None:
             emu.show(events)
             if args.screenshot and emu.frames >= 30 and emu.window is not None:
