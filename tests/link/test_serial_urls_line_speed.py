@@ -157,3 +157,25 @@ def test_spy_url_on_a_pty_reads_whole_chunks(capsys: pytest.CaptureFixture[str])
     finally:
         port.close()
         pty.close()
+
+
+def test_a_serial_tablet_over_socket_url_reads_whole_bursts() -> None:
+    """The tablet path shares the rule: a burst of Bit Pad One reports over socket:// is
+    decoded in a few reads, not one byte a read."""
+    from protocols.tablets.events import TabletEvent
+    from protocols.tablets.registry import make_encoder
+    from protocols.tablets.sources import open_source
+
+    encode = make_encoder("bitpad1").encode
+    burst = b"".join(encode(TabletEvent(100 + k, 200, True, 1)) for k in range(200))
+    with StreamServer(burst) as server:
+        source = open_source(f"socket://127.0.0.1:{server.port}?protocol=bitpad1")
+        try:
+            events = []
+            for _ in range(10):
+                events += source.read(0.5)
+                if len(events) >= 200:
+                    break
+        finally:
+            source.close()
+    assert [e.x for e in events] == [100 + k for k in range(200)]
