@@ -79,6 +79,7 @@ class RunOptions:
     headless: bool = True
     paced: bool = True                  # wall clock follows virtual time (window only)
     realtime: bool = False              # ... headless too (replay --period)
+    live: bool = False                  # outside bytes come on the wall clock: always paced
     scale: int = 1
     screenshot: Path | None = None      # save the last screen here at the end
     frames: Path | None = None          # DIR: every frame shown as DIR/frame_NNNNN.png
@@ -132,6 +133,8 @@ class Harness:
 
     def _paced(self) -> bool:
         o = self.options
+        if o.live:  # a live link: line time must follow the wall clock the bytes arrive on
+            return True
         return o.screenshot is None and ((self.window is not None and o.paced) or o.realtime)
 
     def _open_window(self) -> None:

@@ -67,4 +67,8 @@ class RainbowTarget:
             return []
         new = rec.entries[self._wire_at:]
         self._wire_at = len(rec.entries)
-        return [(d, data) for d, data in new if d in "><"]
+        out = [(d, data) for d, data in new if d in "><"]
+        take_tape = getattr(self.tablet, "take_tape", None)  # a --tablet on tape (recording)
+        if take_tape is not None:
+            out.append(("T", take_tape()))
+        return out

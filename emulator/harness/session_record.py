@@ -80,8 +80,9 @@ class SessionRecorder(Plugin):
         if wire is None:
             return
         for d, data in wire():
-            if (d == "+" and data) or d == "-":  # outside input, a client leaving: at its
-                self.rec.wire.append((harness.ticks, d, data))  # tick, for a replay
+            # outside input, a client leaving, a tablet tape: at its tick, for the replay
+            if (d in "+T" and data) or d == "-":
+                self.rec.wire.append((harness.ticks, d, data))
             elif data:
                 self._pending.setdefault(d, bytearray()).extend(data)
 

@@ -82,10 +82,15 @@ class SigmaProgramTarget:
         return bool(self.session.front.may_close())
 
     def wire(self) -> list[tuple[str, bytes]]:
-        """The program's bytes to the terminal since the last call."""
+        """The program's bytes to the terminal since the last call, and the tablet tape's
+        new entries (``T``: what a ``--tablet`` sent, for the replay to decode again)."""
         sent = self.session.sent[getattr(self, "_sent_at", 0):]
         self._sent_at = len(self.session.sent)
-        return [(">", b"".join(data for _t, data in sent))]
+        out = [(">", b"".join(data for _t, data in sent))]
+        take_tape = getattr(self.session.pointer_source, "take_tape", None)
+        if take_tape is not None:
+            out.append(("T", take_tape()))
+        return out
 
 
 class PeriodTarget:

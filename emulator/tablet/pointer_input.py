@@ -1,5 +1,11 @@
 """Pointer input for a program window: the configured tablet, or the mouse (the host-input
-adapter beside the emulated tablet; used by the KAS fronts on the Sigma)."""
+adapter beside the emulated tablet; used by the KAS fronts on the Sigma).
+
+With ``record=True`` everything the tablet sent is noted on a tablet tape
+(``protocols.tablets.tape``) at the poll it was read; a session recorder takes it through
+``take_tape()``.  In a replay (``emulator.harness.replay.active()``) the tape recorded in the
+session is read instead and the ``--tablet`` device is never opened.
+"""
 
 from __future__ import annotations
 
@@ -14,24 +20,52 @@ class TabletInput:
     their working coordinates.
     """
 
-    def __init__(self, source: str | None, area=None, notify=None) -> None:
-        from protocols.tablets.calibration import load_calibration
+    def __init__(self, source: str | None, area=None, notify=None, record: bool = False) -> None:
         from protocols.tablets.input_layer import TWELVE_FIELD, InputLayer
         from protocols.tablets.sources import parse_source
 
         self._emu = None
+        self.tape = None
+        self._emulated = False
+        self._has_device = source is not None
+        self._replaying = False
         area = area or TWELVE_FIELD
         if source is None:
             self.layer = InputLayer(area, None, notify=notify)
             return
         spec = parse_source(source)
+        self._emulated = spec.kind == "emulated"
+        from emulator.tablet.taped import recorded_tape
+
+        recorded = recorded_tape()
+        if recorded is not None:
+            self.tape, self._replaying = recorded, True
+            self.layer = _replay_layer(recorded, area, notify)
+            return
+        self.layer = self._live_layer(spec, source, area, notify, record)
+
+    def _live_layer(self, spec, source: str, area, notify, record: bool):  # noqa: ANN001, ANN202
+        from protocols.tablets.calibration import load_calibration
+        from protocols.tablets.input_layer import InputLayer
+        from protocols.tablets.tape import RecordingSource, TapeRecorder
+
         calibration = load_calibration(spec.device_key)
         if spec.kind == "emulated":
             opened, reopen = self._open_emulated(spec)
         else:
             opened, reopen = _open_real(spec, source, notify)
-        self.layer = InputLayer(area, opened, reopen=reopen, calibration=calibration,
-                                notify=notify)
+        if record:
+            tape = self.tape = TapeRecorder()
+            tape.note("calibration", None if calibration is None else {
+                "device": calibration.device, **calibration.to_json()})
+            opened = RecordingSource(opened, tape) if opened is not None else None
+
+            def reopen_recorded():  # noqa: ANN202
+                return RecordingSource(reopen(), tape)
+
+            return InputLayer(area, opened, reopen=reopen_recorded, calibration=calibration,
+                              notify=notify)
+        return InputLayer(area, opened, reopen=reopen, calibration=calibration, notify=notify)
 
     def _open_emulated(self, spec):  # noqa: ANN001, ANN202
         """The emulated tablet on a pty, read back through its protocol parser like a real one."""
@@ -53,21 +87,60 @@ class TabletInput:
         return opened, reopen
 
     def poll(self, mouse=()) -> list:
-        if self._emu is not None and self.layer.active == "tablet":
-            from emulator.tablet import pointer_to_tablet
+        try:
+            if self._emulated and self.layer.active == "tablet":
+                if self._emu is not None:
+                    from emulator.tablet import pointer_to_tablet
 
-            for m in mouse:
-                self._emu.send(pointer_to_tablet(m.x, m.y, m.view_size, self._emu.model,
-                                                 m.buttons))
-            if not mouse:
-                self._emu.repeat()  # a streaming tablet reports a still pen too
-            return self.layer.poll((), timeout=0.0)
-        return self.layer.poll(mouse)
+                    for m in mouse:
+                        self._emu.send(pointer_to_tablet(m.x, m.y, m.view_size,
+                                                         self._emu.model, m.buttons))
+                    if not mouse:
+                        self._emu.repeat()  # a streaming tablet reports a still pen too
+                return self.layer.poll((), timeout=0.0)
+            return self.layer.poll(mouse)
+        finally:
+            if self.tape is not None:
+                self.tape.poll += 1
+
+    @property
+    def live(self) -> bool:
+        """A tablet read as it happens (not the mouse, not a replay's tape)."""
+        return self._has_device and not self._replaying
+
+    def take_tape(self) -> bytes:
+        """The tablet tape's entries since the last call (recording only)."""
+        from protocols.tablets.tape import TapeRecorder
+
+        return self.tape.take() if isinstance(self.tape, TapeRecorder) else b""
 
     def close(self) -> None:
         self.layer.close()
         if self._emu is not None:
             self._emu.close()
+
+
+def _replay_layer(tape, area, notify):  # noqa: ANN001, ANN202
+    """The input layer fed from the tape: reopened (inline, every poll) exactly at the polls
+    where the recorded session got its tablet (back)."""
+    from protocols.tablets.calibration import Calibration
+    from protocols.tablets.input_layer import InputLayer
+    from protocols.tablets.sources import SourceLost
+    from protocols.tablets.tape import TapeSource, decoder_for
+
+    cal = tape.first("calibration")
+    calibration = None if cal is None else Calibration(
+        cal["device"], tuple(cal["top_left"]), tuple(cal["bottom_right"]))
+
+    def reopen():  # noqa: ANN202
+        opened = tape.opens_now()
+        if opened is None:
+            raise SourceLost("not on the tape at this poll")
+        return TapeSource(tape, opened, decoder_for)
+
+    initial = reopen() if tape.opens_now() is not None else None
+    return InputLayer(area, initial, reopen=reopen, calibration=calibration, retry_every=1,
+                      notify=notify, spawn=lambda job: job())
 
 
 def _open_real(spec, source: str, notify):  # noqa: ANN001, ANN202

@@ -34,6 +34,7 @@ from typing import Any
 
 from protocols.link.line import Endpoint
 from protocols.link.pty import PtyPort
+from protocols.link.serial_port import CHUNK, open_url, read_available
 from protocols.link.settings import LineSettings
 
 MAX_EVENTS = 100  # events kept on .events; older ones are dropped
@@ -46,6 +47,7 @@ PROBE_MS = 50  # how long a newcomer's arrival waits for a probed client's reset
 PROBE_EVERY = 1.0  # s between two probes of one client (a late reset is seen at the next poll)
 RCVBUF = 16384  # bytes of kernel receive buffer per client (Linux doubles it)
 BACKLOG = 128  # connections the kernel queues between two polls (a burst is not dropped)
+WRITE_TIMEOUT = 2.0  # s a serial port may hold our bytes (handlers that support it)
 
 
 @dataclass(frozen=True)
@@ -368,10 +370,13 @@ class TcpBridge(Bridge):
 
 
 class SerialUrlBridge(Bridge):
-    """Any pyserial URL: ``/dev/ttyUSB0`` (a real RS-232 cable), ``loop://``, ``socket://h:p``.
+    """Any pyserial URL: ``/dev/ttyUSB0`` (a real RS-232 cable), ``loop://``, ``spy://``,
+    ``socket://h:p``, ``rfc2217://h:p``.
 
-    The port is opened with the line's settings; if it cannot be opened or fails, that is
-    reported and the bridge tries again on a later poll.
+    The port is opened with the line's settings (and only options its handler supports);
+    each poll takes whatever has arrived (``protocols.link.serial_port``), so any URL keeps up
+    with the line.  If it cannot be opened or fails, that is reported and the bridge tries
+    again on a later poll.
     """
 
     RETRY_POLLS = 25  # polls between reopen attempts after a failure
@@ -400,13 +405,8 @@ class SerialUrlBridge(Bridge):
         import serial
 
         try:
-            self._port = serial.serial_for_url(
-                self.url,
-                timeout=0,
-                write_timeout=2,
-                xonxoff=self.xonxoff,
-                **self.settings.pyserial_kwargs(),
-            )
+            self._port = open_url(self.url, write_timeout=WRITE_TIMEOUT, xonxoff=self.xonxoff,
+                                  **self.settings.pyserial_kwargs())
         except (serial.SerialException, OSError, ValueError) as exc:
             self._port = None
             self._retry_in = self.RETRY_POLLS
@@ -432,17 +432,8 @@ class SerialUrlBridge(Bridge):
             if self._port is None:
                 return b""
         try:
-            waiting = self._port.in_waiting
-            if waiting:
-                return bytes(self._port.read(waiting))
-            if timeout <= 0:
-                return b""
-            self._port.timeout = timeout
-            first = bytes(self._port.read(1))
-            self._port.timeout = 0
-            if first and self._port.in_waiting:
-                first += bytes(self._port.read(self._port.in_waiting))
-            return first
+            # at most self._room() bytes: the rest waits in the port, as with the pty
+            return read_available(self._port, timeout, limit=min(CHUNK, self._room()))
         except (serial.SerialException, OSError) as exc:
             if isinstance(exc, OSError) and exc.errno == errno.EINTR:
                 return b""

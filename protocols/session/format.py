@@ -18,10 +18,12 @@ an exact fraction; ``tick`` counts harness ticks. ``event`` is a host input even
 and device exchanged (``>`` host to device, ``<`` device to host: the traffic since the
 previous record of that direction, up to its tick; ``+`` bytes that came from outside during
 that tick, which a replay feeds back in; ``-`` (no data) an outside client left during that
-tick and the line hung up, which a replay repeats at the same point among the ``+`` records).
-A ``hash`` is the SHA-256 of the shown frame's size and RGB bytes, every ``hash_every``
-frames; ``end`` is always last, so a recording without it is truncated. A reader refuses
-other formats and newer versions with the file, line and column.
+tick and the line hung up, which a replay repeats at the same point among the ``+`` records;
+``T`` a tablet tape's entries noted during that tick -- protocols.tablets.tape: what a
+``--tablet`` sent, at which poll, and its decoder's setup -- from which a replay decodes the
+same reports without opening the tablet). A ``hash`` is the SHA-256 of the shown frame's size
+and RGB bytes, every ``hash_every`` frames; ``end`` is always last, so a recording without it
+is truncated. A reader refuses other formats and newer versions with the file, line and column.
 """
 
 from __future__ import annotations

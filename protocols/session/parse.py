@@ -137,8 +137,8 @@ class _Reader:
         self.rec.events.append((self.tick(obj), self.time(obj["time"]), obj["event"]))  # type: ignore[union-attr]
 
     def _wire(self, obj: dict[str, Any]) -> None:
-        if obj["dir"] not in (">", "<", "+", "-"):
-            raise self.fail(f"wire direction {obj['dir']!r}; expected >, <, + or -")
+        if obj["dir"] not in (">", "<", "+", "-", "T"):
+            raise self.fail(f"wire direction {obj['dir']!r}; expected >, <, +, - or T")
         self.rec.wire.append((self.tick(obj), obj["dir"], self.data(obj["data"])))  # type: ignore[union-attr]
 
     def _hash(self, obj: dict[str, Any]) -> None:

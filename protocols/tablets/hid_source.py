@@ -1,4 +1,6 @@
-"""USB HID tablets through hidapi (``import hid`` from the ``hidapi`` package)."""
+"""USB HID tablets through hidapi (``protocols.tablets.hid_backend`` picks its module:
+hidraw on Linux, libusb only as a fallback); reports come through a blocking-read pump
+(``protocols.tablets.hid_pump``)."""
 
 from __future__ import annotations
 
@@ -7,15 +9,21 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from protocols.tablets.events import TabletEvent
+from protocols.tablets.hid_backend import (
+    NoBackend,
+    absent_message,
+    cannot_open_message,
+    hid_backend,
+)
 from protocols.tablets.hid_decode import PenDecoder
 from protocols.tablets.hid_descriptor import parse_descriptor
 from protocols.tablets.hid_profiles import profile_for
+from protocols.tablets.hid_pump import ReportPump
 from protocols.tablets.sources import SourceLost, SourceSpec, TabletSource
 
 DIGITIZER_PAGE = 0x0D
 WACOM_PAGE = 0xFF0D  # newer Wacoms mirror the digitizer usages on this vendor page
 WACOM_VID = 0x056A
-READ_SIZE = 256
 
 
 @dataclass(frozen=True)
@@ -39,15 +47,23 @@ class HidDeviceInfo:
                 f"interface {self.interface}  {self.path.decode(errors='replace')}")
 
 
+def backend_name() -> str:
+    """What ``tablet list`` prints: the backend in use, or why there is none."""
+    try:
+        return hid_backend().describe()
+    except NoBackend as exc:
+        return f"none ({exc})"
+
+
 def list_digitizers() -> tuple[list[HidDeviceInfo], str | None]:
     """HID digitizer interfaces: usage page 0x0D or Wacom's 0xFF0D, and any Wacom device.
 
     Never raises: no hidapi, no hidraw access or no devices give an empty list and a note.
     """
     try:
-        import hid
-    except ImportError as exc:
-        return [], f"hidapi is not installed ({exc}); pip install hidapi==0.15.0"
+        hid = hid_backend().module
+    except NoBackend as exc:
+        return [], str(exc)
     try:
         found = hid.enumerate()
     except Exception as exc:  # hidapi raises plain OSError/IOError variants per platform
@@ -74,25 +90,62 @@ def list_digitizers() -> tuple[list[HidDeviceInfo], str | None]:
     return out, None
 
 
+class HidReportDecoder:
+    """Pen reports -> events: a vendor profile's fixed layout, else the report descriptor's
+    (a tablet with two pen reports, Huion's 7 and 9, switches ``model`` with the report)."""
+
+    def __init__(self, vid: int, pid: int, descriptor: bytes | None, where: str) -> None:
+        self.profile = profile_for(vid, pid)
+        self._profile_decode = self.profile.make_decoder() if self.profile else None
+        self.pen: PenDecoder | None = None
+        if self.profile is not None:
+            self.model = self.profile.model
+        else:
+            if descriptor is None:
+                raise ValueError(f"{where}: no report descriptor and no vendor profile")
+            self.pen = PenDecoder(parse_descriptor(descriptor, where))
+            if not self.pen.pen_reports:
+                raise ValueError(f"{where}: no pen report")
+            self.model = next(iter(self.pen.pen_reports.values()))
+
+    def decode(self, report: bytes, now: float) -> TabletEvent | None:
+        if self._profile_decode is not None:
+            return self._profile_decode(report, now)
+        assert self.pen is not None
+        try:
+            event = self.pen.decode(report, now)
+        except ValueError:
+            return None  # a report the descriptor does not describe: skip it
+        if event is not None:
+            report_id, _ = self.pen.decoder.split(report)
+            self.model = self.pen.pen_reports[report_id]
+        return event
+
+    # the replay's interface (protocols.tablets.tape): one recorded report at a time
+    def feed(self, report: bytes) -> list[TabletEvent]:
+        event = self.decode(report, 0.0)
+        return [] if event is None else [event]
+
+    def flush(self) -> list[TabletEvent]:
+        return []
+
+
 class HidSource(TabletSource):
     """Reads pen reports; the descriptor decides the layout unless a vendor profile does."""
 
     def __init__(self, spec: SourceSpec, on_raw: Callable[[bytes], None] | None = None) -> None:
         try:
-            import hid
-        except ImportError as exc:
-            raise SourceLost(f"{spec.text}: hidapi is not installed: {exc}") from exc
+            self.backend = hid_backend()
+        except NoBackend as exc:
+            raise SourceLost(f"{spec.text}: {exc}") from exc
+        hid = self.backend.module
         self.name = spec.text
         self.on_raw = on_raw
         self._t0 = time.monotonic()
-        vid, pid = spec.vid_pid
+        vid, pid = self.vid_pid = spec.vid_pid
         self.profile = profile_for(vid, pid)
-        self._profile_decode = self.profile.make_decoder() if self.profile else None
-        self.pen: PenDecoder | None = None
-        try:
-            rows = [d for d in hid.enumerate(vid, pid) if d.get("path")]
-        except Exception as exc:  # hidapi raises plain OSError/IOError variants per platform
-            raise SourceLost(f"{spec.text}: cannot enumerate HID devices: {exc}") from exc
+        self.descriptor: bytes | None = None  # the pen interface's (None: a vendor profile)
+        rows = self._enumerate(hid, spec, vid, pid)
         if self.profile is not None:  # the vendor profile knows the layout: one interface
             pen_pages = (DIGITIZER_PAGE, WACOM_PAGE)
             paths = [d["path"] for d in rows if int(d.get("usage_page", 0)) in pen_pages]
@@ -101,9 +154,26 @@ class HidSource(TabletSource):
                 self.device.send_feature_report(list(self.profile.init_feature_report))
             except (OSError, ValueError):
                 pass
-            self.model = self.profile.model
         else:
             self._open_pen_interface(hid, spec, rows, vid, pid)
+        self.decoder = HidReportDecoder(vid, pid, self.descriptor, spec.text)
+        self.pump = ReportPump(self.device, spec.text)
+
+    @property
+    def model(self):  # noqa: ANN201 - TabletModel
+        return self.decoder.model
+
+    @staticmethod
+    def _enumerate(hid, spec: SourceSpec, vid: int, pid: int) -> list[dict]:  # noqa: ANN001
+        """The device's interfaces; absent: 'no device VID:PID (found: ...)'."""
+        try:
+            rows = [d for d in hid.enumerate(vid, pid) if d.get("path")]
+            if rows:
+                return rows
+            everything = list(hid.enumerate())
+        except Exception as exc:  # hidapi raises plain OSError/IOError variants per platform
+            raise SourceLost(f"{spec.text}: cannot enumerate HID devices: {exc}") from exc
+        raise SourceLost(f"{spec.text}: {absent_message(vid, pid, everything)}")
 
     @staticmethod
     def _ranked(rows: list[dict]) -> list[bytes]:
@@ -124,13 +194,10 @@ class HidSource(TabletSource):
                 device.open_path(paths[0])
             else:
                 device.open(vid, pid)
-            # hidapi's read(n, 0) blocks until a report comes: a still pen would freeze the
-            # caller, so reads are non-blocking and waits use an explicit timeout.
-            device.set_nonblocking(1)
         except (OSError, ValueError) as exc:
-            raise SourceLost(f"{spec.text}: cannot open (check permissions, see docs/tablets.md):"
-                             f" {exc}") from exc
-        return device
+            path = paths[0].decode(errors="replace") if paths else ""
+            raise SourceLost(f"{spec.text}: {cannot_open_message(path, vid, pid, exc)}") from exc
+        return device  # blocking: reads run on the pump's thread
 
     def _open_pen_interface(self, hid, spec: SourceSpec, rows: list[dict], vid: int,
                             pid: int) -> None:
@@ -146,8 +213,8 @@ class HidSource(TabletSource):
                 problems.append(str(exc))
                 continue
             try:
-                descriptor = parse_descriptor(bytes(device.get_report_descriptor()), where)
-                pen = PenDecoder(descriptor)
+                raw = bytes(device.get_report_descriptor())
+                pen = PenDecoder(parse_descriptor(raw, where))
             except (OSError, ValueError, AttributeError) as exc:
                 problems.append(f"{where}: cannot read the report descriptor: {exc}")
                 device.close()
@@ -156,40 +223,26 @@ class HidSource(TabletSource):
                 problems.append(f"{where}: no pen report")
                 device.close()
                 continue
-            self.device, self.pen = device, pen
-            self.model = next(iter(pen.pen_reports.values()))
+            self.device, self.descriptor = device, raw
             return
         raise SourceLost(f"{spec.text}: no interface with a pen report: " + "; ".join(problems))
 
     def read(self, timeout: float = 0.0) -> list[TabletEvent]:
-        try:
-            if timeout <= 0:  # non-blocking (set at open): whatever is queued, or nothing
-                data = self.device.read(READ_SIZE)
-            else:
-                data = self.device.read(READ_SIZE, max(1, round(timeout * 1000)))
-        except (OSError, ValueError) as exc:
-            raise SourceLost(f"{self.name}: {exc}") from exc
-        if not data:
-            return []
-        report = bytes(data)
+        """Events from the reports that have come, waiting up to ``timeout`` s for one."""
+        reports = self.pump.take(timeout)
+        if not reports and self.pump.error is not None:
+            raise SourceLost(f"{self.name}: {self.pump.error} (unplugged?)")
+        events: list[TabletEvent] = []
+        for report in reports:
+            events += self.decode(report)
+        return events
+
+    def decode(self, report: bytes) -> list[TabletEvent]:
+        """One report as the tablet sent it (also what a replay feeds back)."""
         if self.on_raw is not None:
             self.on_raw(report)
-        now = time.monotonic() - self._t0
-        if self._profile_decode is not None:
-            event = self._profile_decode(report, now)
-        else:
-            assert self.pen is not None
-            try:
-                event = self.pen.decode(report, now)
-            except ValueError:
-                return []  # a report the descriptor does not describe: skip it
-            if event is not None:  # tablets with two pen reports (Huion: 7 and 9) differ
-                report_id, _ = self.pen.decoder.split(report)
-                self.model = self.pen.pen_reports[report_id]
+        event = self.decoder.decode(report, time.monotonic() - self._t0)
         return [] if event is None else [event]
 
     def close(self) -> None:
-        try:
-            self.device.close()
-        except (OSError, ValueError):
-            pass
+        self.pump.close()

@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-import select
 import time
 from collections.abc import Callable
 from dataclasses import replace
 
 import serial
 
+from protocols.link.serial_port import open_url, read_available
 from protocols.tablets import wacom4
 from protocols.tablets.base import TabletParser
 from protocols.tablets.events import DeviceReply, TabletEvent
@@ -57,6 +57,30 @@ def _why(exc: BaseException) -> str:
     return str(exc)
 
 
+def configure_wacom(parser: TabletParser, replies: list[DeviceReply]) -> bytes:
+    """Adopt a Wacom IV's ``~#``/``~R``/``~C`` answers (model, tilt, size); returns the
+    model's setup string to send.  Also what a replay applies to the recorded replies."""
+    assert isinstance(parser, wacom4.Wacom4Parser)
+    identity = None
+    for reply in replies:
+        try:
+            if reply.text.startswith("~#"):
+                identity = wacom4.parse_model_reply(reply.text)
+                parser.identify(identity)
+            elif reply.text.startswith("~R"):
+                settings = wacom4.parse_settings_reply(reply.text)
+                parser.set_tilt(settings.packet_length == 9)
+                if identity is None or identity.lines_per_inch is None:
+                    parser.model = replace(parser.model, lines_per_inch=settings.res_x)
+            elif reply.text.startswith("~C"):
+                mx, my = wacom4.parse_coords_reply(reply.text)
+                parser.model = replace(parser.model, max_x=mx, max_y=my)
+        except ValueError:
+            continue  # a garbled reply: keep the defaults
+    fallback = wacom4.WacomIdentity("UD", (1, 4), "")
+    return (identity or fallback).setup_string
+
+
 class SerialSource(TabletSource):
     def __init__(self, spec: SourceSpec, on_raw: Callable[[bytes], None] | None = None,
                  sleep: Callable[[float], None] = time.sleep,
@@ -66,6 +90,7 @@ class SerialSource(TabletSource):
         self.line: LineSetup = protocol_spec.line
         self.name = spec.text or spec.target
         self.on_raw = on_raw
+        self.on_flush: Callable[[], None] | None = None  # a silence ended a partial reply
         self._sleep = sleep
         self.clock = clock  # times events and silences (injectable: tests stay deterministic)
         self.stall_release, self.stall_fallback = STALL_RELEASE, STALL_FALLBACK
@@ -73,10 +98,10 @@ class SerialSource(TabletSource):
         bytesize, parity, stopbits = self.line.wire
         baud = spec.baud or self.line.baud
         try:
-            self.port = serial.serial_for_url(
+            self.port = open_url(
                 spec.target, baudrate=baud, bytesize=bytesize, parity=_PARITY[parity],
                 stopbits=stopbits, xonxoff=self.line.xonxoff, rtscts=self.line.rtscts,
-                timeout=0, write_timeout=WRITE_TIMEOUT, do_not_open=False,
+                write_timeout=WRITE_TIMEOUT,
             )
         except (serial.SerialException, OSError, ValueError) as exc:
             raise SourceLost(f"{spec.text}: cannot open {spec.target}: {_why(exc)}") from exc
@@ -85,6 +110,7 @@ class SerialSource(TabletSource):
         self.model = self.parser.model
         self.replies: list[DeviceReply] = []
         self._t0 = self.last_data = clock()  # event times count from opening
+        self.heard = 0  # bytes received since opening (start-up replies and reports)
         if spec.init and self.line.init:
             try:
                 self.initialise()
@@ -94,7 +120,11 @@ class SerialSource(TabletSource):
 
     # -- start-up -----------------------------------------------------------------------
     def initialise(self) -> None:
-        """Send the protocol's reset/identify sequence and adopt what the tablet says."""
+        """Send the protocol's reset/identify sequence and adopt what the tablet says.
+
+        Raises SourceLost, naming what to check, if the protocol has queries and not one
+        byte came back: nothing is printed as found when nothing answered."""
+        started = time.monotonic()
         for step in self.line.init:
             if step.baud and step.baud != self.port.baudrate:
                 try:
@@ -110,9 +140,21 @@ class SerialSource(TabletSource):
                 self._sleep(step.wait)
             if step.flush:
                 self._flush_input()
+        queries = [s.data for s in self.line.init if s.expect_reply]
+        if queries and not self.heard:
+            raise SourceLost(self._no_answer(queries, time.monotonic() - started))
         if isinstance(self.parser, wacom4.Wacom4Parser):
             self._configure_wacom()
         self.model = self.parser.model
+
+    def _no_answer(self, queries: list[bytes], waited: float) -> str:
+        asked = ", ".join(repr(q.strip(b"\r").decode("ascii", "replace")) for q in queries)
+        baud = self.spec.baud or self.line.baud
+        return (f"{self.name}: no answer from a tablet in {waited:.1f} s to the "
+                f"{self.spec.protocol} start-up queries ({asked}); check the cable (plugged "
+                "in, the tablet switched on; a USB-serial adapter's port is /dev/ttyUSB0), "
+                f"the protocol (?protocol={self.spec.protocol}: is it that kind of tablet?) "
+                f"and the line speed ({baud} baud, {self.line.describe()}; ?baud=N)")
 
     def _flush_input(self) -> None:
         """Drop the reports already on their way (sent before prompt/stop mode took hold):
@@ -125,9 +167,10 @@ class SerialSource(TabletSource):
         deadline = time.monotonic() + FLUSH_LIMIT
         try:
             while time.monotonic() < deadline:
-                self._wait_readable(FLUSH_QUIET)
-                if not self.port.read(self.port.in_waiting or 1):
+                dropped = read_available(self.port, FLUSH_QUIET, self._sleep)
+                if not dropped:
                     break
+                self.heard += len(dropped)
         except (serial.SerialException, OSError, TypeError) as exc:
             raise SourceLost(f"{self.name}: {exc}") from exc
         self.parser = make_parser(self.spec.protocol or "", self.spec.options,
@@ -174,27 +217,7 @@ class SerialSource(TabletSource):
         self.size_notes.append(f"{self.name}: {note}; keeping 0..{m.max_x} x 0..{m.max_y}")
 
     def _configure_wacom(self) -> None:
-        parser = self.parser
-        assert isinstance(parser, wacom4.Wacom4Parser)
-        identity = None
-        for reply in self.replies:
-            try:
-                if reply.text.startswith("~#"):
-                    identity = wacom4.parse_model_reply(reply.text)
-                    parser.identify(identity)
-                elif reply.text.startswith("~R"):
-                    settings = wacom4.parse_settings_reply(reply.text)
-                    parser.set_tilt(settings.packet_length == 9)
-                    if identity is None or identity.lines_per_inch is None:
-                        parser.model = replace(parser.model, lines_per_inch=settings.res_x)
-                elif reply.text.startswith("~C"):
-                    mx, my = wacom4.parse_coords_reply(reply.text)
-                    parser.model = replace(parser.model, max_x=mx, max_y=my)
-            except ValueError:
-                continue  # a garbled reply: keep the defaults
-        setup = identity.setup_string if identity else wacom4.WacomIdentity("UD", (1, 4),
-                                                                          "").setup_string
-        self._write(setup)
+        self._write(configure_wacom(self.parser, self.replies))
 
     # -- I/O -------------------------------------------------------------------------------
     def _write(self, data: bytes) -> None:
@@ -210,39 +233,28 @@ class SerialSource(TabletSource):
     def write(self, data: bytes) -> None:
         self._write(data)
 
-    def _wait_readable(self, timeout: float) -> None:
-        try:
-            fd = self.port.fileno()
-        except (AttributeError, OSError, ValueError, serial.SerialException):
-            fd = None
-        if fd is not None:
-            select.select([fd], [], [], timeout)
-            return
-        deadline = time.monotonic() + timeout  # URL handlers without a file descriptor
-        while time.monotonic() < deadline and not self.port.in_waiting:
-            self._sleep(0.002)
-
     def read(self, timeout: float = 0.0) -> list[TabletEvent]:
         """Events decoded from whatever arrived, waiting up to ``timeout`` s for the first byte.
 
         The port stays non-blocking (changing pyserial's timeout reconfigures the tty)."""
         try:
-            data = self.port.read(self.port.in_waiting or 1)
-            if not data and timeout > 0:
-                self._wait_readable(timeout)
-                data = self.port.read(self.port.in_waiting or 1)
+            data = read_available(self.port, timeout, self._sleep)
         except (serial.SerialException, OSError, TypeError) as exc:
             raise SourceLost(f"{self.name}: {exc}") from exc
         now = self.clock()
         events: list[TabletEvent] = []
         if data:
+            self.heard += len(data)
             self.last_data = now
             if self.on_raw is not None:
                 self.on_raw(data)
             events = self.parser.feed(data, now - self._t0)
         elif now - self.last_data > REPLY_TIMEOUT:
             events = self.parser.flush(now - self._t0)
-        self.replies.extend(self.parser.take_replies())
+        replies = self.parser.take_replies()
+        if not data and (events or replies) and self.on_flush is not None:
+            self.on_flush()  # the silence decided something: a replay must flush here too
+        self.replies.extend(replies)
         return events
 
     def close(self) -> None:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import re
+import sys
 
 import pytest
 
@@ -62,7 +63,8 @@ def test_calibrate_emulated_saves_per_device(tmp_path, monkeypatch, capsys) -> N
 def test_list_runs_without_devices(capsys) -> None:
     assert main(["tablet", "list"]) == 0
     out = capsys.readouterr().out
-    assert "HID digitizers:" in out and "Serial ports:" in out
+    assert "HID digitizers (backend: " in out and "Serial ports:" in out
+    assert "backend: hidraw" in out or sys.platform != "linux"  # hidraw first on Linux
 
 
 def test_tablet_input_emulated_goes_through_the_protocol(tmp_path, monkeypatch) -> None:

@@ -62,6 +62,7 @@ def test_list_digitizers_never_raises(monkeypatch) -> None:
 
     fake = types.SimpleNamespace(enumerate=broken)
     monkeypatch.setitem(sys.modules, "hid", fake)
+    monkeypatch.setitem(sys.modules, "hidraw", fake)
     devices, note = hid_source.list_digitizers()
     assert devices == [] and "no hidraw access" in note
 
@@ -78,7 +79,9 @@ def test_list_digitizers_filters_usage_page(monkeypatch) -> None:
          "usage": 2, "interface_number": 0, "manufacturer_string": "Wacom",
          "product_string": "Graphire"},
     ]
-    monkeypatch.setitem(sys.modules, "hid", types.SimpleNamespace(enumerate=lambda *a: rows))
+    fake = types.SimpleNamespace(enumerate=lambda *a: rows)
+    monkeypatch.setitem(sys.modules, "hid", fake)
+    monkeypatch.setitem(sys.modules, "hidraw", fake)
     devices, note = hid_source.list_digitizers()
     assert [d.source for d in devices] == ["hid:256c:006e", "hid:056a:0010"]
     assert note is None and "Huion H610" in devices[0].describe()

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import sys
+import threading
+import time
 import types
 
 import pytest
@@ -12,14 +14,11 @@ from protocols.tablets.sources import SourceLost, open_source
 from tests.tablets.helpers import DIGIMEND, SELFTESTS, load_descriptor, load_dump
 
 
-class WouldBlockForever(AssertionError):
-    """hidapi 0.15: read(n, 0) on a blocking device waits until a report comes -- with a
-    still pen, forever.  The fake raises instead of hanging the test."""
-
-
 class FakeDevice:
     """A stand-in for ``hid.device()``.  ``unplug_when_empty``: once the queued reports are
-    read the device is gone (read raises); otherwise it is a pen held still (nothing queued)."""
+    read the device is gone (read raises); otherwise it is a pen held still: like hidapi 0.15
+    on a blocking device, ``read`` then waits until a report comes -- here until
+    ``release()``."""
 
     def __init__(self, descriptor: bytes, reports: list[bytes],
                  unplug_when_empty: bool = True) -> None:
@@ -31,6 +30,11 @@ class FakeDevice:
         self.nonblocking = False
         self.timeouts: list[int] = []
         self.closed = False
+        self.still = threading.Event()
+        self.blocked = threading.Event()  # a read is waiting for a report
+
+    def release(self) -> None:
+        self.still.set()
 
     def set_nonblocking(self, value: int) -> int:
         self.nonblocking = bool(value)
@@ -55,7 +59,8 @@ class FakeDevice:
             if self.unplug_when_empty:
                 raise OSError("read error (device unplugged)")
             if timeout_ms == 0 and not self.nonblocking:
-                raise WouldBlockForever("hid_read() on a blocking device with nothing queued")
+                self.blocked.set()
+                self.still.wait()
             return []
         return list(self.reports.pop(0))
 
@@ -65,7 +70,13 @@ class FakeDevice:
 
 def _install(monkeypatch, device: FakeDevice, rows: list[dict]) -> None:
     module = types.SimpleNamespace(device=lambda: device, enumerate=lambda *a: rows)
+    install_hid(monkeypatch, module)
+
+
+def install_hid(monkeypatch, module) -> None:  # noqa: ANN001
+    """The stand-in as both hidapi modules (hidraw is tried first on Linux)."""
     monkeypatch.setitem(sys.modules, "hid", module)
+    monkeypatch.setitem(sys.modules, "hidraw", module)
 
 
 def test_huion_capture_through_hid_source_then_unplug(monkeypatch) -> None:
@@ -94,8 +105,8 @@ def test_input_layer_falls_back_when_the_hid_tablet_goes(monkeypatch) -> None:
     notes: list[str] = []
     layer = InputLayer(source=open_source("hid:256c:006e"), notify=notes.append)
     out = []
-    for _ in range(5):
-        out += layer.poll([MouseSample(0, 0, 0, (10, 10))])
+    for _ in range(5):  # reports come from the read thread: a poll may wait for them
+        out += layer.poll([MouseSample(0, 0, 0, (10, 10))], timeout=0.2)
     kinds = [(e.kind, e.source) for e in out]
     assert kinds[:3] == [("press", "tablet"), ("move", "tablet"), ("move", "tablet")]
     assert kinds[3] == ("release", "tablet") and len(notes) == 1
@@ -108,7 +119,7 @@ def test_legacy_wacom_gets_the_mode_switch(monkeypatch) -> None:
     _install(monkeypatch, device, [{"usage_page": 0x01, "path": b"/dev/hidraw1"}])
     source = open_source("hid:056a:0015")
     assert device.features == [[2, 2]] and device.opened == (0x56A, 0x15)
-    (event,) = source.read(0.01)
+    (event,) = source.read(1.0)
     assert (event.x, event.y, event.pressure, event.tip) == (0x1234, 0x567, 16, True)
     assert source.model.name == "Wacom Graphire4 4x5"
 
@@ -119,14 +130,22 @@ def test_a_still_pen_never_blocks_the_poll(monkeypatch) -> None:
     device = FakeDevice(desc.data, reports, unplug_when_empty=False)
     _install(monkeypatch, device, [{"usage_page": 0x0D, "path": b"/dev/hidraw7"}])
     layer = InputLayer(source=open_source("hid:256c:006e"))
-    assert device.nonblocking  # set right after opening
     out = []
     for _ in range(5):  # two reports, then the pen holds still: poll() must come back
-        out += layer.poll([], timeout=0.0)
+        out += layer.poll([], timeout=0.1)
+    assert device.blocked.wait(5)  # the read thread is waiting in a blocking read ...
     assert len(out) == 2 and layer.active == "tablet"
-    layer.source.read(0.05)  # a wait asks hidapi for a real timeout in ms
-    layer.source.read(0.0001)  # never rounded down to 0 (= block forever)
-    assert device.timeouts[-2:] == [50, 1]
+    start = time.monotonic()
+    assert layer.poll([], timeout=0.05) == []  # ... and the poll still comes back
+    assert time.monotonic() - start < 1
+    layer.close()
+    assert not device.closed  # never freed under the blocked read
+    device.release()  # the next report (here: none) ends the read; then it is closed
+    for _ in range(100):
+        if device.closed:
+            break
+        time.sleep(0.01)
+    assert device.closed
 
 
 class MultiInterfaceHid:
@@ -181,7 +200,7 @@ def test_newer_wacom_on_the_vendor_page_is_listed_and_its_pen_interface_found(mo
     devices = {b"/dev/hidraw3": FakeDevice(no_pen.data, [], unplug_when_empty=False),
                b"/dev/hidraw4": FakeDevice(pth660.data, [report], unplug_when_empty=False)}
     hid = MultiInterfaceHid(_pth660_rows(), devices)
-    monkeypatch.setitem(sys.modules, "hid", hid)
+    install_hid(monkeypatch, hid)
     listed, note = list_digitizers()
     assert note is None
     assert [(d.source, d.path, d.usage_page) for d in listed] == [
@@ -197,7 +216,7 @@ def test_newer_wacom_on_the_vendor_page_is_listed_and_its_pen_interface_found(mo
 def test_no_interface_with_a_pen_says_which_were_tried(monkeypatch) -> None:
     no_pen = load_descriptor(DIGIMEND / "Huion_H610/rd/original2.txt")
     devices = {p: FakeDevice(no_pen.data, []) for p in (b"/dev/hidraw3", b"/dev/hidraw4")}
-    monkeypatch.setitem(sys.modules, "hid", MultiInterfaceHid(_pth660_rows(), devices))
+    install_hid(monkeypatch, MultiInterfaceHid(_pth660_rows(), devices))
     with pytest.raises(SourceLost, match="hidraw3.*no pen report.*hidraw4.*no pen report"):
         open_source("hid:056a:0357")
 
@@ -210,3 +229,35 @@ def test_intuos_1_and_2_pid_table_is_complete() -> None:
         assert sizes[0] == (12700, 10600) and sizes[-1] == (45720, 31680)
         assert sizes == sorted(sizes, key=lambda s: s[0] * s[1])  # 4x5 ... 12x18
     assert profile_for(0x56A, 0x47).family == "intuos"
+
+
+def test_permission_denied_names_the_node_and_the_udev_rule(monkeypatch) -> None:
+    """A hidraw node the user may not open (tests run as root, which may open anything, so
+    the node's access check is stood in for)."""
+    from protocols.tablets import hid_backend
+
+    class Refusing(FakeDevice):
+        def open_path(self, path: bytes) -> None:
+            raise OSError("open failed")  # all hidapi says
+
+    device = Refusing(b"", [])
+    _install(monkeypatch, device, [{"usage_page": 0x0D, "path": b"/dev/hidraw7"}])
+    monkeypatch.setattr(hid_backend.os.path, "exists", lambda p: p == "/dev/hidraw7")
+    monkeypatch.setattr(hid_backend.os, "access", lambda p, mode: False)
+    with pytest.raises(SourceLost) as info:
+        open_source("hid:256c:006e")
+    text = str(info.value)
+    assert "permission denied on /dev/hidraw7" in text
+    assert 'ATTRS{idVendor}=="256c", ATTRS{idProduct}=="006e", MODE="0660"' in text
+    assert "udevadm control --reload" in text
+
+
+def test_absent_device_lists_what_hidapi_sees(monkeypatch) -> None:
+    rows = [{"vendor_id": 0x046D, "product_id": 0xC077, "path": b"/dev/hidraw0",
+             "product_string": "USB Optical Mouse"}]
+    module = types.SimpleNamespace(device=lambda: None,
+                                   enumerate=lambda vid=0, pid=0: [] if vid else rows)
+    install_hid(monkeypatch, module)
+    with pytest.raises(SourceLost, match=r"no device 056a:0010 \(found: 046d:c077 USB Optical "
+                       r"Mouse\)"):
+        open_source("hid:056a:0010")

@@ -38,7 +38,7 @@ def front_options(p: argparse.ArgumentParser) -> None:
 
 def prepare_front(args: argparse.Namespace, command: str):  # noqa: ANN201
     """Everything that can refuse a KAS program's run, before anything is written: the
-    script read, the display rule applied, the --record and --tablet combination checked.
+    script read, the display rule applied.
     Returns what ``run_front`` needs."""
     from apps.kas.program.script import load_timed_script
     from camlab88.runopts import run_options
@@ -49,8 +49,6 @@ def prepare_front(args: argparse.Namespace, command: str):  # noqa: ANN201
     useful = "playing the --script" if args.script is not None else None
     opts = run_options(args, command, useful, "give --headless with --script FILE",
                        getattr(args, "_argv", None))
-    if opts.record is not None and args.tablet:
-        raise ValueError("--record cannot record a --tablet's reports; record with the mouse")
     return events, opts
 
 
@@ -69,7 +67,11 @@ def run_front(front, args: argparse.Namespace, command: str, keys: str,  # noqa:
 
     events, opts = prepared or prepare_front(args, command)
     notices: list[str] = []
-    tablet = TabletInput(args.tablet, area=TABLET_AREA, notify=notices.append)
+    # with --record the tablet's reports go on the session's tablet tape (a replay reads it)
+    tablet = TabletInput(args.tablet, area=TABLET_AREA, notify=notices.append,
+                         record=opts.record is not None)
+    if tablet.live:  # a real stylus moves on the wall clock: keep the line time level with it
+        opts.live = True
     session = Session(front, Terminal("t5684"), LineSettings(baud=args.baud), pointer=tablet)
     end = opts.headless or opts.screenshot is not None
     target = SigmaProgramTarget(session, f"{command} - Sigma T5684", keys,

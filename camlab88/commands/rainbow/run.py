@@ -41,10 +41,9 @@ def run(args: argparse.Namespace) -> int:
                        argv=getattr(args, "_argv", None))
     opts.stop_after = args.stop_after or args.stop_after_old or (
         HEADLESS_FRAMES if opts.headless else None)
-    if opts.record is not None and args.tablet:
-        raise SystemExit(f"{COMMAND}: --record cannot record a --tablet's reports; record "
-                         "with the mouse")
-    tablet = _open_tablet(args.tablet)
+    tablet = _open_tablet(args.tablet, opts.record is not None)
+    if tablet is not None and tablet.live:  # a real stylus moves on the wall clock
+        opts.live = True
     target = _target(args, opts, tablet)
     try:
         run_target(target, opts)
@@ -75,7 +74,7 @@ def _target(args: argparse.Namespace, opts, tablet):  # noqa: ANN001, ANN202
         demo = Demo(session.client)
 
     def step() -> bool:
-        if target.tablet is not None:
+        if target.tablet is not None and not target.tablet.gone:
             target.tablet = _poll_tablet(target.tablet, session)
         demo.step()
         return True  # the demo runs until the window closes or --stop-after
@@ -85,13 +84,16 @@ def _target(args: argparse.Namespace, opts, tablet):  # noqa: ANN001, ANN202
     return target
 
 
-def _open_tablet(text: str | None):  # noqa: ANN202
+def _open_tablet(text: str | None, record: bool):  # noqa: ANN202
+    """The --tablet source (on a tape with --record; from the recording's tape in a replay,
+    where the device is never opened)."""
     if not text:
         return None
-    from protocols.tablets.sources import SourceError, open_source
+    from emulator.tablet.taped import TapedTablet
+    from protocols.tablets.sources import SourceError
 
     try:
-        return open_source(text)
+        return TapedTablet.open(text, record)
     except (SourceError, OSError) as exc:
         raise SystemExit(f"{COMMAND}: --tablet {text}: {exc}") from None
 
@@ -106,6 +108,5 @@ def _poll_tablet(tablet, session):  # noqa: ANN001, ANN202
             session.inject(tablet_event(ev))
     except (SourceLost, OSError) as exc:
         print(f"{COMMAND}: tablet lost ({exc}); carrying on without it", file=sys.stderr)
-        tablet.close()
-        return None
+        tablet.close()  # gone: not read again (its tape keeps what it said)
     return tablet

@@ -78,6 +78,7 @@ def run(args: argparse.Namespace) -> int:
         done.callback(_finish, target, line, recorder, args)
         if replay.active() is None:
             target.bridge = _open_bridge(args, settings, target.tap)
+            opts.live = True  # outside bytes enter at the poll's virtual time: keep them level
         run_target(target, opts)
     s = target.term.stats
     print(f"camlab88 sigma: {s['bytes']} bytes in, {s['unknown']} unknown and "

@@ -52,11 +52,11 @@ def _touch(session, source, emu, seconds: float) -> bool:  # noqa: ANN001
     """Read reports until both corners are touched; False on a timeout or a lost tablet."""
     from protocols.tablets.sources import SourceLost
 
-    start = time.monotonic()
+    start, seen = time.monotonic(), 0
     while not session.done:
         if time.monotonic() - start > seconds:
-            print(f"camlab88 tablet: calibration timed out after {seconds:g} s (no corner "
-                  "touched: is the tablet on that port?)", file=sys.stderr)
+            print(f"camlab88 tablet: {source.name}: calibration gave up after {seconds:g} s: "
+                  f"{_hint(source, seen)}", file=sys.stderr)
             return False
         if emu is not None:
             emu.step()
@@ -65,6 +65,7 @@ def _touch(session, source, emu, seconds: float) -> bool:  # noqa: ANN001
         except SourceLost as exc:
             print(f"camlab88 tablet: {exc}", file=sys.stderr)
             return False
+        seen += len(events)
         if emu is not None:
             emu.show(events)
         for e in events:
@@ -73,3 +74,16 @@ def _touch(session, source, emu, seconds: float) -> bool:  # noqa: ANN001
                 if session.prompt:
                     print(session.prompt, flush=True)
     return True
+
+
+def _hint(source, seen: int) -> str:  # noqa: ANN001
+    """What to check when no corner came: nothing at all from the device, or no press."""
+    if seen:
+        return (f"{seen} reports came but no corner was pressed: touch each corner with the "
+                "tip (or press the first puck button) and lift it again")
+    if getattr(source, "heard", 0):
+        return ("bytes came but none decoded as a report: check the protocol "
+                "(?protocol=...) and the line speed (?baud=N)")
+    return ("nothing came from the tablet: check the cable and that the tablet is switched "
+            "on, the port, the protocol and the baud ('camlab88 tablet monitor SOURCE' shows "
+            "every report)")

@@ -11,10 +11,10 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
 
 
 def cmd_list(args: argparse.Namespace) -> int:
-    from protocols.tablets.hid_source import list_digitizers
+    from protocols.tablets.hid_source import backend_name, list_digitizers
 
     devices, note = list_digitizers()
-    print("HID digitizers:")
+    print(f"HID digitizers (backend: {backend_name()}):")
     for d in devices:
         print("  " + d.describe())
     if not devices:

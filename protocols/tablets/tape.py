@@ -1,0 +1,224 @@
+"""A tablet's session on tape: what the device sent, at which poll, and the decoder's setup.
+
+Recording (``TapeRecorder`` + ``RecordingSource`` around the real source) notes, per poll of
+the input layer: ``open`` (the decoder's setup: the HID report descriptor or vendor profile,
+or the serial protocol, its options, the model and the start-up replies), ``raw`` (serial
+bytes as read, or one HID report), ``flush`` (a serial silence ended a partial reply),
+``lost`` (the device went away, with the message), ``idle`` (a serial stream's silence level
+changed: 0 streaming, 1 past the stroke-ending silence, 2 past the mouse-fallback silence),
+and once ``calibration``.  Replaying (``TapeSource``) runs the *same decoder* on the recorded
+bytes at the same polls, so a program fed from the tape takes every decision it took live:
+nothing on the tape depends on the wall clock any more.
+
+Entries are JSON: ``[poll, kind, payload]``; bytes are hex.  A tape is data: it names no
+device to open.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Callable
+from dataclasses import asdict
+from typing import Any
+
+from protocols.tablets.events import DeviceReply, TabletEvent, TabletModel
+from protocols.tablets.sources import SourceLost, TabletSource
+
+
+class TapeError(ValueError):
+    """A tablet tape that cannot be replayed (the message says which entry and why)."""
+
+
+class TapeRecorder:
+    """Collects entries; ``take()`` hands out the new ones as bytes (for a session record)."""
+
+    def __init__(self) -> None:
+        self.poll = 0
+        self.entries: list[list[Any]] = []
+
+    def note(self, kind: str, payload: Any) -> None:
+        self.entries.append([self.poll, kind, payload])
+
+    def take(self) -> bytes:
+        """The entries since the last take (then dropped: memory stays bounded)."""
+        new, self.entries = self.entries, []
+        return json.dumps(new, separators=(",", ":")).encode() if new else b""
+
+
+def _idle_level(source: Any, idle: float) -> int:
+    if idle >= source.stall_fallback:
+        return 2
+    return 1 if idle >= source.stall_release else 0
+
+
+def describe_open(source: Any) -> dict[str, Any]:
+    """What a replay needs to build the same decoder as ``source`` (HID or serial)."""
+    if hasattr(source, "pump"):  # HidSource
+        vid, pid = source.vid_pid
+        return {"kind": "hid", "name": source.name, "vid": vid, "pid": pid,
+                "descriptor": source.descriptor.hex() if source.descriptor else None}
+    spec = source.spec
+    return {"kind": "serial", "name": source.name, "protocol": spec.protocol,
+            "options": dict(spec.options), "model": asdict(source.model),
+            "replies": [r.text for r in source.replies],
+            "parmrk": getattr(source.parser, "_parmrk", None) is not None}
+
+
+def decoder_for(opened: dict[str, Any]) -> Any:
+    """The decoder a recorded opening used (``feed(bytes)``, ``flush()``, ``model``)."""
+    try:
+        if opened.get("kind") == "hid":
+            from protocols.tablets.hid_source import HidReportDecoder
+
+            descriptor = opened.get("descriptor")
+            return HidReportDecoder(int(opened["vid"]), int(opened["pid"]),
+                                    bytes.fromhex(descriptor) if descriptor else None,
+                                    str(opened.get("name", "tablet tape")))
+        if opened.get("kind") == "serial":
+            return SerialTapeDecoder(opened)
+    except (KeyError, TypeError, ValueError) as exc:
+        raise TapeError(f"tablet tape: cannot rebuild the decoder: {exc}") from None
+    raise TapeError(f"tablet tape: unknown source kind {opened.get('kind')!r}")
+
+
+class RecordingSource(TabletSource):
+    """The real source, noting on the tape everything its reads bring."""
+
+    def __init__(self, inner: TabletSource, tape: TapeRecorder) -> None:
+        self.inner, self.tape = inner, tape
+        self.name = inner.name
+        self._opened = False
+        self._level = 0
+        self._now = 0.0
+        inner.on_raw = lambda data: tape.note("raw", bytes(data).hex())  # type: ignore[attr-defined]
+        if hasattr(inner, "on_flush"):
+            inner.on_flush = lambda: tape.note("flush", None)  # type: ignore[attr-defined]
+        if hasattr(inner, "clock"):  # a streaming serial tablet: silence is watched
+            self.clock = lambda: self._now
+            self.stall_release = inner.stall_release  # type: ignore[attr-defined]
+            self.stall_fallback = inner.stall_fallback  # type: ignore[attr-defined]
+
+    @property
+    def model(self) -> TabletModel:  # type: ignore[override]
+        return self.inner.model
+
+    @property
+    def last_data(self) -> float:
+        return self.inner.last_data  # type: ignore[attr-defined]
+
+    def read(self, timeout: float = 0.0) -> list[TabletEvent]:
+        if not self._opened:  # noted at the poll that first reads it (when it was adopted)
+            self._opened = True
+            self.tape.note("open", describe_open(self.inner))
+        try:
+            events = self.inner.read(timeout)
+        except SourceLost as exc:
+            self.tape.note("lost", str(exc))
+            raise
+        if hasattr(self, "clock"):
+            self._now = self.inner.clock()  # type: ignore[attr-defined]
+            level = _idle_level(self, self._now - self.last_data)
+            if level != self._level:
+                self._level = level
+                self.tape.note("idle", level)
+        return events
+
+    def close(self) -> None:
+        self.inner.close()
+
+
+class Tape:
+    """A recorded tape, entries by poll, and the replay's poll counter."""
+
+    def __init__(self, entries: list[list[Any]], where: str = "tablet tape") -> None:
+        self.where = where
+        self.by_poll: dict[int, list[tuple[str, Any]]] = {}
+        for n, entry in enumerate(entries):
+            if not (isinstance(entry, list) and len(entry) == 3 and isinstance(entry[0], int)
+                    and isinstance(entry[1], str)):
+                raise TapeError(f"{where}: entry {n + 1} is not [poll, kind, payload]")
+            self.by_poll.setdefault(entry[0], []).append((entry[1], entry[2]))
+        self.poll = 0
+
+    @classmethod
+    def from_chunks(cls, chunks: list[bytes], where: str = "tablet tape") -> Tape:
+        entries: list[list[Any]] = []
+        for chunk in chunks:
+            try:
+                entries += json.loads(chunk)
+            except (ValueError, TypeError) as exc:
+                raise TapeError(f"{where}: not JSON: {exc}") from None
+        return cls(entries, where)
+
+    def now(self, kind: str) -> list[Any]:
+        return [p for k, p in self.by_poll.get(self.poll, []) if k == kind]
+
+    def first(self, kind: str) -> Any:
+        for poll in sorted(self.by_poll):
+            for k, payload in self.by_poll[poll]:
+                if k == kind:
+                    return payload
+        return None
+
+    def opens_now(self) -> dict[str, Any] | None:
+        opens = self.now("open")
+        return opens[0] if opens else None
+
+
+class TapeSource(TabletSource):
+    """Replays one opening of the tablet: the same decoder fed the recorded bytes."""
+
+    def __init__(self, tape: Tape, opened: dict[str, Any],
+                 make_decoder: Callable[[dict[str, Any]], Any]) -> None:
+        self.tape = tape
+        self.name = str(opened.get("name", "tablet"))
+        self.decoder = make_decoder(opened)
+        self.model = self.decoder.model
+        if opened.get("kind") == "serial":
+            self.clock = lambda: self._level_time
+            self.last_data = 0.0
+            self.stall_release, self.stall_fallback = 0.5, 2.0
+        self._level_time = 0.0
+
+    def read(self, timeout: float = 0.0) -> list[TabletEvent]:
+        entries = self.tape.by_poll.get(self.tape.poll, [])
+        events: list[TabletEvent] = []
+        for kind, payload in entries:
+            if kind == "raw":
+                events += self.decoder.feed(bytes.fromhex(payload))
+            elif kind == "flush":
+                events += self.decoder.flush()
+            elif kind == "lost":
+                raise SourceLost(str(payload))
+            elif kind == "idle":
+                self._level_time = (0.0, self.stall_release, self.stall_fallback)[int(payload)]
+        self.model = self.decoder.model
+        return events
+
+
+class SerialTapeDecoder:
+    """The serial parser a recorded opening used, set up as the tablet's replies left it."""
+
+    def __init__(self, opened: dict[str, Any]) -> None:
+        from protocols.tablets import wacom4
+        from protocols.tablets.registry import make_parser
+        from protocols.tablets.serial_source import configure_wacom
+
+        self.parser = make_parser(str(opened["protocol"]), opened.get("options") or {},
+                                  parmrk=bool(opened.get("parmrk")))
+        if isinstance(self.parser, wacom4.Wacom4Parser):
+            configure_wacom(self.parser, [DeviceReply(str(t)) for t in opened.get("replies", [])])
+        model = dict(opened["model"])
+        if model.get("tilt_range") is not None:
+            model["tilt_range"] = tuple(model["tilt_range"])
+        self.parser.model = TabletModel(**model)
+
+    @property
+    def model(self) -> TabletModel:
+        return self.parser.model
+
+    def feed(self, data: bytes) -> list[TabletEvent]:
+        return self.parser.feed(data, 0.0)
+
+    def flush(self) -> list[TabletEvent]:
+        return self.parser.flush(0.0)
