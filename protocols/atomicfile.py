@@ -88,6 +88,23 @@ def commit(tmp: str | os.PathLike[str], target: Path) -> None:
     fsync_dir(target.parent)
 
 
+def probe(path: str | os.PathLike[str]) -> None:
+    """Check now, before a long run, that ``path`` can be written: a block written and
+    synced to a temporary file beside it (then removed) fails on a full disk, a read-only
+    mount or a directory in the way; the OSError names ``path``."""
+    target, into = output_target(path)
+    if into:
+        return
+    fd, tmp = temp_beside(target)
+    try:
+        with naming_user_path(path, tmp):
+            os.write(fd, bytes(4096))
+            os.fsync(fd)
+    finally:
+        os.close(fd)
+        Path(tmp).unlink(missing_ok=True)
+
+
 def sweep_stale(target: Path) -> list[Path]:
     """Remove temporary files left beside ``target`` by writers that were killed (SIGKILL
     gives no chance to clean up): their names carry the writer's pid, and a temporary file
