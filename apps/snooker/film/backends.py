@@ -108,7 +108,7 @@ class DaskCluster:
         from distributed import Client, LocalCluster
 
         self._cluster: Any = None
-        self._render = render
+        self._render, self._scene_obj, self._timeout = render, scene, timeout_s
         if address == "local":
             n = workers or os.cpu_count() or 1
             # The scheduler always serves HTTP; with no address it takes port 8787 and, when
@@ -122,15 +122,22 @@ class DaskCluster:
         self.workers = max(1, len(self._client.scheduler_info()["workers"]))
         where = self._client.scheduler_info()["address"]
         self.name = f"Dask cluster at {where} ({self.workers} workers)"
-        self._scene = self._client.scatter(scene, broadcast=True, hash=False)
+        self._scatter()
+
+    def _scatter(self) -> None:
+        """The scene to every worker (again, once the workers holding it are all gone)."""
+        self._client.wait_for_workers(1, timeout=self._timeout)
+        self._scene = self._client.scatter(self._scene_obj, broadcast=True, hash=False)
 
     def submit(self, task: FrameTask) -> Future:
+        if self._scene.status != "finished":  # lost with every worker that held it
+            self._scatter()
         # pure=False: a frame asked for again (a retry) is computed again, not looked up
         dask_future = self._client.submit(self._render, self._scene, task, pure=False)
         return _as_concurrent(dask_future)
 
     def restart(self) -> None:
-        pass  # the scheduler moves a dead worker's tasks by itself
+        pass  # the scheduler moves a dead worker's tasks; submit re-sends a lost scene
 
     def close(self) -> None:
         self._client.close()
