@@ -209,13 +209,14 @@ def _sigma(args: argparse.Namespace, scene, views, out: Path) -> str:  # noqa: A
 def _record(scene, views, out: Path, render: SigmaFrames) -> None:  # noqa: ANN001
     """The frames just drawn, in the resume record (a parallel rerun skips them)."""
     from apps.snooker.film.pipeline import FilmLook, film_digest
-    from apps.snooker.film.schedule import Manifest
+    from apps.snooker.film.schedule import Manifest, frame_file
     from apps.snooker.film.task import task_key
 
     look = FilmLook(specks=render.specks)
     record, digest = Manifest(out / RECORD), film_digest(scene, render)
     for v in views:
-        record.put(int(v.frame), task_key(digest, look.task(v)))
+        png = frame_file(out, int(v.frame)).read_bytes()  # what was just moved into place
+        record.put(int(v.frame), task_key(digest, look.task(v)), png)
     record.save()
 
 
