@@ -10,8 +10,11 @@ cluster needs no shared disk.
 
 from __future__ import annotations
 
+import contextlib
+import logging
 import multiprocessing
 import os
+import signal
 from collections.abc import Callable
 from concurrent.futures import Future, ProcessPoolExecutor
 from typing import Any, Protocol
@@ -38,6 +41,7 @@ class Backend(Protocol):
 def _init_worker(scene: Scene, render: Render) -> None:
     global _WORKER_SCENE, _WORKER_RENDER
     _WORKER_SCENE, _WORKER_RENDER = scene, render
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the command's to answer
 
 
 def _render_here(task: FrameTask) -> bytes:
@@ -114,8 +118,10 @@ class DaskCluster:
             # The scheduler always serves HTTP; with no address it takes port 8787 and, when
             # another cluster holds it, warns (an error under the tests' warning filter):
             # a free port of the loopback's instead.
+            # its workers ignore Ctrl-C (quiet_worker): the command answers it, in one line
             self._cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                         dashboard_address="127.0.0.1:0", host="127.0.0.1")
+                                         dashboard_address="127.0.0.1:0", host="127.0.0.1",
+                                         preload=["apps.snooker.film.quiet_worker"])
             self._client = Client(self._cluster, timeout=timeout_s)
         else:
             self._client = Client(address, timeout=timeout_s)
@@ -140,9 +146,24 @@ class DaskCluster:
         pass  # the scheduler moves a dead worker's tasks; submit re-sends a lost scene
 
     def close(self) -> None:
-        self._client.close()
-        if self._cluster is not None:
-            self._cluster.close()
+        # stopping a cluster of our own: its workers' and scheduler's parting complaints
+        # (lost data, a busy worker killed) are not the user's news
+        quiet = contextlib.nullcontext() if self._cluster is None else _quiet("distributed")
+        with quiet:
+            self._client.close()
+            if self._cluster is not None:
+                self._cluster.close()
+
+
+@contextlib.contextmanager
+def _quiet(name: str):  # noqa: ANN202
+    log = logging.getLogger(name)
+    level = log.level
+    log.setLevel(logging.CRITICAL)
+    try:
+        yield
+    finally:
+        log.setLevel(level)
 
 
 def _as_concurrent(dask_future: Any) -> Future:

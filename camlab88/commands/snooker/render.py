@@ -116,6 +116,10 @@ def render(args: argparse.Namespace) -> int:
         views = select_views(read_views(args.views), scene, args.first, args.last,
                              str(args.views))
         return _render(args, scene, views)
+    except KeyboardInterrupt:  # one line; cli.main gives the exit status (130, or 143)
+        print(f"{COMMAND}: interrupted; the frames written so far stay, and the same "
+              "command resumes from them", file=sys.stderr)
+        raise
     except (CheckpointError, SessionError, ViewFileError, LightsError, SequenceError,
             FilmError, OSError) as exc:
         return fail(COMMAND, exc)
