@@ -80,12 +80,13 @@ def temp_beside(target: Path, suffix: str = "") -> tuple[int, str]:
             raise type(exc)(exc.errno, exc.strerror, None) from None
 
 
-def commit(tmp: str | os.PathLike[str], target: Path) -> None:
+def commit(tmp: str | os.PathLike[str], target: Path, sync_dir: bool = True) -> None:
     """Make the fsynced temporary ``tmp`` the file ``target`` (mode as the umask gives)."""
     with naming_user_path(target, os.fspath(tmp)):
         os.chmod(tmp, _shared_mode())
         os.replace(tmp, target)
-    fsync_dir(target.parent)
+    if sync_dir:
+        fsync_dir(target.parent)
 
 
 def probe(path: str | os.PathLike[str]) -> None:
@@ -228,5 +229,7 @@ class AtomicBatch:
             for tmp, _ in self.staged:
                 tmp.unlink(missing_ok=True)
             return
-        for tmp, target in self.staged:
-            commit(tmp, target)
+        for tmp, target in self.staged:  # back to back: the directories synced after
+            commit(tmp, target, sync_dir=False)
+        for folder in {target.parent for _, target in self.staged}:
+            fsync_dir(folder)
