@@ -110,6 +110,7 @@ class RecordedInput(Plugin):
             if d == "+":
                 self.wire.setdefault(tick - 1, []).append(data)  # recorded after the tick
         self.end_tick = rec.ticks
+        self.end_frame = rec.end.frame if rec.end is not None else None
 
     def handle_events(self, harness: Harness, events: list[HostEvent]) -> list[HostEvent]:
         put = getattr(harness.target, "put_wire", None)
@@ -120,7 +121,8 @@ class RecordedInput(Plugin):
         return self.events.get(harness.ticks, []) + window_quit
 
     def post_tick(self, harness: Harness) -> None:
-        if harness.ticks >= self.end_tick:
+        past = self.end_frame is not None and harness.frames_shown > self.end_frame
+        if harness.ticks >= self.end_tick or past:  # past the recorded end: it differs
             harness.stop()
 
 

@@ -3,8 +3,9 @@
 Every refusal names the file, line and column: bad UTF-8 or JSON, an unknown record type, a
 missing or mistyped key, another format, a newer version, ticks going back, a time that does
 not go with its tick (back in time, or two times for one tick), a screen hash at a frame no
-run can reach (not after the previous, more frames than ticks, past the end, off the
-``hash_every`` grid), a file whose content does not match its hash, more inflated data than
+run can reach (not the next multiple of ``hash_every``, more frames than ticks, past the
+end), an end whose frames the hashes do not cover (so the frames a replay runs are bounded
+by the file's size), a file whose content does not match its hash, more inflated data than
 ``MAX_TOTAL``, or no ``end`` record (a truncated recording).
 """
 
@@ -165,16 +166,17 @@ class _Reader:
 
     def _hash(self, obj: dict[str, Any]) -> None:
         frame, every = obj["frame"], self.rec.hash_every  # type: ignore[union-attr]
-        if frame <= self.last_frame or frame % every:
+        if frame != self.last_frame + every:  # the recorder hashes every multiple
             raise self.fail(f"hash record: frame {frame} is not the next multiple of "
                             f"hash_every {every} after frame {self.last_frame}")
         self.rec.hashes.append(self._screen(obj, frame))  # type: ignore[union-attr]
         self.last_frame = frame
 
     def _end(self, obj: dict[str, Any]) -> None:
-        if obj["frames"] < self.last_frame:
-            raise self.fail(f"end record: {obj['frames']} frames, but a screen hash at frame "
-                            f"{self.last_frame}")
+        every = self.rec.hash_every  # type: ignore[union-attr]
+        if not self.last_frame <= obj["frames"] < self.last_frame + every:
+            raise self.fail(f"end record: {obj['frames']} frames, but the screen hashes "
+                            f"(every {every} frames) stop at frame {self.last_frame}")
         self.rec.end = self._screen(obj, obj["frames"])  # type: ignore[union-attr]
         self.rec.ticks = obj["ticks"]  # type: ignore[union-attr]
         self.ended = True
