@@ -178,3 +178,16 @@ def test_outputs_of_the_recorded_run_are_neither_written_nor_announced(  # noqa:
     assert main(["replay", str(DATA / "kas_edit.session"), "--check", "--headless"]) == 0
     said = capsys.readouterr()
     assert "saved" not in said.err + said.out, said
+
+
+def test_a_rainbow_replay_neither_writes_nor_announces_the_command_stream(  # noqa: ANN001
+        tmp_path: Path, capsys, monkeypatch) -> None:
+    monkeypatch.chdir(tmp_path)
+    assert main(["rainbow", "run", "--headless", "--stop-after", "12", "--record",
+                 "r.session", "--record-stream", "rb.stream"]) == 0
+    (tmp_path / "rb.stream").unlink()
+    capsys.readouterr()
+    assert main(["replay", "r.session", "--check", "--headless"]) == 0
+    said = capsys.readouterr()
+    assert "recorded the command stream" not in said.out + said.err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["r.session"]
