@@ -47,8 +47,9 @@ def rewrite_argv(argv: list[str]) -> list[str]:
     """Every path pointing outside the scratch directory (an input or an output) moved in
     (run with the scratch directory as the working directory)."""
     out = []
-    for a in argv:  # --opt=value and a Tripos KEY=value: the value is the path
-        opt, eq, value = a.partition("=") if "=" in a else ("", "", a)
+    for a in argv:  # the value of --opt=value and of a Tripos KEY=value, else the word
+        keyed = "=" in a and "/" not in a.split("=", 1)[0]
+        opt, eq, value = a.partition("=") if keyed else ("", "", a)
         moved = _inside(value) if value else None
         if value.startswith("_out/"):  # an output the policy moved into the scratch directory
             Path(value).parent.mkdir(parents=True, exist_ok=True)

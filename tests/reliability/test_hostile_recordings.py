@@ -156,6 +156,18 @@ def test_a_tripos_key_value_path_cannot_write_outside(tmp_path: Path, capsys) ->
     assert sorted(p.name for p in tmp_path.iterdir()) == ["hostile.session"]
 
 
+def test_every_path_that_leaves_the_scratch_directory_is_moved_in(  # noqa: ANN001
+        tmp_path: Path, monkeypatch) -> None:
+    from camlab88.session_replay import rewrite_argv
+
+    monkeypatch.chdir(tmp_path)  # where the replay's scratch directory would be
+    got = rewrite_argv(["kas", "edit", "../../x=y", "--over=/etc/k.kas", "Log=../../l",
+                        "--script", "/etc/s.txt", "plain=word", "in/side.kas"])
+    assert got == ["kas", "edit", "_outside/x=y", "--over=_outside/etc/k.kas",
+                   "Log=_outside/l", "--script", "_outside/etc/s.txt", "plain=word",
+                   "in/side.kas"]
+
+
 @pytest.mark.parametrize("name", ["", ".", "a/..", "../../..", "/"])
 def test_input_file_names_that_are_not_files_are_refused(tmp_path: Path, capsys,  # noqa: ANN001
                                                          name: str) -> None:
