@@ -41,6 +41,8 @@ def test_ctrl_c_on_a_local_dask_film_is_one_line(tmp_path: Path) -> None:
             os.killpg(proc.pid, signal.SIGKILL)
             proc.communicate()
     assert proc.returncode == 130
-    assert err.strip().splitlines() == [
+    said = [line for line in err.strip().splitlines()  # a cold kernel cache says so: news
+            if not line.startswith("camlab88: compiling")]
+    assert said == [
         "camlab88 snooker film: interrupted; the frames written so far stay, and the same "
         "command resumes from them"], err
