@@ -10,6 +10,7 @@ stays fast.
 from __future__ import annotations
 
 import argparse
+import errno
 import importlib
 import sys
 from collections.abc import Sequence
@@ -119,12 +120,29 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 130
     except BrokenPipeError:
         return 0
+    except OSError as exc:
+        return _write_fault(words, exc)
     finally:
         if previous is not None:
             import signal
 
             signal.signal(signal.SIGTERM, previous)
     return int(result or 0)
+
+
+# what a full disk, a read-only mount or a directory in the way does to a writer
+_WRITE_FAULTS = {errno.ENOSPC, errno.EDQUOT, errno.EROFS, errno.EISDIR, errno.ENOTDIR,
+                 errno.EACCES, errno.EPERM, errno.EFBIG, errno.EIO}
+
+
+def _write_fault(words: list[str], exc: OSError) -> int:
+    """A write that failed, as one line naming the user's file (the atomic writers leave
+    the old file as it was and name the user's path, never their temporary file)."""
+    if exc.filename is None or exc.errno not in _WRITE_FAULTS:
+        raise exc
+    command = " ".join(["camlab88", *[w for w in words[:2] if not w.startswith("-")]])
+    print(f"{command}: {exc.filename}: {exc.strerror}", file=sys.stderr)
+    return 1
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -78,11 +78,31 @@ def run_options(args: argparse.Namespace, command: str, can_headless: str | None
 
 def _check_writable(command: str, path: Path, doing: str) -> None:
     """Refuse at the start, not after the session, a file that cannot be written."""
+    check_output(command, path, doing)
+
+
+def check_output(command: str, path: Path, doing: str = "write") -> None:
+    """Refuse at the start, not after the work, an output that cannot be written: a
+    directory, or a file in a directory that is missing, read-only or not ours. A device
+    or FIFO is written into (protocols.atomicfile), so only it must be writable."""
     import os
 
+    if path.is_dir():
+        raise SystemExit(f"{command}: cannot {doing} {path}: it is a directory")
+    if path.exists() and not path.is_file():
+        if not os.access(path, os.W_OK):
+            raise SystemExit(f"{command}: cannot {doing} {path}: not writable")
+        return
     parent = path.parent if str(path.parent) else Path(".")
     if not parent.is_dir() or not os.access(parent, os.W_OK):
-        raise SystemExit(f"{command}: cannot {doing} {path}: no writable directory {parent}")
+        why = "read-only" if parent.is_dir() else "missing"
+        raise SystemExit(f"{command}: cannot {doing} {path}: its directory {parent} is {why}")
+    from protocols.atomicfile import probe
+
+    try:
+        probe(path)  # a full disk shows now, not after the run
+    except OSError as exc:
+        raise SystemExit(f"{command}: cannot {doing} {path}: {exc.strerror}") from None
 
 
 def fail(command: str, message: object, status: int = 2) -> int:

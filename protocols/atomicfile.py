@@ -3,12 +3,20 @@
 Every saved session, checkpoint, recording, keyframe and picture goes through here, so a
 crash, a full disk or a bad path mid-save never loses what was saved before. It lives in
 protocols/ because every layer (apps, emulator, the command line) may import protocols.
+
+Only a regular file (or a new name) is replaced by renaming a temporary file over it. A
+path that names a character device or a FIFO (``--out /dev/stdout``, a named pipe) is
+written *into*, never replaced; a symbolic link is followed and its target written (the
+link stays). A directory is refused. Every error names the user's path, never the
+temporary file (``p.kas: No space left on device``, not ``.p.kas.3802.x1y2.tmp: ...``).
 """
 
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
+import stat
 import tempfile
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -31,6 +39,71 @@ def _alive(pid: int) -> bool:
     except PermissionError:  # someone else's process: alive
         return True
     return True
+
+
+def output_target(path: str | os.PathLike[str]) -> tuple[Path, bool]:
+    """The file to write for ``path`` (a symlink's target) and whether it is written into
+    in place (a device or FIFO) rather than replaced; a directory raises IsADirectoryError."""
+    target = Path(path)
+    if target.is_symlink():
+        target = Path(os.path.realpath(target))
+    try:
+        mode = os.stat(target).st_mode
+    except OSError:
+        return target, False  # a new file (a bad directory is reported when writing)
+    if stat.S_ISDIR(mode):
+        raise IsADirectoryError(errno.EISDIR, os.strerror(errno.EISDIR), os.fspath(path))
+    return target, not stat.S_ISREG(mode)
+
+
+@contextmanager
+def naming_user_path(path: str | os.PathLike[str], tmp: str | None = None) -> Iterator[None]:
+    """An OSError about the temporary file (or about no file: a write on a full disk)
+    re-raised naming ``path``, the name the user gave."""
+    try:
+        yield
+    except OSError as exc:
+        if exc.filename is not None and (tmp is None or exc.filename != tmp):
+            raise
+        raise type(exc)(exc.errno, exc.strerror or str(exc), os.fspath(path)) from None
+
+
+def temp_beside(target: Path, suffix: str = "") -> tuple[int, str]:
+    """A new temporary file beside ``target``, named ``.<name>.<pid>.<random>.tmp<suffix>``
+    so that ``sweep_stale`` removes it if this writer is killed; errors name ``target``."""
+    sweep_stale(target)
+    with naming_user_path(target):
+        try:
+            return tempfile.mkstemp(prefix=f".{target.name}.{os.getpid()}.",
+                                    suffix=f".tmp{suffix}", dir=str(target.parent) or ".")
+        except OSError as exc:  # mkstemp names its random file: name the user's
+            raise type(exc)(exc.errno, exc.strerror, None) from None
+
+
+def commit(tmp: str | os.PathLike[str], target: Path, sync_dir: bool = True) -> None:
+    """Make the fsynced temporary ``tmp`` the file ``target`` (mode as the umask gives)."""
+    with naming_user_path(target, os.fspath(tmp)):
+        os.chmod(tmp, _shared_mode())
+        os.replace(tmp, target)
+    if sync_dir:
+        fsync_dir(target.parent)
+
+
+def probe(path: str | os.PathLike[str]) -> None:
+    """Check now, before a long run, that ``path`` can be written: a block written and
+    synced to a temporary file beside it (then removed) fails on a full disk, a read-only
+    mount or a directory in the way; the OSError names ``path``."""
+    target, into = output_target(path)
+    if into:
+        return
+    fd, tmp = temp_beside(target)
+    try:
+        with naming_user_path(path, tmp):
+            os.write(fd, bytes(4096))
+            os.fsync(fd)
+    finally:
+        os.close(fd)
+        Path(tmp).unlink(missing_ok=True)
 
 
 def sweep_stale(target: Path) -> list[Path]:
@@ -75,18 +148,19 @@ def atomic_output(path: str | os.PathLike[str], mode: str = "wb",
     """Open a temporary file beside ``path`` for writing; on success fsync it and rename it
     over ``path``; on any error remove it and leave ``path`` untouched. The temporary name
     is ``.<name>.<pid>.<random>.tmp``, so a later write sweeps up one a killed writer left."""
-    target = Path(path)
-    sweep_stale(target)
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.{os.getpid()}.", suffix=".tmp",
-                               dir=str(target.parent) or ".")
+    target, into = output_target(path)
+    if into:  # a device or FIFO: written into, in place
+        with naming_user_path(path), open(target, mode, encoding=encoding, newline=newline) as fh:
+            yield fh
+        return
+    fd, tmp = temp_beside(target)
     try:
-        with os.fdopen(fd, mode, encoding=encoding, newline=newline) as fh:
+        with naming_user_path(path, tmp), os.fdopen(fd, mode, encoding=encoding,
+                                              newline=newline) as fh:
             yield fh
             fh.flush()
             os.fsync(fh.fileno())
-        os.chmod(tmp, _shared_mode())
-        os.replace(tmp, target)
-        fsync_dir(target.parent)
+        commit(tmp, target)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
@@ -105,18 +179,19 @@ def atomic_path(path: str | os.PathLike[str]) -> Iterator[Path]:
     """For writers that need a file name (ffmpeg, imageio): a temporary path beside ``path``
     with the same suffix; when the block ends it is fsynced and renamed over ``path``, on
     any error removed. Killed writers' leftovers are swept as in ``atomic_output``."""
-    target = Path(path)
-    sweep_stale(target)
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.{os.getpid()}.",
-                               suffix=f".tmp{target.suffix}", dir=str(target.parent) or ".")
+    target, into = output_target(path)
+    if into:  # a device or FIFO: the writer opens it by name and writes into it
+        with naming_user_path(path):
+            yield target
+        return
+    fd, tmp = temp_beside(target, target.suffix)
     os.close(fd)
     try:
-        yield Path(tmp)
-        with open(tmp, "rb+") as fh:
-            os.fsync(fh.fileno())
-        os.chmod(tmp, _shared_mode())
-        os.replace(tmp, target)
-        fsync_dir(target.parent)
+        with naming_user_path(path, tmp):
+            yield Path(tmp)
+            with open(tmp, "rb+") as fh:
+                os.fsync(fh.fileno())
+        commit(tmp, target)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
@@ -127,22 +202,24 @@ class AtomicBatch:
     its target (written and fsynced at once, so memory stays flat); leaving the ``with``
     block renames them all into place, one after another, only when every one was written.
     An error or a kill before then leaves every old file as it was (a kill leaves staged
-    temporaries that the next write sweeps up). Used for a PNG sequence."""
+    temporaries that the next write sweeps up). Used for a PNG sequence. A device or FIFO
+    among the paths is written into at once (it has no old content to keep)."""
 
     def __init__(self) -> None:
         self.staged: list[tuple[Path, Path]] = []
 
     def add(self, path: str | os.PathLike[str], data: bytes) -> None:
-        target = Path(path)
-        sweep_stale(target)
-        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.{os.getpid()}.", suffix=".tmp",
-                                   dir=str(target.parent) or ".")
+        target, into = output_target(path)
+        if into:
+            with naming_user_path(path), open(target, "wb") as fh:
+                fh.write(data)
+            return
+        fd, tmp = temp_beside(target)
         self.staged.append((Path(tmp), target))
-        with os.fdopen(fd, "wb") as fh:
+        with naming_user_path(path, tmp), os.fdopen(fd, "wb") as fh:
             fh.write(data)
             fh.flush()
             os.fsync(fh.fileno())
-        os.chmod(tmp, _shared_mode())
 
     def __enter__(self) -> AtomicBatch:
         return self
@@ -152,7 +229,7 @@ class AtomicBatch:
             for tmp, _ in self.staged:
                 tmp.unlink(missing_ok=True)
             return
-        for tmp, target in self.staged:
-            os.replace(tmp, target)
+        for tmp, target in self.staged:  # back to back: the directories synced after
+            commit(tmp, target, sync_dir=False)
         for folder in {target.parent for _, target in self.staged}:
             fsync_dir(folder)

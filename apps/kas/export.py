@@ -13,7 +13,7 @@ import numpy as np
 
 from apps.kas.model import AnimSequence, Drawing
 from apps.kas.raster import render
-from protocols.atomicfile import AtomicBatch, atomic_path
+from protocols.atomicfile import AtomicBatch, atomic_path, write_atomic
 from protocols.png import png_bytes
 
 Progress = Callable[[int, int], None]
@@ -49,22 +49,38 @@ def export(seq: AnimSequence, out: str | os.PathLike[str], width: int = 768,
     if ext == ".png":
         _png_sequence(out, frames())
         return out.with_name(f"{out.stem}_0001.png")
+    if ext == ".gif":  # made in memory, so a full disk cannot strand a half-open writer
+        data = iio.imwrite("<bytes>", np.stack(list(frames())), extension=".gif",
+                           duration=1000 / seq.fps, loop=0)
+        write_atomic(out, data)
+        return out
     with atomic_path(out) as tmp:
-        if ext == ".gif":
-            stack = np.stack(list(frames()))
-            iio.imwrite(tmp, stack, extension=".gif", duration=1000 / seq.fps, loop=0)
-        else:
-            import imageio.v2 as iio2
-
-            # Even dimensions for yuv420p; macro_block_size=1 keeps the exact size.
-            with iio2.get_writer(tmp, format="FFMPEG", mode="I", fps=seq.fps,
-                                 codec="libx264", macro_block_size=1,
-                                 ffmpeg_log_level="error",
-                                 output_params=["-pix_fmt", "yuv420p"]) as wr:
-                for img in frames():
-                    h, w = img.shape[:2]
-                    wr.append_data(img[: h - h % 2, : w - w % 2])
+        _mp4(tmp, out, seq.fps, frames())
     return out
+
+
+def _mp4(tmp: Path, out: Path, fps: float, frames: Iterator[np.ndarray]) -> None:
+    """The frames as H.264 through ffmpeg; its failure is one OSError naming ``out``
+    (ffmpeg says only "broken pipe" when the disk fills)."""
+    import errno
+    import shutil
+
+    import imageio.v2 as iio2
+
+    try:  # even dimensions for yuv420p; macro_block_size=1 keeps the exact size
+        with iio2.get_writer(tmp, format="FFMPEG", mode="I", fps=fps, codec="libx264",
+                             macro_block_size=1, ffmpeg_log_level="quiet",
+                             output_params=["-pix_fmt", "yuv420p"]) as wr:
+            for img in frames:
+                h, w = img.shape[:2]
+                wr.append_data(img[: h - h % 2, : w - w % 2])
+    except (OSError, RuntimeError) as exc:
+        if isinstance(exc, OSError) and exc.errno not in (errno.EPIPE, None):
+            raise
+        full = shutil.disk_usage(tmp.parent).free == 0
+        code = errno.ENOSPC if full else errno.EIO
+        why = os.strerror(code) if full else "ffmpeg could not write the video"
+        raise OSError(code, why, os.fspath(out)) from None
 
 
 def _png_sequence(out: Path, frames: Iterator[np.ndarray]) -> None:

@@ -40,12 +40,17 @@ class Mismatch:
     got: str
 
     def describe(self) -> str:
+        want, got = _short(self.expected, self.got), _short(self.got, self.expected)
         return (f"frame {self.frame} (tick {self.tick}, t = {float(self.time):.3f} s) differs "
-                f"from the recording: expected {_short(self.expected)}, got {_short(self.got)}")
+                f"from the recording: expected {want}, got {got}")
 
 
-def _short(text: str) -> str:
-    return text[:16] if len(text) == 64 else text
+def _short(text: str, other: str) -> str:
+    """A hash cut to 16 digits, or as many more as it takes to differ from ``other``."""
+    if len(text) != 64:
+        return text
+    same = next((i for i, (a, b) in enumerate(zip(text, other, strict=False)) if a != b), 64)
+    return text[:max(16, same + 4)]
 
 
 @dataclass
@@ -105,6 +110,7 @@ class RecordedInput(Plugin):
             if d in ("+", "-"):  # recorded after the tick: fed back before it, in order
                 self.wire.setdefault(tick - 1, []).append((d, data))
         self.end_tick = rec.ticks
+        self.end_frame = rec.end.frame if rec.end is not None else None
 
     def handle_events(self, harness: Harness, events: list[HostEvent]) -> list[HostEvent]:
         put = getattr(harness.target, "put_wire", None)
@@ -118,7 +124,8 @@ class RecordedInput(Plugin):
         return self.events.get(harness.ticks, []) + window_quit
 
     def post_tick(self, harness: Harness) -> None:
-        if harness.ticks >= self.end_tick:
+        past = self.end_frame is not None and harness.frames_shown > self.end_frame
+        if harness.ticks >= self.end_tick or past:  # past the recorded end: it differs
             harness.stop()
 
 
@@ -137,9 +144,14 @@ class HashCheck(Plugin):
     def _compare(self, harness: Harness, want: ScreenHash, frame: np.ndarray) -> None:
         got = screen_hash(frame)
         self.replay.compared += 1
-        if got != want.sha256:
-            self.replay.mismatch = Mismatch(want.frame, harness.ticks, harness.target.time(),
-                                            want.sha256, got)
+        now = harness.target.time()
+        if (harness.ticks, now) != (want.tick, want.time):  # an altered tick or time
+            self.replay.mismatch = Mismatch(want.frame, harness.ticks, now,
+                                            _when(want.tick, want.time),
+                                            _when(harness.ticks, now))
+        elif got != want.sha256:
+            self.replay.mismatch = Mismatch(want.frame, harness.ticks, now, want.sha256, got)
+        if self.replay.mismatch is not None:
             harness.stop()
 
     def finish(self, harness: Harness) -> None:
@@ -149,13 +161,19 @@ class HashCheck(Plugin):
                                        harness.target.time(), screen_hash(frame))
         if not self.replay.check or self.replay.mismatch is not None or end is None:
             return
-        if harness.frames_shown != end.frame or harness.ticks != end.tick:
+        if (harness.frames_shown, harness.ticks, harness.target.time()) != \
+                (end.frame, end.tick, end.time):
             self.replay.mismatch = Mismatch(
                 min(end.frame, harness.frames_shown), harness.ticks, harness.target.time(),
-                f"the end at frame {end.frame}, tick {end.tick}",
-                f"the end at frame {harness.frames_shown}, tick {harness.ticks}")
+                f"the end at frame {end.frame}, {_when(end.tick, end.time)}",
+                f"the end at frame {harness.frames_shown}, "
+                f"{_when(harness.ticks, harness.target.time())}")
             return
         self.replay.compared += 1
         got = self.replay.ended.sha256
         if got != end.sha256:
             self.replay.mismatch = Mismatch(end.frame, end.tick, end.time, end.sha256, got)
+
+
+def _when(tick: int, time: Fraction) -> str:
+    return f"tick {tick}, time {time} s"

@@ -20,15 +20,16 @@ it into place on close, so a recording is either whole or absent.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import re
-import tempfile
 from collections.abc import Iterable
 from dataclasses import dataclass
 from fractions import Fraction
 from pathlib import Path
 from typing import IO
 
+from protocols.atomicfile import commit, naming_user_path, output_target, temp_beside
 from protocols.link.clock import TimeLike, to_time
 from protocols.link.line import XOFF, XON
 from protocols.link.settings import LineSettings
@@ -45,13 +46,6 @@ MAX_MERGED_CHUNK = 4096  # back-to-back pieces are merged into chunks up to abou
 _DECIMAL = re.compile(r"^[0-9]+(\.[0-9]+)?\Z")
 _RATIO = re.compile(r"^[0-9]+/[1-9][0-9]*\Z")
 _HEX = re.compile(r"^(?:[0-9a-fA-F]{2})+$")
-
-
-def public_mode() -> int:
-    """rw for everyone the umask allows: mkstemp's files are private (0600) otherwise."""
-    mask = os.umask(0)
-    os.umask(mask)
-    return 0o666 & ~mask
 
 
 class RecordingError(ValueError):
@@ -185,8 +179,12 @@ class Recorder:
         # Per direction, the last chunk, held back so back-to-back pieces become one chunk.
         self._held: dict[str, tuple[Fraction, bytes]] = {}
         self.path.parent.mkdir(parents=True, exist_ok=True)
-        fd, self._tmp = tempfile.mkstemp(prefix=f".{self.path.name}.", dir=self.path.parent)
-        os.chmod(self._tmp, public_mode())
+        # the temporary name the stale-temp sweep knows (.NAME.PID.RANDOM.tmp); a directory
+        # at the path is refused now, not when the line closes
+        target, self._into = output_target(self.path)
+        fd, self._tmp = (os.open(target, os.O_WRONLY), "") if self._into else \
+            temp_beside(target)
+        self._target = target
         self._fh: IO[str] = os.fdopen(fd, "w", encoding="utf-8", newline="\n")
         self._fh.write(
             f"{MAGIC} {VERSION}\nline {settings}\nxonxoff {'on' if xonxoff else 'off'}\n"
@@ -224,19 +222,32 @@ class Recorder:
         for direction in DIRECTIONS:
             self._write_held(direction)
         self.closed = True
-        self._fh.write(f"end {self.count}\n")
-        self._fh.flush()
-        os.fsync(self._fh.fileno())
-        self._fh.close()
-        os.replace(self._tmp, self.path)
+        try:
+            with naming_user_path(self.path, self._tmp):
+                self._fh.write(f"end {self.count}\n")
+                self._fh.flush()
+                if not self._into:
+                    os.fsync(self._fh.fileno())
+                self._fh.close()
+            if not self._into:
+                commit(self._tmp, self._target)
+        except OSError:
+            self._discard()
+            raise
         return self.path
+
+    def _discard(self) -> None:
+        with contextlib.suppress(OSError):
+            self._fh.close()
+        if self._tmp:
+            with contextlib.suppress(OSError):
+                os.unlink(self._tmp)
 
     def abort(self) -> None:
         """Discard the recording (nothing is written at ``path``)."""
         if not self.closed:
             self.closed = True
-            self._fh.close()
-            os.unlink(self._tmp)
+            self._discard()
 
     def __enter__(self) -> Recorder:
         return self

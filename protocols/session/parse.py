@@ -1,8 +1,12 @@
 """Reading a session recording (format: protocols.session.format), checking every record.
 
 Every refusal names the file, line and column: bad UTF-8 or JSON, an unknown record type, a
-missing or mistyped key, another format, a newer version, ticks going back, a file whose
-content does not match its hash, or no ``end`` record (a truncated recording).
+missing or mistyped key, another format, a newer version, ticks going back, a time that does
+not go with its tick (back in time, or two times for one tick), a screen hash at a frame no
+run can reach (not the next multiple of ``hash_every``, more frames than ticks, past the
+end), an end whose frames the hashes do not cover (so the frames a replay runs are bounded
+by the file's size), a file whose content does not match its hash, more inflated data than
+``MAX_TOTAL``, or no ``end`` record (a truncated recording).
 """
 
 from __future__ import annotations
@@ -26,6 +30,7 @@ from protocols.session.format import (
 )
 
 MAX_DATA = 256 * 1024 * 1024  # one record's data, inflated: more is a damaged or hostile file
+MAX_TOTAL = 1024 * 1024 * 1024  # all records' data together, inflated
 MAX_COUNT = 10**12  # ticks, frames, hash_every: 10^12 ticks is centuries of virtual time
 # what str(Fraction) writes (and a decimal by hand); no exponent, so '1e99999999999' cannot
 # make Fraction compute 10**99999999999
@@ -38,6 +43,9 @@ class _Reader:
         self.line = 0
         self.rec: SessionRecording | None = None
         self.last_tick = 0
+        self.last_time: tuple[int, Fraction] | None = None  # (tick, time) of the last
+        self.last_frame = 0
+        self.total = 0
         self.ended = False
 
     def fail(self, message: str, col: int = 1) -> SessionFileError:
@@ -116,6 +124,9 @@ class _Reader:
             raise self.fail("data is not zlib-compressed") from None
         if len(data) > MAX_DATA or not inflate.eof:
             raise self.fail(f"data is damaged or larger than {MAX_DATA} bytes")
+        self.total += len(data)
+        if self.total > MAX_TOTAL:
+            raise self.fail(f"the records' data comes to more than {MAX_TOTAL} bytes")
         return data
 
     def body(self, obj: dict[str, Any]) -> None:
@@ -134,7 +145,19 @@ class _Reader:
         self.rec.files[obj["name"]] = data  # type: ignore[union-attr]
 
     def _event(self, obj: dict[str, Any]) -> None:
-        self.rec.events.append((self.tick(obj), self.time(obj["time"]), obj["event"]))  # type: ignore[union-attr]
+        tick = self.tick(obj)
+        self.rec.events.append((tick, self.timed(tick, obj["time"]), obj["event"]))  # type: ignore[union-attr]
+
+    def timed(self, tick: int, text: str) -> Fraction:
+        """The time at ``tick``: never back, and one time for one tick."""
+        t = self.time(text)
+        if self.last_time is not None:
+            last_tick, last = self.last_time
+            if t < last or (tick == last_tick and t != last):
+                raise self.fail(f"time {text} at tick {tick} does not go with time {last} at "
+                                f"tick {last_tick}")
+        self.last_time = (tick, t)
+        return t
 
     def _wire(self, obj: dict[str, Any]) -> None:
         if obj["dir"] not in (">", "<", "+", "-", "T"):
@@ -142,9 +165,18 @@ class _Reader:
         self.rec.wire.append((self.tick(obj), obj["dir"], self.data(obj["data"])))  # type: ignore[union-attr]
 
     def _hash(self, obj: dict[str, Any]) -> None:
-        self.rec.hashes.append(self._screen(obj, obj["frame"]))  # type: ignore[union-attr]
+        frame, every = obj["frame"], self.rec.hash_every  # type: ignore[union-attr]
+        if frame != self.last_frame + every:  # the recorder hashes every multiple
+            raise self.fail(f"hash record: frame {frame} is not the next multiple of "
+                            f"hash_every {every} after frame {self.last_frame}")
+        self.rec.hashes.append(self._screen(obj, frame))  # type: ignore[union-attr]
+        self.last_frame = frame
 
     def _end(self, obj: dict[str, Any]) -> None:
+        every = self.rec.hash_every  # type: ignore[union-attr]
+        if not self.last_frame <= obj["frames"] < self.last_frame + every:
+            raise self.fail(f"end record: {obj['frames']} frames, but the screen hashes "
+                            f"(every {every} frames) stop at frame {self.last_frame}")
         self.rec.end = self._screen(obj, obj["frames"])  # type: ignore[union-attr]
         self.rec.ticks = obj["ticks"]  # type: ignore[union-attr]
         self.ended = True
@@ -154,7 +186,9 @@ class _Reader:
         if len(sha) != 64 or any(c not in "0123456789abcdef" for c in sha):
             raise self.fail("sha256 must be 64 lowercase hex digits")
         tick = self.tick(obj, "tick" if "tick" in obj else "ticks")
-        return ScreenHash(frame, tick, self.time(obj["time"]), sha)
+        if frame > tick:  # a run shows at most one frame a tick
+            raise self.fail(f"{obj['type']} record: frame {frame} after only {tick} ticks")
+        return ScreenHash(frame, tick, self.timed(tick, obj["time"]), sha)
 
 
 def parse_lines(raw: bytes, name: str) -> SessionRecording:

@@ -100,14 +100,16 @@ def test_edit_in_a_window_dummy_driver(tmp_path, capsys) -> None:  # noqa: ANN00
 
 def test_failed_f2_save_keeps_editing_and_says_not_saved(tmp_path, capsys) -> None:  # noqa: ANN001
     # F2 into a directory that does not exist: an OSError on the message line, the drawing
-    # stays, the script goes on drawing, and the summary does not claim "saved".
+    # stays, the script goes on drawing, the summary does not claim "saved", and the run
+    # exits 1 saying why (a script run must not report success when its save failed).
     script = tmp_path / "s.txt"
     script.write_text("down 0 0\nup 0 0\ndown 1 1\nup 1 1\nkey f2\ndown 2 0\nup 2 0\n"
                       "key space\n")
     target = tmp_path / "missing" / "k.kas"
-    assert main(["kas", "edit", str(target), "--script", str(script), "--headless"]) == 0
-    out = capsys.readouterr().out
-    assert "1 chains, 3 points" in out and "NOT saved" in out
+    assert main(["kas", "edit", str(target), "--script", str(script), "--headless"]) == 1
+    said = capsys.readouterr()
+    assert "1 chains, 3 points" in said.out and "NOT saved" in said.out
+    assert f"{target}: NOT saved: No such file or directory" in said.err
     assert not target.exists()
 
 

@@ -85,3 +85,23 @@ def test_a_frame_that_keeps_failing_is_named_and_leaves_no_file(tmp_path: Path) 
     assert not frame_file(tmp_path, 2).exists()
     assert frame_file(tmp_path, 1).exists() and frame_file(tmp_path, 3).exists()
     assert not [p for p in tmp_path.iterdir() if p.name.endswith(".tmp")]
+
+
+def test_resume_checks_each_frame_against_the_hash_of_what_was_written(
+        reference: dict[int, bytes], tmp_path: Path) -> None:
+    """A valid PNG of the right size is not enough: a frame copied over another, or one
+    with 20 pixels repainted, is not what the manifest says was written: made again."""
+    import imageio.v3 as iio
+
+    from apps.snooker.film.pngcheck import png_size
+
+    tasks = small_tasks()
+    _film(tasks, tmp_path)
+    frame_file(tmp_path, 4).write_bytes(frame_file(tmp_path, 6).read_bytes())  # copied over
+    image = iio.imread(frame_file(tmp_path, 7).read_bytes()).copy()
+    image[10, 10:30] = 255 - image[10, 10:30]  # 20 pixels repainted
+    frame_file(tmp_path, 7).write_bytes(encode_png(image))
+    assert png_size(frame_file(tmp_path, 7).read_bytes()) == SIZE
+    report = _film(tasks, tmp_path)
+    assert sorted(report.rendered) == [4, 7]
+    assert frame_bytes(tmp_path, tasks) == reference

@@ -10,8 +10,11 @@ cluster needs no shared disk.
 
 from __future__ import annotations
 
+import contextlib
+import logging
 import multiprocessing
 import os
+import signal
 from collections.abc import Callable
 from concurrent.futures import Future, ProcessPoolExecutor
 from typing import Any, Protocol
@@ -38,6 +41,7 @@ class Backend(Protocol):
 def _init_worker(scene: Scene, render: Render) -> None:
     global _WORKER_SCENE, _WORKER_RENDER
     _WORKER_SCENE, _WORKER_RENDER = scene, render
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the command's to answer
 
 
 def _render_here(task: FrameTask) -> bytes:
@@ -108,34 +112,58 @@ class DaskCluster:
         from distributed import Client, LocalCluster
 
         self._cluster: Any = None
-        self._render = render
+        self._render, self._scene_obj, self._timeout = render, scene, timeout_s
         if address == "local":
             n = workers or os.cpu_count() or 1
             # The scheduler always serves HTTP; with no address it takes port 8787 and, when
             # another cluster holds it, warns (an error under the tests' warning filter):
             # a free port of the loopback's instead.
+            # its workers ignore Ctrl-C (quiet_worker): the command answers it, in one line
             self._cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                         dashboard_address="127.0.0.1:0", host="127.0.0.1")
+                                         dashboard_address="127.0.0.1:0", host="127.0.0.1",
+                                         preload=["apps.snooker.film.quiet_worker"])
             self._client = Client(self._cluster, timeout=timeout_s)
         else:
             self._client = Client(address, timeout=timeout_s)
         self.workers = max(1, len(self._client.scheduler_info()["workers"]))
         where = self._client.scheduler_info()["address"]
         self.name = f"Dask cluster at {where} ({self.workers} workers)"
-        self._scene = self._client.scatter(scene, broadcast=True, hash=False)
+        self._scatter()
+
+    def _scatter(self) -> None:
+        """The scene to every worker (again, once the workers holding it are all gone)."""
+        self._client.wait_for_workers(1, timeout=self._timeout)
+        self._scene = self._client.scatter(self._scene_obj, broadcast=True, hash=False)
 
     def submit(self, task: FrameTask) -> Future:
+        if self._scene.status != "finished":  # lost with every worker that held it
+            self._scatter()
         # pure=False: a frame asked for again (a retry) is computed again, not looked up
         dask_future = self._client.submit(self._render, self._scene, task, pure=False)
         return _as_concurrent(dask_future)
 
     def restart(self) -> None:
-        pass  # the scheduler moves a dead worker's tasks by itself
+        pass  # the scheduler moves a dead worker's tasks; submit re-sends a lost scene
 
     def close(self) -> None:
-        self._client.close()
-        if self._cluster is not None:
-            self._cluster.close()
+        # stopping a cluster of our own: its workers' and scheduler's parting complaints
+        # (lost data, a busy worker killed) are not the user's news
+        quiet = contextlib.nullcontext() if self._cluster is None else _quiet("distributed")
+        with quiet:
+            self._client.close()
+            if self._cluster is not None:
+                self._cluster.close()
+
+
+@contextlib.contextmanager
+def _quiet(name: str):  # noqa: ANN202
+    log = logging.getLogger(name)
+    level = log.level
+    log.setLevel(logging.CRITICAL)
+    try:
+        yield
+    finally:
+        log.setLevel(level)
 
 
 def _as_concurrent(dask_future: Any) -> Future:

@@ -1,16 +1,18 @@
 """Rendering a film's frames in parallel, resumably (thesis 6.4: each frame is independent,
 "compiled into a finished sequence" afterwards).
 
-Frames whose PNG is already complete, and was made from the same scene, view and look (the
-keys in ``DIR/film.json``), are skipped; the others are handed to the backend, at
-most ``2 x workers`` at a time so a dead worker costs little; each result is checked (it
-decodes whole, at the right size) and written atomically, so the directory never holds a
-broken PNG. A frame that fails, or whose worker dies, is tried again up to ``attempts``
-times; every failed attempt is reported.
+Frames whose PNG is exactly what was written for the same scene, view and look are skipped
+(``DIR/film.json`` records each frame's key and the SHA-256 of the bytes written: a PNG
+copied over another, or a few pixels repainted, is a different file and is made again);
+the others are handed to the backend, at most ``2 x workers`` at a time so a dead worker
+costs little; each result is checked (it decodes whole, at the right size) and written
+atomically, so the directory never holds a broken PNG. A frame that fails, or whose worker
+dies, is tried again up to ``attempts`` times; every failed attempt is reported.
 """
 
 from __future__ import annotations
 
+import hashlib
 import json
 import os
 import time
@@ -21,38 +23,48 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from apps.snooker.film.backends import Backend
-from apps.snooker.film.pngcheck import is_complete, png_size
+from apps.snooker.film.pngcheck import png_size
 from apps.snooker.film.task import FrameTask, task_key
 from protocols.atomicfile import write_atomic
 
 
 class Manifest:
-    """frame -> key of what its PNG shows, rewritten atomically at most every ``every_s``
-    seconds and at the end (a frame whose key did not reach the disk before a kill is
-    simply rendered again; one fsync a frame would cap the frame rate)."""
+    """frame -> (key of what its PNG shows, SHA-256 of the bytes written), rewritten
+    atomically at most every ``every_s`` seconds and at the end (a frame whose entry did not
+    reach the disk before a kill is simply rendered again; one fsync a frame would cap the
+    frame rate)."""
 
     def __init__(self, path: Path, every_s: float = 0.5) -> None:
         self.path, self.every_s = path, every_s
         self.dirty, self.saved_at = False, time.monotonic()
         try:
             raw = json.loads(path.read_text(encoding="utf-8"))
-            self.keys = {int(k): str(v) for k, v in raw.get("frames", {}).items()}
-        except (OSError, ValueError, AttributeError):
-            self.keys = {}  # missing or damaged: every frame is rendered again
+            self.keys = {int(k): (str(v["key"]), str(v["sha256"]))
+                         for k, v in raw.get("frames", {}).items()}
+        except (OSError, ValueError, AttributeError, KeyError, TypeError):
+            self.keys = {}  # missing, damaged or without hashes: every frame is made again
 
-    def get(self, frame: int) -> str | None:
-        return self.keys.get(frame)
+    def holds(self, frame: int, key: str, png: Path) -> bool:
+        """Is ``png`` exactly the file written for ``frame`` made as ``key``?"""
+        entry = self.keys.get(frame)
+        if entry is None or entry[0] != key:
+            return False
+        try:
+            return hashlib.sha256(png.read_bytes()).hexdigest() == entry[1]
+        except OSError:
+            return False
 
-    def put(self, frame: int, key: str) -> None:
-        self.keys[frame] = key
+    def put(self, frame: int, key: str, data: bytes) -> None:
+        """``data``: the bytes just written for ``frame``."""
+        self.keys[frame] = (key, hashlib.sha256(data).hexdigest())
         self.dirty = True
         if time.monotonic() - self.saved_at >= self.every_s:
             self.save()
 
     def save(self) -> None:
         if self.dirty:
-            text = json.dumps({"frames": {str(k): v for k, v in sorted(self.keys.items())}},
-                              indent=0)
+            frames = {str(k): {"key": v[0], "sha256": v[1]} for k, v in sorted(self.keys.items())}
+            text = json.dumps({"frames": frames}, indent=0)
             write_atomic(self.path, text + "\n")
             self.dirty, self.saved_at = False, time.monotonic()
 
@@ -88,11 +100,10 @@ def render_film(tasks: Sequence[FrameTask], out_dir: str | os.PathLike[str], bac
     keys = Manifest(out / manifest)
     todo = []
     for t in tasks:
-        done = (keys.get(t.frame) == task_key(digest, t)
-                and is_complete(frame_file(out, t.frame), (t.width, t.height)))
+        done = keys.holds(t.frame, task_key(digest, t), frame_file(out, t.frame))
         (report.skipped.append(t.frame) if done else todo.append(t))
     run = _Run(backend, out, report, progress, attempts, len(tasks))
-    run.written = lambda t: keys.put(t.frame, task_key(digest, t))
+    run.written = lambda t, data: keys.put(t.frame, task_key(digest, t), data)
     try:
         run.go(todo)
     finally:
@@ -110,7 +121,7 @@ class _Run:
         self.progress, self.attempts, self.total = progress, attempts, total
         self.tries: dict[int, int] = {}
         self.running: dict[Future, FrameTask] = {}
-        self.written: Callable[[FrameTask], None] = lambda t: None
+        self.written: Callable[[FrameTask, bytes], None] = lambda t, data: None
 
     def go(self, todo: list[FrameTask]) -> None:
         queue = list(reversed(todo))
@@ -151,7 +162,7 @@ class _Run:
         if png_size(data) != (t.width, t.height):
             return "the worker returned a PNG that does not decode at the film's size"
         write_atomic(frame_file(self.out, t.frame), data)
-        self.written(t)
+        self.written(t, data)
         self.report.rendered.append(t.frame)
         self._tick()
         return None

@@ -4,6 +4,9 @@ from __future__ import annotations
 
 import argparse
 import sys
+from pathlib import Path
+
+from camlab88.runopts import check_output, fail
 
 
 def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
@@ -56,6 +59,8 @@ def _run(args: argparse.Namespace) -> int:
     if args.generations < 0:
         print("camlab88 ca run: --generations must be >= 0", file=sys.stderr)
         return 2
+    if args.png:  # a directory or read-only place is refused before the generations run
+        check_output("camlab88 ca run", Path(args.png), "write the picture to")
     from apps.ca.jump_progress import ProgressLine
 
     engine = Engine(rules, edges=args.edges, seed=args.seed, algorithm=args.engine)
@@ -68,14 +73,23 @@ def _run(args: argparse.Namespace) -> int:
         return 2
     stats = engine.stats()
     stats["origin"] = [CENTRE, CENTRE]
-    if args.png:
-        from apps.ca.program.picture import picture
-        from protocols.png import write_png
-
-        write_png(picture(engine, args.zoom, args.monochrome), args.png)
-        print(f"wrote {args.png}", file=sys.stderr if args.json else sys.stdout)
+    if args.png and not _write_png(engine, args):
+        return 1
     _print_stats(stats, args.json)
     return 0
+
+
+def _write_png(engine, args: argparse.Namespace) -> bool:  # noqa: ANN001
+    from apps.ca.program.picture import picture
+    from protocols.png import write_png
+
+    try:
+        write_png(picture(engine, args.zoom, args.monochrome), args.png)
+    except OSError as exc:  # a full disk: the old picture is left as it was
+        fail("camlab88 ca run", exc, 1)
+        return False
+    print(f"wrote {args.png}", file=sys.stderr if args.json else sys.stdout)
+    return True
 
 
 def _advance(engine, args: argparse.Namespace, progress) -> None:  # noqa: ANN001

@@ -35,6 +35,7 @@ def edit(args: argparse.Namespace) -> int:
     target = Path(args.file)
     preview = args.screenshot is not None  # a screenshot run never touches the user's files
     saved: list[int] = []
+    failed: list[OSError] = []
     try:
         prepared = prepare_front(args, COMMAND)  # a refused run creates no FILE
         if not target.exists() and not preview:
@@ -44,7 +45,11 @@ def edit(args: argparse.Namespace) -> int:
 
         def save(drawing) -> None:  # noqa: ANN001
             if not preview:
-                files.save_keyframe(target, drawing)
+                try:
+                    files.save_keyframe(target, drawing)
+                except OSError as exc:  # the editor shows it; the exit status says it too
+                    failed.append(exc)
+                    raise
                 saved.append(len(drawing.chains))
             front.editor.message = f"saved {target.name}" if not preview else "(preview)"
 
@@ -53,6 +58,8 @@ def edit(args: argparse.Namespace) -> int:
     except (OSError, ValueError) as exc:
         return fail(COMMAND, exc)
     _report(front.editor, session, target, saved, preview)
+    if failed and front.editor.dirty:  # the last edits are lost: say why, exit non-zero
+        return fail(COMMAND, f"{target}: NOT saved: {failed[-1].strerror or failed[-1]}", 1)
     return 0
 
 

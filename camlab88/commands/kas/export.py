@@ -6,7 +6,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from camlab88.runopts import fail, progress
+from camlab88.runopts import check_output, fail, progress
 
 COMMAND = "camlab88 kas export"
 
@@ -30,6 +30,7 @@ def export(args: argparse.Namespace) -> int:
     from apps.kas import files, library
     from apps.kas.export import export as write
 
+    check_output(COMMAND, Path(args.out), "export to")  # a full disk shows before rendering
     try:
         seq = files.load_sequence(library.resolve(args.seq))
         if args.renderer == "sigma":

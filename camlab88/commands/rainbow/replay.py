@@ -69,6 +69,7 @@ def _session(args: argparse.Namespace) -> int:
     checked, as ``camlab88 replay FILE --check`` does."""
     from pathlib import Path
 
+    from camlab88.replay_policy import ReplayRefused
     from camlab88.session_replay import rerun
     from emulator.harness import choose_headless
     from emulator.harness.replay import Replay
@@ -81,7 +82,10 @@ def _session(args: argparse.Namespace) -> int:
     shot = Path(args.screenshot).resolve() if args.screenshot else None
     ctx = Replay(rec, choose_headless(COMMAND, args.headless, "checking the screen hashes"),
                  check=True, screenshot=shot)
-    status = rerun(ctx)
+    try:
+        status, _said = rerun(ctx)
+    except ReplayRefused as exc:
+        return fail(COMMAND, f"{args.recording}:1: not replayed: {exc}")
     bad = ctx.mismatch is not None or status != 0
     print(f"{COMMAND}: session recording, {ctx.compared} screen hashes compared, "
           f"{int(bad)} mismatches")

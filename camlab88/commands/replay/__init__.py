@@ -35,6 +35,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[ty
 
 
 def replay(args: argparse.Namespace) -> int:
+    from camlab88.replay_policy import ReplayRefused
     from camlab88.session_replay import rerun
     from emulator.harness import choose_headless
     from emulator.harness.replay import Replay
@@ -47,24 +48,34 @@ def replay(args: argparse.Namespace) -> int:
     headless = choose_headless(COMMAND, args.headless, "checking the screen hashes")
     ctx = Replay(rec, headless=headless, period=args.period, check=args.check,
                  frames=_abs(args.frames), screenshot=_abs(args.screenshot))
-    status = rerun(ctx)
-    return _verdict(args, ctx, status)
+    try:
+        status, said = rerun(ctx)
+    except ReplayRefused as exc:  # the header (line 1) holds the command line
+        return fail(COMMAND, f"{args.recording}:1: not replayed: {exc}")
+    return _verdict(args, ctx, status, said)
 
 
 def _abs(path: Path | None) -> Path | None:
     return None if path is None else path.resolve()
 
 
-def _verdict(args: argparse.Namespace, ctx, status: int) -> int:  # noqa: ANN001
+def _verdict(args: argparse.Namespace, ctx, status: int, said: str) -> int:  # noqa: ANN001
     name = args.recording
     if ctx.runs == 0:
         return fail(COMMAND, f"{name}: the recorded command ran no program "
-                    f"({' '.join(ctx.rec.argv)}; exit status {status})")
+                    f"({' '.join(ctx.rec.argv)}; exit status {status}){_said(said)}")
     if ctx.mismatch is not None:
         return fail(COMMAND, f"{name}: {ctx.mismatch.describe()}", 1)
     if status != 0:
-        return fail(COMMAND, f"{name}: the program ended with exit status {status}", 1)
+        return fail(COMMAND, f"{name}: the program ended with exit status {status}"
+                    f"{_said(said)}", 1)
     if args.check:
         print(f"{COMMAND}: {name}: all {ctx.compared} screen hashes agree "
               f"({' '.join(ctx.rec.argv[:2])}, {ctx.ended.frame if ctx.ended else 0} frames)")
     return 0
+
+
+def _said(text: str) -> str:
+    """The last lines the failed program printed (its own messages are kept back)."""
+    lines = text.strip().splitlines()[-3:]
+    return "".join(f"\n  the replayed program said: {line}" for line in lines)

@@ -118,8 +118,10 @@ def _line(args: argparse.Namespace, settings):  # noqa: ANN001, ANN202
 
     recorder = None
     if args.record_line is not None:
+        from camlab88.runopts import check_output
         from protocols.link.recording import Recorder
 
+        check_output(COMMAND, args.record_line, "record to")
         try:
             recorder = Recorder(args.record_line, settings)
         except OSError as exc:

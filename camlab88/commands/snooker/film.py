@@ -91,6 +91,10 @@ def film(args: argparse.Namespace) -> int:
         return fail(COMMAND, f"{missing[0]}: no such file")
     try:
         return _film(args)
+    except KeyboardInterrupt:  # one line; cli.main gives the exit status (130, or 143)
+        print(f"{COMMAND}: interrupted; the frames written so far stay, and the same "
+              "command resumes from them", file=sys.stderr)
+        raise
     except CclErrors as exc:
         print(exc, file=sys.stderr)
         return fail(COMMAND, "the camera script has errors; nothing rendered")

@@ -116,6 +116,10 @@ def render(args: argparse.Namespace) -> int:
         views = select_views(read_views(args.views), scene, args.first, args.last,
                              str(args.views))
         return _render(args, scene, views)
+    except KeyboardInterrupt:  # one line; cli.main gives the exit status (130, or 143)
+        print(f"{COMMAND}: interrupted; the frames written so far stay, and the same "
+              "command resumes from them", file=sys.stderr)
+        raise
     except (CheckpointError, SessionError, ViewFileError, LightsError, SequenceError,
             FilmError, OSError) as exc:
         return fail(COMMAND, exc)
@@ -209,13 +213,14 @@ def _sigma(args: argparse.Namespace, scene, views, out: Path) -> str:  # noqa: A
 def _record(scene, views, out: Path, render: SigmaFrames) -> None:  # noqa: ANN001
     """The frames just drawn, in the resume record (a parallel rerun skips them)."""
     from apps.snooker.film.pipeline import FilmLook, film_digest
-    from apps.snooker.film.schedule import Manifest
+    from apps.snooker.film.schedule import Manifest, frame_file
     from apps.snooker.film.task import task_key
 
     look = FilmLook(specks=render.specks)
     record, digest = Manifest(out / RECORD), film_digest(scene, render)
     for v in views:
-        record.put(int(v.frame), task_key(digest, look.task(v)))
+        png = frame_file(out, int(v.frame)).read_bytes()  # what was just moved into place
+        record.put(int(v.frame), task_key(digest, look.task(v)), png)
     record.save()
 
 

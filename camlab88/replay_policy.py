@@ -1,0 +1,159 @@
+"""What a session recording may make ``camlab88 replay`` run: a recording is data.
+
+A recording names a command line, and recordings are shared, so the command line is checked
+against a fixed allowlist before anything runs: only the programs ``--record`` exists on,
+only the options listed here for each (exact spellings, no abbreviations), each value then
+checked by the program's own argument parser. What each allowed option becomes:
+
+``KEEP``     replayed as recorded (numbers bounded: a recording cannot ask for a huge window)
+``SCRATCH``  an output the recorded run wrote (--screenshot, --frames, --out, --save ...):
+             redirected into the replay's scratch directory, which is deleted afterwards, so
+             the program behaves as recorded but writes nothing of the user's
+``DROP``     a recorder (--record, --record-line, --record-stream): the replay does not repeat it
+``OUTSIDE``  the line's outside end (sigma run --pty / --listen / --serial): never opened;
+             the outside bytes stored in the recording (``+`` wire records) are fed instead
+
+Anything else is refused naming the option: listeners, ports, URLs, tablets, ``--dask``
+(a replay renders in process), options of other programs, and programs without ``--record``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import io
+from pathlib import PurePosixPath
+
+KEEP, SCRATCH, DROP, OUTSIDE = "keep", "scratch", "drop", "outside"
+MAX_NUMBER = 10**9  # any numeric value kept (ticks, seconds, baud, frames ...)
+MAX_SCALE = 8       # --scale: a window 8 times 768x576 is already 85 MB of pixels
+MAX_WORDS, MAX_WORD = 256, 4096
+
+_RUN = {"--headless": KEEP, "--scale": KEEP, "--stop-after": KEEP, "--screenshot": SCRATCH,
+        "--frames": SCRATCH, "--record": DROP}
+_KAS_FRONT = {**_RUN, "--script": KEEP, "--background": KEEP, "--baud": KEEP}
+
+PROGRAMS: dict[tuple[str, str], dict[str, str]] = {
+    ("sigma", "run"): {**_RUN, "--model": KEEP, "--baud": KEEP, "--in": KEEP,
+                       "--seconds": KEEP, "--record-line": DROP, "--pty": OUTSIDE,
+                       "--listen": OUTSIDE, "--serial": OUTSIDE},
+    ("rainbow", "run"): {**_RUN, "--screenshot-frame": KEEP, "--record-stream": DROP,
+                         "--strict": KEEP, "--demo": KEEP},
+    ("kas", "edit"): {**_KAS_FRONT, "--over": KEEP, "--seed": KEEP},
+    ("kas", "path"): {**_KAS_FRONT, "--out": SCRATCH, "--ticks": SCRATCH,
+                      "--previous": KEEP, "--no-library": KEEP},
+    ("kas", "superimpose"): {**_KAS_FRONT, "--out": SCRATCH, "--prompt": KEEP},
+    ("kas", "view"): {**_RUN, "--realtime": KEEP, "--every": KEEP, "--baud": KEEP,
+                      "--fps": KEEP, "--swap": KEEP, "--background": KEEP},
+    ("kas", "paint"): {**_RUN, "--ops": KEEP, "--save": SCRATCH, "--script": KEEP,
+                       "--replay": KEEP, "--gif": SCRATCH, "--mp4": SCRATCH, "--baud": KEEP},
+    ("snooker", "play"): {**_RUN, "--events": KEEP, "--save": SCRATCH},
+    ("snooker", "replay"): {**_RUN, "--first": KEEP, "--last": KEEP},
+    ("snooker", "visualise"): dict(_RUN),
+    ("snooker", "camera"): {**_RUN, "--events": KEEP},
+    ("ca", "program"): {**_RUN, "--rules": KEEP, "--pattern": KEEP, "--log": SCRATCH,
+                        "--record-pans": KEEP, "--checkpoint": KEEP, "--script": KEEP,
+                        "--replay-pans": KEEP, "--start": KEEP, "--edges": KEEP,
+                        "--seed": KEEP, "--events": KEEP, "--json": KEEP},
+}
+
+# why the options people are most likely to meet are refused (any other: "not replayed")
+_WHY = {
+    "--dask": "a replay renders in process, never on a Dask cluster",
+    "--workers": "a replay renders in process",
+    "--listen": "a replay opens no listener", "--port": "a replay opens no listener",
+    "--pty": "a replay opens no pseudo-terminal", "--serial": "a replay opens no port",
+    "--url": "a replay connects nowhere", "--tablet": "a replay reads no device",
+}
+
+
+class ReplayRefused(ValueError):
+    """A recorded command line a replay will not run; the message names the reason."""
+
+
+def checked_argv(argv: list[str]) -> list[str]:
+    """The command line a replay runs for the recorded ``argv``: checked against the
+    allowlist and the program's own parser, outputs moved into the scratch directory,
+    recorders and outside ends dropped. Raises ReplayRefused."""
+    from camlab88 import cli
+
+    if len(argv) > MAX_WORDS or any(len(w) > MAX_WORD or "\0" in w for w in argv):
+        raise ReplayRefused(f"the command line is longer than {MAX_WORDS} words of at most "
+                            f"{MAX_WORD} characters")
+    words = cli.normalise_argv(argv)
+    key = tuple(words[:2])
+    table = PROGRAMS.get(key)  # type: ignore[arg-type]
+    if table is None:
+        raise ReplayRefused(f"'{' '.join(words[:2])}' is not a program a replay runs "
+                            f"(only: {', '.join(' '.join(k) for k in PROGRAMS)})")
+    sub = _subparser(cli.build_parser(), key)
+    out = list(key) + _options(words[2:], table, sub, " ".join(key))
+    _parse(cli, out)
+    return out
+
+
+def _options(words: list[str], table: dict[str, str], sub: argparse.ArgumentParser,
+             program: str) -> list[str]:
+    out: list[str] = []
+    i = 0
+    while i < len(words):
+        word = words[i]
+        i += 1
+        if not word.startswith("-") or word == "-":
+            out.append(word)  # a positional: the program's parser checks it
+            continue
+        name, eq, value = word.partition("=")
+        kind = table.get(name)
+        action = sub._option_string_actions.get(name)
+        if kind is None or action is None:
+            why = _WHY.get(name, f"not an option a replay of '{program}' accepts")
+            raise ReplayRefused(f"option {name}: {why}")
+        if action.nargs != 0 and not eq:
+            if i >= len(words):
+                raise ReplayRefused(f"option {name}: its value is missing")
+            value, i = words[i], i + 1
+        elif action.nargs == 0 and eq:
+            raise ReplayRefused(f"option {name}: takes no value")
+        out += _apply(kind, name, value if action.nargs != 0 else None, len(out))
+    return out
+
+
+def _apply(kind: str, name: str, value: str | None, n: int) -> list[str]:
+    if kind in (DROP, OUTSIDE):
+        return []
+    if kind == SCRATCH:  # keep only the file's own name, under a directory of its own
+        leaf = PurePosixPath(str(value).replace("\\", "/")).name
+        return [name, f"_out/{n}/{leaf if leaf not in ('', '.', '..') else 'out'}"]
+    if value is None:
+        return [name]
+    _bounded(name, value)
+    return [name, value]
+
+
+def _bounded(name: str, value: str) -> None:
+    try:
+        number = float(value)
+    except ValueError:
+        return
+    limit = MAX_SCALE if name == "--scale" else MAX_NUMBER
+    if not abs(number) <= limit:  # also NaN
+        raise ReplayRefused(f"option {name} {value}: outside -{limit}..{limit}")
+
+
+def _subparser(parser: argparse.ArgumentParser, key: tuple[str, ...]) -> argparse.ArgumentParser:
+    for word in key:
+        action = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+        parser = action.choices[word]
+    return parser
+
+
+def _parse(cli, argv: list[str]) -> argparse.Namespace:  # noqa: ANN001
+    """The program's own parser on the command line the replay will run."""
+    said = io.StringIO()
+    try:
+        with contextlib.redirect_stderr(said), contextlib.redirect_stdout(said):
+            args = cli.build_parser().parse_args(argv)
+    except SystemExit:
+        last = (said.getvalue().strip().splitlines() or ["does not parse"])[-1]
+        raise ReplayRefused(f"the program's parser refuses it: {last}") from None
+    return args
