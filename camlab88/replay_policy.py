@@ -12,8 +12,11 @@ checked by the program's own argument parser. What each allowed option becomes:
 ``DROP``     a recorder (--record, --record-line, --record-stream): the replay does not repeat it
 ``OUTSIDE``  the line's outside end (sigma run --pty / --listen / --serial): never opened;
              the outside bytes stored in the recording (``+`` wire records) are fed instead
+``TAPE``     ``--tablet SOURCE``: kept so the program sets up the same decoder, but in a replay
+             the device is never opened -- the tablet tape stored in the recording (``T`` wire
+             records) is decoded instead (emulator/tablet/taped.py); the value is only parsed
 
-Anything else is refused naming the option: listeners, ports, URLs, tablets, ``--dask``
+Anything else is refused naming the option: listeners, ports, URLs, ``--dask``
 (a replay renders in process), options of other programs, and programs without ``--record``.
 """
 
@@ -24,21 +27,22 @@ import contextlib
 import io
 from pathlib import PurePosixPath
 
-KEEP, SCRATCH, DROP, OUTSIDE = "keep", "scratch", "drop", "outside"
+KEEP, SCRATCH, DROP, OUTSIDE, TAPE = "keep", "scratch", "drop", "outside", "tape"
 MAX_NUMBER = 10**9  # any numeric value kept (ticks, seconds, baud, frames ...)
 MAX_SCALE = 8       # --scale: a window 8 times 768x576 is already 85 MB of pixels
 MAX_WORDS, MAX_WORD = 256, 4096
 
 _RUN = {"--headless": KEEP, "--scale": KEEP, "--stop-after": KEEP, "--screenshot": SCRATCH,
         "--frames": SCRATCH, "--record": DROP}
-_KAS_FRONT = {**_RUN, "--script": KEEP, "--background": KEEP, "--baud": KEEP}
+_KAS_FRONT = {**_RUN, "--script": KEEP, "--background": KEEP, "--baud": KEEP, "--tablet": TAPE}
 
 PROGRAMS: dict[tuple[str, str], dict[str, str]] = {
     ("sigma", "run"): {**_RUN, "--model": KEEP, "--baud": KEEP, "--in": KEEP,
                        "--seconds": KEEP, "--record-line": DROP, "--pty": OUTSIDE,
-                       "--listen": OUTSIDE, "--serial": OUTSIDE},
+                       "--listen": OUTSIDE, "--serial": OUTSIDE,
+                       "--order-timeout": KEEP, "--idle-timeout": KEEP},
     ("rainbow", "run"): {**_RUN, "--screenshot-frame": KEEP, "--record-stream": DROP,
-                         "--strict": KEEP, "--demo": KEEP},
+                         "--strict": KEEP, "--demo": KEEP, "--tablet": TAPE},
     ("kas", "edit"): {**_KAS_FRONT, "--over": KEEP, "--seed": KEEP},
     ("kas", "path"): {**_KAS_FRONT, "--out": SCRATCH, "--ticks": SCRATCH,
                       "--previous": KEEP, "--no-library": KEEP},
@@ -121,6 +125,8 @@ def _options(words: list[str], table: dict[str, str], sub: argparse.ArgumentPars
 def _apply(kind: str, name: str, value: str | None, n: int) -> list[str]:
     if kind in (DROP, OUTSIDE):
         return []
+    if kind == TAPE:  # never opened in a replay: the recorded tape is decoded instead
+        return [name, str(value)]
     if kind == SCRATCH:  # keep only the file's own name, under a directory of its own
         leaf = PurePosixPath(str(value).replace("\\", "/")).name
         return [name, f"_out/{n}/{leaf if leaf not in ('', '.', '..') else 'out'}"]

@@ -50,7 +50,7 @@ def test_the_allowlist_is_exactly_the_programs_with_record_and_knows_each_option
         # every allowed option is one of the program's own; what is not listed is refused
         assert set(PROGRAMS[key]) - {"--stop-after"} <= options, key
         unlisted = options - set(PROGRAMS[key])
-        assert unlisted <= {"--tablet"}, (key, unlisted)  # a device: never replayed
+        assert unlisted == set(), (key, unlisted)
 
 
 @pytest.mark.parametrize("name", sorted(p.name for p in DATA.glob("*.session")))
@@ -66,7 +66,7 @@ def test_every_shipped_recording_is_allowed(name: str) -> None:
     (["rainbow", "serve", "--port", "0"], "'rainbow serve'"),
     (["link", "echo", "--listen", "0"], "'link echo'"),
     (["demo", "--out", "/etc/camlab88"], "'demo"),
-    (["kas", "edit", "k.kas", "--tablet", "socket://127.0.0.1:9"], "--tablet"),
+    (["sigma", "run", "--tablet", "socket://127.0.0.1:9"], "--tablet"),
     (["sigma", "run", "--lis", "5000"], "option --lis"),  # an abbreviation argparse takes
     (["kas", "edit", "k.kas", "--events", "e.txt"], "option --events"),  # another program's
     (["sigma", "run", "--scale", "100000"], "--scale 100000: outside"),
@@ -144,6 +144,25 @@ def test_a_listener_recording_replays_its_bytes_without_opening_anything(  # noq
         monkeypatch.undo()
         assert sockets.calls == [] and opened == []
         assert "screen hashes agree" in capsys.readouterr().out
+
+
+def test_a_tablet_in_a_recording_is_never_opened(tmp_path: Path, capsys,  # noqa: ANN001
+                                                 monkeypatch) -> None:  # noqa: ANN001
+    with socket.socket() as owned:  # the "tablet" the recording names: a listener of ours
+        owned.bind(("127.0.0.1", 0))
+        owned.listen(8)
+        owned.settimeout(0.3)
+        port = owned.getsockname()[1]
+        argv = [*read(DATA / "kas_edit.session").argv, "--tablet",
+                f"serial:socket://127.0.0.1:{port}?protocol=wacom4"]
+        rec = _with_argv(tmp_path, argv, "kas_edit.session")
+        sockets = _Sockets(monkeypatch)
+        main(["replay", str(rec), "--headless"])  # the recorded tablet tape (empty) is read
+        monkeypatch.undo()
+        capsys.readouterr()
+        assert sockets.calls == []
+        with pytest.raises(TimeoutError):
+            owned.accept()
 
 
 def test_a_tripos_key_value_path_cannot_write_outside(tmp_path: Path, capsys) -> None:  # noqa: ANN001

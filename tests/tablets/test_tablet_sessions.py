@@ -78,7 +78,7 @@ def test_kas_edit_draws_with_a_hidraw_tablet_and_replays_without_it(tmp_path: Pa
     replayed = _camlab88(["replay", "g.rec", "--check"], tmp_path,
                          {"CAMLAB88_CONFIG_DIR": str(tmp_path / "empty")})
     assert replayed.returncode == 0, replayed.stdout + replayed.stderr
-    assert _chains(replayed.stdout + replayed.stderr) == (chains, points)
+    assert "screen hashes agree" in replayed.stdout, replayed.stdout  # the same strokes shown
 
 
 @pytest.mark.skipif(skip_reason() is not None, reason=skip_reason() or "")
