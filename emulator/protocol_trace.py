@@ -39,3 +39,27 @@ class ProtocolError(Exception):
     def __init__(self, event: TraceEvent) -> None:
         super().__init__(event.message())
         self.event = event
+
+
+class TraceFile:
+    """``--trace FILE``: one JSON object a line, written atomically when closed (a run
+    stopped by --strict or Ctrl-C still leaves the whole trace up to that point)."""
+
+    def __init__(self, path: str) -> None:
+        from contextlib import ExitStack
+
+        from protocols.atomicfile import atomic_output
+
+        self.path = path
+        self._stack = ExitStack()
+        self._fh = self._stack.enter_context(atomic_output(path, "w", encoding="utf-8"))
+        self.count = 0
+
+    def __call__(self, ev: TraceEvent) -> None:
+        import json
+
+        self._fh.write(json.dumps(ev.to_json(), ensure_ascii=False) + "\n")
+        self.count += 1
+
+    def close(self) -> None:
+        self._stack.close()

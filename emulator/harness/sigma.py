@@ -48,6 +48,7 @@ class SigmaLineTarget:
         self._sent = bytearray()
         self._received = b""
         self.tap = OutsideTap(line.host)  # give this to the bridge as its endpoint
+        self.tracer: Any = None  # emulator.sigma.trace.SigmaTracer for --trace / --strict
         term.on_output = self._up
 
     def _up(self, data: bytes) -> None:
@@ -63,10 +64,21 @@ class SigmaLineTarget:
             for ev in self.bridge.poll(timeout=0.0).events:
                 if ev.kind in ("error", "disconnected", "refused"):
                     self.report(ev.kind, ev.detail)
-        self._received = self.line.device.read()
-        self.term.feed(self._received)
+        if self.tracer is None:
+            self._received = self.line.device.read()
+            self.term.feed(self._received)
+        else:
+            self._received = self._traced()
         self.line.clock.advance(TICK)
         return self.until is None or self.line.clock.exact < self.until
+
+    def _traced(self) -> bytes:
+        """This tick's bytes through the tracer, each at its arrival time."""
+        runs = self.line.device.read_timed(exact=True)
+        step = self.line.settings.char_time
+        for t_last, data in runs:
+            self.tracer.feed(data, float(t_last - (len(data) - 1) * step), float(step))
+        return b"".join(data for _t, data in runs)
 
     def frame(self) -> np.ndarray:
         return self.term.frame()

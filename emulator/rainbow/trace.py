@@ -11,7 +11,7 @@ from collections.abc import Callable
 from typing import Any
 
 from emulator.protocol_trace import ProtocolError, TraceEvent
-from protocols.rainbow.stream import OK, Command, StreamError, split_reply
+from protocols.rainbow.stream import HEADER, OK, Command, StreamError, split_reply
 
 __all__ = ["ProtocolError", "RainbowTracer", "TraceEvent"]
 
@@ -28,13 +28,15 @@ class RainbowTracer:
     def __init__(self, sink: Callable[[TraceEvent], None], strict: bool = False) -> None:
         self.sink, self.strict = sink, strict
         self.warnings = 0
+        self.position = 0  # stream offset of the next command (in-process calls included)
 
     def command(self, cmd: Command, reply: bytes, time_ms: int) -> None:
         args: dict[str, Any] = dict(zip(cmd.op.fields, cmd.args))
         if cmd.blob:
             args["blob_bytes"] = len(cmd.blob)
         status, payload, _ = split_reply(reply)
-        ev = TraceEvent(cmd.offset, time_ms / 1000, cmd.op.name, args)
+        ev = TraceEvent(self.position, time_ms / 1000, cmd.op.name, args)
+        self.position += HEADER.size + 4 * len(cmd.args) + len(cmd.blob)
         if status != OK:
             ev.warning = payload.decode("utf-8", "replace")
             ev.kind, ev.expected = "refused", _expected(cmd)

@@ -9,7 +9,7 @@ tracing off nothing here runs, so the fast paths of ``Terminal.feed`` are untouc
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
 from emulator.protocol_trace import ProtocolError, TraceEvent
@@ -59,12 +59,14 @@ class SigmaTracer:
         self.recent = bytearray()
         self.warnings = 0
 
-    def feed(self, data: bytes, t_first: float = 0.0, step: float = 0.0) -> None:
-        """``data``'s byte k arrived at ``t_first + k * step`` virtual seconds."""
+    def feed(self, data: bytes, t_first: float = 0.0, step: float = 0.0,
+             times: Sequence[float] | None = None) -> None:
+        """``data``'s byte k arrived at ``times[k]``, or ``t_first + k * step``, virtual s."""
         term, dec = self.term, self.term.decoder
         alpha: TraceEvent | None = None
         for k, b in enumerate(data):
-            off, t = self.offset + k, t_first + k * step
+            off = self.offset + k
+            t = float(times[k]) if times is not None else t_first + k * step
             self.recent = (self.recent + bytes((b,)))[-CONTEXT:]
             before = self._before()
             cmds = dec.feed(bytes((b,)))
