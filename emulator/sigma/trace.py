@@ -83,6 +83,11 @@ class SigmaTracer:
                     alpha = ev
                 else:
                     self._emit(ev)
+            if before[4] >= 0 and b == 0x2B and before[0] == dec.stats.unknown:
+                # a lone order letter dropped at the graphics flag (not an error: PGPLOT's
+                # GOC driver leaves a stray B after every cursor read)
+                self._emit(TraceEvent(off - 1, t, "dropped", {"letter": chr(before[4])}))
+                self.start = off
             problem = self._problem(before, b, cmds, off, t)
             if problem is not None:
                 if alpha is not None:
