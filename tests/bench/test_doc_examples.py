@@ -13,7 +13,9 @@ from pathlib import Path
 import pytest
 
 DOC = Path(__file__).resolve().parents[2] / "docs" / "api.md"
+GUIDE = DOC.parent / "host-programs.md"
 BLOCKS = re.findall(r"```python\n(.*?)```", DOC.read_text(), flags=re.S)
+GUIDE_BLOCKS = re.findall(r"```python\n(.*?)```", GUIDE.read_text(), flags=re.S)
 
 
 def test_the_doc_has_an_example_for_each_device_and_the_plugin():
@@ -25,6 +27,17 @@ def test_the_doc_has_an_example_for_each_device_and_the_plugin():
 @pytest.mark.parametrize("k", [k for k, b in enumerate(BLOCKS) if "def test_" not in b])
 def test_a_doc_example_runs(k, capsys):
     exec(compile(BLOCKS[k], f"{DOC}:block{k}", "exec"), {})
+
+
+@pytest.mark.parametrize("k", range(len(GUIDE_BLOCKS)))
+def test_a_host_programs_guide_example_runs(k):
+    exec(compile(GUIDE_BLOCKS[k], f"{GUIDE}:block{k}", "exec"), {})
+
+
+def test_the_guide_covers_both_devices_and_the_pgplot_driver():
+    assert len(GUIDE_BLOCKS) >= 4
+    assert any("PgplotGoc" in b for b in GUIDE_BLOCKS)
+    assert any("Rainbow()" in b for b in GUIDE_BLOCKS)
 
 
 def test_the_plugin_is_registered_for_pytest():
