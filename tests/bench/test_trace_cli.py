@@ -89,3 +89,42 @@ def test_link_dump_decode_shows_orders_and_replies(tmp_path, capsys):
     out = capsys.readouterr().out.splitlines()
     assert any("      24 0x51" in line and "!! unknown" in line for line in out)
     assert out[-2].endswith("< b'A468,356\\r'") and out[-1] == "# 2 protocol warnings"
+
+
+def _serve(tmp_path, *extra):  # noqa: ANN202
+    import os
+    import subprocess
+    import sys
+
+    env = dict(os.environ, PYTHONPATH=str(Path(__file__).resolve().parents[2]))
+    proc = subprocess.Popen([sys.executable, "-m", "camlab88", "rainbow", "serve", "--headless",
+                             "--port", "0", "--connections", "1", *extra],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+    line = proc.stdout.readline()
+    assert "listening on 127.0.0.1:" in line, line + proc.stderr.read()
+    return proc, int(line.rsplit(":", 1)[1])
+
+
+def test_rainbow_serve_traces_and_strict_stops_at_the_first_refusal(tmp_path):
+    import pytest
+
+    from protocols.rainbow import RainbowClient, RainbowRefused, SocketTransport
+    from protocols.rainbow.stream import StreamError
+
+    trace = tmp_path / "serve.jsonl"
+    proc, port = _serve(tmp_path, "--trace", str(trace), "--strict-protocol")
+    try:
+        client = RainbowClient(SocketTransport(port, timeout=10))
+        assert client.hello()["screen_w"] == 768
+        with pytest.raises((StreamError, RainbowRefused, OSError)):
+            client.destroy(99)  # refused: strict mode ends the server
+        client.close()
+        _out, err = proc.communicate(timeout=20)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+    assert proc.returncode == 1
+    assert "camlab88 rainbow serve: the command stream: byte 5 (t=0.000000 s): destroy" in err
+    got = _lines(trace)
+    assert [e["order"] for e in got] == ["hello", "destroy"]
+    assert got[1]["kind"] == "refused" and "no node 99" in got[1]["warning"]
