@@ -32,11 +32,13 @@ def _sigma_run(chunks: list[bytes], save_at: int | None) -> tuple[np.ndarray, by
     return m.frame(), m.host.read(), m.clock.now
 
 
-@settings(max_examples=20, deadline=None)
-@given(st.lists(st.integers(0, len(PICTURE)), min_size=1, max_size=6), st.data())
-def test_a_sigma_state_saved_anywhere_continues_bit_identically(cuts, data):
-    cuts = sorted(set(cuts) | {0, len(PICTURE)})
-    chunks = [PICTURE[a:b] for a, b in zip(cuts, cuts[1:])]
+@settings(max_examples=25, deadline=None)
+@given(st.lists(st.integers(0, len(PICTURE)), min_size=1, max_size=6),
+       st.binary(max_size=40), st.data())
+def test_a_sigma_state_saved_anywhere_continues_bit_identically(cuts, noise, data):
+    stream = PICTURE + noise + PICTURE  # random bytes too: half-read orders get saved
+    cuts = sorted(set(cuts) | {0, len(stream)})
+    chunks = [stream[a:b] for a, b in zip(cuts, cuts[1:])]
     save_at = data.draw(st.integers(0, len(chunks)))
     want = _sigma_run(chunks, None)
     got = _sigma_run(chunks, save_at)
@@ -103,3 +105,37 @@ def test_a_rainbow_state_saved_between_calls_continues_bit_identically(save_at):
         frames.append(m.frame())
     assert np.array_equal(frames[0], frames[1])
     assert frames[0].any()
+
+
+CONTINUE = """
+import hashlib, sys
+from emulator.machine import SigmaMachine
+m = SigmaMachine()
+m.load_state(open(sys.argv[1], "rb").read())
+m.host.write(b"GI100100GJ700500BH")
+m.run_until(2)
+print(hashlib.sha256(m.frame().tobytes()).hexdigest(), m.clock.exact, m.host.read().hex())
+"""
+
+
+def test_a_sigma_state_continues_identically_in_a_fresh_process(tmp_path):
+    import hashlib
+    import os
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    m = SigmaMachine()
+    m.host.write(PICTURE)
+    m.tick(Fraction(3, 100))
+    m.terminal.key("q")  # a key on its way up the line
+    path = tmp_path / "state.bin"
+    path.write_bytes(m.save_state())
+    m.host.write(b"GI100100GJ700500BH")
+    m.run_until(2)
+    want = f"{hashlib.sha256(m.frame().tobytes()).hexdigest()} {m.clock.exact} " \
+           f"{m.host.read().hex()}"
+    env = dict(os.environ, PYTHONPATH=str(Path(__file__).resolve().parents[2]))
+    got = subprocess.run([sys.executable, "-c", CONTINUE, str(path)], capture_output=True,
+                         text=True, check=True, env=env).stdout.strip()
+    assert got == want
