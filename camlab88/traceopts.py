@@ -38,6 +38,7 @@ class TraceRun:
                                  f"{exc.strerror or exc}") from None
         self.problems = 0
         self.failed = False
+        self.stream: bytes | None = None  # the whole input, when known: strict shows after
         self.sink: Callable[[Any], None] | None = (
             self._sink if self.file is not None or self.strict else None)
 
@@ -65,7 +66,11 @@ def open_trace(args: argparse.Namespace, command: str, source: str) -> Iterator[
         yield run
     except ProtocolError as exc:
         run.failed = True
-        print(f"{command}: {source}: {exc}", file=sys.stderr, flush=True)
+        after = ""
+        if run.stream is not None:
+            off = exc.event.offset
+            after = f"; bytes from it on: {run.stream[off:off + 12]!r}"
+        print(f"{command}: {source}: {exc}{after}", file=sys.stderr, flush=True)
     finally:
         if run.file is not None:
             run.file.close()

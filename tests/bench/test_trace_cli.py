@@ -40,6 +40,7 @@ def test_render_strict_exits_1_naming_offset_time_bytes_and_expectation(tmp_path
     err = capsys.readouterr().err
     assert f"{src}: byte 24 (t=0.026042 s): unknown byte 0x51" in err
     assert "b'200GJ600200Q'" in err and "expected an order letter" in err
+    assert "bytes from it on: b'QQ600400BH'" in err
     assert not out.exists()  # nothing is written from a stream strict mode refused
 
 

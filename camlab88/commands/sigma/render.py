@@ -51,6 +51,7 @@ def render(args: argparse.Namespace) -> int:
         raise _die(str(exc)) from None
     term = Terminal(args.model)
     with open_trace(args, COMMAND, str(args.stream)) as trace:
+        trace.stream = host_bytes(got)
         feed = term.feed if trace.sink is None else trace.stream_feeder(term, got,
                                                                         settings.char_time)
         if args.frames is not None:
