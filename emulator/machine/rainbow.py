@@ -8,7 +8,6 @@ from collections.abc import Callable
 
 import numpy as np
 
-from emulator.machine import rainbow_state
 from emulator.machine.state_file import MachineStateError, pack, unpack
 from emulator.protocol_trace import TraceEvent
 from emulator.rainbow.device import FRAME_MS, Rainbow
@@ -95,7 +94,7 @@ class RainbowMachine:
     # ------------------------------------------------------------------ state
     def save_state(self) -> bytes:
         """Device (graph, memory, LUTs, clock, input queue), client ids, stream position."""
-        head, blobs = rainbow_state.save(self.device)
+        head, blobs = self.device.save_state()
         c, d = self.client, self.executor.decoder
         head["client"] = [c._next_node, c._next_arc, c.calls]
         head["stream"] = {"offset": d._offset, "pending": bytes(d._buf).hex()}
@@ -109,7 +108,8 @@ class RainbowMachine:
             raise MachineStateError("machine state is for a Rainbow with "
                                     f"strict_memory={head.get('strict_memory')!r}")
         try:
-            device = rainbow_state.load(head, blobs, self.strict_memory)
+            device = Rainbow(strict=self.strict_memory)
+            device.load_state(head, blobs)
             nxt, arc, calls = (int(v) for v in head["client"])
             offset, pending = int(head["stream"]["offset"]), bytes.fromhex(
                 head["stream"]["pending"])
