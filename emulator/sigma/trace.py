@@ -88,13 +88,13 @@ class SigmaTracer:
                 # GOC driver leaves a stray B after every cursor read)
                 self._emit(TraceEvent(off - 1, t, "dropped", {"letter": chr(before[4])}))
                 self.start = off
-            problem = self._problem(before, b, cmds, off, t)
-            if problem is not None:
-                if alpha is not None:
-                    self._emit(alpha)
-                    alpha = None
+            problems = self._problems(before, b, cmds, off, t)
+            if problems and alpha is not None:
+                self._emit(alpha)
+                alpha = None
+            for problem in problems:
                 self._emit(problem)
-            if cmds or problem is not None or self._idle():
+            if cmds or problems or self._idle():
                 self.start = off + 1
         if alpha is not None:
             self._emit(alpha)
@@ -147,33 +147,40 @@ class SigmaTracer:
         return [TraceEvent(at, t, names.get(type(c), type(c).__name__))]
 
     # ------------------------------------------------------------------ problems
-    def _problem(self, before: tuple[Any, ...], b: int, cmds: list[Any], off: int,
-                 t: float) -> TraceEvent | None:
+    def _problems(self, before: tuple[Any, ...], b: int, cmds: list[Any], off: int,
+                  t: float) -> list[TraceEvent]:
+        """Every counter step this byte caused, in the order the decoder took them: a field
+        cut short, then the byte decoded afresh (an unknown order, an unknown byte), then
+        what the terminal refused."""
         s = self.term.decoder.stats
         unknown, malformed, errors, spec, letter, pair, flag_k, mode, esc = before
         ctx = bytes(self.recent)
-        if s.unknown > unknown:
-            if letter >= 0:
-                code = chr(letter) + chr(b)
-                return TraceEvent(off - 1, t, code, {}, f"unknown order {code!r}", "unknown",
-                                  _after_letter(chr(letter)), ctx)
+        out = [TraceEvent(self.start, t, "malformed", {},
+                          f"byte 0x{b:02X} ({chr(b)!r}) cuts an order short", "malformed",
+                          self._expected(spec, pair, flag_k, mode), ctx)
+               for _ in range(s.malformed - malformed)]
+        new_unknown = s.unknown - unknown
+        if new_unknown and letter >= 0:
+            code = chr(letter) + chr(b)
+            out.append(TraceEvent(off - 1, t, code, {}, f"unknown order {code!r}", "unknown",
+                                  _after_letter(chr(letter)), ctx))
+            new_unknown -= 1
+        for _ in range(new_unknown):
             if mode is Mode.AGS or esc:
-                return TraceEvent(off, t, "ESC", {}, "unknown ESC sequence in abbreviated "
-                                  "mode", "unknown", "ESC M hhh or ESC R", ctx)
-            return TraceEvent(off, t, f"0x{b:02X}", {}, f"unknown byte 0x{b:02X} in graphics "
-                              "mode", "unknown", "an order letter, a digit, or +-*/", ctx)
-        if s.malformed > malformed:
-            return TraceEvent(self.start, t, "malformed", {},
-                              f"byte 0x{b:02X} ({chr(b)!r}) cuts an order short", "malformed",
-                              self._expected(spec, pair, flag_k, mode), ctx)
+                out.append(TraceEvent(off, t, "ESC", {}, "unknown ESC sequence in abbreviated "
+                                      "mode", "unknown", "ESC M hhh or ESC R", ctx))
+            else:
+                out.append(TraceEvent(off, t, f"0x{b:02X}", {}, f"unknown byte 0x{b:02X} in "
+                                      "graphics mode", "unknown",
+                                      "an order letter, a digit, or +-*/", ctx))
         if self.term.errors > errors:
             order = next((c for c in reversed(cmds) if isinstance(c, Order)), None)
             code = order.code if order is not None else "?"
             args = list(order.args) if order is not None else []
-            return TraceEvent(self.start, t, code, {"values": args},
-                              f"{code}{args} is out of range on a {self.term.model.name}",
-                              "out of range", self._range(code), ctx)
-        return None
+            out.append(TraceEvent(self.start, t, code, {"values": args},
+                                  f"{code}{args} is out of range on a {self.term.model.name}",
+                                  "out of range", self._range(code), ctx))
+        return out
 
     def _expected(self, spec: Any, pair: list[int], flag_k: int, mode: Mode) -> str:
         if spec is not None:
