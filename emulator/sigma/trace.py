@@ -4,7 +4,8 @@ decoded arguments and any warning (unknown, malformed, out of range), for host a
 Tracing feeds the terminal one byte at a time (the decoder is built to be split anywhere,
 so the picture is the same) and compares the decoder's counters around each byte; with
 tracing off nothing here runs, so the fast paths of ``Terminal.feed`` are untouched.
-``strict`` raises ``ProtocolError`` at the first warning.
+``strict`` raises ``ProtocolError`` for the first warning once the piece of input that
+held it has been fed (so the terminal and the line stay consistent and may carry on).
 """
 
 from __future__ import annotations
@@ -58,6 +59,7 @@ class SigmaTracer:
         self.start = 0  # offset of the first byte of the order being read
         self.recent = bytearray()
         self.warnings = 0
+        self._first: TraceEvent | None = None  # strict: the first problem of this piece
 
     def feed(self, data: bytes, t_first: float = 0.0, step: float = 0.0,
              times: Sequence[float] | None = None) -> None:
@@ -99,13 +101,16 @@ class SigmaTracer:
         if alpha is not None:
             self._emit(alpha)
         self.offset += len(data)
+        if self._first is not None:  # strict: raised once the piece is in, so the terminal
+            first, self._first = self._first, None  # and the line stay consistent
+            raise ProtocolError(first)
 
     def _emit(self, ev: TraceEvent) -> None:
         self.sink(ev)
         if ev.warning is not None:
             self.warnings += 1
-            if self.strict:
-                raise ProtocolError(ev)
+            if self.strict and self._first is None:
+                self._first = ev
 
     def _idle(self) -> bool:
         dec = self.term.decoder

@@ -151,3 +151,16 @@ def test_rainbow_state_round_trip(rainbow):
     other.load_state(rainbow.save_state())
     assert np.array_equal(other.screen, rainbow.screen) and other.now == rainbow.now
     assert other.client.create_pad(8, 8, 1) == pad + 1  # the client's ids carry on
+
+
+def test_after_a_strict_error_the_sigma_carries_on_consistently():
+    sigma = Sigma(strict=True)
+    sigma.send(b"\r+-*/QGI200200GJ300300BH")
+    with pytest.raises(ProtocolError, match="byte 5"):
+        sigma.run()
+    sigma.run()  # the rest of the stream was not lost
+    plain = Sigma(trace=False)
+    plain.send(b"\r+-*/QGI200200GJ300300BH")
+    plain.run()
+    assert np.array_equal(sigma.screen, plain.screen) and sigma.screen.any()
+    assert sigma.stats["bytes"] == plain.stats["bytes"]
