@@ -79,6 +79,7 @@ class SigmaLineTarget:
         self._order_since: Fraction | None = None  # when the unfinished order began
         self._commands = 0
         self.tap = OutsideTap(line.host, self._line_hung_up)  # the bridge's endpoint
+        self.tracer: Any = None  # emulator.sigma.trace.SigmaTracer for --trace / --strict
         term.on_output = self._up
 
     def _up(self, data: bytes) -> None:
@@ -96,13 +97,25 @@ class SigmaLineTarget:
 
     def tick(self) -> bool:
         self._outside()
-        self._received = self.line.device.read()
+        if self.tracer is None:
+            self._received = self.line.device.read()
+            if self._received:
+                self.term.feed(self._received)
+        else:
+            self._received = self._traced()
         if self._received:
             self._frame = None
-            self.term.feed(self._received)
         self._watch_order()
         self.line.clock.advance(TICK)
         return self.until is None or self.line.clock.exact < self.until
+
+    def _traced(self) -> bytes:
+        """This tick's bytes through the tracer, each at its arrival time."""
+        runs = self.line.device.read_timed(exact=True)
+        step = self.line.settings.char_time
+        for t_last, data in runs:
+            self.tracer.feed(data, float(t_last - (len(data) - 1) * step), float(step))
+        return b"".join(data for _t, data in runs)
 
     def _outside(self) -> None:
         """The outside end's turn: the bridge polled, or a replay's recorded traffic."""

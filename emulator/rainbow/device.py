@@ -40,6 +40,40 @@ class Rainbow:
         pending input, the frame counter), with video memory of the same size."""
         Rainbow.__init__(self, VideoMemory(self.memory.width, self.memory.height))
 
+    # -- state -----------------------------------------------------------------------------
+    def save_state(self) -> tuple[dict, dict[str, bytes]]:
+        """(JSON values, raw arrays): each part gives its own (graph, memory, inputs), then
+        the LUTs and the clock. The band structure is recompiled on load (a compile from
+        scratch equals the incremental one)."""
+        head = {"memory": [self.memory.width, self.memory.height],
+                "graph": self.graph.save_state(), "inputs": self.inputs.save_state(),
+                "clock": [self.frame_count, self.time_ms]}
+        blobs = dict(self.memory.save_state(), lut=self.lut.tobytes(),
+                     lut_pending=self.lut_pending.tobytes())
+        return head, blobs
+
+    def load_state(self, head: dict, blobs: dict[str, bytes]) -> None:
+        """Put back save_state()'s parts (ValueError/KeyError/TypeError if damaged)."""
+        if head["memory"] != [self.memory.width, self.memory.height]:
+            raise ValueError(f"state has {head['memory']} video memory, this device "
+                             f"{[self.memory.width, self.memory.height]}")
+        for name in ("lut", "lut_pending"):
+            if len(blobs[name]) != self.lut.nbytes:
+                raise ValueError(f"state {name!r} is {len(blobs[name])} bytes")
+        frames, ms = (int(v) for v in head["clock"])
+        scratch = PadGraph()  # check the graph and the queue before changing anything
+        scratch.load_state(head["graph"])
+        InputController().load_state(head["inputs"])
+        self.memory.load_state(blobs)
+        self.graph = scratch
+        self.inputs.load_state(head["inputs"])
+        self.lut[...] = np.frombuffer(blobs["lut"], np.uint8).reshape(self.lut.shape)
+        self.lut_pending[...] = np.frombuffer(blobs["lut_pending"], np.uint8).reshape(
+            self.lut.shape)
+        self.frame_count, self.time_ms = frames, ms
+        self.compiler = Compiler()
+        self._compiled_version = -1
+
     # -- nodes and arcs --------------------------------------------------------------------
     def create_pad(self, width: int, height: int, depth: int, plane: int = 0,
                    lut_page: int = 0, node: int | None = None) -> int:

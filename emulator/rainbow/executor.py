@@ -14,6 +14,7 @@ import numpy as np
 from emulator.rainbow.device import Rainbow
 from emulator.rainbow.errors import RainbowError
 from emulator.rainbow.graph import SCREEN_H, SCREEN_W
+from emulator.rainbow.trace import RainbowTracer
 from emulator.rainbow.video import LUT_SIZE
 from protocols.rainbow.events import encode_event
 from protocols.rainbow.stream import OK, REFUSED, Command, Decoder, StreamError, encode_reply
@@ -29,6 +30,7 @@ class Executor:
         # every later frame is composed into (no allocation per frame), so it changes under
         # whoever holds it: keep frame_copy() if a frame must survive the next wait_frame.
         self.last_frame: np.ndarray | None = None
+        self.tracer: RainbowTracer | None = None  # protocol trace (emulator/rainbow/trace.py)
 
     def frame_copy(self) -> np.ndarray | None:
         """A copy of the last frame that later frames will not overwrite (None before one)."""
@@ -42,19 +44,35 @@ class Executor:
             if len(cmds) != 1 or decoder.pending:
                 raise StreamError("byte 0: expected exactly one whole command frame")
         except StreamError as exc:
+            if self.tracer is not None:
+                self.tracer.stream_error(exc, self.device.time_ms, frame[:12])
             return encode_reply(REFUSED, str(exc).encode())
         return self.execute(cmds[0])
 
     def feed(self, data: bytes) -> bytes:
         """Bytes from a stream (split anywhere) -> replies for every whole command in them."""
-        return b"".join(self.execute(c) for c in self.decoder.feed(data))
+        if self.tracer is None:
+            return b"".join(self.execute(c) for c in self.decoder.feed(data))
+        try:
+            cmds = self.decoder.feed(data)
+        except StreamError as exc:
+            self.tracer.stream_error(exc, self.device.time_ms, data[:12])
+            raise
+        replies = b"".join(self.execute(c) for c in cmds)
+        if self.decoder.error is not None:
+            self.tracer.stream_error(self.decoder.error, self.device.time_ms)
+        return replies
 
     def execute(self, cmd: Command) -> bytes:
         try:
             payload = getattr(self, "_op_" + cmd.op.name)(*cmd.args, blob=cmd.blob)
         except (RainbowError, ValueError) as exc:
-            return encode_reply(REFUSED, f"{cmd.op.name} at byte {cmd.offset}: {exc}".encode())
-        return encode_reply(OK, payload or b"")
+            reply = encode_reply(REFUSED, f"{cmd.op.name} at byte {cmd.offset}: {exc}".encode())
+        else:
+            reply = encode_reply(OK, payload or b"")
+        if self.tracer is not None:
+            self.tracer.command(cmd, reply, self.device.time_ms)
+        return reply
 
     # -- one method per op ---------------------------------------------------------------
     def _op_hello(self, blob: bytes) -> bytes:

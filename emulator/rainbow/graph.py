@@ -96,6 +96,45 @@ class PadGraph:
         self._next_node = 1
         self._next_arc = 1
 
+    # -- state -----------------------------------------------------------------------------
+    def save_state(self) -> dict:
+        """Nodes (pads with their allocations, clusters with their arcs in map order), arcs
+        and the ids handed out, as JSON values."""
+        nodes = []
+        for n in self.nodes.values():
+            if isinstance(n, Pad):
+                a = n.alloc
+                alloc = None if a is None else [a.x, a.y, a.width, a.height, a.plane_mask]
+                nodes.append(["pad", n.id, n.width, n.height, n.depth, n.plane, n.lut_page,
+                              alloc])
+            else:
+                nodes.append(["cluster", n.id, n.width, n.height, list(n.arcs)])
+        arcs = [[a.id, a.parent, a.child, a.x, a.y, a.priority, a.on] for a in self.arcs.values()]
+        return {"nodes": nodes, "arcs": arcs,
+                "ids": [self.version, self._next_node, self._next_arc]}
+
+    def load_state(self, state: dict) -> None:
+        """Put back save_state()'s values (ValueError/KeyError/TypeError if damaged; checked
+        before anything changes)."""
+        nodes: dict[int, Pad | Cluster] = {}
+        for entry in state["nodes"]:
+            kind, nid, w, h = entry[0], int(entry[1]), int(entry[2]), int(entry[3])
+            if kind == "pad":
+                depth, plane, page, alloc = entry[4:]
+                a = None if alloc is None else Allocation(*(int(v) for v in alloc))
+                nodes[nid] = Pad(nid, w, h, int(depth), int(plane), int(page), a)
+            elif kind == "cluster":
+                nodes[nid] = Cluster(nid, w, h, [int(v) for v in entry[4]])
+            else:
+                raise ValueError(f"graph state node kind {kind!r} is not pad or cluster")
+        if SCREEN not in nodes:
+            raise ValueError("graph state has no screen node")
+        arcs = {int(a[0]): Arc(int(a[0]), int(a[1]), int(a[2]), int(a[3]), int(a[4]),
+                               int(a[5]), bool(a[6])) for a in state["arcs"]}
+        version, next_node, next_arc = (int(v) for v in state["ids"])
+        self.nodes, self.arcs = nodes, arcs
+        self.version, self._next_node, self._next_arc = version, next_node, next_arc
+
     # -- nodes -----------------------------------------------------------------------------
     def _new_node_id(self, node: int | None) -> int:
         # Ids are never reused (a stale id held by a program must not name a new node):

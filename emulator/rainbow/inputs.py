@@ -5,7 +5,14 @@ from __future__ import annotations
 from collections import deque
 from dataclasses import replace
 
-from protocols.rainbow.events import Event, KeyEvent, MouseEvent, TabletEvent
+from protocols.rainbow.events import (
+    Event,
+    KeyEvent,
+    MouseEvent,
+    TabletEvent,
+    decode_events,
+    encode_event,
+)
 
 QUEUE_LIMIT = 4096  # a program that never reads its events loses the oldest, never memory
 
@@ -35,3 +42,16 @@ class InputController:
         while self.queue and len(out) < limit:
             out.append(self.queue.popleft())
         return out
+
+    def save_state(self) -> dict:
+        """The queue (encoded events), the pointer and the drop count, as JSON values."""
+        return {"queue": "".join(encode_event(e).hex() for e in self.queue),
+                "pointer": [self.mouse_x, self.mouse_y, self.buttons], "dropped": self.dropped}
+
+    def load_state(self, state: dict) -> None:
+        events = decode_events(bytes.fromhex(state["queue"]), "input state")
+        x, y, buttons = (int(v) for v in state["pointer"])
+        dropped = int(state["dropped"])
+        self.queue.clear()
+        self.queue.extend(events)
+        self.mouse_x, self.mouse_y, self.buttons, self.dropped = x, y, buttons, dropped

@@ -48,6 +48,19 @@ class VideoMemory:
         # Per granule: which planes are taken.
         self._used = np.zeros((height // GRANULE, width // GRANULE), dtype=np.uint8)
 
+    def save_state(self) -> dict[str, bytes]:
+        """The words and the allocation map, as raw bytes."""
+        return {"words": self.words.tobytes(), "used": self._used.tobytes()}
+
+    def load_state(self, state: dict[str, bytes]) -> None:
+        """Put back save_state()'s bytes (ValueError if they do not fit this memory)."""
+        for name, arr in (("words", self.words), ("used", self._used)):
+            if len(state[name]) != arr.nbytes:
+                raise ValueError(f"video memory state {name!r} is {len(state[name])} bytes, "
+                                 f"this memory needs {arr.nbytes}")
+        self.words[...] = np.frombuffer(state["words"], np.uint8).reshape(self.words.shape)
+        self._used[...] = np.frombuffer(state["used"], np.uint8).reshape(self._used.shape)
+
     @classmethod
     def strict(cls) -> VideoMemory:
         return cls(*STRICT_SIZE)

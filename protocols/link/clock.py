@@ -54,5 +54,16 @@ class VirtualClock:
             raise ValueError(f"the clock cannot go backwards (from {self.now!r} s to {t!r} s)")
         self._now = target
 
+    def save_state(self) -> list[int]:
+        """The time as [numerator, denominator] (JSON-able, exact)."""
+        return [self._now.numerator, self._now.denominator]
+
+    def load_state(self, state: object) -> None:
+        """Set the time from save_state()'s value (a restore may go backwards)."""
+        if not (isinstance(state, list) and len(state) == 2
+                and all(type(v) is int for v in state) and state[0] >= 0 and state[1] > 0):
+            raise ValueError(f"clock state {state!r} is not [numerator, denominator] >= 0")
+        self._now = Fraction(state[0], state[1])
+
     def __repr__(self) -> str:
         return f"VirtualClock(now={self._now})"

@@ -252,6 +252,19 @@ class SerialLine:
             d.tail = d.tx_free
         return dropped
 
+    def save_state(self) -> dict[str, object]:
+        """Both directions' queued bytes, flow events and unread bytes (JSON-able; the clock
+        and the recorder are not included)."""
+        from protocols.link.line_state import save
+
+        return save(self)
+
+    def load_state(self, state: object) -> None:
+        """Put back save_state()'s dict (ValueError naming a bad entry, nothing changed)."""
+        from protocols.link.line_state import load
+
+        load(self, state)
+
     @property
     def stats(self) -> dict[str, int]:
         return {

@@ -35,6 +35,7 @@ from protocols.sigma.decoder_state import DecoderState
 from protocols.sigma.orders import (
     BY_CODE,
     CR,
+    FF,
     FIRST_LETTERS,
     GRAPHICS_FLAG,
     LF,
@@ -189,7 +190,9 @@ class Decoder:
                 self._flag_k = 1
                 continue
             text.append(b)
-            self._line_start = b in (CR, LF)
+            # a form feed starts a line too: PGPLOT's GOC driver erases the alpha screen with
+            # BH FF +-*/ BH and expects the flag straight after the FF (docs/fidelity/sigma.md)
+            self._line_start = b in (CR, LF, FF)
         if text:
             out.append(AlphaText(bytes(text)))
         return i
@@ -242,6 +245,9 @@ class Decoder:
             self.stats.malformed += 1
             return False
         if self._letter >= 0:
+            if b == 0x2B:  # the graphics flag begins afresh: a lone letter before it is
+                self._letter = -1  # dropped (PGPLOT's stray B after a cursor read)
+                return False
             code = bytes((self._letter, b))
             spec = BY_CODE.get(code)
             if spec is None:

@@ -1,9 +1,10 @@
 """Streams formed the way the two public host drivers formed them (facts/sigma.md S1, S2, S3).
 
-``PgplotGoc`` follows PGPLOT's GOC driver (godriv.f): the init string CR LF ``+-*/``
-``DD000CBGAAAHE999CK1GH``, buffers of at most 130 bytes flushed when fewer than 32 are left,
-each buffer opened with the graphics flag and closed with ``BH``; NGS decimal pairs with
-+100; FA/FB colours; the cursor prompt ``GI CE CA xxxyyy CF HF``.
+``PgplotGoc`` is PGPLOT's GOC driver (godriv.f) byte for byte on the calls of the real
+streams in tests/data/sigma/pgplot: the init string CR LF ``+-*/DD000CBGAAAHE999CK1GH BH``,
+buffers ``+-*/GJ ... BH`` flushed once within 32 bytes of 130, NGS decimal pairs with +100,
+FA/FB colours, the alpha erase ``+-*/GJ BH FF +-*/ BH``, the cursor prompt
+``+-*/GICECA xxxyyy CFHF`` and its 11-byte trailer ``+-*/CECBGJB``.
 
 ``RalGks`` follows the RAL GKS Sigmex driver (gk0swd/gk0sln/gk0sro/gk0srl): every buffer is
 CR ``+-*/`` ... CR LF; open sends HH + 10 NULs, DD000, DG017DF019, GA, AJ, CK1, GH (and IO on
@@ -25,34 +26,50 @@ from protocols.sigma.orders import CR, GRAPHICS_FLAG, LF, US
 
 
 class PgplotGoc:
-    """PGPLOT /GOC (T5670-style, 768x512, colour indices 0 and 1)."""
+    """PGPLOT /GOC (T5670-style, 768x512, colour indices 0 and 1), byte for byte as
+    PGPLOT 5.2.2's godriv.f forms its stream (checked against the driver's real output,
+    tests/sigma/test_pgplot.py).
+
+    Every buffer opens with ``+-*/GJ`` and closes with ``BH``; it is flushed once it holds
+    ``BUFFER_BYTES - FLUSH_WITHIN`` = 98 bytes or more (GRGO02), or when PGPLOT asks. A line
+    whose start is not where the last one ended is ``GI xxxyyy GJ xxxyyy``, else one bare
+    pair; the last point is remembered across buffers, pages and cursor reads.
+    """
 
     BUFFER_BYTES = 130
-    FLUSH_BELOW = 32
+    FLUSH_WITHIN = 32
+    INIT = b"DD000CBGAAAHE999CK1GH"
+    ERASE_ALPHA = b"BH\x0c" + GRAPHICS_FLAG  # GOCERA, sent as one buffer's contents
+    CURSOR_END = GRAPHICS_FLAG + b"CECBGJB"  # GCEND*11: the last H of +-*/CECBGJBH is lost
 
     def __init__(self) -> None:
         self.enc = Encoder()
         self.out = bytearray()
         self._buf = bytearray()
-        self._pen: tuple[int, int] | None = None  # where a bare pair would continue from
+        self._last: tuple[int, int] | None = None  # where a bare pair continues from
 
     def _put(self, data: bytes) -> None:
         if not self._buf:
-            self._buf += GRAPHICS_FLAG
-            self._pen = None  # a new buffer re-states the pen mode
+            self._buf += GRAPHICS_FLAG + b"GJ"
         self._buf += data
-        if self.BUFFER_BYTES - len(self._buf) < self.FLUSH_BELOW:
+        if self.BUFFER_BYTES - len(self._buf) <= self.FLUSH_WITHIN:
             self.flush()
 
     def flush(self) -> None:
+        """GRGO03: send the buffer with BH appended (nothing if it is empty)."""
         if self._buf:
             self.out += self._buf + b"BH"
             self._buf = bytearray()
-            self._pen = None
 
     def init(self) -> None:
+        """GRGO10: CR LF, the flag, the initialisation orders, BH (not buffered)."""
         self.flush()
-        self.out += bytes((CR, LF)) + GRAPHICS_FLAG + b"DD000CBGAAAHE999CK1GH" + b"BH"
+        self.out += bytes((CR, LF)) + GRAPHICS_FLAG + self.INIT + b"BH"
+
+    def begin_picture(self) -> None:
+        """IFUNC 11: initialise, then erase the graphics (DA, buffered)."""
+        self.init()
+        self.erase()
 
     def erase(self) -> None:
         self._put(self.enc.erase())
@@ -61,11 +78,12 @@ class PgplotGoc:
         self._put(self.enc.pen_draw() if ci >= 1 else self.enc.pen_erase())
 
     def line(self, x0: int, y0: int, x1: int, y1: int) -> None:
-        if self._pen == (x0, y0):
+        if self._last == (x0, y0):
             self._put(self.enc.pair(x1, y1))
         else:
-            self._put(self.enc.move(x0, y0) + self.enc.draw(x1, y1))
-        self._pen = (x1, y1)
+            self._put(self.enc.pen_up() + self.enc.pair(x0, y0) + self.enc.pen_down()
+                      + self.enc.pair(x1, y1))
+        self._last = (x1, y1)
 
     def polyline(self, points: Sequence[tuple[int, int]]) -> None:
         for (x0, y0), (x1, y1) in zip(points, points[1:]):
@@ -75,17 +93,23 @@ class PgplotGoc:
         self.line(x, y, x, y)
 
     def cursor_prompt(self, x: int, y: int) -> bytes:
-        """The read-with-prompt bytes: flag GI CE CA xxxyyy CF HF."""
+        """GRGO11's read-with-prompt: flush, then flag GI CE CA xxxyyy CF HF (returned,
+        and added to the stream)."""
         self.flush()
-        return GRAPHICS_FLAG + b"GICECA" + self.enc.pair(x, y) + b"CFHF"
+        prompt = GRAPHICS_FLAG + b"GICECA" + self.enc.pair(x, y) + b"CFHF"
+        self.out += prompt
+        return prompt
 
     def after_cursor(self) -> None:
-        self.flush()
-        self.out += GRAPHICS_FLAG + b"CECBGJBH"
+        """GRGO11's trailer, as the driver really sends it: 11 of its 12 bytes, leaving the
+        terminal in graphics mode with a stray B (docs/fidelity/sigma.md)."""
+        self.out += self.CURSOR_END
 
     def erase_alpha(self) -> None:
+        """IFUNC 18: flush, BH FF +-*/ as one buffer (so +-*/GJ BH FF +-*/ BH), flush."""
         self.flush()
-        self.out += b"BH\x0c" + GRAPHICS_FLAG + b"BH"
+        self._put(self.ERASE_ALPHA)
+        self.flush()
 
     def finish(self) -> bytes:
         self.flush()

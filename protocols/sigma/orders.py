@@ -61,6 +61,7 @@ US = 0x1F  # leaves abbreviated mode
 ESC = 0x1B
 CR = 0x0D
 LF = 0x0A
+FF = 0x0C
 
 ORDERS: tuple[OrderSpec, ...] = (
     # --- mode, initialisation, screen (facts/sigma.md 5.1)

@@ -25,10 +25,11 @@ def pgplot_session() -> tuple[bytes, bytes, bytes]:
     g.colour(0)
     g.line(80, 270, 700, 270)  # erase a line through the curve
     g.colour(1)
-    prompt = g.cursor_prompt(300, 300)  # flushes the graph first
+    g.flush()
     plot = bytes(g.out)
+    prompt = g.cursor_prompt(300, 300)
     g.after_cursor()
-    return plot, prompt, g.finish()[len(plot):]
+    return plot, prompt, g.finish()[len(plot) + len(prompt):]
 
 
 def pgplot_plot() -> bytes:

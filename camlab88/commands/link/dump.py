@@ -15,6 +15,11 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
                            description="Print a link recording (sigma run --record-line FILE, "
                            "link record ...) readably: one timed chunk a line.")
     p.add_argument("recording")
+    p.add_argument("--decode", action="store_true",
+                   help="show the host-to-terminal bytes as decoded Sigma orders (byte offset, "
+                   "arrival time, order, arguments, warnings) and the replies as text")
+    p.add_argument("--model", choices=("t5684", "t5688"), default="t5684",
+                   help="the terminal that decodes them (with --decode)")
     p.set_defaults(handler=dump)
 
 
@@ -24,7 +29,40 @@ def dump(args: argparse.Namespace) -> int:
     if _is_session_recording(args.recording):
         print(f"error: {args.recording} {SESSION_NOTE}", file=sys.stderr)
         return 1
+    if args.decode:
+        return _decode(args)
     return dump_recording(args.recording)
+
+
+def _decode(args: argparse.Namespace) -> int:
+    """Every order at its arrival time, replies (``<``) interleaved by time."""
+    import json
+
+    from emulator.sigma import Terminal
+    from emulator.sigma.trace_stream import StreamTracer
+    from protocols.link.recording import RecordingError, read_recording
+
+    try:
+        rec = read_recording(args.recording)
+    except (RecordingError, OSError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 1
+    lines: list[tuple[float, int, str]] = []
+
+    def show(ev) -> None:  # noqa: ANN001
+        text = f"{ev.time:12.6f} > {ev.offset:8d} {ev.order:<10} {json.dumps(ev.args)}"
+        if ev.warning is not None:
+            text += f"  !! {ev.kind}: {ev.warning}; expected {ev.expected}"
+        lines.append((ev.time, len(lines), text))
+
+    tracer = StreamTracer(Terminal(args.model), rec, rec.settings.char_time, show)
+    tracer.feed(rec.stream(">"))
+    for t, data in rec.arrivals("<"):
+        lines.append((float(t), len(lines), f"{float(t):12.6f} < {data!r}"))
+    for _t, _k, text in sorted(lines):
+        print(text)
+    print(f"# {tracer.tracer.warnings} protocol warnings")
+    return 0
 
 
 def _is_session_recording(path: str) -> bool:

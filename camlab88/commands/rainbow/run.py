@@ -6,6 +6,7 @@ import argparse
 import sys
 
 from camlab88.runopts import add_run_options, positive, run_options
+from camlab88.traceopts import add_trace_options, open_trace
 
 COMMAND = "camlab88 rainbow run"
 KEYS = "middle button: the demo's menu; close the window to quit"
@@ -31,6 +32,7 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
     u.add_argument("--tablet", metavar="SOURCE",
                    help="also feed a real tablet (hid:VID:PID, serial:PORT?protocol=P, or a "
                    "pyserial URL?protocol=P) to the Rainbow's tablet input")
+    add_trace_options(u, strict="--strict-protocol")
     u.set_defaults(handler=run)
 
 
@@ -44,21 +46,34 @@ def run(args: argparse.Namespace) -> int:
     tablet = _open_tablet(args.tablet, opts.record is not None)
     if tablet is not None and tablet.live:  # a real stylus moves on the wall clock
         opts.live = True
-    target = _target(args, opts, tablet)
+    target = None
     try:
-        run_target(target, opts)
+        with open_trace(args, COMMAND, "the command stream") as trace:
+            target = _target(args, opts, tablet, trace)
+            run_target(target, opts)
     finally:
-        if target.tablet is not None:
-            target.tablet.close()
-        if args.record_stream:
-            target.session.recorder.recording.save(args.record_stream)
-            print(f"{COMMAND}: recorded the command stream to {args.record_stream}")
+        _finish(args, target, tablet)
+    if trace.failed or target is None:
+        return 1
     dev = target.session.device
     print(f"{COMMAND}: {dev.frame_count} frames, {dev.compiler.stats.compiles} compiles")
     return 0
 
 
-def _target(args: argparse.Namespace, opts, tablet):  # noqa: ANN001, ANN202
+def _finish(args: argparse.Namespace, target, tablet) -> None:  # noqa: ANN001
+    """Close the tablet (if still open) and save --record-stream, however the run ended."""
+    if target is None:
+        if tablet is not None:
+            tablet.close()
+        return
+    if target.tablet is not None:
+        target.tablet.close()
+    if args.record_stream:
+        target.session.recorder.recording.save(args.record_stream)
+        print(f"{COMMAND}: recorded the command stream to {args.record_stream}")
+
+
+def _target(args: argparse.Namespace, opts, tablet, trace):  # noqa: ANN001, ANN202
     from emulator.harness.rainbow import RainbowTarget
     from emulator.rainbow import Rainbow
     from emulator.rainbow.session import in_process
@@ -66,6 +81,10 @@ def _target(args: argparse.Namespace, opts, tablet):  # noqa: ANN001, ANN202
 
     record = bool(args.record_stream) or opts.record is not None
     session = in_process(Rainbow(strict=args.strict), record=record)
+    if trace.sink is not None:  # from the first call the demo makes
+        from emulator.rainbow.trace import RainbowTracer
+
+        session.executor.tracer = RainbowTracer(trace.sink, trace.strict)
     if getattr(args, "demo", "pads") == "shelf":
         from protocols.rainbow.shelf import ShelfDemo
 

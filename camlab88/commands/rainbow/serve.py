@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 
 from camlab88.runopts import fail
+from camlab88.traceopts import add_trace_options, open_trace
 
 COMMAND = "camlab88 rainbow serve"
 
@@ -26,6 +27,7 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
                    "first byte (default 10)")
     v.add_argument("--idle-timeout", type=_seconds, default=60.0, metavar="S",
                    help="a program silent for S seconds gives way to one waiting (default 60)")
+    add_trace_options(v, strict="--strict-protocol")
     v.set_defaults(handler=serve)
 
 
@@ -53,14 +55,20 @@ def serve(args: argparse.Namespace) -> int:
     except OSError as exc:
         return fail(COMMAND, f"port {args.port}: {exc.strerror}", 1)
     print(f"{COMMAND}: listening on 127.0.0.1:{sock.getsockname()[1]}", flush=True)
+    executor = Executor(device, _on_frame(window, device))
     try:
-        serve_on(Executor(device, _on_frame(window, device)), sock, args.connections,
-                 frame_timeout=args.frame_timeout, idle_timeout=args.idle_timeout)
+        with open_trace(args, COMMAND, "the command stream") as trace:
+            if trace.sink is not None:
+                from emulator.rainbow.trace import RainbowTracer
+
+                executor.tracer = RainbowTracer(trace.sink, trace.strict)
+            serve_on(executor, sock, args.connections, frame_timeout=args.frame_timeout,
+                     idle_timeout=args.idle_timeout)
     finally:
         sock.close()
         if window is not None:
             window.close()
-    return 0
+    return 1 if trace.failed else 0
 
 
 def _window(scale: int):  # noqa: ANN202

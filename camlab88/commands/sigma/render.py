@@ -8,6 +8,7 @@ from fractions import Fraction
 from pathlib import Path
 
 from camlab88.runopts import frames_dir
+from camlab88.traceopts import add_trace_options, open_trace
 
 MODELS = ("t5684", "t5688")
 COMMAND = "camlab88 sigma render"
@@ -27,6 +28,7 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
     r.add_argument("--fps", type=int, default=25, help="frames per second of line time")
     r.add_argument("--baud", type=int, default=9600,
                    help="line speed that times --frames (a recording keeps its own times)")
+    add_trace_options(r)
     r.set_defaults(handler=render)
 
 
@@ -48,11 +50,17 @@ def render(args: argparse.Namespace) -> int:
     except StreamFileError as exc:
         raise _die(str(exc)) from None
     term = Terminal(args.model)
-    if args.frames is not None:
-        n = _write_frames(term, got, settings, Fraction(1, args.fps), args.frames)
-        print(f"wrote {n} frames to {args.frames}")
-    else:
-        term.feed(host_bytes(got))
+    with open_trace(args, COMMAND, str(args.stream)) as trace:
+        trace.stream = host_bytes(got)
+        feed = term.feed if trace.sink is None else trace.stream_feeder(term, got,
+                                                                        settings.char_time)
+        if args.frames is not None:
+            n = _write_frames(feed, term, got, settings, Fraction(1, args.fps), args.frames)
+            print(f"wrote {n} frames to {args.frames}")
+        else:
+            feed(host_bytes(got))
+    if trace.failed:
+        return 1
     if args.out is not None:
         _png(term.frame(), args.out)
         print(f"wrote {args.out}")
@@ -78,7 +86,8 @@ def _png(frame, path: Path) -> None:  # noqa: ANN001
         raise _die(f"cannot write {path}: {exc.strerror or exc}") from None
 
 
-def _write_frames(term, got, settings, period: Fraction, directory: Path) -> int:  # noqa: ANN001
+def _write_frames(feed, term, got, settings, period: Fraction,  # noqa: ANN001
+                  directory: Path) -> int:
     from protocols.link.sniff import frame_count
     from protocols.png import frame_path
 
@@ -88,7 +97,7 @@ def _write_frames(term, got, settings, period: Fraction, directory: Path) -> int
         raise _die(str(exc)) from None
     count = 0
     for k, chunk in _periods(got, settings, period):
-        term.feed(chunk)
+        feed(chunk)
         _png(term.frame(), frame_path(directory, k))
         count += 1
     return count

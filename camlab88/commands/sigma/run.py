@@ -10,6 +10,7 @@ from fractions import Fraction
 from pathlib import Path
 
 from camlab88.runopts import add_run_options, run_options
+from camlab88.traceopts import add_trace_options, open_trace
 
 MODELS = ("t5684", "t5688")
 COMMAND = "camlab88 sigma run"
@@ -43,6 +44,7 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
     u.add_argument("--record-line", type=Path, metavar="FILE",
                    help="record the line (both directions) as a link recording")
     add_run_options(u, stop_after=False)
+    add_trace_options(u)
     u.set_defaults(handler=run)
 
 
@@ -74,12 +76,18 @@ def run(args: argparse.Namespace) -> int:
     line, recorder = _line(args, settings)
     target = _target(args, line, got)
     # Ctrl-C, or SIGTERM (cli.main delivers it as Ctrl-C): the recording is still written
-    with contextlib.ExitStack() as done:
+    with open_trace(args, COMMAND, "the line") as trace, contextlib.ExitStack() as done:
         done.callback(_finish, target, line, recorder, args)
+        if trace.sink is not None:
+            from emulator.sigma.trace import SigmaTracer
+
+            target.tracer = SigmaTracer(target.term, trace.sink, trace.strict)
         if replay.active() is None:
             target.bridge = _open_bridge(args, settings, target.tap)
             opts.live = True  # outside bytes enter at the poll's virtual time: keep them level
         run_target(target, opts)
+    if trace.failed:
+        return 1
     s = target.term.stats
     print(f"camlab88 sigma: {s['bytes']} bytes in, {s['unknown']} unknown and "
           f"{s['malformed']} malformed orders skipped", flush=True)

@@ -1,0 +1,32 @@
+"""Compare a screen with a golden PNG, exactly; write it only when asked to."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+
+def compare_golden(screen: np.ndarray, path: Path, regen: bool) -> None:
+    """AssertionError naming the first differing pixel (or the missing file)."""
+    from PIL import Image
+
+    from protocols.png import write_png
+
+    frame = np.ascontiguousarray(screen, dtype=np.uint8)
+    if regen:
+        write_png(frame, path)
+        return
+    if not path.exists():
+        raise AssertionError(f"golden image {path} is missing: run pytest --camlab88-regen, "
+                             "look at the image, and commit it")
+    with Image.open(path) as im:
+        want = np.asarray(im.convert("RGB"))
+    if want.shape != frame.shape:
+        raise AssertionError(f"{path.name}: screen {frame.shape} != golden {want.shape}")
+    diff = np.argwhere(np.any(want != frame, axis=-1))
+    if len(diff):
+        y, x = diff[0]
+        raise AssertionError(f"{path.name}: {len(diff)} pixels differ from the golden image; "
+                             f"first at row {y} col {x}: got {frame[y, x].tolist()} want "
+                             f"{want[y, x].tolist()}")

@@ -1,0 +1,104 @@
+"""``camlab88.Sigma``: an emulated Sigma T5684/T5688 on its serial line, for testing host
+programs. Time is virtual: nothing happens until ``run`` advances it."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import numpy as np
+
+from camlab88.bench.traces import Trace
+from emulator.machine import SigmaMachine
+from protocols.link import LineSettings, to_time
+
+
+class Sigma:
+    """A Sigma terminal at the end of a serial line (docs/api.md).
+
+    ``model`` "t5684" (768x512, 16 colours) or "t5688" (256 colours, 1536x1024 area);
+    ``baud`` the line speed (8N1). With ``trace`` (the default) every decoded order is kept
+    in ``.trace``; ``strict`` raises ``camlab88.ProtocolError`` at the first unknown,
+    malformed or out-of-range order.
+    """
+
+    def __init__(self, model: str = "t5684", baud: int = 9600, *, trace: bool = True,
+                 strict: bool = False) -> None:
+        self.machine = SigmaMachine(model, LineSettings(baud=baud))
+        self.trace = Trace()
+        if trace or strict:
+            self.machine.trace(self.trace.add, strict)
+
+    # ------------------------------------------------------------------ the line
+    def send(self, data: bytes | str) -> float:
+        """Host -> terminal: queue bytes on the line now (a str is sent as Latin-1).
+        Returns the virtual time (s) at which the last byte will have arrived."""
+        if isinstance(data, str):
+            data = data.encode("latin-1")
+        return self.machine.host.write(bytes(data))
+
+    def run(self, seconds: float | None = None) -> None:
+        """Advance virtual time by ``seconds``, or (None) until the line is idle: every byte
+        sent either way has arrived and the terminal has taken what it was sent."""
+        m = self.machine
+        if seconds is None:
+            m.run_until(m.idle_time())
+            m.tick()  # one more tick: the terminal takes the last bytes
+        elif seconds < 0:
+            raise ValueError(f"cannot run backwards ({seconds} s)")
+        else:
+            m.run_until(m.clock.exact + to_time(seconds))
+
+    def received(self) -> bytes:
+        """Terminal -> host: bytes that have arrived at the host since the last call."""
+        return self.machine.host.read()
+
+    @property
+    def now(self) -> float:
+        """Virtual seconds since power-on."""
+        return self.machine.clock.now
+
+    # ------------------------------------------------------------------ the screen
+    @property
+    def screen(self) -> np.ndarray:
+        """The screen as displayed: (512, 768, 3) uint8, row 0 = top."""
+        return self.machine.frame()
+
+    def screenshot(self, path: str | os.PathLike[str]) -> Path:
+        """Write the screen as a PNG (atomically); returns the path."""
+        from protocols.png import write_png
+
+        return write_png(self.screen, path)
+
+    # ------------------------------------------------------------------ local input
+    def key(self, char: str) -> None:
+        """A key struck on the terminal's keyboard (ends a cursor read, else goes up the line)."""
+        self.machine.terminal.key(char)
+
+    def cursor(self, x: int, y: int) -> None:
+        """Move the crosshair with the joystick to drawing-area (x, y) (device units, y up)."""
+        reg = self.machine.terminal.reg
+        self.machine.terminal.cursor_keys(x - reg.cursor_x, y - reg.cursor_y)
+
+    def tablet(self, x: int, y: int, pressed: bool = False) -> None:
+        """The stylus at screen (x, y) (device units, y up); a press ends a cursor read."""
+        self.machine.terminal.tablet(x, y, pressed)
+
+    # ------------------------------------------------------------------ state
+    @property
+    def stats(self) -> dict[str, int]:
+        """Bytes and orders decoded; unknown, malformed and impossible orders skipped."""
+        return dict(self.machine.terminal.stats)
+
+    @property
+    def problems(self) -> list:
+        """The first protocol warnings (TraceEvent), empty when the host did nothing wrong."""
+        return list(self.trace.problems)
+
+    def save_state(self) -> bytes:
+        """The whole machine (clock, line with bytes in flight, terminal), versioned."""
+        return self.machine.save_state()
+
+    def load_state(self, data: bytes) -> None:
+        """Continue from save_state()'s bytes (ValueError if they do not fit this Sigma)."""
+        self.machine.load_state(data)

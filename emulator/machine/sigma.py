@@ -1,0 +1,138 @@
+"""A Sigma terminal on its serial line: the virtual clock, the paced line, the terminal and
+the line's host end as the port a host program talks to. One object owns them all, ticks
+them together and saves and restores all of them."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from fractions import Fraction
+
+import numpy as np
+
+from emulator.machine.state_file import MachineStateError, pack, unpack
+from emulator.protocol_trace import TraceEvent
+from emulator.sigma import Terminal
+from emulator.sigma.trace import SigmaTracer
+from protocols.link import LineSettings, SerialLine, VirtualClock
+from protocols.link.clock import TimeLike, to_time
+
+TICK = Fraction(1, 100)  # how often the terminal takes what has arrived (as `sigma run`)
+
+
+class HostPort:
+    """The host end of the line: what a host program writes and reads, on virtual time."""
+
+    def __init__(self, line: SerialLine) -> None:
+        self._line = line
+
+    def write(self, data: bytes) -> float:
+        """Queue bytes now; returns the virtual time the last one reaches the terminal."""
+        return self._line.host.write(bytes(data))
+
+    def read(self) -> bytes:
+        """Bytes the terminal sent that have arrived by now (consumed)."""
+        return self._line.host.read()
+
+    @property
+    def now(self) -> float:
+        return self._line.clock.now
+
+    def drained(self) -> bool:
+        """Everything written so far has arrived at the terminal and been taken by it."""
+        host = self._line.host
+        return host.drain_time() <= self._line.clock.now and host.in_flight() == 0
+
+
+class SigmaMachine:
+    """Clock + line + terminal + host port (``host``), ticked together."""
+
+    FPS = 25
+
+    def __init__(self, model: str = "t5684", settings: LineSettings | None = None,
+                 xonxoff: bool = True) -> None:
+        self.settings = settings or LineSettings()
+        self.clock = VirtualClock()
+        self.line = SerialLine(self.settings, self.clock, xonxoff)
+        self.terminal = Terminal(model)
+        self.terminal.on_output = self._up
+        self.host = HostPort(self.line)
+        self.tracer: SigmaTracer | None = None
+
+    def _up(self, data: bytes) -> None:
+        self.line.device.write(data)
+
+    # ------------------------------------------------------------------ time
+    @property
+    def now(self) -> Fraction:
+        return self.clock.exact
+
+    def tick(self, dt: TimeLike = TICK) -> None:
+        """Advance the clock by ``dt``; the terminal takes every byte that has arrived."""
+        self.clock.advance(dt)
+        if self.tracer is None:
+            data = self.line.device.read()
+            if data:
+                self.terminal.feed(data)
+            return
+        step = self.settings.char_time
+        for t_last, data in self.line.device.read_timed(exact=True):
+            first = t_last - (len(data) - 1) * step
+            self.tracer.feed(data, float(first), float(step))
+
+    def run_until(self, t: TimeLike, tick: TimeLike = TICK) -> None:
+        """Tick (at most ``tick`` at a time) until the clock reads ``t``."""
+        end, step = to_time(t), to_time(tick)
+        while self.clock.exact < end:
+            self.tick(min(step, end - self.clock.exact))
+
+    def idle_time(self) -> Fraction:
+        """When both directions will have delivered everything queued (a direction held
+        by XOFF for ever is left out)."""
+        ends = [self.line.host.drain_time_exact(), self.line.device.drain_time_exact()]
+        finite = [Fraction(e) for e in ends if e != float("inf")]
+        return max([self.clock.exact, *finite])
+
+    def frame(self) -> np.ndarray:
+        """(512, 768, 3) uint8 as displayed, row 0 = top."""
+        return self.terminal.frame()
+
+    # ------------------------------------------------------------------ traces
+    def trace(self, sink: Callable[[TraceEvent], None] | None,
+              strict: bool = False) -> SigmaTracer | None:
+        """Report every decoded order to ``sink`` from now on (None: stop tracing);
+        ``strict`` raises ProtocolError at the first unknown, malformed or out-of-range one."""
+        if sink is None:
+            self.tracer = None
+            return None
+        self.tracer = SigmaTracer(self.terminal, sink, strict)
+        self.tracer.offset = self.tracer.start = self.terminal.decoder.stats.bytes_in
+        return self.tracer
+
+    # ------------------------------------------------------------------ state
+    def save_state(self) -> bytes:
+        """Clock, line (queued bytes, UART ticks, flow control) and terminal, versioned."""
+        header = {"model": self.terminal.model.name, "settings": str(self.settings),
+                  "xonxoff": self.line.xonxoff, "clock": self.clock.save_state(),
+                  "line": self.line.save_state()}
+        return pack("sigma", header, {"terminal": self.terminal.save_state()})
+
+    def load_state(self, data: bytes) -> None:
+        """Continue from save_state()'s bytes; MachineStateError if they do not fit."""
+        head, blobs = unpack(data, "sigma")
+        for key, mine in (("model", self.terminal.model.name),
+                          ("settings", str(self.settings)), ("xonxoff", self.line.xonxoff)):
+            if head.get(key) != mine:
+                raise MachineStateError(f"machine state has {key} {head.get(key)!r}, this "
+                                        f"machine {mine!r}")
+        fresh = Terminal(self.terminal.model.name)
+        try:  # check every part on scratch copies before anything changes
+            VirtualClock().load_state(head.get("clock"))
+            fresh.load_state(blobs.get("terminal", b""))
+            SerialLine(self.settings, VirtualClock(), self.line.xonxoff).load_state(head["line"])
+        except (ValueError, KeyError) as exc:
+            raise MachineStateError(f"machine state: {exc}") from None
+        self.line.load_state(head["line"])
+        self.terminal.load_state(blobs["terminal"])
+        self.clock.load_state(head["clock"])
+        if self.tracer is not None:
+            self.trace(self.tracer.sink, self.tracer.strict)
