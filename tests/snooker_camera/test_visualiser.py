@@ -174,8 +174,8 @@ def test_clipped_at_the_observer_nothing_behind_it_drawn() -> None:
     assert frame[int(sy), int(sx)].tolist() == list(parse_colour("#f890b0"))
     cloth = colour_mask(frame, vdisplay.TABLE_COLOURS[1])
     assert cloth[300:544].mean() > 0.9 and not cloth[:280].any()  # the cloth fills below
-    # the horizon (row 288) right down to the film frame's bottom edge (row 543): its part behind the
-    # observer was clipped away, not projected upside down
+    # the horizon (row 288) right down to the film frame's bottom edge (row 543): its part
+    # behind the observer was clipped away, not projected upside down
 
 
 @pytest.mark.claim(
