@@ -65,9 +65,11 @@ def test_from_until_and_default_start() -> None:
 
 
 @pytest.mark.claim(
-    "§6.3.1: moving and zooming commands change the parameter linearly over the frames they span",
-    measured="the parameter at each frame of a moving / zoom command",
-    verdict="agrees")
+    "§6.3.1: MOVING moves the observer smoothly between two points, FOCAL LENGTH FROM .. TO "
+    "zooms, over the command's frames",
+    measured="the parameter at each frame of a moving / zoom command: linear in frame number, "
+             "from the first value at the period's first frame to the second at its last",
+    verdict="agrees (linear is ours: the thesis gives no law; docs/fidelity/snooker.md)")
 def test_moving_and_zoom_are_linear_in_frame_number() -> None:
     r = run(": from 2 until 6; observer moving from (0,0,1) to (4,8,1); "
             "focal length from 20 to 100 :")
