@@ -4,7 +4,6 @@ and the doubling "Fast forward", on the emulated Rainbow (headless)."""
 from __future__ import annotations
 
 import numpy as np
-import pytest
 
 from apps.ca import log
 from apps.ca.program import stepping
