@@ -156,7 +156,8 @@ def fig_7_9() -> str:
     ca.choose("Step mode")
     ca.run("frames 2")
     return ca.script("Figure 7.9: the three-tape Turing machine testing 25: number, divisor, "
-                     "remainder and the head\nbelow, in auto mode, early on while the divisor is 3.")
+                     "remainder and the head\nbelow, in auto mode, early on while the divisor "
+                     "is 3.")
 
 
 # -- the snooker motion program: fixed scripts on its screen's coordinates ------------------
@@ -177,9 +178,71 @@ def fig_6_6() -> str:
             "wait 1\nmove 440 300\nwait 3\n")
 
 
+# -- KAS on the Sigma: the editor's script language (screen inches, centre origin, y up) ----
+_DRAW = """move -4 -2
+down -4 -2
+down -3.8 -1.9
+down -3.6 -1.7
+down -3.4 -1.8
+down -3.2 -1.5
+up -3.2 -1.5
+down -2.5 -1.5
+up -2.5 -1.5
+key space
+menu pen2
+down -4 1
+up -4 1
+down -3 2
+up -3 2
+down -2 1
+up -2 1
+down -2 1.5
+up -2 1.5
+key space
+key n
+key 3
+key r
+down 1 1
+up 1 1
+down 3 2.5
+up 3 2.5
+key 4
+key c
+down 2 -1.5
+up 2 -1.5
+down 2.8 -1.5
+up 2.8 -1.5
+key 5
+down -1 -3
+up -1 -3
+down 0 -3.5
+up 0 -3.5
+key space
+"""
+
+
+def fig_3_1() -> str:
+    return ("# Figure 3.1: KAS's screen layout (black background): the menu row along the top,\n"
+            "# a freehand chain, a straight-line chain in red, a rectangle, a circle and a line.\n"
+            + _DRAW)
+
+
+def fig_3_2() -> str:
+    return ("# Figure 3.2: KAS in edit mode: the drawing of figure 3.1, then edit mode, a point\n"
+            "# squared and triangled, and two points moved: moved lines bright, their old\n"
+            "# positions purple, the rest dull.\n" + _DRAW
+            + "menu edit\nkey g\nmove 0 0\ndown -4 -2\nup -4 -2\nkey tab\ndown -3.4 -1.8\n"
+            "up -3.4 -1.8\nkey tab\nkey m\ndown 0 0\nup 0 0\ndown 0.2 0.3\nup 0.2 0.3\n"
+            "key ]\nkey tab\nkey ]\nkey ]\nkey tab\nkey l\ndown 0 0\nup 0 0\n"
+            "down 0.5 -0.25\nup 0.5 -0.25\n")
+
+
+KAS = ["kas", "edit", "figure.kas", "--headless"]
 CA = ["ca", "program", "--headless"]
 SNOOKER = ["snooker", "play", "--headless"]
 FIGURES: dict[str, tuple[list[str], Callable[[], str]]] = {
+    "3.1": (KAS, fig_3_1),
+    "3.2": (KAS, fig_3_2),
     "6.1": (SNOOKER, fig_6_1),
     "6.5": (SNOOKER, fig_6_5),
     "6.6": (SNOOKER, fig_6_6),
@@ -195,15 +258,16 @@ FIGURES: dict[str, tuple[list[str], Callable[[], str]]] = {
 def make(number: str) -> Path:
     argv, script = FIGURES[number]
     SCRIPTS.mkdir(parents=True, exist_ok=True)
-    events = SCRIPTS / f"fig-{number}.events"
+    kas = argv[0] == "kas"
+    events = SCRIPTS / f"fig-{number}.{'script' if kas else 'events'}"
     events.write_text(script(), encoding="utf-8")
     out = HERE / f"fig-{number}.session"
     with tempfile.TemporaryDirectory() as tmp:
         shutil.copy(events, Path(tmp) / events.name)
         env = {**os.environ, "PYTHONPATH": str(ROOT)}
         env.pop("DISPLAY", None)
-        cmd = [sys.executable, "-m", "camlab88", *argv, "--events", events.name,
-               "--record", out.name]
+        cmd = [sys.executable, "-m", "camlab88", *argv, "--script" if kas else "--events",
+               events.name, "--record", out.name]
         subprocess.run(cmd, cwd=tmp, env=env, check=True)
         shutil.copy(Path(tmp) / out.name, out)
     return out
