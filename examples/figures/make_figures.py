@@ -237,10 +237,88 @@ def fig_3_2() -> str:
             "down 0.5 -0.25\nup 0.5 -0.25\n")
 
 
+def _face_sequence() -> dict[str, bytes]:
+    """A face in a hat as a one-frame KAS sequence: head, two eyes, a smile, and a hat (crown
+    and brim) whose brim crosses the head -- the drawing of figure 3.8's kind."""
+    import math
+
+    def circle(cx: float, cy: float, r: float, n: int) -> list[tuple[float, float]]:
+        return [(cx + r * math.cos(2 * math.pi * k / n), cy + r * math.sin(2 * math.pi * k / n))
+                for k in range(n + 1)]
+
+    chains = [(1, circle(0, -0.5, 2.0, 40)), (3, circle(-0.7, 0, 0.3, 16)),
+              (3, circle(0.7, 0, 0.3, 16)),
+              (2, [(-1.0, -1.2), (-0.5, -1.6), (0.0, -1.75), (0.5, -1.6), (1.0, -1.2)]),
+              (1, [(-1.2, 1.0), (-1.0, 3.0), (1.0, 3.0), (1.2, 1.0)]),
+              (1, [(2.2, 1.0), (-2.2, 1.0)])]
+    out = ["KAS sequence 1", "fps 25", "frames 1", "frame 0", f"chains {len(chains)}"]
+    for pen, pts in chains:
+        out.append(f"chain section=1 points={len(pts)}")
+        out += [f"{x:.3f} {y:.3f} {pen}" for x, y in pts]
+    return {"face.kas": ("\n".join([*out, "end"]) + "\n").encode()}
+
+
+_PAINT = """colour 10
+select 0 -2.5
+fill
+clear
+colour 1
+select -0.7 -0.3
+fill
+clear
+select 0.7 -0.3
+fill
+clear
+colour 2
+select 0 -1.75
+fill
+clear
+colour 4
+select 0 3.0
+select -2.1 1.0
+fill
+clear
+"""
+
+
+def fig_3_8() -> str:
+    return ("# Figure 3.8: painting an outline image: the head, the eyes, the smile and the hat\n"
+            "# each selected (the chain nearest the point) and filled, in that order.\n"
+            + _PAINT)
+
+
+def fig_3_7() -> str:
+    return ("# Figure 3.7: the four working areas at quarter size (the painting of figure 3.8,\n"
+            "# then the preview: painting bottom right, mixing top right, the double buffers\n"
+            "# on the left).\n" + _PAINT + "show preview\n")
+
+
+def _pink_shot() -> dict[str, bytes]:
+    """The thesis example's shot and its views (§6.3.1's script), frames 1-70: the
+    visualiser ends on the last command's view, behind the pink looking at the pocket."""
+    from apps.snooker.camera import ccl, motion
+    from apps.snooker.visualiser.demo import EXAMPLE_SCRIPT, example_shot
+
+    with tempfile.TemporaryDirectory() as tmp:
+        cp = Path(tmp) / "pink_shot.cp"
+        example_shot().checkpoint().write(cp)
+        views = ccl.compile_script(EXAMPLE_SCRIPT, motion.load(cp)).views()[:70]
+        text = "# the thesis example camera script (section 6.3.1) over its shot, frames 1-70\n"
+        text += "".join(v.to_line() + "\n" for v in views)
+        return {"pink_shot.cp": cp.read_bytes(), "example.views": text.encode()}
+
+
 KAS = ["kas", "edit", "figure.kas", "--headless"]
 CA = ["ca", "program", "--headless"]
 SNOOKER = ["snooker", "play", "--headless"]
-FIGURES: dict[str, tuple[list[str], Callable[[], str]]] = {
+PAINT = ["kas", "paint", "face.kas", "--headless"]
+VISUALISE = ["snooker", "visualise", "pink_shot.cp", "example.views", "--headless"]
+INPUTS: dict[str, Callable[[], dict[str, bytes]]] = {
+    "3.7": _face_sequence, "3.8": _face_sequence, "6.7": _pink_shot}
+FIGURES: dict[str, tuple[list[str], Callable[[], str] | None]] = {
+    "3.7": (PAINT, fig_3_7),
+    "3.8": (PAINT, fig_3_8),
+    "6.7": (VISUALISE, None),
     "3.1": (KAS, fig_3_1),
     "3.2": (KAS, fig_3_2),
     "6.1": (SNOOKER, fig_6_1),
@@ -255,21 +333,33 @@ FIGURES: dict[str, tuple[list[str], Callable[[], str]]] = {
 }
 
 
-def make(number: str) -> Path:
-    argv, script = FIGURES[number]
-    SCRIPTS.mkdir(parents=True, exist_ok=True)
+def _script_args(number: str, argv: list[str], tmp: Path) -> list[str]:
+    """Write the figure's input script (kept in scripts/) and return its option."""
+    script = FIGURES[number][1]
+    if script is None:
+        return []
     kas = argv[0] == "kas"
-    events = SCRIPTS / f"fig-{number}.{'script' if kas else 'events'}"
-    events.write_text(script(), encoding="utf-8")
+    path = SCRIPTS / f"fig-{number}.{'script' if kas else 'events'}"
+    SCRIPTS.mkdir(parents=True, exist_ok=True)
+    path.write_text(script(), encoding="utf-8")
+    shutil.copy(path, tmp / path.name)
+    return ["--script" if kas else "--events", path.name]
+
+
+def make(number: str) -> Path:
+    argv = FIGURES[number][0]
     out = HERE / f"fig-{number}.session"
-    with tempfile.TemporaryDirectory() as tmp:
-        shutil.copy(events, Path(tmp) / events.name)
+    with tempfile.TemporaryDirectory() as scratch:
+        tmp = Path(scratch)
+        for name, data in INPUTS.get(number, dict)().items():
+            (tmp / name).write_bytes(data)
         env = {**os.environ, "PYTHONPATH": str(ROOT)}
-        env.pop("DISPLAY", None)
-        cmd = [sys.executable, "-m", "camlab88", *argv, "--script" if kas else "--events",
-               events.name, "--record", out.name]
+        for k in ("DISPLAY", "WAYLAND_DISPLAY", "SDL_VIDEODRIVER"):
+            env.pop(k, None)
+        cmd = [sys.executable, "-m", "camlab88", *argv, *_script_args(number, argv, tmp),
+               "--record", out.name]
         subprocess.run(cmd, cwd=tmp, env=env, check=True)
-        shutil.copy(Path(tmp) / out.name, out)
+        shutil.copy(tmp / out.name, out)
     return out
 
 
