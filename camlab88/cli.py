@@ -28,6 +28,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "snooker",
     "ca",
     "replay",
+    "figures",
 )
 
 

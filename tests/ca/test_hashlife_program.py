@@ -4,7 +4,6 @@ and the doubling "Fast forward", on the emulated Rainbow (headless)."""
 from __future__ import annotations
 
 import numpy as np
-import pytest
 
 from apps.ca import log
 from apps.ca.program import stepping
@@ -70,12 +69,6 @@ def test_the_main_menu_can_show_the_jumps_in_a_third_column() -> None:
     assert menu.close() is None
 
 
-@pytest.mark.claim(
-    "§7.3.2: the display may be updated only every so many generations, missing out the "
-    "intermediate ones",
-    measured="'Go to generation 2500' of the acorn through the menu, by HashLife jumps: exactly "
-             "the cells of 2500 direct steps",
-    verdict="agrees (jumping far ahead is beyond the thesis: issue 17)")
 def test_go_to_generation_through_the_menu_equals_the_direct_engine() -> None:
     d = Driver(Options(pattern="acorn"))
     d.leave_editing()

@@ -67,7 +67,7 @@ def test_errors_are_marked_and_the_preview_goes_on(tool) -> None:  # type: ignor
     assert [(e.line, e.col) for e in t.result.errors] == [(4, 1)]
     assert "did you mean VIEWPOINT?" in t.result.errors[0].message
     # the rest of the script still runs: command 2 still moves the observer
-    assert t.result.observer[43].tolist() == pytest.approx([7.3, -4.5, 1.2])
+    assert t.result.observer[43].tolist() == pytest.approx([-7.3, -4.5, 1.2])  # table frame
     pane = rb.client.get_pixels(t.script_pane.pad, 0, 30, layout.SCRIPT[2], 10)  # line 4
     assert (pane == 2).sum() > 200  # its row has the error background
     frame_before = t.frame

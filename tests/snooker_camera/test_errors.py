@@ -76,4 +76,4 @@ def test_all_errors_of_a_script_at_once_in_order() -> None:
 def test_errors_do_not_stop_the_rest_being_interpreted() -> None:
     r = ccl.run(": until 5; veiwpoint at (0,0,0); observer at (1,1,1) : focal length of 70 :",
                 pink_rolls())
-    assert len(r.errors) == 1 and r.observer[0].tolist() == [1, 1, 1] and r.focal[6] == 70
+    assert len(r.errors) == 1 and r.observer[0].tolist() == [-1, 1, 1] and r.focal[6] == 70

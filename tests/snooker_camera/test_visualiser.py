@@ -13,7 +13,7 @@ import pytest
 from apps.snooker.camera import ccl, motion
 from apps.snooker.camera.views import View
 from apps.snooker.visualiser import display as vdisplay
-from apps.snooker.visualiser.program import ViewsError, Visualiser
+from apps.snooker.visualiser.program import FILM_TOP, MASK, ViewsError, Visualiser
 from emulator.rainbow.session import in_process
 from protocols.rainbow.client import parse_colour
 from tests.snooker_camera.helpers import R, make, still
@@ -89,7 +89,8 @@ def test_layers_balls_over_table_over_background_and_potted_balls_hidden() -> No
     frame = rb.executor.last_frame
     assert frame[288, 383].tolist() == list(parse_colour("#d01818"))  # the red, over cloth
     assert frame[300, 383].tolist() == list(parse_colour(vdisplay.TABLE_COLOURS[1]))
-    assert frame[5, 5].tolist() == list(parse_colour(vdisplay.BACKGROUND))
+    assert frame[40, 5].tolist() == list(parse_colour(vdisplay.BACKGROUND))
+    assert frame[5, 5].tolist() == list(parse_colour(MASK))  # above the film frame
     assert colour_mask(frame, "#d01818").sum() < 200  # one red: the others are potted
     d = vis.display
     assert rb.client.hello()  # the pads really are there, with these depths
@@ -115,11 +116,11 @@ def test_double_buffering_and_table_redrawn_only_when_the_view_changes() -> None
     d = vis.display
     fronts = []
     for _ in range(4):
-        front_balls = rb.client.get_pixels(d.balls.front, 0, 0, 768, 576)
+        front_balls = rb.client.get_pixels(d.balls.front, 0, 0, 768, 512)
         vis.draw()
         # drawing went to the back pad (now swapped to the front): the pad that was on
         # show is untouched
-        assert np.array_equal(rb.client.get_pixels(d.balls.back, 0, 0, 768, 576), front_balls)
+        assert np.array_equal(rb.client.get_pixels(d.balls.back, 0, 0, 768, 512), front_balls)
         rb.client.wait_frame()
         fronts.append((d.balls.shown, d.tables.shown))
         vis.index = min(vis.index + 1, 3)
@@ -172,6 +173,43 @@ def test_clipped_at_the_observer_nothing_behind_it_drawn() -> None:
     sx, sy, _ = independent_projection(o, (1.0, 0.0, 0.05), 50.0, c[0, 5])
     assert frame[int(sy), int(sx)].tolist() == list(parse_colour("#f890b0"))
     cloth = colour_mask(frame, vdisplay.TABLE_COLOURS[1])
-    assert cloth[300:].mean() > 0.9 and not cloth[:280].any()  # the cloth fills below the
-    # horizon (row 288) right down to the picture's bottom edge: its part behind the
-    # observer was clipped away, not projected upside down
+    assert cloth[300:544].mean() > 0.9 and not cloth[:280].any()  # the cloth fills below
+    # the horizon (row 288) right down to the film frame's bottom edge (row 543): its part
+    # behind the observer was clipped away, not projected upside down
+
+
+@pytest.mark.claim(
+    "§6.3.2: positioning of image components exactly as it will be in the finished sequence, "
+    "the image properly clipped to the viewing area",
+    measured="the visualiser program's screen: the 768 x 512 film frame centred, the bands "
+             "above and below masked; every ball where the renderer's projection (768 x 512) "
+             "puts it, and the balls the film would not show (but a 768 x 576 view would) "
+             "absent",
+    verdict="agrees")
+def test_visualiser_shows_exactly_the_film_frame() -> None:
+    from apps.snooker.render.pinhole import Pinhole
+
+    c = still(1)
+    c[0, :] = (9.0, 9.0, R)
+    c[0, 0] = (1.02, 0.2, R)  # beyond the film's top edge, inside a 576-row picture's
+    c[0, 5] = (0.5, 0.0, R)  # well inside
+    c[0, 6] = (-1.02, -0.2, R)  # beyond the film's bottom edge
+    c[0, 1] = (0.0, 0.85, R)  # by the left cushion, inside
+    o, v = (-0.01, 0.0, 4.0), (0.0, 0.0, 0.0)  # nearly straight down, +x up the screen
+    rb, _ = shown(make(c), [View(1, o, v, 50.0)])
+    frame = rb.executor.last_frame
+    assert frame.shape == (576, 768, 3) and FILM_TOP == 32
+    outside = np.concatenate([frame[:32], frame[544:]]).reshape(-1, 3)
+    assert (outside == np.array(parse_colour(MASK), dtype=np.uint8)).all()
+    xy, _, vis = Pinhole.of(np.array(o), np.array(v), 50.0, 768, 512).project(c[0, [0, 5, 6, 1]])
+    for (sx, sy), ball, colour in zip(xy, (0, 5, 6, 1), ("#f4f4f0", "#f890b0", "#101010",
+                                                        "#f0e020"), strict=True):
+        ys, xs = np.nonzero(colour_mask(frame, colour))
+        old_sy = independent_projection(o, v, 50.0, c[0, ball], h=576)[1]
+        if 8 <= sy <= 504:  # inside the film (with the ball's radius to spare)
+            assert len(xs) > 20, ball
+            assert abs(xs.mean() + 0.5 - sx) <= 0.5 + 1e-9, ball
+            assert abs(ys.mean() + 0.5 - (sy + FILM_TOP)) <= 0.5 + 1e-9, ball
+        else:  # not on the film, though a 768 x 576 view shows it
+            assert (sy < -8 or sy > 520) and 8 <= old_sy <= 568, ball
+            assert len(xs) == 0, ball

@@ -69,10 +69,55 @@ def test_rendered_shadow_covers_the_ellipse_on_the_baize() -> None:
     assert np.isclose(occ.sum() * px_m * px_m, math.pi * a * b, rtol=0.02)  # the area
 
 
+def _nose_shadow(light: np.ndarray, nose: np.ndarray) -> np.ndarray:
+    """Where the ray from the light over a cushion's nose (height h) meets the cloth."""
+    t = light[2] / (light[2] - nose[2])
+    return light[:2] + (nose[:2] - light[:2]) * t
+
+
 @pytest.mark.claim(
-    "§6.4.1: the shadows of the cushions on the table from the directions to the lights",
-    measured="cushion shadows drawn only for lights beyond the cushion",
+    "§6.4.1: the shadows of the cushions on the table calculated from the directions to the "
+    "light sources",
+    measured="for the canopy's four bulbs and lights placed round the table: exactly the "
+             "cushions with the light beyond them cast a shadow, and each shadow is the strip "
+             "from the cushion's foot to where rays from the light over its nose meet the "
+             "cloth (ray-cast here independently), clipped to the playing area",
     verdict="agrees")
+@pytest.mark.parametrize("light", [(2.5, 0.0, 1.0), (-2.3, 0.4, 1.2), (0.5, 1.4, 0.9),
+                                   (-0.9, -0.4, 1.0), (0.9, 0.4, 1.0)])
+def test_cushion_shadow_strips_are_where_rays_over_the_noses_land(light: tuple) -> None:
+    from apps.snooker.render.tablemodel import CUSHION_H_M
+
+    hl, hw = 1.8, 0.9
+    lp = np.array(light)
+    polys = cushion_shadow_polygons(hl, hw, lp[None])
+    beyond = {"top": lp[0] > hl, "baulk": lp[0] < -hl, "left": lp[1] > hw, "right": lp[1] < -hw}
+    assert len(polys) == sum(beyond.values())  # one strip per cushion the light is beyond
+    for _, poly in polys:
+        xy = poly[:, :2]
+        assert np.allclose(poly[:, 2], 0.0)
+        assert np.all(np.abs(xy[:, 0]) <= hl + 1e-9) and np.all(np.abs(xy[:, 1]) <= hw + 1e-9)
+        # which cushion: the side its points hug
+        side = max(beyond, key=lambda k: beyond[k] and np.sum(np.isclose(
+            {"top": xy[:, 0] - hl, "baulk": xy[:, 0] + hl, "left": xy[:, 1] - hw,
+             "right": xy[:, 1] + hw}[k], 0.0)))
+        axis, edge = {"top": (0, hl), "baulk": (0, -hl), "left": (1, hw), "right": (1, -hw)}[side]
+        # the strip's inner edge: the nose's shadow, ray-cast from the light at both corners
+        noses = []
+        for k in (-1.0, 1.0):
+            nose = np.zeros(3)
+            nose[axis], nose[1 - axis], nose[2] = edge, k * (hw if axis == 0 else hl), CUSHION_H_M
+            noses.append(_nose_shadow(lp, nose))
+        depth = abs(noses[0][axis] - edge)
+        got = np.max(np.abs(xy[:, axis] - edge))
+        assert got == pytest.approx(min(depth, 2 * (hl if axis == 0 else hw)), abs=1e-9)
+        for v in xy:  # every vertex on the foot, on the nose's shadow line, or on the border
+            on_line = abs((noses[1] - noses[0])[0] * (v - noses[0])[1]
+                          - (noses[1] - noses[0])[1] * (v - noses[0])[0]) < 1e-9
+            assert (abs(v[axis] - edge) < 1e-9 or on_line
+                    or abs(abs(v[1 - axis]) - (hw if axis == 0 else hl)) < 1e-9), (side, v)
+
+
 def test_cushion_shadows_only_from_lights_beyond_the_cushion() -> None:
     hl, hw = 1.8, 0.9
     assert cushion_shadow_polygons(hl, hw, np.array([[0.0, 0.0, 1.0]])) == []

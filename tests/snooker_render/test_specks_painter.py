@@ -85,3 +85,41 @@ def test_painters_order_from_behind_baulk_draws_the_baulk_side_last() -> None:
     balls = [it for it in items if isinstance(it, BallItem)]
     d = [depth[b.ball] for b in balls]
     assert d == sorted(d, reverse=True)  # back to front
+
+
+
+def _ball_close_up(side_deg: float, specks: bool, x: float = 0.3) -> np.ndarray:
+    """The cue ball at (x, 0.1) seen from 28 cm away, from `side_deg` round it."""
+    from apps.snooker.camera.views import View
+    from apps.snooker.render.truecolour import RenderOptions, render_frame
+    from tests.snooker_render.helpers import one_ball_scene
+
+    s = one_ball_scene(x, 0.1)
+    a = math.radians(side_deg)
+    eye = (x - 0.25 * math.cos(a), 0.1 - 0.25 * math.sin(a), 0.16)
+    view = View(1, eye, (x, 0.1, s.table.radius), 50.0)
+    return render_frame(s, view, RenderOptions(specks=specks, shadows=False))
+
+
+@pytest.mark.claim(
+    "§6.4.1/§6.5: a rudimentary, subtle representation of specks of dust on the balls",
+    measured="a close-up of the cue ball (about 180 px across) from three sides, rendered with "
+             "and without specks: the pixels the specks change are at most 1 % of the ball's "
+             "disc (0.2 %), and none differs by more than a tenth of the ball's own shading "
+             "range (luminance, highlight to shade)",
+    verdict="agrees (how many specks, their size and tint are ours: docs/fidelity/snooker.md)")
+@pytest.mark.parametrize("side", [0.0, 120.0, 240.0])
+def test_specks_are_small_few_and_low_contrast(side: float) -> None:
+    plain = _ball_close_up(side, specks=False).astype(np.int64)
+    dusty = _ball_close_up(side, specks=True).astype(np.int64)
+    cloth = _ball_close_up(side, specks=False, x=0.8).astype(np.int64)  # the ball moved away
+    ball = np.any(plain != cloth, axis=2)  # the ball's own pixels (and its blended edge)
+    area = ball.sum()
+    assert area > 20000  # a close-up: the ball about 180 px across
+    diff = np.abs(dusty - plain).max(axis=2)
+    speck = diff > 0
+    assert speck.any()  # there are specks to see
+    assert speck.sum() <= 0.01 * area, (speck.sum(), area)
+    lum = plain[ball] @ np.array([0.299, 0.587, 0.114])
+    shading_range = lum.max() - lum.min()
+    assert diff.max() <= 0.1 * shading_range, (diff.max(), shading_range)

@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from apps.snooker.camera import names
+from apps.snooker.camera import names, space
 from apps.snooker.camera.errors import CclError
 from apps.snooker.camera.motion import Motion
 from apps.snooker.camera.names import Unresolved, World
@@ -174,7 +174,7 @@ class _Run:
 
     # -- the result ----------------------------------------------------------------------
     def finish(self) -> Interpretation:
-        obs = _fill(self.obs, np.array(names.DEFAULT_OBSERVER))
+        obs = _fill(self.obs, space.ccl_to_table(names.DEFAULT_OBSERVER))
         vp = _fill(self.vp, np.array(names.DEFAULT_VIEWPOINT))
         focal = _fill(self.focal[:, None], np.array([names.DEFAULT_FOCAL_MM]))[:, 0]
         bad = np.flatnonzero(~np.all(np.isfinite(np.hstack([obs, vp])), axis=1))

@@ -12,17 +12,18 @@ from apps.snooker.camera.motion import Motion
 from apps.snooker.camera.syntax import BallRef, Event, Simple
 from apps.snooker.table import CUE, REDS
 
-# Cameras at the start of day (reconstructed: the thesis names "the default position of
-# camera 1" as "a general view showing the whole table" and gives no other values).
-# 0: straight above the table's centre; 1-8: a ring 2.5 m up round the table, anticlockwise
-# seen from above from the baulk end (1) by way of the right side (3) and the top end (5);
-# 9: a player's eye behind the baulk cushion.
+# Cameras at the start of day, in CCL's default space (+x towards the baulk cushion:
+# space.py).  Reconstructed: the thesis names "the default position of camera 1" as "a
+# general view showing the whole table" and gives no other values.  0: straight above the
+# table's centre; 1-8: a ring 2.5 m up round the table, anticlockwise seen from above from
+# the baulk end (1) by way of the right side (3) and the top end (5); 9: a player's eye
+# behind the baulk cushion.
 _C, _S, _Z = 3.889087, 3.181981, 2.5  # 5.5 cos 45 and 4.5 sin 45 (m): the ring's diagonals
 DEFAULT_CAMERAS: dict[int, tuple[float, float, float]] = {
     0: (0.0, 0.0, 8.0),
-    1: (-5.5, 0.0, _Z), 2: (-_C, -_S, _Z), 3: (0.0, -4.5, _Z), 4: (_C, -_S, _Z),
-    5: (5.5, 0.0, _Z), 6: (_C, _S, _Z), 7: (0.0, 4.5, _Z), 8: (-_C, _S, _Z),
-    9: (-2.6, 0.0, 1.2),
+    1: (5.5, 0.0, _Z), 2: (_C, -_S, _Z), 3: (0.0, -4.5, _Z), 4: (-_C, -_S, _Z),
+    5: (-5.5, 0.0, _Z), 6: (-_C, _S, _Z), 7: (0.0, 4.5, _Z), 8: (_C, _S, _Z),
+    9: (2.6, 0.0, 1.2),
 }
 DEFAULT_OBSERVER = DEFAULT_CAMERAS[1]
 DEFAULT_VIEWPOINT = (0.0, 0.0, 0.0)
@@ -41,11 +42,12 @@ def _fail(tok: object, message: str) -> Unresolved:
 
 
 class World:
-    """Names and events over one motion, plus the script's cameras and user space."""
+    """Names and events over one motion, plus the script's cameras and user space, all held
+    in the table frame (literal coordinates are mirrored in from CCL's space: ``simple``)."""
 
     def __init__(self, motion: Motion) -> None:
         self.motion = motion
-        self.cameras = {n: np.array(v) for n, v in DEFAULT_CAMERAS.items()}
+        self.cameras = {n: space.ccl_to_table(v) for n, v in DEFAULT_CAMERAS.items()}
         self.origin = np.zeros(3)
         self.factors = np.ones(3)
         self.spots = space.spots(motion.table)
@@ -97,11 +99,13 @@ class World:
 
     # -- coordinates ---------------------------------------------------------------------
     def simple(self, s: Simple, offset: bool) -> np.ndarray:
-        """A simple coordinate as a position (or, after a name's +/-, a displacement)."""
+        """A simple coordinate (CCL's space, or the user's) as a table-frame position (or,
+        after a name's +/-, a displacement)."""
         v = np.array(s.xyz, dtype=np.float64)
         if not s.user:
-            return v
-        return v / self.factors if offset else self.origin + v / self.factors
+            return space.ccl_to_table(v)
+        d = space.ccl_to_table(v / self.factors)
+        return d if offset else self.origin + d
 
     # -- events --------------------------------------------------------------------------
     def event(self, e: Event, after: int) -> int:

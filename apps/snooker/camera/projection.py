@@ -33,6 +33,8 @@ from dataclasses import dataclass
 import numpy as np
 
 FILM_HALF_WIDTH_MM = 18.0  # 35 mm film: a 36 mm wide frame
+FILM_W, FILM_H = 768, 512  # the finished picture (§6.4: "only 768 x 512"), which the
+# visualiser shows exactly (§6.3.2: "properly clipped to the viewing area")
 NEAR_M = 1e-3  # points closer than this along the view axis are not visible
 FOCAL_MIN_MM = 8.0  # §6.3.1: "any focal length in the range 8mm to 2000mm"
 FOCAL_MAX_MM = 2000.0

@@ -1,9 +1,21 @@
-"""The default space of the camera control language (thesis §6.3.1: "measured in metres
-from the centre of the table"), as issue 12 fixes it: origin at the centre of the playing
-surface, +x towards the top cushion, +y towards the left cushion as seen from the baulk end,
-+z up; z = 0 on the cloth, a ball's centre at z = its radius.  Spots lie on the cloth; a
-corner pocket is the corner of the playing surface where its two cushion faces meet, a
-centre pocket the middle of its long side (both z = 0).
+"""The table frame, in which the pictures are made and view files are written: metres from
+the centre of the playing surface, +x towards the top cushion, +y towards the left cushion
+as seen from the baulk end, +z up (right-handed); z = 0 on the cloth, a ball's centre at
+z = its radius.  Spots lie on the cloth; a corner pocket is the corner of the playing
+surface where its two cushion faces meet, a centre pocket the middle of its long side (both
+z = 0).
+
+The camera control language's own default space (thesis §6.3.1, "measured in metres from
+the centre of the table") has the same origin, y and z but +x towards the BAULK cushion:
+the thesis's example decides it.  Its last command puts the observer at the pink ball +
+(0.1, -0.1, 0.05), "a few centimetres behind the pink ball looking towards the pocket" as
+the pink runs to the top left pocket, and its second moves "in the y direction (parallel to
+the short side of the table)".  Of the four ways to lay x along the long side and y along
+the short, only top cushion at -x, left cushion at +y puts that offset behind a ball running
+to the top left pocket.  With z up that frame is left-handed (as several viewing systems of
+the period were), so CCL coordinates are mirrored into the table frame (x -> -x) where they
+are read (``ccl_to_table``); pictures are made in the right-handed table frame and so are
+never mirrored.  Names (balls, spots, pockets) mean the same point in either frame.
 
 The motion program's own coordinates (table.py, checkpoint.py) have the same axes but their
 origin at the baulk cushion face on the right-hand cushion (y = 0), so converting is a shift
@@ -28,6 +40,19 @@ POCKET_NAMES: dict[str, str] = {
     "left centre": "middle-left", "right centre": "middle-right",
     "top left": "top-left", "top right": "top-right",
 }
+
+
+# CCL's default space -> the table frame: x is mirrored, y and z are shared.
+CCL_MIRROR = np.array([-1.0, 1.0, 1.0])
+
+
+def ccl_to_table(v: np.ndarray) -> np.ndarray:
+    """A position or displacement in CCL's default space -> the table frame (and back: the
+    mirror is its own inverse)."""
+    return np.asarray(v, dtype=np.float64) * CCL_MIRROR
+
+
+table_to_ccl = ccl_to_table
 
 
 def origin_shift(table: Table) -> np.ndarray:

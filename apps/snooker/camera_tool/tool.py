@@ -19,6 +19,7 @@ from apps.snooker.camera import ccl
 from apps.snooker.camera.interpreter import Interpretation
 from apps.snooker.camera.motion import Motion, timeline_events
 from apps.snooker.camera.projection import Camera, CameraError
+from apps.snooker.camera.space import table_to_ccl
 from apps.snooker.camera_tool import layout
 from apps.snooker.camera_tool.editor import TextBuffer
 from apps.snooker.camera_tool.panes import InfoPane, ScriptPane, Timeline
@@ -129,7 +130,8 @@ class CameraTool:
         self.timeline.mark(f, m.n_frames)
 
     def _values(self, r: Interpretation, f: int) -> list[tuple[str, int]]:
-        o, v = r.observer[f - 1], r.viewpoint[f - 1]
+        # shown in CCL's space, the one the script is written in
+        o, v = table_to_ccl(r.observer[f - 1]), table_to_ccl(r.viewpoint[f - 1])
         line = int(r.command_line[f - 1])
         here = [e for e in self.events if e[0] == f]
         lines = [

@@ -9,7 +9,7 @@ from apps.snooker.render.lights import Lights
 from apps.snooker.render.materials import BALL_PHONG, SPECK_ALBEDO, Phong
 from apps.snooker.render.specks import SPECK_RADIUS_RAD
 
-SPECK_MIX = 0.65
+SPECK_MIX = 0.15
 
 
 def ball_params(xy: np.ndarray, r_px: float, centre: np.ndarray, radius: float,

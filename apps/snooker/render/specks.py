@@ -13,8 +13,8 @@ from __future__ import annotations
 
 import numpy as np
 
-N_SPECKS = 14
-SPECK_RADIUS_RAD = 0.09
+N_SPECKS = 6
+SPECK_RADIUS_RAD = 0.04  # subtle (§6.5): small, few and faint (SPECK_MIX in balls.py)
 SPECK_SEED = 1987
 
 

@@ -4,6 +4,10 @@
 Keys: space play/pause; right/left one frame; page down/page up 25 frames; home/end the
 first/last frame; escape or q quits.  Dragging with the left button scrubs: the pointer's
 x across the screen is the frame.  Talks to the device only through the pad library.
+
+The view is the film frame, 768 x 512 (the renderer's picture), centred on the 768 x 576
+screen with the bands above and below masked: §6.3.2 wants positions "exactly as it will be
+in the finished sequence", so a ball the film would not show is not shown here either.
 """
 
 from __future__ import annotations
@@ -11,6 +15,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 
 from apps.snooker.camera.motion import Motion
+from apps.snooker.camera.projection import FILM_H, FILM_W
 from apps.snooker.camera.views import View
 from apps.snooker.visualiser.display import ViewDisplay
 from protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
@@ -18,6 +23,8 @@ from protocols.rainbow.events import LEFT, KeyEvent, MouseEvent
 
 LUT_PAGE = 1
 DEVICE_FRAMES_PER_FRAME = 2  # 25 frames/s on the 50 Hz display
+FILM_TOP = (SCREEN_H - FILM_H) // 2  # the film frame's top row on the screen
+MASK = "#000000"  # the screen outside the film frame
 
 
 class ViewsError(ValueError):
@@ -40,7 +47,8 @@ class Visualiser:
         self.motion = motion
         self.views = list(views)
         self.cameras = [v.camera() for v in self.views]
-        self.display = ViewDisplay(client, SCREEN, 0, 0, SCREEN_W, SCREEN_H, LUT_PAGE)
+        client.set_lut(0, [MASK])  # the root's colour: the masked bands
+        self.display = ViewDisplay(client, SCREEN, 0, FILM_TOP, FILM_W, FILM_H, LUT_PAGE)
         self.index = 0  # into self.views
         self.drawn: int | None = None
         self.playing = True

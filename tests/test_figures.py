@@ -1,0 +1,67 @@
+"""The thesis's screen figures as shipped recordings (examples/figures): every one replays
+with --check, each was made from a script kept beside it with ordinary program options, and
+``camlab88 figures`` lists them and writes one's last screen headless."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from camlab88.commands.figures import CAPTIONS, FIGURES_DIR
+from protocols.session import read
+
+ROOT = Path(__file__).resolve().parents[1]
+SHIPPED = sorted(FIGURES_DIR.glob("fig-*.session"))
+ALLOWED = {"--headless", "--events", "--record", "--pattern", "--rules", "--script",
+           "--background", "--ops", "--baud", "--seed"}
+
+
+def _cli(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    for k in ("DISPLAY", "WAYLAND_DISPLAY", "SDL_VIDEODRIVER"):
+        env.pop(k, None)
+    return subprocess.run([sys.executable, "-m", "camlab88", *args], cwd=cwd, env=env,
+                          capture_output=True, text=True, timeout=300)
+
+
+def test_every_recording_is_a_listed_figure_with_its_script() -> None:
+    assert SHIPPED, "no figure recordings ship"
+    maker = (FIGURES_DIR / "make_figures.py").read_text(encoding="utf-8")
+    for path in SHIPPED:
+        number = path.stem.removeprefix("fig-")
+        assert number in CAPTIONS, path.name
+        assert f'"{number}": (' in maker, f"{number} is not made by make_figures.py"
+        scripts = [FIGURES_DIR / "scripts" / f"fig-{number}.{ext}" for ext in ("events", "script")]
+        assert any(s.is_file() for s in scripts) or f'"{number}": (VISUALISE, None)' in maker
+
+
+@pytest.mark.parametrize("path", SHIPPED, ids=[p.stem for p in SHIPPED])
+def test_figure_recording_replays_with_check(path: Path, tmp_path: Path,
+                                             capsys: pytest.CaptureFixture[str],
+                                             monkeypatch: pytest.MonkeyPatch) -> None:
+    rec = read(path)
+    opts = {a.split("=")[0] for a in rec.argv if a.startswith("--")}
+    assert opts <= ALLOWED, f"{path.name}: options beyond ordinary program ones: {opts - ALLOWED}"
+    assert path.stat().st_size < 400_000  # kilobytes, not megabytes
+    from camlab88.cli import main
+
+    monkeypatch.chdir(tmp_path)  # in process (a fresh interpreter per figure would double the time)
+    assert main(["replay", str(path), "--headless", "--check"]) == 0
+    assert "screen hashes agree" in capsys.readouterr().out
+
+
+def test_figures_lists_and_writes_a_png_headless(tmp_path: Path) -> None:
+    r = _cli("figures", cwd=tmp_path)
+    assert r.returncode == 0 and all(f"fig {n}" in r.stdout for n in CAPTIONS)
+    number = SHIPPED[0].stem.removeprefix("fig-")
+    r = _cli("figures", number, cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    png = tmp_path / f"fig-{number}.png"
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert "no display; running headless" in r.stderr
+    r = _cli("figures", "9.9", cwd=tmp_path)
+    assert r.returncode == 2 and "no screen figure '9.9'" in r.stderr
