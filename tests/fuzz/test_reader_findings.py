@@ -36,7 +36,9 @@ def test_session_recording_findings(old: bytes, new: bytes, where: str) -> None:
 
 
 def test_session_times_the_writer_writes_still_read() -> None:
-    for t in ("0", "3", "3/25", "0.5"):
+    # each form (an integer, a fraction, a decimal), no later than the next tick's 4/25: a
+    # time that goes back is refused (test_recording_checks.py)
+    for t in ("0", "3/25", "0.12", "6/50", "0.1"):
         rec = loads(SESSION.replace(b'"time":"3/25"', f'"time":"{t}"'.encode(), 1), "<s>")
         assert rec.events[0][1] == Fraction(t)
 

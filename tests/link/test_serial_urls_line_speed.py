@@ -121,7 +121,7 @@ def test_rfc2217_opens_without_the_write_timeout_its_handler_refuses() -> None:
         try:
             assert port.write_timeout is None
             got = b""
-            for _ in range(40):
+            for _ in range(200):
                 got += serial_port.read_available(port, 0.05)
                 if got:
                     break

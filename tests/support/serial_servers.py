@@ -94,9 +94,15 @@ class _Connection:
 
 class Rfc2217Server(_Server):
     """``rfc2217://127.0.0.1:<port>``: pyserial's PortManager; the stream follows the
-    option negotiation (``escape`` doubles any IAC byte, as the protocol requires)."""
+    option negotiation (``escape`` doubles any IAC byte, as the protocol requires).
 
-    SEND_AFTER = 0.3  # s after the client's first bytes: its open() has negotiated by then
+    pyserial's client ends ``open()`` by purging its receive buffer, then the transmit
+    buffer: bytes that arrive before the first purge are thrown away.  So the stream is sent
+    once the client asked to purge the transmit buffer (its receive buffer is clean by then),
+    not after a fixed delay, which a loaded machine outran."""
+
+    PURGE_TRANSMIT = b"\xff\xfa\x2c\x0c\x02"  # IAC SB COM-PORT-OPTION PURGE-DATA transmit
+    SEND_AFTER = 10.0  # s after the client's first bytes, if its purge was never seen
 
     def _serve(self, conn: socket.socket) -> None:
         import serial
@@ -107,6 +113,7 @@ class Rfc2217Server(_Server):
         conn.settimeout(0.05)
         first: float | None = None
         sent = False
+        raw = b""
         while not self._stop.is_set():
             try:
                 data = conn.recv(4096)
@@ -118,8 +125,11 @@ class Rfc2217Server(_Server):
                 return
             if data:
                 first = first or time.monotonic()
+                raw = (raw + data)[-4096:]
                 self.received += b"".join(manager.filter(data))
-            if not sent and first is not None and time.monotonic() - first > self.SEND_AFTER:
+            opened = self.PURGE_TRANSMIT in raw
+            if not sent and first is not None and (
+                    opened or time.monotonic() - first > self.SEND_AFTER):
                 conn.sendall(b"".join(manager.escape(self.stream)))
                 sent = True
             port.read(4096)  # what the client wrote, echoed by loop://: not sent back

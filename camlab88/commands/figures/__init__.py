@@ -90,9 +90,10 @@ def _replay(args: argparse.Namespace, path: Path) -> int:
     shot = args.screenshot or (Path(f"fig-{args.number}.png") if headless else None)
     ctx = Replay(rec, headless=headless, period=False, check=False, frames=None,
                  screenshot=None if shot is None else shot.resolve())
-    status = rerun(ctx)
+    status, said = rerun(ctx)
     if ctx.runs == 0 or status != 0:
-        return fail(COMMAND, f"{path}: the replay ended with exit status {status}", 1)
+        return fail(COMMAND, f"{path}: the replay ended with exit status {status}: "
+                    f"{said.strip()}", 1)
     if shot is not None:
         print(f"{COMMAND}: figure {args.number} ({CAPTIONS[args.number]}) -> {shot}")
     return 0
