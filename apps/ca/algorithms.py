@@ -16,7 +16,6 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Protocol
 
-from apps.ca.hashlife.algorithm import HashLife, reason_against
 from apps.ca.rules import RuleSet
 
 CHOICES = ("auto", "direct", "hashlife")
@@ -56,10 +55,16 @@ class Direct:
         engine.step_direct(generations, progress)
 
 
-ALGORITHMS: dict[str, Algorithm] = {"direct": Direct(), "hashlife": HashLife()}
+ALGORITHMS: dict[str, Algorithm] = {"direct": Direct()}
 
 
 def get_algorithm(name: str) -> Algorithm:
+    """The algorithm named; HashLife's modules (and their kernels) are imported on its
+    first use, so a direct run does not pay for them."""
+    if name == "hashlife" and name not in ALGORITHMS:
+        from apps.ca.hashlife.algorithm import HashLife
+
+        ALGORITHMS[name] = HashLife()
     try:
         return ALGORITHMS[name]
     except KeyError:
@@ -74,6 +79,10 @@ def choose_engine(rules: RuleSet | None, generations: int, advance_area: object 
     ``dense`` plane)."""
     if engine not in CHOICES:
         raise ValueError(f"engine must be one of {CHOICES}, not {engine!r}")
+    if engine == "direct":
+        return engine
+    from apps.ca.hashlife.algorithm import reason_against
+
     reason = reason_against(rules, advance_area)
     if engine == "hashlife" and reason is not None:
         raise ValueError(f"HashLife cannot run here: {reason}; use the direct engine")

@@ -12,13 +12,18 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from apps.ca import algorithms, grid_stats, kernels
-from apps.ca.hashlife.algorithm import DEFAULT_MEMORY, Tree
 from apps.ca.rules import RuleSet
 from apps.ca.tables import compile_rules
+
+if TYPE_CHECKING:  # HashLife is imported when a run first needs it (start-up: docs/perf/ca.md)
+    from apps.ca.hashlife.algorithm import Tree
+
+DEFAULT_MEMORY = 512 << 20  # bytes of HashLife node table, as Golly's default "maximum memory"
 
 SIDE = 65536
 CENTRE = SIDE // 2

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from apps.ca import macrocell
-from apps.ca.rle_body import decode_compiled
+from apps.ca.rle_body import decode
 from protocols import atomicfile
 from protocols.textinput import InputError, quote, read_text, where
 
@@ -469,7 +469,7 @@ def parse_rle(text: str, source: str = "<rle>") -> Pattern:
         col = offset - (body.rfind("\n", 0, offset) + 1) + 1
         return PatternError(source, min(body_line + line + 1, max(1, len(lines))), col, message)
 
-    cells, (left, top) = decode_compiled(body, fail)
+    cells, (left, top) = decode(body, fail)
     # Golly reads cells beyond the header's box too; so do we. The reference point is
     # Golly's origin: Pos gives the box corner relative to it.
     ref = (-pos[0] - left, -pos[1] - top)

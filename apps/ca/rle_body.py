@@ -142,3 +142,29 @@ def decode_compiled(body: str, fail: Fail
     xs, ys, ts = (np.empty(cells, np.int64) for _ in range(3))
     rle_scan.to_cells(ry, rx, rn, rs, runs, xs, ys, ts, top, left)
     return (xs, ys, ts), (left, top)
+
+
+# Bodies shorter than this are read by the token reader: a few ms at most, where the first
+# use of the compiled scanner loads its kernels from numba's cache (30-60 ms of CPU, as
+# much as a whole short HashLife jump). Measured in docs/perf/ca.md.
+SMALL_BODY = 8192
+
+
+def decode(body: str, fail: Fail
+           ) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray] | np.ndarray, tuple[int, int]]:
+    """What :func:`decode_compiled` returns — cells or, dense, a grid, and the corner —
+    by whichever reader is quicker for the body's size."""
+    if len(body) >= SMALL_BODY:
+        return decode_compiled(body, fail)
+    xs, ys, ts = decode_body(body, fail)
+    if xs.size == 0:
+        return (xs, ys, ts), (0, 0)
+    left, top = int(xs.min()), int(ys.min())
+    xs -= left
+    ys -= top
+    h, w = int(ys.max()) + 1, int(xs.max()) + 1
+    if xs.size * GRID_FILL >= h * w:
+        grid = np.zeros((h, w), np.uint8)
+        grid[ys, xs] = ts
+        return grid, (left, top)
+    return (xs, ys, ts), (left, top)

@@ -4,6 +4,9 @@ engine started from a grid (direct and HashLife) — the same results as the cel
 from __future__ import annotations
 
 import json
+import os
+import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -13,7 +16,7 @@ from hypothesis import strategies as st
 
 from apps.ca.engine import CENTRE, Engine
 from apps.ca.patterns import ORIENTATIONS, GridPattern, Pattern, PatternError, parse_rle
-from apps.ca.rle_body import decode_body, decode_compiled
+from apps.ca.rle_body import SMALL_BODY, decode, decode_body, decode_compiled
 from camlab88.cli import main
 from tests.ca.helpers import LIFE
 
@@ -146,3 +149,25 @@ def test_auto_keeps_a_dense_plane_on_the_direct_engine_for_longer() -> None:
     sparse = Engine(LIFE, algorithm="auto")
     sparse.set_cells([100, 101, 102, 5000], [100, 100, 100, 5000], 1)
     assert not sparse.is_dense()
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(tokens, max_size=40))
+def test_the_small_body_reader_agrees_with_the_compiled_reader(parts: list[str]) -> None:
+    """A short body skips the compiled scanner: the same cells, or the same error."""
+    body = "".join(parts)
+    assert len(body) < SMALL_BODY
+    assert _outcome(lambda b: _cells(decode(b, _fail)), body) == \
+        _outcome(lambda b: _cells(decode_compiled(b, _fail)), body)
+
+
+def test_a_short_rle_is_read_without_loading_the_compiled_scanner() -> None:
+    code = ("import sys; from apps.ca.patterns import read_pattern; "
+            "from apps.ca.library import pattern_path; "
+            "p = read_pattern(pattern_path('gosper_gun')); print(len(p.cell_set()), "
+            "'apps.ca.rle_scan' in sys.modules)")
+    env = {**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parents[2])}
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                            timeout=120, env=env)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.split() == ["36", "False"]

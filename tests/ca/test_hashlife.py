@@ -199,3 +199,25 @@ def test_cells_are_read_from_the_tree_only_when_looked_at() -> None:
     assert copy.tree is e.tree and copy.same_state(e)
     copy.set(0, 0, 1)
     assert copy.tree is None and e.tree is not None
+
+
+def test_a_direct_run_does_not_load_hashlife() -> None:
+    """HashLife's modules (80-odd kernels to set up, ~0.06 s of start-up) load on its
+    first use only; an auto run long enough for it still gets it."""
+    import os
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    code = ("import sys; from camlab88.cli import main; "
+            "main(['ca', 'run', '--rules', 'life', '--pattern', 'glider', '--generations', "
+            "'8', '--engine', 'direct']); print('apps.ca.hashlife' in sys.modules); "
+            "main(['ca', 'run', '--rules', 'life', '--pattern', 'glider', '--generations', "
+            "'4096']); print('apps.ca.hashlife.algorithm' in sys.modules)")
+    env = {**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parents[2])}
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                            timeout=120, env=env)
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert lines[0].startswith("generation 8  population 5") and lines[1] == "False"
+    assert lines[2].startswith("generation 4096  population 5") and lines[3] == "True"

@@ -25,7 +25,6 @@ from apps.ca.rules import RuleSet
 # Leaves are this many levels above the smallest possible (2**(s+2) cells square, one
 # generation): bigger leaves run more generations directly per memoised result.
 LEAF_EXTRA = 0
-DEFAULT_MEMORY = 512 << 20  # bytes of node table, as Golly's default "maximum memory"
 # Generations the direct engine takes at a time while order-dependent rules have live cells
 # at the wrapping plane's seam.
 SEAM_DIRECT_BATCH = 16
