@@ -27,6 +27,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "snooker",
     "ca",
     "replay",
+    "warmup",
 )
 
 
