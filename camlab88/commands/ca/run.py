@@ -67,14 +67,24 @@ def _run(args: argparse.Namespace) -> int:
         return 2
     stats = engine.stats()
     stats["origin"] = [CENTRE, CENTRE]
-    if args.png:
-        from apps.ca.program.picture import picture
-        from protocols.png import write_png
-
-        write_png(picture(engine, args.zoom, args.monochrome), args.png)
-        print(f"wrote {args.png}", file=sys.stderr if args.json else sys.stdout)
+    if args.png and not _write_png(engine, args):
+        return 2
     _print_stats(stats, args.json)
     return 0
+
+
+def _write_png(engine, args: argparse.Namespace) -> bool:  # noqa: ANN001
+    from apps.ca.program.picture import picture
+    from protocols.png import write_png
+
+    try:
+        write_png(picture(engine, args.zoom, args.monochrome), args.png)
+    except OSError as exc:  # no directory there, read-only, disk full
+        print(f"camlab88 ca run: cannot write {args.png}: {exc.strerror or exc}",
+              file=sys.stderr)
+        return False
+    print(f"wrote {args.png}", file=sys.stderr if args.json else sys.stdout)
+    return True
 
 
 def _advance(engine, args: argparse.Namespace, progress) -> None:  # noqa: ANN001
