@@ -100,10 +100,12 @@ def run_logged(argv: list[str], cwd: Path, cache: Path,
 def readme(work: Path, demo: bool) -> None:
     """A newcomer's first runs: README's commands in order, one cache, empty at the start."""
     sys.path.insert(0, str(ROOT))
-    from tests.test_readme_walkthrough import walkthrough_commands
+    from tests.test_readme_walkthrough import walkthrough_commands, walkthrough_directories
 
-    commands = [argv[1:] for argv in walkthrough_commands(
-        (ROOT / "README.md").read_text(encoding="utf-8"))] + README_MORE
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    for d in walkthrough_directories(text):  # the README's `mkdir -p` lines
+        (work / d).mkdir(parents=True, exist_ok=True)
+    commands = [argv[1:] for argv in walkthrough_commands(text)] + README_MORE
     if demo:
         commands.append(["demo", "--headless"])
     cache = work / "newcomer-cache"
