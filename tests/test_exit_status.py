@@ -136,3 +136,10 @@ def test_an_output_that_cannot_be_written_is_a_usage_error(tmp_path: Path,
                                                for a in UNWRITABLE[command])])
     assert done.returncode == 2, (done.returncode, done.stderr)
     assert "plain" in done.stderr and "Traceback" not in done.stderr, done.stderr
+
+
+def test_a_directory_given_as_a_recording_is_named_plainly(tmp_path: Path) -> None:
+    """`camlab88 replay examples` (a directory): the file's name, not `examples:0:0`."""
+    done = _run(tmp_path, ["replay", "examples"])
+    assert done.returncode == 2
+    assert done.stderr.strip() == "camlab88 replay: examples: cannot read: Is a directory"
