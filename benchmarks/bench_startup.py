@@ -4,6 +4,7 @@
     python benchmarks/bench_startup.py --runs 7 --cold-runs 2 --only snooker
     python benchmarks/bench_startup.py --demo          # also `camlab88 demo --headless`
     python benchmarks/bench_startup.py --compare       # warm: lean cache loads vs numba's own
+    python benchmarks/bench_startup.py --readme [--demo]   # a newcomer's first-ever runs
 
 Each command runs as its own process, as a user types it, in a scratch directory with the
 shipped examples/. *Cold* gives every run an empty numba cache (NUMBA_CACHE_DIR), so every
@@ -13,7 +14,11 @@ process) and its CPU time, min / median; the load average is printed before and 
 because on a shared 2-core machine the figures move with it (docs/perf/startup.md).
 ``--compare`` times each warm command alternately with numba's own cache load (its full
 context refresh, ``CAMLAB88_NUMBA_FULL_REFRESH=1``) and with protocols.kernel_load's lean
-one, so both see the same load.
+one, so both see the same load. ``--readme`` is a newcomer's first hour: every command of
+README.md's "First ten minutes" (read from the README, as tests/test_readme_walkthrough.py
+does) and the cellular automaton's example runs, in order, in one scratch directory, all
+sharing one cache that starts empty (the first run after install), each run once; it prints
+the "compiling" notices each command gave, so a group compiled twice shows.
 """
 
 from __future__ import annotations
@@ -45,6 +50,16 @@ COMMANDS: dict[str, list[str]] = {
     "camlab88 --help": ["--help"],
 }
 DEMO = {"demo --headless": ["demo", "--headless"]}
+# README's cellular-automaton section, after the first ten minutes
+README_MORE = [
+    ["ca", "run", "--rules", "life", "--pattern", "gosper_gun", "--generations", "300",
+     "--json"],
+    ["ca", "run", "--rules", "maze", "--pattern", "maze_demo", "--generations", "98",
+     "--png", "maze.png", "--zoom", "8"],
+    ["ca", "run", "--rules", "turing_primes", "--pattern", "primes_25", "--generations",
+     "300", "--json"],
+    ["ca", "run", "--rules", "circuits", "--pattern", "adder_demo", "--generations", "300"],
+]
 
 
 def camlab88() -> list[str]:
@@ -59,6 +74,13 @@ def load() -> str:
 def run_once(argv: list[str], cwd: Path, cache: Path,
              **extra: str) -> tuple[float, float]:
     """(wall, cpu) seconds of one process; CPU time (user + sys) moves less with the load."""
+    took, cpu, _ = run_logged(argv, cwd, cache, **extra)
+    return took, cpu
+
+
+def run_logged(argv: list[str], cwd: Path, cache: Path,
+               **extra: str) -> tuple[float, float, str]:
+    """run_once, and the process's stderr."""
     env = dict(os.environ, NUMBA_CACHE_DIR=str(cache), SDL_VIDEODRIVER="dummy", **extra)
     env.pop("DISPLAY", None)
     # as on a user's machine: Python keeps compiled modules (this sandbox sets
@@ -72,7 +94,32 @@ def run_once(argv: list[str], cwd: Path, cache: Path,
     if done.returncode != 0:
         raise SystemExit(f"camlab88 {' '.join(argv)} failed:\n{done.stderr.decode()[-2000:]}")
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    return took, cpu
+    return took, cpu, done.stderr.decode(errors="replace")
+
+
+def readme(work: Path, demo: bool) -> None:
+    """A newcomer's first runs: README's commands in order, one cache, empty at the start."""
+    sys.path.insert(0, str(ROOT))
+    from tests.test_readme_walkthrough import walkthrough_commands, walkthrough_directories
+
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    for d in walkthrough_directories(text):  # the README's `mkdir -p` lines
+        (work / d).mkdir(parents=True, exist_ok=True)
+    commands = [argv[1:] for argv in walkthrough_commands(text)] + README_MORE
+    if demo:
+        commands.append(["demo", "--headless"])
+    cache = work / "newcomer-cache"
+    extra = {"CAMLAB88_KAS_LIBRARY": str(work / "library"), "XDG_DATA_HOME": str(work / "data")}
+    print("| command (first run after install, in README order) | wall s | CPU s "
+          "| compiled | load before -> after |")
+    print("|---|---|---|---|---|")
+    for argv in commands:
+        before = load()
+        took, cpu, err = run_logged(argv, work, cache, **extra)
+        notices = [line.split("compiling ")[1].split(" kernels")[0]
+                   for line in err.splitlines() if line.startswith("camlab88: compiling ")]
+        print(f"| `{' '.join(argv)}` | {took:.1f} | {cpu:.1f} | {', '.join(notices) or '-'} "
+              f"| {before} -> {load()} |", flush=True)
 
 
 def measure(argv: list[str], work: Path, runs: int,
@@ -114,6 +161,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--cold-runs", type=int, default=2, help="cold runs per command (default 2)")
     ap.add_argument("--only", help="only commands whose name contains this")
     ap.add_argument("--demo", action="store_true", help="also time `demo --headless`")
+    ap.add_argument("--readme", action="store_true",
+                    help="README's commands in order, first runs from an empty cache")
     ap.add_argument("--compare", action="store_true",
                     help="warm only: numba's full refresh against the lean cache load")
     args = ap.parse_args(argv)
@@ -127,6 +176,9 @@ def main(argv: list[str] | None = None) -> int:
         shutil.copytree(ROOT / "examples", work / "examples")
         if args.compare:
             compare(commands, work, args.runs)
+            return 0
+        if args.readme:
+            readme(work, args.demo)
             return 0
         print("| command | cold wall s | cold CPU s | warm wall s | warm CPU s "
               "| load before -> after |")

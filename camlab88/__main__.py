@@ -1,3 +1,3 @@
-from camlab88.cli import main
+from camlab88.cli import entry
 
-raise SystemExit(main())
+raise SystemExit(entry())

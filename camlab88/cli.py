@@ -29,6 +29,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "ca",
     "replay",
     "figures",
+    "warmup",
 )
 
 
@@ -94,6 +95,13 @@ def normalise_argv(argv: Sequence[str]) -> list[str]:
     return out
 
 
+# Exit status, one rule for every command (docs/exit_status.md): 0 the work was done; 1 it
+# started and failed (a check found differences, a finding, a connection lost, ...); 2 it
+# could not start on what it was given (arguments, a missing or malformed input file, an
+# output that cannot be written, a port or device that cannot be opened).
+OK, FAILED, USAGE = 0, 1, 2
+
+
 class Terminated(KeyboardInterrupt):
     """SIGTERM, delivered the way Ctrl-C is, so every program's clean-up (a ``--record``
     file finished and written, temporaries removed) runs for both."""
@@ -157,7 +165,7 @@ def _main(argv: Sequence[str] | None) -> int:
     except KeyboardInterrupt:
         return 130
     except BrokenPipeError:
-        return 0
+        return OK
     except OSError as exc:
         return _write_fault(words, exc)
     finally:
@@ -183,5 +191,18 @@ def _write_fault(words: list[str], exc: OSError) -> int:
     return 1
 
 
+def entry(argv: Sequence[str] | None = None) -> int:
+    """The console script and ``python -m camlab88``: ``main``, with a command's one-line
+    refusal (``SystemExit("camlab88 X: why")``, which Python would end with status 1)
+    printed and ended with status 2, a usage or input error like every other."""
+    try:
+        return main(argv)
+    except SystemExit as exc:
+        if not isinstance(exc.code, str):
+            raise
+        print(exc.code, file=sys.stderr)
+        return USAGE
+
+
 if __name__ == "__main__":  # pragma: no cover
-    sys.exit(main())
+    sys.exit(entry())

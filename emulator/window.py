@@ -240,5 +240,15 @@ def main(argv: list[str] | None = None) -> int:
     return 0
 
 
+def run_module(argv: list[str] | None = None) -> int:
+    """``main`` as ``python -m emulator.window`` runs it: Ctrl-C quits as Escape does, with
+    the shell's status for an interrupt and no traceback."""
+    try:
+        return main(argv)
+    except KeyboardInterrupt:
+        print("python -m emulator.window: interrupted", file=sys.stderr)
+        return 130
+
+
 if __name__ == "__main__":
-    raise SystemExit(main())
+    raise SystemExit(run_module())

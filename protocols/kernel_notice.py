@@ -11,6 +11,15 @@ compile of any of its kernels prints one line to stderr:
 
 A warm run prints nothing and pays nothing (no event fires).
 
+A group may name a *completion* (``completion="package.module:function"``) that calls every
+kernel of the group once with the argument types real work uses. After the first cold
+compile of such a group the completion runs as the process ends (atexit: the program's own
+work and output come first, and numba cannot compile a kernel again from inside that
+kernel's compile), so the whole group is compiled and cached by that first run, under the
+one notice: a program that later needs another kernel of the group (the T5688's stream after
+the T5684's, a second rule set after Life) loads it instead of compiling with a second
+notice. ``camlab88 warm-up`` runs every group's completion, or a small command.
+
 Ctrl-C during a build: the default handler raises KeyboardInterrupt wherever Python happens
 to be, and inside llvmlite that can be a destructor or callback whose exception is only
 printed ("Exception ignored ...") while the build carries on and the program exits 0. While
@@ -40,12 +49,15 @@ INTERRUPTED_STATUS = 130  # the shell's status for a process ended by SIGINT
 class _Group:
     label: str
     seconds: float
+    completion: str | None = None  # "module:function" that compiles the whole group
     announced: bool = False
 
 
 @dataclass
 class _State:
     groups: dict[str, _Group] = field(default_factory=dict)  # module name -> its group
+    pending: list[_Group] = field(default_factory=list)  # cold groups to complete
+    at_exit: bool = False
     depth: int = 0
     saved_handler: Any = None
     listening: bool = False
@@ -55,10 +67,12 @@ _state = _State()
 _lock = threading.Lock()
 
 
-def announce_compiles(label: str, seconds: float, *modules: str) -> None:
+def announce_compiles(label: str, seconds: float, *modules: str,
+                      completion: str | None = None) -> None:
     """Register the kernels defined in `modules` as one group named `label` whose cold
-    compile takes about `seconds` (measured on the project's 2-core machine)."""
-    group = _Group(label, seconds)
+    compile takes about `seconds` (measured on the project's 2-core machine); `completion`
+    ("module:function") compiles the rest of the group after its first cold compile."""
+    group = _Group(label, seconds, completion)
     with _lock:
         for name in modules:
             _state.groups.setdefault(name, group)
@@ -99,6 +113,9 @@ def _compile_started(data: Any) -> None:
         announce = group is not None and not group.announced
         if announce:
             group.announced = True
+            if group.completion:
+                _state.pending.append(group)
+                _complete_at_exit()
     if outermost:
         _guard_sigint()
     if announce:
@@ -111,6 +128,37 @@ def _compile_ended() -> None:
         last = _state.depth == 0
     if last:
         _unguard_sigint()
+
+
+def run_completion(completion: str) -> None:
+    """Call "module:function" (every kernel of one group, once)."""
+    import importlib
+
+    module, _, function = completion.partition(":")
+    getattr(importlib.import_module(module), function)()
+
+
+def _complete_at_exit() -> None:
+    if not _state.at_exit:
+        import atexit
+
+        atexit.register(complete_pending)
+        _state.at_exit = True
+
+
+def complete_pending() -> None:
+    """Run the completion of every group that compiled cold in this process (each once)."""
+    done: set[str] = set()
+    while _state.pending:
+        group = _state.pending.pop(0)
+        if group.completion in done:
+            continue
+        done.add(group.completion or "")
+        try:
+            run_completion(group.completion or "")
+        except Exception as exc:  # noqa: BLE001 - a later call still compiles its own kernel
+            print(f"camlab88: the rest of the {group.label} kernels were not compiled ahead "
+                  f"({type(exc).__name__}: {exc})", file=sys.stderr, flush=True)
 
 
 def _in_main_thread() -> bool:

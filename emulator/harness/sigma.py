@@ -58,6 +58,8 @@ class SigmaProgramTarget:
             mouse, keys, self.i = self.session.due(self.script, self.i)
         self.session.step(mouse + self._mouse, keys + self._keys)
         self._mouse, self._keys = [], []
+        if getattr(self.session.front, "quitting", False):
+            return False  # the program was asked to quit (Esc) and may
         return not (self.end_with_script and self.settled())
 
     def settled(self) -> bool:

@@ -22,7 +22,8 @@ def _announce() -> None:
     from protocols.kernel_notice import announce_compiles
 
     # one line on stderr if the cache is cold; ~2 s is the measured cold compile
-    announce_compiles("Sigma raster", 2.0, __name__, "protocols.sigma.abbreviated")
+    announce_compiles("Sigma raster", 2.0, __name__, "protocols.sigma.abbreviated",
+                      completion="emulator.sigma.kernel_warmup:compile_kernels")
 
 
 # Every kernel must be called with one set of argument types only: numba's on-disk cache

@@ -46,7 +46,7 @@ def dump(path: str, out: Any = sys.stdout) -> int:
         rec = read_recording(path)
     except RecordingError as exc:  # names the file and line
         print(f"error: {exc}", file=sys.stderr)
-        return 1
+        return 2  # an unusable input (camlab88's exit status rule)
     print(f"# {path}: {rec.settings}, xonxoff {'on' if rec.xonxoff else 'off'}, "
           f"{len(rec.exact_entries)} chunks, {float(rec.duration):.6f} s", file=out)
     for e in rec.exact_entries:
@@ -61,12 +61,12 @@ def write_stream(path: str, out_path: str, direction: str) -> int:
         data = read_recording(path).stream(direction)
     except RecordingError as exc:
         print(f"error: {exc}", file=sys.stderr)
-        return 1
+        return 2  # an unusable input (camlab88's exit status rule)
     try:
         write_atomic(out_path, data)
     except OSError as exc:
         print(f"error: cannot write {out_path}: {exc.strerror or exc}", file=sys.stderr)
-        return 1
+        return 2
     print(f"{len(data)} bytes written to {out_path}")
     return 0
 

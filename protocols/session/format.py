@@ -53,7 +53,8 @@ class SessionFileError(ValueError):
     """A recording that cannot be read: ``path:line:col: what was wrong``."""
 
     def __init__(self, path: str, line: int, col: int, message: str) -> None:
-        super().__init__(f"{path}:{line}:{col}: {message}")
+        where = f"{path}:{line}:{col}" if line > 0 else path  # line 0: the file as a whole
+        super().__init__(f"{where}: {message}")
         self.path, self.line, self.col = path, line, col
 
 

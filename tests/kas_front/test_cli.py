@@ -9,6 +9,8 @@ from apps.kas import files
 from camlab88.cli import main
 from tests.kas_front.helpers import DATA, model_only
 
+ROOT_EXAMPLES = DATA.parents[2] / "examples" / "kas"
+
 
 def test_edit_headless_saves_and_screenshots(tmp_path, capsys) -> None:  # noqa: ANN001
     key, shot = tmp_path / "k.kas", tmp_path / "shot.png"
@@ -191,3 +193,21 @@ def test_closing_the_window_with_unsaved_edits_warns_once(tmp_path, capsys, monk
     script.write_text("move 0 0\n")
     assert main(["kas", "edit", str(target), "--script", str(script)]) == 0
     assert len(quits) == 1
+
+
+def test_saving_over_a_library_entry_needs_force(tmp_path, capsys, monkeypatch) -> None:  # noqa: ANN001
+    lib = tmp_path / "lib"
+    monkeypatch.setenv("CAMLAB88_KAS_LIBRARY", str(lib))
+    first, second = tmp_path / "a.kas", tmp_path / "b.kas"
+    assert main(["kas", "path-script", "walk_a", "walk_b", str(ROOT_EXAMPLES / "arc.script"),
+                 "--path-out", str(first), "--timing-out", str(tmp_path / "t.kas")]) == 0
+    second.write_text(first.read_text().replace("\n0", "\n1", 1))
+    assert main(["kas", "library", "--save", str(first), "my_arc"]) == 0
+    kept = (lib / "my_arc.kas").read_bytes()
+    capsys.readouterr()
+    assert main(["kas", "library", "--save", str(second), "my_arc"]) == 2
+    err = capsys.readouterr().err
+    assert "my_arc is already in your library" in err and "--force" in err
+    assert (lib / "my_arc.kas").read_bytes() == kept
+    assert main(["kas", "library", "--save", str(second), "my_arc", "--force"]) == 0
+    assert (lib / "my_arc.kas").read_bytes() == second.read_bytes()

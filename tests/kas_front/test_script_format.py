@@ -16,8 +16,10 @@ UNTIMED = Path(__file__).resolve().parents[1] / "data" / "kas" / "walk_edit_scri
 def test_an_untimed_model_script_runs_on_the_sigma(tmp_path: Path, capsys) -> None:  # noqa: ANN001
     model, front = tmp_path / "m.kas", tmp_path / "f.kas"
     assert main(["kas", "edit-script", str(UNTIMED), "--out", str(model)]) == 0
-    script = tmp_path / "s.txt"  # the same script, with F2 (save) on the Sigma at the end
-    script.write_text(UNTIMED.read_text(encoding="utf-8") + "key f2\n", encoding="utf-8")
+    # the same script; on the Sigma its last key, Esc with no command to cancel, asks
+    # whether to save and quit: y does
+    script = tmp_path / "s.txt"
+    script.write_text(UNTIMED.read_text(encoding="utf-8") + "key y\n", encoding="utf-8")
     assert main(["kas", "edit", str(front), "--script", str(script), "--headless"]) == 0
     capsys.readouterr()
     a, b = files.load_keyframe(model), files.load_keyframe(front)

@@ -31,7 +31,7 @@ def test_dump_is_readable(tmp_path: Path) -> None:
 def test_bad_recording_is_an_error_not_a_traceback(tmp_path: Path, capsys) -> None:
     bad = tmp_path / "bad.rec"
     bad.write_text("hello\n")
-    assert main(["dump", str(bad)]) == 1
+    assert main(["dump", str(bad)]) == 2
     assert f"{bad}:1: not a camlab88 link recording" in capsys.readouterr().err
 
 
@@ -73,7 +73,7 @@ def test_link_dump_of_a_session_recording_says_which_flag_makes_which(tmp_path: 
     from camlab88.cli import main as camlab88_main
 
     session = Path(__file__).parents[1] / "data" / "sessions" / "sigma_run.session"
-    assert camlab88_main(["link", "dump", str(session)]) == 1
+    assert camlab88_main(["link", "dump", str(session)]) == 2
     err = capsys.readouterr().err
     assert "is a session recording, not a link recording" in err
     assert "--record-line FILE` writes the link recording" in err

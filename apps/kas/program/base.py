@@ -31,8 +31,16 @@ def setup_bytes(enc: Encoder, lut: list[tuple[int, int, int]], cursor: bool = Tr
     return bytes(out)
 
 
+QUIT_QUESTION = "unsaved work: y saves and quits, n quits without saving, Esc stays"
+
+
 class Front:
-    """Base of the editor and path fronts: subclasses give ``prims()`` and handle input."""
+    """Base of the editor and path fronts: subclasses give ``prims()`` and handle input.
+
+    Quitting (Esc with no command to cancel, or the window's close button) is the same for
+    every front: with no unsaved work the program ends at once; with unsaved work the
+    message line asks first — y saves and quits, n quits without saving, Esc stays (a
+    second close while asked also quits without saving)."""
 
     def __init__(self, background: str = "black") -> None:
         self.enc = Encoder()
@@ -42,6 +50,9 @@ class Front:
         self.stylus_px: tuple[int, int] = (round(L.CENTRE_X), round(L.CENTRE_Y))
         self._parked: tuple[int, int] | None = None
         self.done = False
+        self.quitting = False   # the program should end (its harness target stops)
+        self.discarded = False  # ... and the user chose to drop unsaved work
+        self.asking = False     # the quit question is on the message line
         self.notices: list[str] = []
         self._sent_lut: list[tuple[int, int, int]] = []
 
@@ -60,10 +71,47 @@ class Front:
         """The LUT the screen needs now (the editor reloads its dim entries, §3.1.1)."""
         return self.lut
 
-    def may_close(self) -> bool:
-        """The window's close button: True to close now (the editor refuses once while it
-        holds unsaved edits)."""
+    def unsaved(self) -> bool:
+        """Is there work a quit would lose?"""
+        return False
+
+    def save_work(self) -> bool:
+        """Save it (as F2 does); False if the save failed (the message line says why)."""
         return True
+
+    def say(self, message: str) -> None:
+        """Put ``message`` on the program's message line."""
+
+    def may_close(self) -> bool:
+        """The window's close button: True to close now (asks first over unsaved work)."""
+        return self.request_quit(closing=True)
+
+    def request_quit(self, closing: bool = False) -> bool:
+        """Esc or close: quit now if nothing is unsaved, else ask (see the class)."""
+        if self.asking and closing:
+            self.discarded = True
+        elif self.unsaved():
+            self.asking = True
+            self.say(QUIT_QUESTION)
+            return False
+        self.asking = False
+        self.quitting = True
+        return True
+
+    def _answer(self, key: str) -> None:
+        k = key.lower()
+        if k == "y":
+            self.asking = False
+            if self.save_work():
+                self.quitting = True
+        elif k == "n":
+            self.asking = False
+            self.discarded = self.quitting = True
+        elif k == "escape":
+            self.asking = False
+            self.say("")
+        else:
+            self.say(QUIT_QUESTION)
 
     # -- driving ---------------------------------------------------------------------------
     def start(self) -> bytes:
@@ -81,7 +129,12 @@ class Front:
 
     def keys(self, data: bytes) -> None:
         for k in bytes_to_keys(data):
-            self.on_key(k)
+            if self.quitting:
+                return
+            if self.asking:
+                self._answer(k)
+            else:
+                self.on_key(k)
 
     def update(self) -> bytes:
         out = self._lut_changes() + self.painter.update(self.prims())

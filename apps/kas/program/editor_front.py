@@ -40,7 +40,16 @@ class EditorFront(Front):
         self.editor.feed(Pointer(x, y, down))
 
     def on_key(self, key: str) -> None:
+        if key.lower() == "escape" and self.editor.pending is None:
+            self.request_quit()  # Esc cancels a command first; with none it quits
+            return
         self.editor.feed(Key(key))
 
-    def may_close(self) -> bool:
-        return self.editor.request_quit()
+    def unsaved(self) -> bool:
+        return self.editor.dirty
+
+    def save_work(self) -> bool:
+        return self.editor.save()
+
+    def say(self, message: str) -> None:
+        self.editor.message = message

@@ -32,6 +32,7 @@ class PathFront(Front):
         super().__init__(background)
         self.model = model
         self.on_save = on_save
+        self._saved: tuple = ((), ())  # the path and ticks last saved
 
     def prims(self) -> list[Prim]:
         out = field_marks()
@@ -64,15 +65,32 @@ class PathFront(Front):
 
     def on_key(self, key: str) -> None:
         if key == "f2":
-            path = self.model.sample_path()
-            if path is None:
-                self.model.message = "draw the path first"
-            elif self.on_save is not None:
-                try:
-                    self.on_save(path, self.model.timing())
-                except OSError as exc:  # keep the path on the screen: it can be saved again
-                    self.model.message = f"NOT saved: {exc.strerror or exc}"
-                else:
-                    self.model.message = "saved"
-            return
-        self.model.feed(Key(key))
+            self.save_work()
+        elif key.lower() == "escape":
+            self.request_quit()
+        else:
+            self.model.feed(Key(key))
+
+    def _state(self) -> tuple:
+        return tuple(self.model.path), tuple(self.model.ticks)
+
+    def unsaved(self) -> bool:
+        return bool(self.model.path) and self._state() != self._saved
+
+    def save_work(self) -> bool:
+        path = self.model.sample_path()
+        if path is None:
+            self.model.message = "draw the path first"
+            return False
+        if self.on_save is not None:
+            try:
+                self.on_save(path, self.model.timing())
+            except OSError as exc:  # keep the path on the screen: it can be saved again
+                self.model.message = f"NOT saved: {exc.strerror or exc}"
+                return False
+            self.model.message = "saved"
+        self._saved = self._state()
+        return True
+
+    def say(self, message: str) -> None:
+        self.model.message = message

@@ -22,9 +22,14 @@ def _convert(args: argparse.Namespace) -> int:
     from apps.ca.patterns import PatternError, read_pattern, write_pattern
 
     try:
-        write_pattern(args.dest, read_pattern(library.pattern_path(args.source)))
+        pattern = read_pattern(library.pattern_path(args.source))
+        write_pattern(args.dest, pattern)
     except (FileNotFoundError, PatternError, ValueError) as exc:
         print(f"camlab88 ca convert: {exc}", file=sys.stderr)
+        return 2
+    except OSError as exc:  # the destination: no directory there, read-only, disk full
+        print(f"camlab88 ca convert: cannot write {args.dest}: {exc.strerror or exc}",
+              file=sys.stderr)
         return 2
     print(f"wrote {args.dest}")
     return 0

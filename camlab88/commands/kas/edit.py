@@ -3,13 +3,14 @@
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
 
 from camlab88.commands.kas import front_options
 from camlab88.runopts import fail
 
 COMMAND = "camlab88 kas edit"
-KEYS = "F2 saves; Esc/close quits (asks if unsaved); the mouse is the stylus"
+KEYS = "F2 saves; Esc/close quits (asks if unsaved: y saves, n discards, Esc stays)"
 
 
 def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
@@ -55,12 +56,38 @@ def edit(args: argparse.Namespace) -> int:
 
         front = EditorFront(Editor(start, over, args.seed), args.background, save)
         session = _run(front, args, prepared)
+    except KeyboardInterrupt:
+        return _interrupted(locals().get("front"), target, preview)
     except (OSError, ValueError) as exc:
         return fail(COMMAND, exc)
-    _report(front.editor, session, target, saved, preview)
+    _report(front.editor, session, target, saved, preview, front.discarded)
     if failed and front.editor.dirty:  # the last edits are lost: say why, exit non-zero
         return fail(COMMAND, f"{target}: NOT saved: {failed[-1].strerror or failed[-1]}", 1)
     return 0
+
+
+def recovery_file(target: Path) -> Path:
+    """Where Ctrl-C keeps unsaved edits: beside FILE, never over it."""
+    return target.with_name(f"{target.stem}.recovered{target.suffix or '.kas'}")
+
+
+def _interrupted(front, target: Path, preview: bool) -> int:  # noqa: ANN001
+    """Ctrl-C: unsaved edits go to a recovery file, named; FILE keeps its last save."""
+    from apps.kas import files
+
+    if front is None or preview or not front.editor.dirty:
+        print(f"{COMMAND}: interrupted; nothing unsaved was lost", file=sys.stderr)
+        return 130
+    rescue = recovery_file(target)
+    try:
+        files.save_keyframe(rescue, front.editor.drawing)
+    except OSError as exc:
+        print(f"{COMMAND}: interrupted; the unsaved edits are LOST (could not write {rescue}: "
+              f"{exc.strerror or exc})", file=sys.stderr)
+        return 130
+    print(f"{COMMAND}: interrupted; the unsaved edits were saved to {rescue} ({target} has "
+          "the last F2 save)", file=sys.stderr)
+    return 130
 
 
 def _create(target: Path, empty) -> None:  # noqa: ANN001
@@ -78,12 +105,16 @@ def _create(target: Path, empty) -> None:  # noqa: ANN001
 def _run(front, args: argparse.Namespace, prepared):  # noqa: ANN001, ANN202
     from camlab88.commands.kas import run_front
 
-    return run_front(front, args, COMMAND, KEYS, prepared)
+    keys = KEYS + ("; the tablet is the stylus" if args.tablet else "; the mouse is the stylus")
+    return run_front(front, args, COMMAND, keys, prepared)
 
 
-def _report(ed, session, target: Path, saved: list[int], preview: bool) -> None:  # noqa: ANN001
+def _report(ed, session, target: Path, saved: list[int], preview: bool,  # noqa: ANN001
+            discarded: bool = False) -> None:
     if preview:
         state = "screenshot run: nothing saved"
+    elif discarded and ed.dirty:
+        state = "NOT saved: quit without saving the last edits"
     elif not saved:
         state = "NOT saved (F2 saves)" if ed.dirty else "nothing to save"
     elif ed.dirty:

@@ -13,8 +13,11 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
                         "and timings", description="Lists the user library ($CAMLAB88_KAS_"
                         "LIBRARY, default ~/.local/share/camlab88/kas) and the shipped one. "
                         "--save FILE NAME checks FILE and copies it into the user library; "
-                        "library names can then be given wherever a file is asked for.")
+                        "library names can then be given wherever a file is asked for. An "
+                        "entry of that NAME is replaced only with --force.")
     p.add_argument("--save", nargs=2, metavar=("FILE", "NAME"))
+    p.add_argument("--force", action="store_true",
+                   help="with --save: replace an existing entry of that NAME")
     p.set_defaults(handler=_library)
 
 
@@ -22,15 +25,16 @@ def _library(args: argparse.Namespace) -> int:
     from apps.kas import library
 
     if args.save:
-        return _save(*args.save)
+        return _save(*args.save, force=args.force)
     print(f"user library: {library.user_dir()}")
     for name, kind, where in library.entries():
         print(f"{name:28} {kind:9} {where}")
     return 0
 
 
-def _save(src: str, name: str) -> int:
-    """``--save FILE NAME``: FILE checked, then copied into the user library as NAME."""
+def _save(src: str, name: str, force: bool = False) -> int:
+    """``--save FILE NAME``: FILE checked, then copied into the user library as NAME (an
+    existing NAME is kept unless ``force``)."""
     from apps.kas import library
     from apps.kas.program.file_kind import kind_of
     from protocols.atomicfile import write_atomic
@@ -42,6 +46,9 @@ def _save(src: str, name: str) -> int:
         text = Path(src).read_text(encoding="utf-8")
         kind = kind_of(text, src)
         dest = library.user_file(name)
+        if dest.exists() and not force:
+            raise ValueError(f"{name} is already in your library ({dest}); --force replaces "
+                             "it, or choose another NAME")
         write_atomic(dest, text.encode("utf-8"))
     except (OSError, ValueError, UnicodeDecodeError) as exc:
         return fail("camlab88 kas library", exc)

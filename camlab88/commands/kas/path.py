@@ -9,7 +9,8 @@ from camlab88.commands.kas import front_options
 from camlab88.runopts import fail
 
 COMMAND = "camlab88 kas path"
-KEYS = "draw the path with the stylus (mouse); t then touches place ticks; F2 saves; Esc quits"
+KEYS = ("draw the path with the stylus (mouse); t then touches place ticks; F2 saves; "
+        "Esc/close quits (asks if unsaved: y saves, n discards, Esc stays)")
 
 
 def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
@@ -43,7 +44,11 @@ def path(args: argparse.Namespace) -> int:
         model = PathEditor(files.load_drawing_or_frame(library.resolve(args.first)),
                            files.load_drawing_or_frame(library.resolve(args.second)), prev)
         save = _saver(args, out, ticks)
-        run_front(PathFront(model, args.background, save), args, COMMAND, KEYS)
+        front = PathFront(model, args.background, save)
+        try:
+            run_front(front, args, COMMAND, KEYS)
+        except KeyboardInterrupt:
+            return _interrupted(front, out)
         sample = model.sample_path()
         if args.script is not None:
             if sample is None:
@@ -56,6 +61,28 @@ def path(args: argparse.Namespace) -> int:
             f", {ticks}" if model.ticks else "")
         print(f"kas path: {len(sample.points)} path points, {len(model.ticks)} ticks{wrote}")
     return 0
+
+
+def _interrupted(front, out: Path) -> int:  # noqa: ANN001
+    """Ctrl-C: an unsaved path goes to a recovery file, named; --out keeps its last save."""
+    import sys
+
+    from apps.kas import files
+
+    sample = front.model.sample_path()
+    if not front.unsaved() or sample is None:
+        print(f"{COMMAND}: interrupted; nothing unsaved was lost", file=sys.stderr)
+        return 130
+    rescue = out.with_name(f"{out.stem}.recovered{out.suffix or '.kas'}")
+    try:
+        files.save_path(rescue, sample)
+    except OSError as exc:
+        print(f"{COMMAND}: interrupted; the unsaved path is LOST (could not write {rescue}: "
+              f"{exc.strerror or exc})", file=sys.stderr)
+        return 130
+    print(f"{COMMAND}: interrupted; the unsaved path ({len(front.model.ticks)} ticks not kept) "
+          f"was saved to {rescue}", file=sys.stderr)
+    return 130
 
 
 def _previous(args: argparse.Namespace):  # noqa: ANN202

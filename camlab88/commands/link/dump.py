@@ -28,7 +28,7 @@ def dump(args: argparse.Namespace) -> int:
 
     if _is_session_recording(args.recording):
         print(f"error: {args.recording} {SESSION_NOTE}", file=sys.stderr)
-        return 1
+        return 2
     if args.decode:
         return _decode(args)
     return dump_recording(args.recording)

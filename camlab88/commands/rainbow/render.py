@@ -51,5 +51,5 @@ def _write(args: argparse.Namespace, frame, text: str | None) -> int:  # noqa: A
             write_atomic(args.bands, text.encode())
             print(f"wrote {args.bands}")
     except OSError as exc:
-        return fail(COMMAND, exc, 1)
+        return fail(COMMAND, exc)  # an output that cannot be written: 2, as everywhere
     return 0

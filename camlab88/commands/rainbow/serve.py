@@ -53,7 +53,7 @@ def serve(args: argparse.Namespace) -> int:
     try:
         sock = listen(args.port)
     except OSError as exc:
-        return fail(COMMAND, f"port {args.port}: {exc.strerror}", 1)
+        return fail(COMMAND, f"port {args.port}: {exc.strerror}")  # cannot start: 2
     print(f"{COMMAND}: listening on 127.0.0.1:{sock.getsockname()[1]}", flush=True)
     executor = Executor(device, _on_frame(window, device))
     try:

@@ -10,7 +10,7 @@ HELP = "graphics tablets: real (HID/serial) and emulated"
 ACTIONS = ("list", "monitor", "calibrate", "emulate")
 SOURCE_HELP = (
     "hid:VID:PID | serial:PORT?protocol=P[&baud=N] | URL?protocol=P (loop://, socket://...) | "
-    "emulated:P[?drive=demo]; P = wacom4, summa-mm, bitpad1, bitpad2, calcomp"
+    "emulated:P[?drive=demo]; P = wacom4, summa-mm, bitpad1, bitpad2, calcomp, summa-flair"
 )
 __all__ = ["ACTIONS", "SOURCE_HELP", "register"]
 
