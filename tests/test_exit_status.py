@@ -68,6 +68,7 @@ MISSING: dict[str, list[str] | str] = {
     "ca program": ["--headless", "--pattern", M],
     "ca library": "no input file",
     "replay": [M],
+    "figures": "its argument is a figure number (an unknown one: 2, tests/test_figures.py)",
 }
 
 # commands that write a file: an argv whose output path cannot be written ({BAD} is a path

@@ -38,5 +38,5 @@ def test_the_kas_block_runs_in_order(tmp_path: Path, monkeypatch: pytest.MonkeyP
         rc = main(argv[1:])
         out, err = capsys.readouterr()
         assert rc == 0, f"{shlex.join(argv)}\n{out}\n{err}"
-    assert (tmp_path / "library" / "my_arc.kas").is_file()
+    assert (tmp_path / "library" / "walk_arc.kas").is_file()
     assert (tmp_path / "key.kas").is_file()  # what the next block's `kas edit key.kas` opens
