@@ -17,7 +17,8 @@ from protocols.session import read
 ROOT = Path(__file__).resolve().parents[1]
 SHIPPED = sorted(FIGURES_DIR.glob("fig-*.session"))
 ALLOWED = {"--headless", "--events", "--record", "--pattern", "--rules", "--script",
-           "--background", "--ops", "--baud", "--seed"}
+           "--background", "--ops", "--baud", "--seed",
+           "--out", "--no-library"}  # kas path's --out: a replay writes it to its scratch
 
 
 def _cli(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:

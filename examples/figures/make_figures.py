@@ -308,14 +308,44 @@ def _pink_shot() -> dict[str, bytes]:
         return {"pink_shot.cp": cp.read_bytes(), "example.views": text.encode()}
 
 
+def _pair() -> dict[str, bytes]:
+    """Figure 3.6's keyframes: a flag (pole and pennant) on the right, and the same flag
+    moved up and left with its pennant turned to face the other way, so each pair of
+    corresponding points is a different distance and direction apart."""
+    from apps.kas import files
+    from apps.kas.model import Chain, Drawing
+
+    def flag(x: float, y: float, s: float) -> Drawing:
+        return Drawing([Chain.from_points([(x, y), (x, y + 2.0)], 1),
+                        Chain.from_points([(x, y + 2.0), (x + 1.2 * s, y + 1.6),
+                                           (x, y + 1.2)], 2)])
+
+    return {"flag_a.kas": files.keyframe_text(flag(2.5, -3.0, 1.0)).encode(),
+            "flag_b.kas": files.keyframe_text(flag(-2.5, 0.5, -1.0)).encode()}
+
+
+def fig_3_6() -> str:
+    return ("# Figure 3.6: the in-betweener's set-up: both keyframes superimposed (the flag,\n"
+            "# then moved with its pennant turned), one sample path drawn in one stroke from the\n"
+            "# foot of the pole to its new place (an arch), then t and five tick marks. The one\n"
+            "# path is stretched and reflected to fit between each pair of points.\n"
+            "down 2.5 -3\ndown 2.2 -1.6\ndown 1.4 -0.5\ndown 0.3 0.3\ndown -1 0.7\n"
+            "down -2 0.7\ndown -2.5 0.5\nup -2.5 0.5\nkey t\n"
+            "down 2.3 -1.9\nup 2.3 -1.9\ndown 1.6 -0.7\nup 1.6 -0.7\ndown 0.3 0.3\n"
+            "up 0.3 0.3\ndown -1 0.7\nup -1 0.7\ndown -2 0.7\nup -2 0.7\n")
+
+
 KAS = ["kas", "edit", "figure.kas", "--headless"]
 CA = ["ca", "program", "--headless"]
 SNOOKER = ["snooker", "play", "--headless"]
 PAINT = ["kas", "paint", "face.kas", "--headless"]
+PATH = ["kas", "path", "flag_a.kas", "flag_b.kas", "--out", "flag_path.kas", "--no-library",
+        "--headless"]
 VISUALISE = ["snooker", "visualise", "pink_shot.cp", "example.views", "--headless"]
 INPUTS: dict[str, Callable[[], dict[str, bytes]]] = {
-    "3.7": _face_sequence, "3.8": _face_sequence, "6.7": _pink_shot}
+    "3.6": _pair, "3.7": _face_sequence, "3.8": _face_sequence, "6.7": _pink_shot}
 FIGURES: dict[str, tuple[list[str], Callable[[], str] | None]] = {
+    "3.6": (PATH, fig_3_6),
     "3.7": (PAINT, fig_3_7),
     "3.8": (PAINT, fig_3_8),
     "6.7": (VISUALISE, None),
