@@ -100,6 +100,11 @@ class ReplayTarget:
     def time(self) -> Fraction:
         return Fraction(self.line.clock.exact)
 
+    def status(self) -> str:
+        """The window's title bar: the frame painted, the line time, the keys."""
+        return (f"frame {self.n} of {len(self.program.seq.frames)}, "
+                f"line time {float(self.time()):.1f} s | {self.keys}")
+
 
 def _replay(seq: Any, ops: Any, args: argparse.Namespace) -> int:
     from apps.kas.paint.program import PaintProgram
@@ -251,4 +256,10 @@ class PaintTarget:
 
     def time(self) -> Fraction:
         return self.clock.exact
+
+    def status(self) -> str:
+        """The window's title bar: the frame painted on, the line time, the keys."""
+        s = self.session
+        return (f"frame {s.n} of {len(s.seq.frames)}, line time {float(self.time()):.1f} s"
+                f" | {self.keys}")
 
