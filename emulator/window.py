@@ -73,6 +73,7 @@ class Window:
         window_size = (self.size[0] * self.scale, self.size[1] * self.scale)
         self.surface = pygame.display.set_mode(window_size)
         pygame.display.set_caption(title)
+        self.caption = title
         self._last_tick: float | None = None
         self.closed = False
 
@@ -88,6 +89,12 @@ class Window:
             image = pg.transform.scale(image, self.surface.get_size())  # nearest neighbour
         self.surface.blit(image, (0, 0))
         pg.display.flip()
+
+    def set_caption(self, text: str) -> None:
+        """The window's title bar (set only when it changes)."""
+        if text != self.caption:
+            self._pg.display.set_caption(text)
+            self.caption = text
 
     def pixels(self) -> np.ndarray:
         """What the window shows now, as an (H, W, 3) uint8 array at window resolution."""

@@ -39,7 +39,8 @@ class Target(Protocol):
     methods the harness uses when present: ``may_close() -> bool`` (a window close is
     refused while e.g. unsaved work is asked about), ``wire() -> list[tuple[str, bytes]]``
     (the wire traffic since the last call, for recordings), ``put_wire(data)`` (replayed
-    outside input on the wire) and ``finish()``.
+    outside input on the wire), ``finish()`` and ``status() -> str`` (the keys, frame and
+    time, shown after ``title`` in the window's title bar).
     """
 
     title: str
@@ -172,6 +173,9 @@ class Harness:
         self._next_show = self.target.time() + Fraction(1) / Fraction(self.target.fps)
         if self.window is not None:
             self.window.show(frame)
+            status = getattr(self.target, "status", None)
+            if status is not None:  # the keys, frame and time in the title bar
+                self.window.set_caption(f"{self.target.title} | {status()}")
         for p in self.plugins:
             p.on_frame(self, frame)
 

@@ -27,13 +27,16 @@ class RainbowTarget:
     size = (768, 576)
 
     def __init__(self, session: Any, step: Callable[[], bool], title: str, keys: str,
-                 script: Player | None = None, end_with_script: bool = True) -> None:
+                 script: Player | None = None, end_with_script: bool = True,
+                 status: Callable[[], str] | None = None) -> None:
         self.session = session
         self.step = step
         self.title = title
         self.keys = keys
         self.script = script
         self.end_with_script = end_with_script
+        if status is not None:  # the harness's optional title-bar status
+            self.status = status
         self.host = RainbowHostInput()
         self._wire_at = 0
         self.tablet: Any = None  # a tablet source the command polls in its step

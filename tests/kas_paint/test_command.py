@@ -102,3 +102,19 @@ def test_readme_commands_as_printed(tmp_path, capsys, monkeypatch) -> None:  # n
                  "walk.gif", "--headless"]) == 0
     assert sorted(p.name for p in (tmp_path / "out").iterdir())[::19] == [
         "frame_00001.png", "frame_00020.png"]
+
+
+def test_headless_replay_says_it_painted_flat_out_not_at_line_speed(
+        tmp_path, capsys, monkeypatch) -> None:  # noqa: ANN001
+    seq_path, ops = tmp_path / "w.kas", tmp_path / "w.ops"
+    files.save_sequence(seq_path, walk(3))
+    ops.write_text("KAS paint 1\npalette 1\ncolour 0 0 0 0\ngap 0\npainted 1\nops 0\nend\n")
+    for var in ("DISPLAY", "WAYLAND_DISPLAY", "SDL_VIDEODRIVER"):
+        monkeypatch.delenv(var, raising=False)
+    monkeypatch.setattr("sys.platform", "linux")
+    assert main(["kas", "paint", str(seq_path), "--ops", str(ops), "--replay"]) == 0
+    out, err = capsys.readouterr()
+    assert "running headless (painting every frame flat out, not at the line's speed" in err
+    line = next(s for s in out.splitlines() if "frames painted" in s)
+    assert "s of line time at 9600 baud; headless: painted in " in line
+    assert line.endswith("s, flat out, not at the line's speed")

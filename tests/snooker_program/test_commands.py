@@ -82,3 +82,33 @@ def test_demo_act_replays_a_break():
     frames = [f[300, 600].copy() for f in act.play()]
     assert len(frames) == 200  # 4 s: 100 time frames, 2 display frames each
     assert len({tuple(f) for f in frames}) > 1  # something moved
+
+
+def test_replay_without_a_display_or_output_refuses_at_once_with_the_output_flags(
+        tmp_path, capsys, monkeypatch):
+    from camlab88.cli import entry
+
+    cp = tmp_path / "b.cp"
+    assert main(["snooker", "simulate", "--break", "6", "--out", str(cp)]) == 0
+    capsys.readouterr()
+    for var in ("DISPLAY", "WAYLAND_DISPLAY", "SDL_VIDEODRIVER"):
+        monkeypatch.delenv(var, raising=False)
+    monkeypatch.setattr("sys.platform", "linux")
+    played = []
+    monkeypatch.setattr("camlab88.commands.snooker.replay._run", lambda *a: played.append(a))
+    assert entry(["snooker", "replay", str(cp)]) == 2
+    out, err = capsys.readouterr()
+    assert played == [] and out == ""
+    assert "no display for a window; give --frames DIR or --screenshot PNG" in err
+
+
+def test_replay_headless_without_output_says_nothing_was_written_and_how_to(tmp_path, capsys):
+    cp = tmp_path / "b.cp"
+    assert main(["snooker", "simulate", "--break", "6", "--out", str(cp)]) == 0
+    assert main(["snooker", "replay", str(cp), "--headless", "--last", "4"]) == 0
+    out = capsys.readouterr().out
+    assert "nothing was shown or written; give --frames DIR or --screenshot PNG" in out
+    assert main(["snooker", "replay", str(cp), "--headless", "--last", "4",
+                 "--frames", str(tmp_path / "f")]) == 0
+    assert "nothing was" not in capsys.readouterr().out
+    assert sorted(p.name for p in (tmp_path / "f").iterdir())[:1] == ["frame_00000.png"]

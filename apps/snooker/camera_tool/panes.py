@@ -7,7 +7,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from apps.snooker.camera.errors import CclError
-from apps.snooker.camera_tool import layout
+from apps.snooker.camera_tool import fit, layout
 from apps.snooker.camera_tool.editor import TextBuffer
 from protocols.rainbow.client import SCREEN, RainbowClient
 
@@ -33,11 +33,12 @@ class ScriptPane:
     def __init__(self, client: RainbowClient) -> None:
         self.client = client
         self.pad = _pad(client, layout.SCRIPT, 2, SCRIPT_PAGE, SCRIPT_COLOURS)
-        self.top = 0
+        self.top = self.left = 0  # the first line and column shown
 
     def draw(self, buf: TextBuffer, errors: Sequence[CclError], status: str) -> None:
         c, rows = self.client, layout.SCRIPT_ROWS
         self.top = min(max(self.top, buf.line - rows + 1), buf.line)
+        self.left = fit.scroll_left(self.left, buf.col, layout.SCRIPT_COLS)
         c.clear(self.pad, 0)
         bad = {e.line - 1 for e in errors}
         cw, ch = layout.CHAR_W, layout.CHAR_H
@@ -47,18 +48,18 @@ class ScriptPane:
                 break
             if n in bad:
                 c.rect(self.pad, 0, row * ch, layout.SCRIPT[2], ch, 2)
-            text = buf.lines[n][: layout.SCRIPT_COLS].expandtabs(1)
+            text = fit.window(buf.lines[n].expandtabs(1), self.left, layout.SCRIPT_COLS)
             if text.strip():
                 c.text(self.pad, 3, row * ch, text, 1)
         cy = (buf.line - self.top) * ch
-        c.rect(self.pad, 2 + min(buf.col, layout.SCRIPT_COLS) * cw, cy, 1, ch, 3)
-        c.text(self.pad, 3, rows * ch, status[: layout.SCRIPT_COLS], 3)
+        c.rect(self.pad, 2 + (buf.col - self.left) * cw, cy, 1, ch, 3)
+        c.text(self.pad, 3, rows * ch, fit.elide(status, layout.SCRIPT_COLS), 3)
 
     def cell_at(self, x: int, y: int) -> tuple[int, int]:
         """Screen point -> (line, column) of the script."""
         sx, sy = x - layout.SCRIPT[0], y - layout.SCRIPT[1]
-        return self.top + sy // layout.CHAR_H, max(0, (sx - 3 + layout.CHAR_W // 2)
-                                                   // layout.CHAR_W)
+        return self.top + sy // layout.CHAR_H, self.left + max(
+            0, (sx - 3 + layout.CHAR_W // 2) // layout.CHAR_W)
 
 
 class InfoPane:
@@ -75,9 +76,10 @@ class InfoPane:
         self.shown = key
         c = self.client
         c.clear(self.pad, 0)
-        for row, (text, value) in enumerate(lines[: layout.INFO[3] // layout.CHAR_H]):
+        rows = fit.wrap_rows(lines, layout.INFO_COLS - 1, layout.INFO[3] // layout.CHAR_H)
+        for row, (text, value) in enumerate(rows):
             if text:
-                c.text(self.pad, 2, row * layout.CHAR_H, text[: layout.INFO_COLS - 1], value)
+                c.text(self.pad, 2, row * layout.CHAR_H, text, value)
 
 
 class Timeline:

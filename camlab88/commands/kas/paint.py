@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import time
 from dataclasses import replace
 from fractions import Fraction
 from pathlib import Path
@@ -15,6 +16,7 @@ KEYS = ("click: select chain / pick swatch; f fill, l colour lines, r region, t 
         "pointer, c clear; r/g/b (+shift) RGB steps; w painting, m mixing, p preview; , . "
         "frames; a auto-paint (saved at the end)")
 TICK = Fraction(1, 25)
+FLAT_OUT = "flat out, not at the line's speed"  # headless time is virtual: nothing paces it
 
 
 def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
@@ -98,6 +100,11 @@ class ReplayTarget:
     def time(self) -> Fraction:
         return Fraction(self.line.clock.exact)
 
+    def status(self) -> str:
+        """The window's title bar: the frame painted, the line time, the keys."""
+        return (f"frame {self.n} of {len(self.program.seq.frames)}, "
+                f"line time {float(self.time()):.1f} s | {self.keys}")
+
 
 def _replay(seq: Any, ops: Any, args: argparse.Namespace) -> int:
     from apps.kas.paint.program import PaintProgram
@@ -105,11 +112,14 @@ def _replay(seq: Any, ops: Any, args: argparse.Namespace) -> int:
     from emulator.harness import run
     from emulator.sigma import Terminal
 
-    opts = run_options(args, COMMAND, "painting every frame", argv=getattr(args, "_argv", None))
+    opts = run_options(args, COMMAND, f"painting every frame {FLAT_OUT}; a window plays at it",
+                       argv=getattr(args, "_argv", None))
     target = ReplayTarget(PaintProgram(seq, ops), Terminal("t5688"), args.baud,
                           keep=bool(args.gif or args.mp4 or args.frames))
     # --frames here means the painted frames, numbered from 1 (not every harness tick)
+    started = time.monotonic()
     run(target, replace(opts, frames=None))
+    wall = time.monotonic() - started
     if args.frames:
         write_frames(target.shown, args.frames)
     for movie in (args.gif, args.mp4):
@@ -119,7 +129,8 @@ def _replay(seq: Any, ops: Any, args: argparse.Namespace) -> int:
         print(f"wrote {target.n} frames to {args.frames}/frame_00001.png .. "
               f"frame_{target.n:05d}.png")
     print(f"{target.n} frames painted: {target.chars} characters, "
-          f"{float(target.time()):.1f} s of line time at {args.baud} baud")
+          f"{float(target.time()):.1f} s of line time at {args.baud} baud"
+          + (f"; headless: painted in {wall:.1f} s, {FLAT_OUT}" if opts.headless else ""))
     for f in target.failures:
         print(f"  {f}")
     if args.save is not None:
@@ -245,4 +256,10 @@ class PaintTarget:
 
     def time(self) -> Fraction:
         return self.clock.exact
+
+    def status(self) -> str:
+        """The window's title bar: the frame painted on, the line time, the keys."""
+        s = self.session
+        return (f"frame {s.n} of {len(s.seq.frames)}, line time {float(self.time()):.1f} s"
+                f" | {self.keys}")
 

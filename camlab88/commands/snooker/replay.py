@@ -7,6 +7,7 @@ import argparse
 from camlab88.runopts import add_run_options, fail, run_options
 
 COMMAND = "camlab88 snooker replay"
+OUTPUT_HINT = "give --frames DIR or --screenshot PNG to write what it plays"
 
 
 def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
@@ -30,7 +31,9 @@ def replay(args: argparse.Namespace) -> int:
         cp = cp.subset(args.first, last)
     except (CheckpointError, ValueError) as exc:
         return fail(COMMAND, exc)
-    opts = run_options(args, COMMAND, "playing the checkpoint to its end",
+    writes = args.frames or args.screenshot or args.record
+    opts = run_options(args, COMMAND, "playing the checkpoint to its end" if writes else None,
+                       f"{OUTPUT_HINT} (or --headless to only count the frames)",
                        argv=getattr(args, "_argv", None))
     table = Table()
     pos = [to_metres(p) for p in cp.positions]
@@ -38,6 +41,8 @@ def replay(args: argparse.Namespace) -> int:
     h = _run(pos, on, opts)
     print(f"{COMMAND}: {min(h.ticks, len(pos))} frames at 25 frames/s "
           f"({h.target.session.device.frame_count} display frames, {len(pos) / 25:.2f} s)")
+    if opts.headless and not writes:  # headless play leaves nothing to see: say how
+        print(f"{COMMAND}: headless, so nothing was shown or written; {OUTPUT_HINT}")
     return 0
 
 

@@ -51,6 +51,12 @@ def visualise(args: argparse.Namespace) -> int:
     return 0
 
 
+def status(vis, target) -> str:  # noqa: ANN001
+    """The window's title bar: the checkpoint frame shown, the virtual time, the keys."""
+    return (f"frame {vis.frame} ({vis.index + 1} of {len(vis.views)}), "
+            f"t = {float(target.time()):.2f} s | {KEYS}")
+
+
 def _run(shot, views, opts, frames_dir):  # noqa: ANN001, ANN202
     from apps.snooker.visualiser.program import Visualiser
     from emulator.harness import run
@@ -80,6 +86,6 @@ def _run(shot, views, opts, frames_dir):  # noqa: ANN001, ANN202
                 self.written = vis.drawn
                 self.count += 1  # named in the closing line
 
-    target = RainbowTarget(rb, step, COMMAND, KEYS)
+    target = RainbowTarget(rb, step, COMMAND, KEYS, status=lambda: status(vis, target))
     frames = Frames()
     return run(target, opts, [frames]), vis, frames.count
