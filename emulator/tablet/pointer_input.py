@@ -128,9 +128,8 @@ def _replay_layer(tape, area, notify):  # noqa: ANN001, ANN202
     from protocols.tablets.sources import SourceLost
     from protocols.tablets.tape import TapeSource, decoder_for
 
-    cal = tape.first("calibration")
-    calibration = None if cal is None else Calibration(
-        cal["device"], tuple(cal["top_left"]), tuple(cal["bottom_right"]))
+    cal = tape.calibration()
+    calibration = None if cal is None else Calibration(*cal)
 
     def reopen():  # noqa: ANN202
         opened = tape.opens_now()

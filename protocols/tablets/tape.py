@@ -145,10 +145,31 @@ class Tape:
         entries: list[list[Any]] = []
         for chunk in chunks:
             try:
-                entries += json.loads(chunk)
+                more = json.loads(chunk)
             except (ValueError, TypeError) as exc:
                 raise TapeError(f"{where}: not JSON: {exc}") from None
+            if not isinstance(more, list):
+                raise TapeError(f"{where}: a record is not a list of entries")
+            entries += more
         return cls(entries, where)
+
+    def calibration(self) -> tuple[str, tuple[int, int], tuple[int, int]] | None:
+        """The recorded calibration (device, top-left, bottom-right), None if there was none;
+        TapeError if the entry is not one."""
+        cal = self.first("calibration")
+        if cal is None:
+            return None
+        try:
+            device, corners = cal["device"], (cal["top_left"], cal["bottom_right"])
+            if not isinstance(device, str) or not all(
+                    isinstance(c, list) and len(c) == 2
+                    and all(isinstance(v, int) and abs(v) < 1 << 31 for v in c)
+                    for c in corners):
+                raise TypeError
+        except (KeyError, TypeError):
+            raise TapeError(f"{self.where}: the calibration entry is not "
+                            "{device, top_left: [x, y], bottom_right: [x, y]}") from None
+        return device, tuple(corners[0]), tuple(corners[1])
 
     def now(self, kind: str) -> list[Any]:
         return [p for k, p in self.by_poll.get(self.poll, []) if k == kind]

@@ -120,3 +120,27 @@ def test_rainbow_run_with_a_hidraw_tablet_records_and_replays_without_it(
     assert kinds[0] == "open" and kinds.count("raw") > 10
     replayed = _camlab88(["replay", "rb.rec", "--check"], tmp_path)
     assert replayed.returncode == 0, replayed.stdout + replayed.stderr
+
+
+@pytest.mark.parametrize("tape", [
+    b'[[0,"calibration",{"device":"emulated:summa-mm"}]]',  # corners missing
+    b'[[0,"calibration",{"device":5,"top_left":[0,0],"bottom_right":[1,1]}]]',
+    b'{"poll":0}',  # a record that is not a list of entries
+    b"not json",
+    b'[[1e400,"raw","00"]]',
+])
+def test_a_damaged_tablet_tape_is_refused_in_one_line(tmp_path: Path, tape: bytes) -> None:
+    """A recording is data: whatever its tablet tape says, the replay ends with a message
+    (exit 1 or 2), never a traceback."""
+    (tmp_path / "s.txt").write_text(SCRIPT)
+    env = {"CAMLAB88_CONFIG_DIR": str(tmp_path / "config")}
+    done = _camlab88(["kas", "edit", "k.kas", "--tablet", "emulated:summa-mm", "--headless",
+                      "--script", "s.txt", "--record", "r.rec"], tmp_path, env)
+    assert done.returncode == 0, done.stderr
+    rec = read(tmp_path / "r.rec")
+    first = next(i for i, w in enumerate(rec.wire) if w[1] == "T")
+    rec.wire[first] = (rec.wire[first][0], "T", tape)
+    write(tmp_path / "damaged.rec", rec)
+    replayed = _camlab88(["replay", "damaged.rec", "--check"], tmp_path, env)
+    said = replayed.stdout + replayed.stderr
+    assert replayed.returncode in (1, 2) and "Traceback" not in said, said
