@@ -24,7 +24,7 @@ from apps.snooker.film.backends import DaskCluster, InProcess, LocalPool  # noqa
 from apps.snooker.film.schedule import render_film  # noqa: E402
 from apps.snooker.film.task import FrameTask, render_png, scene_digest  # noqa: E402
 from apps.snooker.render.scene import Scene  # noqa: E402
-from protocols.atomicfile import write_atomic  # noqa: E402
+from base.atomicfile import write_atomic  # noqa: E402
 
 
 def load() -> str:
@@ -59,7 +59,7 @@ def tasks_for(scene: Scene, size: tuple[int, int]) -> list[FrameTask]:
                               32.0), size[0], size[1]) for f in range(1, n + 1)]
 
 
-def run(backend, scene: Scene, tasks: list[FrameTask]) -> float:  # noqa: ANN001
+def run(backend, scene: Scene, tasks: list[FrameTask]) -> float:
     out = Path(tempfile.mkdtemp(prefix="bench-film-"))
     try:
         t = time.perf_counter()
@@ -99,7 +99,7 @@ def main_process_cost(scene: Scene, task: FrameTask, repeat: int = 20) -> None:
           f"{1 / per:.0f} frames/s   [{load()}]")
 
 
-def round_trip(backend, scene: Scene, repeat: int = 60) -> None:  # noqa: ANN001
+def round_trip(backend, scene: Scene, repeat: int = 60) -> None:
     """A tiny (8x8) frame's wall time per frame through the backend: its fixed overhead."""
     tiny = [FrameTask(1 + k % scene.n_frames, t.view, 8, 8)
             for k, t in enumerate(tasks_for(scene, (8, 8))[:repeat])]

@@ -23,7 +23,7 @@ from apps.kas.superimpose import superimpose
 from emulator.sigma import Terminal
 
 
-def sequence():  # noqa: ANN201
+def sequence():
     k = files.load_keyframe
     walk = inbetween(k(LIBRARY / "walk_a.kas"), k(LIBRARY / "walk_b.kas"),
                      path=files.load_path(LIBRARY / "walk_path.kas"), frames=100)
@@ -32,7 +32,7 @@ def sequence():  # noqa: ANN201
     return superimpose([(walk, 0), (sun, 0)])
 
 
-def operations(seq) -> OpsFile:  # noqa: ANN001
+def operations(seq) -> OpsFile:
     mid = seq.frames[49]
     sun_c = tuple(mid.chains[2].centre())
     ring = tuple(mid.chains[1].centre())
@@ -43,7 +43,7 @@ def operations(seq) -> OpsFile:  # noqa: ANN001
     return OpsFile(ops=ops, painted=50)
 
 
-def run_once(seq, ops) -> tuple[float, float, object]:  # noqa: ANN001
+def run_once(seq, ops) -> tuple[float, float, object]:
     term = Terminal("t5688")
     t, c = time.perf_counter(), time.process_time()
     rep = replay(PaintProgram(seq, ops), Line(term))

@@ -32,7 +32,7 @@ def load() -> str:
     return f"load average {a:.2f} {b:.2f} {c:.2f}"
 
 
-def timed(fn, repeat: int) -> tuple[float, float]:  # noqa: ANN001
+def timed(fn, repeat: int) -> tuple[float, float]:
     times = []
     for _ in range(repeat):
         t = time.perf_counter()

@@ -13,7 +13,7 @@ one cache filled by an uncounted first run. Wall time per run (perf_counter arou
 process) and its CPU time, min / median; the load average is printed before and after,
 because on a shared 2-core machine the figures move with it (docs/perf/startup.md).
 ``--compare`` times each warm command alternately with numba's own cache load (its full
-context refresh, ``CAMLAB88_NUMBA_FULL_REFRESH=1``) and with protocols.kernel_load's lean
+context refresh, ``CAMLAB88_NUMBA_FULL_REFRESH=1``) and with base.kernel_load's lean
 one, so both see the same load. ``--readme`` is a newcomer's first hour: every command of
 README.md's "First ten minutes" (read from the README, as tests/test_readme_walkthrough.py
 does) and the cellular automaton's example runs, in order, in one scratch directory, all

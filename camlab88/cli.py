@@ -49,7 +49,7 @@ def _suggestion(message: str) -> str:
     if m is None:
         return ""
     choices = re.findall(r"'([^']*)'", m[2]) or [c.strip() for c in m[2].split(",")]
-    from protocols.suggest import did_you_mean
+    from base.suggest import did_you_mean
 
     return did_you_mean(m[1], choices)
 

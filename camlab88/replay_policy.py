@@ -155,7 +155,7 @@ def _subparser(parser: argparse.ArgumentParser, key: tuple[str, ...]) -> argpars
     return parser
 
 
-def _parse(cli, argv: list[str]) -> argparse.Namespace:  # noqa: ANN001
+def _parse(cli, argv: list[str]) -> argparse.Namespace:
     """The program's own parser on the command line the replay will run."""
     said = io.StringIO()
     try:

@@ -84,7 +84,7 @@ def _check_writable(command: str, path: Path, doing: str) -> None:
 def check_output(command: str, path: Path, doing: str = "write") -> None:
     """Refuse at the start, not after the work, an output that cannot be written: a
     directory, or a file in a directory that is missing, read-only or not ours. A device
-    or FIFO is written into (protocols.atomicfile), so only it must be writable."""
+    or FIFO is written into (base.atomicfile), so only it must be writable."""
     import os
 
     if path.is_dir():
@@ -97,7 +97,7 @@ def check_output(command: str, path: Path, doing: str = "write") -> None:
     if not parent.is_dir() or not os.access(parent, os.W_OK):
         why = "read-only" if parent.is_dir() else "missing"
         raise SystemExit(f"{command}: cannot {doing} {path}: its directory {parent} is {why}")
-    from protocols.atomicfile import probe
+    from base.atomicfile import probe
 
     try:
         probe(path)  # a full disk shows now, not after the run
@@ -114,7 +114,7 @@ def fail(command: str, message: object, status: int = 2) -> int:
     return status
 
 
-def progress(label: str):  # noqa: ANN201 - a callback (i, n) or None
+def progress(label: str):  # a callback (i, n) or None
     """A text progress bar on a terminal; nothing when stderr is a file or pipe."""
     if not sys.stderr.isatty():
         return None

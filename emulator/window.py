@@ -104,8 +104,8 @@ class Window:
         return np.frombuffer(raw, dtype=np.uint8).reshape(height, width, 3).copy()
 
     def screenshot(self, path: str | os.PathLike[str]) -> Path:
-        """Save the window surface as a PNG, atomically (protocols.png, the one writer)."""
-        from protocols.png import write_png
+        """Save the window surface as a PNG, atomically (base.png, the one writer)."""
+        from base.png import write_png
 
         return write_png(self.pixels(), path)
 

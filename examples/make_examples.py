@@ -23,7 +23,7 @@ import sys
 from collections.abc import Callable
 from pathlib import Path
 
-from protocols.atomicfile import write_atomic
+from base.atomicfile import write_atomic
 from protocols.sigma.drivers import PgplotGoc, RalGks
 from protocols.sigma.encoder import Encoder
 from protocols.sigma.orders import CR, GRAPHICS_FLAG, LF

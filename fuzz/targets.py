@@ -1,7 +1,7 @@
 """One fuzz target per decoder or parser: bytes in, the format's own error or a result out.
 
 Each target feeds the bytes to the same reader the command line uses (through
-``protocols.textinput`` for text formats, as the file readers do). A target passes when the
+``base.textinput`` for text formats, as the file readers do). A target passes when the
 reader returns or raises the format's documented error (a ValueError subclass naming the
 input); any other exception — a traceback for the user — is a finding. docs/reliability.md
 lists what each format promises.
@@ -39,14 +39,14 @@ class Target:
 
 
 def _text(data: bytes) -> str:
-    from protocols.textinput import decode_utf8
+    from base.textinput import decode_utf8
 
     return decode_utf8(data, NAME, bom=True)
 
 
 def _scene(data: bytes) -> object:
+    from base.textinput import loads_json
     from emulator.rainbow.scene import SceneError, build_scene
-    from protocols.textinput import loads_json
 
     return build_scene(loads_json(_text(data), NAME, SceneError), None, NAME)
 
@@ -98,7 +98,7 @@ def _sigma_stream(data: bytes) -> object:
 _TERMINALS: list = []
 
 
-def _terminal():  # noqa: ANN202 - emulator.sigma.Terminal
+def _terminal():  # emulator.sigma.Terminal
     if not _TERMINALS:
         from emulator.sigma import Terminal
 
@@ -122,7 +122,7 @@ def _kas(kind: str) -> Callable[[bytes], object]:
 
 def _snooker_session(data: bytes) -> object:
     from apps.snooker.session import Session, SessionError
-    from protocols.textinput import loads_json
+    from base.textinput import loads_json
 
     return Session.from_json(loads_json(_text(data), NAME, SessionError))
 

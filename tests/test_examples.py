@@ -17,7 +17,7 @@ EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 HAND_WRITTEN = {"README.md", "make_examples.py"}
 
 
-def _maker():  # noqa: ANN202 - the script's module
+def _maker():  # the script's module
     spec = importlib.util.spec_from_file_location("make_examples", EXAMPLES / "make_examples.py")
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)

@@ -33,7 +33,7 @@ def pages(tmp_path_factory: pytest.TempPathFactory) -> tuple[list[np.ndarray], p
     return [np.asarray(Image.open(p).convert("RGB")).astype(int) for p in images], size
 
 
-def test_every_frame_is_a_page_of_the_plot_size(pages) -> None:  # noqa: ANN001
+def test_every_frame_is_a_page_of_the_plot_size(pages) -> None:
     images, size = pages
     assert len(images) == 3
     w, h = size.page
@@ -41,7 +41,7 @@ def test_every_frame_is_a_page_of_the_plot_size(pages) -> None:  # noqa: ANN001
         assert img.shape[:2] == (round(h * DPI), round(w * DPI))
 
 
-def test_registration_crosses_are_drawn_where_the_plot_puts_them(pages) -> None:  # noqa: ANN001
+def test_registration_crosses_are_drawn_where_the_plot_puts_them(pages) -> None:
     images, size = pages
     w, h = size.page
     for img in images:
@@ -55,7 +55,7 @@ def test_registration_crosses_are_drawn_where_the_plot_puts_them(pages) -> None:
         assert not corner.any()  # the page's own corner stays blank paper
 
 
-def test_each_stroke_is_inked_in_its_colour(pages) -> None:  # noqa: ANN001
+def test_each_stroke_is_inked_in_its_colour(pages) -> None:
     images, size = pages
     _, h = size.page
     frames = demo.build().frames[:3]

@@ -14,7 +14,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 GROUP = """
 from numba import njit
-from protocols.kernel_notice import announce_compiles
+from base.kernel_notice import announce_compiles
 
 announce_compiles("toy", 1.0, __name__, completion="toygroup:complete")
 

@@ -10,7 +10,7 @@ import pytest
 
 from apps.ca.library import pattern_path, rules_path
 from apps.kas import library, timing
-from protocols.suggest import did_you_mean
+from base.suggest import did_you_mean
 
 
 def test_kas_names_near_a_misspelling_are_suggested() -> None:

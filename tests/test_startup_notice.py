@@ -1,4 +1,4 @@
-"""protocols.kernel_notice: one line before a cold compile, silence when warm, and Ctrl-C
+"""base.kernel_notice: one line before a cold compile, silence when warm, and Ctrl-C
 during a compile ends the process cleanly (status 130, no traceback)."""
 
 from __future__ import annotations
@@ -10,13 +10,13 @@ import sys
 import textwrap
 from pathlib import Path
 
-from protocols import kernel_notice
+from base import kernel_notice
 
 ROOT = Path(__file__).resolve().parents[1]
 
 KERNEL_MODULE = """
 from numba import njit
-from protocols.kernel_notice import announce_compiles
+from base.kernel_notice import announce_compiles
 
 announce_compiles("toy", 3.4, __name__)
 

@@ -36,7 +36,7 @@ def test_numpy_and_numba_paths_agree(case: tuple[np.ndarray, np.ndarray, np.ndar
         assert a.dtype == b.dtype and np.array_equal(a, b)
 
 
-def test_small_inbetweens_stay_in_numpy(monkeypatch) -> None:  # noqa: ANN001
+def test_small_inbetweens_stay_in_numpy(monkeypatch) -> None:
     small = np.zeros((20, 500, 2))
     monkeypatch.delitem(__import__("sys").modules, "numba", raising=False)
     assert not kernels.use_numba(small)

@@ -34,10 +34,10 @@ Progress = Callable[[int, int], None]
 class Algorithm(Protocol):
     name: str
 
-    def unsupported(self, engine) -> str | None:  # noqa: ANN001 - an Engine
+    def unsupported(self, engine) -> str | None:  # an Engine
         """Why this algorithm cannot step ``engine`` as it is (None: it can)."""
 
-    def advance(self, engine, generations: int,  # noqa: ANN001
+    def advance(self, engine, generations: int,
                 progress: Progress | None = None) -> None:
         """Advance ``engine`` by ``generations``, calling ``progress(done, asked)``."""
 
@@ -47,10 +47,10 @@ class Direct:
 
     name = "direct"
 
-    def unsupported(self, engine) -> str | None:  # noqa: ANN001
+    def unsupported(self, engine) -> str | None:
         return None  # every rule set (stepping without rules raises "no rules loaded")
 
-    def advance(self, engine, generations: int,  # noqa: ANN001
+    def advance(self, engine, generations: int,
                 progress: Progress | None = None) -> None:
         engine.step_direct(generations, progress)
 

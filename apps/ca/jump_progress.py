@@ -17,7 +17,7 @@ class ProgressLine:
     """A ``progress(done, asked)`` callback for Engine.step that writes to ``stream``."""
 
     def __init__(self, stream: TextIO | None = None, start_generation: int = 0,
-                 clock=time.monotonic) -> None:  # noqa: ANN001 - a clock function
+                 clock=time.monotonic) -> None:  # a clock function
         self.stream = stream if stream is not None else sys.stderr
         self.start_generation = start_generation
         self.clock = clock

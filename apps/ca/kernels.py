@@ -20,7 +20,7 @@ import types
 import numpy as np
 from numba import njit
 
-from protocols.kernel_notice import announce_compiles
+from base.kernel_notice import announce_compiles
 
 # one line on stderr when a cold cache compiles (measured ~7 s), and the lean warm load
 announce_compiles("cellular automaton", 7.0, __name__)
@@ -245,7 +245,7 @@ def step_hash(ys, xs, ts, wrap, cy0, cy1, cx0, cx1, start, sdy, sdx, sop, sval, 
 _DENSE_PY: dict[str, object] = {}  # name -> plain function, callees before callers
 
 
-def _dense_kernel(fn):  # noqa: ANN001, ANN202 - registers a plain function for the families
+def _dense_kernel(fn):  # registers a plain function for the families
     _DENSE_PY[fn.__name__] = fn
     return fn
 
@@ -480,14 +480,14 @@ def _family(suffix: str) -> dict[str, object]:
 DENSE_FAMILIES = {np.dtype(np.uint8): _family("u8"), np.dtype(np.uint16): _family("u16")}
 
 
-def dense_step(T, out, etype, edy, edx, eop, evals, lut, acc):  # noqa: ANN001, ANN201
+def dense_step(T, out, etype, edy, edx, eop, evals, lut, acc):
     """The dense fast path, one pass per message entry (see the plain definition above),
     compiled for the workspace dtype ``acc.dtype``; returns the population."""
     return DENSE_FAMILIES[acc.dtype]["_dense_step"](T, out, etype, edy, edx, eop, evals, lut,
                                                    acc)
 
 
-def dense_step_separable(*args):  # noqa: ANN002, ANN201
+def dense_step_separable(*args):
     """The separable dense path (arguments as in the plain definition above), compiled for
     the workspace dtype (``acc``, argument 22); returns the population."""
     return DENSE_FAMILIES[args[21].dtype]["_dense_step_separable"](*args)

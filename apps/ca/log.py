@@ -25,8 +25,8 @@ import numpy as np
 from apps.ca.engine import EDGES, SIDE, Engine, Rect
 from apps.ca.patterns import Pattern, format_rle, parse_rle
 from apps.ca.rules import parse_rules
-from protocols.atomicfile import write_atomic
-from protocols.textinput import parse_int, quote, read_text
+from base.atomicfile import write_atomic
+from base.textinput import parse_int, quote, read_text
 
 LOG_MAGIC = "CAMLAB88-CA-LOG 1"
 CHECKPOINT_MAGIC = "CAMLAB88-CA-CHECKPOINT 1"

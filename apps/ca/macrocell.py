@@ -177,7 +177,7 @@ def _small(tree: _Tree, k: int, memo: dict) -> tuple[np.ndarray, np.ndarray, np.
     return got
 
 
-def _pieces(tree: _Tree, k: int, x: int, y: int, memo: dict, emit) -> None:  # noqa: ANN001
+def _pieces(tree: _Tree, k: int, x: int, y: int, memo: dict, emit) -> None:
     """``emit(xs, ys, ts)`` the cells of node ``k`` placed with its top-left at (x, y), a
     small node at a time."""
     if tree.pop[k] == 0:

@@ -15,8 +15,8 @@ import numpy as np
 
 from apps.ca import macrocell
 from apps.ca.rle_body import decode
-from protocols import atomicfile
-from protocols.textinput import InputError, quote, read_text, where
+from base import atomicfile
+from base.textinput import InputError, quote, read_text, where
 
 NATIVE_MAGIC = "CAMLAB88-CA-PATTERN 1"
 MAX_RLE_STATE = 255

@@ -13,8 +13,8 @@ import numpy as np
 
 from apps.kas.model import AnimSequence, Drawing
 from apps.kas.raster import render
-from protocols.atomicfile import AtomicBatch, atomic_path, write_atomic
-from protocols.png import png_bytes
+from base.atomicfile import AtomicBatch, atomic_path, write_atomic
+from base.png import png_bytes
 
 Progress = Callable[[int, int], None]
 

@@ -16,8 +16,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from apps.kas.model import AnimSequence, Chain, Drawing
-from protocols.atomicfile import write_atomic
-from protocols.textinput import InputError, parse_int, quote, read_text
+from base.atomicfile import write_atomic
+from base.textinput import InputError, parse_int, quote, read_text
 
 VERSION = 1
 KINDS = ("keyframe", "sequence", "path", "timing")

@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from protocols.kernel_notice import announce_compiles
+from base.kernel_notice import announce_compiles
 
 announce_compiles("KAS in-betweener", 1.0, __name__)  # cold compile time, measured
 

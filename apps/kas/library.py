@@ -19,7 +19,7 @@ import os
 import re
 from pathlib import Path
 
-from protocols.suggest import did_you_mean
+from base.suggest import did_you_mean
 
 LIBRARY = Path(__file__).with_name("library")
 ENV = "CAMLAB88_KAS_LIBRARY"

@@ -18,7 +18,7 @@ from apps.kas import pathfit, raster
 from apps.kas.files import SamplePath
 from apps.kas.inbetween import inbetween
 from apps.kas.model import Chain, Drawing
-from protocols.png import write_png
+from base.png import write_png
 
 RECT = [(0, 0), (1.2, 0), (1.2, 0.8), (0, 0.8), (0, 0)]
 PATH = SamplePath([(-5, -3.5), (-4.6, -2.3), (-3.6, -1.3), (-2.2, -1.1), (-1, -1.5)])

@@ -30,8 +30,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from apps.snooker.table import FOOT_M, N_BALLS
-from protocols.atomicfile import write_atomic
-from protocols.textinput import InputError, quote, read_bytes
+from base.atomicfile import write_atomic
+from base.textinput import InputError, quote, read_bytes
 
 UNITS_PER_FOOT = 4096
 UNITS_PER_M = UNITS_PER_FOOT / FOOT_M

@@ -29,7 +29,7 @@ SNOOKER_COMPILE_S = 6.0  # a cold compile of this module's and kernels.py's kern
 try:  # numba is a project dependency, but the model must still work without it
     from numba import njit as _njit
 
-    from protocols.kernel_notice import announce_compiles
+    from base.kernel_notice import announce_compiles
 
     # Cached, so only the first run after install compiles; every kernel here is called with
     # one set of argument types (docs/development.md, "numba's cache").

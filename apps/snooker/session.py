@@ -26,8 +26,8 @@ from apps.snooker.rules import GameState, Shot, infer_game, legal_to_hit, legal_
 from apps.snooker.state import BallState
 from apps.snooker.table import BALL_NAMES, Table
 from apps.snooker.timeline import Cursor, Frame, Timeline, Unit
-from protocols.atomicfile import write_atomic
-from protocols.textinput import quote, read_json
+from base.atomicfile import write_atomic
+from base.textinput import quote, read_json
 
 FORMAT = "camlab88-snooker-session"
 VERSION = 1

@@ -44,7 +44,7 @@ class PtySigma:
                     self._last_input = time.monotonic()
                 self._polls += 1
                 time.sleep(POLL_WAIT)
-        except BaseException as exc:  # noqa: BLE001 - reported by wait_idle and close
+        except BaseException as exc:  # reported by wait_idle and close
             self.error = exc
 
     def wait_idle(self, quiet: float = 0.2, timeout: float = 10.0) -> None:

@@ -66,7 +66,7 @@ class Sigma:
 
     def screenshot(self, path: str | os.PathLike[str]) -> Path:
         """Write the screen as a PNG (atomically); returns the path."""
-        from protocols.png import write_png
+        from base.png import write_png
 
         return write_png(self.screen, path)
 

@@ -21,7 +21,7 @@ A command builds a *target* — an object wiring one program to one emulated dev
   ``--screenshot PNG`` (the screen at the end), ``--record FILE`` (a session recording,
   protocols.session), and under ``camlab88 replay`` the recorded input and hash checking.
 
-All PNGs go through the one writer, :func:`protocols.png.write_png`.  See docs/harness.md.
+All PNGs go through the one writer, :func:`base.png.write_png`.  See docs/harness.md.
 """
 
 from emulator.harness.display import DisplayRefused, choose_headless, display_available

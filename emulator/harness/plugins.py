@@ -11,8 +11,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from base.png import frame_path, write_png
 from emulator.harness.loop import Plugin, RunOptions
-from protocols.png import frame_path, write_png
 
 if TYPE_CHECKING:
     from emulator.harness.loop import Harness

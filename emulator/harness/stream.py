@@ -65,7 +65,7 @@ class PngGifWriter(Plugin):
         self.count = 0
 
     def on_frame(self, harness: Any, frame: np.ndarray) -> None:
-        from protocols.png import write_png
+        from base.png import write_png
 
         write_png(frame, self.out / f"{self.name}_{self.count:04d}.png")
         if self.count % GIF_EVERY == 0:
@@ -86,7 +86,7 @@ def write_gif(frames: list[np.ndarray], path: Path, fps: int) -> None:
     """An animated GIF of every GIF_EVERY-th frame (64 colours), written atomically."""
     from PIL import Image
 
-    from protocols.atomicfile import atomic_output
+    from base.atomicfile import atomic_output
 
     images = [Image.fromarray(f).convert("P", palette=Image.Palette.ADAPTIVE, colors=64)
               for f in frames]

@@ -13,11 +13,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from protocols.lazy_kernels import LazyKernels
+from base.lazy_kernels import LazyKernels
 
 
 def _announce() -> None:
-    from protocols.kernel_notice import announce_compiles
+    from base.kernel_notice import announce_compiles
 
     announce_compiles("Rainbow", 9.0, __name__)  # cold compile time, measured
 

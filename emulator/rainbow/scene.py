@@ -21,11 +21,11 @@ from typing import Any
 
 import numpy as np
 
+from base.textinput import quote, read_json
 from emulator.rainbow.colour import parse_hex
 from emulator.rainbow.device import Rainbow
 from emulator.rainbow.errors import RainbowError
 from emulator.rainbow.graph import SCREEN
-from protocols.textinput import quote, read_json
 
 
 class SceneError(ValueError):

@@ -19,7 +19,7 @@ def scan_points_fast(buf: Any, start: int, state: Any, out: Any, k: int) -> tupl
     if _compiled is None:
         from numba import njit
 
-        from protocols.kernel_load import lean_cache_loads
+        from base.kernel_load import lean_cache_loads
 
         lean_cache_loads()  # this may be the process's first kernel: load it lean (issue 18)
         _compiled = njit(cache=True, nogil=True)(scan_points)

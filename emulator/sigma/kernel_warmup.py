@@ -1,6 +1,6 @@
 """Every Sigma raster kernel called once, with the argument types a terminal uses.
 
-The completion of the "Sigma raster" kernel group (protocols.kernel_notice): after the first
+The completion of the "Sigma raster" kernel group (base.kernel_notice): after the first
 cold compile of any of them, the rest compile too, so a later stream that needs another
 (the T5688's abbreviated polylines and fills after a T5684's vectors) loads it from the
 cache. A short stream through a real terminal rather than direct kernel calls, so the

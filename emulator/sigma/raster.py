@@ -15,11 +15,11 @@ import threading
 
 import numpy as np
 
-from protocols.lazy_kernels import LazyKernels
+from base.lazy_kernels import LazyKernels
 
 
 def _announce() -> None:
-    from protocols.kernel_notice import announce_compiles
+    from base.kernel_notice import announce_compiles
 
     # one line on stderr if the cache is cold; ~2 s is the measured cold compile
     announce_compiles("Sigma raster", 2.0, __name__, "protocols.sigma.abbreviated",
@@ -38,13 +38,13 @@ HALF = 1 << (FRACTION_BITS - 1)
 
 
 @_kernel
-def _put(pix, x, y, colour, wm):  # noqa: ANN001, ANN202 - numba kernel
+def _put(pix, x, y, colour, wm):  # numba kernel
     if 0 <= y < pix.shape[0] and 0 <= x < pix.shape[1]:
         pix[y, x] = (pix[y, x] & ~wm) | (colour & wm)
 
 
 @_kernel
-def draw_line(pix, x0, y0, x1, y1, colour, wm, dash, dash_len, phase, skip_first):  # noqa: ANN001, ANN201
+def draw_line(pix, x0, y0, x1, y1, colour, wm, dash, dash_len, phase, skip_first):
     """Reconstructed firmware vector: a 12-bit fixed-point DDA, not Bresenham.
 
     The major axis steps one pixel at a time; the minor axis adds the slope truncated to
@@ -91,7 +91,7 @@ def draw_line(pix, x0, y0, x1, y1, colour, wm, dash, dash_len, phase, skip_first
 
 
 @_kernel
-def draw_polyline(pix, xy, start_x, start_y, colour, wm, dash, dash_len, phase, continuing):  # noqa: ANN001, ANN201
+def draw_polyline(pix, xy, start_x, start_y, colour, wm, dash, dash_len, phase, continuing):
     """Draw from (start_x, start_y) through every point of ``xy``; returns the dash phase."""
     px = start_x
     py = start_y
@@ -139,7 +139,7 @@ def bresenham_points(x0: int, y0: int, x1: int, y1: int) -> list[tuple[int, int]
 
 
 @_kernel
-def fill_rect(pix, x0, y0, x1, y1, colour, wm):  # noqa: ANN001, ANN201
+def fill_rect(pix, x0, y0, x1, y1, colour, wm):
     """Solid block between two corners, inclusive, clipped."""
     if x0 > x1:
         x0, x1 = x1, x0
@@ -157,7 +157,7 @@ def fill_rect(pix, x0, y0, x1, y1, colour, wm):  # noqa: ANN001, ANN201
 
 
 @_kernel
-def _boundary_fill(pix, sx, sy, colour, wm, boundary, rmask, blocked, stack):  # noqa: ANN001, ANN202, E501
+def _boundary_fill(pix, sx, sy, colour, wm, boundary, rmask, blocked, stack):
     """Firmware flood fill: spread 4-connected from the seed until pixels whose read-masked
     value equals the boundary colour. Writes go through the write mask. Returns pixels set.
 
@@ -235,7 +235,7 @@ def boundary_fill(pix: np.ndarray, sx: int, sy: int, colour: int, wm: int, bound
 
 
 @_kernel
-def dot_run(pix, x, y, colours, wm):  # noqa: ANN001, ANN201
+def dot_run(pix, x, y, colours, wm):
     """DJ: one pixel per colour, advancing +X from (x, y); returns the next x."""
     for k in range(colours.shape[0]):
         _put(pix, x, y, np.int64(colours[k]), wm)  # int64: one _put signature

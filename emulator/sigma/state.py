@@ -88,7 +88,7 @@ def load(t: Terminal, data: bytes) -> None:
         else:
             arrays = np.load(io.BytesIO(raw), allow_pickle=False)
             planes, lut, alpha = arrays["planes"], arrays["lut"], arrays["alpha"]
-    except Exception as exc:  # noqa: BLE001 - any damage to the array part
+    except Exception as exc:  # any damage to the array part
         raise ValueError(f"Sigma state arrays are corrupt (byte {off + 4 + n}): {exc}") from None
     if planes.shape != t.planes.shape or lut.shape != t.lut.shape or alpha.shape != \
             t.alpha.chars.shape:

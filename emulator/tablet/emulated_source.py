@@ -111,7 +111,7 @@ class EmulatedSource:
             self.window.close()
 
 
-def open_tablet(source_text: str, on_raw=None, script=None):  # noqa: ANN001, ANN201
+def open_tablet(source_text: str, on_raw=None, script=None):
     """(source, emulated-or-None, spec) for a SOURCE string; errors become SystemExit
     messages."""
     from protocols.tablets.sources import SourceError, SourceLost, open_source, parse_source

@@ -44,7 +44,7 @@ class TabletInput:
             return
         self.layer = self._live_layer(spec, source, area, notify, record)
 
-    def _live_layer(self, spec, source: str, area, notify, record: bool):  # noqa: ANN001, ANN202
+    def _live_layer(self, spec, source: str, area, notify, record: bool):
         from protocols.tablets.calibration import load_calibration
         from protocols.tablets.input_layer import InputLayer
         from protocols.tablets.tape import RecordingSource, TapeRecorder
@@ -60,14 +60,14 @@ class TabletInput:
                 "device": calibration.device, **calibration.to_json()})
             opened = RecordingSource(opened, tape) if opened is not None else None
 
-            def reopen_recorded():  # noqa: ANN202
+            def reopen_recorded():
                 return RecordingSource(reopen(), tape)
 
             return InputLayer(area, opened, reopen=reopen_recorded, calibration=calibration,
                               notify=notify)
         return InputLayer(area, opened, reopen=reopen, calibration=calibration, notify=notify)
 
-    def _open_emulated(self, spec):  # noqa: ANN001, ANN202
+    def _open_emulated(self, spec):
         """The emulated tablet on a pty, read back through its protocol parser like a real one."""
         from emulator.tablet import EmulatedTablet
         from protocols.tablets.serial_source import SerialSource
@@ -81,7 +81,7 @@ class TabletInput:
         opened = SerialSource(parse_source(url))
         opened.name = spec.text
 
-        def reopen():  # noqa: ANN202
+        def reopen():
             raise SourceLost("the emulated tablet does not come back")
 
         return opened, reopen
@@ -120,7 +120,7 @@ class TabletInput:
             self._emu.close()
 
 
-def _replay_layer(tape, area, notify):  # noqa: ANN001, ANN202
+def _replay_layer(tape, area, notify):
     """The input layer fed from the tape: reopened (inline, every poll) exactly at the polls
     where the recorded session got its tablet (back)."""
     from protocols.tablets.calibration import Calibration
@@ -131,7 +131,7 @@ def _replay_layer(tape, area, notify):  # noqa: ANN001, ANN202
     cal = tape.calibration()
     calibration = None if cal is None else Calibration(*cal)
 
-    def reopen():  # noqa: ANN202
+    def reopen():
         opened = tape.opens_now()
         if opened is None:
             raise SourceLost("not on the tape at this poll")
@@ -142,11 +142,11 @@ def _replay_layer(tape, area, notify):  # noqa: ANN001, ANN202
                       notify=notify, spawn=lambda job: job())
 
 
-def _open_real(spec, source: str, notify):  # noqa: ANN001, ANN202
+def _open_real(spec, source: str, notify):
     """A real tablet, or None (the mouse until it appears) when it is not there yet."""
     from protocols.tablets.sources import SourceLost, open_source
 
-    def reopen():  # noqa: ANN202
+    def reopen():
         return open_source(spec)
 
     try:

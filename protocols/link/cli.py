@@ -17,7 +17,7 @@ from collections.abc import Iterator
 from fractions import Fraction
 from typing import Any
 
-from protocols.atomicfile import write_atomic
+from base.atomicfile import write_atomic
 from protocols.link.line import SerialLine
 from protocols.link.recording import Recorder, RecordingError, read_recording
 from protocols.link.settings import LineSettings

@@ -49,7 +49,7 @@ def descriptor(port: Any) -> int | None:
     """The port's file descriptor for ``select``, or None (loop://, rfc2217://)."""
     try:
         fd = port.fileno()
-    except Exception:  # noqa: BLE001 - handlers without one raise assorted errors
+    except Exception:  # handlers without one raise assorted errors
         return None
     return fd if isinstance(fd, int) and fd >= 0 else None
 

@@ -18,10 +18,10 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from protocols.atomicfile import write_atomic
+from base.atomicfile import write_atomic
+from base.textinput import quote, read_text
 from protocols.rainbow.events import Event, decode_events, encode_event
 from protocols.rainbow.transport import Transport
-from protocols.textinput import quote, read_text
 
 MAGIC = "# camlab88 rainbow recording v1"
 

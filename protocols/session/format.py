@@ -124,8 +124,8 @@ def dumps(rec: SessionRecording) -> str:
 
 
 def write(path: str | os.PathLike[str], rec: SessionRecording) -> None:
-    """Write atomically (protocols.atomicfile)."""
-    from protocols.atomicfile import write_atomic
+    """Write atomically (base.atomicfile)."""
+    from base.atomicfile import write_atomic
 
     write_atomic(path, dumps(rec).encode("utf-8"))
 

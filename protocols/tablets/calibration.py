@@ -11,7 +11,7 @@ import os
 from dataclasses import dataclass
 from pathlib import Path
 
-from protocols.atomicfile import write_atomic
+from base.atomicfile import write_atomic
 from protocols.tablets.events import TabletEvent, TabletModel
 
 FILE_NAME = "calibration.json"

@@ -160,11 +160,11 @@ class HidSource(TabletSource):
         self.pump = ReportPump(self.device, spec.text)
 
     @property
-    def model(self):  # noqa: ANN201 - TabletModel
+    def model(self):  # TabletModel
         return self.decoder.model
 
     @staticmethod
-    def _enumerate(hid, spec: SourceSpec, vid: int, pid: int) -> list[dict]:  # noqa: ANN001
+    def _enumerate(hid, spec: SourceSpec, vid: int, pid: int) -> list[dict]:
         """The device's interfaces; absent: 'no device VID:PID (found: ...)'."""
         try:
             rows = [d for d in hid.enumerate(vid, pid) if d.get("path")]

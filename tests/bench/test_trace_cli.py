@@ -92,7 +92,7 @@ def test_link_dump_decode_shows_orders_and_replies(tmp_path, capsys):
     assert out[-2].endswith("< b'A468,356\\r'") and out[-1] == "# 2 protocol warnings"
 
 
-def _serve(tmp_path, *extra):  # noqa: ANN202
+def _serve(tmp_path, *extra):
     import os
     import subprocess
     import sys

@@ -25,7 +25,7 @@ def _fail(offset: int, message: str) -> PatternError:
     return PatternError("<t>", 0, offset + 1, message)
 
 
-def _cells(result):  # noqa: ANN001, ANN202 - what decode_compiled returns, as a cell set
+def _cells(result):  # what decode_compiled returns, as a cell set
     cells, (left, top) = result
     if isinstance(cells, np.ndarray):
         ys, xs = np.nonzero(cells)
@@ -34,7 +34,7 @@ def _cells(result):  # noqa: ANN001, ANN202 - what decode_compiled returns, as a
     return {(int(x) + left, int(y) + top, int(t)) for x, y, t in zip(xs, ys, ts)}
 
 
-def _outcome(decode, body):  # noqa: ANN001, ANN202
+def _outcome(decode, body):
     try:
         return decode(body)
     except PatternError as exc:

@@ -6,7 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import apps.ca.hashlife  # noqa: F401 - registers its kernel groups
-from protocols import kernel_notice
+from base import kernel_notice
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -103,7 +103,7 @@ def test_fast_forward_through_the_menu_doubles_then_step_mode_stops_it() -> None
 class _Clock:
     """A clock that moves two seconds each time it is read (and can act on a reading)."""
 
-    def __init__(self, on_read=None) -> None:  # noqa: ANN001 - called with the reading count
+    def __init__(self, on_read=None) -> None:  # called with the reading count
         self.t, self.reads, self.on_read = 0.0, 0, on_read
 
     def __call__(self) -> float:

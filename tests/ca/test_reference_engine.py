@@ -137,7 +137,7 @@ def test_rows_across_the_wrapping_seam_are_refused() -> None:
 @given(rule_sets().filter(lambda text: "%" not in text),
        st.lists(st.tuples(st.integers(0, 24), st.integers(0, 24), st.integers(1, 3)),
                 min_size=1, max_size=80))
-def test_random_rule_sets_agree(text: str, cells) -> None:  # noqa: ANN001
+def test_random_rule_sets_agree(text: str, cells) -> None:
     rules = parse_rules(text)
     top = max(rules.forms)
     cells = [(x + 1000, y + 1000, min(t, top)) for x, y, t in cells]

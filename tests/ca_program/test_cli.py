@@ -69,7 +69,7 @@ def test_demo_plays_sixty_generations_of_the_gun() -> None:
     assert stats["viewport"][2] == "8"
 
 
-def test_tripos_form_does_what_the_flag_form_does(tmp_path: Path, capsys,  # noqa: ANN001
+def test_tripos_form_does_what_the_flag_form_does(tmp_path: Path, capsys,
                                                  monkeypatch) -> None:
     """Section 7.3.1's argument form: Log/k, RecordPansAndZooms/s, Checkpoint (positional
     too), Script/k, ReplayPansAndZooms/s give the same session as the --flag form."""

@@ -43,16 +43,16 @@ class Log(Plugin):
         self.calls: list[tuple[str, int]] = []
         self.inject = inject or {}
 
-    def start(self, harness) -> None:  # noqa: ANN001
+    def start(self, harness) -> None:
         self.calls.append(("start", harness.ticks))
 
-    def handle_events(self, harness, events):  # noqa: ANN001, ANN201
+    def handle_events(self, harness, events):
         return events + self.inject.get(harness.ticks, [])
 
-    def on_frame(self, harness, frame) -> None:  # noqa: ANN001
+    def on_frame(self, harness, frame) -> None:
         self.calls.append(("frame", int(frame[0, 0, 0])))
 
-    def finish(self, harness) -> None:  # noqa: ANN001
+    def finish(self, harness) -> None:
         self.calls.append(("finish", harness.ticks))
 
 
@@ -78,7 +78,7 @@ def test_quit_stops_unless_the_target_refuses() -> None:
     assert not h.quit and h.ticks == 10
 
 
-def test_frames_dir_and_screenshot(tmp_path) -> None:  # noqa: ANN001
+def test_frames_dir_and_screenshot(tmp_path) -> None:
     from PIL import Image
 
     run(Counter(6), RunOptions(frames=tmp_path / "f", screenshot=tmp_path / "s.png"))
@@ -92,7 +92,7 @@ def test_an_unwritable_screenshot_is_one_line_naming_it() -> None:
         run(Counter(2), RunOptions(screenshot="/proc/nope/s.png", command="x"))  # type: ignore[arg-type]
 
 
-def test_the_display_rule(monkeypatch, capsys) -> None:  # noqa: ANN001
+def test_the_display_rule(monkeypatch, capsys) -> None:
     for var in ("DISPLAY", "WAYLAND_DISPLAY", "SDL_VIDEODRIVER"):
         monkeypatch.delenv(var, raising=False)
     monkeypatch.setattr("sys.platform", "linux")
@@ -105,7 +105,7 @@ def test_the_display_rule(monkeypatch, capsys) -> None:  # noqa: ANN001
     assert choose_headless("cmd", False, None) is False
 
 
-def test_interactive_commands_without_display_refuse_in_one_line(monkeypatch) -> None:  # noqa: ANN001
+def test_interactive_commands_without_display_refuse_in_one_line(monkeypatch) -> None:
     from camlab88.cli import main
 
     for var in ("DISPLAY", "WAYLAND_DISPLAY", "SDL_VIDEODRIVER"):

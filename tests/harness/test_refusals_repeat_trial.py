@@ -42,7 +42,7 @@ def test_an_os_error_reads_file_then_reason(capsys: pytest.CaptureFixture[str]) 
     from camlab88.runopts import fail
 
     try:
-        open("/nonexistent/x.kas", encoding="utf-8")  # noqa: SIM115
+        open("/nonexistent/x.kas", encoding="utf-8")
     except OSError as exc:
         assert fail("camlab88 kas", exc) == 2
     err = capsys.readouterr().err

@@ -6,5 +6,5 @@ import pytest
 
 
 @pytest.fixture(autouse=True)
-def _user_library(tmp_path_factory, monkeypatch) -> None:  # noqa: ANN001
+def _user_library(tmp_path_factory, monkeypatch) -> None:
     monkeypatch.setenv("CAMLAB88_KAS_LIBRARY", str(tmp_path_factory.mktemp("kaslib")))

@@ -162,7 +162,7 @@ def test_failed_save_is_shown_and_quit_warns_while_dirty():
     ed.run([Pointer(0, 0, True), Pointer(0, 0, False), Pointer(1, 1, True),
             Pointer(1, 1, False)])
 
-    def full(_d):  # noqa: ANN001, ANN202
+    def full(_d):
         raise OSError(28, "No space left on device")
 
     ed.on_save = full

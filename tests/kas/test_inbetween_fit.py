@@ -16,7 +16,7 @@ from apps.kas.model import Chain, Drawing
 ARCH = SamplePath([(0, 0), (1, 1), (2, 0)])
 
 
-def _one(a, b, d, path, mode):  # noqa: ANN001, ANN202
+def _one(a, b, d, path, mode):
     return pathfit.fit(np.array([a], float), np.array([b], float), np.array(d, float), path,
                        mode)[:, 0]
 
@@ -82,7 +82,7 @@ def test_axis_scales_are_continuous_at_the_blend_threshold() -> None:
        st.lists(st.tuples(st.floats(-5, 5), st.floats(-5, 5)), min_size=2, max_size=6),
        st.tuples(st.floats(-5, 5), st.floats(-5, 5)), st.tuples(st.floats(-5, 5),
                                                                 st.floats(-5, 5)))
-def test_every_mode_lands_on_both_keyframes(mode, pts, a, b) -> None:  # noqa: ANN001
+def test_every_mode_lands_on_both_keyframes(mode, pts, a, b) -> None:
     path = SamplePath(pts)
     try:
         pathfit.check(path)
@@ -110,13 +110,13 @@ def _key(x: float) -> Drawing:
 
 
 @pytest.mark.parametrize("pts", [[], [(1.0, 2.0)], [(1.0, 1.0), (1.0, 1.0)]])
-def test_unusable_path_is_a_clear_error_not_an_index_error(pts) -> None:  # noqa: ANN001
+def test_unusable_path_is_a_clear_error_not_an_index_error(pts) -> None:
     # Issue 15 item 5: `points 0` ended in an IndexError inside the fit.
     with pytest.raises(ValueError, match="two points|no length"):
         inbetween(_key(0), _key(3), frames=4, path=SamplePath(pts))
 
 
-def test_path_file_with_no_points_names_the_file_and_line(tmp_path) -> None:  # noqa: ANN001
+def test_path_file_with_no_points_names_the_file_and_line(tmp_path) -> None:
     f = tmp_path / "empty.kas"
     f.write_text("KAS path 1\n# drawn by hand\npoints 0\nend\n")
     with pytest.raises(KasFileError, match=r"empty\.kas:3: a sample path needs at least two"):
@@ -129,7 +129,7 @@ def test_path_file_with_no_points_names_the_file_and_line(tmp_path) -> None:  # 
 @settings(max_examples=40, deadline=None)
 @given(st.lists(st.tuples(st.integers(-3, 3), st.integers(-3, 3)), max_size=4),
        st.integers(0, 6))
-def test_any_path_file_loads_fits_or_names_its_line(tmp_path_factory, pts, n) -> None:  # noqa: ANN001
+def test_any_path_file_loads_fits_or_names_its_line(tmp_path_factory, pts, n) -> None:
     f = tmp_path_factory.mktemp("paths") / "p.kas"
     rows = "".join(f"{x} {y}\n" for x, y in pts)
     f.write_text(f"KAS path 1\npoints {n}\n{rows}end\n")

@@ -13,11 +13,11 @@ DATA = Path(__file__).parent.parent / "data" / "kas_front"
 GOLDEN = DATA / "golden"
 
 
-def script(name: str):  # noqa: ANN201
+def script(name: str):
     return parse_timed_script((DATA / name).read_text(encoding="utf-8"), name)
 
 
-def run_editor(name: str, seed: int = 1, background: str = "black", editor=None):  # noqa: ANN001, ANN201
+def run_editor(name: str, seed: int = 1, background: str = "black", editor=None):
     saved = []
     front = EditorFront(editor or Editor(seed=seed), background,
                         on_save=lambda d: saved.append(d.copy()))

@@ -12,7 +12,7 @@ from tests.kas_front.helpers import DATA, model_only
 ROOT_EXAMPLES = DATA.parents[2] / "examples" / "kas"
 
 
-def test_edit_headless_saves_and_screenshots(tmp_path, capsys) -> None:  # noqa: ANN001
+def test_edit_headless_saves_and_screenshots(tmp_path, capsys) -> None:
     key, shot = tmp_path / "k.kas", tmp_path / "shot.png"
     assert main(["kas", "edit", str(key), "--script", str(DATA / "edit_all.txt"),
                  "--headless", "--seed", "1"]) == 0
@@ -35,7 +35,7 @@ def test_edit_headless_saves_and_screenshots(tmp_path, capsys) -> None:  # noqa:
     assert "7 chains" in capsys.readouterr().out
 
 
-def test_edit_errors(tmp_path, capsys) -> None:  # noqa: ANN001
+def test_edit_errors(tmp_path, capsys) -> None:
     assert main(["kas", "edit", str(tmp_path / "k.kas"), "--headless"]) == 2
     assert "--headless needs --script" in capsys.readouterr().err
     bad = tmp_path / "bad.txt"
@@ -45,7 +45,7 @@ def test_edit_errors(tmp_path, capsys) -> None:  # noqa: ANN001
     assert "bad.txt:2:" in capsys.readouterr().err
 
 
-def test_path_headless(tmp_path, capsys) -> None:  # noqa: ANN001
+def test_path_headless(tmp_path, capsys) -> None:
     p = tmp_path / "p.kas"
     assert main(["kas", "path", "walk_a", "walk_b", "--out", str(p), "--script",
                  str(DATA / "path.txt"), "--headless"]) == 0
@@ -54,7 +54,7 @@ def test_path_headless(tmp_path, capsys) -> None:  # noqa: ANN001
     assert "4 ticks" in capsys.readouterr().out
 
 
-def test_view_headless_counts_and_frames(tmp_path, capsys) -> None:  # noqa: ANN001
+def test_view_headless_counts_and_frames(tmp_path, capsys) -> None:
     seq = tmp_path / "d.kas"
     assert main(["kas", "demo", "--out", str(seq)]) == 0
     capsys.readouterr()
@@ -79,7 +79,7 @@ def test_view_headless_counts_and_frames(tmp_path, capsys) -> None:  # noqa: ANN
     assert "28 shown, 0 dropped" in capsys.readouterr().out
 
 
-def test_export_through_the_sigma(tmp_path, capsys) -> None:  # noqa: ANN001
+def test_export_through_the_sigma(tmp_path, capsys) -> None:
     seq = tmp_path / "d.kas"
     assert main(["kas", "demo", "--out", str(seq)]) == 0
     assert main(["kas", "export", str(seq), str(tmp_path / "o.png")]) == 0
@@ -89,7 +89,7 @@ def test_export_through_the_sigma(tmp_path, capsys) -> None:  # noqa: ANN001
     assert len(list(tmp_path.glob("o_*.png"))) == 28
 
 
-def test_edit_in_a_window_dummy_driver(tmp_path, capsys) -> None:  # noqa: ANN001
+def test_edit_in_a_window_dummy_driver(tmp_path, capsys) -> None:
     """The windowed loop (SDL dummy driver): script events and the window's input together."""
     shot = tmp_path / "w.png"
     assert main(["kas", "edit", str(tmp_path / "k.kas"), "--script",
@@ -100,7 +100,7 @@ def test_edit_in_a_window_dummy_driver(tmp_path, capsys) -> None:  # noqa: ANN00
     assert main(["kas", "view", "walk_ticks", "--screenshot", str(shot)]) == 2  # not a sequence
 
 
-def test_failed_f2_save_keeps_editing_and_says_not_saved(tmp_path, capsys) -> None:  # noqa: ANN001
+def test_failed_f2_save_keeps_editing_and_says_not_saved(tmp_path, capsys) -> None:
     # F2 into a directory that does not exist: an OSError on the message line, the drawing
     # stays, the script goes on drawing, the summary does not claim "saved", and the run
     # exits 1 saying why (a script run must not report success when its save failed).
@@ -115,7 +115,7 @@ def test_failed_f2_save_keeps_editing_and_says_not_saved(tmp_path, capsys) -> No
     assert not target.exists()
 
 
-def test_summary_says_when_later_edits_are_unsaved(tmp_path, capsys) -> None:  # noqa: ANN001
+def test_summary_says_when_later_edits_are_unsaved(tmp_path, capsys) -> None:
     script = tmp_path / "s.txt"
     script.write_text("down 0 0\nup 0 0\ndown 1 1\nup 1 1\nkey f2\ndown 2 0\nup 2 0\n")
     target = tmp_path / "k.kas"
@@ -125,7 +125,7 @@ def test_summary_says_when_later_edits_are_unsaved(tmp_path, capsys) -> None:  #
     assert files.load_keyframe(target).n_points == 2
 
 
-def test_user_library_and_the_previous_pairs_path(tmp_path, capsys, monkeypatch) -> None:  # noqa: ANN001
+def test_user_library_and_the_previous_pairs_path(tmp_path, capsys, monkeypatch) -> None:
     lib = tmp_path / "lib"
     monkeypatch.setenv("CAMLAB88_KAS_LIBRARY", str(lib))
     # draw the path for (walk_a, walk_b): kept in the user library under the pair's name
@@ -164,14 +164,14 @@ def test_user_library_and_the_previous_pairs_path(tmp_path, capsys, monkeypatch)
     assert "bad.kas" in capsys.readouterr().err and not (lib / "x.kas").exists()
 
 
-def test_closing_the_window_with_unsaved_edits_warns_once(tmp_path, capsys, monkeypatch) -> None:  # noqa: ANN001
+def test_closing_the_window_with_unsaved_edits_warns_once(tmp_path, capsys, monkeypatch) -> None:
     from emulator.host_input import Quit
     from emulator.window import Window
 
     polls: list[int] = []
     quits: list[int] = []
 
-    def poll(self) -> list:  # noqa: ANN001
+    def poll(self) -> list:
         polls.append(1)
         if len(polls) < 20:  # let the script's drawing arrive first
             return []
@@ -195,7 +195,7 @@ def test_closing_the_window_with_unsaved_edits_warns_once(tmp_path, capsys, monk
     assert len(quits) == 1
 
 
-def test_saving_over_a_library_entry_needs_force(tmp_path, capsys, monkeypatch) -> None:  # noqa: ANN001
+def test_saving_over_a_library_entry_needs_force(tmp_path, capsys, monkeypatch) -> None:
     lib = tmp_path / "lib"
     monkeypatch.setenv("CAMLAB88_KAS_LIBRARY", str(lib))
     first, second = tmp_path / "a.kas", tmp_path / "b.kas"

@@ -19,7 +19,7 @@ def _drawing(pens: list[int]) -> Drawing:
                     for i, pen in enumerate(pens)])
 
 
-def _run(pens: list[int], events: str, background: str = "black"):  # noqa: ANN202
+def _run(pens: list[int], events: str, background: str = "black"):
     front = EditorFront(Editor(_drawing(pens)), background)
     term = Terminal("t5684")
     Session(front, term).run_script(parse_timed_script(events))

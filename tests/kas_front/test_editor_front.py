@@ -16,11 +16,11 @@ from tests.support.golden import assert_matches_golden
 
 
 @pytest.fixture(scope="module")
-def edit_all():  # noqa: ANN201
+def edit_all():
     return run_editor("edit_all.txt")
 
 
-def test_every_command_through_the_front_matches_the_model(edit_all) -> None:  # noqa: ANN001
+def test_every_command_through_the_front_matches_the_model(edit_all) -> None:
     front, term, session, saved = edit_all
     want = model_only("edit_all.txt")
     got = front.editor.drawing
@@ -36,12 +36,12 @@ def test_every_command_through_the_front_matches_the_model(edit_all) -> None:  #
     assert term.stats["unknown"] == term.stats["malformed"] == term.stats["errors"] == 0
 
 
-def test_edit_session_screen_golden(edit_all) -> None:  # noqa: ANN001
+def test_edit_session_screen_golden(edit_all) -> None:
     _front, term, _s, _saved = edit_all
     assert_matches_golden(term.frame(), GOLDEN / "edit_all.png")
 
 
-def test_incremental_redraw_equals_a_full_redraw(edit_all) -> None:  # noqa: ANN001
+def test_incremental_redraw_equals_a_full_redraw(edit_all) -> None:
     front, term, _s, _saved = edit_all
     fresh = Terminal("t5684")
     fresh.feed(EditorFront(front.editor).start())

@@ -41,7 +41,7 @@ def test_path_front_draws_path_and_ticks_over_the_line() -> None:
 
 
 def test_path_front_failed_save_keeps_the_path() -> None:
-    def full(_p, _t):  # noqa: ANN001, ANN202
+    def full(_p, _t):
         raise OSError(28, "No space left on device")
 
     front = PathFront(_model(), on_save=full)

@@ -122,7 +122,7 @@ def test_a_scripted_esc_y_ends_the_editor_and_saves(tmp_path: Path) -> None:
     assert "saved" in done.stdout
 
 
-def test_ctrl_c_keeps_unsaved_edits_in_a_recovery_file(tmp_path: Path, capsys) -> None:  # noqa: ANN001
+def test_ctrl_c_keeps_unsaved_edits_in_a_recovery_file(tmp_path: Path, capsys) -> None:
     from camlab88.commands.kas.edit import _interrupted, recovery_file
 
     front = _dirty_editor([])
@@ -133,7 +133,7 @@ def test_ctrl_c_keeps_unsaved_edits_in_a_recovery_file(tmp_path: Path, capsys) -
     assert str(rescue) in capsys.readouterr().err
 
 
-def _window_keys(monkeypatch, keys: list[tuple[str, str]]) -> list[int]:  # noqa: ANN001
+def _window_keys(monkeypatch, keys: list[tuple[str, str]]) -> list[int]:
     """The window's poll: nothing for 20 polls (the script's drawing arrives), then one key
     each poll from ``keys``; returns the list of polls made."""
     from emulator.host_input import KeyDown
@@ -141,7 +141,7 @@ def _window_keys(monkeypatch, keys: list[tuple[str, str]]) -> list[int]:  # noqa
 
     polls: list[int] = []
 
-    def poll(self) -> list:  # noqa: ANN001
+    def poll(self) -> list:
         polls.append(1)
         n = len(polls) - 20
         return [KeyDown(*keys[n])] if 0 <= n < len(keys) else []
@@ -150,8 +150,8 @@ def _window_keys(monkeypatch, keys: list[tuple[str, str]]) -> list[int]:  # noqa
     return polls
 
 
-def test_the_window_esc_then_n_quits_without_saving(tmp_path: Path, monkeypatch,  # noqa: ANN001
-                                                     capsys) -> None:  # noqa: ANN001
+def test_the_window_esc_then_n_quits_without_saving(tmp_path: Path, monkeypatch,
+                                                     capsys) -> None:
     from camlab88.cli import main
 
     polls = _window_keys(monkeypatch, [("escape", ""), ("n", "n")])
@@ -164,7 +164,7 @@ def test_the_window_esc_then_n_quits_without_saving(tmp_path: Path, monkeypatch,
     assert load_keyframe(target).chains == []
 
 
-def test_the_path_tools_window_esc_quits(tmp_path: Path, monkeypatch) -> None:  # noqa: ANN001
+def test_the_path_tools_window_esc_quits(tmp_path: Path, monkeypatch) -> None:
     from camlab88.cli import main
 
     polls = _window_keys(monkeypatch, [("escape", "")])

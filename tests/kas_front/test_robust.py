@@ -43,7 +43,7 @@ def test_keyboard_bytes_never_fail(data: bytes) -> None:
 @settings(max_examples=100, deadline=None)
 @given(st.lists(st.tuples(st.floats(-1e7, 1e7), st.floats(-1e7, 1e7)), min_size=1,
                 max_size=12), st.lists(st.integers(0, 300), min_size=12, max_size=12))
-def test_any_chain_clips_to_valid_orders(pts, cols) -> None:  # noqa: ANN001
+def test_any_chain_clips_to_valid_orders(pts, cols) -> None:
     prims = chain_prims(np.array(pts), cols[:len(pts)], (8, 8, 584, 428),
                         lambda c: c if 1 <= c <= 8 else 1)
     enc = Encoder()

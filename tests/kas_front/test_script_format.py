@@ -13,7 +13,7 @@ from tests.kas_front.helpers import DATA
 UNTIMED = Path(__file__).resolve().parents[1] / "data" / "kas" / "walk_edit_script.txt"
 
 
-def test_an_untimed_model_script_runs_on_the_sigma(tmp_path: Path, capsys) -> None:  # noqa: ANN001
+def test_an_untimed_model_script_runs_on_the_sigma(tmp_path: Path, capsys) -> None:
     model, front = tmp_path / "m.kas", tmp_path / "f.kas"
     assert main(["kas", "edit-script", str(UNTIMED), "--out", str(model)]) == 0
     # the same script; on the Sigma its last key, Esc with no command to cancel, asks

@@ -12,12 +12,12 @@ from emulator.sigma import Terminal
 
 
 @pytest.fixture(scope="module")
-def seq():  # noqa: ANN201
+def seq():
     return demo.build()
 
 
 @pytest.mark.parametrize("how", ["lut", "mask"])
-def test_realtime_counts_equal_the_schedule(seq, how: str) -> None:  # noqa: ANN001
+def test_realtime_counts_equal_the_schedule(seq, how: str) -> None:
     test = LineTest(seq, how)
     sizes = test.sizes()
     shown = {}
@@ -36,7 +36,7 @@ def test_realtime_counts_equal_the_schedule(seq, how: str) -> None:  # noqa: ANN
     assert shown[9600] < len(seq)  # 9600 baud cannot carry this sequence in real time
 
 
-def test_every_frame_mode_shows_all(seq) -> None:  # noqa: ANN001
+def test_every_frame_mode_shows_all(seq) -> None:
     rep = LineTest(seq).run("every", 9600)
     assert rep.shown_frames == list(range(len(seq))) and rep.dropped == []
     sched = vs.every_frame(LineTest(seq).sizes())
@@ -52,7 +52,7 @@ def _reference(test: LineTest, j: int) -> np.ndarray:
 
 
 @pytest.mark.parametrize("how", ["lut", "mask"])
-def test_double_buffer_never_shows_a_half_drawn_frame(seq, how: str) -> None:  # noqa: ANN001
+def test_double_buffer_never_shows_a_half_drawn_frame(seq, how: str) -> None:
     test = LineTest(seq, how)
     refs = [_reference(test, j) for j in range(len(seq))]
     blank = np.zeros_like(refs[0])
@@ -100,7 +100,7 @@ def test_double_buffer_never_shows_a_half_drawn_frame(seq, how: str) -> None:  #
         assert mixed > 5  # periods caught mid-swap were really checked
 
 
-def test_four_colours_keep_the_most_used_pens(seq) -> None:  # noqa: ANN001
+def test_four_colours_keep_the_most_used_pens(seq) -> None:
     plan = four_colours(seq)
     assert sorted(plan.slot_of_pen.values())[:1] == [1]
     assert set(plan.slot_of_pen.values()) <= {1, 2, 3}

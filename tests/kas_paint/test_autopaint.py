@@ -62,7 +62,7 @@ def walk_painted() -> tuple[AnimSequence, list[np.ndarray], object]:
     measured="the walk painted on frame 10 by its operations: all 20 frames filled with the same "
              "colours, 0 pixels leaked in each",
     verdict="agrees")
-def test_walk_every_frame_same_colours_no_leaks(walk_painted) -> None:  # noqa: ANN001
+def test_walk_every_frame_same_colours_no_leaks(walk_painted) -> None:
     seq, got, rep = walk_painted
     assert rep.failures == [] and len(got) == len(seq.frames) == 20
     leaks = []
@@ -73,7 +73,7 @@ def test_walk_every_frame_same_colours_no_leaks(walk_painted) -> None:  # noqa: 
     assert leaks == [0] * 20
 
 
-def test_walk_line_op_recolours_the_chain(walk_painted) -> None:  # noqa: ANN001
+def test_walk_line_op_recolours_the_chain(walk_painted) -> None:
     seq, got, _ = walk_painted
     for frame, planes in zip(seq.frames, got, strict=True):
         x, y, _ = vector.polyline_pixels(areas.dedup(areas.to_px(frame.chains[0].points)))

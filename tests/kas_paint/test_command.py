@@ -12,7 +12,7 @@ from camlab88.cli import main
 from tests.kas_paint.helpers import walk
 
 
-def test_paint_session_then_every_frame(tmp_path, capsys) -> None:  # noqa: ANN001
+def test_paint_session_then_every_frame(tmp_path, capsys) -> None:
     seq = walk(6)
     seq_path, ops_path = tmp_path / "w.kas", tmp_path / "w.ops"
     files.save_sequence(seq_path, seq)
@@ -43,7 +43,7 @@ def test_paint_session_then_every_frame(tmp_path, capsys) -> None:  # noqa: ANN0
     assert img.shape == (512, 768, 3) and (img == (250, 220, 40)).all(axis=-1).sum() > 100
 
 
-def test_paint_errors(tmp_path, capsys) -> None:  # noqa: ANN001
+def test_paint_errors(tmp_path, capsys) -> None:
     seq_path = tmp_path / "w.kas"
     files.save_sequence(seq_path, walk(3))
     bad = tmp_path / "bad.ops"
@@ -83,7 +83,7 @@ def test_window_input_selects_fills_and_picks() -> None:
     assert t.term.reg.view == 4
 
 
-def test_readme_commands_as_printed(tmp_path, capsys, monkeypatch) -> None:  # noqa: ANN001
+def test_readme_commands_as_printed(tmp_path, capsys, monkeypatch) -> None:
     """The README's painting commands, in order, with the shipped script."""
     from pathlib import Path
 
@@ -105,7 +105,7 @@ def test_readme_commands_as_printed(tmp_path, capsys, monkeypatch) -> None:  # n
 
 
 def test_headless_replay_says_it_painted_flat_out_not_at_line_speed(
-        tmp_path, capsys, monkeypatch) -> None:  # noqa: ANN001
+        tmp_path, capsys, monkeypatch) -> None:
     seq_path, ops = tmp_path / "w.kas", tmp_path / "w.ops"
     files.save_sequence(seq_path, walk(3))
     ops.write_text("KAS paint 1\npalette 1\ncolour 0 0 0 0\ngap 0\npainted 1\nops 0\nend\n")

@@ -49,7 +49,7 @@ def test_round_trip(ops: list[Op], gap: float) -> None:
     assert opsfile.ops_text(g) == opsfile.ops_text(f)
 
 
-def test_parse_example_and_save_atomic(tmp_path) -> None:  # noqa: ANN001
+def test_parse_example_and_save_atomic(tmp_path) -> None:
     f = opsfile.parse(TEXT, "x.ops")
     assert [o.kind for o in f.ops] == ["fill", "fill"] and f.ops[1].seeds == ((0.5, 0.5),)
     assert f.frame_ops[1][0] == Op("touch", 2, at=(2.5, 2.5), frame=1)

@@ -37,7 +37,7 @@ def _rendered(tmp_path: Path) -> np.ndarray:
     return _png(out)
 
 
-def _sigma_run(url: str, shot: Path, started=None) -> str:  # noqa: ANN001
+def _sigma_run(url: str, shot: Path, started=None) -> str:
     proc = subprocess.Popen(
         [sys.executable, "-m", "camlab88", "sigma", "run", "--headless", "--serial", url,
          "--seconds", LINE_SECONDS, "--screenshot", str(shot)],

@@ -39,14 +39,14 @@ def in_tmp(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
     ("kas", "path-script", "walk_a", "walk_b", "session.txt", "--path-out", "p.kas",
      "--timing-out", "t.kas"),
 ])
-def test_a_missing_kas_script_is_named_without_errno(in_tmp: Path, capsys, argv) -> None:  # noqa: ANN001
+def test_a_missing_kas_script_is_named_without_errno(in_tmp: Path, capsys, argv) -> None:
     rc, out, err = _run(capsys, *argv)
     assert rc == 2
     assert "session.txt: cannot read: No such file or directory" in err
     assert "[Errno" not in err
 
 
-def test_a_missing_camera_script_for_film_is_named_without_errno(in_tmp: Path, capsys) -> None:  # noqa: ANN001
+def test_a_missing_camera_script_for_film_is_named_without_errno(in_tmp: Path, capsys) -> None:
     cp = ROOT / "tests/data/snooker_camera/pink_shot.checkpoint"
     rc, out, err = _run(capsys, "snooker", "film", str(cp), "script.ccl", "--out", "shot.mp4")
     assert rc == 2
@@ -57,7 +57,7 @@ def test_a_missing_camera_script_for_film_is_named_without_errno(in_tmp: Path, c
 
 # -- every command that writes files names them ----------------------------------------------
 
-def test_path_script_names_the_path_and_timing_it_wrote(in_tmp: Path, capsys) -> None:  # noqa: ANN001
+def test_path_script_names_the_path_and_timing_it_wrote(in_tmp: Path, capsys) -> None:
     kas = str(EXAMPLES / "kas")
     assert _run(capsys, "kas", "edit-script", f"{kas}/house.script", "--out", "a.kas")[0] == 0
     assert _run(capsys, "kas", "edit-script", f"{kas}/move.script", "--start", "a.kas",
@@ -68,7 +68,7 @@ def test_path_script_names_the_path_and_timing_it_wrote(in_tmp: Path, capsys) ->
     assert "arc.kas" in out and "ticks.kas" in out
 
 
-def test_simulate_names_the_session_file_it_saved(in_tmp: Path, capsys) -> None:  # noqa: ANN001
+def test_simulate_names_the_session_file_it_saved(in_tmp: Path, capsys) -> None:
     rc, out, _ = _run(capsys, "snooker", "simulate", "--break", "5", "--out", "b.cp",
                       "--save-session", "game.json")
     assert rc == 0 and (in_tmp / "game.json").is_file()
@@ -85,7 +85,7 @@ def test_film_summary_names_the_gif_too(tmp_path: Path) -> None:
                                      tmp_path / "shot.views", tmp_path / "shot_frames")
 
 
-def test_visualise_names_the_frames_it_wrote(in_tmp: Path, capsys) -> None:  # noqa: ANN001
+def test_visualise_names_the_frames_it_wrote(in_tmp: Path, capsys) -> None:
     data = ROOT / "tests/data/snooker_camera"
     assert _run(capsys, "snooker", "ccl", str(data / "thesis_example.ccl"),
                 str(data / "pink_shot.checkpoint"), "--out", "ex.views")[0] == 0
@@ -97,7 +97,7 @@ def test_visualise_names_the_frames_it_wrote(in_tmp: Path, capsys) -> None:  # n
     assert f"wrote {len(written)} frames to fr/frame_NNNNN.png" in err
 
 
-def test_ca_program_names_the_log_it_wrote(in_tmp: Path, capsys) -> None:  # noqa: ANN001
+def test_ca_program_names_the_log_it_wrote(in_tmp: Path, capsys) -> None:
     rc, out, err = _run(capsys, "ca", "program", "--headless", "--pattern", "glider",
                         "--events", str(EXAMPLES / "ca/session.events"), "--log", "s.log",
                         "--record-pans")
@@ -105,7 +105,7 @@ def test_ca_program_names_the_log_it_wrote(in_tmp: Path, capsys) -> None:  # noq
     assert "s.log" in err
 
 
-def test_kas_paint_names_first_and_last_frame(in_tmp: Path, capsys) -> None:  # noqa: ANN001
+def test_kas_paint_names_first_and_last_frame(in_tmp: Path, capsys) -> None:
     assert _run(capsys, "kas", "inbetween", "sun_a", "sun_b", "--timing", "linear",
                 "--frames", "4", "--out", "sun.kas")[0] == 0
     ops = in_tmp / "sun.ops"
@@ -120,14 +120,14 @@ def test_kas_paint_names_first_and_last_frame(in_tmp: Path, capsys) -> None:  # 
 # -- a refused or failed run leaves no file behind ------------------------------------------
 
 @pytest.mark.parametrize("extra", [("--headless",), ("--headless", "--script", "nothere.txt")])
-def test_kas_edit_creates_no_file_when_it_does_not_run(in_tmp: Path, capsys, extra) -> None:  # noqa: ANN001
+def test_kas_edit_creates_no_file_when_it_does_not_run(in_tmp: Path, capsys, extra) -> None:
     rc, out, err = _run(capsys, "kas", "edit", "new.kas", *extra)
     assert rc != 0
     assert not (in_tmp / "new.kas").exists(), out
     assert "created" not in out
 
 
-def test_kas_edit_refused_for_no_display_creates_no_file(in_tmp: Path, capsys,  # noqa: ANN001
+def test_kas_edit_refused_for_no_display_creates_no_file(in_tmp: Path, capsys,
                                                          monkeypatch: pytest.MonkeyPatch) -> None:
     for name in ("DISPLAY", "WAYLAND_DISPLAY", "SDL_VIDEODRIVER"):
         monkeypatch.delenv(name, raising=False)
@@ -136,7 +136,7 @@ def test_kas_edit_refused_for_no_display_creates_no_file(in_tmp: Path, capsys,  
     assert not (in_tmp / "new.kas").exists()
 
 
-def test_kas_edit_still_creates_the_file_when_it_runs(in_tmp: Path, capsys) -> None:  # noqa: ANN001
+def test_kas_edit_still_creates_the_file_when_it_runs(in_tmp: Path, capsys) -> None:
     script = in_tmp / "s.txt"
     script.write_text("down 0 0\ndown 1 1\nup 1 1\n", encoding="utf-8")
     rc, out, err = _run(capsys, "kas", "edit", "new.kas", "--headless", "--script", str(script))

@@ -1,4 +1,4 @@
-"""protocols.atomicfile: the old file survives any failure; the new one lands whole."""
+"""base.atomicfile: the old file survives any failure; the new one lands whole."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from protocols.atomicfile import atomic_output, write_atomic
+from base.atomicfile import atomic_output, write_atomic
 
 
 def test_write_replaces_whole_and_leaves_no_temporary(tmp_path: Path) -> None:

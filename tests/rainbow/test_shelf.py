@@ -17,7 +17,7 @@ from tests.support.golden import assert_matches_golden
 DATA = Path(__file__).resolve().parents[1] / "data" / "rainbow"
 
 
-def _expected(s, demo: shelf.ShelfDemo) -> np.ndarray:  # noqa: ANN001
+def _expected(s, demo: shelf.ShelfDemo) -> np.ndarray:
     """The screen composed independently: each pad's values (read back through the pad
     library) at its arc's position, OR-ed as 2-bit fields, coloured by the combined table."""
     c, sh = s.client, demo.shelf
@@ -106,7 +106,7 @@ def test_components_occupy_their_own_planes_at_one_priority() -> None:
     assert {g.arc(a).parent for a in demo.shelf.arcs.values()} == {demo.shelf.cluster}
 
 
-def test_rainbow_run_demo_shelf(tmp_path) -> None:  # noqa: ANN001
+def test_rainbow_run_demo_shelf(tmp_path) -> None:
     from PIL import Image
 
     from camlab88.cli import main

@@ -29,7 +29,7 @@ def _with_argv(tmp_path: Path, argv: list[str], base: str = "sigma_run.session",
     return path
 
 
-def _actions(parser: argparse.ArgumentParser, prefix: tuple[str, ...] = ()):  # noqa: ANN202
+def _actions(parser: argparse.ArgumentParser, prefix: tuple[str, ...] = ()):
     for action in parser._actions:
         if isinstance(action, argparse._SubParsersAction):
             for name, sub in action.choices.items():
@@ -103,15 +103,15 @@ class _Sockets:
         for name in ("connect", "connect_ex", "bind", "listen"):
             monkeypatch.setattr(socket.socket, name, self._refuse(name))
 
-    def _refuse(self, name: str):  # noqa: ANN202
+    def _refuse(self, name: str):
         def call(sock: socket.socket, *args: object) -> None:
             self.calls.append(f"{name}{args}")
             raise OSError(f"the test forbids socket.{name}")
         return call
 
 
-def test_a_dask_address_in_a_recording_is_never_contacted(tmp_path: Path, capsys,  # noqa: ANN001
-                                                          monkeypatch) -> None:  # noqa: ANN001
+def test_a_dask_address_in_a_recording_is_never_contacted(tmp_path: Path, capsys,
+                                                          monkeypatch) -> None:
     with socket.socket() as owned:  # the test's own listener: the "hostile scheduler"
         owned.bind(("127.0.0.1", 0))
         owned.listen(8)
@@ -130,7 +130,7 @@ def test_a_dask_address_in_a_recording_is_never_contacted(tmp_path: Path, capsys
                 owned.accept()
 
 
-def test_a_listener_recording_replays_its_bytes_without_opening_anything(  # noqa: ANN001
+def test_a_listener_recording_replays_its_bytes_without_opening_anything(
         tmp_path: Path, capsys, monkeypatch) -> None:
     import os
 
@@ -146,8 +146,8 @@ def test_a_listener_recording_replays_its_bytes_without_opening_anything(  # noq
         assert "screen hashes agree" in capsys.readouterr().out
 
 
-def test_a_tablet_in_a_recording_is_never_opened(tmp_path: Path, capsys,  # noqa: ANN001
-                                                 monkeypatch) -> None:  # noqa: ANN001
+def test_a_tablet_in_a_recording_is_never_opened(tmp_path: Path, capsys,
+                                                 monkeypatch) -> None:
     with socket.socket() as owned:  # the "tablet" the recording names: a listener of ours
         owned.bind(("127.0.0.1", 0))
         owned.listen(8)
@@ -165,7 +165,7 @@ def test_a_tablet_in_a_recording_is_never_opened(tmp_path: Path, capsys,  # noqa
             owned.accept()
 
 
-def test_a_tripos_key_value_path_cannot_write_outside(tmp_path: Path, capsys) -> None:  # noqa: ANN001
+def test_a_tripos_key_value_path_cannot_write_outside(tmp_path: Path, capsys) -> None:
     victim = tmp_path / "victim.log"
     base = read(DATA / "ca_program.session").argv
     rec = _with_argv(tmp_path, [*base, f"Log={victim}"], "ca_program.session")
@@ -175,7 +175,7 @@ def test_a_tripos_key_value_path_cannot_write_outside(tmp_path: Path, capsys) ->
     assert sorted(p.name for p in tmp_path.iterdir()) == ["hostile.session"]
 
 
-def test_every_path_that_leaves_the_scratch_directory_is_moved_in(  # noqa: ANN001
+def test_every_path_that_leaves_the_scratch_directory_is_moved_in(
         tmp_path: Path, monkeypatch) -> None:
     from camlab88.session_replay import rewrite_argv
 
@@ -188,14 +188,14 @@ def test_every_path_that_leaves_the_scratch_directory_is_moved_in(  # noqa: ANN0
 
 
 @pytest.mark.parametrize("name", ["", ".", "a/..", "../../..", "/"])
-def test_input_file_names_that_are_not_files_are_refused(tmp_path: Path, capsys,  # noqa: ANN001
+def test_input_file_names_that_are_not_files_are_refused(tmp_path: Path, capsys,
                                                          name: str) -> None:
     rec = _with_argv(tmp_path, read(DATA / "sigma_run.session").argv, files={name: b"x"})
     assert main(["replay", str(rec), "--headless"]) == 2
     assert "not replayed: input file name" in capsys.readouterr().err
 
 
-def test_outputs_of_the_recorded_run_are_neither_written_nor_announced(  # noqa: ANN001
+def test_outputs_of_the_recorded_run_are_neither_written_nor_announced(
         tmp_path: Path, capsys, monkeypatch) -> None:
     monkeypatch.chdir(tmp_path)
     base = read(DATA / "sigma_run.session").argv
@@ -211,7 +211,7 @@ def test_outputs_of_the_recorded_run_are_neither_written_nor_announced(  # noqa:
     assert "saved" not in said.err + said.out, said
 
 
-def test_a_rainbow_replay_neither_writes_nor_announces_the_command_stream(  # noqa: ANN001
+def test_a_rainbow_replay_neither_writes_nor_announces_the_command_stream(
         tmp_path: Path, capsys, monkeypatch) -> None:
     monkeypatch.chdir(tmp_path)
     assert main(["rainbow", "run", "--headless", "--stop-after", "12", "--record",

@@ -20,7 +20,7 @@ from pathlib import Path
 
 import pytest
 
-from protocols.atomicfile import sweep_stale, write_atomic
+from base.atomicfile import sweep_stale, write_atomic
 
 ROOT = Path(__file__).resolve().parents[2]
 SEED = 2027
@@ -30,13 +30,13 @@ SIZE = 1 << 20  # each new version: 1 MiB, so a kill often lands mid-write
 
 _CHILD = {
     "write_atomic": """
-from protocols.atomicfile import write_atomic
+from base.atomicfile import write_atomic
 print("ready", flush=True)
 for k in range(10**6):
     write_atomic(TARGET, (b"%08d" % k) * (SIZE // 8))
 """,
     "batch": """
-from protocols.atomicfile import AtomicBatch
+from base.atomicfile import AtomicBatch
 print("ready", flush=True)
 for k in range(10**6):
     with AtomicBatch() as batch:

@@ -59,7 +59,7 @@ def _offer_pty(path: str, offered: int = OFFERED_EACH) -> int:
     return accepted
 
 
-def _flat(pid: int, offer, where) -> tuple[float, float, int]:  # noqa: ANN001
+def _flat(pid: int, offer, where) -> tuple[float, float, int]:
     """The server's RSS once it has served one byte, then across CLIENTS successive clients
     offering OFFERED_EACH bytes each: (start RSS, peak RSS, bytes accepted)."""
     offer(where, 1)

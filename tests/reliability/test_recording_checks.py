@@ -31,7 +31,7 @@ def _edited(tmp_path: Path, old: bytes, new: bytes) -> Path:
     (b'"frame":50,"tick":50,"time":"1"', b'"frame":50,"tick":50,"time":"21/20"'),  # a time
     (b'"frames":92,"time":"46/25"', b'"frames":92,"time":"47/25"'),                 # the end's
 ])
-def test_an_altered_tick_or_time_fails_the_check(tmp_path: Path, capsys,  # noqa: ANN001
+def test_an_altered_tick_or_time_fails_the_check(tmp_path: Path, capsys,
                                                  old: bytes, new: bytes) -> None:
     path = _edited(tmp_path, old, new)
     read(path)  # the reader cannot know: the replay must
@@ -49,7 +49,7 @@ def test_an_altered_tick_or_time_fails_the_check(tmp_path: Path, capsys,  # noqa
     (b'"frame":50,"tick":50,"time":"1"', b'"frame":50,"tick":50,"time":"1/2"', "does not go"),
 ])
 def test_impossible_frames_and_times_are_refused_with_file_and_line(
-        tmp_path: Path, capsys, old: bytes, new: bytes, says: str) -> None:  # noqa: ANN001
+        tmp_path: Path, capsys, old: bytes, new: bytes, says: str) -> None:
     path = _edited(tmp_path, old, new)
     line = CA.read_bytes()[:CA.read_bytes().index(old)].count(b"\n") + 1
     with pytest.raises(SessionFileError, match=f":{line}:1: .*{says}"):

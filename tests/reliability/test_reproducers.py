@@ -32,7 +32,7 @@ def _write(tmp_path: Path, name: str, data: bytes | str) -> Path:
     return p
 
 
-def _raises(error: type[Exception], path: Path, reader, where: str = "") -> str:  # noqa: ANN001
+def _raises(error: type[Exception], path: Path, reader, where: str = "") -> str:
     with pytest.raises(error) as info:
         reader(path)
     text = str(info.value)
@@ -104,7 +104,7 @@ def test_4_checkpoint_coordinate_of_20_digits(tmp_path) -> None:
                                           (load_keyframe, KasFileError),
                                           (read_recording, RecordingError),
                                           (load_scene, SceneError)])
-def test_6_a_directory_is_not_a_file(tmp_path, reader, error) -> None:  # noqa: ANN001
+def test_6_a_directory_is_not_a_file(tmp_path, reader, error) -> None:
     d = tmp_path / "dir.rle"
     d.mkdir()
     assert "is a directory" in _raises(error, d, reader)

@@ -9,7 +9,7 @@ import sys
 
 import pytest
 
-from protocols.atomicfile import AtomicBatch, atomic_path, write_atomic
+from base.atomicfile import AtomicBatch, atomic_path, write_atomic
 
 
 def _dead_pid() -> int:

@@ -47,7 +47,7 @@ def _one_clean_line(err: str, path: Path) -> None:
 
 @pytest.mark.parametrize("writer", sorted(WRITERS))
 @pytest.mark.parametrize("fault", ["full", "read-only", "directory"])
-def test_a_write_fault_is_one_line_naming_the_users_path(tmp_path: Path, capsys,  # noqa: ANN001
+def test_a_write_fault_is_one_line_naming_the_users_path(tmp_path: Path, capsys,
                                                          writer: str, fault: str) -> None:
     argv, name = WRITERS[writer]
     if fault == "directory":
@@ -68,7 +68,7 @@ def test_a_write_fault_is_one_line_naming_the_users_path(tmp_path: Path, capsys,
         assert {p.name for p in folder.iterdir()} <= {name, "filler"}  # no temporaries
 
 
-def test_a_failed_headless_save_exits_non_zero_saying_why(tmp_path: Path, capsys) -> None:  # noqa: ANN001
+def test_a_failed_headless_save_exits_non_zero_saying_why(tmp_path: Path, capsys) -> None:
     from apps.kas import files
     from apps.kas.editor import Editor
 
@@ -82,11 +82,11 @@ def test_a_failed_headless_save_exits_non_zero_saying_why(tmp_path: Path, capsys
         assert (folder / "k.kas").read_bytes() == old
 
 
-def test_a_write_failing_at_the_end_of_a_run_is_one_line(tmp_path: Path, capsys,  # noqa: ANN001
-                                                         monkeypatch) -> None:  # noqa: ANN001
+def test_a_write_failing_at_the_end_of_a_run_is_one_line(tmp_path: Path, capsys,
+                                                         monkeypatch) -> None:
     import protocols.session.format as session_format
 
-    def full(path, rec) -> None:  # noqa: ANN001
+    def full(path, rec) -> None:
         raise OSError(errno.ENOSPC, "No space left on device", str(path))
 
     monkeypatch.setattr(session_format, "write", full)

@@ -17,7 +17,7 @@ from pathlib import Path
 
 import pytest
 
-from protocols.atomicfile import AtomicBatch, atomic_path, sweep_stale, write_atomic
+from base.atomicfile import AtomicBatch, atomic_path, sweep_stale, write_atomic
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -17,7 +17,7 @@ def _commands() -> list[list[str]]:
             if line.startswith("    camlab88 ")]
 
 
-def test_the_three_commands_run_as_printed(tmp_path: Path, monkeypatch, capsys) -> None:  # noqa: ANN001
+def test_the_three_commands_run_as_printed(tmp_path: Path, monkeypatch, capsys) -> None:
     commands = _commands()
     assert [c[1] for c in commands] == ["ca", "replay", "replay"]
     (tmp_path / "examples").symlink_to(ROOT / "examples")  # run from "the repository top"

@@ -22,21 +22,21 @@ def test_at_least_a_kas_a_snooker_and_a_ca_recording_are_shipped() -> None:
 
 
 @pytest.mark.parametrize("name", SHIPPED)
-def test_shipped_recording_replays_with_check(name: str, capsys) -> None:  # noqa: ANN001
+def test_shipped_recording_replays_with_check(name: str, capsys) -> None:
     assert main(["replay", str(DATA / name), "--check", "--headless"]) == 0
     out = capsys.readouterr().out
     n = len(read(DATA / name).hashes) + 1
     assert f"all {n} screen hashes agree" in out
 
 
-def test_a_changed_program_fails_naming_the_first_differing_frame(monkeypatch,  # noqa: ANN001
+def test_a_changed_program_fails_naming_the_first_differing_frame(monkeypatch,
                                                                    capsys) -> None:
     from apps.ca.program.program import CAProgram
 
     idle = CAProgram._idle
     calls = [0]
 
-    def lose_one_generation(self) -> None:  # noqa: ANN001
+    def lose_one_generation(self) -> None:
         calls[0] += 1
         if calls[0] != 45:  # the 45th frame of the session does no work
             idle(self)
@@ -50,7 +50,7 @@ def test_a_changed_program_fails_naming_the_first_differing_frame(monkeypatch,  
     assert float(m[3]) == pytest.approx(int(m[2]) / 50)
 
 
-def test_window_input_is_recorded_and_replayed(tmp_path: Path, monkeypatch,  # noqa: ANN001
+def test_window_input_is_recorded_and_replayed(tmp_path: Path, monkeypatch,
                                                capsys) -> None:
     from emulator.host_input import PointerButton, PointerMove, Quit
     from emulator.window import Window
@@ -61,7 +61,7 @@ def test_window_input_is_recorded_and_replayed(tmp_path: Path, monkeypatch,  # n
               16: [PointerButton(310, 330, 2, False)], 40: [Quit()]}
     polls = [0]
 
-    def poll(self) -> list:  # noqa: ANN001
+    def poll(self) -> list:
         polls[0] += 1
         return script.get(polls[0], [])
 
@@ -80,7 +80,7 @@ def test_window_input_is_recorded_and_replayed(tmp_path: Path, monkeypatch,  # n
     assert "screen hashes agree" in capsys.readouterr().out
 
 
-def test_record_then_replay_writes_frames_and_screenshot(tmp_path: Path, monkeypatch,  # noqa: ANN001
+def test_record_then_replay_writes_frames_and_screenshot(tmp_path: Path, monkeypatch,
                                                          capsys) -> None:
     monkeypatch.chdir(tmp_path)
     (tmp_path / "e.events").write_text("move 300 300\nwait 3\nkey r\nwait 4\n")
@@ -96,7 +96,7 @@ def test_record_then_replay_writes_frames_and_screenshot(tmp_path: Path, monkeyp
     assert "e.events" in read(tmp_path / "c.session").files  # the input, by content
 
 
-def test_unreadable_recordings_are_refused(tmp_path: Path, capsys) -> None:  # noqa: ANN001
+def test_unreadable_recordings_are_refused(tmp_path: Path, capsys) -> None:
     good = (DATA / "sigma_run.session").read_bytes()
     cases = {
         "truncated": (good[: len(good) // 2].rsplit(b"\n", 1)[0] + b"\n", "truncated"),
@@ -114,7 +114,7 @@ def test_unreadable_recordings_are_refused(tmp_path: Path, capsys) -> None:  # n
     assert "cannot read" in capsys.readouterr().err
 
 
-def test_a_replay_never_writes_outside_its_scratch_directory(tmp_path: Path, monkeypatch,  # noqa: ANN001
+def test_a_replay_never_writes_outside_its_scratch_directory(tmp_path: Path, monkeypatch,
                                                              capsys) -> None:
     script = Path(__file__).resolve().parents[1] / "data" / "kas_front" / "path.txt"
     lib, out = tmp_path / "lib", tmp_path / "elsewhere" / "p.kas"

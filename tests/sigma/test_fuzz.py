@@ -61,7 +61,7 @@ def _mutate(data: bytes, ops: list[tuple[int, int, int]]) -> bytes:
        st.lists(st.tuples(st.integers(0, 2), st.integers(0, 10**6), st.integers(0, 255)),
                 min_size=1, max_size=12),
        st.sampled_from(["t5684", "t5688"]))
-def test_terminal_survives_mutated_driver_streams(base: bytes, ops, model: str) -> None:  # noqa: ANN001
+def test_terminal_survives_mutated_driver_streams(base: bytes, ops, model: str) -> None:
     t = Terminal(model)
     t.feed(_mutate(base, ops))
     assert t.frame().shape == (512, 768, 3)

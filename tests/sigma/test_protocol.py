@@ -26,12 +26,12 @@ from protocols.sigma.abbreviated import AgsPointEncoder, encode_points
 from protocols.sigma.orders import Kind
 
 
-def _sample_args(spec) -> tuple[int, ...]:  # noqa: ANN001
+def _sample_args(spec) -> tuple[int, ...]:
     return tuple(f.maximum - (k % 3) for k, f in enumerate(spec.fields))
 
 
 @pytest.mark.parametrize("spec", ORDERS, ids=[o.code for o in ORDERS])
-def test_every_order_round_trips_through_the_table(spec) -> None:  # noqa: ANN001
+def test_every_order_round_trips_through_the_table(spec) -> None:
     e = Encoder()
     args = _sample_args(spec)
     data = e.order(spec.code, *args)

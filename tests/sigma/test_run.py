@@ -15,7 +15,7 @@ from emulator.sigma.host_input import to_terminal
 from protocols.sigma import Encoder
 
 
-def _feed(events: list, term: Terminal) -> None:  # noqa: ANN001
+def _feed(events: list, term: Terminal) -> None:
     for ev in events:
         to_terminal(ev, term)
 

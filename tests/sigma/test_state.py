@@ -62,7 +62,7 @@ def test_partial_state_is_saved_and_restored() -> None:
     assert s["mode"] == "ags" and s["ags"][5] > 0 and s["coord_digits"] == 4
 
 
-def _edit(saved: bytes, fn) -> bytes:  # noqa: ANN001
+def _edit(saved: bytes, fn) -> bytes:
     off = len(MAGIC)
     n = int.from_bytes(saved[off:off + 4], "big")
     header = json.loads(saved[off + 4:off + 4 + n])

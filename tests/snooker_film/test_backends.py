@@ -63,7 +63,7 @@ def test_local_pool_survives_a_killed_worker(tmp_path: Path) -> None:
     assert frame_bytes(tmp_path, tasks) == _in_process(tasks, tmp_path / "ref")
 
 
-def _in_process(tasks: list, out: Path) -> dict[int, bytes]:  # noqa: ANN001
+def _in_process(tasks: list, out: Path) -> dict[int, bytes]:
     from apps.snooker.film.backends import InProcess
 
     scene = break_scene()

@@ -18,7 +18,7 @@ from tests.snooker_film.helpers import BREAK, SCRIPT
     measured="one command: camera script -> views -> 40 rendered frames -> a 25 frames/s MP4 "
              "and GIF; a second run renders nothing",
     verdict="agrees (a video file stands in for the single-frame video device or movie camera)")
-def test_the_pipeline_in_one_command(tmp_path: Path, capsys) -> None:  # noqa: ANN001
+def test_the_pipeline_in_one_command(tmp_path: Path, capsys) -> None:
     out = tmp_path / "shot.mp4"
     args = ["snooker", "film", str(BREAK), str(SCRIPT), "--out", str(out), "--gif",
             str(tmp_path / "shot.gif"), "--size", "48x32", "--workers", "1"]
@@ -36,7 +36,7 @@ def test_the_pipeline_in_one_command(tmp_path: Path, capsys) -> None:  # noqa: A
     assert "0 rendered, 40 already there" in capsys.readouterr().err
 
 
-def test_a_bad_script_renders_nothing(tmp_path: Path, capsys) -> None:  # noqa: ANN001
+def test_a_bad_script_renders_nothing(tmp_path: Path, capsys) -> None:
     bad = tmp_path / "bad.ccl"
     bad.write_text(":\nfrom frame 1 until frame 40;\nobserver at (1, 2);\n")
     code = main(["snooker", "film", str(BREAK), str(bad), "--out", str(tmp_path / "s.mp4")])

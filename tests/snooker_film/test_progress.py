@@ -21,5 +21,5 @@ def test_the_bar_shows_done_rate_and_time_left() -> None:
     assert out.getvalue().endswith("250/250 4.8 frames/s 0 s left\n")
 
 
-def test_quiet_when_stderr_is_not_a_terminal(capsys) -> None:  # noqa: ANN001
+def test_quiet_when_stderr_is_not_a_terminal(capsys) -> None:
     assert progress_bar("film") is None  # pytest captures stderr: not a terminal

@@ -17,7 +17,7 @@ from apps.snooker.film.task import FrameTask, encode_png, scene_digest
 from tests.snooker_film.helpers import SIZE, break_scene, frame_bytes, small_tasks
 
 
-def _film(tasks: list[FrameTask], out: Path, backend: object = None):  # noqa: ANN202
+def _film(tasks: list[FrameTask], out: Path, backend: object = None):
     scene = break_scene()
     return render_film(tasks, out, backend or InProcess(scene), scene_digest(scene))
 

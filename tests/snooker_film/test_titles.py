@@ -53,7 +53,7 @@ def test_the_word_is_spelt_and_the_table_is_invisible(title: tuple) -> None:
     assert not np.array_equal(first, img)
 
 
-def _project(scene, view, w, h):  # noqa: ANN001, ANN202
+def _project(scene, view, w, h):
     from apps.snooker.render.pinhole import Pinhole
 
     pin = Pinhole.of(np.asarray(view.observer), np.asarray(view.viewpoint), view.focal_mm,

@@ -27,7 +27,7 @@ def make() -> str:
 
 
 if __name__ == "__main__":
-    from protocols.atomicfile import write_atomic
+    from base.atomicfile import write_atomic
 
     write_atomic(OUT, make(), encoding="ascii")
     print(f"wrote {OUT}")

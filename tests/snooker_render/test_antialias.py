@@ -11,7 +11,7 @@ from apps.snooker.render import kernels as K
 SUB = 64  # supersamples per pixel side for the exact reference
 
 
-def _exact(inside, h: int, w: int) -> np.ndarray:  # noqa: ANN001
+def _exact(inside, h: int, w: int) -> np.ndarray:
     s = (np.arange(SUB) + 0.5) / SUB
     ys = (np.arange(h)[:, None, None, None] + s[None, None, :, None])
     xs = (np.arange(w)[None, :, None, None] + s[None, None, None, :])
@@ -56,7 +56,7 @@ def test_polygon_edges_against_exact_areas() -> None:
     img = np.zeros((44, 44, 1))
     K.polygon(img, verts, np.ones(1))
 
-    def inside(x, y):  # noqa: ANN001, ANN202
+    def inside(x, y):
         ok = np.ones_like(x, dtype=bool)
         for k in range(4):
             (ax, ay), (bx, by) = verts[k], verts[(k + 1) % 4]

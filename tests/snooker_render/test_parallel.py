@@ -13,9 +13,9 @@ import pytest
 
 from apps.snooker.render.scene import load_scene
 from apps.snooker.render.sequence import render_sequence, select_views
+from base.png import frame_path, png_bytes
 from camlab88.cli import main
 from camlab88.commands.snooker.render import RECORD
-from protocols.png import frame_path, png_bytes
 from tests.snooker_render.helpers import BREAK, VIEWS, break_views
 
 FIRST, LAST = 5, 8

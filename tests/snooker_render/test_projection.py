@@ -29,7 +29,7 @@ def test_rays_run_back_through_the_projected_points() -> None:
     assert np.allclose(along, pts, atol=1e-9)
 
 
-def _coverage_centroids(scene, view):  # noqa: ANN001, ANN202
+def _coverage_centroids(scene, view):
     """Each ball's coverage map (drawn over black and over white: cov = 1 - (w - b)) and
     its coverage-weighted centroid in screen pixels."""
     g = frame_geometry(scene, np.array(view.observer), np.array(view.viewpoint),

@@ -36,7 +36,7 @@ def sent() -> dict[str, tuple]:
     measured="pixels of fill colour outside the anti-aliased edges on the emulated T5688: period "
              "mode 20-33 a frame, software-Bresenham mode 0 (docs/perf/render.md)",
     verdict="agrees")
-def test_period_leaks_and_fixed_does_not(sent) -> None:  # noqa: ANN001
+def test_period_leaks_and_fixed_does_not(sent) -> None:
     period, fixed = sent["period"][0], sent["fixed"][0]
     assert fixed.leaks == 0 and fixed.gaps == 0
     assert np.array_equal(fixed.screen, fixed.frame.intended)
@@ -45,7 +45,7 @@ def test_period_leaks_and_fixed_does_not(sent) -> None:  # noqa: ANN001
     assert np.array_equal(period.frame.intended, fixed.frame.intended)
 
 
-def test_leaking_pixels_are_polygon_colour_just_outside_an_edge(sent) -> None:  # noqa: ANN001
+def test_leaking_pixels_are_polygon_colour_just_outside_an_edge(sent) -> None:
     period = sent["period"][0]
     screen, meant = period.screen, period.frame.intended
     ys, xs = np.nonzero((screen != meant) & np.isin(screen, list(period.frame.flat_colours)))
@@ -59,7 +59,7 @@ def test_leaking_pixels_are_polygon_colour_just_outside_an_edge(sent) -> None:  
     assert len(fills) < len(ys)  # a few polygon colours, many pixels
 
 
-def test_the_stream_is_only_sigma_orders(sent) -> None:  # noqa: ANN001
+def test_the_stream_is_only_sigma_orders(sent) -> None:
     for mode in ("period", "fixed"):
         frame, term, session = sent[mode]
         data = session.host.setup() + frame.frame.data
@@ -85,7 +85,7 @@ def test_the_stream_is_only_sigma_orders(sent) -> None:  # noqa: ANN001
     measured="line time = bytes x 10 / 9600: 175-306 s a frame (docs/perf/render.md); the "
              "Bresenham cure costs about 1.5 times the line time",
     verdict="agrees")
-def test_line_time_is_the_bytes_at_9600_baud(sent) -> None:  # noqa: ANN001
+def test_line_time_is_the_bytes_at_9600_baud(sent) -> None:
     for mode in ("period", "fixed"):
         frame = sent[mode][0]
         assert frame.line_seconds == pytest.approx(len(frame.frame.data) * 10 / 9600)
@@ -93,7 +93,7 @@ def test_line_time_is_the_bytes_at_9600_baud(sent) -> None:  # noqa: ANN001
     assert sent["fixed"][0].line_seconds > sent["period"][0].line_seconds
 
 
-def test_fixed_mode_on_the_terminal_shows_the_host_picture_through_the_lut(sent) -> None:  # noqa: ANN001, E501
+def test_fixed_mode_on_the_terminal_shows_the_host_picture_through_the_lut(sent) -> None:
     frame, term, session = sent["fixed"]
     shown = term.frame()
     assert np.array_equal(shown, session.host.palette.lut[frame.frame.intended])
@@ -104,7 +104,7 @@ def test_fixed_mode_on_the_terminal_shows_the_host_picture_through_the_lut(sent)
     "anti-alias along the lines the Sigma draws",
     measured="adapted mode: 0 leaking pixels, bytes within 1 % of the period mode's",
     verdict="agrees")
-def test_adapted_anti_aliases_the_firmware_lines_no_leaks_at_period_cost(sent) -> None:  # noqa: ANN001, E501
+def test_adapted_anti_aliases_the_firmware_lines_no_leaks_at_period_cost(sent) -> None:
     period, adapted = sent["period"][0], sent["adapted"][0]
     assert adapted.leaks == 0 and adapted.gaps == 0
     assert np.array_equal(adapted.screen, adapted.frame.intended)

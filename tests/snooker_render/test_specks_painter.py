@@ -45,7 +45,7 @@ def test_balls_at_rest_keep_their_specks_and_moving_balls_turn() -> None:
     assert not np.allclose(m[-1][moved], np.eye(3))
 
 
-def _kinds(items: list) -> list[str]:  # noqa: ANN001
+def _kinds(items: list) -> list[str]:
     out = []
     for it in items:
         if isinstance(it, BallItem):

@@ -87,7 +87,7 @@ def cpu_seconds(pid: int) -> float:
     return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
 
-def wait_for(predicate, timeout: float, every: float = 0.05) -> bool:  # noqa: ANN001
+def wait_for(predicate, timeout: float, every: float = 0.05) -> bool:
     end = time.monotonic() + timeout
     while time.monotonic() < end:
         if predicate():

@@ -51,7 +51,7 @@ class _Server:
         self._thread.join(5)
         self._sock.close()
 
-    def __enter__(self):  # noqa: ANN204
+    def __enter__(self):
         return self
 
     def __exit__(self, *exc: object) -> None:

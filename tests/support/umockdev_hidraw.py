@@ -158,7 +158,7 @@ class Handler(UMockdev.IoctlBase):
         super().__init__()
         self.tablet, self.k = tablet, interface
 
-    def do_handle_ioctl(self, client) -> bool:  # noqa: ANN001
+    def do_handle_ioctl(self, client) -> bool:
         request, arg = client.get_request(), client.get_arg()
         descriptor = self.tablet.interfaces[self.k]
         if request == HIDIOCGRDESCSIZE:
@@ -175,7 +175,7 @@ class Handler(UMockdev.IoctlBase):
         client.complete(0, 0)
         return True
 
-    def do_handle_read(self, client) -> bool:  # noqa: ANN001
+    def do_handle_read(self, client) -> bool:
         if not self.tablet.plugged:
             client.complete(-1, errno.EIO)
         else:
@@ -183,7 +183,7 @@ class Handler(UMockdev.IoctlBase):
             self.tablet.pending.append((self.k, client, time.monotonic()))
         return True
 
-    def do_handle_write(self, client) -> bool:  # noqa: ANN001
+    def do_handle_write(self, client) -> bool:
         client.complete(len(client.get_arg().data), 0)  # output reports: taken, ignored
         return True
 

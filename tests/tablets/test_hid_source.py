@@ -73,7 +73,7 @@ def _install(monkeypatch, device: FakeDevice, rows: list[dict]) -> None:
     install_hid(monkeypatch, module)
 
 
-def install_hid(monkeypatch, module) -> None:  # noqa: ANN001
+def install_hid(monkeypatch, module) -> None:
     """The stand-in as both hidapi modules (hidraw is tried first on Linux)."""
     monkeypatch.setitem(sys.modules, "hid", module)
     monkeypatch.setitem(sys.modules, "hidraw", module)

@@ -18,7 +18,7 @@ from tests.support.serial_servers import null_modem
 LIMIT = 10.0
 
 
-def _camlab88(args: list[str], **kw) -> tuple[subprocess.CompletedProcess[str], float]:  # noqa: ANN003
+def _camlab88(args: list[str], **kw) -> tuple[subprocess.CompletedProcess[str], float]:
     start = time.monotonic()
     done = subprocess.run([sys.executable, "-m", "camlab88", *args], capture_output=True,
                           text=True, timeout=60, **kw)

@@ -24,7 +24,7 @@ SCRIPT = ("0.2 move 0 0\n0.4 down 0 0\n0.6 down 1 1\n0.8 down 2 1\n1.0 up 2 1\n"
           "1.5 key f2\n2.5 wait\n")
 
 
-def _camlab88(args: list[str], cwd: Path, env: dict | None = None):  # noqa: ANN202
+def _camlab88(args: list[str], cwd: Path, env: dict | None = None):
     return subprocess.run([sys.executable, "-m", "camlab88", *args], cwd=cwd, text=True,
                           capture_output=True, timeout=180, env=dict(os.environ, **(env or {})))
 

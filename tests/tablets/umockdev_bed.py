@@ -41,7 +41,7 @@ def descriptor_hex(path: Path) -> str:
     return parse_hex_text(path.read_text(), str(path)).hex()
 
 
-def huion_h610(reports: list[bytes] | None = None, **extra) -> dict:  # noqa: ANN003
+def huion_h610(reports: list[bytes] | None = None, **extra) -> dict:
     """Huion H610: three interfaces, the pen (report 9) on interface 0."""
     d = DIGIMEND / "Huion_H610"
     ifs = [{"descriptor": descriptor_hex(d / f"rd/original{k}.txt")} for k in range(3)]

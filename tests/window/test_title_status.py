@@ -21,7 +21,7 @@ def captions(monkeypatch: pytest.MonkeyPatch) -> list[str]:
     seen: list[str] = []
     real = window.Window.set_caption
 
-    def spy(self, text: str) -> None:  # noqa: ANN001
+    def spy(self, text: str) -> None:
         seen.append(text)
         real(self, text)
     monkeypatch.setenv("SDL_VIDEODRIVER", "dummy")

@@ -7,10 +7,10 @@ import pytest
 from emulator import window as window_module
 
 
-def test_ctrl_c_in_the_test_card_quits_cleanly(monkeypatch, capsys) -> None:  # noqa: ANN001
+def test_ctrl_c_in_the_test_card_quits_cleanly(monkeypatch, capsys) -> None:
     monkeypatch.setattr("emulator.harness.display.display_available", lambda: True)
 
-    def interrupted(self):  # noqa: ANN001, ANN202
+    def interrupted(self):
         raise KeyboardInterrupt
 
     monkeypatch.setattr(window_module.Window, "poll", interrupted)
@@ -18,7 +18,7 @@ def test_ctrl_c_in_the_test_card_quits_cleanly(monkeypatch, capsys) -> None:  # 
     assert "interrupted" in capsys.readouterr().err
 
 
-def test_main_itself_still_raises_for_its_callers(monkeypatch) -> None:  # noqa: ANN001
+def test_main_itself_still_raises_for_its_callers(monkeypatch) -> None:
     monkeypatch.setattr("emulator.harness.display.display_available", lambda: True)
     monkeypatch.setattr(window_module.Window, "poll",
                         lambda self: (_ for _ in ()).throw(KeyboardInterrupt))

@@ -13,7 +13,7 @@ from a tree), ``plane`` (the 65536-square plane's wrapping and bounded edges) an
 same answers with far fewer, cheaper nodes.
 """
 
-from protocols.kernel_notice import announce_compiles
+from base.kernel_notice import announce_compiles
 
 _WARM = "apps.ca.hashlife.kernel_warmup:compile_kernels"  # both groups compile together
 # Cold compile times measured on the project's 2-core machine (docs/perf/startup.md).

@@ -114,11 +114,11 @@ class HashLife:
 
     name = "hashlife"
 
-    def unsupported(self, engine) -> str | None:  # noqa: ANN001 - an Engine
+    def unsupported(self, engine) -> str | None:  # an Engine
         """Why this engine's state cannot be advanced by HashLife (None: it can)."""
         return reason_against(engine.rules, engine.advance_area)
 
-    def advance(self, engine, generations: int, progress: Progress | None = None) -> None:  # noqa: ANN001
+    def advance(self, engine, generations: int, progress: Progress | None = None) -> None:
         reason = self.unsupported(engine)
         if reason is not None:
             raise ValueError(f"HashLife cannot step this plane: {reason}")
@@ -149,7 +149,7 @@ class HashLife:
                 progress(done, total)
 
     @staticmethod
-    def binary(engine) -> BitRun | None:  # noqa: ANN001
+    def binary(engine) -> BitRun | None:
         """The binary path for this engine's rules and plane (None: the generic path)."""
         bits = BitRun.of(engine.rules, engine.hashlife_memory)
         if bits is None or isinstance(engine.tree, BitTree):
@@ -161,7 +161,7 @@ class HashLife:
         return bits if ts.size == 0 or int(ts.max()) <= 1 else None
 
     @staticmethod
-    def _advance_bits(engine, bits: BitRun, total: int,  # noqa: ANN001
+    def _advance_bits(engine, bits: BitRun, total: int,
                       progress: Progress | None) -> None:
         """Jumps of up to MAX_JUMP generations, each any length (one pass of the tree)."""
         done = 0
@@ -183,7 +183,7 @@ class HashLife:
             j -= 1
         return j
 
-    def _plane(self, engine, run: _Run) -> int:  # noqa: ANN001
+    def _plane(self, engine, run: _Run) -> int:
         tree = engine.tree
         if tree is not None and tree.valid(run.store):
             return tree.node

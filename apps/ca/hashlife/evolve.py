@@ -189,7 +189,7 @@ def step(node, j, P, nodes, slots, meta, empty, R, G):
     return out
 
 
-def advance(node: int, j: int, params: np.ndarray, store, rules: np.ndarray,  # noqa: ANN001
+def advance(node: int, j: int, params: np.ndarray, store, rules: np.ndarray,
             grids: np.ndarray) -> int:
     """The centre of ``node`` after 2**j generations (-1: the table filled up)."""
     if store.nodes[node, RESJ] == j + 1:

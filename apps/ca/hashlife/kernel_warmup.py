@@ -1,7 +1,7 @@
 """Every HashLife kernel called once, with the argument types real runs use.
 
 The completion of the "HashLife" and "binary HashLife" kernel groups
-(protocols.kernel_notice): after the first cold compile of either, both compile, so Life
+(base.kernel_notice): after the first cold compile of either, both compile, so Life
 (the binary path, which also uses the generic tree's conversions) and a later rule set of
 more life-forms (the generic path: the Turing machine, the maze, the circuits) share one
 compile. Short runs through the engine itself, on both edge modes, with a node-table limit
@@ -47,7 +47,7 @@ def _tables() -> None:
     convert.cells(plane, generic.nodes, generic.empty)
     convert.near_seam(int(plane), 1, generic.nodes, generic.empty)
     generic.make_room([])
-    generic._grow()  # noqa: SLF001 - the rehash kernel, as a growing run calls it
+    generic._grow()  # the rehash kernel, as a growing run calls it
     bits = BitStore()
     bit_convert.cells(np.int64(bits.meta[EMPTY + bit_convert.PLANE_LEVEL]), bits.nodes,
                       bits.leaves, bits.meta)

@@ -191,7 +191,7 @@ class NoShape(ValueError):
     """An operation that cannot apply to a frame."""
 
 
-def _chain(frame: Drawing, c: int):  # noqa: ANN202
+def _chain(frame: Drawing, c: int):
     if not 1 <= c <= len(frame.chains):
         raise shape.MissingChain(f"line-chain {c} is missing (the frame has "
                                  f"{len(frame.chains)})")

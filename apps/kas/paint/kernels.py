@@ -17,7 +17,7 @@ _SIG_LABEL = "int64(uint8[:, ::1], int32[:, ::1], int32[::1])"
 _SIG_DEEP = "void(uint8[:, ::1], int32[:, ::1], int32[:, ::1], int64[::1], int32[::1])"
 
 
-def _label(wall, labels, stack):  # noqa: ANN001, ANN202 - numba kernel
+def _label(wall, labels, stack):  # numba kernel
     """labels: 0 on the wall, 1..n for the free components (scan-line fill). Returns n."""
     h, w = wall.shape
     for y in range(h):
@@ -58,7 +58,7 @@ def _label(wall, labels, stack):  # noqa: ANN001, ANN202 - numba kernel
     return n
 
 
-def _deepest(wall, labels, dist, best, depth):  # noqa: ANN001, ANN202 - numba kernel
+def _deepest(wall, labels, dist, best, depth):  # numba kernel
     """3-4 chamfer distance to the wall; best[k] = y*w+x of component k's deepest pixel
     (first in scan order on ties), depth[k] its distance (3 = one pixel)."""
     h, w = wall.shape
@@ -107,7 +107,7 @@ def _deepest(wall, labels, dist, best, depth):  # noqa: ANN001, ANN202 - numba k
 def _compile() -> None:
     from numba import njit
 
-    from protocols.kernel_notice import announce_compiles
+    from base.kernel_notice import announce_compiles
 
     # one line on stderr if the cache is cold: measured 8 s at load 7 on the 2-core machine
     announce_compiles("KAS painting", 4.0, __name__)

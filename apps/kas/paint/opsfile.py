@@ -30,7 +30,7 @@ from pathlib import Path
 from apps.kas.model import AnimSequence
 from apps.kas.paint.ops import Op, OpsFile, Seeds, op_key
 from apps.kas.paint.palette import Palette
-from protocols.atomicfile import write_atomic
+from base.atomicfile import write_atomic
 
 MAGIC = "KAS paint 1"
 _TOKEN = re.compile(r"\S+")

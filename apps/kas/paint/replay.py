@@ -20,7 +20,7 @@ import numpy as np
 from apps.kas.paint.areas import BUFFERS
 from apps.kas.paint.autopaint import Failure
 from apps.kas.paint.program import Line, PaintProgram
-from protocols.atomicfile import write_atomic
+from base.atomicfile import write_atomic
 
 
 @dataclass
@@ -85,7 +85,7 @@ def write_movie(images: list[np.ndarray], out: str | os.PathLike[str], fps: floa
 
 
 def periods(program: PaintProgram, terminal: object, baud: int = 9600, fps: float = 25,
-            frames: range | None = None):  # noqa: ANN201 - a generator of period indices
+            frames: range | None = None):  # a generator of period indices
     """The replay one 1/fps of line time at a time, for a run loop that shows the screen
     at that rate: yields k once the bytes that arrived in period k are fed to ``terminal``
     (anything with ``feed``).  Returns the number of painted frames shown."""

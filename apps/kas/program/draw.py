@@ -202,7 +202,7 @@ def clip_polyline(pts: np.ndarray, x0: float, y0: float, x1: float, y1: float
 
 
 def chain_prims(points_px: np.ndarray, colours: Sequence[int], clip: Box,
-                colour_of=lambda c: c) -> list[Prim]:  # noqa: ANN001
+                colour_of=lambda c: c) -> list[Prim]:
     """A line-chain (float pixels, per-point colours: the colour of the segment drawn *to*
     the point) as polylines of one colour each, clipped to ``clip``."""
     pts = np.asarray(points_px, dtype=np.float64).reshape(-1, 2)

@@ -235,7 +235,7 @@ class Session:
 
 def load_timed_script(path: Any) -> list[TimedEvent]:
     """Read and parse a script file; an unreadable or non-UTF-8 file names the file."""
-    from protocols.textinput import InputError, read_text
+    from base.textinput import InputError, read_text
 
     try:  # a directory, an unreadable file or a bad byte: named with its line and column
         text = read_text(path)

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from apps.snooker.camera.projection import FOCAL_MAX_MM, FOCAL_MIN_MM, Camera
-from protocols.atomicfile import write_atomic
+from base.atomicfile import write_atomic
 
 Vec3 = tuple[float, float, float]
 _TOKEN = re.compile(r"\S+")

@@ -26,7 +26,7 @@ from apps.snooker.camera_tool.panes import InfoPane, ScriptPane, Timeline
 from apps.snooker.camera_tool.watch import FileWatch
 from apps.snooker.table import BALL_NAMES
 from apps.snooker.visualiser.display import ViewDisplay
-from protocols.atomicfile import write_atomic
+from base.atomicfile import write_atomic
 from protocols.rainbow.client import SCREEN, RainbowClient
 from protocols.rainbow.events import LEFT, KeyEvent, MouseEvent
 

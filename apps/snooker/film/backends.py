@@ -92,7 +92,7 @@ class InProcess:
         f: Future = Future()
         try:
             f.set_result(self.render(self.scene, task))
-        except Exception as exc:  # noqa: BLE001 - reported per frame like a worker's error
+        except Exception as exc:  # reported per frame like a worker's error
             f.set_exception(exc)
         return f
 
@@ -156,7 +156,7 @@ class DaskCluster:
 
 
 @contextlib.contextmanager
-def _quiet(name: str):  # noqa: ANN202
+def _quiet(name: str):
     log = logging.getLogger(name)
     level = log.level
     log.setLevel(logging.CRITICAL)
@@ -172,7 +172,7 @@ def _as_concurrent(dask_future: Any) -> Future:
     def done(f: Any) -> None:
         try:
             out.set_result(f.result())
-        except BaseException as exc:  # noqa: BLE001 - KilledWorker, CancelledError, ...
+        except BaseException as exc:  # KilledWorker, CancelledError, ...
             out.set_exception(exc)
     dask_future.add_done_callback(done)
     return out

@@ -12,7 +12,7 @@ import threading
 from typing import Any
 
 
-def dask_setup(worker: Any) -> None:  # noqa: ARG001 - the preload interface
+def dask_setup(worker: Any) -> None:  # the preload interface
     if threading.current_thread() is threading.main_thread():
         signal.signal(signal.SIGINT, signal.SIG_IGN)
     logging.getLogger("distributed").setLevel(logging.ERROR)

@@ -25,7 +25,7 @@ from pathlib import Path
 from apps.snooker.film.backends import Backend
 from apps.snooker.film.pngcheck import png_size
 from apps.snooker.film.task import FrameTask, task_key
-from protocols.atomicfile import write_atomic
+from base.atomicfile import write_atomic
 
 
 class Manifest:

@@ -7,7 +7,7 @@ from numba import njit
 
 
 @njit(cache=True, nogil=True)
-def fill4(idx, sx, sy, colour, stack):  # noqa: ANN001, ANN201 - numba kernel
+def fill4(idx, sx, sy, colour, stack):  # numba kernel
     """Flood fill 4-connected from (sx, sy) over pixels whose index is not ``colour``,
     setting them to it (the firmware fill with boundary = fill colour, thesis 6.4.1).
     Returns the number of pixels set. ``stack`` needs 2 entries per pixel."""

@@ -17,7 +17,7 @@ from numba import njit
 
 
 @njit(cache=True, nogil=True)
-def _orientation(verts):  # noqa: ANN001, ANN202 - numba kernel
+def _orientation(verts):  # numba kernel
     """+1 for an anticlockwise polygon (k, 2), -1 clockwise, 0 degenerate (no area)."""
     k = verts.shape[0]
     area = 0.0
@@ -30,7 +30,7 @@ def _orientation(verts):  # noqa: ANN001, ANN202 - numba kernel
 
 
 @njit(cache=True, nogil=True)
-def polygon(img, verts, colour):  # noqa: ANN001, ANN201 - numba kernel
+def polygon(img, verts, colour):  # numba kernel
     """Blend a convex polygon (k, 2 screen pixels) of one colour over ``img`` (H, W, C) by
     its coverage of each pixel, Pitteway & Watkinson's area rule: along an edge whose x
     extent is the larger, a pixel's share of the area below it is the edge's height above
@@ -69,7 +69,7 @@ def polygon(img, verts, colour):  # noqa: ANN001, ANN201 - numba kernel
 
 
 @njit(cache=True, nogil=True)
-def row_range(verts, j, w):  # noqa: ANN001, ANN201 - numba kernel
+def row_range(verts, j, w):  # numba kernel
     """(i0, i1): the pixels of row j the polygon can touch (its x extent over the band of
     rows j - 1 .. j + 2, a pixel more each side), clipped to 0..w-1; i0 > i1 if none."""
     k = verts.shape[0]
@@ -95,7 +95,7 @@ def row_range(verts, j, w):  # noqa: ANN001, ANN201 - numba kernel
 
 
 @njit(cache=True, nogil=True)
-def full_span(verts, orient, yc):  # noqa: ANN001, ANN201 - numba kernel
+def full_span(verts, orient, yc):  # numba kernel
     """(x0, x1): the pixel centres on row centre yc that every edge covers wholly. Along a
     row each edge's 0.5 + d is linear in x, so each edge bounds the run on one side."""
     k = verts.shape[0]
@@ -127,7 +127,7 @@ def full_span(verts, orient, yc):  # noqa: ANN001, ANN201 - numba kernel
 
 
 @njit(cache=True, nogil=True)
-def coverage_at(verts, orient, xc, yc):  # noqa: ANN001, ANN201 - numba kernel
+def coverage_at(verts, orient, xc, yc):  # numba kernel
     """Coverage (0..1) of the pixel centred at (xc, yc) by the convex polygon (see polygon)."""
     k = verts.shape[0]
     excl = 0.0
@@ -151,7 +151,7 @@ def coverage_at(verts, orient, xc, yc):  # noqa: ANN001, ANN201 - numba kernel
 
 
 @njit(cache=True, nogil=True)
-def _ground(cam, x, y):  # noqa: ANN001, ANN202 - numba kernel
+def _ground(cam, x, y):  # numba kernel
     """Where the ray through screen (x, y) meets z = 0: (gx, gy, hit)."""
     f = cam[12]
     a = (x - cam[13] / 2.0) / f
@@ -168,14 +168,14 @@ def _ground(cam, x, y):  # noqa: ANN001, ANN202 - numba kernel
 
 
 @njit(cache=True, nogil=True)
-def _ellipse_q(e, gx, gy):  # noqa: ANN001, ANN202 - numba kernel
+def _ellipse_q(e, gx, gy):  # numba kernel
     du = (gx - e[0]) * e[2] + (gy - e[1]) * e[3]
     dv = -(gx - e[0]) * e[3] + (gy - e[1]) * e[2]
     return (du / e[4]) ** 2 + (dv / e[5]) ** 2
 
 
 @njit(cache=True, nogil=True)
-def shadows(occ, cam, ellipses, boxes, hl, hw, x0, y0):  # noqa: ANN001, ANN201 - numba kernel
+def shadows(occ, cam, ellipses, boxes, hl, hw, x0, y0):  # numba kernel
     """Ball shadows on the baize: for each ellipse row (cx, cy, ux, uy, a, b, light) in
     ground metres and its screen box (i0, j0, i1, j1), OR its coverage c into occ[light]
     (occ = c + (1 - c) * occ). Coverage from the ellipse's implicit function over its
@@ -220,7 +220,7 @@ B_KA, B_KD, B_KS, B_N, B_SPECK_COS, B_SPECK_MIX, B_LEN = 25, 26, 27, 28, 29, 30,
 
 
 @njit(cache=True, nogil=True)
-def ball(img, cam, b, lights, specks):  # noqa: ANN001, ANN201 - numba kernel
+def ball(img, cam, b, lights, specks):  # numba kernel
     """Blend one Phong-lit ball over ``img`` by its coverage of each pixel (thesis 6.4.1).
 
     The disc is the ball's radius projected at its centre's depth (the visualiser's disc);
@@ -272,7 +272,7 @@ def ball(img, cam, b, lights, specks):  # noqa: ANN001, ANN201 - numba kernel
 
 
 @njit(cache=True, nogil=True)
-def shade(b, lights, specks, nx, ny, nz, ox, oy, oz, r_px):  # noqa: ANN001, ANN201
+def shade(b, lights, specks, nx, ny, nz, ox, oy, oz, r_px):
     """Phong at the sphere point with world normal n (eye at o): ambient, diffuse, specular."""
     px = b[B_C] + b[B_R] * nx
     py = b[B_C + 1] + b[B_R] * ny
@@ -303,7 +303,7 @@ def shade(b, lights, specks, nx, ny, nz, ox, oy, oz, r_px):  # noqa: ANN001, ANN
 
 
 @njit(cache=True, nogil=True)
-def speck_mix(b, specks, nx, ny, nz, r_px):  # noqa: ANN001, ANN201 - numba kernel
+def speck_mix(b, specks, nx, ny, nz, r_px):  # numba kernel
     """How much of a speck covers the point with world normal n (anti-aliased over about a
     pixel's angle, 1 / r_px radians, at the disc's centre)."""
     # the normal in the ball's own frame: M^T n (M turns the ball's frame to the world)
@@ -322,7 +322,7 @@ def speck_mix(b, specks, nx, ny, nz, r_px):  # noqa: ANN001, ANN201 - numba kern
 
 
 @njit(cache=True, nogil=True)
-def dim(img, occ, removed, x0, y0):  # noqa: ANN001, ANN201 - numba kernel
+def dim(img, occ, removed, x0, y0):  # numba kernel
     """Take each light's shadowed share of the baize away: img -= sum_l occ_l * removed_l
     (occ covers img from (x0, y0)), never below black."""
     for j in range(occ.shape[1]):
@@ -335,7 +335,7 @@ def dim(img, occ, removed, x0, y0):  # noqa: ANN001, ANN201 - numba kernel
 
 
 @njit(cache=True, nogil=True)
-def encode(out, linear, table):  # noqa: ANN001, ANN201 - numba kernel
+def encode(out, linear, table):  # numba kernel
     """Linear light -> gamma-encoded uint8 through the gamma module's 65536-entry table."""
     n = table.shape[0] - 1
     for j in range(linear.shape[0]):
@@ -348,7 +348,7 @@ def encode(out, linear, table):  # noqa: ANN001, ANN201 - numba kernel
 
 # the wood parameter row (wood.py W_*)
 @njit(cache=True, nogil=True)
-def wood_polygon(img, verts, cam, p, lights, ambient):  # noqa: ANN001, ANN201 - numba kernel
+def wood_polygon(img, verts, cam, p, lights, ambient):  # numba kernel
     """A wooden face: coverage as ``polygon``; each pixel's colour from the point where its
     ray meets the face (normal constant, light and eye directions per pixel: Phong) and the
     grain there, anti-aliased by fading its contrast with the pixel's footprint."""
@@ -375,7 +375,7 @@ def wood_polygon(img, verts, cam, p, lights, ambient):  # noqa: ANN001, ANN201 -
 
 
 @njit(cache=True, nogil=True)
-def wood_shade(cam, p, lights, ambient, x, y):  # noqa: ANN001, ANN201 - numba kernel
+def wood_shade(cam, p, lights, ambient, x, y):  # numba kernel
     f = cam[12]
     a = (x - cam[13] / 2.0) / f
     b = (cam[14] / 2.0 - y) / f

@@ -16,7 +16,7 @@ _K: dict[str, Any] = {}
 _SIG = "void(uint8[:, ::1], float64[:, ::1], uint8)"
 
 
-def _fill(img, xy, value):  # noqa: ANN001, ANN202 - numba kernel
+def _fill(img, xy, value):  # numba kernel
     h, w = img.shape
     k = xy.shape[0]
     lo, hi = xy[0, 1], xy[0, 1]
@@ -48,7 +48,7 @@ def fill_convex(img: np.ndarray, xy: np.ndarray, value: int) -> None:
     if not _K:
         from numba import njit
 
-        from protocols.kernel_notice import announce_compiles
+        from base.kernel_notice import announce_compiles
 
         announce_compiles("snooker visualiser", 1.0, __name__)
         _K["fill"] = njit(_SIG, cache=True, nogil=True)(_fill)

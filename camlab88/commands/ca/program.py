@@ -83,7 +83,7 @@ def program(args: argparse.Namespace) -> int:
     return 0
 
 
-def _report_files(options) -> None:  # noqa: ANN001
+def _report_files(options) -> None:
     """Name the Log (and where its checkpoints go) that the run kept on disk."""
     if options.log is None:
         return
@@ -117,7 +117,7 @@ def _checkpoint(text: str) -> int:
         raise TriposArgsError(f"Checkpoint {text!r}: a number of generations") from None
 
 
-def _options(args: argparse.Namespace, preview: bool):  # noqa: ANN202
+def _options(args: argparse.Namespace, preview: bool):
     """The program's options; a screenshot (preview) run keeps no log and no checkpoints,
     so it never rewrites the user's files."""
     from apps.ca.program.program import Options
@@ -129,7 +129,7 @@ def _options(args: argparse.Namespace, preview: bool):  # noqa: ANN202
                    seed=args.seed)
 
 
-def _run(options, player, opts) -> dict:  # noqa: ANN001
+def _run(options, player, opts) -> dict:
     from apps.ca.program.program import CAProgram
     from emulator.harness import run
     from emulator.harness.rainbow import RainbowTarget

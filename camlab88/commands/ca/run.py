@@ -79,9 +79,9 @@ def _run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _write_png(engine, args: argparse.Namespace) -> bool:  # noqa: ANN001
+def _write_png(engine, args: argparse.Namespace) -> bool:
     from apps.ca.program.picture import picture
-    from protocols.png import write_png
+    from base.png import write_png
 
     try:
         write_png(picture(engine, args.zoom, args.monochrome), args.png)
@@ -92,7 +92,7 @@ def _write_png(engine, args: argparse.Namespace) -> bool:  # noqa: ANN001
     return True
 
 
-def _advance(engine, args: argparse.Namespace, progress) -> None:  # noqa: ANN001
+def _advance(engine, args: argparse.Namespace, progress) -> None:
     """Run ``args.generations``, printing statistics every ``args.every`` on the way."""
     done = 0
     while done < args.generations:

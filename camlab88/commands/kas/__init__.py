@@ -36,7 +36,7 @@ def front_options(p: argparse.ArgumentParser) -> None:
     add_run_options(p, stop_after=False)
 
 
-def prepare_front(args: argparse.Namespace, command: str):  # noqa: ANN201
+def prepare_front(args: argparse.Namespace, command: str):
     """Everything that can refuse a KAS program's run, before anything is written: the
     script read, the display rule applied.
     Returns what ``run_front`` needs."""
@@ -52,8 +52,8 @@ def prepare_front(args: argparse.Namespace, command: str):  # noqa: ANN201
     return events, opts
 
 
-def run_front(front, args: argparse.Namespace, command: str, keys: str,  # noqa: ANN001, ANN201
-              prepared=None):  # noqa: ANN001
+def run_front(front, args: argparse.Namespace, command: str, keys: str,
+              prepared=None):
     """Run a KAS program on an emulated T5684 over the line, on the harness: from a script
     and/or a window.  Returns the program's session (protocols side)."""
     from apps.kas.program.keyboard import KEY_BYTES

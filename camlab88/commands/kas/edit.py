@@ -44,7 +44,7 @@ def edit(args: argparse.Namespace) -> int:
         start = files.load_keyframe(target) if target.exists() else None
         over = files.load_drawing_or_frame(library.resolve(args.over)) if args.over else None
 
-        def save(drawing) -> None:  # noqa: ANN001
+        def save(drawing) -> None:
             if not preview:
                 try:
                     files.save_keyframe(target, drawing)
@@ -71,7 +71,7 @@ def recovery_file(target: Path) -> Path:
     return target.with_name(f"{target.stem}.recovered{target.suffix or '.kas'}")
 
 
-def _interrupted(front, target: Path, preview: bool) -> int:  # noqa: ANN001
+def _interrupted(front, target: Path, preview: bool) -> int:
     """Ctrl-C: unsaved edits go to a recovery file, named; FILE keeps its last save."""
     from apps.kas import files
 
@@ -90,7 +90,7 @@ def _interrupted(front, target: Path, preview: bool) -> int:  # noqa: ANN001
     return 130
 
 
-def _create(target: Path, empty) -> None:  # noqa: ANN001
+def _create(target: Path, empty) -> None:
     """``kas edit FILE`` makes FILE (an empty keyframe) if it is missing."""
     from apps.kas import files
 
@@ -102,14 +102,14 @@ def _create(target: Path, empty) -> None:  # noqa: ANN001
     print(f"{COMMAND}: created {target} (an empty keyframe)")
 
 
-def _run(front, args: argparse.Namespace, prepared):  # noqa: ANN001, ANN202
+def _run(front, args: argparse.Namespace, prepared):
     from camlab88.commands.kas import run_front
 
     keys = KEYS + ("; the tablet is the stylus" if args.tablet else "; the mouse is the stylus")
     return run_front(front, args, COMMAND, keys, prepared)
 
 
-def _report(ed, session, target: Path, saved: list[int], preview: bool,  # noqa: ANN001
+def _report(ed, session, target: Path, saved: list[int], preview: bool,
             discarded: bool = False) -> None:
     if preview:
         state = "screenshot run: nothing saved"

@@ -23,7 +23,7 @@ def _edit_script(args: argparse.Namespace) -> int:
     from apps.kas import files, library
     from apps.kas.editor import Editor
     from apps.kas.events import parse_script
-    from protocols.textinput import read_text  # a missing file named, not [Errno 2]
+    from base.textinput import read_text  # a missing file named, not [Errno 2]
 
     try:
         start = files.load_keyframe(library.resolve(args.start)) if args.start else None

@@ -55,12 +55,12 @@ def _written(out: Path, n: int) -> str:
     return f"{n} frames, {out} .. {last.name}"
 
 
-def _on_sigma(background: str):  # noqa: ANN202
+def _on_sigma(background: str):
     """Each frame drawn on a fresh emulated T5684 (16 colours, the terminal's own vectors)."""
     from apps.kas.program.viewer import still_bytes
     from emulator.sigma import Terminal
 
-    def on_sigma(frame):  # noqa: ANN001, ANN202
+    def on_sigma(frame):
         term = Terminal("t5684")
         term.feed(still_bytes(frame, background))
         return term.frame()

@@ -37,7 +37,7 @@ def _save(src: str, name: str, force: bool = False) -> int:
     existing NAME is kept unless ``force``)."""
     from apps.kas import library
     from apps.kas.program.file_kind import kind_of
-    from protocols.atomicfile import write_atomic
+    from base.atomicfile import write_atomic
 
     try:
         if not Path(src).is_file():

@@ -63,7 +63,7 @@ def path(args: argparse.Namespace) -> int:
     return 0
 
 
-def _interrupted(front, out: Path) -> int:  # noqa: ANN001
+def _interrupted(front, out: Path) -> int:
     """Ctrl-C: an unsaved path goes to a recovery file, named; --out keeps its last save."""
     import sys
 
@@ -85,7 +85,7 @@ def _interrupted(front, out: Path) -> int:  # noqa: ANN001
     return 130
 
 
-def _previous(args: argparse.Namespace):  # noqa: ANN202
+def _previous(args: argparse.Namespace):
     from apps.kas import files, library
 
     prev_file = library.resolve(args.previous) if args.previous else None
@@ -96,10 +96,10 @@ def _previous(args: argparse.Namespace):  # noqa: ANN202
     return files.load_path(prev_file) if prev_file is not None else None
 
 
-def _saver(args: argparse.Namespace, out: Path, ticks: Path):  # noqa: ANN202
+def _saver(args: argparse.Namespace, out: Path, ticks: Path):
     from apps.kas import files, library
 
-    def save(sample, timing) -> None:  # noqa: ANN001
+    def save(sample, timing) -> None:
         if args.screenshot is not None:  # a screenshot run never touches the user's files
             return
         files.save_path(out, sample)

@@ -24,7 +24,7 @@ def _path_script(args: argparse.Namespace) -> int:
     from apps.kas import files, library
     from apps.kas.events import parse_script
     from apps.kas.path_editor import PathEditor
-    from protocols.textinput import read_text  # a missing file named, not [Errno 2]
+    from base.textinput import read_text  # a missing file named, not [Errno 2]
 
     try:
         pe = PathEditor(files.load_drawing_or_frame(library.resolve(args.first)),

@@ -66,14 +66,14 @@ def _parts(specs: list[str]) -> list:
     return parts
 
 
-def _prompted(args: argparse.Namespace, parts: list):  # noqa: ANN202
+def _prompted(args: argparse.Namespace, parts: list):
     """The superimposer on the Sigma; the composite, saved, or None if not every start was
     answered (an error when a headless script leaves some unanswered)."""
     from apps.kas import files
     from apps.kas.program.superimpose_front import SuperimposeFront
     from camlab88.commands.kas import run_front
 
-    def save(seq, _starts) -> None:  # noqa: ANN001
+    def save(seq, _starts) -> None:
         if args.screenshot is None:  # a screenshot run never touches the user's files
             files.save_sequence(args.out, seq)
 

@@ -49,7 +49,7 @@ def _decode(args: argparse.Namespace) -> int:
         return 1
     lines: list[tuple[float, int, str]] = []
 
-    def show(ev) -> None:  # noqa: ANN001
+    def show(ev) -> None:
         text = f"{ev.time:12.6f} > {ev.offset:8d} {ev.order:<10} {json.dumps(ev.args)}"
         if ev.warning is not None:
             text += f"  !! {ev.kind}: {ev.warning}; expected {ev.expected}"

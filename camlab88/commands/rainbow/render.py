@@ -40,9 +40,9 @@ def render(args: argparse.Namespace) -> int:
     return _write(args, frame, text)
 
 
-def _write(args: argparse.Namespace, frame, text: str | None) -> int:  # noqa: ANN001
-    from protocols.atomicfile import write_atomic
-    from protocols.png import write_png
+def _write(args: argparse.Namespace, frame, text: str | None) -> int:
+    from base.atomicfile import write_atomic
+    from base.png import write_png
 
     try:
         write_png(frame, args.out)

@@ -28,9 +28,9 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
 
 
 def replay(args: argparse.Namespace) -> int:
+    from base.png import write_png
     from emulator.rainbow.device import Rainbow
     from emulator.rainbow.executor import Executor
-    from protocols.png import write_png
     from protocols.rainbow.recording import Recording, RecordingError
     from protocols.rainbow.recording import replay as replay_on
 
@@ -94,7 +94,7 @@ def _session(args: argparse.Namespace) -> int:
     return 1 if bad else 0
 
 
-def _window(args: argparse.Namespace):  # noqa: ANN202
+def _window(args: argparse.Namespace):
     from emulator.harness import choose_headless
 
     if choose_headless(COMMAND, args.headless, "checking the replies"):
@@ -104,8 +104,8 @@ def _window(args: argparse.Namespace):  # noqa: ANN202
     return Window("camlab88 Rainbow (replay)", (768, 576), scale=args.scale)
 
 
-def _show(window):  # noqa: ANN001, ANN202
-    def on_frame(frame) -> None:  # noqa: ANN001
+def _show(window):
+    def on_frame(frame) -> None:
         if window is not None:
             window.show(frame)
             window.poll()

@@ -60,7 +60,7 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _finish(args: argparse.Namespace, target, tablet) -> None:  # noqa: ANN001
+def _finish(args: argparse.Namespace, target, tablet) -> None:
     """Close the tablet (if still open) and save --record-stream, however the run ended."""
     if target is None:
         if tablet is not None:
@@ -73,7 +73,7 @@ def _finish(args: argparse.Namespace, target, tablet) -> None:  # noqa: ANN001
         print(f"{COMMAND}: recorded the command stream to {args.record_stream}")
 
 
-def _target(args: argparse.Namespace, opts, tablet, trace):  # noqa: ANN001, ANN202
+def _target(args: argparse.Namespace, opts, tablet, trace):
     from emulator.harness.rainbow import RainbowTarget
     from emulator.rainbow import Rainbow
     from emulator.rainbow.session import in_process
@@ -103,7 +103,7 @@ def _target(args: argparse.Namespace, opts, tablet, trace):  # noqa: ANN001, ANN
     return target
 
 
-def _open_tablet(text: str | None, record: bool):  # noqa: ANN202
+def _open_tablet(text: str | None, record: bool):
     """The --tablet source (on a tape with --record; from the recording's tape in a replay,
     where the device is never opened)."""
     if not text:
@@ -117,7 +117,7 @@ def _open_tablet(text: str | None, record: bool):  # noqa: ANN202
         raise SystemExit(f"{COMMAND}: --tablet {text}: {exc}") from None
 
 
-def _poll_tablet(tablet, session):  # noqa: ANN001, ANN202
+def _poll_tablet(tablet, session):
     """Feed new tablet reports to the device; a lost tablet is reported once and dropped."""
     from emulator.rainbow.host_input import tablet_event
     from protocols.tablets.sources import SourceLost

@@ -71,7 +71,7 @@ def serve(args: argparse.Namespace) -> int:
     return 1 if trace.failed else 0
 
 
-def _window(scale: int):  # noqa: ANN202
+def _window(scale: int):
     import sys
 
     from emulator.window import Window
@@ -80,14 +80,14 @@ def _window(scale: int):  # noqa: ANN202
     return Window("camlab88 Rainbow (serving)", (768, 576), scale=scale)
 
 
-def _on_frame(window, device):  # noqa: ANN001, ANN202
+def _on_frame(window, device):
     """Each frame the served program makes: shown, and window input sent to the device."""
     from emulator.host_input import Quit
     from emulator.rainbow.host_input import RainbowHostInput
 
     host = RainbowHostInput()
 
-    def on_frame(frame) -> None:  # noqa: ANN001
+    def on_frame(frame) -> None:
         if window is None:
             return
         window.show(frame)

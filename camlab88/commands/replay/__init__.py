@@ -59,7 +59,7 @@ def _abs(path: Path | None) -> Path | None:
     return None if path is None else path.resolve()
 
 
-def _verdict(args: argparse.Namespace, ctx, status: int, said: str) -> int:  # noqa: ANN001
+def _verdict(args: argparse.Namespace, ctx, status: int, said: str) -> int:
     name = args.recording
     if ctx.runs == 0:
         return fail(COMMAND, f"{name}: the recorded command ran no program "

@@ -68,7 +68,7 @@ def render(args: argparse.Namespace) -> int:
     return 0
 
 
-def _settings(baud: int):  # noqa: ANN202
+def _settings(baud: int):
     from protocols.link import LineSettings
 
     try:
@@ -77,8 +77,8 @@ def _settings(baud: int):  # noqa: ANN202
         raise _die(str(exc)) from None
 
 
-def _png(frame, path: Path) -> None:  # noqa: ANN001
-    from protocols.png import write_png
+def _png(frame, path: Path) -> None:
+    from base.png import write_png
 
     try:
         write_png(frame, path)
@@ -86,10 +86,10 @@ def _png(frame, path: Path) -> None:  # noqa: ANN001
         raise _die(f"cannot write {path}: {exc.strerror or exc}") from None
 
 
-def _write_frames(feed, term, got, settings, period: Fraction,  # noqa: ANN001
+def _write_frames(feed, term, got, settings, period: Fraction,
                   directory: Path) -> int:
+    from base.png import frame_path
     from protocols.link.sniff import frame_count
-    from protocols.png import frame_path
 
     try:  # a damaged recording time must not mean hours of PNGs
         frame_count(_duration(got, settings), int(1 / period), name=str(directory))
@@ -103,14 +103,14 @@ def _write_frames(feed, term, got, settings, period: Fraction,  # noqa: ANN001
     return count
 
 
-def _duration(got, settings) -> Fraction:  # noqa: ANN001
+def _duration(got, settings) -> Fraction:
     """Line time the frames must cover: raw bytes back to back, or the recording's last time."""
     if isinstance(got, bytes):
         return Fraction(len(got)) * settings.char_time
     return Fraction(got.duration)
 
 
-def _periods(got, settings, period: Fraction):  # noqa: ANN001, ANN202
+def _periods(got, settings, period: Fraction):
     """(k, bytes arrived in period k): raw bytes sent back to back from t = 0, or a
     recording's host-to-device bytes at their recorded arrival times."""
     from protocols.link import VirtualClock, chunks_by_period
@@ -128,7 +128,7 @@ def _periods(got, settings, period: Fraction):  # noqa: ANN001, ANN202
         k += 1
 
 
-def _say_skipped(term, stream: Path, data: bytes) -> None:  # noqa: ANN001
+def _say_skipped(term, stream: Path, data: bytes) -> None:
     from protocols.sigma.orders import GRAPHICS_FLAG
 
     s = term.stats

@@ -94,7 +94,7 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _finish(target, line, recorder, args: argparse.Namespace) -> None:  # noqa: ANN001
+def _finish(target, line, recorder, args: argparse.Namespace) -> None:
     if target.bridge is not None:
         target.bridge.close()
     if recorder is not None:
@@ -103,7 +103,7 @@ def _finish(target, line, recorder, args: argparse.Namespace) -> None:  # noqa: 
         print(f"{COMMAND}: recorded the line to {args.record_line}", flush=True)
 
 
-def _stream_and_settings(args: argparse.Namespace):  # noqa: ANN202
+def _stream_and_settings(args: argparse.Namespace):
     from protocols.link import LineSettings
     from protocols.sigma.stream_file import StreamFileError, read_stream_file
 
@@ -121,7 +121,7 @@ def _stream_and_settings(args: argparse.Namespace):  # noqa: ANN202
         raise _die(str(exc)) from None
 
 
-def _line(args: argparse.Namespace, settings):  # noqa: ANN001, ANN202
+def _line(args: argparse.Namespace, settings):
     from protocols.link import SerialLine, VirtualClock
 
     recorder = None
@@ -137,7 +137,7 @@ def _line(args: argparse.Namespace, settings):  # noqa: ANN001, ANN202
     return SerialLine(settings, clock=VirtualClock(), recorder=recorder), recorder
 
 
-def _target(args: argparse.Namespace, line, got):  # noqa: ANN001, ANN202
+def _target(args: argparse.Namespace, line, got):
     from emulator.harness.sigma_line import SigmaLineTarget
     from emulator.sigma import Terminal
     from protocols.link.replay import replay_into
@@ -159,7 +159,7 @@ def _report(kind: str, detail: str) -> None:
     print(f"camlab88 sigma: {kind}: {detail}", file=sys.stderr, flush=True)
 
 
-def _open_bridge(args: argparse.Namespace, settings, endpoint):  # noqa: ANN001, ANN202
+def _open_bridge(args: argparse.Namespace, settings, endpoint):
     """The line's outside end; an unusable port or URL is a one-line error (exit 1)."""
     from protocols.link import transports as tr
 
@@ -182,7 +182,7 @@ def _open_bridge(args: argparse.Namespace, settings, endpoint):  # noqa: ANN001,
     return bridge
 
 
-def _serial_bridge(args: argparse.Namespace, settings, endpoint):  # noqa: ANN001, ANN202
+def _serial_bridge(args: argparse.Namespace, settings, endpoint):
     from protocols.link import transports as tr
 
     bridge = tr.SerialUrlBridge(args.serial, settings, endpoint=endpoint)

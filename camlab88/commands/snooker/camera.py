@@ -54,7 +54,7 @@ def camera(args: argparse.Namespace) -> int:
     return 0
 
 
-def _run(shot, script, player, opts, plugins=()):  # noqa: ANN001, ANN202
+def _run(shot, script, player, opts, plugins=()):
     from apps.snooker.camera_tool.tool import CameraTool
     from emulator.harness import run
     from emulator.harness.rainbow import RainbowTarget

@@ -141,12 +141,12 @@ def summary(out: Path, gif: Path | None, n: int, note: str, views: Path, frames:
     return f"{COMMAND}: {n} frames -> {films} ({note}); views {views}, frames {frames}/"
 
 
-def _sigma_frames(args: argparse.Namespace, scene, views, frames: Path) -> str:  # noqa: ANN001
+def _sigma_frames(args: argparse.Namespace, scene, views, frames: Path) -> str:
     from apps.snooker.film.schedule import frame_file
     from apps.snooker.film.task import encode_png
     from apps.snooker.render.sequence import choose_palette, render_sequence
+    from base.atomicfile import write_atomic
     from emulator.sigma import Terminal
-    from protocols.atomicfile import write_atomic
 
     palette = choose_palette(scene, views, "fixed")
     frames.mkdir(parents=True, exist_ok=True)

@@ -59,7 +59,7 @@ def _exists(path: str | None) -> bool:
     return bool(path) and Path(path).exists()  # type: ignore[arg-type]
 
 
-def _run(args: argparse.Namespace, opts, restore, player):  # noqa: ANN001, ANN202
+def _run(args: argparse.Namespace, opts, restore, player):
     from apps.snooker.program.program import Program
     from emulator.harness import run
     from emulator.harness.rainbow import RainbowTarget
@@ -78,7 +78,7 @@ def _run(args: argparse.Namespace, opts, restore, player):  # noqa: ANN001, ANN2
     return program, run(target, opts)
 
 
-def _report(program, frames: int) -> None:  # noqa: ANN001
+def _report(program, frames: int) -> None:
     st = program.session.status()
     saved = f"; saved {', '.join(map(str, program.saved))}" if program.saved else ""
     print(f"camlab88 snooker: {frames} display frames; at frame {st['frame']} "

@@ -88,7 +88,7 @@ def _add_sequence_options(s: argparse.ArgumentParser) -> None:
                    help="also film the frames as a GIF at 25 frames/s")
 
 
-def _movie(ext: str):  # noqa: ANN202 - an argparse type
+def _movie(ext: str):  # an argparse type
     def check(text: str) -> Path:
         if Path(text).suffix.lower() != ext:
             raise argparse.ArgumentTypeError(f"{text}: expected a {ext} file")
@@ -125,7 +125,7 @@ def render(args: argparse.Namespace) -> int:
         return fail(COMMAND, exc)
 
 
-def _render(args: argparse.Namespace, scene, views) -> int:  # noqa: ANN001
+def _render(args: argparse.Namespace, scene, views) -> int:
     from apps.snooker.film.movie import write_movie
     from apps.snooker.film.pipeline import frame_files
 
@@ -143,7 +143,7 @@ def _render(args: argparse.Namespace, scene, views) -> int:  # noqa: ANN001
     return 0
 
 
-def _truecolour(args: argparse.Namespace, scene, views, out: Path) -> str:  # noqa: ANN001
+def _truecolour(args: argparse.Namespace, scene, views, out: Path) -> str:
     from apps.snooker.film.pipeline import FilmLook, shoot
     from apps.snooker.film.progress import progress_bar
 
@@ -166,17 +166,17 @@ class SigmaFrames:
     palette_sha: str
     palette: object = field(repr=False, compare=False)
 
-    def __call__(self, scene, task) -> bytes:  # noqa: ANN001
+    def __call__(self, scene, task) -> bytes:
         from apps.snooker.render.sequence import render_sequence
+        from base.png import png_bytes
         from emulator.sigma import Terminal
-        from protocols.png import png_bytes
 
         f = next(render_sequence(scene, [task.view], self.mode, (768, 512), self.palette,
                                  lambda: Terminal("t5688"), self.specks))
         return png_bytes(f.image)
 
 
-def sigma_frames(mode: str, specks: bool, palette) -> SigmaFrames:  # noqa: ANN001
+def sigma_frames(mode: str, specks: bool, palette) -> SigmaFrames:
     import hashlib
 
     import numpy as np
@@ -185,7 +185,7 @@ def sigma_frames(mode: str, specks: bool, palette) -> SigmaFrames:  # noqa: ANN0
     return SigmaFrames(mode, specks, hashlib.sha256(lut).hexdigest()[:32], palette)
 
 
-def _sigma_parallel(args: argparse.Namespace, scene, views, out: Path,  # noqa: ANN001
+def _sigma_parallel(args: argparse.Namespace, scene, views, out: Path,
                     render: SigmaFrames) -> str:
     from apps.snooker.film.pipeline import FilmLook, shoot
     from apps.snooker.film.progress import progress_bar
@@ -197,7 +197,7 @@ def _sigma_parallel(args: argparse.Namespace, scene, views, out: Path,  # noqa: 
             + "".join(f"; frame {f} retried ({why})" for f, why in r.retries))
 
 
-def _sigma(args: argparse.Namespace, scene, views, out: Path) -> str:  # noqa: ANN001
+def _sigma(args: argparse.Namespace, scene, views, out: Path) -> str:
     from apps.snooker.render.sequence import choose_palette
 
     palette = choose_palette(scene, views, args.palette,
@@ -210,7 +210,7 @@ def _sigma(args: argparse.Namespace, scene, views, out: Path) -> str:  # noqa: A
     return stats
 
 
-def _record(scene, views, out: Path, render: SigmaFrames) -> None:  # noqa: ANN001
+def _record(scene, views, out: Path, render: SigmaFrames) -> None:
     """The frames just drawn, in the resume record (a parallel rerun skips them)."""
     from apps.snooker.film.pipeline import FilmLook, film_digest
     from apps.snooker.film.schedule import Manifest, frame_file
@@ -224,8 +224,8 @@ def _record(scene, views, out: Path, render: SigmaFrames) -> None:  # noqa: ANN0
     record.save()
 
 
-def _sigma_sequential(args: argparse.Namespace, scene, views, out: Path,  # noqa: ANN001
-                      palette) -> str:  # noqa: ANN001
+def _sigma_sequential(args: argparse.Namespace, scene, views, out: Path,
+                      palette) -> str:
     from apps.snooker.render.sequence import render_sequence
     from emulator.png import frame_path, write_png
     from emulator.sigma import Terminal

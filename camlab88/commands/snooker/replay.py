@@ -46,7 +46,7 @@ def replay(args: argparse.Namespace) -> int:
     return 0
 
 
-def _run(pos, on, opts):  # noqa: ANN001, ANN202
+def _run(pos, on, opts):
     from apps.snooker.program.program import Program
     from emulator.harness import run
     from emulator.harness.rainbow import RainbowTarget

@@ -66,7 +66,7 @@ def simulate(args: argparse.Namespace) -> int:
     return 0
 
 
-def _start(args: argparse.Namespace):  # noqa: ANN202 - a Session, or a message (str)
+def _start(args: argparse.Namespace):  # a Session, or a message (str)
     from apps.snooker.layout import break_off_direction
     from apps.snooker.program.setup import start_from, table_with
     from apps.snooker.session import Session
@@ -96,7 +96,7 @@ def _start(args: argparse.Namespace):  # noqa: ANN202 - a Session, or a message 
     return session
 
 
-def _report(session, cp, args: argparse.Namespace) -> None:  # noqa: ANN001
+def _report(session, cp, args: argparse.Namespace) -> None:
     from apps.snooker.table import BALL_NAMES
 
     st = session.status()

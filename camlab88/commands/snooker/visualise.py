@@ -51,13 +51,13 @@ def visualise(args: argparse.Namespace) -> int:
     return 0
 
 
-def status(vis, target) -> str:  # noqa: ANN001
+def status(vis, target) -> str:
     """The window's title bar: the checkpoint frame shown, the virtual time, the keys."""
     return (f"frame {vis.frame} ({vis.index + 1} of {len(vis.views)}), "
             f"t = {float(target.time()):.2f} s | {KEYS}")
 
 
-def _run(shot, views, opts, frames_dir):  # noqa: ANN001, ANN202
+def _run(shot, views, opts, frames_dir):
     from apps.snooker.visualiser.program import Visualiser
     from emulator.harness import run
     from emulator.harness.loop import Plugin
@@ -80,7 +80,7 @@ def _run(shot, views, opts, frames_dir):  # noqa: ANN001, ANN202
         written: int | None = None
         count = 0
 
-        def on_frame(self, harness, frame) -> None:  # noqa: ANN001
+        def on_frame(self, harness, frame) -> None:
             if frames_dir is not None and vis.drawn is not None and vis.drawn != self.written:
                 write_png(frame, frame_path(frames_dir, vis.views[vis.drawn].frame))
                 self.written = vis.drawn

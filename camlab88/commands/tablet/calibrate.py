@@ -48,7 +48,7 @@ def calibrate(args: argparse.Namespace) -> int:
     return 0
 
 
-def _touch(session, source, emu, seconds: float) -> bool:  # noqa: ANN001
+def _touch(session, source, emu, seconds: float) -> bool:
     """Read reports until both corners are touched; False on a timeout or a lost tablet."""
     from protocols.tablets.sources import SourceLost
 
@@ -76,7 +76,7 @@ def _touch(session, source, emu, seconds: float) -> bool:  # noqa: ANN001
     return True
 
 
-def _hint(source, seen: int) -> str:  # noqa: ANN001
+def _hint(source, seen: int) -> str:
     """What to check when no corner came: nothing at all from the device, or no press."""
     if seen:
         return (f"{seen} reports came but no corner was pressed: touch each corner with the "

@@ -47,7 +47,7 @@ def emulate(args: argparse.Namespace) -> int:
     return 0
 
 
-def _loop(emu, args: argparse.Namespace) -> None:  # noqa: ANN001
+def _loop(emu, args: argparse.Namespace) -> None:
     start = time.monotonic()
     while emu.step() or (args.demo and emu.frames < 300):
         if args.seconds is not None and time.monotonic() - start >= args.seconds:

@@ -57,7 +57,7 @@ class _Held:
 
     RETRY = 0.5
 
-    def __init__(self, source, spec, on_raw) -> None:  # noqa: ANN001
+    def __init__(self, source, spec, on_raw) -> None:
         self.source, self.spec, self.on_raw = source, spec, on_raw
         self._next_try = 0.0
         self._opened_at = time.monotonic()
@@ -114,7 +114,7 @@ def _refuse_before_opening(source_text: str) -> None:
         choose_headless(COMMAND, False, None, "use SOURCE?drive=demo, or a real tablet")
 
 
-def _maybe_window(emu, args: argparse.Namespace) -> None:  # noqa: ANN001
+def _maybe_window(emu, args: argparse.Namespace) -> None:
     """The emulated tablet's window: needed for the mouse (the one display rule)."""
     from emulator.harness import choose_headless
 
@@ -127,7 +127,7 @@ def _maybe_window(emu, args: argparse.Namespace) -> None:  # noqa: ANN001
               "e: eraser); close it to quit", file=sys.stderr)
 
 
-def _loop(held: _Held, emu, args: argparse.Namespace) -> int:  # noqa: ANN001
+def _loop(held: _Held, emu, args: argparse.Namespace) -> int:
     from protocols.tablets.sources import SourceLost
 
     count, idle, start = 0, 0, time.monotonic()

@@ -1,7 +1,7 @@
 """``camlab88 warm-up``: compile every numba kernel now, once, with a progress line.
 
 After install each kernel group compiles on the first run that needs it (one notice line;
-protocols.kernel_notice). ``warm-up`` does all of it at once instead — useful before a demo
+base.kernel_notice). ``warm-up`` does all of it at once instead — useful before a demo
 to an audience, or in CI so every test process loads the kernels from one cache. Each step
 is a group's own completion (every kernel of the group called once) or, for groups without
 one, a small command run in a scratch directory, in this process, so the kernels land in the
@@ -46,7 +46,7 @@ def _run(args: argparse.Namespace) -> int:
     import tempfile
     import time
 
-    from protocols.kernel_notice import complete_pending, run_completion
+    from base.kernel_notice import complete_pending, run_completion
 
     start = time.perf_counter()
     with tempfile.TemporaryDirectory(prefix="camlab88-warm-up-") as scratch:
@@ -66,7 +66,7 @@ def _run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _step(step: str | tuple[str, ...], run_completion) -> str:  # noqa: ANN001
+def _step(step: str | tuple[str, ...], run_completion) -> str:
     """'' when the step worked, else why not."""
     if isinstance(step, str):
         run_completion(step)

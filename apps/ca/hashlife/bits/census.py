@@ -13,7 +13,7 @@ MASK_LEVEL = 6  # nodes of 64 cells square keep their row / column occupancy in 
 HALF = np.uint64(0xFFFF)
 
 
-def count(node: int, store) -> int:  # noqa: ANN001 - a BitStore
+def count(node: int, store) -> int:  # a BitStore
     """Live cells of the plane ``node``."""
     memo = np.full(store.count, -1, np.int64)
     return int(population(np.int64(node), np.int64(PLANE_LEVEL), memo, store.nodes,
@@ -87,7 +87,7 @@ def _occupy(node, level, y0, x0, axis, out, memo, done, nodes, leaves, meta):
             _occupy(se, k, y0 + h, x0 + h, axis, out, memo, done, nodes, leaves, meta)
 
 
-def occupied(node: int, axis: int, store) -> np.ndarray:  # noqa: ANN001 - a BitStore
+def occupied(node: int, axis: int, store) -> np.ndarray:  # a BitStore
     """Sorted indices of the rows (axis 0) or columns (axis 1) holding a live cell."""
     words = np.zeros(1 << (PLANE_LEVEL - MASK_LEVEL), np.uint64)
     memo = np.zeros(store.count, np.uint64)

@@ -189,7 +189,7 @@ def cells(node, nodes, leaves, meta):
     return out[order]
 
 
-def to_tree(xs: np.ndarray, ys: np.ndarray, store) -> int:  # noqa: ANN001 - a BitStore
+def to_tree(xs: np.ndarray, ys: np.ndarray, store) -> int:  # a BitStore
     """The plane's node of the cells at (xs, ys); -1 if a table filled up."""
     xs = np.ascontiguousarray(xs, np.int64)
     ys = np.ascontiguousarray(ys, np.int64)
@@ -199,7 +199,7 @@ def to_tree(xs: np.ndarray, ys: np.ndarray, store) -> int:  # noqa: ANN001 - a B
                      store.leaves, store.lslots, store.meta))
 
 
-def grid_to_tree(top: int, left: int, grid: np.ndarray, store) -> int:  # noqa: ANN001
+def grid_to_tree(top: int, left: int, grid: np.ndarray, store) -> int:
     """The plane's node of a uint8 grid's live cells, its cell (0, 0) at (left, top);
     -1 if a table filled up."""
     return int(build_grid(np.int64(top), np.int64(left), np.ascontiguousarray(grid, np.uint8),

@@ -146,7 +146,7 @@ def step(node, T, nodes, slots, leaves, lslots, meta, R, G):
     return out
 
 
-def advance(node: int, T: int, store, R: np.ndarray, G: np.ndarray) -> int:  # noqa: ANN001
+def advance(node: int, T: int, store, R: np.ndarray, G: np.ndarray) -> int:
     """The centre of ``node`` after T generations (-1: a table filled up)."""
     known = int(_known(np.int64(node), np.int64(T), np.int64(store.nodes[node, LEVEL]),
                        store.nodes, store.meta))

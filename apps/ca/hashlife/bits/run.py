@@ -88,7 +88,7 @@ class BitRun:
         self.store.trees.add(tree)
         return tree
 
-    def plane(self, engine) -> int:  # noqa: ANN001 - an Engine
+    def plane(self, engine) -> int:  # an Engine
         """The engine's plane as a node: its tree if that is ours and valid, else built
         from its cells (all 1s)."""
         tree = engine.tree

@@ -25,7 +25,7 @@ to be, and inside llvmlite that can be a destructor or callback whose exception 
 printed ("Exception ignored ...") while the build carries on and the program exits 0. While
 the outermost compile runs, SIGINT instead ends the process at once with status 130 and one
 line on stderr. Nothing is lost that would have been kept: numba writes its cache files by
-rename, and the project writes user files atomically (protocols.atomicfile).
+rename, and the project writes user files atomically (base.atomicfile).
 
 It lives in protocols/ because apps, emulator and the command line may all import it; it
 imports numba only when a kernel module (which has imported numba already) registers.
@@ -40,7 +40,7 @@ import threading
 from dataclasses import dataclass, field
 from typing import Any
 
-from protocols.kernel_load import lean_cache_loads
+from base.kernel_load import lean_cache_loads
 
 INTERRUPTED_STATUS = 130  # the shell's status for a process ended by SIGINT
 
@@ -156,7 +156,7 @@ def complete_pending() -> None:
         done.add(group.completion or "")
         try:
             run_completion(group.completion or "")
-        except Exception as exc:  # noqa: BLE001 - a later call still compiles its own kernel
+        except Exception as exc:  # a later call still compiles its own kernel
             print(f"camlab88: the rest of the {group.label} kernels were not compiled ahead "
                   f"({type(exc).__name__}: {exc})", file=sys.stderr, flush=True)
 

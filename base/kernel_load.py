@@ -49,7 +49,7 @@ def lean_cache_loads() -> bool:
             nrt.rtsys.initialize(target_context)
             with self._guard_against_spurious_io_errors():
                 return self._load_overload(sig, target_context)
-        except Exception:  # noqa: BLE001 - any surprise: numba's own path decides
+        except Exception:  # any surprise: numba's own path decides
             return original(self, sig, target_context)
 
     load_overload.__doc__ = original.__doc__
