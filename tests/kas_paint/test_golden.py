@@ -44,9 +44,9 @@ FIG_OPS = [Op("fill", 10, chains=(1,)), Op("fill", 1, chains=(2,)), Op("fill", 1
 @pytest.mark.claim(
     "§3.3: figure 3.8, a painted outline image",
     measured="golden image of a painted frame on the emulated T5688",
-    verdict="differs: outlines are drawn after every fill, so the head's outline shows "
-            "through the hat filled in front of it, where §3.3's fill order would hide it (the "
-            "drawing is ours; the figure's artwork is not reproduced)")
+    verdict="agrees: painted in order (head, eyes, smile, hat), the hat hides the head's "
+            "outline under it as §3.3's fill order says (the drawing is ours; the figure's "
+            "artwork is not reproduced)")
 def test_figure_38_painted_outline_image() -> None:
     term = Terminal("t5688")
     prog = PaintProgram(figure_38(), OpsFile(ops=FIG_OPS))

@@ -3,16 +3,20 @@
 Per frame, into one working area: the area cleared (a solid block of 0 on all planes); each
 step in front-to-back order: walls drawn on all planes in 0x80 (so they are the only pixels
 of that value), the firmware filler (``KK80``) started at every seed, stopping at them,
-writing the fill colour into the five fill planes only; the cover drawn in the fill colour;
-then the outlines into their two planes, chains coloured by ``line`` operations taken out
-of the outline planes, and the highlight plane cleared (``KW80 DA``).
+writing the fill colour into the five fill planes and clearing the outline planes under it
+(a fill is in front of every outline drawn before it, ``occlusion``); the cover drawn in the
+fill colour; then the outlines into their two planes, less the pieces a later fill hides,
+chains coloured by ``line`` operations taken out of the outline planes, and the highlight
+plane cleared (``KW80 DA``).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from apps.kas.paint import occlusion
 from apps.kas.paint.autopaint import FramePlan, Step
+from apps.kas.paint.outlines import Run
 from apps.kas.paint.planes import ALL_PLANES, FILL_MASK, HIGHLIGHT, OUTLINE_MASK, OUTLINE_SHIFT
 from protocols.sigma import Encoder
 
@@ -55,7 +59,10 @@ def step_bytes(enc: Encoder, s: Step, origin: tuple[int, int]) -> bytes:
         out += enc.write_mask(ALL_PLANES) + enc.colour8(HIGHLIGHT)
         for w in s.walls:
             out += poly(enc, w, origin)
-        out += enc.write_mask(FILL_MASK) + enc.colour8(s.colour)
+        # a fill in a colour hides the outlines under it (their planes cleared as it spreads)
+        hides = s.op.kind == "fill" and s.colour != 0
+        out += enc.write_mask(FILL_MASK | OUTLINE_MASK if hides else FILL_MASK)
+        out += enc.colour8(s.colour)
         for x, y in s.seeds:
             out += enc.move(x + origin[0], y + origin[1]) + enc.fill8(HIGHLIGHT)
     if s.cover:
@@ -67,15 +74,20 @@ def step_bytes(enc: Encoder, s: Step, origin: tuple[int, int]) -> bytes:
     return bytes(out)
 
 
-def outline_bytes(enc: Encoder, runs: list[tuple[int, np.ndarray]], steps: list[Step],
+def outline_bytes(enc: Encoder, runs: list[Run], steps: list[Step],
                   origin: tuple[int, int]) -> bytes:
+    """The outlines in front-to-back order's sense: each less what a later fill hides."""
     out = bytearray(enc.write_mask(OUTLINE_MASK))
     last = -1
-    for slot, px in runs:
-        if slot != last:
-            out += enc.colour8(slot << OUTLINE_SHIFT)
-            last = slot
-        out += poly(enc, px, origin)
+    depth, covers = occlusion.depths(steps), occlusion.covers(steps)
+    for slot, px, chain in runs:
+        d = depth.get(chain)
+        hidden_by = [] if d is None else [c for c in covers if c.depth > d]
+        for piece in occlusion.visible_pieces(px, hidden_by):
+            if slot != last:
+                out += enc.colour8(slot << OUTLINE_SHIFT)
+                last = slot
+            out += poly(enc, piece, origin)
     unline = [u for s in steps for u in s.unline]
     if unline:
         out += enc.colour8(0)
@@ -84,7 +96,7 @@ def outline_bytes(enc: Encoder, runs: list[tuple[int, np.ndarray]], steps: list[
     return bytes(out)
 
 
-def frame_bytes(enc: Encoder, plan: FramePlan, runs: list[tuple[int, np.ndarray]],
+def frame_bytes(enc: Encoder, plan: FramePlan, runs: list[Run],
                 box: tuple[int, int, int, int]) -> bytes:
     """One whole painted frame into the area ``box``."""
     origin = (box[0], box[1])

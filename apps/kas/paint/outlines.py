@@ -7,6 +7,7 @@ line test's two-plane buffers do, §3.1.4).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -42,18 +43,26 @@ def plan(seq: AnimSequence) -> OutlinePlan:
     return OutlinePlan(slots, tuple(rgb))  # type: ignore[arg-type]
 
 
-def runs(frame: Drawing, outline: OutlinePlan) -> list[tuple[int, np.ndarray]]:
-    """(slot, area pixels) polylines: each chain cut where its segments change slot (a
-    point's colour is that of the segment drawn to it, §3.1.1)."""
+class Run(NamedTuple):
+    """One outline polyline: its slot, its area pixels, the 1-based chain it is part of."""
+
+    slot: int
+    px: np.ndarray
+    chain: int
+
+
+def runs(frame: Drawing, outline: OutlinePlan) -> list[Run]:
+    """(slot, area pixels, chain) polylines: each chain cut where its segments change slot
+    (a point's colour is that of the segment drawn to it, §3.1.1)."""
     out = []
-    for c in frame.chains:
+    for j, c in enumerate(frame.chains, start=1):
         px = areas.to_px(c.points)
         slots = np.array([outline.slot(int(p)) for p in c.colours])
         if len(px) == 1:
-            out.append((int(slots[0]), px))
+            out.append(Run(int(slots[0]), px, j))
             continue
         seg = slots[1:]
         cut = np.flatnonzero(np.diff(seg)) + 1
         for a, b in zip(np.r_[0, cut], np.r_[cut, len(seg)], strict=True):
-            out.append((int(seg[a]), areas.dedup(px[a:b + 1])))
+            out.append(Run(int(seg[a]), areas.dedup(px[a:b + 1]), j))
     return out
