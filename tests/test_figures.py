@@ -18,7 +18,8 @@ ROOT = Path(__file__).resolve().parents[1]
 SHIPPED = sorted(FIGURES_DIR.glob("fig-*.session"))
 ALLOWED = {"--headless", "--events", "--record", "--pattern", "--rules", "--script",
            "--background", "--ops", "--baud", "--seed",
-           "--out", "--no-library"}  # kas path's --out: a replay writes it to its scratch
+           "--out", "--no-library",  # kas path's --out: a replay writes it to its scratch
+           "--model", "--in", "--seconds"}  # sigma run fed a stream the maker computed
 
 
 def _cli(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
@@ -37,7 +38,13 @@ def test_every_recording_is_a_listed_figure_with_its_script() -> None:
         assert number in CAPTIONS, path.name
         assert f'"{number}": (' in maker, f"{number} is not made by make_figures.py"
         scripts = [FIGURES_DIR / "scripts" / f"fig-{number}.{ext}" for ext in ("events", "script")]
-        assert any(s.is_file() for s in scripts) or f'"{number}": (VISUALISE, None)' in maker
+        from_inputs = f'"{number}": (VISUALISE, None)' in maker or \
+            f'"{number}": (SIGMA, None)' in maker
+        assert any(s.is_file() for s in scripts) or from_inputs
+
+
+def test_every_screen_figure_ships() -> None:
+    assert [p.stem.removeprefix("fig-") for p in SHIPPED] == sorted(CAPTIONS)
 
 
 @pytest.mark.parametrize("path", SHIPPED, ids=[p.stem for p in SHIPPED])

@@ -335,6 +335,41 @@ def fig_3_6() -> str:
             "up 0.3 0.3\ndown -1 0.7\nup -1 0.7\ndown -2 0.7\nup -2 0.7\n")
 
 
+def _antialias() -> dict[str, bytes]:
+    """Figure 6.8: the anti-aliasing demonstration as Sigma orders, made by the renderer's
+    own coverage kernel (apps/snooker/render/antialias_figure.py)."""
+    from apps.snooker.render.antialias_figure import screen
+
+    return {"antialias.sigma": screen()}
+
+
+# Figure 6.9's view: the baulk colours and the cue ball close up, the blue and the pack
+# beyond, so each ball's four shadows and highlights (the canopy's four bulbs) show.
+TABLE_VIEW = "1 -1.9 -0.5 0.45 -0.9 0.0 0.0 50"
+TABLE_BAUD = 38400  # the picture is the same at any speed; 9600 would be 150 s of line
+
+
+def _shaded_table() -> dict[str, bytes]:
+    """Figure 6.9: the opening position rendered by the period renderer (§6.4) as the Sigma
+    orders it sends the T5688, setup and one frame."""
+    from apps.snooker.camera.views import parse_views
+    from apps.snooker.render.palette import fixed_palette
+    from apps.snooker.render.scene import Scene
+    from apps.snooker.render.sigma_host import SigmaHost
+    from apps.snooker.session import Session
+
+    scene = Scene.from_checkpoint(Session.new_game().checkpoint())
+    host = SigmaHost(scene, fixed_palette(scene), "period")
+    frame = host.frame(parse_views(TABLE_VIEW + "\n")[0])
+    return {"table.sigma": host.setup() + frame.data}
+
+
+def _seconds(name: str, data: bytes, baud: int) -> list[str]:
+    """``--seconds``: the stream's line time (10 bits a byte) and a little more."""
+    return ["--in", name, "--baud", str(baud), "--seconds",
+            str(int(len(data) * 10 / baud) + 2)]
+
+
 KAS = ["kas", "edit", "figure.kas", "--headless"]
 CA = ["ca", "program", "--headless"]
 SNOOKER = ["snooker", "play", "--headless"]
@@ -342,13 +377,18 @@ PAINT = ["kas", "paint", "face.kas", "--headless"]
 PATH = ["kas", "path", "flag_a.kas", "flag_b.kas", "--out", "flag_path.kas", "--no-library",
         "--headless"]
 VISUALISE = ["snooker", "visualise", "pink_shot.cp", "example.views", "--headless"]
+SIGMA = ["sigma", "run", "--model", "t5688", "--headless"]  # + _seconds(): a stream's length
 INPUTS: dict[str, Callable[[], dict[str, bytes]]] = {
-    "3.6": _pair, "3.7": _face_sequence, "3.8": _face_sequence, "6.7": _pink_shot}
+    "3.6": _pair, "3.7": _face_sequence, "3.8": _face_sequence, "6.7": _pink_shot,
+    "6.8": _antialias, "6.9": _shaded_table}
+BAUD = {"6.8": 9600, "6.9": TABLE_BAUD}
 FIGURES: dict[str, tuple[list[str], Callable[[], str] | None]] = {
     "3.6": (PATH, fig_3_6),
     "3.7": (PAINT, fig_3_7),
     "3.8": (PAINT, fig_3_8),
     "6.7": (VISUALISE, None),
+    "6.8": (SIGMA, None),
+    "6.9": (SIGMA, None),
     "3.1": (KAS, fig_3_1),
     "3.2": (KAS, fig_3_2),
     "6.1": (SNOOKER, fig_6_1),
@@ -383,6 +423,8 @@ def make(number: str) -> Path:
         tmp = Path(scratch)
         for name, data in INPUTS.get(number, dict)().items():
             (tmp / name).write_bytes(data)
+            if argv is SIGMA:
+                argv = [*argv, *_seconds(name, data, BAUD[number])]
         env = {**os.environ, "PYTHONPATH": str(ROOT)}
         for k in ("DISPLAY", "WAYLAND_DISPLAY", "SDL_VIDEODRIVER"):
             env.pop(k, None)
