@@ -346,7 +346,7 @@ def _antialias() -> dict[str, bytes]:
 # Figure 6.9's view: the baulk colours and the cue ball close up, the blue and the pack
 # beyond, so each ball's four shadows and highlights (the canopy's four bulbs) show.
 TABLE_VIEW = "1 -1.9 -0.5 0.45 -0.9 0.0 0.0 50"
-TABLE_BAUD = 38400  # the picture is the same at any speed; 9600 would be 150 s of line
+TABLE_BAUD = 115200  # the picture is the same at any speed; 9600 would be 156 s of line
 
 
 def _shaded_table() -> dict[str, bytes]:
