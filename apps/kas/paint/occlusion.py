@@ -18,7 +18,7 @@ more, no plane more.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -26,20 +26,33 @@ from apps.kas.paint import seeds, vector
 from apps.kas.paint.autopaint import Step
 
 
-@dataclass(frozen=True)
 class Cover:
-    """One hiding fill: the pixels it paints over (its window of the wall map)."""
+    """One hiding fill: the pixels it paints over, worked out only when an outline that
+    could be under it reaches its bounding box."""
 
-    depth: int
-    mask: np.ndarray  # bool [y - y0, x - x0]
-    origin: tuple[int, int]
+    def __init__(self, depth: int, step: Step) -> None:
+        self.depth, self._step = depth, step
+        allp = np.concatenate(step.walls)
+        self.box = (*allp.min(axis=0).tolist(), *allp.max(axis=0).tolist())
+
+    def overlaps(self, px: np.ndarray) -> bool:
+        x0, y0, x1, y1 = self.box
+        lo, hi = px.min(axis=0), px.max(axis=0)
+        return bool(lo[0] <= x1 and hi[0] >= x0 and lo[1] <= y1 and hi[1] >= y0)
+
+    @cached_property
+    def _mask(self) -> tuple[np.ndarray, tuple[int, int]]:
+        f = seeds.faces(self._step.walls)
+        filled = [f.label_at(x, y) for x, y in self._step.seeds]
+        return (f.labels == 0) | np.isin(f.labels, [k for k in filled if k > 0]), f.origin
 
     def hides(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
-        lx, ly = x - self.origin[0], y - self.origin[1]
-        h, w = self.mask.shape
+        mask, (ox, oy) = self._mask
+        lx, ly = x - ox, y - oy
+        h, w = mask.shape
         ok = (lx >= 0) & (lx < w) & (ly >= 0) & (ly < h)
         out = np.zeros(len(x), dtype=bool)
-        out[ok] = self.mask[ly[ok], lx[ok]]
+        out[ok] = mask[ly[ok], lx[ok]]
         return out
 
 
@@ -54,16 +67,9 @@ def depths(steps: list[Step]) -> dict[int, int]:
 
 
 def covers(steps: list[Step]) -> list[Cover]:
-    """The fills that hide what is behind them, each with the pixels it paints."""
-    out = []
-    for i, s in enumerate(steps):
-        if s.op.kind != "fill" or s.colour == 0 or not s.walls:
-            continue
-        f = seeds.faces(s.walls)
-        filled = [f.label_at(x, y) for x, y in s.seeds]
-        mask = (f.labels == 0) | np.isin(f.labels, [k for k in filled if k > 0])
-        out.append(Cover(i, mask, f.origin))
-    return out
+    """The fills that hide what is behind them."""
+    return [Cover(i, s) for i, s in enumerate(steps)
+            if s.op.kind == "fill" and s.colour != 0 and s.walls]
 
 
 def visible_pieces(px: np.ndarray, hidden_by: list[Cover]) -> list[np.ndarray]:

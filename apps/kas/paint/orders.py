@@ -82,7 +82,7 @@ def outline_bytes(enc: Encoder, runs: list[Run], steps: list[Step],
     depth, covers = occlusion.depths(steps), occlusion.covers(steps)
     for slot, px, chain in runs:
         d = depth.get(chain)
-        hidden_by = [] if d is None else [c for c in covers if c.depth > d]
+        hidden_by = [] if d is None else [c for c in covers if c.depth > d and c.overlaps(px)]
         for piece in occlusion.visible_pieces(px, hidden_by):
             if slot != last:
                 out += enc.colour8(slot << OUTLINE_SHIFT)
