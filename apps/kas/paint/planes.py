@@ -3,7 +3,8 @@
 Planes 0-4 hold the fill colour (32 palette entries, 0 = unpainted), planes 5-6 the four
 outline colours of the earlier KAS stages (0 = no outline), plane 7 the highlight.  The LUT
 is arranged so that a set highlight bit shows the highlight colour whatever the other seven
-planes hold, and an outline shows over any fill: index = h<<7 | outline<<5 | fill.
+planes hold, and an outline shows over any fill under it: index = h<<7 | outline<<5 | fill
+(a fill in front of an outline clears it from the outline planes: ``occlusion``).
 """
 
 from __future__ import annotations
