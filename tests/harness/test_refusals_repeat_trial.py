@@ -27,7 +27,7 @@ def test_the_window_test_card_refuses_on_stderr(monkeypatch: pytest.MonkeyPatch,
 def test_a_mouse_driven_emulated_tablet_refuses_before_opening_its_pty(
         monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]) -> None:
     from camlab88.cli import main
-    from emulator.tablet import emulated_source
+    from emulator.tablet_input import emulated_source
 
     _no_display(monkeypatch)
     opened = []

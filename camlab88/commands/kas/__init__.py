@@ -62,7 +62,7 @@ def run_front(front, args: argparse.Namespace, command: str, keys: str,
     from emulator.harness import run
     from emulator.harness.sigma import SigmaProgramTarget
     from emulator.sigma import Terminal
-    from emulator.tablet.pointer_input import TabletInput
+    from emulator.tablet_input.pointer import TabletInput
     from protocols.link import LineSettings
 
     events, opts = prepared or prepare_front(args, command)

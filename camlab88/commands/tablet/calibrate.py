@@ -24,7 +24,7 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
 
 
 def calibrate(args: argparse.Namespace) -> int:
-    from emulator.tablet.emulated_source import open_tablet
+    from emulator.tablet_input.emulated_source import open_tablet
     from protocols.tablets.calibration import CalibrationSession, save_calibration
 
     source, emu, spec = open_tablet(args.source, script=TAPS)

@@ -29,7 +29,7 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
 
 def monitor(args: argparse.Namespace) -> int:
     from emulator.tablet import demo_path
-    from emulator.tablet.emulated_source import open_tablet
+    from emulator.tablet_input.emulated_source import open_tablet
 
     def raw(data: bytes) -> None:
         print("raw " + data.hex(" "), flush=True)
