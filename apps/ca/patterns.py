@@ -266,7 +266,7 @@ def parse_native(text: str, source: str = "<pattern>") -> Pattern:
         elif word == "author":
             authors.append(rest)
         elif word == "ref":
-            ref = _ints(rest, 2, source, i, raw, "'ref x y'")  # type: ignore[assignment]
+            ref = _ints(rest, 2, source, i, raw, "'ref x y'")
         elif word == "cells":
             (count,) = _ints(rest, 1, source, i, raw, "'cells n'")
             if count < 0:

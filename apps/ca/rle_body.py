@@ -34,7 +34,7 @@ def _state(sym: str) -> int:
 def _why(body: str, at: int) -> str:
     """What is wrong at ``at``, where no token matches (the old reader's messages)."""
     ch = body[at]
-    digits = re.match(r"[0-9]*", body[at:]).group()  # type: ignore[union-attr]
+    digits = re.match(r"[0-9]*", body[at:]).group()
     if ch == "0":
         return "repeat counts have no leading zero"
     if len(digits) > 6:

@@ -48,7 +48,7 @@ def start(args: list[str], cwd: str | None = None) -> tuple[subprocess.Popen, st
            if k not in ("DISPLAY", "WAYLAND_DISPLAY", "SDL_VIDEODRIVER")}
     proc = subprocess.Popen([sys.executable, "-m", "camlab88", *args], cwd=cwd, env=env,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    first = proc.stdout.readline()  # type: ignore[union-attr]
+    first = proc.stdout.readline()
     if not first:
         proc.kill()
         raise AssertionError(f"{args} printed nothing: {proc.communicate(timeout=10)}")

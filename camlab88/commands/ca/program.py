@@ -24,7 +24,7 @@ TWO_FORMS = (
     "too. Give each argument in one form only.")
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser(
         "program", help="the interactive program on the emulated Rainbow (sections 7.3.1-2)",
         description="The interactive cellular automaton on the emulated Rainbow: mouse "

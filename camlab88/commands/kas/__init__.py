@@ -17,7 +17,7 @@ ACTIONS = ("inbetween", "superimpose", "plot", "export", "schedule", "edit_scrip
            "path_script", "edit", "path", "view", "demo", "library", "paint")
 
 
-def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(subparsers: argparse._SubParsersAction) -> None:
     register_area(subparsers, __name__, "kas", HELP, ACTIONS,
                   "KAS: keyframe editor model, in-betweener, superimposer, viewer schedule "
                   "and hard copy (thesis ch. 3). File names may be library names (see "

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser("stream", help="write the bytes one end received as a raw stream")
     p.add_argument("recording")
     p.add_argument("--out", required=True, help="raw stream file to write")

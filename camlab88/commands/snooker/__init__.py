@@ -14,7 +14,7 @@ HELP = ("snooker motion development (thesis chapter 6): `camlab88 snooker [SESSI
 ACTIONS = ("play", "simulate", "replay", "ccl", "visualise", "camera", "render", "film")
 
 
-def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(subparsers: argparse._SubParsersAction) -> None:
     register_area(subparsers, __name__, "snooker", HELP, ACTIONS)
 
 

@@ -14,7 +14,7 @@ KEYS = ("type to edit the script (it is re-interpreted at once; saving it from a
         "button on the time line scrubs; escape quits")
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     s = actions.add_parser(
         "camera", help="edit a camera script with the live view beside it (§6.5)",
         description="The camera script beside the live perspective view on the emulated "

@@ -36,7 +36,7 @@ def _word(text: str) -> str:
     return text.upper()
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     s = actions.add_parser(
         "film", help="camera script -> views -> rendered frames -> MP4/GIF (§6.3-6.4)",
         description="Interpret the camera script over the shot, render every frame and "

@@ -11,7 +11,7 @@ KEYS = ("middle button: menus; right: restart simulation; left held: mouse x4; "
         "close the window to quit")
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     s = actions.add_parser(
         "play", help="the interactive motion-development program on the emulated Rainbow",
         description="The interactive program (thesis §6.2.1-§6.2.2) on the emulated Rainbow. "
@@ -56,7 +56,7 @@ def play(args: argparse.Namespace) -> int:
 def _exists(path: str | None) -> bool:
     from pathlib import Path
 
-    return bool(path) and Path(path).exists()  # type: ignore[arg-type]
+    return bool(path) and Path(path).exists()
 
 
 def _run(args: argparse.Namespace, opts, restore, player):

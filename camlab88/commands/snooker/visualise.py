@@ -14,7 +14,7 @@ KEYS = ("space play/pause, left/right step, page up/down 25 frames, home/end, "
         "drag with the left button to scrub, escape quits")
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     s = actions.add_parser(
         "visualise", help="the perspective view of every frame on the Rainbow (§6.3.2)",
         description="Play a view file (from 'snooker ccl') over a checkpoint or session on "

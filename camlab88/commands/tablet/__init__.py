@@ -15,7 +15,7 @@ SOURCE_HELP = (
 __all__ = ["ACTIONS", "SOURCE_HELP", "register"]
 
 
-def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(subparsers: argparse._SubParsersAction) -> None:
     register_area(subparsers, __name__, "tablet", HELP, ACTIONS,
                   "Graphics tablets over USB HID or serial, and an emulated tablet that "
                   "speaks a real protocol on a pty.")

@@ -13,7 +13,7 @@ TAPS = ([(0.1, 0.1, 0)] * 3 + [(0.1, 0.1, 1)] * 3 + [(0.1, 0.1, 0)] * 3
         + [(0.9, 0.9, 0)] * 3 + [(0.9, 0.9, 1)] * 3 + [(0.9, 0.9, 0)] * 3)
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     s = actions.add_parser("calibrate", help="touch two corners; saved per device",
                            description="Touch the top-left then the bottom-right corner of "
                            "the working area. Saved under $CAMLAB88_CONFIG_DIR (else "

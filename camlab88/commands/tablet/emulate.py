@@ -9,7 +9,7 @@ import time
 COMMAND = "camlab88 tablet emulate"
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     s = actions.add_parser("emulate", help="an emulated tablet on a pty, driven by the mouse",
                            description="Open a window; the mouse drives a tablet that writes "
                            "its protocol's bytes to a pseudo-terminal (path printed) that any "

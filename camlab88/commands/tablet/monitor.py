@@ -13,7 +13,7 @@ COMMAND = "camlab88 tablet monitor"
 SILENT_HINT = 5.0  # s without a single report before the monitor says what to check
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     s = actions.add_parser("monitor", help="print one line per decoded event",
                            description="Print one line per decoded event: x and y in tablet "
                            "units, pressure, buttons, proximity. An emulated tablet driven "
