@@ -10,6 +10,7 @@ import argparse
 import sys
 from pathlib import Path
 
+from apps.snooker.render.modes import MODES
 from camlab88.runopts import fail, positive
 
 COMMAND = "camlab88 snooker film"
@@ -54,7 +55,8 @@ def register(actions: argparse._SubParsersAction) -> None:
     s.add_argument("--out", type=_movie, required=True, metavar="FILM",
                    help="the film: .mp4 (H.264) or .gif")
     s.add_argument("--gif", type=_movie, metavar="FILE", help="also a GIF of the film")
-    s.add_argument("--mode", choices=("truecolour", "period", "fixed"), default="truecolour")
+    s.add_argument("--mode", choices=MODES, default="truecolour",
+                   help="truecolour (default), or a Sigma mode drawn on the emulated T5688")
     s.add_argument("--size", type=_size, default=(768, 512), metavar="WxH",
                    help="truecolour frame size")
     s.add_argument("--dask", metavar="ADDRESS|local",
