@@ -145,9 +145,9 @@ def summary(out: Path, gif: Path | None, n: int, note: str, views: Path, frames:
 
 def _sigma_frames(args: argparse.Namespace, scene, views, frames: Path) -> str:
     from apps.snooker.film.schedule import frame_file
-    from apps.snooker.film.task import encode_png
     from apps.snooker.render.sequence import choose_palette, render_sequence
     from base.atomicfile import write_atomic
+    from base.png import png_bytes
     from emulator.sigma import Terminal
 
     palette = choose_palette(scene, views, "fixed")
@@ -155,6 +155,6 @@ def _sigma_frames(args: argparse.Namespace, scene, views, frames: Path) -> str:
     line = 0.0
     for f in render_sequence(scene, views, args.mode, (768, 512), palette,
                              lambda: Terminal("t5688"), not args.no_specks):
-        write_atomic(frame_file(frames, f.frame), encode_png(f.image))
+        write_atomic(frame_file(frames, f.frame), png_bytes(f.image))
         line += f.line_seconds or 0.0
     return f"{args.mode} on the emulated T5688, line time {line:.1f} s at 9600 baud"

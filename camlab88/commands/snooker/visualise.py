@@ -59,10 +59,10 @@ def status(vis, target) -> str:
 
 def _run(shot, views, opts, frames_dir):
     from apps.snooker.visualiser.program import Visualiser
+    from base.png import frame_path, write_png
     from emulator.harness import run
     from emulator.harness.loop import Plugin
     from emulator.harness.rainbow import RainbowTarget
-    from emulator.png import frame_path, write_png
     from emulator.rainbow.session import in_process
 
     rb = in_process(record=opts.record is not None)
