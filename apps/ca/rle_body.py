@@ -4,7 +4,7 @@ The body is a run of tokens — an optional repeat count and a symbol (``b`` ``.
 alive, ``A``..``X`` and ``pA``..``yO`` states 1..255, ``$`` next row, ``!`` end) — with
 whitespace between tokens. One regular expression splits it; the rows and columns of every
 run then come from cumulative sums, so a 24 KB RLE of 4000x4000 live cells decodes in a
-fraction of a second instead of a Python step per cell (issue 15 item 11). Errors name the
+fraction of a second instead of a Python step per cell. Errors name the
 line and column of the offending character, as the old character-by-character reader did.
 """
 

@@ -113,7 +113,7 @@ def run_echo(
 @contextlib.contextmanager
 def _sigterm_as_interrupt() -> Iterator[None]:
     """SIGTERM (kill, a service manager stopping us) ends the echo like Ctrl-C does, so the
-    recording is finished and written (issue 18 item 8); the old handler comes back after."""
+    recording is finished and written; the old handler comes back after."""
     if threading.current_thread() is not threading.main_thread():
         yield
         return

@@ -21,7 +21,7 @@ class FrameTask:
     """Frame ``frame`` (the checkpoint's numbering, from 1) seen through ``view``."""
 
     frame: int
-    view: object  # the camera issue's View (observer, viewpoint, focal_mm, frame)
+    view: object  # the camera's (apps/snooker/camera) View (observer, viewpoint, focal_mm, frame)
     width: int = 768
     height: int = 512
     specks: bool = True

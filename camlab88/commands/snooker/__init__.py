@@ -19,7 +19,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 
 
 def normalise_argv(argv: list[str]) -> list[str]:
-    """``camlab88 snooker [SESSION] [options]`` is the interactive program (issue 6): with no
+    """``camlab88 snooker [SESSION] [options]`` is the interactive program: with no
     action named, insert ``play`` so the session file and options reach it."""
     if argv[:1] == ["snooker"]:
         rest = argv[1:]

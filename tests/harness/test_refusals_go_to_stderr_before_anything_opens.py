@@ -1,5 +1,5 @@
-"""Refusals found by the repeat newcomer trial (issue 18): they go to stderr, and come before
-anything is opened or announced."""
+"""Refusals go to stderr, and come before anything is opened or announced
+(docs/newcomer_trial.md lists where each was found)."""
 
 from __future__ import annotations
 
