@@ -12,7 +12,12 @@ SOURCE_HELP = (
     "hid:VID:PID | serial:PORT?protocol=P[&baud=N] | URL?protocol=P (loop://, socket://...) | "
     "emulated:P[?drive=demo]; P = wacom4, summa-mm, bitpad1, bitpad2, calcomp, summa-flair"
 )
-__all__ = ["ACTIONS", "SOURCE_HELP", "register"]
+__all__ = ["ACTIONS", "SOURCE_HELP", "add_source_argument", "register"]
+
+
+def add_source_argument(p: argparse.ArgumentParser) -> None:
+    """The tablet to read: a SOURCE string (monitor, calibrate)."""
+    p.add_argument("source", metavar="SOURCE", help=SOURCE_HELP)
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:

@@ -6,7 +6,7 @@ import argparse
 import sys
 import time
 
-from camlab88.commands.tablet import SOURCE_HELP
+from camlab88.commands.tablet import add_source_argument
 
 # the scripted stroke of an emulated ?drive=demo tablet: a tap near each corner
 TAPS = ([(0.1, 0.1, 0)] * 3 + [(0.1, 0.1, 1)] * 3 + [(0.1, 0.1, 0)] * 3
@@ -18,7 +18,7 @@ def register(actions: argparse._SubParsersAction) -> None:
                            description="Touch the top-left then the bottom-right corner of "
                            "the working area. Saved under $CAMLAB88_CONFIG_DIR (else "
                            "~/.config/camlab88)/calibration.json.")
-    s.add_argument("source", metavar="SOURCE", help=SOURCE_HELP)
+    add_source_argument(s)
     s.add_argument("--seconds", type=float, default=120.0, help="give up after S seconds")
     s.set_defaults(handler=calibrate)
 
