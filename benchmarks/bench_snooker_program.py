@@ -1,4 +1,4 @@
-"""Display-loop speed of the snooker program on the emulated Rainbow (issue 6: >= 50
+"""Display-loop speed of the snooker program on the emulated Rainbow (target >= 50
 frames/s; the thesis's program managed 12).
 
 Each figure is display frames per wall-clock second through the whole path: program logic,

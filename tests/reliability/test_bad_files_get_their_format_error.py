@@ -203,7 +203,7 @@ def test_snooker_session_errors_are_not_python_exception_text(tmp_path) -> None:
 
 
 def test_potted_balls_stay_in_the_16_bit_packing() -> None:
-    """Issue 16: potted balls parked at negative coordinates; now in 0..65535 and still off
+    """Potted balls are parked inside 0..65535 (never at negative coordinates), still off
     the playing area (§6.2.2)."""
     from apps.snooker.table import Table
 
