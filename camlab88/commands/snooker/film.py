@@ -11,18 +11,10 @@ import sys
 from pathlib import Path
 
 from apps.snooker.render.modes import MODES
+from camlab88.commands.snooker import frame_size
 from camlab88.runopts import fail, positive
 
 COMMAND = "camlab88 snooker film"
-
-
-def _size(text: str) -> tuple[int, int]:
-    w, sep, h = text.lower().partition("x")
-    if not (sep and w.isascii() and w.isdigit() and h.isascii() and h.isdigit()):
-        raise argparse.ArgumentTypeError(f"expected WxH such as 768x512, not {text!r}")
-    if not (8 <= int(w) <= 8192 and 8 <= int(h) <= 8192):
-        raise argparse.ArgumentTypeError(f"{text}: each side must be 8..8192 pixels")
-    return int(w), int(h)
 
 
 def _movie(text: str) -> Path:
@@ -57,7 +49,7 @@ def register(actions: argparse._SubParsersAction) -> None:
     s.add_argument("--gif", type=_movie, metavar="FILE", help="also a GIF of the film")
     s.add_argument("--mode", choices=MODES, default="truecolour",
                    help="truecolour (default), or a Sigma mode drawn on the emulated T5688")
-    s.add_argument("--size", type=_size, default=(768, 512), metavar="WxH",
+    s.add_argument("--size", type=frame_size, default=(768, 512), metavar="WxH",
                    help="truecolour frame size")
     s.add_argument("--dask", metavar="ADDRESS|local",
                    help="render on a Dask cluster (a scheduler address, or 'local')")
