@@ -1,4 +1,4 @@
-"""Load cached numba kernels without numba's full context refresh (issue 18's start-up).
+"""Load cached numba kernels without numba's full context refresh (start-up time).
 
 Before numba runs a kernel it loaded from its on-disk cache, ``Cache.load_overload`` calls
 ``target_context.refresh()``: it imports some seventy modules of numba's own

@@ -37,8 +37,8 @@ class LazyKernels:
 
         first_call.__name__ = fn.__name__
         first_call.__doc__ = fn.__doc__
-        first_call.py_func = fn  # type: ignore[attr-defined]
-        first_call._lazy = True  # type: ignore[attr-defined]
+        first_call.py_func = fn
+        first_call._lazy = True
         return first_call
 
     def signed(self, signature: str) -> Callable[[Callable[..., Any]], Callable[..., Any]]:

@@ -1,4 +1,4 @@
-"""Camera benchmarks (issue 12): the CCL interpreter, the visualiser on the emulated Rainbow
+"""Camera benchmarks: the CCL interpreter, the visualiser on the emulated Rainbow
 and the camera tool's edit-to-view time.
 
     .venv/bin/python benchmarks/bench_camera.py

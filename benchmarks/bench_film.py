@@ -1,4 +1,4 @@
-"""Film benchmarks (issue 14): a 250-frame truecolour sequence at 768x512 rendered in one
+"""Film benchmarks: a 250-frame truecolour sequence at 768x512 rendered in one
 process, on the local pool (one process per core) and on a LocalCluster of two workers;
 the speed-up, and the per-frame costs a reader needs to extrapolate to N machines.
 

@@ -1,4 +1,4 @@
-"""Snooker renderer benchmarks (issue 13): truecolour frame time, the period/fixed modes'
+"""Snooker renderer benchmarks: truecolour frame time, the period/fixed modes'
 line time and wall time through the emulated T5688, and the palette table.
 
 Run: .venv/bin/python benchmarks/bench_render.py [--quick]

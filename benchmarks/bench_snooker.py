@@ -24,7 +24,7 @@ from apps.snooker.timeline import Timeline
 REPEATS = 15
 
 
-def _median_ms(fn) -> float:  # type: ignore[no-untyped-def]
+def _median_ms(fn) -> float:
     times = []
     for _ in range(REPEATS):
         t0 = time.perf_counter()

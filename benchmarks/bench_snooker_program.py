@@ -1,4 +1,4 @@
-"""Display-loop speed of the snooker program on the emulated Rainbow (issue 6: >= 50
+"""Display-loop speed of the snooker program on the emulated Rainbow (target >= 50
 frames/s; the thesis's program managed 12).
 
 Each figure is display frames per wall-clock second through the whole path: program logic,
@@ -23,7 +23,7 @@ from protocols.rainbow.events import MouseEvent
 REPEATS = 5
 
 
-def _fps(setup, frames: int) -> float:  # type: ignore[no-untyped-def]
+def _fps(setup, frames: int) -> float:
     rates = []
     for _ in range(REPEATS):
         run = setup()
@@ -33,7 +33,7 @@ def _fps(setup, frames: int) -> float:  # type: ignore[no-untyped-def]
     return statistics.median(rates)
 
 
-def simulating_break():  # type: ignore[no-untyped-def]
+def simulating_break():
     """The break simulated live: a time frame every second display frame, balls redrawn."""
     rb = in_process()
     p = Program(rb.client)
@@ -44,7 +44,7 @@ def simulating_break():  # type: ignore[no-untyped-def]
     return lambda n: [p.step() for _ in range(n)]
 
 
-def stepping_frames():  # type: ignore[no-untyped-def]
+def stepping_frames():
     """Alter a different frame: a new frame every display frame, velocity arrows drawn."""
     rb = in_process()
     p = Program(rb.client, break_session(7.0))
@@ -58,7 +58,7 @@ def stepping_frames():  # type: ignore[no-untyped-def]
     return run
 
 
-def replaying():  # type: ignore[no-untyped-def]
+def replaying():
     """Replay: every time frame shown for two display frames."""
     rb = in_process()
     s = break_session(7.0)
@@ -72,7 +72,7 @@ def replaying():  # type: ignore[no-untyped-def]
     return run
 
 
-def cursor_moving():  # type: ignore[no-untyped-def]
+def cursor_moving():
     """Idle, the mouse moving every frame over the table (cursor pad moves, selection)."""
     rb = in_process()
     p = Program(rb.client)

@@ -36,7 +36,7 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-BUDGET_S = 0.6  # issue 18: every ordinary command, warm, whole process
+BUDGET_S = 0.6  # every ordinary command, warm, whole process
 
 COMMANDS: dict[str, list[str]] = {
     "snooker simulate --break": ["snooker", "simulate", "--break", "5", "--out", "break.cp"],

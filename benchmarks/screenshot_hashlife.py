@@ -12,7 +12,7 @@ import sys
 from apps.ca.program import stepping
 from apps.ca.program.menus import MainMenu, main_item_point
 from apps.ca.program.program import Options
-from emulator.png import write_png
+from base.png import write_png
 from tests.ca_program.driver import Driver
 
 

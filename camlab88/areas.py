@@ -13,7 +13,7 @@ import importlib
 from collections.abc import Sequence
 
 
-def register_area(subparsers: argparse._SubParsersAction, package: str, name: str,  # type: ignore[type-arg]
+def register_area(subparsers: argparse._SubParsersAction, package: str, name: str,
                   help: str, actions: Sequence[str],
                   description: str | None = None) -> argparse.ArgumentParser:
     """Add area ``name`` with its ``actions`` (modules of ``package``) to ``subparsers``."""

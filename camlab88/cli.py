@@ -36,7 +36,7 @@ COMMAND_MODULES: tuple[str, ...] = (
 class _Parser(argparse.ArgumentParser):
     """argparse, with "did you mean" for a misspelt subcommand or action."""
 
-    def error(self, message: str) -> None:  # type: ignore[override]
+    def error(self, message: str) -> None:
         if "invalid choice:" in message:
             message += _suggestion(message)
         super().error(message)

@@ -1,5 +1,6 @@
-"""The one PNG writer, under the name the emulator side has always imported: it lives in
-base/png.py so that programs in apps/ (which never import emulator/) use it too."""
+"""Kept only while camlab88/commands/snooker/render.py still imports the PNG writer from
+here (that file was being rewritten on another branch); everything else imports base.png.
+Delete once render.py does too."""
 
 from base.png import frame_path, png_bytes, write_png
 

@@ -1,5 +1,4 @@
-"""Misspelt library names get "did you mean" and a missing --frames is named as missing
-(issue 18 item 9)."""
+"""Misspelt library names get "did you mean" and a missing --frames is named as missing."""
 
 from __future__ import annotations
 

@@ -1,5 +1,5 @@
-"""Progress of a long jump, shown only once it has taken a while (issue 17: "progress
-shown on jumps that take seconds"): a line such as ``generation 65536 of 100000 (66 %)``
+"""Progress of a long jump, shown only once it has taken a while (so a jump that takes
+seconds is not silent): a line such as ``generation 65536 of 100000 (66 %)``
 rewritten in place on a terminal stream.  Wall-clock time decides only whether and when to
 show it, never what the engine computes."""
 

@@ -162,7 +162,7 @@ def apply_event(engine: Engine, ev: Event) -> None:
             p = parse_rle("x = 0, y = 0\n" + body)
         else:
             triples = [tuple(int(v) for v in c.split(",")) for c in body.split(";") if c]
-            p = Pattern.from_cells(triples)  # type: ignore[arg-type]
+            p = Pattern.from_cells(triples)
         rx, ry = (int(v) for v in ref.split(","))
         p.ref = (rx, ry)
         xs, ys, ts = p.placed(int(a[1]), int(a[2]), str(a[3]))
@@ -171,7 +171,7 @@ def apply_event(engine: Engine, ev: Event) -> None:
         engine.clear(_rect(a))
     elif ev.kind == "populate":
         weights = {int(k): float(v) for k, v in (w.split(":") for w in str(a[5]).split(","))}
-        populate(engine, _rect(a), float(a[4]), weights, int(a[6]))  # type: ignore[arg-type]
+        populate(engine, _rect(a), float(a[4]), weights, int(a[6]))
     elif ev.kind == "advance":
         engine.set_advance_area(_rect(a))
     elif ev.kind not in VIEW_EVENTS:

@@ -266,7 +266,7 @@ def parse_native(text: str, source: str = "<pattern>") -> Pattern:
         elif word == "author":
             authors.append(rest)
         elif word == "ref":
-            ref = _ints(rest, 2, source, i, raw, "'ref x y'")  # type: ignore[assignment]
+            ref = _ints(rest, 2, source, i, raw, "'ref x y'")
         elif word == "cells":
             (count,) = _ints(rest, 1, source, i, raw, "'cells n'")
             if count < 0:
@@ -514,7 +514,8 @@ def format_cells(p: Pattern) -> str:
 
 def parse_cells(text: str, source: str = "<cells>") -> Pattern:
     """Plaintext: '!' lines are comments ('!Name: ...' the name), every other line a row of
-    '.' dead and 'O' (or 'o', '*') live cells. Decoded with numpy (issue 15 item 11)."""
+    '.' dead and 'O' (or 'o', '*') live cells. Decoded with numpy, so large
+    patterns load in a fraction of a second."""
     name = ""
     comments: list[str] = []
     rows: list[str] = []

@@ -4,7 +4,7 @@ The body is a run of tokens — an optional repeat count and a symbol (``b`` ``.
 alive, ``A``..``X`` and ``pA``..``yO`` states 1..255, ``$`` next row, ``!`` end) — with
 whitespace between tokens. One regular expression splits it; the rows and columns of every
 run then come from cumulative sums, so a 24 KB RLE of 4000x4000 live cells decodes in a
-fraction of a second instead of a Python step per cell (issue 15 item 11). Errors name the
+fraction of a second instead of a Python step per cell. Errors name the
 line and column of the offending character, as the old character-by-character reader did.
 """
 
@@ -34,7 +34,7 @@ def _state(sym: str) -> int:
 def _why(body: str, at: int) -> str:
     """What is wrong at ``at``, where no token matches (the old reader's messages)."""
     ch = body[at]
-    digits = re.match(r"[0-9]*", body[at:]).group()  # type: ignore[union-attr]
+    digits = re.match(r"[0-9]*", body[at:]).group()
     if ch == "0":
         return "repeat counts have no leading zero"
     if len(digits) > 6:

@@ -255,7 +255,7 @@ class _Parser:
             else:
                 if colour is not None:
                     raise self.error(tok, "COLOUR given twice for one life-form")
-                colour = tuple(self.hex_byte() for _ in range(3))  # type: ignore[assignment]
+                colour = tuple(self.hex_byte() for _ in range(3))
         grid_start = self.peek()
         entries: list[tuple[int, int] | None] = []
         while (tok := self.peek()) is not None and tok.text[0] in ".+|&^":

@@ -70,7 +70,7 @@ def check(path: SamplePath) -> None:
 
 def load_checked(file: str | os.PathLike[str]) -> SamplePath:
     """Read a path file and check it can be fitted; errors name the file and the line of
-    its ``points`` count (issue 15: ``points 0`` used to end in an IndexError)."""
+    its ``points`` count (``points 0`` must be this error, not an IndexError later)."""
     path = load_path(file)
     try:
         check(path)

@@ -99,7 +99,7 @@ class _Travel:
         return dist, at_target
 
 
-def _solve(fn, want: float, what: str) -> float:  # type: ignore[no-untyped-def]
+def _solve(fn, want: float, what: str) -> float:
     """Smallest v0 with fn(v0) >= want, by doubling then bisection (fn is non-decreasing)."""
     lo, hi = 0.0, 0.05
     while fn(hi) < want:

@@ -33,7 +33,7 @@ try:  # numba is a project dependency, but the model must still work without it
 
     # Cached, so only the first run after install compiles; every kernel here is called with
     # one set of argument types (docs/development.md, "numba's cache").
-    def _jit(f):  # type: ignore[no-untyped-def]
+    def _jit(f):
         return _njit(cache=True, nogil=True)(f)
 
     announce_compiles("snooker", SNOOKER_COMPILE_S, __name__, "apps.snooker.kernels")
@@ -42,7 +42,7 @@ try:  # numba is a project dependency, but the model must still work without it
 except ImportError:  # pragma: no cover - exercised only where numba is missing
     HAVE_NUMBA = False
 
-    def _jit(f):  # type: ignore[no-untyped-def]
+    def _jit(f):
         return f
 
 
@@ -72,7 +72,7 @@ class Event:
 NO_EVENT = -1
 
 
-def _scan(pos, vel, active, moving, r, seg, jaws, mouths, horizon):  # type: ignore[no-untyped-def]
+def _scan(pos, vel, active, moving, r, seg, jaws, mouths, horizon):
     """Earliest event within `horizon` seconds: (dt, kind, a, b) or (horizon, -1, -1, -1).
 
     seg rows: ax ay tx ty nx ny length; jaws rows: x y; mouths rows: ax ay tx ty ox oy width.
@@ -180,7 +180,7 @@ scan_python = _scan
 scan = _jit(_scan)
 
 
-def table_arrays(table) -> tuple[np.ndarray, np.ndarray, np.ndarray]:  # type: ignore[no-untyped-def]
+def table_arrays(table) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The table geometry as the contiguous float arrays `scan` takes."""
     seg = np.array(
         [(s.ax, s.ay, *s.tangent, *s.normal, s.length) for s in table.segments], dtype=np.float64
@@ -193,7 +193,7 @@ def table_arrays(table) -> tuple[np.ndarray, np.ndarray, np.ndarray]:  # type: i
     return seg, jaws, np.array(mouths, dtype=np.float64)
 
 
-def ball_ball_time(p1, v1, p2, v2, d: float) -> float | None:  # type: ignore[no-untyped-def]
+def ball_ball_time(p1, v1, p2, v2, d: float) -> float | None:
     """The §6.2 formula on its own: time until two balls are `d` apart, or None."""
     x, y = p2[0] - p1[0], p2[1] - p1[1]
     vx, vy = v2[0] - v1[0], v2[1] - v1[1]

@@ -19,7 +19,7 @@ from apps.snooker.events import _jit, scan
 REST, EVENT, LIMIT = 0, 1, 2
 
 
-def _interp(u, U, G):  # type: ignore[no-untyped-def]
+def _interp(u, U, G):
     """np.interp(u, U, G, right=0.0) with numpy's own formula."""
     n = U.shape[0]
     if u >= U[n - 1]:
@@ -38,7 +38,7 @@ interp = _jit(_interp)
 
 def _run_frames(pos, vel, spin, cv0, ct0, spin0, spin_t0, on, t, n_next, fr, r, seg, jaws,
                 mouths, U, G, decel, spin_decel, out_pos, out_vel, out_spin, out_t,
-                max_frames):  # type: ignore[no-untyped-def]
+                max_frames):
     nb = pos.shape[0]
     ev = np.zeros((nb, 2))
     moving = np.zeros(nb, dtype=np.bool_)

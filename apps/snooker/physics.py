@@ -98,7 +98,7 @@ class Physics:
     def _compiled(self, m: Motion, n_next: int, max_frames: int,
                   out: list[tuple[Event | None, BallState]]) -> tuple[int, int, int, int, int]:
         cap = min(max_frames, 256)
-        U, G = self.curve_table  # type: ignore[misc]
+        U, G = self.curve_table
         o_pos = np.empty((cap, *m.pos.shape))
         o_vel = np.empty((cap, *m.vel.shape))
         o_spin = np.empty((cap, *m.spin.shape))

@@ -66,11 +66,11 @@ class GameState:
 
     @classmethod
     def from_json(cls, d: dict[str, object]) -> GameState:
-        scores = tuple(int(x) for x in d["scores"])  # type: ignore[union-attr]
-        if len(scores) != 2 or int(d["player"]) not in (0, 1):  # type: ignore[call-overload]
+        scores = tuple(int(x) for x in d["scores"])
+        if len(scores) != 2 or int(d["player"]) not in (0, 1):
             raise ValueError("bad scores or player")
-        return cls(scores, int(d["player"]), int(d["current_break"]),  # type: ignore[call-overload,arg-type]
-                   int(d["on"]), int(d["shots"]), bool(d["frame_over"]), str(d["message"]))  # type: ignore[call-overload]
+        return cls(scores, int(d["player"]), int(d["current_break"]),
+                   int(d["on"]), int(d["shots"]), bool(d["frame_over"]), str(d["message"]))
 
 
 @dataclass(frozen=True)
@@ -85,7 +85,7 @@ class Shot:
 
     @classmethod
     def from_json(cls, d: dict[str, object]) -> Shot:
-        return cls(int(d["first_hit"]), tuple(int(x) for x in d["potted"]))  # type: ignore[call-overload,union-attr]
+        return cls(int(d["first_hit"]), tuple(int(x) for x in d["potted"]))
 
 
 def record(shot: Shot, event: Event) -> Shot:

@@ -87,7 +87,7 @@ class Session:
         return sum(
             1 for c in upto if c.kind == "event"
             and self.timeline.event_frames[c.pos].event is not None
-            and self.timeline.event_frames[c.pos].event.kind in kinds  # type: ignore[union-attr]
+            and self.timeline.event_frames[c.pos].event.kind in kinds
         )
 
     def status(self) -> dict[str, object]:
@@ -115,7 +115,7 @@ class Session:
     def _edit(self, note: str, **changes: object) -> None:
         m = self.balls.thaw()
         fn = changes.pop("fn")
-        fn(m)  # type: ignore[operator]
+        fn(m)
         self.cursor = self.timeline.intervene(self.cursor, m.freeze(), note)
 
     def set_position(self, ball: int, x: float, y: float) -> None:
@@ -124,7 +124,7 @@ class Session:
             raise SessionError("position must be finite")
         on = self.table.on_playing_area(x, y)
 
-        def fn(m):  # type: ignore[no-untyped-def]
+        def fn(m):
             m.pos[ball] = (x, y)
             m.on_table[ball] = on
             if not on:
@@ -149,7 +149,7 @@ class Session:
         self.set_velocity(ball, speed * math.cos(a), speed * math.sin(a), spin)
 
     def stop_all(self) -> None:
-        def fn(m):  # type: ignore[no-untyped-def]
+        def fn(m):
             for i in range(len(BALL_NAMES)):
                 m.set_velocity(i, 0.0, 0.0)
 
@@ -347,7 +347,7 @@ def _frames(data: dict[str, object], key: str, kind: str) -> list[Frame]:
                 ev = Event(EventKind[e["kind"]], float(e["t"]), int(e["a"]), int(e["b"]),
                            tuple(int(x) for x in e["chain"]), str(e["note"]))
             shot = None if d["shot"] is None else Shot.from_json(d["shot"])
-            f = Frame(kind, int(d["index"]), BallState.from_json(d["balls"]),  # type: ignore[arg-type]
+            f = Frame(kind, int(d["index"]), BallState.from_json(d["balls"]),
                       GameState.from_json(d["game"]), shot, ev)
         except KeyError as exc:
             raise SessionError(f"{key}[{k}]: missing {exc}") from None

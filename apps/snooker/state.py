@@ -73,7 +73,7 @@ class BallState:
             if a.dtype != bool and not np.all(np.isfinite(a)):
                 raise ValueError(f"{n} holds a non-finite number")
             arrays.append(a)
-        return cls(float(data["t"]), *(_frozen(a) for a in arrays))  # type: ignore[arg-type]
+        return cls(float(data["t"]), *(_frozen(a) for a in arrays))
 
     @classmethod
     def at_rest(cls, positions: np.ndarray, on_table: np.ndarray, t: float = 0.0) -> BallState:

@@ -3,17 +3,12 @@ testing pad-library programs. Device time moves in 20 ms frames when ``run`` sho
 
 from __future__ import annotations
 
-import os
-from pathlib import Path
-
-import numpy as np
-
-from camlab88.bench.traces import Trace
+from camlab88.bench.machine_bench import MachineBench
 from emulator.machine import RainbowMachine
 from protocols.rainbow import KeyEvent, MouseEvent, RainbowClient, TabletEvent
 
 
-class Rainbow:
+class Rainbow(MachineBench):
     """A Rainbow workstation (docs/api.md, docs/rainbow.md).
 
     ``client`` is the pad library (protocols.rainbow.RainbowClient): create pads, map them,
@@ -24,10 +19,7 @@ class Rainbow:
 
     def __init__(self, *, strict_memory: bool = False, trace: bool = True,
                  strict: bool = False) -> None:
-        self.machine = RainbowMachine(strict_memory)
-        self.trace = Trace()
-        if trace or strict:
-            self.machine.trace(self.trace.add, strict)
+        super().__init__(RainbowMachine(strict_memory), trace, strict)
 
     @property
     def client(self) -> RainbowClient:
@@ -37,10 +29,6 @@ class Rainbow:
     def send(self, data: bytes) -> None:
         """Raw command-stream bytes (as a program on a socket would send them)."""
         self.machine.host.write(bytes(data))
-
-    def received(self) -> bytes:
-        """Reply frames for raw bytes given to ``send`` since the last call."""
-        return self.machine.host.read()
 
     def run(self, seconds: float | None = None) -> int:
         """Show frames for ``seconds`` of device time (50 a second); None: one frame.
@@ -53,17 +41,6 @@ class Rainbow:
     def now(self) -> float:
         """Device time in seconds (20 ms a frame)."""
         return self.machine.now
-
-    @property
-    def screen(self) -> np.ndarray:
-        """The screen as it stands: (576, 768, 3) uint8, row 0 = top."""
-        return self.machine.frame()
-
-    def screenshot(self, path: str | os.PathLike[str]) -> Path:
-        """Write the screen as a PNG (atomically); returns the path."""
-        from base.png import write_png
-
-        return write_png(self.screen, path)
 
     # ------------------------------------------------------------------ input
     def mouse(self, x: int, y: int, buttons: int = 0, button: int = 0,
@@ -79,17 +56,3 @@ class Rainbow:
                proximity: bool = True) -> None:
         """The tablet stylus at screen (x, y)."""
         self.machine.post(TabletEvent(0, x, y, pressure, buttons, proximity))
-
-    # ------------------------------------------------------------------ state
-    @property
-    def problems(self) -> list:
-        """The first refused commands (TraceEvent), empty when the program did nothing wrong."""
-        return list(self.trace.problems)
-
-    def save_state(self) -> bytes:
-        """The whole machine (graph, video memory, LUTs, clock, input queue, client ids)."""
-        return self.machine.save_state()
-
-    def load_state(self, data: bytes) -> None:
-        """Continue from save_state()'s bytes (ValueError if they do not fit)."""
-        self.machine.load_state(data)

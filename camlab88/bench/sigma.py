@@ -3,17 +3,12 @@ programs. Time is virtual: nothing happens until ``run`` advances it."""
 
 from __future__ import annotations
 
-import os
-from pathlib import Path
-
-import numpy as np
-
-from camlab88.bench.traces import Trace
+from camlab88.bench.machine_bench import MachineBench
 from emulator.machine import SigmaMachine
 from protocols.link import LineSettings, to_time
 
 
-class Sigma:
+class Sigma(MachineBench):
     """A Sigma terminal at the end of a serial line (docs/api.md).
 
     ``model`` "t5684" (768x512, 16 colours) or "t5688" (256 colours, 1536x1024 area);
@@ -24,10 +19,7 @@ class Sigma:
 
     def __init__(self, model: str = "t5684", baud: int = 9600, *, trace: bool = True,
                  strict: bool = False) -> None:
-        self.machine = SigmaMachine(model, LineSettings(baud=baud))
-        self.trace = Trace()
-        if trace or strict:
-            self.machine.trace(self.trace.add, strict)
+        super().__init__(SigmaMachine(model, LineSettings(baud=baud)), trace, strict)
 
     # ------------------------------------------------------------------ the line
     def send(self, data: bytes | str) -> float:
@@ -49,26 +41,10 @@ class Sigma:
         else:
             m.run_until(m.clock.exact + to_time(seconds))
 
-    def received(self) -> bytes:
-        """Terminal -> host: bytes that have arrived at the host since the last call."""
-        return self.machine.host.read()
-
     @property
     def now(self) -> float:
         """Virtual seconds since power-on."""
         return self.machine.clock.now
-
-    # ------------------------------------------------------------------ the screen
-    @property
-    def screen(self) -> np.ndarray:
-        """The screen as displayed: (512, 768, 3) uint8, row 0 = top."""
-        return self.machine.frame()
-
-    def screenshot(self, path: str | os.PathLike[str]) -> Path:
-        """Write the screen as a PNG (atomically); returns the path."""
-        from base.png import write_png
-
-        return write_png(self.screen, path)
 
     # ------------------------------------------------------------------ local input
     def key(self, char: str) -> None:
@@ -89,16 +65,3 @@ class Sigma:
     def stats(self) -> dict[str, int]:
         """Bytes and orders decoded; unknown, malformed and impossible orders skipped."""
         return dict(self.machine.terminal.stats)
-
-    @property
-    def problems(self) -> list:
-        """The first protocol warnings (TraceEvent), empty when the host did nothing wrong."""
-        return list(self.trace.problems)
-
-    def save_state(self) -> bytes:
-        """The whole machine (clock, line with bytes in flight, terminal), versioned."""
-        return self.machine.save_state()
-
-    def load_state(self, data: bytes) -> None:
-        """Continue from save_state()'s bytes (ValueError if they do not fit this Sigma)."""
-        self.machine.load_state(data)

@@ -64,7 +64,7 @@ class SessionRecorder(Plugin):
     """Collects the session while it runs and writes it when the run ends."""
 
     def __init__(self, options: RunOptions) -> None:
-        self.path = Path(options.record)  # type: ignore[arg-type]
+        self.path = Path(options.record)
         argv = replay_argv(options.argv)
         self.rec = SessionRecording(argv, HASH_EVERY, options.headless,
                                     input_files(argv, options.inputs))

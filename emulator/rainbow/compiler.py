@@ -31,7 +31,7 @@ def _instance_rows(graph: PadGraph, insts: list[Instance]) -> dict[tuple[int, ..
     """Per path: everything about the instance that the band structure depends on."""
     out = {}
     for i in insts:
-        pad: Pad = graph.nodes[i.pad]  # type: ignore[assignment]
+        pad: Pad = graph.nodes[i.pad]
         mx, my = (pad.alloc.x, pad.alloc.y) if pad.alloc else (0, 0)
         out[i.path] = (i.y0, i.y1, i.x0, i.x1, i.ox, i.oy, i.key, i.pad, mx, my,
                        pad.plane, pad.depth, pad.lut_page)

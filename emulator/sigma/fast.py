@@ -21,6 +21,6 @@ def scan_points_fast(buf: Any, start: int, state: Any, out: Any, k: int) -> tupl
 
         from base.kernel_load import lean_cache_loads
 
-        lean_cache_loads()  # this may be the process's first kernel: load it lean (issue 18)
+        lean_cache_loads()  # this may be the process's first kernel: load it lean (faster start)
         _compiled = njit(cache=True, nogil=True)(scan_points)
     return _compiled(buf, start, state, out, k)

@@ -192,6 +192,12 @@ class Terminal:
         if not r.pen_down:
             self._move(int(xy[-1, 0]), int(xy[-1, 1]))
             return
+        self._polyline_from_pen(xy)
+
+    def _polyline_from_pen(self, xy) -> None:
+        """Draw from the pen through ``xy`` (dashed as set, the dash carried on), leaving the
+        pen at the last point."""
+        r = self.reg
         dash, bits = self._dash
         r.dash_phase = raster.draw_polyline(self.planes, xy, r.pen_x, r.pen_y, r.colour,
                                             r.write_mask, dash, bits, r.dash_phase,
@@ -214,18 +220,12 @@ class Terminal:
 
     def _ags_points(self, cmd: AgsPoints) -> None:
         xy = cmd.xy
-        r = self.reg
         if cmd.move_first:
             self._move(int(xy[0, 0]), int(xy[0, 1]))
             xy = xy[1:]
         if len(xy) == 0:
             return
-        dash, bits = self._dash
-        r.dash_phase = raster.draw_polyline(self.planes, xy, r.pen_x, r.pen_y, r.colour,
-                                            r.write_mask, dash, bits, r.dash_phase,
-                                            r.continuing)
-        self._move(int(xy[-1, 0]), int(xy[-1, 1]))
-        r.continuing = True
+        self._polyline_from_pen(xy)
 
     def _ags_escape(self, cmd: AgsEscape) -> None:
         r = self.reg

@@ -91,7 +91,7 @@ class EmulatedTablet:
         if not self.streaming and not prompted:
             return b""
         if prompted:
-            self.encoder.prompted = prompted - 1  # type: ignore[attr-defined]
+            self.encoder.prompted = prompted - 1
         data = self._encode(event)
         if data:
             self.port.write(data)

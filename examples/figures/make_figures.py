@@ -62,6 +62,14 @@ class _CA:
 
         self.run(leave_editing())
 
+    def auto_then_step(self, frames: int) -> None:
+        """Out of editing, ``frames`` frames in auto mode (a generation a frame), then back
+        to step mode, where the screen holds still for the figure."""
+        self.leave_editing()
+        self.choose("Auto mode")
+        self.run(f"frames {frames}")
+        self.choose("Step mode")
+
     def pick(self, item: str) -> None:
         from protocols.rainbow.ui.menu import ROW_H
 
@@ -125,10 +133,7 @@ def fig_7_3() -> str:
 
 def fig_7_4() -> str:
     ca = _CA("gosper_gun")
-    ca.leave_editing()
-    ca.choose("Auto mode")
-    ca.run("frames 120")
-    ca.choose("Step mode")
+    ca.auto_then_step(120)
     ca.run("frames 2")
     return ca.script("Figure 7.4: Gosper's glider gun in auto mode, a generation a frame, "
                      "until four gliders are on their way.")
@@ -136,10 +141,7 @@ def fig_7_4() -> str:
 
 def fig_7_5() -> str:
     ca = _CA("gosper_gun")
-    ca.leave_editing()
-    ca.choose("Auto mode")
-    ca.run("frames 60")
-    ca.choose("Step mode")
+    ca.auto_then_step(60)
     ca.choose("Alter display")
     ca.pick("Grid off")
     ca.choose("Zoom 8")
@@ -150,10 +152,7 @@ def fig_7_5() -> str:
 
 def fig_7_9() -> str:
     ca = _CA("primes_25", "turing_primes")
-    ca.leave_editing()
-    ca.choose("Auto mode")
-    ca.run("frames 16")
-    ca.choose("Step mode")
+    ca.auto_then_step(16)
     ca.run("frames 2")
     return ca.script("Figure 7.9: the three-tape Turing machine testing 25: number, divisor, "
                      "remainder and the head\nbelow, in auto mode, early on while the divisor "

@@ -18,6 +18,12 @@ from fractions import Fraction
 from typing import Any
 
 from base.atomicfile import write_atomic
+from protocols.link.cli_args import (
+    ECHO_HELP,
+    STREAM_HELP,
+    add_echo_arguments,
+    add_stream_arguments,
+)
 from protocols.link.line import SerialLine
 from protocols.link.recording import Recorder, RecordingError, read_recording
 from protocols.link.settings import LineSettings
@@ -107,7 +113,7 @@ def run_echo(
 @contextlib.contextmanager
 def _sigterm_as_interrupt() -> Iterator[None]:
     """SIGTERM (kill, a service manager stopping us) ends the echo like Ctrl-C does, so the
-    recording is finished and written (issue 18 item 8); the old handler comes back after."""
+    recording is finished and written; the old handler comes back after."""
     if threading.current_thread() is not threading.main_thread():
         yield
         return
@@ -122,7 +128,9 @@ def _sigterm_as_interrupt() -> Iterator[None]:
         signal.signal(signal.SIGTERM, old)
 
 
-def _echo(args: argparse.Namespace) -> int:
+def echo_command(args: argparse.Namespace) -> int:
+    """The echo device with the options of :func:`add_echo_arguments`, until Ctrl-C/SIGTERM or
+    ``--seconds`` of line time."""
     from protocols.link.transports import IDLE_TIMEOUT, PtyBridge, SerialUrlBridge, TcpBridge
 
     settings = LineSettings.parse(f"{args.baud} {args.framing}")
@@ -155,39 +163,18 @@ def _echo(args: argparse.Namespace) -> int:
     return 0
 
 
-def register(subparsers: Any) -> None:
-    """Add the ``link`` command (with dump/stream/echo) to an argparse subparsers object."""
-    link = subparsers.add_parser(
-        "link", help="serial-line tools: dump recordings, extract streams, echo device",
-        description="Tools for the emulated serial line (see docs/link.md).",
-    )
-    add_tools(link)
-
-
 def add_tools(link: argparse.ArgumentParser) -> None:
     sub = link.add_subparsers(dest="link_command", metavar="TOOL")
     sub.required = True
     p = sub.add_parser("dump", help="print a link recording readably")
     p.add_argument("recording")
     p.set_defaults(handler=lambda a: dump(a.recording))
-    p = sub.add_parser("stream", help="write the bytes one end received as a raw stream")
-    p.add_argument("recording")
-    p.add_argument("--out", required=True, help="raw stream file to write")
-    p.add_argument("--direction", choices=[">", "<"], default=">",
-                   help="> host to device (default), < device to host")
+    p = sub.add_parser("stream", help=STREAM_HELP)
+    add_stream_arguments(p)
     p.set_defaults(handler=lambda a: write_stream(a.recording, a.out, a.direction))
-    p = sub.add_parser("echo", help="an echoing device on a paced line (pty, TCP or URL)")
-    where = p.add_mutually_exclusive_group()
-    where.add_argument("--pty", action="store_true", help="a pseudo-terminal (the default)")
-    where.add_argument("--listen", type=int, metavar="PORT", help="TCP on 127.0.0.1 (0 = any)")
-    where.add_argument("--url", help="any pyserial URL, e.g. /dev/ttyUSB0 or loop://")
-    p.add_argument("--baud", type=int, default=9600)
-    p.add_argument("--framing", default="8N1", help="data bits, parity, stop bits (8N1)")
-    p.add_argument("--no-xonxoff", action="store_true", help="pass DC1/DC3 as data")
-    p.add_argument("--record", metavar="REC", help="record the session to this file")
-    p.add_argument("--seconds", type=float, help="stop after this much line time")
-    p.add_argument("--speed", type=float, default=1.0, help="times real time; 0 = flat out")
-    p.set_defaults(handler=_echo)
+    p = sub.add_parser("echo", help=ECHO_HELP)
+    add_echo_arguments(p)
+    p.set_defaults(handler=echo_command)
 
 
 def main(argv: list[str] | None = None) -> int:

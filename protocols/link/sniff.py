@@ -3,7 +3,7 @@
 A recording is recognised by its first line. A file that is not one but looks like one — a
 byte-order mark before the magic word, or a damaged first line above lines in the
 recording's own syntax — is refused with a message, because taking it as raw Sigma bytes
-draws a different picture and exits 0 (issue 15, item 13).
+would draw a different picture and exit 0.
 """
 
 from __future__ import annotations

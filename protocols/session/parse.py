@@ -142,11 +142,11 @@ class _Reader:
         data = self.data(obj["data"])
         if hashlib.sha256(data).hexdigest() != obj["sha256"]:
             raise self.fail(f"file {obj['name']!r}: content does not match its sha256")
-        self.rec.files[obj["name"]] = data  # type: ignore[union-attr]
+        self.rec.files[obj["name"]] = data
 
     def _event(self, obj: dict[str, Any]) -> None:
         tick = self.tick(obj)
-        self.rec.events.append((tick, self.timed(tick, obj["time"]), obj["event"]))  # type: ignore[union-attr]
+        self.rec.events.append((tick, self.timed(tick, obj["time"]), obj["event"]))
 
     def timed(self, tick: int, text: str) -> Fraction:
         """The time at ``tick``: never back, and one time for one tick."""
@@ -162,23 +162,23 @@ class _Reader:
     def _wire(self, obj: dict[str, Any]) -> None:
         if obj["dir"] not in (">", "<", "+", "-", "T"):
             raise self.fail(f"wire direction {obj['dir']!r}; expected >, <, +, - or T")
-        self.rec.wire.append((self.tick(obj), obj["dir"], self.data(obj["data"])))  # type: ignore[union-attr]
+        self.rec.wire.append((self.tick(obj), obj["dir"], self.data(obj["data"])))
 
     def _hash(self, obj: dict[str, Any]) -> None:
-        frame, every = obj["frame"], self.rec.hash_every  # type: ignore[union-attr]
+        frame, every = obj["frame"], self.rec.hash_every
         if frame != self.last_frame + every:  # the recorder hashes every multiple
             raise self.fail(f"hash record: frame {frame} is not the next multiple of "
                             f"hash_every {every} after frame {self.last_frame}")
-        self.rec.hashes.append(self._screen(obj, frame))  # type: ignore[union-attr]
+        self.rec.hashes.append(self._screen(obj, frame))
         self.last_frame = frame
 
     def _end(self, obj: dict[str, Any]) -> None:
-        every = self.rec.hash_every  # type: ignore[union-attr]
+        every = self.rec.hash_every
         if not self.last_frame <= obj["frames"] < self.last_frame + every:
             raise self.fail(f"end record: {obj['frames']} frames, but the screen hashes "
                             f"(every {every} frames) stop at frame {self.last_frame}")
-        self.rec.end = self._screen(obj, obj["frames"])  # type: ignore[union-attr]
-        self.rec.ticks = obj["ticks"]  # type: ignore[union-attr]
+        self.rec.end = self._screen(obj, obj["frames"])
+        self.rec.ticks = obj["ticks"]
         self.ended = True
 
     def _screen(self, obj: dict[str, Any], frame: int) -> ScreenHash:

@@ -102,8 +102,8 @@ class DecoderState:
         """A version 1 state file kept only the mode and coordinate settings: the decoder
         starts between orders."""
         try:
-            return cls(Mode(state["mode"]), int(state["coord_digits"]),  # type: ignore[index]
-                       bool(state["gh"]), bool(state["line_start"]))  # type: ignore[index]
+            return cls(Mode(state["mode"]), int(state["coord_digits"]),
+                       bool(state["gh"]), bool(state["line_start"]))
         except (KeyError, TypeError, ValueError) as exc:
             raise ValueError(f"Sigma state 'decoder' is corrupt: {exc!r}") from None
 

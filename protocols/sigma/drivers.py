@@ -226,9 +226,6 @@ class RalGks:
         self.out += b"HF"
         return bytes(self.out)
 
-    def end_locator(self) -> None:
-        self._put(self.enc.cursor_off())
-
     def message(self, text: str) -> None:
         self._put(b"AABH")
         self._buf += text.encode("ascii")

@@ -90,21 +90,21 @@ class RecordingSource(TabletSource):
         self._opened = False
         self._level = 0
         self._now = 0.0
-        inner.on_raw = lambda data: tape.note("raw", bytes(data).hex())  # type: ignore[attr-defined]
+        inner.on_raw = lambda data: tape.note("raw", bytes(data).hex())
         if hasattr(inner, "on_flush"):
-            inner.on_flush = lambda: tape.note("flush", None)  # type: ignore[attr-defined]
+            inner.on_flush = lambda: tape.note("flush", None)
         if hasattr(inner, "clock"):  # a streaming serial tablet: silence is watched
             self.clock = lambda: self._now
-            self.stall_release = inner.stall_release  # type: ignore[attr-defined]
-            self.stall_fallback = inner.stall_fallback  # type: ignore[attr-defined]
+            self.stall_release = inner.stall_release
+            self.stall_fallback = inner.stall_fallback
 
     @property
-    def model(self) -> TabletModel:  # type: ignore[override]
+    def model(self) -> TabletModel:
         return self.inner.model
 
     @property
     def last_data(self) -> float:
-        return self.inner.last_data  # type: ignore[attr-defined]
+        return self.inner.last_data
 
     def read(self, timeout: float = 0.0) -> list[TabletEvent]:
         if not self._opened:  # noted at the poll that first reads it (when it was adopted)
@@ -116,7 +116,7 @@ class RecordingSource(TabletSource):
             self.tape.note("lost", str(exc))
             raise
         if hasattr(self, "clock"):
-            self._now = self.inner.clock()  # type: ignore[attr-defined]
+            self._now = self.inner.clock()
             level = _idle_level(self, self._now - self.last_data)
             if level != self._level:
                 self._level = level

@@ -1,4 +1,4 @@
-"""Ending "Fast forward" (issue 17): Step mode or Auto mode goes back to the display
+"""Ending "Fast forward": Step mode or Auto mode goes back to the display
 frequency in use before it, and the next shown generation is that many on."""
 
 from __future__ import annotations

@@ -140,7 +140,7 @@ def test_main_menu_layout_and_do_nothing():
     d.run("release middle 300 300\nframes 1")
     assert not menu.is_open and d.program.session.generation == 0
     assert MAIN_ITEMS[:10][5] == "Do nothing" and MAIN_ITEMS[10] == "Centralise viewport"
-    assert menu.width == 3 * 144  # the third column: HashLife's jumps (issue 17)
+    assert menu.width == 3 * 144  # the third column: HashLife's jumps
     assert_matches_golden(f[oy:oy + 180, ox:ox + menu.width], DATA / "main_menu.png")
 
 

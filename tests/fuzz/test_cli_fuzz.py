@@ -1,4 +1,4 @@
-"""CI's fuzz run (issue 15): every corpus file and a short seeded mutated run of every format,
+"""CI's fuzz run: every corpus file and a short seeded mutated run of every format,
 through the in-process targets and through the real command line, with no traceback, no input
 taking over 20 s and no memory growth over 1 GB. The long coverage-guided runs are by hand
 (``python fuzz/run.py --seconds N``; figures in docs/reliability.md)."""

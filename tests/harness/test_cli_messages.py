@@ -1,4 +1,4 @@
-"""What a newcomer sees (issue 18): bare ``camlab88`` prints the help, a misspelt command
+"""What a newcomer sees: bare ``camlab88`` prints the help, a misspelt command
 gets "did you mean", ``demo --help`` names every act, commands say what they wrote."""
 
 from __future__ import annotations

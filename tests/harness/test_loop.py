@@ -89,7 +89,7 @@ def test_frames_dir_and_screenshot(tmp_path) -> None:
 
 def test_an_unwritable_screenshot_is_one_line_naming_it() -> None:
     with pytest.raises(SystemExit, match="cannot write /proc/nope/s.png"):
-        run(Counter(2), RunOptions(screenshot="/proc/nope/s.png", command="x"))  # type: ignore[arg-type]
+        run(Counter(2), RunOptions(screenshot="/proc/nope/s.png", command="x"))
 
 
 def test_the_display_rule(monkeypatch, capsys) -> None:

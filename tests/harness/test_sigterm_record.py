@@ -1,7 +1,6 @@
 """SIGTERM (kill, a service manager, a CI timeout) ends any command the way Ctrl-C does:
 a headless run's ``--record`` file is finished and written, and the exit status is 143
-(issue 18's repeat trial: a headless ``rainbow run --record`` killed by SIGTERM wrote
-nothing)."""
+(a headless ``rainbow run --record`` killed by SIGTERM once wrote nothing)."""
 
 from __future__ import annotations
 

@@ -1,5 +1,5 @@
 """The sample-path fits of §3.1.2: the thesis's literal per-axis stretch beside ours, the
-old mode name, and unusable path files (issue 15 item 5)."""
+old mode name, and unusable path files."""
 
 from __future__ import annotations
 
@@ -111,7 +111,7 @@ def _key(x: float) -> Drawing:
 
 @pytest.mark.parametrize("pts", [[], [(1.0, 2.0)], [(1.0, 1.0), (1.0, 1.0)]])
 def test_unusable_path_is_a_clear_error_not_an_index_error(pts) -> None:
-    # Issue 15 item 5: `points 0` ended in an IndexError inside the fit.
+    # `points 0` must be this error, not an IndexError inside the fit.
     with pytest.raises(ValueError, match="two points|no length"):
         inbetween(_key(0), _key(3), frames=4, path=SamplePath(pts))
 

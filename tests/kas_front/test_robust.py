@@ -94,7 +94,7 @@ def test_guide_keyframe_highlighted_on_screen() -> None:
 
 
 def test_a_script_file_with_a_bad_byte_a_directory_or_no_file_is_named(tmp_path) -> None:
-    """Issue 15: non-UTF-8 KAS scripts named Python's codec, not the file, line and column."""
+    """A non-UTF-8 KAS script is named by file, line and column, not by Python's codec."""
     import pytest
 
     from apps.kas.files import KasFileError

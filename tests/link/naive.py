@@ -45,7 +45,7 @@ def simulate(
             for d in (">", "<"):
                 if queues[d]:
                     drained[d] = None
-            out["drained"] = drained  # type: ignore[assignment]
+            out["drained"] = drained
             return out
         s, d = min(live)
         _, byte = queues[d].pop(0)

@@ -1,9 +1,12 @@
 from __future__ import annotations
 
+import argparse
 import io
 import socket
 import threading
 from pathlib import Path
+
+import pytest
 
 from protocols.link import LineSettings, Recorder, SerialLine
 from protocols.link.cli import dump, main, printable, run_echo, write_stream
@@ -80,3 +83,20 @@ def test_link_dump_of_a_session_recording_says_which_flag_makes_which(tmp_path: 
     rec = tmp_path / "a.rec"
     make_recording(rec)  # a real link recording still dumps through the command
     assert camlab88_main(["link", "dump", str(rec)]) == 0
+
+
+def _tool_options(parser: argparse.ArgumentParser, *path: str) -> list[tuple]:
+    for name in path:
+        sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+        parser = sub.choices[name]
+    return [(tuple(a.option_strings), a.dest, a.default, a.help) for a in parser._actions]
+
+
+@pytest.mark.parametrize("tool", ["echo", "stream"])
+def test_camlab88_link_and_python_m_protocols_link_share_one_parser(tool: str) -> None:
+    from camlab88.cli import build_parser
+    from protocols.link.cli import add_tools
+
+    standalone = argparse.ArgumentParser()
+    add_tools(standalone)
+    assert _tool_options(build_parser(), "link", tool) == _tool_options(standalone, tool)

@@ -6,15 +6,7 @@ import serial
 
 from protocols.link import SerialLine
 from protocols.link.pty import PtyPort
-
-
-def read_exactly(port: serial.Serial, n: int) -> bytes:
-    got = b""
-    while len(got) < n:
-        more = port.read(n - len(got))
-        assert more, f"timed out after {got!r}"
-        got += more
-    return got
+from tests.link.exactly import read_exactly
 
 
 def test_pyserial_opens_the_slave_and_all_256_byte_values_pass_both_ways() -> None:
@@ -30,7 +22,7 @@ def test_pyserial_opens_the_slave_and_all_256_byte_values_pass_both_ways() -> No
                 got += more
             assert got == everything
             pty.write(everything[::-1])
-            assert read_exactly(client, 256) == everything[::-1]
+            assert read_exactly(client.read, 256) == everything[::-1]
         finally:
             client.close()
 
@@ -45,7 +37,7 @@ def test_client_may_reconnect_and_nobody_reading_never_blocks() -> None:
             again.reset_input_buffer()
             assert pty.discard_backlog() > 0  # what a cable nobody listened to would lose
             pty.write(b"ping")
-            assert read_exactly(again, 4) == b"ping"
+            assert read_exactly(again.read, 4) == b"ping"
         finally:
             again.close()
     assert pty.closed
@@ -73,6 +65,6 @@ def test_pty_bridge_end_to_end_with_pyserial() -> None:
             line.device.write(b"REPORT\r")  # the device answers up the line
             line.clock.advance(1)
             bridge.poll()
-            assert read_exactly(client, 7) == b"REPORT\r"
+            assert read_exactly(client.read, 7) == b"REPORT\r"
         finally:
             client.close()

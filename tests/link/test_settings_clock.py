@@ -41,7 +41,7 @@ def test_framing_gives_exact_character_time(text: str, bits: Fraction, char_time
 )
 def test_bad_settings_are_rejected(kwargs: dict[str, object]) -> None:
     with pytest.raises(ValueError):
-        LineSettings(**kwargs)  # type: ignore[arg-type]
+        LineSettings(**kwargs)
 
 
 def test_parse_rejects_garbage() -> None:
@@ -75,7 +75,7 @@ def test_to_time() -> None:
     with pytest.raises(ValueError):
         to_time(float("nan"))
     with pytest.raises(TypeError):
-        to_time("1")  # type: ignore[arg-type]
+        to_time("1")
 
 
 def test_throttle_maps_virtual_to_wall_time_with_a_fake_clock() -> None:

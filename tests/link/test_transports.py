@@ -6,6 +6,7 @@ import socket
 
 from protocols.link import SerialLine
 from protocols.link.transports import BUSY, SerialUrlBridge, TcpBridge
+from tests.link.exactly import read_exactly
 
 
 def pump(line: SerialLine, bridge, want: int, endpoint_read) -> bytes:
@@ -16,15 +17,6 @@ def pump(line: SerialLine, bridge, want: int, endpoint_read) -> bytes:
         got += endpoint_read()
         if len(got) >= want:
             break
-    return got
-
-
-def recv_exactly(sock: socket.socket, n: int) -> bytes:
-    got = b""
-    while len(got) < n:
-        more = sock.recv(n - len(got))
-        assert more, f"connection closed after {got!r}"
-        got += more
     return got
 
 
@@ -41,8 +33,8 @@ def test_tcp_client_talks_to_the_device_end_and_may_reconnect() -> None:
         line.device.write(b"ok")
         line.clock.advance(1)
         bridge.poll(timeout=0.2)
-        assert recv_exactly(client, 2) == b"ok"
-        assert recv_exactly(second, len(BUSY)) == BUSY  # told why, then closed
+        assert read_exactly(client.recv, 2) == b"ok"
+        assert read_exactly(second.recv, len(BUSY)) == BUSY  # told why, then closed
         assert second.recv(10) == b""
         second.close()
         assert "refused" in [e.kind for e in bridge.events]
@@ -62,7 +54,7 @@ def test_tcp_client_talks_to_the_device_end_and_may_reconnect() -> None:
         line.device.write(b"back")
         line.clock.advance(1)
         bridge.poll()
-        assert recv_exactly(again, 4) == b"back"
+        assert read_exactly(again.recv, 4) == b"back"
         again.close()
 
 

@@ -1,6 +1,5 @@
 """``sigma run --record-line`` stopped by SIGTERM (kill, a service manager) still writes its
-recording, as Ctrl-C does: issue 18 item 8, found again by the repeat trial
-(docs/newcomer_trial.md)."""
+recording, as Ctrl-C does (docs/newcomer_trial.md)."""
 
 from __future__ import annotations
 

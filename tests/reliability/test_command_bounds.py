@@ -1,4 +1,4 @@
-"""Bounds the commands apply before any work (issue 15 items 7 and 10): a seed the CA kernels
+"""Bounds the commands apply before any work: a seed the CA kernels
 cannot take, a snooker frame rate that would fill memory, a directory given as a session."""
 
 from __future__ import annotations

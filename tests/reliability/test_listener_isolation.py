@@ -14,36 +14,30 @@ from emulator.harness.sigma_line import SigmaLineTarget
 from emulator.sigma import Terminal
 from protocols.link import LineSettings, SerialLine
 from protocols.link.transports import TcpBridge
-from tests.support.listeners import drain, echo_step
+from tests.support.listeners import EchoLine, drain
 
 A_BYTES = bytes(range(0x41, 0x5B)) * 1200  # 31,200 bytes of A-Z: 32 s of line time
 
 
 def test_the_next_client_gets_none_of_a_leaving_clients_bytes_and_its_echo_at_once() -> None:
-    line = SerialLine(LineSettings())
-    bridge = TcpBridge(0, endpoint=line.host)
-    k = 0
-    try:
-        a = socket.create_connection(("127.0.0.1", bridge.port), timeout=5)
+    with EchoLine() as echo:
+        a = echo.connect()
         a.sendall(A_BYTES)
-        for _ in range(200):  # 2 s of line time: A gets some of its echo
-            k = echo_step(bridge, line, k)
+        echo.step(200)  # 2 s of line time: A gets some of its echo
         assert drain(a), "A's own echo should have started"
         a.close()
-        k = echo_step(bridge, line, k)
-        b = socket.create_connection(("127.0.0.1", bridge.port), timeout=5)
+        echo.step()
+        b = echo.connect()
         b.sendall(b"bee 123")
-        joined = line.clock.exact
+        joined = echo.line.clock.exact
         got, when = b"", None
         for _ in range(300):  # 3 s of line time at most
-            k = echo_step(bridge, line, k)
+            echo.step()
             got += drain(b)
             if got == b"bee 123":
-                when = line.clock.exact
+                when = echo.line.clock.exact
                 break
         b.close()
-    finally:
-        bridge.close()
     assert got == b"bee 123", got[:80]
     # 7 characters go down and come back in 14 ms of line time; a few polls of settling
     assert when is not None and when - joined <= Fraction(1, 10), float(when - joined)

@@ -1,4 +1,4 @@
-"""Issue 15 item 8 and "Servers": `rainbow serve` survives resets, half frames, garbage and
+"""Servers (docs/reliability.md): `rainbow serve` survives resets, half frames, garbage and
 idle clients, keeps per-connection state, and refuses a second program with a message.
 Real sockets on 127.0.0.1 ports the test opens; every loop is bounded."""
 

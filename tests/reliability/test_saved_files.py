@@ -1,5 +1,5 @@
-"""Issue 15 "Leftovers": a killed writer's temporary file is swept up by the next write; GIF
-and MP4 export use a unique temporary name; a PNG sequence appears as a whole."""
+"""Leftovers (docs/reliability.md): a killed writer's temporary file is swept up by the next
+write; GIF and MP4 export use a unique temporary name; a PNG sequence appears as a whole."""
 
 from __future__ import annotations
 

@@ -1,5 +1,5 @@
-"""Issue 15 item 12 (a HID descriptor asking for 2^31 values) and issue 18 item 9 (a tablet
-on a dead port): bounded, with a message."""
+"""A HID descriptor asking for 2^31 values and a tablet on a dead port: bounded, with a
+message."""
 
 from __future__ import annotations
 

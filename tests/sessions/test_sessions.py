@@ -91,7 +91,7 @@ def test_record_then_replay_writes_frames_and_screenshot(tmp_path: Path, monkeyp
                  "--screenshot", "last.png"]) == 0
     frames = sorted((tmp_path / "out").glob("frame_*.png"))
     assert [f.name for f in frames][:2] == ["frame_00000.png", "frame_00001.png"]
-    assert len(frames) == read(tmp_path / "c.session").end.frame  # type: ignore[union-attr]
+    assert len(frames) == read(tmp_path / "c.session").end.frame
     assert (tmp_path / "last.png").exists()
     assert "e.events" in read(tmp_path / "c.session").files  # the input, by content
 

@@ -1,6 +1,6 @@
 """`sigma render` on damaged input: a recording behind a byte-order mark is refused (it was drawn
 as raw bytes, exit 0), and a recording whose last time is 10^8 s is refused before any PNG is
-written (it would have meant 2.5 billion frames) — issue 15 items 10 and 13."""
+written (it would have meant 2.5 billion frames)."""
 
 from __future__ import annotations
 

@@ -22,7 +22,7 @@ DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_camera"
 
 
 @pytest.fixture()
-def tool(tmp_path: Path):  # type: ignore[no-untyped-def]
+def tool(tmp_path: Path):
     script = tmp_path / "cam.ccl"
     shutil.copy(DATA / "thesis_example.ccl", script)
     rb = in_process()
@@ -31,7 +31,7 @@ def tool(tmp_path: Path):  # type: ignore[no-untyped-def]
     return rb, t
 
 
-def keys(rb, text: str) -> None:  # type: ignore[no-untyped-def]
+def keys(rb, text: str) -> None:
     for ch in text:
         name = {"\n": "return", " ": "space"}.get(ch, ch)
         rb.inject(KeyEvent(0, name, "" if ch == "\n" else ch, True))
@@ -43,7 +43,7 @@ def keys(rb, text: str) -> None:  # type: ignore[no-untyped-def]
     measured="an edit to the script in the camera tool is interpreted at once and the preview "
              "shows the new view",
     verdict="agrees (built: the thesis only proposed it)")
-def test_an_edit_is_interpreted_at_once_and_the_view_follows(tool) -> None:  # type: ignore[no-untyped-def]
+def test_an_edit_is_interpreted_at_once_and_the_view_follows(tool) -> None:
     rb, t = tool
     rb.inject(KeyEvent(0, "tab", "", True))  # pause on frame 2
     t.step()
@@ -59,7 +59,7 @@ def test_an_edit_is_interpreted_at_once_and_the_view_follows(tool) -> None:  # t
     assert not np.array_equal(rb.executor.last_frame, before)
 
 
-def test_errors_are_marked_and_the_preview_goes_on(tool) -> None:  # type: ignore[no-untyped-def]
+def test_errors_are_marked_and_the_preview_goes_on(tool) -> None:
     rb, t = tool
     t.buf.place(3, 0)
     keys(rb, "veiw")  # "veiwviewpoint at (0,0,0);" on line 4
@@ -75,7 +75,7 @@ def test_errors_are_marked_and_the_preview_goes_on(tool) -> None:  # type: ignor
     assert t.frame == frame_before + 1  # still playing
 
 
-def test_a_change_saved_from_another_editor_is_picked_up(tool) -> None:  # type: ignore[no-untyped-def]
+def test_a_change_saved_from_another_editor_is_picked_up(tool) -> None:
     rb, t = tool
     path = t.path
     path.write_text(path.read_text().replace("focal length of 50", "focal length of 90"))
@@ -85,7 +85,7 @@ def test_a_change_saved_from_another_editor_is_picked_up(tool) -> None:  # type:
     assert t.result.focal[0] == 90 and "reloaded" in t.status and not t.modified
 
 
-def test_a_disk_change_does_not_overwrite_unsaved_edits(tool) -> None:  # type: ignore[no-untyped-def]
+def test_a_disk_change_does_not_overwrite_unsaved_edits(tool) -> None:
     rb, t = tool
     keys(rb, "x")
     t.step()
@@ -100,7 +100,7 @@ def test_a_disk_change_does_not_overwrite_unsaved_edits(tool) -> None:  # type: 
     assert t.buf.text == ":focal length of 200\n" and t.result.focal[5] == 200
 
 
-def test_ctrl_s_saves_atomically_and_is_not_seen_as_a_change(tool) -> None:  # type: ignore[no-untyped-def]
+def test_ctrl_s_saves_atomically_and_is_not_seen_as_a_change(tool) -> None:
     rb, t = tool
     keys(rb, "A comment ")
     rb.inject(KeyEvent(0, "ctrl", "", True))
@@ -112,7 +112,7 @@ def test_ctrl_s_saves_atomically_and_is_not_seen_as_a_change(tool) -> None:  # t
     assert t.interpretations == n  # our own save does not trigger a reload
 
 
-def test_scrub_on_the_time_line_and_step_keys(tool) -> None:  # type: ignore[no-untyped-def]
+def test_scrub_on_the_time_line_and_step_keys(tool) -> None:
     rb, t = tool
     y = layout.TIMELINE[1] + 20
     x = layout.TIMELINE[0] + layout.timeline_x(44, 75)
@@ -128,7 +128,7 @@ def test_scrub_on_the_time_line_and_step_keys(tool) -> None:  # type: ignore[no-
     assert t.frame == layout.timeline_frame(x + 100, 75) - 1
 
 
-def test_timeline_marks_the_strike_and_the_tool_screen(tool) -> None:  # type: ignore[no-untyped-def]
+def test_timeline_marks_the_strike_and_the_tool_screen(tool) -> None:
     rb, t = tool
     assert (44, "strike", 5) in t.events and (75, "stop", 5) in t.events
     tl = rb.client.get_pixels(t.timeline.pad, 0, 0, *layout.TIMELINE[2:])

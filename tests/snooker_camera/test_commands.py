@@ -16,7 +16,7 @@ DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_camera"
 SHOT = str(DATA / "pink_shot.checkpoint")
 
 
-def test_ccl_writes_the_view_file(tmp_path: Path, capsys) -> None:  # type: ignore[no-untyped-def]
+def test_ccl_writes_the_view_file(tmp_path: Path, capsys) -> None:
     out = tmp_path / "ex.views"
     assert main(["snooker", "ccl", str(DATA / "thesis_example.ccl"), SHOT, "--out",
                  str(out)]) == 0
@@ -26,7 +26,7 @@ def test_ccl_writes_the_view_file(tmp_path: Path, capsys) -> None:  # type: igno
     assert "wrote 75 frames" in capsys.readouterr().out
 
 
-def test_ccl_reports_every_error_and_writes_nothing(tmp_path: Path, capsys) -> None:  # type: ignore[no-untyped-def]
+def test_ccl_reports_every_error_and_writes_nothing(tmp_path: Path, capsys) -> None:
     script = tmp_path / "bad.ccl"
     script.write_text(":\nveiwpoint at (0,0,0);\nfocal length of 3\n:from 60 until pink ball "
                       "starts\n")
@@ -39,7 +39,7 @@ def test_ccl_reports_every_error_and_writes_nothing(tmp_path: Path, capsys) -> N
     assert "3 errors; no view file written" in err[3] and not out.exists()
 
 
-def test_ccl_names_a_bad_checkpoint(tmp_path: Path, capsys) -> None:  # type: ignore[no-untyped-def]
+def test_ccl_names_a_bad_checkpoint(tmp_path: Path, capsys) -> None:
     bad = tmp_path / "bad.cp"
     bad.write_text("1,2\n")
     assert main(["snooker", "ccl", str(DATA / "thesis_example.ccl"), str(bad), "--out",
@@ -66,7 +66,7 @@ def test_visualise_writes_frames_numbered_as_the_checkpoint(tmp_path: Path) -> N
     assert a.shape == (576, 768, 3) and not np.array_equal(a, b)
 
 
-def test_camera_tool_headless_with_scripted_input(tmp_path: Path, capsys) -> None:  # type: ignore[no-untyped-def]
+def test_camera_tool_headless_with_scripted_input(tmp_path: Path, capsys) -> None:
     script = tmp_path / "cam.ccl"
     shutil.copy(DATA / "thesis_example.ccl", script)
     events = tmp_path / "ev.txt"
@@ -78,7 +78,7 @@ def test_camera_tool_headless_with_scripted_input(tmp_path: Path, capsys) -> Non
 
 
 def test_a_recorded_session_replays_the_script_saved_from_outside(tmp_path: Path,
-                                                                  monkeypatch) -> None:  # type: ignore[no-untyped-def]
+                                                                  monkeypatch) -> None:
     import argparse
 
     from apps.snooker.camera import motion
@@ -96,7 +96,7 @@ def test_a_recorded_session_replays_the_script_saved_from_outside(tmp_path: Path
     opts = run_options(args, command.COMMAND, "test", argv=argv)
 
     class Editor(Plugin):  # another editor saves the script while the tool runs
-        def post_tick(self, harness) -> None:  # type: ignore[no-untyped-def]
+        def post_tick(self, harness) -> None:
             if harness.ticks == 5:
                 Path("cam.ccl").write_text(":focal length of 300\n")
                 os.utime("cam.ccl", ns=(1, 3))
@@ -107,7 +107,7 @@ def test_a_recorded_session_replays_the_script_saved_from_outside(tmp_path: Path
     assert main(["replay", "rec.jsonl", "--headless", "--check"]) == 0
 
 
-def test_readme_camera_tool_command(tmp_path: Path, capsys) -> None:  # type: ignore[no-untyped-def]
+def test_readme_camera_tool_command(tmp_path: Path, capsys) -> None:
     """The README's camera-tool screenshot command, headless, with the shipped events."""
     script = tmp_path / "example.ccl"
     shutil.copy(DATA / "thesis_example.ccl", script)

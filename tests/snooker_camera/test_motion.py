@@ -26,7 +26,7 @@ def test_the_shipped_shot_strike_agrees_with_its_session() -> None:
 
 @pytest.mark.parametrize(("speed", "angle"), [(2.0, 10.0), (4.0, 3.0), (3.0, 12.0),
                                             (5.0, 8.0)])
-def test_inferred_strikes_match_the_session_on_simulated_shots(speed, angle) -> None:  # type: ignore[no-untyped-def]
+def test_inferred_strikes_match_the_session_on_simulated_shots(speed, angle) -> None:
     s = Session.new_game(Table())
     s.strike(CUE, speed, angle)
     s.simulate_to_rest()

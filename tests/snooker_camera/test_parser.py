@@ -15,7 +15,7 @@ HX, HY = T.length_m / 2, T.width_m / 2
 CAMERA_1 = ccl_to_table(DEFAULT_CAMERAS[1]).tolist()  # CCL's +x is the table frame's -x
 
 
-def run(text: str, motion=None):  # type: ignore[no-untyped-def]
+def run(text: str, motion=None):
     return ccl.compile_script(text, motion or pink_rolls())
 
 

@@ -1,4 +1,4 @@
-"""The perspective of issue 12 / thesis §6.3.2, checked against hand-worked values."""
+"""The perspective of thesis §6.3.2, checked against hand-worked values."""
 
 from __future__ import annotations
 

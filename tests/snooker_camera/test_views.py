@@ -60,7 +60,7 @@ vec = st.tuples(finite, finite, finite)
 @settings(max_examples=200, deadline=None)
 @given(st.integers(1, 10**6), st.lists(st.tuples(vec, vec, st.floats(8, 2000)), min_size=1,
                                       max_size=8))
-def test_any_views_round_trip(first: int, rows: list) -> None:  # type: ignore[type-arg]
+def test_any_views_round_trip(first: int, rows: list) -> None:
     rows = [r for r in rows if r[0] != r[1]]
     views = [View(first + i, o, v, f) for i, (o, v, f) in enumerate(rows)]
     if views:

@@ -22,7 +22,7 @@ from tests.support.golden import assert_matches_golden
 DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_camera"
 
 
-def independent_projection(o, v, focal, p, w=768, h=576):  # type: ignore[no-untyped-def]
+def independent_projection(o, v, focal, p, w=768, h=576):
     """Written out again from the issue's words, not imported."""
     o, v, p = (np.asarray(a, dtype=float) for a in (o, v, p))
     f = (v - o) / math.dist(v, o)
@@ -38,7 +38,7 @@ def colour_mask(frame: np.ndarray, colour: str) -> np.ndarray:
     return np.all(frame == np.array(parse_colour(colour), dtype=np.uint8), axis=2)
 
 
-def shown(motion_, views):  # type: ignore[no-untyped-def]
+def shown(motion_, views):
     rb = in_process()
     vis = Visualiser(rb.client, motion_, views)
     vis.step()

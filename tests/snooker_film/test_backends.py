@@ -130,7 +130,7 @@ def test_film_frames_are_the_renderers_frames(reference: dict[int, bytes],
                                               tmp_path: Path) -> None:
     """The same bytes `snooker render --mode truecolour` writes (render_frame + write_png)."""
     from apps.snooker.render.truecolour import RenderOptions, render_frame
-    from emulator.png import write_png
+    from base.png import write_png
 
     t = small_tasks()[3]
     write_png(render_frame(break_scene(), t.view, RenderOptions(t.width, t.height)),

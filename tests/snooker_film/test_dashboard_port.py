@@ -20,7 +20,7 @@ def test_a_local_cluster_does_not_need_port_8787() -> None:
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("error")  # "Port 8787 is already in use" is a warning
-            cluster = DaskCluster(scene=None, address="local", workers=1)  # type: ignore[arg-type]
+            cluster = DaskCluster(scene=None, address="local", workers=1)
         try:
             assert cluster.workers == 1
         finally:

@@ -13,7 +13,8 @@ import pytest
 from apps.snooker.film.backends import InProcess
 from apps.snooker.film.pngcheck import is_complete
 from apps.snooker.film.schedule import FilmError, frame_file, render_film
-from apps.snooker.film.task import FrameTask, encode_png, scene_digest
+from apps.snooker.film.task import FrameTask, scene_digest
+from base.png import png_bytes
 from tests.snooker_film.helpers import SIZE, break_scene, frame_bytes, small_tasks
 
 
@@ -33,7 +34,7 @@ def test_resuming_skips_finished_frames_and_redoes_broken_ones(
     torn.write_bytes(torn.read_bytes()[:-40])  # a PNG cut short
     import numpy as np
 
-    frame_file(tmp_path, 5).write_bytes(encode_png(np.zeros((SIZE[1] * 2, SIZE[0], 3),
+    frame_file(tmp_path, 5).write_bytes(png_bytes(np.zeros((SIZE[1] * 2, SIZE[0], 3),
                                                             dtype=np.uint8)))  # wrong size
     report = _film(tasks, tmp_path)
     assert sorted(report.rendered) == [2, 3, 5]
@@ -100,7 +101,7 @@ def test_resume_checks_each_frame_against_the_hash_of_what_was_written(
     frame_file(tmp_path, 4).write_bytes(frame_file(tmp_path, 6).read_bytes())  # copied over
     image = iio.imread(frame_file(tmp_path, 7).read_bytes()).copy()
     image[10, 10:30] = 255 - image[10, 10:30]  # 20 pixels repainted
-    frame_file(tmp_path, 7).write_bytes(encode_png(image))
+    frame_file(tmp_path, 7).write_bytes(png_bytes(image))
     assert png_size(frame_file(tmp_path, 7).read_bytes()) == SIZE
     report = _film(tasks, tmp_path)
     assert sorted(report.rendered) == [4, 7]

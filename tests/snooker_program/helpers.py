@@ -6,7 +6,7 @@ from apps.snooker.program import script_events
 from apps.snooker.program.program import Program
 
 
-def feed(rb, program: Program, text: str) -> None:  # type: ignore[no-untyped-def]
+def feed(rb, program: Program, text: str) -> None:
     """Run a script (see script_events) to its end."""
     player = script_events.Player(script_events.parse(text, start=program.mouse or (0, 0)))
     while not player.finished:
@@ -15,8 +15,8 @@ def feed(rb, program: Program, text: str) -> None:  # type: ignore[no-untyped-de
         program.step()
 
 
-def screen_colour(rb, x: int, y: int) -> tuple[int, int, int]:  # type: ignore[no-untyped-def]
-    return tuple(int(v) for v in rb.executor.last_frame[y, x])  # type: ignore[return-value]
+def screen_colour(rb, x: int, y: int) -> tuple[int, int, int]:
+    return tuple(int(v) for v in rb.executor.last_frame[y, x])
 
 
 def hex_rgb(c: str) -> tuple[int, int, int]:

@@ -1,4 +1,4 @@
-"""``snooker render --mode truecolour`` through apps.snooker.film's scheduler (issue 14):
+"""``snooker render --mode truecolour`` through apps.snooker.film's scheduler:
 frames from 2 local workers and from ``--dask local`` are byte-identical to the sequential
 renderer's, a rerun skips complete frames and re-renders a torn one, films are written;
 the Sigma modes in parallel (a fresh T5688 a frame) equal one terminal frame after frame."""

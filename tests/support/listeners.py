@@ -12,20 +12,45 @@ import sys
 import time
 from fractions import Fraction
 
-from protocols.link import SerialLine
+from protocols.link import LineSettings, SerialLine
 from protocols.link.transports import TcpBridge
 
 STEP = Fraction(1, 100)
 
 
-def echo_step(bridge: TcpBridge, line: SerialLine, k: int) -> int:
-    """One step of the echo device (as protocols.link.cli.run_echo does); returns k + 1."""
+def echo_step(bridge: TcpBridge, line: SerialLine, k: int, wait: float = 0.0) -> int:
+    """One step of the echo device (as protocols.link.cli.run_echo does), waiting at most
+    ``wait`` real seconds for the sockets; returns k + 1."""
     line.clock.advance_to(k * STEP)
-    bridge.poll(timeout=0.0)
+    bridge.poll(timeout=wait)
     data = line.device.read()
     if data:
         line.device.write(data)
     return k + 1
+
+
+class EchoLine:
+    """The echo device on a fresh line, its host end a TcpBridge on a 127.0.0.1 port the test
+    opens (``with EchoLine() as echo``); ``step(n)`` runs it n steps of the virtual clock,
+    each waiting at most ``wait`` real seconds for the sockets."""
+
+    def __init__(self, wait: float = 0.0) -> None:
+        self.line = SerialLine(LineSettings())
+        self.bridge = TcpBridge(0, endpoint=self.line.host)
+        self.wait, self.k = wait, 0
+
+    def connect(self) -> socket.socket:
+        return socket.create_connection(("127.0.0.1", self.bridge.port), timeout=5)
+
+    def step(self, n: int = 1) -> None:
+        for _ in range(n):
+            self.k = echo_step(self.bridge, self.line, self.k, self.wait)
+
+    def __enter__(self) -> EchoLine:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.bridge.close()
 
 
 def drain(s: socket.socket) -> bytes:
@@ -48,7 +73,7 @@ def start(args: list[str], cwd: str | None = None) -> tuple[subprocess.Popen, st
            if k not in ("DISPLAY", "WAYLAND_DISPLAY", "SDL_VIDEODRIVER")}
     proc = subprocess.Popen([sys.executable, "-m", "camlab88", *args], cwd=cwd, env=env,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    first = proc.stdout.readline()  # type: ignore[union-attr]
+    first = proc.stdout.readline()
     if not first:
         proc.kill()
         raise AssertionError(f"{args} printed nothing: {proc.communicate(timeout=10)}")

@@ -71,7 +71,7 @@ def test_tablet_input_emulated_goes_through_the_protocol(tmp_path, monkeypatch) 
     import time
 
     monkeypatch.setenv("CAMLAB88_CONFIG_DIR", str(tmp_path))  # no stray user calibration
-    from emulator.tablet.pointer_input import TabletInput
+    from emulator.tablet_input.pointer import TabletInput
     from protocols.tablets.input_layer import MouseSample
 
     notes: list[str] = []
@@ -95,7 +95,7 @@ def test_tablet_input_emulated_goes_through_the_protocol(tmp_path, monkeypatch) 
 
 def test_tablet_input_without_device_uses_mouse(tmp_path, monkeypatch) -> None:
     monkeypatch.setenv("CAMLAB88_CONFIG_DIR", str(tmp_path))
-    from emulator.tablet.pointer_input import TabletInput
+    from emulator.tablet_input.pointer import TabletInput
     from protocols.tablets.input_layer import MouseSample
 
     notes: list[str] = []
@@ -110,7 +110,7 @@ def test_tablet_input_passes_protocol_options_through(source, tmp_path, monkeypa
     import time
 
     monkeypatch.setenv("CAMLAB88_CONFIG_DIR", str(tmp_path))
-    from emulator.tablet.pointer_input import TabletInput
+    from emulator.tablet_input.pointer import TabletInput
     from protocols.tablets.input_layer import MouseSample
 
     tin = TabletInput(source)

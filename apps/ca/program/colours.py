@@ -39,7 +39,7 @@ def page(kind: str, rules: RuleSet | None, grid: bool) -> list[str]:
         if kind == "mono":
             forms.append((255, 255, 255))
         elif kind == "colour" and form is not None and form.colour is not None:
-            forms.append(tuple(form.colour))  # type: ignore[arg-type]
+            forms.append(tuple(form.colour))
         else:  # editing: the unique colour of each life-form, whatever COLOUR says
             forms.append(default_colour(t))
     if kind == "edit":  # shading pixels darker, so the style shows

@@ -35,12 +35,6 @@ Dialogue = Generator[Ask, Any, None]
 ERROR = "#ff9c9c"
 
 
-def ask_rect(prompt: str) -> Dialogue:
-    """Two opposite corners with the right button; a rubber band follows the second."""
-    rect = yield Ask("rect", prompt)
-    return rect
-
-
 def _path(name: str, suffix: str) -> str:
     return name if os.path.splitext(name)[1] else name + suffix
 

@@ -18,7 +18,7 @@ MAIN_LEFT = ["Advance area", "Alter display", "Change rules", "Clear area", "Sta
 MAIN_RIGHT = ["Centralise viewport", "Finish", "Step mode", "Auto mode", "Zoom 16", "Zoom 8",
               "Zoom 4", "Zoom 2", "Zoom 1", "Zoom subpixel"]
 MAIN_ITEMS = MAIN_LEFT + MAIN_RIGHT
-# Beyond the thesis (issue 17): a third column for HashLife's jumps, shown when the program
+# Beyond the thesis: a third column for HashLife's jumps, shown when the program
 # asks for it (MainMenu(..., jumps=True)); the twenty items keep their places.
 JUMP_ITEMS = ["Go to generation", "Fast forward"]
 EDIT_ITEMS = {"centre": "Leave editing", "up": "Step up", "down": "Step down",

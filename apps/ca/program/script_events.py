@@ -19,11 +19,11 @@ __all__ = ["MouseState", "ScriptError", "Step", "parse", "play", "read"]
 
 def parse(text: str, source: str = "<events>", mouse: MouseState | None = None) -> list[Step]:
     """Events and frame counts in order; errors name ``source:line:col``."""
-    return parse_script(text, source, mouse=mouse).flat()  # type: ignore[return-value]
+    return parse_script(text, source, mouse=mouse).flat()
 
 
 def read(path: str) -> list[Step]:
-    return load(path).flat()  # type: ignore[return-value]
+    return load(path).flat()
 
 
 def play(steps: list[Step], inject: Callable[[MouseEvent | KeyEvent], None],

@@ -5,7 +5,7 @@ and drawing of the next generation, only before displaying it". With a display f
 of N the look-ahead is N generations; checkpoints that fall inside it are kept and written
 only when that state is shown (an edit may still discard it).
 
-The look-ahead jumps (issue 17): the engine's "auto" algorithm takes HashLife for long
+The look-ahead jumps: the engine's "auto" algorithm takes HashLife for long
 stretches of deterministic rules, from checkpoint to checkpoint (a checkpoint after a jump
 equals one after stepping).  Beyond the thesis: "Go to generation N" (a look-ahead of
 N minus the shown generation, stopping where the script intervenes) and "Fast forward" (the

@@ -44,7 +44,7 @@ class Interpretation:
 
     def views(self) -> list[View]:
         o, v, f = self.observer.tolist(), self.viewpoint.tolist(), self.focal.tolist()
-        return [View(i + 1, tuple(o[i]), tuple(v[i]), f[i])  # type: ignore[arg-type]
+        return [View(i + 1, tuple(o[i]), tuple(v[i]), f[i])
                 for i in range(len(f))]
 
 
@@ -62,7 +62,7 @@ class _Run:
         self.prev_end = 0
 
     def error(self, tok: object, message: str) -> None:
-        self.errors.append(CclError(tok.line, tok.col, message))  # type: ignore[attr-defined]
+        self.errors.append(CclError(tok.line, tok.col, message))
 
     def command(self, cmd: Command) -> None:
         period = self.period(cmd)
@@ -83,7 +83,7 @@ class _Run:
         self.periods.append((cmd.tok.line, first, last))
         self.prev_end = last
 
-    def guard(self, fn, *args) -> None:  # type: ignore[no-untyped-def]
+    def guard(self, fn, *args) -> None:
         try:
             fn(*args)
         except Unresolved as u:
@@ -150,7 +150,7 @@ class _Run:
             w.origin = self.coord(d.origin, frame)
             w.factors = np.array(d.factors)
         else:
-            w.cameras[d.n] = self.coord(d.at, frame)  # type: ignore[attr-defined]
+            w.cameras[d.n] = self.coord(d.at, frame)
 
     def place(self, p: Place, first: int, last: int) -> None:
         out = self.obs if p.what == "observer" else self.vp
@@ -190,7 +190,7 @@ class _Run:
             count = f" (and {same.size - 1} more frames)" if same.size > 1 else ""
             self.error(tok, f"the observer and the viewpoint are the same point at frame {f}"
                             f"{count}: there is no direction to look in")
-        lines = np.array([0 if t is None else t.line for t in self.tokens])  # type: ignore[attr-defined]
+        lines = np.array([0 if t is None else t.line for t in self.tokens])
         return Interpretation(obs, vp, focal, lines[self.owner], self.periods,
                               sorted(self.errors))
 

@@ -105,9 +105,9 @@ def _contact_time(p0: np.ndarray, step: np.ndarray, reach: np.ndarray) -> np.nda
 def from_session(session: object) -> Motion:
     """A motion-development session (apps.snooker.session.Session): the positions its
     checkpoint would hold (so both files give the same frames) and its collision events."""
-    tl = session.timeline  # type: ignore[attr-defined]
+    tl = session.timeline
     table = tl.table
-    centres, on = space.checkpoint_centres(session.checkpoint(), table)  # type: ignore[attr-defined]
+    centres, on = space.checkpoint_centres(session.checkpoint(), table)
     strikes = []
     for f in tl.event_frames:
         e = f.event

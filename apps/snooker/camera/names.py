@@ -38,7 +38,7 @@ class Unresolved(Exception):
 
 
 def _fail(tok: object, message: str) -> Unresolved:
-    return Unresolved(CclError(tok.line, tok.col, message))  # type: ignore[attr-defined]
+    return Unresolved(CclError(tok.line, tok.col, message))
 
 
 class World:

@@ -101,10 +101,3 @@ def pockets(table: Table) -> dict[str, np.ndarray]:
         "left centre": np.array([0.0, hy, 0.0]), "right centre": np.array([0.0, -hy, 0.0]),
         "top left": np.array([hx, hy, 0.0]), "top right": np.array([hx, -hy, 0.0]),
     }
-
-
-def surface_corners(table: Table) -> np.ndarray:
-    """(4, 3) corners of the playing surface (z = 0), anticlockwise seen from above,
-    starting at the bottom right pocket."""
-    hx, hy = table.length_m / 2.0, table.width_m / 2.0
-    return np.array([[-hx, -hy, 0.0], [hx, -hy, 0.0], [hx, hy, 0.0], [-hx, hy, 0.0]])

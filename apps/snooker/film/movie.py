@@ -42,6 +42,6 @@ def _mp4(frames: Sequence[str | os.PathLike[str]], tmp: Path, fps: int, iio: obj
                          macro_block_size=1, ffmpeg_log_level="error",
                          output_params=["-pix_fmt", "yuv420p", "-an"]) as wr:
         for f in frames:
-            img = iio.imread(f)  # type: ignore[attr-defined]
+            img = iio.imread(f)
             h, w = img.shape[:2]
             wr.append_data(img[: h - h % 2, : w - w % 2])

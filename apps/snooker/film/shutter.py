@@ -31,7 +31,7 @@ class ShutterScene(Scene):
     given: np.ndarray = field(default_factory=lambda: np.zeros((0, 22, 3, 3)))
 
     @property
-    def orientations(self) -> np.ndarray:  # type: ignore[override]
+    def orientations(self) -> np.ndarray:
         return self.given
 
 

@@ -5,7 +5,6 @@ of high quality versions of the frames in the sequence")."""
 from __future__ import annotations
 
 import hashlib
-import io
 from dataclasses import dataclass, fields
 
 import numpy as np
@@ -14,6 +13,7 @@ from apps.snooker.film.shutter import SHUTTER_S, at_times, sample_offsets
 from apps.snooker.render.gamma import encode_image
 from apps.snooker.render.scene import Scene
 from apps.snooker.render.truecolour import RenderOptions, render_linear
+from base.png import png_bytes
 
 
 @dataclass(frozen=True)
@@ -21,7 +21,7 @@ class FrameTask:
     """Frame ``frame`` (the checkpoint's numbering, from 1) seen through ``view``."""
 
     frame: int
-    view: object  # the camera issue's View (observer, viewpoint, focal_mm, frame)
+    view: object  # the camera's (apps/snooker/camera) View (observer, viewpoint, focal_mm, frame)
     width: int = 768
     height: int = 512
     specks: bool = True
@@ -49,17 +49,9 @@ def render_image(scene: Scene, task: FrameTask) -> np.ndarray:
     return encode_image(acc / sub.n_frames)
 
 
-def encode_png(image: np.ndarray) -> bytes:
-    """The project's PNG encoding (Pillow, no metadata, as emulator.png.write_png)."""
-    from PIL import Image
-
-    buf = io.BytesIO()
-    Image.fromarray(np.ascontiguousarray(image, dtype=np.uint8)).save(buf, format="PNG")
-    return buf.getvalue()
-
-
 def render_png(scene: Scene, task: FrameTask) -> bytes:
-    return encode_png(render_image(scene, task))
+    """The frame encoded by the project's one PNG encoder (base/png.py)."""
+    return png_bytes(render_image(scene, task))
 
 
 def scene_digest(scene: Scene) -> str:

@@ -134,7 +134,7 @@ class Program:
             held += 1
             self.repeat = (d, held)
             if held >= REPEAT_DELAY and (held - REPEAT_DELAY) % REPEAT_EVERY == 0:
-                self.session.step(d, self.unit)  # type: ignore[arg-type]
+                self.session.step(d, self.unit)
 
     # ------------------------------------------------------------------ input
     def handle(self, e: Event) -> None:
@@ -189,7 +189,7 @@ class Program:
             if b in (1, 3):
                 d = -1 if b == 1 else 1
                 if pressed:
-                    self.session.step(d, self.unit)  # type: ignore[arg-type]
+                    self.session.step(d, self.unit)
                     self.repeat = (d, 0)
                 else:
                     self.repeat = None

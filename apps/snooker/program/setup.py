@@ -21,7 +21,7 @@ def table_with(changes: list[tuple[str, str]]) -> Table:
             raise ValueError(f"unknown table constant {name!r}; known: {', '.join(fields)}")
         cast = {"int": int, "str": str}.get(str(fields[name]), float)
         values[name] = cast(text)
-    return check_table(Table(**values))  # type: ignore[arg-type]
+    return check_table(Table(**values))
 
 
 def is_session_file(path: str | os.PathLike[str]) -> bool:

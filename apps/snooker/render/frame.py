@@ -19,7 +19,7 @@ class FrameGeometry:
     pin: Pinhole
     row: int
     items: list[Item]
-    ball_xy: np.ndarray  # (22, 2) screen pixels (the camera issue's project)
+    ball_xy: np.ndarray  # (22, 2) screen pixels (the camera's (apps/snooker/camera) project)
     ball_depth: np.ndarray  # (22,)
     ball_r_px: np.ndarray  # (22,) radius projected at the centre's depth
     half_length: float  # of the playing surface, metres

@@ -20,10 +20,6 @@ def leak_mask(screen: np.ndarray, intended: np.ndarray) -> np.ndarray:
     return screen != intended
 
 
-def count_wrong(screen: np.ndarray, intended: np.ndarray) -> int:
-    return int(np.count_nonzero(leak_mask(screen, intended)))
-
-
 def classify(screen: np.ndarray, intended: np.ndarray,
              flat_colours: frozenset[int]) -> tuple[int, int]:
     """(leaks, gaps) among the wrong pixels."""

@@ -1,4 +1,4 @@
-"""The palette measurement of issue 13 (thesis 6.4.1's palette problem): colour error of
+"""How good a palette is (thesis 6.4.1's palette problem): colour error of
 the 256-colour frames against the true-colour render, and flicker between frames.
 
 error   = mean CIE76 dE, over every pixel of every frame, between what the palette shows

@@ -1,4 +1,4 @@
-"""The perspective the renderer draws with: the camera issue's projection, as a pinhole.
+"""The perspective the renderer draws with: the camera's projection, as a pinhole.
 
 Rendering needs the inverse too (a ray through every pixel, for shadows on the baize and the
 light and eye directions across a surface), so the camera of ``apps.snooker.camera.projection``
@@ -53,7 +53,7 @@ class Pinhole:
         return np.stack([d @ self.right, d @ self.up, d @ self.forward], axis=-1)
 
     def project(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """(N, 3) world -> (xy (N, 2) pixels, depth (N,), visible (N,)): the camera issue's
+        """(N, 3) world -> (xy (N, 2) pixels, depth (N,), visible (N,)): the camera's
         ``project`` itself, so the renderer and the visualiser agree to the bit."""
         return project(self.camera, np.asarray(points, dtype=np.float64), self.width,
                        self.height)

@@ -55,7 +55,7 @@ class Scene:
 
 
 def load_scene(path: str | os.PathLike[str], lights: Lights | None = None) -> Scene:
-    """A checkpoint (§6.2.2) or a saved session (JSON) -> Scene, read as the camera issue
+    """A checkpoint (§6.2.2) or a saved session (JSON) -> Scene, read as the camera
     reads it (so frame numbers agree with the view file); errors name file:line."""
     m = motion.load(path)
     return Scene(m.table, m.centres, m.on_table, lights or canopy())

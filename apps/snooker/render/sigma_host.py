@@ -37,6 +37,7 @@ from apps.snooker.render import kernels as K
 from apps.snooker.render.balls import ball_params
 from apps.snooker.render.frame import FrameGeometry, camera_params, clip_project, frame_geometry
 from apps.snooker.render.materials import BACKGROUND
+from apps.snooker.render.modes import SIGMA_MODES as MODES
 from apps.snooker.render.outline import (
     clip_to_screen,
     coverage,
@@ -54,7 +55,6 @@ from apps.snooker.render.shadow_pass import shadow_occlusion
 from apps.snooker.render.specks import speck_directions
 from protocols.sigma import Encoder
 
-MODES = ("period", "fixed", "adapted")
 SCREEN_W, SCREEN_H = 768, 512  # the T5688's screen: the drawing area's first quadrant
 
 

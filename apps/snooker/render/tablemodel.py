@@ -1,4 +1,4 @@
-"""The billiard table as flat polygons in the camera issue's default space (thesis 6.4.1).
+"""The billiard table as flat polygons in the camera's default space (thesis 6.4.1).
 
 Default space: metres, origin the centre of the playing surface, +x towards the top cushion,
 +y towards the left cushion seen from baulk, +z up; the baize is z = 0. The playing surface,

@@ -36,7 +36,7 @@ class RenderOptions:
 def render_frame(scene: Scene, view: object, options: RenderOptions | None = None,
                  frame: int | None = None) -> np.ndarray:
     """(H, W, 3) uint8, gamma-encoded, row 0 = top. ``view`` has observer, viewpoint,
-    focal_mm and frame (the camera issue's View); ``frame`` overrides view.frame."""
+    focal_mm and frame (the camera's (apps/snooker/camera) View); ``frame`` overrides view.frame."""
     return encode_image(render_linear(scene, view, options, frame))
 
 

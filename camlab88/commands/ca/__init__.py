@@ -10,7 +10,7 @@ HELP = "the programmable cellular automaton (chapter 7)"
 ACTIONS = ("run", "convert", "replay", "library", "program")
 
 
-def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(subparsers: argparse._SubParsersAction) -> None:
     register_area(subparsers, __name__, "ca", HELP, ACTIONS,
                   "The programmable cellular automaton of thesis chapter 7: rule files, "
                   "patterns, logs and scripts.")

@@ -7,7 +7,7 @@ import argparse
 import sys
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser("convert", help="convert a pattern between native, RLE, .cells and .mc",
                           description="Read a pattern and write it in the format given by the "
                           "output file's extension (.rle, .cells, .mc Golly's macrocell, anything "

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser("library", help="list the shipped rule sets and patterns")
     p.set_defaults(handler=_library)
 

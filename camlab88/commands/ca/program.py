@@ -6,6 +6,7 @@ import argparse
 import sys
 
 from camlab88.runopts import add_run_options, fail, run_options
+from camlab88.scriptopts import HEADLESS_NEEDS_EVENTS, add_events_option
 
 COMMAND = "camlab88 ca program"
 KEYS = ("left button pans; middle: menus; right: edit / step; Finish (menu) or close the "
@@ -24,14 +25,14 @@ TWO_FORMS = (
     "too. Give each argument in one form only.")
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser(
         "program", help="the interactive program on the emulated Rainbow (sections 7.3.1-2)",
         description="The interactive cellular automaton on the emulated Rainbow: mouse "
         "(left button pans, middle button menus, right button edits / steps) and keyboard. "
         "Log, RecordPansAndZooms, Checkpoint, Script and ReplayPansAndZooms as in section "
-        "7.3.1. Headless it needs --events (the run ends with the script) or --stop-after N. "
-        "A --screenshot run writes no log and no checkpoint.", epilog=TWO_FORMS)
+        f"7.3.1. {HEADLESS_NEEDS_EVENTS} A --screenshot run writes no log and no checkpoint.",
+        epilog=TWO_FORMS)
     p.add_argument("tripos", nargs="*", metavar="ARG",
                    help="the thesis's Tripos form: " + TEMPLATE + " (see below)")
     p.add_argument("--rules", default="life", help="rule file or library name (life)")
@@ -50,9 +51,7 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
                    help="plane edges (default wrap; a script's log header decides)")
     p.add_argument("--seed", type=int,
                    help="seed of random outcomes (default 0; a script's log header decides)")
-    p.add_argument("--events", metavar="FILE",
-                   help="scripted mouse/keyboard input (the Rainbow script format, "
-                   "docs/harness.md)")
+    add_events_option(p)
     add_run_options(p)
     p.add_argument("--json", action="store_true", help="print the final statistics as JSON")
     p.set_defaults(handler=program)

@@ -6,7 +6,7 @@ import argparse
 import sys
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser("replay", help="replay a Log as a Script up to a generation",
                          description="Start from the latest checkpoint (log name + generation) "
                          "at or before GENERATION, apply the script's interventions and rules "

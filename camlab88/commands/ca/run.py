@@ -9,7 +9,7 @@ from pathlib import Path
 from camlab88.runopts import check_output, fail
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser("run", help="run rules on a pattern headless and print statistics",
                          description="Load RULES and PATTERN (paths or library names), place "
                          "the pattern's reference point at the centre of the 65536x65536 plane, "

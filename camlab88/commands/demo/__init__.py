@@ -26,7 +26,7 @@ def _description() -> str:
             "PNG and one animated GIF per act into --out.")
 
 
-def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(subparsers: argparse._SubParsersAction) -> None:
     p = subparsers.add_parser("demo", help="play the demo session (all acts)",
                               description=_description())
     p.add_argument("--headless", action="store_true", help="no window, write files")

@@ -39,7 +39,7 @@ CAPTIONS: dict[str, str] = {
 }
 
 
-def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(subparsers: argparse._SubParsersAction) -> None:
     p = subparsers.add_parser(
         "figures", help="the thesis's screen figures, replayed from shipped recordings",
         description="The thesis's screen figures as session recordings (examples/figures). "

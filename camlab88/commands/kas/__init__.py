@@ -17,7 +17,7 @@ ACTIONS = ("inbetween", "superimpose", "plot", "export", "schedule", "edit_scrip
            "path_script", "edit", "path", "view", "demo", "library", "paint")
 
 
-def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(subparsers: argparse._SubParsersAction) -> None:
     register_area(subparsers, __name__, "kas", HELP, ACTIONS,
                   "KAS: keyframe editor model, in-betweener, superimposer, viewer schedule "
                   "and hard copy (thesis ch. 3). File names may be library names (see "
@@ -62,7 +62,7 @@ def run_front(front, args: argparse.Namespace, command: str, keys: str,
     from emulator.harness import run
     from emulator.harness.sigma import SigmaProgramTarget
     from emulator.sigma import Terminal
-    from emulator.tablet.pointer_input import TabletInput
+    from emulator.tablet_input.pointer import TabletInput
     from protocols.link import LineSettings
 
     events, opts = prepared or prepare_front(args, command)

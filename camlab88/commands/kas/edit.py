@@ -13,7 +13,7 @@ COMMAND = "camlab88 kas edit"
 KEYS = "F2 saves; Esc/close quits (asks if unsaved: y saves, n discards, Esc stays)"
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser("edit", help="the keyframe editor on the emulated Sigma T5684",
                            description="Edit keyframe FILE (created, empty, if missing) on an "
                            "emulated Sigma T5684 over a 9600-baud line: the stylus is the "

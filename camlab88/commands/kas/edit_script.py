@@ -7,7 +7,7 @@ import argparse
 from camlab88.runopts import fail
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser("edit-script", help="run the keyframe editor model on an event script",
                         description="Headless: feed the editor model the events of SCRIPT "
                         "(move/down/up X Y, key K, menu ITEM, type TEXT) and save the keyframe.")

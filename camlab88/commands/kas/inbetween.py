@@ -7,7 +7,7 @@ import argparse
 from camlab88.runopts import fail
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser("inbetween", help="in-between keyframes into a sequence",
                         description="Frames from keyframe A to B (both included) along a "
                         "sample path, placed by a timing (tick marks or a curve); with more "

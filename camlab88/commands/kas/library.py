@@ -8,7 +8,7 @@ from pathlib import Path
 from camlab88.runopts import fail
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser("library", help="list (or add to) the libraries of keyframes, paths "
                         "and timings", description="Lists the user library ($CAMLAB88_KAS_"
                         "LIBRARY, default ~/.local/share/camlab88/kas) and the shipped one. "

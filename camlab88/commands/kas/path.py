@@ -13,7 +13,7 @@ KEYS = ("draw the path with the stylus (mouse); t then touches place ticks; F2 s
         "Esc/close quits (asks if unsaved: y saves, n discards, Esc stays)")
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser("path", help="draw a sample path and tick marks on the Sigma",
                            description="Keyframes A and B shown superimposed; the stylus draws "
                            "the sample path, 't' then touches place tick marks; F2 (or the end "

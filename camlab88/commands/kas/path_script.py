@@ -7,7 +7,7 @@ import argparse
 from camlab88.runopts import fail
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser("path-script", help="draw a sample path and tick marks from a script",
                         description="Headless in-betweener set-up: keyframes A and B are "
                         "shown, the SCRIPT's stylus stroke draws the path, 't' then touches "

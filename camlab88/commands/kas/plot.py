@@ -7,7 +7,7 @@ import argparse
 from camlab88.runopts import fail, progress
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser("plot", help="plot every frame (HP-GL, SVG, PDF) with registration "
                         "marks", description="Each frame at the given size (default the "
                         "twelve-field, 12 x 8.75 inches) with registration marks; HP-GL uses "

@@ -8,7 +8,7 @@ from pathlib import Path
 from camlab88.runopts import fail
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser("schedule", help="which frames the real-time viewer shows and drops",
                         description="Given each frame's size in characters on the line, "
                         "compute the real-time line test of §3.1.4: the frame due now is "

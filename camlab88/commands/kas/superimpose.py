@@ -13,7 +13,7 @@ COMMAND = "camlab88 kas superimpose"
 KEYS = "type each sequence's start (frames) and Return; Return alone keeps the default"
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser("superimpose", help="superimpose sequences with start offsets",
                         description="Combine sequences; SEQ@N starts N frames late (its first "
                         "frame is held until then); a sequence that ends early holds its "

@@ -9,7 +9,7 @@ from camlab88.runopts import add_run_options, fail, run_options
 COMMAND = "camlab88 kas view"
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser("view", help="the line test: play a sequence on the emulated Sigma",
                            description="Play SEQ on an emulated Sigma T5684 over the line, "
                            "double buffered in two 2-bit buffers (four colours). --realtime "

@@ -10,7 +10,7 @@ SESSION_NOTE = ("is a session recording, not a link recording: `sigma run --reco
                 "`sigma run --record-line FILE` writes the link recording that `link dump` reads")
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser("dump", help="print a link recording readably",
                            description="Print a link recording (sigma run --record-line FILE, "
                            "link record ...) readably: one timed chunk a line.")

@@ -4,13 +4,12 @@ from __future__ import annotations
 
 import argparse
 
+from protocols.link.cli_args import STREAM_HELP, add_stream_arguments
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
-    p = actions.add_parser("stream", help="write the bytes one end received as a raw stream")
-    p.add_argument("recording")
-    p.add_argument("--out", required=True, help="raw stream file to write")
-    p.add_argument("--direction", choices=[">", "<"], default=">",
-                   help="> host to device (default), < device to host")
+
+def register(actions: argparse._SubParsersAction) -> None:
+    p = actions.add_parser("stream", help=STREAM_HELP)
+    add_stream_arguments(p)
     p.set_defaults(handler=stream)
 
 

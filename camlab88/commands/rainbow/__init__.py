@@ -11,7 +11,7 @@ ACTIONS = ("render", "run", "serve", "replay")
 __all__ = ["ACTIONS", "register"]
 
 
-def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(subparsers: argparse._SubParsersAction) -> None:
     register_area(subparsers, __name__, "rainbow", HELP, ACTIONS,
                   "The Cambridge Rainbow workstation: pads, clusters, band structure, "
                   "video processor.")

@@ -9,7 +9,7 @@ from camlab88.runopts import fail
 COMMAND = "camlab88 rainbow render"
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     r = actions.add_parser("render", help="render a scene file (JSON pad graph) to a PNG",
                            description="Compile SCENE.json's pad graph to band structure and "
                            "render one 768x576 frame.")

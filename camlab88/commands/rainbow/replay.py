@@ -11,7 +11,7 @@ from camlab88.runopts import fail
 COMMAND = "camlab88 rainbow replay"
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     p = actions.add_parser("replay", help="replay a recorded command stream and check it",
                            description="Feed a recording's commands and input events "
                            "(rainbow run --record-stream) to a fresh Rainbow; every reply "

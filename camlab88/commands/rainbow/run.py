@@ -13,7 +13,7 @@ KEYS = "middle button: the demo's menu; close the window to quit"
 HEADLESS_FRAMES = 250
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     u = actions.add_parser("run", help="open the window with a demo of pads and transparency",
                            description="Run the Rainbow with the Appendix I transparency "
                            "example and moving double-buffered pads (headless: "
@@ -108,7 +108,7 @@ def _open_tablet(text: str | None, record: bool):
     where the device is never opened)."""
     if not text:
         return None
-    from emulator.tablet.taped import TapedTablet
+    from emulator.tablet_input.taped import TapedTablet
     from protocols.tablets.sources import SourceError
 
     try:

@@ -10,7 +10,7 @@ from camlab88.traceopts import add_trace_options, open_trace
 COMMAND = "camlab88 rainbow serve"
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     v = actions.add_parser("serve", help="serve a Rainbow to a program over a local TCP socket",
                            description="Listen on 127.0.0.1:PORT for a program using "
                            "protocols.rainbow.SocketTransport; show its frames in the window "

@@ -16,7 +16,7 @@ from camlab88.runopts import fail, frames_dir
 COMMAND = "camlab88 replay"
 
 
-def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(subparsers: argparse._SubParsersAction) -> None:
     p = subparsers.add_parser(
         "replay", help="replay a recorded session (--record FILE) and check it",
         description="Run a session recording again: its program, arguments and input files "

@@ -10,7 +10,7 @@ HELP = "the Sigma T5684/T5688 terminals"
 ACTIONS = ("render", "run")
 
 
-def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(subparsers: argparse._SubParsersAction) -> None:
     register_area(subparsers, __name__, "sigma", HELP, ACTIONS,
                   "Emulated Sigma T5684 / T5688 graphics terminals.")
 

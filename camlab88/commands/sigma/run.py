@@ -17,7 +17,7 @@ COMMAND = "camlab88 sigma run"
 FRAME = Fraction(1, 25)
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     u = actions.add_parser("run", help="an interactive terminal in a window",
                            description="Run an emulated terminal in a window, its line on a "
                            "pseudo-terminal (--pty) or a TCP port on 127.0.0.1 (--listen). "

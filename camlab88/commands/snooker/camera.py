@@ -7,6 +7,7 @@ import argparse
 import sys
 
 from camlab88.runopts import add_run_options, fail, run_options
+from camlab88.scriptopts import HEADLESS_NEEDS_EVENTS, add_events_option
 
 COMMAND = "camlab88 snooker camera"
 KEYS = ("type to edit the script (it is re-interpreted at once; saving it from another editor "
@@ -14,18 +15,16 @@ KEYS = ("type to edit the script (it is re-interpreted at once; saving it from a
         "button on the time line scrubs; escape quits")
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     s = actions.add_parser(
         "camera", help="edit a camera script with the live view beside it (§6.5)",
         description="The camera script beside the live perspective view on the emulated "
         "Rainbow: every edit, typed here or saved to SCRIPT from any text editor, is "
         "re-interpreted and the view updates at once; errors are marked at their lines "
-        f"while the preview goes on. Keys: {KEYS}. Headless it needs --events (the run ends "
-        "with the script) or --stop-after N.")
+        f"while the preview goes on. Keys: {KEYS}. " + HEADLESS_NEEDS_EVENTS)
     s.add_argument("script", metavar="SCRIPT", help="the camera script (created if missing)")
     s.add_argument("motion", metavar="CHECKPOINT|SESSION")
-    s.add_argument("--events", metavar="FILE",
-                   help="scripted mouse/keyboard input (protocols/rainbow/script.py format)")
+    add_events_option(s)
     add_run_options(s)
     s.set_defaults(handler=camera)
 

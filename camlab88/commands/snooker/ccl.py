@@ -11,7 +11,7 @@ from camlab88.runopts import fail
 COMMAND = "camlab88 snooker ccl"
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     s = actions.add_parser(
         "ccl", help="interpret a camera script over a shot; write the view file",
         description="Interpret a camera control language script (thesis §6.3.1) over the "

@@ -10,18 +10,11 @@ import argparse
 import sys
 from pathlib import Path
 
+from apps.snooker.render.modes import MODES
+from camlab88.commands.snooker import frame_size
 from camlab88.runopts import fail, positive
 
 COMMAND = "camlab88 snooker film"
-
-
-def _size(text: str) -> tuple[int, int]:
-    w, sep, h = text.lower().partition("x")
-    if not (sep and w.isascii() and w.isdigit() and h.isascii() and h.isdigit()):
-        raise argparse.ArgumentTypeError(f"expected WxH such as 768x512, not {text!r}")
-    if not (8 <= int(w) <= 8192 and 8 <= int(h) <= 8192):
-        raise argparse.ArgumentTypeError(f"{text}: each side must be 8..8192 pixels")
-    return int(w), int(h)
 
 
 def _movie(text: str) -> Path:
@@ -36,7 +29,7 @@ def _word(text: str) -> str:
     return text.upper()
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     s = actions.add_parser(
         "film", help="camera script -> views -> rendered frames -> MP4/GIF (§6.3-6.4)",
         description="Interpret the camera script over the shot, render every frame and "
@@ -54,8 +47,9 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
     s.add_argument("--out", type=_movie, required=True, metavar="FILM",
                    help="the film: .mp4 (H.264) or .gif")
     s.add_argument("--gif", type=_movie, metavar="FILE", help="also a GIF of the film")
-    s.add_argument("--mode", choices=("truecolour", "period", "fixed"), default="truecolour")
-    s.add_argument("--size", type=_size, default=(768, 512), metavar="WxH",
+    s.add_argument("--mode", choices=MODES, default="truecolour",
+                   help="truecolour (default), or a Sigma mode drawn on the emulated T5688")
+    s.add_argument("--size", type=frame_size, default=(768, 512), metavar="WxH",
                    help="truecolour frame size")
     s.add_argument("--dask", metavar="ADDRESS|local",
                    help="render on a Dask cluster (a scheduler address, or 'local')")
@@ -143,9 +137,9 @@ def summary(out: Path, gif: Path | None, n: int, note: str, views: Path, frames:
 
 def _sigma_frames(args: argparse.Namespace, scene, views, frames: Path) -> str:
     from apps.snooker.film.schedule import frame_file
-    from apps.snooker.film.task import encode_png
     from apps.snooker.render.sequence import choose_palette, render_sequence
     from base.atomicfile import write_atomic
+    from base.png import png_bytes
     from emulator.sigma import Terminal
 
     palette = choose_palette(scene, views, "fixed")
@@ -153,6 +147,6 @@ def _sigma_frames(args: argparse.Namespace, scene, views, frames: Path) -> str:
     line = 0.0
     for f in render_sequence(scene, views, args.mode, (768, 512), palette,
                              lambda: Terminal("t5688"), not args.no_specks):
-        write_atomic(frame_file(frames, f.frame), encode_png(f.image))
+        write_atomic(frame_file(frames, f.frame), png_bytes(f.image))
         line += f.line_seconds or 0.0
     return f"{args.mode} on the emulated T5688, line time {line:.1f} s at 9600 baud"

@@ -5,24 +5,23 @@ from __future__ import annotations
 import argparse
 
 from camlab88.runopts import add_run_options, fail, run_options
+from camlab88.scriptopts import HEADLESS_NEEDS_EVENTS, add_events_option
 
 COMMAND = "camlab88 snooker"
 KEYS = ("middle button: menus; right: restart simulation; left held: mouse x4; "
         "close the window to quit")
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     s = actions.add_parser(
         "play", help="the interactive motion-development program on the emulated Rainbow",
         description="The interactive program (thesis §6.2.1-§6.2.2) on the emulated Rainbow. "
         "Middle button: menus and everything else; right: restart simulation; left held: "
         "mouse movement x4. With SESSION you are asked: new game (n) or restore (r). "
-        "Headless it needs --events (the run ends with the script) or --stop-after N.")
+        + HEADLESS_NEEDS_EVENTS)
     s.add_argument("session", nargs="?", metavar="SESSION",
                    help="a saved session file to offer for restoring (and to save to)")
-    s.add_argument("--events", metavar="FILE",
-                   help="scripted mouse/keyboard input (the Rainbow script format, "
-                   "docs/harness.md: move, glide, press, release, click, drag, key, type, wait)")
+    add_events_option(s)
     s.add_argument("--save", metavar="SESSION",
                    help="where 'Exit from the program' saves (default: SESSION; "
                    "with neither, Exit asks for a file name)")
@@ -56,7 +55,7 @@ def play(args: argparse.Namespace) -> int:
 def _exists(path: str | None) -> bool:
     from pathlib import Path
 
-    return bool(path) and Path(path).exists()  # type: ignore[arg-type]
+    return bool(path) and Path(path).exists()
 
 
 def _run(args: argparse.Namespace, opts, restore, player):

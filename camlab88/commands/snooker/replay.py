@@ -10,7 +10,7 @@ COMMAND = "camlab88 snooker replay"
 OUTPUT_HINT = "give --frames DIR or --screenshot PNG to write what it plays"
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     s = actions.add_parser("replay", help="play a checkpoint file on the Rainbow at 25 fps",
                            description="Play a §6.2.2 checkpoint file on the emulated Rainbow "
                            "at 25 frames/s (real time in a window, virtual time headless).")

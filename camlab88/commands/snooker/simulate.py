@@ -16,7 +16,7 @@ def _table_option(value: str) -> tuple[str, str]:
     return k.strip(), v.strip()
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     s = actions.add_parser(
         "simulate",
         help="simulate a shot headlessly until every ball stops; write a checkpoint",

@@ -14,7 +14,7 @@ KEYS = ("space play/pause, left/right step, page up/down 25 frames, home/end, "
         "drag with the left button to scrub, escape quits")
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     s = actions.add_parser(
         "visualise", help="the perspective view of every frame on the Rainbow (§6.3.2)",
         description="Play a view file (from 'snooker ccl') over a checkpoint or session on "
@@ -59,10 +59,10 @@ def status(vis, target) -> str:
 
 def _run(shot, views, opts, frames_dir):
     from apps.snooker.visualiser.program import Visualiser
+    from base.png import frame_path, write_png
     from emulator.harness import run
     from emulator.harness.loop import Plugin
     from emulator.harness.rainbow import RainbowTarget
-    from emulator.png import frame_path, write_png
     from emulator.rainbow.session import in_process
 
     rb = in_process(record=opts.record is not None)

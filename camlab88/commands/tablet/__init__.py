@@ -12,10 +12,15 @@ SOURCE_HELP = (
     "hid:VID:PID | serial:PORT?protocol=P[&baud=N] | URL?protocol=P (loop://, socket://...) | "
     "emulated:P[?drive=demo]; P = wacom4, summa-mm, bitpad1, bitpad2, calcomp, summa-flair"
 )
-__all__ = ["ACTIONS", "SOURCE_HELP", "register"]
+__all__ = ["ACTIONS", "SOURCE_HELP", "add_source_argument", "register"]
 
 
-def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def add_source_argument(p: argparse.ArgumentParser) -> None:
+    """The tablet to read: a SOURCE string (monitor, calibrate)."""
+    p.add_argument("source", metavar="SOURCE", help=SOURCE_HELP)
+
+
+def register(subparsers: argparse._SubParsersAction) -> None:
     register_area(subparsers, __name__, "tablet", HELP, ACTIONS,
                   "Graphics tablets over USB HID or serial, and an emulated tablet that "
                   "speaks a real protocol on a pty.")

@@ -9,7 +9,7 @@ import time
 COMMAND = "camlab88 tablet emulate"
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     s = actions.add_parser("emulate", help="an emulated tablet on a pty, driven by the mouse",
                            description="Open a window; the mouse drives a tablet that writes "
                            "its protocol's bytes to a pseudo-terminal (path printed) that any "
@@ -27,7 +27,7 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
 def emulate(args: argparse.Namespace) -> int:
     from emulator.harness import choose_headless
     from emulator.tablet import demo_path
-    from emulator.tablet.emulated_source import EmulatedSource
+    from emulator.tablet_input.emulated_source import EmulatedSource
     from protocols.tablets.sources import parse_source
 
     can = "the scripted stroke, no window" if args.demo and not args.screenshot else None

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     s = actions.add_parser("list", help="HID digitizers and serial ports found")
     s.set_defaults(handler=cmd_list)
 

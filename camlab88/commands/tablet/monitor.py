@@ -6,19 +6,19 @@ import argparse
 import sys
 import time
 
-from camlab88.commands.tablet import SOURCE_HELP
+from camlab88.commands.tablet import add_source_argument
 from camlab88.runopts import positive
 
 COMMAND = "camlab88 tablet monitor"
 SILENT_HINT = 5.0  # s without a single report before the monitor says what to check
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     s = actions.add_parser("monitor", help="print one line per decoded event",
                            description="Print one line per decoded event: x and y in tablet "
                            "units, pressure, buttons, proximity. An emulated tablet driven "
                            "by the mouse needs a display; ?drive=demo runs without one.")
-    s.add_argument("source", metavar="SOURCE", help=SOURCE_HELP)
+    add_source_argument(s)
     s.add_argument("--raw", action="store_true", help="also print the raw bytes/reports in hex")
     s.add_argument("--count", type=positive, default=None, help="stop after N events (N >= 1)")
     s.add_argument("--seconds", type=float, default=None, help="stop after S seconds")
@@ -29,7 +29,7 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
 
 def monitor(args: argparse.Namespace) -> int:
     from emulator.tablet import demo_path
-    from emulator.tablet.emulated_source import open_tablet
+    from emulator.tablet_input.emulated_source import open_tablet
 
     def raw(data: bytes) -> None:
         print("raw " + data.hex(" "), flush=True)

@@ -31,7 +31,7 @@ STEPS: tuple[tuple[str, str | tuple[str, ...]], ...] = (
 )
 
 
-def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(subparsers: argparse._SubParsersAction) -> None:
     p = subparsers.add_parser(
         "warm-up", help="compile every numba kernel now (otherwise: on first use)",
         description="Compile every kernel group of every program into numba's cache now, "

@@ -1,5 +1,5 @@
-"""Refusals found by the repeat newcomer trial (issue 18): they go to stderr, and come before
-anything is opened or announced."""
+"""Refusals go to stderr, and come before anything is opened or announced
+(docs/newcomer_trial.md lists where each was found)."""
 
 from __future__ import annotations
 
@@ -27,7 +27,7 @@ def test_the_window_test_card_refuses_on_stderr(monkeypatch: pytest.MonkeyPatch,
 def test_a_mouse_driven_emulated_tablet_refuses_before_opening_its_pty(
         monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]) -> None:
     from camlab88.cli import main
-    from emulator.tablet import emulated_source
+    from emulator.tablet_input import emulated_source
 
     _no_display(monkeypatch)
     opened = []

@@ -35,7 +35,7 @@ class TabletInput:
             return
         spec = parse_source(source)
         self._emulated = spec.kind == "emulated"
-        from emulator.tablet.taped import recorded_tape
+        from emulator.tablet_input.taped import recorded_tape
 
         recorded = recorded_tape()
         if recorded is not None:

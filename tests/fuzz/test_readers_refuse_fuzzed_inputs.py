@@ -27,7 +27,8 @@ OPS = (CORPUS / "kas-paint-ops" / "touch_up.ops").read_text()
     (b'"time":"3/25"', b'"time":"1e99999999999"', "<s>:3:1: time '1e99999999999'"),
     (b'"tick":3,', b'"tick":10000000000000000,', "<s>:3:1: event record: tick"),
 ])
-def test_session_recording_findings(old: bytes, new: bytes, where: str) -> None:
+def test_damaged_session_recording_gets_the_format_error(old: bytes, new: bytes,
+                                                         where: str) -> None:
     assert old in SESSION
     # under the fuzz engine's alarm first, so a hang fails instead of hanging the test
     assert run_one(TARGETS["session-recording"], SESSION.replace(old, new, 1), 5.0) is None

@@ -1,6 +1,7 @@
-"""The repeat newcomer trial of issue 18 (docs/newcomer_trial.md): each finding it made in a
-command, as a test that failed before the fix. Commands run in-process through the console
-script's ``main``; files go to tmp_path."""
+"""Commands name the files they read and wrote: a missing input is named without Python's
+errno text, every file written is named in the closing line, and a command that does not
+run creates no file (where each was found: docs/newcomer_trial.md). Commands run in-process
+through the console script's ``main``; files go to tmp_path."""
 
 from __future__ import annotations
 
