@@ -13,7 +13,7 @@ Anti-aliasing: each pixel is the mean, in linear light, of ``ss`` x ``ss`` sampl
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
@@ -29,7 +29,6 @@ BACKGROUND = np.array((0.012, 0.010, 0.010))  # the dark room round the board (s
 BOARD = (np.array((0.26, 0.17, 0.085)), np.array((0.045, 0.026, 0.014)))  # maple, walnut
 FLOOR_PHONG = (1.0, 1.0, 0.08, 12.0)  # ka kd ks n: a waxed board, reconstructed
 SHADOW_MAP = 1024
-TILE_HEIGHT = 0.0  # tiles are painted on the board
 
 
 @dataclass(frozen=True)
@@ -70,7 +69,6 @@ class Shot:
     observer: tuple[float, float, float]
     viewpoint: tuple[float, float, float]
     focal_mm: float = 35.0
-    extra: dict = field(default_factory=dict, compare=False)
 
 
 def canopy_over(floor: tuple[int, int, int, int], n: int = 4) -> Lights:

@@ -14,6 +14,8 @@ from apps.cafilm.timeline import record
 
 MAX_GENERATIONS = 10_000
 MAX_PER_GENERATION = 250
+MAX_SAMPLES = 4  # along each axis of a pixel
+MAX_FRAME_SAMPLES = 1 << 24  # per frame: ~1 GB of buffers (colour, depth, ids, weights)
 
 
 @dataclass(frozen=True)
@@ -77,6 +79,16 @@ def build(spec: FilmSpec) -> CaFilm:
         raise ValueError(f"--generations must be 1..{MAX_GENERATIONS}")
     if not 1 <= spec.per_generation <= MAX_PER_GENERATION:
         raise ValueError(f"--frames-per-generation must be 1..{MAX_PER_GENERATION}")
+    if not 1 <= spec.samples <= MAX_SAMPLES:
+        raise ValueError(f"--samples must be 1..{MAX_SAMPLES}")
+    w, h = spec.size
+    if w * h * spec.samples ** 2 > MAX_FRAME_SAMPLES:
+        raise ValueError(f"{w}x{h} at {spec.samples}x{spec.samples} samples a pixel is more "
+                         f"than {MAX_FRAME_SAMPLES} samples a frame: a smaller --size or "
+                         "fewer --samples")
+    from apps.ca.log import check_seed
+
+    check_seed(spec.seed)
     glide = parse_glide(spec.glide)
     actors = read_actors(spec.actors) if spec.actors else ActorSet(spec.rules, {})
     camera_text = None

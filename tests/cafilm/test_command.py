@@ -61,6 +61,9 @@ def test_a_bad_actors_file_is_one_line_naming_where(tmp_path: Path, capsys) -> N
     (("--mode", "t5688", "--dask", "local"), "--size, --dask and --workers are truecolour's"),
     (("--glide", "2,x"), "--glide: expected all, none or states"),
     (("--camera", "nope.ccl"), "nope.ccl: no such file"),
+    (("--samples", "9"), "--samples must be 1..4"),
+    (("--size", "8192x8192"), "samples a frame: a smaller --size or fewer --samples"),
+    (("--seed", "99999999999999999999"), "--seed: 99999999999999999999 is outside"),
 ])
 def test_bad_options_are_refused_before_any_work(tmp_path: Path, capsys, extra: tuple[str, ...],
                                                  words: str) -> None:

@@ -94,10 +94,9 @@ def _film(args: argparse.Namespace) -> int:
     from apps.snooker.film.pipeline import FilmPaths
     from apps.snooker.film.schedule import frame_file
 
-    frames = FilmPaths.beside(args.out).frames
-    frames.mkdir(parents=True, exist_ok=True)  # before any work: a bad place fails now
-    for out in (args.out, args.gif):
+    for out in (args.out, args.gif):  # before any work: a bad place fails now
         if out is not None:
+            out.parent.mkdir(parents=True, exist_ok=True)
             check_output(COMMAND, out)
     spec = FilmSpec(args.rules, args.pattern, args.generations, args.actors, args.camera,
                     args.lights, args.frames_per_generation, args.glide, args.size,
@@ -106,6 +105,8 @@ def _film(args: argparse.Namespace) -> int:
     note = rules_note(movie, spec)
     if note:
         print(f"{COMMAND}: {note}", file=sys.stderr)
+    frames = FilmPaths.beside(args.out).frames
+    frames.mkdir(exist_ok=True)
     done = _truecolour(args, movie, frames) if args.mode == "truecolour" else \
         _period(movie, frames)
     files = [frame_file(frames, n) for n in range(1, movie.n_frames + 1)]
