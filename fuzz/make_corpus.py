@@ -112,6 +112,11 @@ def _ca() -> None:
     _copy("ca-rle", CA_LIB / "gosper_gun.rle", CA_LIB / "acorn.rle",
           DATA / "ca" / "lifewiki_style.rle")
     _copy("ca-cells", CA_LIB / "glider.cells")
+    _copy("ca-actors", ROOT / "examples" / "ca" / "chess.actors")
+    _put("ca-actors", "every_kind.actors", "rules maze\nactor 2 head\n colour 9 8 7\n material "
+         "ambient 0.1 diffuse 0.9 specular 0 shininess 1\n lathe 0.4 0 0.1 0.5 size 1 2 1\n"
+         " box 0.2 0.2 0.2 at 0 0 0.5\n sphere size 0.2 0.1 0.3\n extrude 0 0 1 0 0 1 "
+         "height 0.2 at -0.5 -0.5 0\n bob 0.1 12\n turn -90 30\nend\n")
     _copy("ca-mc", DATA / "ca" / "golly" / "broken-lines.mc")
     _put("ca-mc", "wireworld.mc", "[M2]\n#R WireWorld\n1 0 3 3 1\n2 0 1 0 0\n3 2 0 2 2\n")
     _put("ca-mc", "gun.mc", format_mc(read_pattern(CA_LIB / "gosper_gun.rle")))

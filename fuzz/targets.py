@@ -235,6 +235,18 @@ def _session(data: bytes) -> object:
     return _via_file(data, read, ".session")
 
 
+def _actors_error() -> type[BaseException]:
+    from apps.actors.model import ActorFileError
+
+    return ActorFileError
+
+
+def _actors(data: bytes) -> object:
+    from apps.actors.model import read_actors
+
+    return _via_file(data, read_actors, ".actors")
+
+
 TARGETS: dict[str, Target] = {t.name: t for t in (
     Target("rainbow-scene", _scene, (ValueError, _rainbow_error())),
     Target("rainbow-recording", _rainbow_recording),
@@ -269,4 +281,5 @@ TARGETS: dict[str, Target] = {t.name: t for t in (
     # the two below accept only their format's own error (every refusal names file:line:col)
     Target("kas-paint-ops", _kas_ops, (_kas_paint_ops(),)),
     Target("session-recording", _session, (_session_error(),)),
+    Target("ca-actors", _actors, (_actors_error(),)),
 )}
