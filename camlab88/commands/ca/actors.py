@@ -1,0 +1,114 @@
+"""``camlab88 ca actors FILE``: the 3-D picture editor for a rule set's cell types (thesis
+section 8.1) on the emulated Rainbow."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+COMMAND = "camlab88 ca actors"
+KEYS = ("left: add/drag a point, set a slider; right: delete a point; middle: menu; s save; "
+        "Tab next cell type; q, Esc or close the window to quit")
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    from camlab88.runopts import add_run_options
+
+    p = actions.add_parser(
+        "actors", help="the 3-D picture editor for cell types (section 8.1)",
+        description="Edit a rule set's actors file on the emulated Rainbow: pick a cell type, "
+        "draw its lathe profile, watch the solid turn, set colour and material, save "
+        "(docs/ca_actors.md). Headless it needs --events (the run ends with the script) or "
+        "--stop-after N. A --screenshot run never saves.")
+    p.add_argument("file", metavar="FILE", help="the actors file (created by the first save)")
+    p.add_argument("--rules",
+                   help="rule file or library name whose cell types are edited (default: "
+                   "the one FILE names, else life)")
+    p.add_argument("--events", metavar="FILE",
+                   help="scripted mouse/keyboard input (the Rainbow script format, "
+                   "docs/harness.md)")
+    add_run_options(p)
+    p.set_defaults(handler=actors)
+
+
+def actors(args: argparse.Namespace) -> int:
+    from apps.ca.rules import RuleError
+    from camlab88.runopts import fail, run_options
+    from protocols.rainbow.script import Player, ScriptError, load
+
+    try:
+        rules_name = args.rules or _rules_of(args.file)
+        types = _cell_types(rules_name)
+        player = Player(load(args.events)) if args.events else None
+        useful = "playing the --events script" if player else (
+            "for --stop-after frames" if args.stop_after else None)
+        opts = run_options(args, COMMAND, useful, "give --headless with --events FILE",
+                           getattr(args, "_argv", None))
+    except (OSError, RuleError, ScriptError, ValueError) as exc:
+        return fail(COMMAND, exc)
+    if opts.headless and player is None and opts.stop_after is None:
+        opts.stop_after = 100
+    editor = _run(args.file, types, rules_name, player, opts)
+    return _report(editor)
+
+
+def _rules_of(path: str) -> str:
+    """The rule set an existing actors file names; life for a new or unreadable one (the
+    editor reports why it did not load)."""
+    from apps.actors.model import ActorFileError, read_actors
+
+    try:
+        return read_actors(path).rules
+    except (ActorFileError, OSError):
+        return "life"
+
+
+def _cell_types(rules: str) -> list:
+    """The rule set's states as the editor's cell types: number, name, colour."""
+    from apps.actors.editor.cell_types import CellType
+    from apps.actors.model import MAX_STATE
+    from apps.ca import library
+    from apps.ca.render import default_colour
+    from apps.ca.rules import parse_rules
+
+    path = library.rules_path(rules)
+    with open(path, encoding="utf-8") as f:
+        rs = parse_rules(f.read(), path)
+    types = []
+    for t in range(1, min(max(1, rs.max_form), MAX_STATE) + 1):
+        form = rs.forms.get(t)
+        colour = form.colour if form is not None and form.colour else default_colour(t)
+        types.append(CellType(t, f"form {t}", tuple(colour)))
+    return types
+
+
+def _run(path: str, types: list, rules: str, player, opts):
+    from apps.actors.editor.program import ActorEditor
+    from emulator.harness import run
+    from emulator.harness.rainbow import RainbowTarget
+    from emulator.rainbow.session import in_process
+
+    session = in_process(record=opts.record is not None)
+    editor = ActorEditor(session.client, path, types, rules,
+                         may_save=opts.screenshot is None)
+
+    def step() -> bool:
+        editor.frame()
+        return not editor.finished
+
+    end_with_script = opts.headless or opts.screenshot is not None
+    target = RainbowTarget(session, step, "camlab88 ca actors", KEYS, player, end_with_script)
+    target.may_close = editor.may_close  # type: ignore[method-assign]
+    run(target, opts)
+    return editor
+
+
+def _report(editor) -> int:
+    """One line on stderr for what the session left: a file that did not load and was not
+    replaced (exit 1), or work not saved."""
+    if editor.load_error is not None:
+        print(f"{COMMAND}: {editor.load_error}", file=sys.stderr)
+        return 1
+    if editor.unsaved():
+        print(f"{COMMAND}: {editor.path}: the last changes were not saved", file=sys.stderr)
+    return 0
