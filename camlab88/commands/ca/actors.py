@@ -27,6 +27,9 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
     p.add_argument("--events", metavar="FILE",
                    help="scripted mouse/keyboard input (the Rainbow script format, "
                    "docs/harness.md)")
+    p.add_argument("--tablet", metavar="SOURCE",
+                   help="also draw with a real tablet (hid:VID:PID, serial:PORT?protocol=P, "
+                   "or a pyserial URL?protocol=P): its surface maps onto the profile pad")
     add_run_options(p)
     p.set_defaults(handler=actors)
 
@@ -48,7 +51,14 @@ def actors(args: argparse.Namespace) -> int:
         return fail(COMMAND, exc)
     if opts.headless and player is None and opts.stop_after is None:
         opts.stop_after = 100
-    editor = _run(args.file, types, rules_name, player, opts)
+    tablet = _open_tablet(args.tablet, opts.record is not None)
+    if tablet is not None and tablet.live:  # a real stylus moves on the wall clock
+        opts.live = True
+    try:
+        editor = _run(args.file, types, rules_name, player, opts, tablet)
+    finally:
+        if tablet is not None:
+            tablet.close()
     return _report(editor)
 
 
@@ -82,7 +92,7 @@ def _cell_types(rules: str) -> list:
     return types
 
 
-def _run(path: str, types: list, rules: str, player, opts):
+def _run(path: str, types: list, rules: str, player, opts, tablet):
     from apps.actors.editor.program import ActorEditor
     from emulator.harness import run
     from emulator.harness.rainbow import RainbowTarget
@@ -93,14 +103,49 @@ def _run(path: str, types: list, rules: str, player, opts):
                          may_save=opts.screenshot is None)
 
     def step() -> bool:
+        if target.tablet is not None and not target.tablet.gone:
+            _poll_tablet(target.tablet, session, editor)
         editor.frame()
         return not editor.finished
 
     end_with_script = opts.headless or opts.screenshot is not None
     target = RainbowTarget(session, step, "camlab88 ca actors", KEYS, player, end_with_script)
     target.may_close = editor.may_close  # type: ignore[method-assign]
+    target.tablet = tablet
     run(target, opts)
     return editor
+
+
+def _open_tablet(text: str | None, record: bool):
+    """The --tablet source (on a tape with --record; from the recording's tape in a replay,
+    where the device is never opened)."""
+    if not text:
+        return None
+    from emulator.tablet.taped import TapedTablet
+    from protocols.tablets.sources import SourceError
+
+    try:
+        return TapedTablet.open(text, record)
+    except (SourceError, OSError) as exc:
+        raise SystemExit(f"{COMMAND}: --tablet {text}: {exc}") from None
+
+
+def _poll_tablet(tablet, session, editor) -> None:
+    """New tablet reports to the device's tablet input, the pen scaled to the tablet's
+    range; a lost tablet is reported once and dropped."""
+    from emulator.rainbow.host_input import tablet_event
+    from protocols.tablets.sources import SourceLost
+
+    model = getattr(tablet.source, "model", None)
+    if model is not None:
+        editor.pen.extent = (max(1, model.max_x), max(1, model.max_y))
+        editor.pen.flip = getattr(model, "origin", "upper-left") == "lower-left"
+    try:
+        for ev in tablet.read(0.0):
+            session.inject(tablet_event(ev))
+    except (SourceLost, OSError) as exc:
+        print(f"{COMMAND}: tablet lost ({exc}); carrying on without it", file=sys.stderr)
+        tablet.close()
 
 
 def _report(editor) -> int:
