@@ -36,6 +36,7 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
 
 def actors(args: argparse.Namespace) -> int:
     from apps.ca.rules import RuleError
+    from base.atomicfile import probe
     from camlab88.runopts import fail, run_options
     from protocols.rainbow.script import Player, ScriptError, load
 
@@ -47,6 +48,8 @@ def actors(args: argparse.Namespace) -> int:
             "for --stop-after frames" if args.stop_after else None)
         opts = run_options(args, COMMAND, useful, "give --headless with --events FILE",
                            getattr(args, "_argv", None))
+        if opts.screenshot is None:  # a save must be possible before the editing starts
+            probe(args.file)
     except (OSError, RuleError, ScriptError, ValueError) as exc:
         return fail(COMMAND, exc)
     if opts.headless and player is None and opts.stop_after is None:
