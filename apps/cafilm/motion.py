@@ -1,0 +1,124 @@
+"""Motion on two levels (thesis 8.1: "performing the animation on two levels").
+
+Level one, the automaton: between generation g and g + 1 the film has F frames (the
+in-between). A cell whose state is the same in both stays. A cell that appears (or whose
+state changes, as the new state) is *born*: its actor grows from scale 0 to 1. A cell that
+disappears (or whose state changes, as the old state) *dies*: its actor shrinks from 1 to 0.
+For a *moving* state (``glide``; all states unless the film says otherwise) a death and a
+birth of that state in neighbouring cells are one actor *gliding* from the first cell to the
+second at full size. Which death goes with which birth, deterministically: every pair of a
+death and a birth of the same moving state at most one cell apart (8-neighbourhood) is a
+candidate; candidates are taken in order of distance (orthogonal neighbours before diagonal
+ones), then the death's (row, col), then the birth's (row, col), each death and each birth
+used at most once. A maze runner's head gliding on as its old cell turns to tail, a
+glider's cells sliding diagonally, a blinker's arms swinging round are all this rule.
+Growth, shrinking and gliding follow smoothstep(u) = 3u^2 - 2u^3 of the phase u in [0, 1].
+
+Level two, the actor: each actor's own ``Cycle`` s, by film frame number n: ``bob A P``
+lifts it A * (1 - cos(2 pi n / P)) / 2 (0..A, never into the floor), ``turn D P`` turns it
+D * n / P degrees. Every actor of a state moves in step (one clock, the film's).
+
+A state without an actor is a tile on the board, shown as the earlier generation's until
+the phase reaches one half, then as the later's.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from apps.actors.model import ActorSet, Cycle
+from apps.actors.render import Placed
+from apps.cafilm.timeline import Generation
+
+Cell = tuple[int, int]  # (col, row)
+
+
+@dataclass(frozen=True)
+class Change:
+    """What happens between two generations."""
+
+    stays: tuple[tuple[Cell, int], ...]
+    births: tuple[tuple[Cell, int], ...]
+    deaths: tuple[tuple[Cell, int], ...]
+    glides: tuple[tuple[Cell, Cell, int], ...]  # (from, to, state)
+
+
+def smoothstep(u: float) -> float:
+    u = min(max(u, 0.0), 1.0)
+    return u * u * (3.0 - 2.0 * u)
+
+
+def change(a: Generation, b: Generation, glide: frozenset[int] | None = None) -> Change:
+    """``glide``: the moving states (None: every state)."""
+    old, new = a.as_dict(), b.as_dict()
+    stays = sorted((c, s) for c, s in old.items() if new.get(c) == s)
+    deaths = [(c, s) for c, s in old.items() if new.get(c) != s]
+    births = [(c, s) for c, s in new.items() if old.get(c) != s]
+    pairs = []
+    for (dc, ds) in deaths:
+        if glide is not None and ds not in glide:
+            continue
+        for (bc, bs) in births:
+            dx, dy = bc[0] - dc[0], bc[1] - dc[1]
+            if bs == ds and max(abs(dx), abs(dy)) == 1:
+                pairs.append((dx * dx + dy * dy, dc[1], dc[0], bc[1], bc[0], dc, bc, ds))
+    pairs.sort(key=lambda p: p[:5])
+    used_d: set[Cell] = set()
+    used_b: set[Cell] = set()
+    glides = []
+    for *_key, dc, bc, s in pairs:
+        if dc in used_d or bc in used_b:
+            continue
+        used_d.add(dc)
+        used_b.add(bc)
+        glides.append((dc, bc, s))
+    return Change(tuple(stays),
+                  tuple(sorted(x for x in births if x[0] not in used_b)),
+                  tuple(sorted(x for x in deaths if x[0] not in used_d)),
+                  tuple(sorted(glides)))
+
+
+def cycle_pose(cycles: tuple[Cycle, ...], frame: int) -> tuple[float, float]:
+    """(turn degrees, lift cells) of an actor's own motion at film frame ``frame``."""
+    turn = lift = 0.0
+    for c in cycles:
+        if c.kind == "turn":
+            turn += c.amount * frame / c.period
+        elif c.kind == "bob":
+            lift += c.amount * (1.0 - math.cos(2.0 * math.pi * frame / c.period)) / 2.0
+    return turn, lift
+
+
+def posed(ch: Change, u: float, actors: ActorSet, frame: int
+          ) -> tuple[tuple[Placed, ...], tuple[tuple[int, int, int], ...]]:
+    """(actors placed, tile cells (col, row, state)) at phase ``u`` of the change."""
+    e = smoothstep(u)
+    have = actors.actors
+    placed: list[Placed] = []
+    tiles: list[tuple[int, int, int]] = []
+
+    def put(state: int, col: float, row: float, scale: float) -> None:
+        turn, lift = cycle_pose(have[state].cycles, frame)
+        placed.append(Placed(state, col, row, scale, turn, lift))
+
+    for (col, row), s in ch.stays:
+        put(s, col, row, 1.0) if s in have else tiles.append((col, row, s))
+    for (col, row), s in ch.deaths:
+        if s in have:
+            if e < 1.0:
+                put(s, col, row, 1.0 - e)
+        elif u < 0.5:
+            tiles.append((col, row, s))
+    for (col, row), s in ch.births:
+        if s in have:
+            if e > 0.0:
+                put(s, col, row, e)
+        elif u >= 0.5:
+            tiles.append((col, row, s))
+    for (c0, r0), (c1, r1), s in ch.glides:
+        if s in have:
+            put(s, c0 + (c1 - c0) * e, r0 + (r1 - r0) * e, 1.0)
+        else:
+            tiles.append((c0, r0, s) if u < 0.5 else (c1, r1, s))
+    return tuple(placed), tuple(tiles)
