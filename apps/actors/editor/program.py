@@ -246,6 +246,7 @@ class ActorEditor:
             self._answer(key)
         elif key == "escape" and self.menus.is_open():
             self.menus.cancel()
+            self.say("no cell type chosen", INFO)
         elif key in ("q", "escape"):
             self.request_quit()
         elif key == "s":
@@ -309,9 +310,11 @@ class ActorEditor:
 
     def _right(self, x: int, y: int) -> None:
         if self.menus.choosing():
-            state = self.menus.chosen_type()
-            if state is not None:
-                self.select(state)
+            index = self.menus.chosen_type()
+            if index is not None:
+                self.select(index)
+            t = self.cell_type
+            self.say(f"editing cell type {t.state} ({t.name})", INFO)
         elif L.inside(L.PROFILE, x, y) and self.picked is None:
             self._delete_at(x, y)
 
