@@ -67,6 +67,7 @@ MISSING: dict[str, list[str] | str] = {
     "ca replay": ["--script", M, "--generation", "3"],
     "ca program": ["--headless", "--pattern", M],
     "ca library": "no input file",
+    "ca film": ["life", "glider", "--actors", M, "--generations", "1", "--out", "o.gif"],
     "ca actors": ["new.actors", "--headless", "--events", M],
     "replay": [M],
     "figures": "its argument is a figure number (an unknown one: 2, tests/test_figures.py)",
@@ -86,6 +87,8 @@ UNWRITABLE: dict[str, list[str]] = {
     "ca run": ["--rules", "life", "--pattern", "glider", "--generations", "1",
                "--png", "{BAD}.png"],
     "ca convert": ["glider", "{BAD}.cells"],
+    "ca film": ["life", "glider", "--generations", "1", "--size", "16x16", "--out",
+                "{BAD}.gif"],
     "ca actors": ["{BAD}.actors", "--headless", "--stop-after", "1"],
 }
 

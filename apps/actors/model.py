@@ -222,12 +222,21 @@ def _triple(ln: _Line, what: str, lo: float, hi: float) -> tuple[float, float, f
             ln.number(f"{what} z", lo, hi))
 
 
-def _points(ln: _Line, what: str, lo: float) -> tuple[tuple[float, float], ...]:
+def _points(ln: _Line, kind: str) -> tuple[tuple[float, float], ...]:
+    """A lathe's (radius, height) pairs, heights never decreasing, or a polygon's (x, y)."""
+    lathe = kind == "lathe"
+    first, second = ("lathe radius", "lathe height") if lathe else ("extrude x", "extrude y")
     pts: list[tuple[float, float]] = []
     while ln.more() and ln.peek() not in ("size", "height", "at"):
         if len(pts) >= MAX_POINTS:
             raise ln.error(f"more than {MAX_POINTS} points")
-        pts.append((ln.number(f"{what} x", lo), ln.number(f"{what} y")))
+        a = ln.number(first, 0.0 if lathe else -MAX_COORD)
+        col = ln.words[ln.i][0] if ln.more() else ln.end_col
+        b = ln.number(second)
+        if lathe and pts and b < pts[-1][1]:
+            raise ln.error(f"a lathe profile goes bottom to top: height {_num(b)} is below "
+                           f"the point before ({_num(pts[-1][1])})", col)
+        pts.append((a, b))
     return tuple(pts)
 
 
@@ -235,8 +244,6 @@ def _check_profile(ln: _Line, kind: str, pts: tuple[tuple[float, float], ...]) -
     if kind == "lathe":
         if len(pts) < 2:
             raise ln.at_key("a lathe profile needs at least 2 (radius, height) points")
-        if any(b[1] < a[1] for a, b in zip(pts, pts[1:])):
-            raise ln.at_key("a lathe profile goes bottom to top: heights must not decrease")
         if max(r for r, _ in pts) <= 0:
             raise ln.at_key("a lathe profile needs a radius above 0")
     elif len(pts) < 3:
@@ -253,8 +260,7 @@ def _part(ln: _Line, kind: str) -> Part:
             r = ln.number("sphere radius", 1e-6)
             size = (r, r, r)
     else:
-        pts = _points(ln, "lathe radius" if kind == "lathe" else "extrude",
-                      0.0 if kind == "lathe" else -MAX_COORD)
+        pts = _points(ln, kind)
         _check_profile(ln, kind, pts)
     if ln.peek() == "height" and kind == "extrude":
         ln.word("height")

@@ -13,7 +13,7 @@ Anti-aliasing: each pixel is the mean, in linear light, of ``ss`` x ``ss`` sampl
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
@@ -26,10 +26,9 @@ from apps.snooker.render.lights import DEFAULT_AMBIENT, DEFAULT_INTENSITY, Light
 from apps.snooker.render.pinhole import Pinhole
 
 BACKGROUND = np.array((0.012, 0.010, 0.010))  # the dark room round the board (snooker's)
-BOARD = (np.array((0.30, 0.27, 0.22)), np.array((0.10, 0.085, 0.07)))  # light, dark squares
+BOARD = (np.array((0.26, 0.17, 0.085)), np.array((0.045, 0.026, 0.014)))  # maple, walnut
 FLOOR_PHONG = (1.0, 1.0, 0.08, 12.0)  # ka kd ks n: a waxed board, reconstructed
 SHADOW_MAP = 1024
-TILE_HEIGHT = 0.0  # tiles are painted on the board
 
 
 @dataclass(frozen=True)
@@ -70,7 +69,6 @@ class Shot:
     observer: tuple[float, float, float]
     viewpoint: tuple[float, float, float]
     focal_mm: float = 35.0
-    extra: dict = field(default_factory=dict, compare=False)
 
 
 def canopy_over(floor: tuple[int, int, int, int], n: int = 4) -> Lights:
@@ -79,7 +77,7 @@ def canopy_over(floor: tuple[int, int, int, int], n: int = 4) -> Lights:
     c0, r0, c1, r1 = floor
     cx, cy = (c0 + c1) / 2.0, -(r0 + r1) / 2.0
     span = max(c1 - c0, r1 - r0, 4)
-    z = 0.9 * span + 6.0
+    z = 0.3 * span + 4.0  # low enough for shadows a cell or so long at the board's edge
     dx, dy = 0.3 * (c1 - c0), 0.3 * (r1 - r0)
     spots = {1: [(0, 0)], 2: [(-1, 0), (1, 0)], 4: [(-1, -1), (-1, 1), (1, -1), (1, 1)]}[n]
     pos = np.array([(cx + sx * dx, cy + sy * dy, z) for sx, sy in spots], dtype=np.float64)

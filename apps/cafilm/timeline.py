@@ -10,6 +10,7 @@ import numpy as np
 
 MARGIN = 2  # cells of board round everything the run ever occupied
 MAX_CELLS = 200_000  # live cells over a whole film: each one is an actor in every frame
+MAX_BOARD = 4_000_000  # cells of board (a 2000 x 2000 square): its albedo is held per cell
 
 
 class TimelineError(ValueError):
@@ -52,7 +53,13 @@ def record(engine: object, generations: int) -> Timeline:
                                 f"generations (at generation {len(gens)}): film fewer "
                                 "generations or a smaller pattern")
         gens.append(Generation(xs - x0, ys - y0, ts.copy()))
-    return Timeline(tuple(gens), _floor(gens))
+    floor = _floor(gens)
+    area = (floor[2] - floor[0]) * (floor[3] - floor[1])
+    if area > MAX_BOARD:
+        raise TimelineError(f"the cells spread over {floor[2] - floor[0]} x "
+                            f"{floor[3] - floor[1]} cells, more board than a film can hold "
+                            f"({MAX_BOARD} cells): a smaller pattern or fewer generations")
+    return Timeline(tuple(gens), floor)
 
 
 def _floor(gens: list[Generation]) -> tuple[int, int, int, int]:

@@ -61,7 +61,7 @@ GOOD = "rules life\nactor 1 p\n  colour 1 2 3\n  box 1 1 1\nend\n"
     (GOOD.replace("box 1 1 1", "box 1 one 1"), "4:9", "'one' is not a number"),
     (GOOD.replace("box 1 1 1", "box 1 1 0"), "4:11", "between"),
     (GOOD.replace("box 1 1 1", "box 1 1 1 at 0 0"), "4:19", "expected at z"),
-    (GOOD.replace("box 1 1 1", "lathe 0.3 0 0.2 -1"), "4:3", "heights must not decrease"),
+    (GOOD.replace("box 1 1 1", "lathe 0.3 0 0.2 -1"), "4:19", "height -1 is below"),
     (GOOD.replace("box 1 1 1", "lathe 0.3 0"), "4:3", "at least 2"),
     (GOOD.replace("box 1 1 1", "extrude 0 0 1 0 1 1"), "4:22", "'height H'"),
     (GOOD.replace("box 1 1 1", "cone 1"), "4:3", "unknown keyword 'cone'"),

@@ -76,6 +76,10 @@ COMMANDS: dict[str, Argv] = {
     "kas-paint-ops": lambda f, d: ["kas", "paint", _walk4(d), "--ops", str(f), "--headless",
                                    "--replay"],
     "session-recording": lambda f, d: ["replay", str(f), "--check", "--headless"],
+    "ca-actors": lambda f, d: ["ca", "film", "life", "glider", "--actors", str(f),
+                               "--generations", "1", "--frames-per-generation", "1",
+                               "--size", "16x16", "--samples", "1", "--workers", "1",
+                               "--out", str(d / "o.gif")],
 }
 # corpus files that are for the reader only: every_record.session's screen hashes are made
 # up (it is there to give the reader input events), so a --check replay rightly fails it
@@ -84,7 +88,7 @@ SUFFIX = {"ca-native": ".pat", "ca-rle": ".rle", "ca-cells": ".cells", "ca-rules
           "ca-mc": ".mc",
           "snooker-checkpoint": ".cp", "snooker-session": ".json", "rainbow-scene": ".json",
           "kas-keyframe": ".kas", "kas-path": ".kas", "kas-timing": ".kas",
-          "kas-paint-ops": ".ops", "session-recording": ".session"}
+          "kas-paint-ops": ".ops", "session-recording": ".session", "ca-actors": ".actors"}
 
 
 @pytest.mark.parametrize("name", sorted(TARGETS))

@@ -1,0 +1,151 @@
+"""``camlab88 ca film RULES PATTERN --actors FILE --generations N --out film.mp4``: the
+automaton with its cells as 3-D actors (thesis 8.1), the camera language over the grid,
+rendered in truecolour on a local pool or Dask (resumable), or in the period mode on one
+emulated T5688 over the 9600-baud line. Parse and wire only: apps/cafilm does the work."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from camlab88.runopts import check_output, fail, positive
+
+COMMAND = "camlab88 ca film"
+
+
+def _size(text: str) -> tuple[int, int]:
+    w, sep, h = text.lower().partition("x")
+    if not (sep and w.isascii() and w.isdigit() and h.isascii() and h.isdigit()):
+        raise argparse.ArgumentTypeError(f"expected WxH such as 768x512, not {text!r}")
+    if not (8 <= int(w) <= 8192 and 8 <= int(h) <= 8192):
+        raise argparse.ArgumentTypeError(f"{text}: each side must be 8..8192 pixels")
+    return int(w), int(h)
+
+
+def _movie(text: str) -> Path:
+    if Path(text).suffix.lower() not in (".mp4", ".gif"):
+        raise argparse.ArgumentTypeError(f"{text}: the film is .mp4 or .gif")
+    return Path(text)
+
+
+def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    s = actions.add_parser(
+        "film", help="the automaton as a film of 3-D actors (chessmen...) (§8.1)",
+        description="Run RULES on PATTERN for N generations and film it with each cell "
+        "state drawn as its actor (docs/ca_actors.md; a state without one is a coloured "
+        "tile), births growing, deaths shrinking, moving cells gliding, F frames a "
+        "generation. Beside --out: OUT_frames/frame_NNNNN.png; frames already rendered are "
+        "kept, so a stopped truecolour film resumes (docs/ca_film.md).")
+    s.add_argument("rules", metavar="RULES", help="rule file or library name (life, maze)")
+    s.add_argument("pattern", metavar="PATTERN", help="pattern file or library name")
+    s.add_argument("--actors", metavar="FILE", help="the actors file (e.g. "
+                   "examples/ca/chess.actors); without it every cell is a tile")
+    s.add_argument("--generations", type=positive, required=True, metavar="N")
+    s.add_argument("--camera", metavar="SCRIPT", help="camera script (CCL over the grid: "
+                   "events are generation numbers, coordinates cells)")
+    s.add_argument("--out", type=_movie, required=True, metavar="FILM", help=".mp4 or .gif")
+    s.add_argument("--gif", type=_movie, metavar="FILE", help="also a GIF of the film")
+    s.add_argument("--mode", choices=("truecolour", "t5688"), default="truecolour")
+    s.add_argument("--size", type=_size, default=(768, 512), metavar="WxH",
+                   help="truecolour frame size (t5688: its 768x512 screen)")
+    s.add_argument("--frames-per-generation", type=positive, default=8, metavar="F")
+    s.add_argument("--glide", default="all", metavar="all|none|S,S",
+                   help="states whose cells glide to a neighbouring birth (default all)")
+    s.add_argument("--samples", type=positive, default=2, metavar="S",
+                   help="anti-aliasing: S x S samples a pixel (default 2)")
+    s.add_argument("--lights", metavar="FILE", help="lights file (x y z in cells; default "
+                   "four lights above the board)")
+    s.add_argument("--edges", choices=("wrap", "dead"), default="wrap")
+    s.add_argument("--seed", type=int, default=0)
+    s.add_argument("--dask", metavar="ADDRESS|local", help="render on a Dask cluster")
+    s.add_argument("--workers", type=positive, metavar="N",
+                   help="processes (default: one per core)")
+    s.set_defaults(handler=film)
+
+
+def film(args: argparse.Namespace) -> int:
+    from apps.snooker.camera.errors import CclErrors
+    from apps.snooker.film.schedule import FilmError
+
+    if args.mode == "t5688" and (args.size != (768, 512) or args.dask or args.workers):
+        return fail(COMMAND, "--mode t5688 draws the T5688's 768x512 screen one frame "
+                    "after another; --size, --dask and --workers are truecolour's")
+    missing = [p for p in (args.actors, args.camera, args.lights)
+               if p is not None and not Path(p).exists()]
+    if missing:
+        return fail(COMMAND, f"{missing[0]}: no such file")
+    try:
+        return _film(args)
+    except KeyboardInterrupt:
+        print(f"{COMMAND}: interrupted; the frames written so far stay, and the same "
+              "command resumes from them", file=sys.stderr)
+        raise
+    except CclErrors as exc:
+        print(exc, file=sys.stderr)
+        return fail(COMMAND, "the camera script has errors; nothing rendered")
+    except (FilmError, FileNotFoundError, OSError, ValueError) as exc:
+        return fail(COMMAND, exc)
+
+
+def _film(args: argparse.Namespace) -> int:
+    from apps.cafilm.build import FilmSpec, build, rules_note
+    from apps.snooker.film.movie import write_movie
+    from apps.snooker.film.pipeline import FilmPaths
+    from apps.snooker.film.schedule import frame_file
+
+    for out in (args.out, args.gif):  # before any work: a bad place fails now
+        if out is not None:
+            out.parent.mkdir(parents=True, exist_ok=True)
+            check_output(COMMAND, out)
+    spec = FilmSpec(args.rules, args.pattern, args.generations, args.actors, args.camera,
+                    args.lights, args.frames_per_generation, args.glide, args.size,
+                    args.samples, args.edges, args.seed)
+    movie = build(spec)
+    note = rules_note(movie, spec)
+    if note:
+        print(f"{COMMAND}: {note}", file=sys.stderr)
+    frames = FilmPaths.beside(args.out).frames
+    frames.mkdir(exist_ok=True)
+    done = _truecolour(args, movie, frames) if args.mode == "truecolour" else \
+        _period(movie, frames)
+    files = [frame_file(frames, n) for n in range(1, movie.n_frames + 1)]
+    for out in (args.out, args.gif):
+        if out is not None:
+            write_movie(files, out)
+    films = f"{args.out} and {args.gif}" if args.gif else f"{args.out}"
+    print(f"{COMMAND}: {movie.n_frames} frames -> {films} ({done}); frames {frames}/",
+          file=sys.stderr)
+    return 0
+
+
+def _truecolour(args: argparse.Namespace, movie, frames: Path) -> str:
+    from apps.cafilm.film import shoot
+    from apps.snooker.film.progress import progress_bar
+
+    report = shoot(movie, frames, args.dask, args.workers, progress_bar(COMMAND))
+    return (f"{len(report.rendered)} rendered, {len(report.skipped)} already there"
+            + "".join(f"; frame {f} retried ({why})" for f, why in report.retries))
+
+
+def _period(movie, frames: Path) -> str:
+    from apps.cafilm.period import period_frames
+    from apps.snooker.film.schedule import frame_file
+    from apps.snooker.film.task import encode_png
+    from base.atomicfile import write_atomic
+    from emulator.machine.sigma import SigmaMachine
+    from protocols.link import LineSettings
+
+    machine = SigmaMachine("t5688", LineSettings(baud=9600))
+
+    def send(orders: bytes):
+        start = machine.now
+        machine.host.write(orders)
+        machine.run_until(machine.idle_time())
+        return machine.frame(), float(machine.now - start)
+
+    line = 0.0
+    for f in period_frames(movie, send):
+        write_atomic(frame_file(frames, f.frame), encode_png(f.image))
+        line += f.line_seconds
+    return f"t5688: Sigma orders only, line time {line:.1f} s at 9600 baud"
