@@ -157,3 +157,26 @@ def test_the_preview_turns_in_its_pad(tmp_path: Path) -> None:
     b = d.screen()[y:y + h, x:x + w]
     assert len(np.unique(a.reshape(-1, 3), axis=0)) > 8  # a lit solid, not a flat colour
     assert not np.array_equal(a, b)
+
+
+def _menu(d: Driver, item: str) -> None:
+    d.run("press middle 600 200\nwait 1\n")
+    m = d.editor.menus.main
+    y = m.y + m.scroll + m.items.index(item) * 18 + 9
+    d.run(f"move {m.x + 10} {y}\nwait 1\nrelease middle {m.x + 10} {y}\nwait 1\n")
+
+
+def test_the_actor_is_named_by_typing_on_the_message_pad(tmp_path: Path) -> None:
+    path = tmp_path / "n.actors"
+    d = Driver(path)
+    d.click_points(PAWN[:2])
+    _menu(d, "Name")
+    assert d.editor.naming is not None and "form_1_" in d.editor.display.message.text
+    d.run("type my pawn\nwait 1\nkey return\nwait 1\n")  # a space: not a name character
+    assert d.editor.naming is None and d.editor.actor().name == "mypawn"
+    _menu(d, "Name")
+    d.run("key backspace\nkey backspace\nkey backspace\nkey backspace\nkey backspace\n"
+          "key backspace\nkey return\nwait 1\n")  # nothing left: refused, still asked
+    assert d.editor.naming is not None and "a name:" in d.editor.said[-1]
+    d.run("key escape\nwait 1\nkey s\nwait 1\n")
+    assert read_actors(path).actors[1].name == "mypawn"

@@ -10,7 +10,7 @@ from apps.actors.editor.cell_types import CellType
 from protocols.rainbow.client import RainbowClient
 from protocols.rainbow.ui import PopupMenu
 
-MAIN = ["Do nothing", "Cell type", "Clear profile", "Remove actor", "Save", "Finish"]
+MAIN = ["Do nothing", "Cell type", "Name", "Clear profile", "Remove actor", "Save", "Finish"]
 MAX_TYPES = 30  # a pop-up menu's items (a 5-bit pad)
 
 

@@ -14,6 +14,7 @@ file asks to be repeated, so a typing error in the file is not lost by accident.
 from __future__ import annotations
 
 import os
+from dataclasses import replace
 
 from apps.actors.editor import layout as L
 from apps.actors.editor import sliders as S
@@ -27,6 +28,7 @@ from apps.actors.editor.cell_types import (
 )
 from apps.actors.editor.display import Display
 from apps.actors.editor.menus import Menus
+from apps.actors.editor.naming import NameEntry
 from apps.actors.editor.profile import Profile
 from apps.actors.editor.tablet import TabletPen
 from apps.actors.model import Actor, ActorFileError, ActorSet, Material, read_actors, write_actors
@@ -66,6 +68,7 @@ class ActorEditor:
         self.mouse = (0, 0)
         self.asking = False   # the quit question is on the message pad
         self.confirm_overwrite = False
+        self.naming: NameEntry | None = None  # the actor's name being typed
         self.finished = self.discarded = False
         self.frames = 0
         self.select(0)
@@ -234,16 +237,18 @@ class ActorEditor:
             return
         if isinstance(e, KeyEvent):
             if e.pressed:
-                self._key(e.key)
+                self._key(e.key, e.char)
         elif isinstance(e, MouseEvent):
             self._mouse(e)
         elif isinstance(e, TabletEvent):
             for m in self.pen.mouse_events(e):
                 self._mouse(m)
 
-    def _key(self, key: str) -> None:
+    def _key(self, key: str, char: str = "") -> None:
         if self.asking:
             self._answer(key)
+        elif self.naming is not None:
+            self._name_key(key, char)
         elif key == "escape" and self.menus.is_open():
             self.menus.cancel()
             self.say("no cell type chosen", INFO)
@@ -326,6 +331,30 @@ class ActorEditor:
             self.profile.delete(i)
             self._profile_changed()
 
+    def _show_name(self) -> None:
+        assert self.naming is not None
+        t = self.cell_type
+        self.display.message.show(f"name of cell type {t.state}'s actor (Return sets it, Esc "
+                                  f"leaves it):\n{self.naming.text}_", PROMPT)
+
+    def _name_key(self, key: str, char: str) -> None:
+        assert self.naming is not None
+        done = self.naming.key(key, char)
+        if done == "typing":
+            self._show_name()
+        elif done == "bad":
+            self.say("a name: letters, digits, _ . + - (at most 64, starting with a letter, "
+                     f"digit or _)\n{self.naming.text}_", ERROR)
+        elif done == "cancel":
+            self.naming = None
+            self.say("the name is unchanged", INFO)
+        else:
+            a = self._editable()
+            name, self.naming = self.naming.text, None
+            self.actors[a.state] = replace(a, name=name)
+            self.say(f"cell type {a.state}'s actor is called {name}", INFO)
+            self.show_status()
+
     def _middle(self, pressed: bool, x: int, y: int) -> None:
         if pressed:
             self._release()
@@ -335,6 +364,9 @@ class ActorEditor:
         if item == "Cell type":
             self.menus.open_types(self.types, self.index, x, y)
             self.say("move to a cell type, right button to select (Esc: none)", PROMPT)
+        elif item == "Name":
+            self.naming = NameEntry(self._editable().name)
+            self._show_name()
         elif item == "Clear profile":
             self.profile.clear()
             self._profile_changed()
