@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit
 
 from base.kernel_notice import announce_compiles
@@ -182,68 +183,121 @@ def _phong(out, albedo, mat, px, py, pz, nx, ny, nz, vx, vy, vz, lights, smaps, 
 
 
 @njit(cache=True, nogil=True)
-def shade(img, zbuf, ids, b1, b2, cam, normals, tri_mat, albedo, mats, lights, ambient,
-          smaps, lp, tiles, floor, background):  # numba kernel
-    """Every pixel: the nearest of an actor's triangle (normal interpolated) and the floor
-    z = 0 (albedo ``tiles[row - floor[1], col - floor[0]]`` within the floor's cells),
-    Phong-shaded; else the background. floor = (col0, row0, floor material ka kd ks n)."""
-    h = img.shape[0]
-    w = img.shape[1]
-    ox = cam[0]
-    oy = cam[1]
-    oz = cam[2]
+def _ray(cam, w, h, j, i):  # numba kernel
+    """The (unnormalised, forward component 1) ray through sample (j, i)'s centre."""
     fpx = cam[12]
+    a = (i + 0.5 - w / 2.0) / fpx
+    b = (h / 2.0 - (j + 0.5)) / fpx
+    return (cam[9] + a * cam[3] + b * cam[6], cam[10] + a * cam[4] + b * cam[7],
+            cam[11] + a * cam[5] + b * cam[8])
+
+
+@njit(cache=True, nogil=True)
+def sample_key(zbuf, ids, cam, floor, th, tw, j, i):  # numba kernel
+    """What sample (j, i) sees: triangle t >= 0, -2 - (row * tw + col) for a cell of the
+    board, -1 for the room. Samples of one pixel with one key shade alike."""
+    h = zbuf.shape[0]
+    w = zbuf.shape[1]
+    rx, ry, rz = _ray(cam, w, h, j, i)
+    zf = math.inf
+    if rz < 0.0:
+        zf = -cam[2] / rz
+    t = ids[j, i]
+    if t >= 0 and zbuf[j, i] <= zf:
+        return t
+    if zf < math.inf:
+        col = int(math.floor(cam[0] + zf * rx)) - int(floor[0])
+        row = int(math.floor(-(cam[1] + zf * ry))) - int(floor[1])
+        if 0 <= col < tw and 0 <= row < th:
+            return -2 - (row * tw + col)
+    return -1
+
+
+@njit(cache=True, nogil=True)
+def _shade_sample(out, j, i, key, zbuf, b1, b2, cam, normals, tri_mat, albedo, mats, lights,
+                  ambient, smaps, lp, tiles, fmat, background):  # numba kernel
+    h = zbuf.shape[0]
+    w = zbuf.shape[1]
+    rx, ry, rz = _ray(cam, w, h, j, i)
+    rn = math.sqrt(rx * rx + ry * ry + rz * rz)
+    vx = -rx / rn
+    vy = -ry / rn
+    vz = -rz / rn
+    if key >= 0:
+        t = key
+        z = zbuf[j, i]
+        w1 = b1[j, i]
+        w2 = b2[j, i]
+        w0 = 1.0 - w1 - w2
+        nx = w0 * normals[t, 0, 0] + w1 * normals[t, 1, 0] + w2 * normals[t, 2, 0]
+        ny = w0 * normals[t, 0, 1] + w1 * normals[t, 1, 1] + w2 * normals[t, 2, 1]
+        nz = w0 * normals[t, 0, 2] + w1 * normals[t, 1, 2] + w2 * normals[t, 2, 2]
+        nn = math.sqrt(nx * nx + ny * ny + nz * nz)
+        if nn <= 0.0:
+            nn = 1.0
+        nx /= nn
+        ny /= nn
+        nz /= nn
+        if nx * vx + ny * vy + nz * vz < 0.0:  # seen from inside: light the side seen
+            nx = -nx
+            ny = -ny
+            nz = -nz
+        k = tri_mat[t]
+        _phong(out, albedo[k], mats[k], cam[0] + z * rx, cam[1] + z * ry, cam[2] + z * rz,
+               nx, ny, nz, vx, vy, vz, lights, smaps, lp, ambient)
+    elif key <= -2:
+        cell = -2 - key
+        tw = tiles.shape[1]
+        zf = -cam[2] / rz
+        _phong(out, tiles[cell // tw, cell % tw], fmat, cam[0] + zf * rx, cam[1] + zf * ry,
+               0.0, 0.0, 0.0, 1.0, vx, vy, vz, lights, smaps, lp, ambient)
+    else:
+        for c in range(3):
+            out[c] = background[c]
+
+
+@njit(cache=True, nogil=True)
+def shade(img, ss, zbuf, ids, b1, b2, cam, normals, tri_mat, albedo, mats, lights, ambient,
+          smaps, lp, tiles, floor, background):  # numba kernel
+    """Every pixel of ``img`` (H, W, 3) from its ss x ss samples (the buffers are at sample
+    resolution): the nearest of an actor's triangle (normal interpolated) and the board
+    z = 0 (albedo ``tiles[row - floor[1], col - floor[0]]`` within its cells), Phong-shaded,
+    else the room. Where every sample of a pixel sees the same triangle or the same board
+    cell, one sample (the one right and below the centre) is shaded for all (adaptive
+    anti-aliasing: edges get the mean of all their samples). floor = (col0, row0, ka kd ks n).
+    """
+    hh = img.shape[0]
+    ww = img.shape[1]
     out = albedo[0].copy()
+    acc = albedo[0].copy()
     fmat = floor[2:6].copy()
     th = tiles.shape[0]
     tw = tiles.shape[1]
-    for j in range(h):
-        b = (h / 2.0 - (j + 0.5)) / fpx
-        for i in range(w):
-            a = (i + 0.5 - w / 2.0) / fpx
-            rx = cam[9] + a * cam[3] + b * cam[6]
-            ry = cam[10] + a * cam[4] + b * cam[7]
-            rz = cam[11] + a * cam[5] + b * cam[8]
-            rn = math.sqrt(rx * rx + ry * ry + rz * rz)
-            vx = -rx / rn
-            vy = -ry / rn
-            vz = -rz / rn
-            zf = math.inf
-            if rz < 0.0:
-                zf = -oz / rz
-            t = ids[j, i]
-            if t >= 0 and zbuf[j, i] <= zf:
-                z = zbuf[j, i]
-                w1 = b1[j, i]
-                w2 = b2[j, i]
-                w0 = 1.0 - w1 - w2
-                nx = w0 * normals[t, 0, 0] + w1 * normals[t, 1, 0] + w2 * normals[t, 2, 0]
-                ny = w0 * normals[t, 0, 1] + w1 * normals[t, 1, 1] + w2 * normals[t, 2, 1]
-                nz = w0 * normals[t, 0, 2] + w1 * normals[t, 1, 2] + w2 * normals[t, 2, 2]
-                nn = math.sqrt(nx * nx + ny * ny + nz * nz)
-                if nn <= 0.0:
-                    nn = 1.0
-                nx /= nn
-                ny /= nn
-                nz /= nn
-                if nx * vx + ny * vy + nz * vz < 0.0:  # seen from inside: light the side seen
-                    nx = -nx
-                    ny = -ny
-                    nz = -nz
-                k = tri_mat[t]
-                _phong(out, albedo[k], mats[k], ox + z * rx, oy + z * ry, oz + z * rz,
-                       nx, ny, nz, vx, vy, vz, lights, smaps, lp, ambient)
-            elif zf < math.inf:
-                px = ox + zf * rx
-                py = oy + zf * ry
-                col = int(math.floor(px)) - int(floor[0])
-                row = int(math.floor(-py)) - int(floor[1])
-                if 0 <= col < tw and 0 <= row < th:
-                    _phong(out, tiles[row, col], fmat, px, py, 0.0, 0.0, 0.0, 1.0,
-                           vx, vy, vz, lights, smaps, lp, ambient)
-                else:
-                    out[:] = background
-            else:
-                out[:] = background
+    n = ss * ss
+    keys = np.empty(n, dtype=np.int64)
+    for jj in range(hh):
+        for ii in range(ww):
+            same = True
+            for s in range(n):
+                keys[s] = sample_key(zbuf, ids, cam, floor, th, tw, jj * ss + s // ss,
+                                     ii * ss + s % ss)
+                if keys[s] != keys[0]:
+                    same = False
+            if same:
+                mid = (ss // 2) * ss + ss // 2
+                _shade_sample(out, jj * ss + ss // 2, ii * ss + ss // 2, keys[mid], zbuf, b1,
+                              b2, cam, normals, tri_mat, albedo, mats, lights, ambient, smaps,
+                              lp, tiles, fmat, background)
+                for c in range(3):
+                    img[jj, ii, c] = out[c]
+                continue
             for c in range(3):
-                img[j, i, c] = out[c]
+                acc[c] = 0.0
+            for s in range(n):
+                _shade_sample(out, jj * ss + s // ss, ii * ss + s % ss, keys[s], zbuf, b1, b2,
+                              cam, normals, tri_mat, albedo, mats, lights, ambient, smaps, lp,
+                              tiles, fmat, background)
+                for c in range(3):
+                    acc[c] += out[c]
+            for c in range(3):
+                img[jj, ii, c] = acc[c] / n

@@ -8,7 +8,8 @@ without an actor is a tile of that state's colour. Lights are snooker's point li
 (apps.snooker.render.lights.Lights) in this frame. The camera is snooker's pinhole (a view's
 observer, viewpoint and focal length in mm on 35 mm film).
 
-Anti-aliasing: each pixel is the mean, in linear light, of ``ss`` x ``ss`` samples.
+Anti-aliasing: ``ss`` x ``ss`` samples a pixel; a pixel whose samples all see one triangle or
+one board cell is shaded once, any other is the mean of its samples in linear light.
 """
 
 from __future__ import annotations
@@ -196,18 +197,16 @@ def render_linear(stage: Stage, shot: Shot, look: Look | None = None) -> np.ndar
     raster.rasterise(sx, sy, depth, zbuf, ids, b1, b2)
     maps, lp = shadow_maps(stage, verts, lk)
     albedo, mats = materials(stage)
-    img = np.empty((h, w, 3))
+    img = np.empty((lk.height, lk.width, 3))
     c0, r0 = stage.floor[:2]
-    raster.shade(img, zbuf, ids, b1, b2, camera_params(pin),
+    raster.shade(img, np.int64(lk.ss), zbuf, ids, b1, b2, camera_params(pin),
                  np.ascontiguousarray(normals, dtype=np.float64),
                  np.ascontiguousarray(tri_mat, dtype=np.int64), albedo, mats,
                  np.ascontiguousarray(np.hstack([stage.lights.positions,
                                                  stage.lights.colours]), dtype=np.float64),
                  np.ascontiguousarray(stage.lights.ambient, dtype=np.float64), maps, lp,
                  board(stage), np.array([c0, r0, *FLOOR_PHONG], dtype=np.float64), BACKGROUND)
-    if lk.ss == 1:
-        return img
-    return img.reshape(lk.height, lk.ss, lk.width, lk.ss, 3).mean(axis=(1, 3))
+    return img
 
 
 def render_frame(stage: Stage, shot: Shot, look: Look | None = None) -> np.ndarray:
