@@ -61,6 +61,7 @@ PROGRAMS: dict[tuple[str, str], dict[str, str]] = {
                         "--record-pans": KEEP, "--checkpoint": KEEP, "--script": KEEP,
                         "--replay-pans": KEEP, "--start": KEEP, "--edges": KEEP,
                         "--seed": KEEP, "--events": KEEP, "--json": KEEP},
+    ("ca", "actors"): {**_RUN, "--rules": KEEP, "--events": KEEP, "--tablet": TAPE},
 }
 
 # why the options people are most likely to meet are refused (any other: "not replayed")

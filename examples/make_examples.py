@@ -269,6 +269,20 @@ def ca_log(out: Path) -> None:
           str(out / "ca" / "session.events"), "--log", str(log), "--record-pans"])
 
 
+def ca_actors_session(out: Path) -> None:
+    """The actor editor's demonstration, recorded (plain file names, as a user records):
+    ``camlab88 replay examples/ca/actors_edit.session --check`` replays it."""
+    home = Path.cwd()
+    os.chdir(out / "ca")
+    try:
+        Path("pawn.actors").unlink(missing_ok=True)
+        _cli(["ca", "actors", "pawn.actors", "--rules", "maze", "--headless", "--events",
+              "actors_edit.events", "--record", "actors_edit.session"])
+        Path("pawn.actors").unlink()  # the saved file is the session's, not an example
+    finally:
+        os.chdir(home)
+
+
 def snooker_files(out: Path) -> None:
     """A new game saved before the break (a session) and the break played out
     (a §6.2.2 checkpoint)."""
@@ -284,6 +298,7 @@ TEXT_FILES: dict[str, Callable[[], str]] = {
     "kas/move.script": lambda: KAS_MOVE_SCRIPT,
     "kas/arc.script": lambda: KAS_PATH_SCRIPT,
     "ca/session.events": lambda: CA_EVENTS,
+    "ca/actors_edit.events": lambda: _actors_events(),
 }
 STREAMS: dict[str, Callable[[], bytes]] = {
     "sigma/pgplot_goc.sig": pgplot_goc,
@@ -291,7 +306,14 @@ STREAMS: dict[str, Callable[[], bytes]] = {
     "sigma/ral_gks_t5688.sig": lambda: ral_gks(True),
     "sigma/crystals_cameron.sig": crystals_cameron,
 }
-MADE = ["ca/session.log", "snooker/opening.json", "snooker/break.cp"]
+MADE = ["ca/session.log", "snooker/opening.json", "snooker/break.cp",
+        "ca/actors_edit.session"]
+
+
+def _actors_events() -> str:
+    from apps.actors.editor.demo import demo_events
+
+    return demo_events()
 
 
 def make(out: Path) -> list[Path]:
@@ -303,6 +325,7 @@ def make(out: Path) -> list[Path]:
     for name, stream in STREAMS.items():
         write_atomic(out / name, stream())
     ca_log(out)
+    ca_actors_session(out)
     snooker_files(out)
     return [out / n for n in (*TEXT_FILES, *STREAMS, *MADE)]
 

@@ -68,6 +68,7 @@ MISSING: dict[str, list[str] | str] = {
     "ca program": ["--headless", "--pattern", M],
     "ca library": "no input file",
     "ca film": ["life", "glider", "--actors", M, "--generations", "1", "--out", "o.gif"],
+    "ca actors": ["new.actors", "--headless", "--events", M],
     "replay": [M],
     "figures": "its argument is a figure number (an unknown one: 2, tests/test_figures.py)",
 }
@@ -88,6 +89,7 @@ UNWRITABLE: dict[str, list[str]] = {
     "ca convert": ["glider", "{BAD}.cells"],
     "ca film": ["life", "glider", "--generations", "1", "--size", "16x16", "--out",
                 "{BAD}.gif"],
+    "ca actors": ["{BAD}.actors", "--headless", "--stop-after", "1"],
 }
 
 

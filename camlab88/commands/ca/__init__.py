@@ -7,7 +7,7 @@ import argparse
 from camlab88.areas import register_area
 
 HELP = "the programmable cellular automaton (chapter 7)"
-ACTIONS = ("run", "convert", "replay", "library", "program", "film")
+ACTIONS = ("run", "convert", "replay", "library", "program", "film", "actors")
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
