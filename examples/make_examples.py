@@ -250,6 +250,60 @@ frames 3
 """
 
 
+# Hand-written: the chessmen of docs/ca_actors.md and the camera of the README's glider-gun film.
+CHESS_ACTORS = """\
+# Chessmen for the cellular automaton's cell types (thesis 8.1). Units are cells: a cell is a
+# 1 x 1 square of the floor; z is up. Life uses state 1 (pawns); the maze runner uses
+# 1 (walls: pawns), 2 (head: the knight) and 3 (tail: rooks); 4 is a king for your own rules.
+rules life
+
+actor 1 pawn
+  colour 236 226 200
+  material ambient 0.3 diffuse 0.8 specular 0.5 shininess 30
+  lathe 0.36 0  0.36 0.06  0.3 0.1  0.2 0.14  0.13 0.3  0.11 0.46  0.2 0.5  0.2 0.54  0.09 0.58
+  sphere 0.15 at 0 0 0.54
+  bob 0.04 24
+end
+
+actor 2 knight
+  colour 60 44 40
+  material ambient 0.3 diffuse 0.7 specular 0.8 shininess 60
+  lathe 0.38 0  0.38 0.07  0.3 0.11  0.22 0.16  0.2 0.3
+  extrude -0.16 -0.12  0.2 -0.12  0.2 0.12  -0.16 0.12 height 0.45 at 0 0 0.3
+  box 0.16 0.42 0.14 at 0 0.14 0.6
+  sphere 0.06 at 0 -0.1 0.74
+  turn 360 48
+end
+
+actor 3 rook
+  colour 200 60 50
+  material ambient 0.3 diffuse 0.8 specular 0.4 shininess 20
+  lathe 0.38 0  0.38 0.08  0.3 0.12  0.24 0.16  0.2 0.6  0.27 0.64  0.27 0.74
+  box 0.1 0.1 0.1 at 0.19 0 0.74
+  box 0.1 0.1 0.1 at -0.19 0 0.74
+  box 0.1 0.1 0.1 at 0 0.19 0.74
+  box 0.1 0.1 0.1 at 0 -0.19 0.74
+end
+
+actor 4 king
+  colour 230 190 60
+  material ambient 0.3 diffuse 0.7 specular 0.9 shininess 80
+  lathe 0.4 0  0.4 0.08  0.3 0.13  0.22 0.2  0.14 0.7  0.24 0.76  0.2 0.8  0.26 0.96  0.1 1
+  box 0.06 0.06 0.26 at 0 0 1
+  box 0.2 0.06 0.06 at 0 0 1.1
+  turn 90 96
+end
+"""
+
+GUN_CAMERA = """\
+The glider gun as chessmen (docs/ca_film.md). Event numbers are generations, coordinates
+are cells (x along the columns, y down the rows, z up) from the top-left corner of the
+pattern, and everything before this first colon is a comment:
+FROM 1 UNTIL END; OBSERVER MOVING FROM (6, 29, 9) TO (28, 31, 8);
+  VIEWPOINT MOVING FROM (17, 8, 0) TO (22, 12, 0); FOCAL LENGTH OF 26
+"""
+
+
 # ---------------------------------------------------------------- running the programs
 def _cli(argv: list[str]) -> None:
     """Run a camlab88 command in this process, its report kept off the terminal."""
@@ -299,6 +353,8 @@ TEXT_FILES: dict[str, Callable[[], str]] = {
     "kas/arc.script": lambda: KAS_PATH_SCRIPT,
     "ca/session.events": lambda: CA_EVENTS,
     "ca/actors_edit.events": lambda: _actors_events(),
+    "ca/chess.actors": lambda: CHESS_ACTORS,
+    "ca/gun.ccl": lambda: GUN_CAMERA,
 }
 STREAMS: dict[str, Callable[[], bytes]] = {
     "sigma/pgplot_goc.sig": pgplot_goc,
