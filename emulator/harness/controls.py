@@ -1,6 +1,8 @@
 """The emulator controls every window has, whatever the device or program (docs/harness.md,
 "Controls"): F1 help, F5 pause/resume, F6 one frame, F7/F8 half/double speed, F11 the
-inspector, F12 a screenshot; and the title bar's frame, virtual time and speed.
+inspector, F12 a screenshot, Esc quit (as closing the window: ``target.may_close()`` asks
+first; a target whose program reads Esc itself sets ``escape_is_a_key``); and the title
+bar's frame, virtual time and speed.
 
 :class:`ControlKeys` runs first among the plugins and takes its keys out of the events, so
 a program never sees them, a recording never holds them and a replay can be paused.  While
@@ -63,10 +65,14 @@ class ControlKeys(Plugin):
     def _take(self, harness: Harness, events: list[HostEvent]) -> list[HostEvent]:
         """Act on the control keys in ``events``; the others go on to the program."""
         rest = []
+        own_escape = bool(getattr(harness.target, "escape_is_a_key", False))
         for e in events:
-            if isinstance(e, KeyDown) and e.key in CONTROL_KEYS:
+            if isinstance(e, KeyDown) and e.key == "escape" and not own_escape:
+                rest.append(Quit())  # as closing the window: may_close() asks first
+            elif isinstance(e, KeyDown) and e.key in CONTROL_KEYS:
                 self._key(harness, e.key)
-            elif not (isinstance(e, KeyUp) and e.key in CONTROL_KEYS):
+            elif not (isinstance(e, KeyUp) and (e.key in CONTROL_KEYS or (
+                    e.key == "escape" and not own_escape))):
                 rest.append(e)
         return rest
 

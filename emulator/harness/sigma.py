@@ -21,6 +21,7 @@ class SigmaProgramTarget:
     it has played and the screen has settled (at most ``settle_limit`` s more)."""
 
     fps = 25
+    escape_is_a_key = True  # the KAS fronts: Esc cancels, or asks before quitting
 
     def __init__(self, session: Any, title: str, keys: str, key_names: frozenset[str],
                  script: list[Any], end_with_script: bool,

@@ -75,6 +75,7 @@ def _run(args: argparse.Namespace, opts, restore, player):
 
     end_with_script = opts.headless or opts.screenshot is not None
     target = RainbowTarget(rb, step, "camlab88 snooker", KEYS, player, end_with_script)
+    target.escape_is_a_key = True  # Esc cancels, or asks y/n/Esc before leaving
     return program, run(target, opts)
 
 
