@@ -49,6 +49,9 @@ class ControlKeys(Plugin):
         self._panel: Any = None
 
     def start(self, harness: Harness) -> None:
+        if getattr(harness.target, "escape_is_a_key", False):  # the help says what Esc is
+            self.keys = [*KEYS[:-1], ("Esc", "the program's own key"),
+                         ("close", "quit (asks first where there is unsaved work)")]
         if harness.window is not None:
             harness.window.decorate = lambda frame: self.decorate(harness, frame)
 

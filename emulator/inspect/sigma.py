@@ -59,7 +59,9 @@ class SigmaPanel:
         y = self._registers(img, y + 4)
         draw.text(img, 6, y + 4, "last orders", draw.ACCENT)
         _, ch = draw.cell()
-        for i, line in enumerate(self.orders):
+        room = max(0, (img.shape[0] - y - 16) // ch)
+        shown = list(self.orders)[-room:] if room else []  # the latest that fit
+        for i, line in enumerate(shown):
             draw.text(img, 6, y + 16 + i * ch, line[: self.width // 6 - 2])
         return img
 

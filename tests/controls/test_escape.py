@@ -76,3 +76,15 @@ def test_ca_escape_closes_a_question_first_then_leaves() -> None:
     assert d.program.dialogue is None and not d.program.finished
     d.run("key escape\nframes 1")
     assert d.program.finished
+
+
+def test_the_help_says_what_esc_does_for_each_kind_of_program() -> None:
+    from emulator.harness.help import key_lines
+
+    for own, want in ((False, ("Esc, close", "quit (asks first where there is unsaved work)")),
+                      (True, ("Esc", "the program's own key"))):
+        target = Counter(3)
+        target.escape_is_a_key = own
+        h = harness_with(target, FakeWindow(), FakeClock())
+        h.run()
+        assert want in dict(key_lines(h))["Emulator controls"]

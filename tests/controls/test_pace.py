@@ -51,3 +51,18 @@ def test_flat_out_reports_the_speed_it_achieved() -> None:
 def test_speed_must_be_positive() -> None:
     with pytest.raises(ValueError, match="positive"):
         Pacer(0.0, FakeClock().monotonic, FakeClock().sleep)
+
+
+def test_a_replay_takes_its_own_controls_and_period_is_speed_one() -> None:
+    from emulator.harness import RunOptions
+    from emulator.harness.control_options import Controls
+    from emulator.harness.replay import Replay
+
+    recorded = RunOptions(controls=Controls(speed=50.0))  # what the recorded command asked
+    Replay(rec=None, period=True).adjust(recorded)
+    assert recorded.controls.speed == 1.0
+    mine = Controls(speed=10.0)
+    Replay(rec=None, controls=mine).adjust(recorded)
+    assert recorded.controls is mine
+    Replay(rec=None).adjust(recorded)
+    assert recorded.controls.speed is None  # flat out, as a replay always was
