@@ -15,6 +15,7 @@ from tests.support.golden import assert_matches_golden
 DATA = Path(__file__).resolve().parents[1] / "data"
 GOLDEN = DATA / "controls" / "golden"
 SCENE = DATA / "rainbow" / "golden_scene.json"
+ROOT_EXAMPLES = DATA.parents[1] / "examples" / "sigma"
 
 
 def lut_animation() -> bytes:
@@ -92,3 +93,18 @@ def test_a_program_without_a_known_device_is_told_so() -> None:
     from emulator.inspect import panel_for
 
     assert panel_for(object()) is None
+
+
+def test_the_inspector_changes_nothing_the_device_shows(tmp_path) -> None:
+    """Its order list comes from a tracer in front of the terminal's feed (byte by byte):
+    every frame equals the frame of a run without it."""
+    stream = ROOT_EXAMPLES / "crystals_cameron.sig"
+    assert main(["sigma", "render", "--in", str(stream), "--frames", str(tmp_path / "plain"),
+                 "--fps", "25"]) == 0
+    assert main(["sigma", "render", "--in", str(stream), "--frames", str(tmp_path / "seen"),
+                 "--fps", "25", "--inspect-out", str(tmp_path / "panels")]) == 0
+    plain = sorted((tmp_path / "plain").iterdir())
+    seen = sorted((tmp_path / "seen").iterdir())
+    assert [p.name for p in plain] == [p.name for p in seen] and len(plain) > 5
+    assert all(np.array_equal(png(a), png(b)) for a, b in zip(plain, seen))
+    assert len(list((tmp_path / "panels").iterdir())) == len(seen)
