@@ -101,7 +101,7 @@ class PeriodTarget:
     tick takes one period (``next(periods)`` feeds the terminal and yields its index); the
     generator's return value is kept in ``result``."""
 
-    keys = "close the window to stop"
+    keys = "Esc or close the window to stop"
 
     def __init__(self, term: Any, periods: Any, fps: float, title: str) -> None:
         self.term, self.periods, self.title = term, periods, title

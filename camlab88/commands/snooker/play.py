@@ -8,7 +8,7 @@ from camlab88.runopts import add_run_options, fail, run_options
 
 COMMAND = "camlab88 snooker"
 KEYS = ("middle button: menus; right: restart simulation; left held: mouse x4; "
-        "close the window to quit")
+        "Esc: leave (y saves, n does not, Esc stays); close the window to quit")
 
 
 def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
