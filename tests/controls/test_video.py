@@ -53,3 +53,20 @@ def test_a_video_that_is_not_mp4_or_gif_is_refused_in_one_line(tmp_path) -> None
          "--video", str(tmp_path / "x.avi")], capture_output=True, text=True, timeout=120)
     assert run.returncode == 2
     assert "--video: makes .mp4 or .gif, not" in run.stderr
+
+
+def test_an_inspect_out_that_is_a_file_is_refused_in_one_line(tmp_path, capsys) -> None:
+    from camlab88.cli import main
+
+    (tmp_path / "s.sig").write_bytes(b"\r+-*/HI2GI200200GJ600200")
+    (tmp_path / "taken").write_text("a file")
+    try:
+        status = main(["sigma", "render", "--in", str(tmp_path / "s.sig"), "--inspect-out",
+                       str(tmp_path / "taken")])
+    except SystemExit as exc:
+        status, message = 2, str(exc.code)
+    else:
+        message = capsys.readouterr().err
+    assert status != 0
+    assert f"--inspect-out {tmp_path / 'taken'}: not a directory" in message
+    assert (tmp_path / "taken").read_text() == "a file"
