@@ -59,7 +59,7 @@ class ControlKeys(Plugin):
     def handle_events(self, harness: Harness, events: list[HostEvent]) -> list[HostEvent]:
         events = self._take(harness, events)
         while self.paused and not self.stepping and harness.window is not None:
-            if any(isinstance(e, Quit) for e in events):
+            if any(isinstance(e, Quit) for e in events) or _signalled(harness):
                 break
             self.controls.sleep(IDLE)
             events += self._take(harness, harness.window.poll())
@@ -153,6 +153,11 @@ class ControlKeys(Plugin):
             self._panel = panel_for(harness.target) or False
         panel = self._panel(frame) if self._panel else _nothing(frame.shape[0])
         return np.concatenate([frame, panel], axis=1)
+
+
+def _signalled(harness: Harness) -> bool:
+    """Ctrl-C or SIGTERM came (the run ends after the next tick, as unpaused)."""
+    return getattr(getattr(harness, "signals", None), "caught", None) is not None
 
 
 def _nothing(height: int) -> np.ndarray:

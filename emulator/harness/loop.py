@@ -134,6 +134,7 @@ class Harness:
         c = self.options.controls
         self.pacer = Pacer(self._speed(), c.monotonic, c.sleep)
         with DeferredSignals() as signals:  # Ctrl-C ends the run between ticks
+            self.signals = signals  # (a paused run stops waiting when one comes)
             try:
                 for p in self.plugins:
                     p.start(self)

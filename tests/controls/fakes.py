@@ -35,6 +35,8 @@ class FakeWindow:
         self.closed = False
 
     def poll(self) -> list:
+        if self.polls > 10_000:  # a pause that never ends fails, never hangs the test
+            raise AssertionError("still polling after 10000 polls: the run never went on")
         events = self.script.get(self.polls, [])
         self.polls += 1
         return list(events)

@@ -131,3 +131,22 @@ def test_every_window_shows_frame_time_and_keys_in_its_title() -> None:
     harness_with(Counter(5), window, FakeClock()).run()
     assert window.captions[-1].startswith("counter | frame 3  t 0.10 s  a: a key")
     assert window.captions[-1].endswith("| F1 keys")
+
+
+def test_a_signal_while_paused_ends_the_run_after_one_tick(monkeypatch) -> None:
+    from emulator.harness.signals import DeferredSignals
+
+    delivered = []
+    monkeypatch.setattr(DeferredSignals, "deliver", lambda self: delivered.append(self.caught))
+    window = FakeWindow({1: key("f5")})
+    h = harness_with(Counter(100), window, FakeClock())
+    poll = window.poll
+
+    def poll_then_signal() -> list:
+        if window.polls == 4:  # paused: Ctrl-C arrives (DeferredSignals notes it)
+            h.signals.caught = 2
+        return poll()
+
+    window.poll = poll_then_signal
+    h.run()
+    assert h.ticks == 2 and window.polls == 5 and delivered == [2]
