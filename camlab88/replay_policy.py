@@ -33,7 +33,10 @@ MAX_SCALE = 8       # --scale: a window 8 times 768x576 is already 85 MB of pixe
 MAX_WORDS, MAX_WORD = 256, 4096
 
 _RUN = {"--headless": KEEP, "--scale": KEEP, "--stop-after": KEEP, "--screenshot": SCRATCH,
-        "--frames": SCRATCH, "--record": DROP}
+        "--frames": SCRATCH, "--record": DROP,
+        # the emulator controls: pacing and the inspector change nothing a replay checks
+        # (the replay's own flags decide them); the files they write are outputs
+        "--speed": KEEP, "--inspect": KEEP, "--video": SCRATCH, "--inspect-out": SCRATCH}
 _KAS_FRONT = {**_RUN, "--script": KEEP, "--background": KEEP, "--baud": KEEP, "--tablet": TAPE}
 
 PROGRAMS: dict[tuple[str, str], dict[str, str]] = {

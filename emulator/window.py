@@ -76,6 +76,9 @@ class Window:
         self.caption = title
         self._last_tick: float | None = None
         self.closed = False
+        # the harness's controls draw on what is shown (help overlay, inspector panel beside
+        # the screen); pointer input stays in device pixels of ``size``
+        self.decorate: Any = None
 
     def show(self, frame: np.ndarray) -> None:
         """Draw an (h, w, 3) uint8 frame (row 0 = top), nearest-neighbour scaled."""
@@ -83,12 +86,22 @@ class Window:
         w, h = self.size
         if frame.shape != (h, w, 3):
             raise ValueError(f"frame shape {frame.shape} does not match window size {(h, w, 3)}")
+        if self.decorate is not None:
+            frame = self.decorate(frame)
+            h, w = frame.shape[:2]
+            self._fit((w, h))
         frame = np.ascontiguousarray(frame, dtype=np.uint8)
         image = pg.image.frombuffer(frame.tobytes(), (w, h), "RGB")
         if self.scale != 1:
             image = pg.transform.scale(image, self.surface.get_size())  # nearest neighbour
         self.surface.blit(image, (0, 0))
         pg.display.flip()
+
+    def _fit(self, size: tuple[int, int]) -> None:
+        """Resize the window to show ``size`` pixels (w, h) scaled, if it does not already."""
+        want = (size[0] * self.scale, size[1] * self.scale)
+        if self.surface.get_size() != want:
+            self.surface = self._pg.display.set_mode(want)
 
     def set_caption(self, text: str) -> None:
         """The window's title bar (set only when it changes)."""

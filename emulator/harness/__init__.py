@@ -20,6 +20,9 @@ A command builds a *target* — an object wiring one program to one emulated dev
 * standard plugins: ``--frames DIR`` (every frame shown as ``DIR/frame_NNNNN.png``),
   ``--screenshot PNG`` (the screen at the end), ``--record FILE`` (a session recording,
   protocols.session), and under ``camlab88 replay`` the recorded input and hash checking.
+* the emulator controls, first of the plugins: F1 help, F5 pause, F6 one frame, F7/F8
+  speed, F11 inspector, F12 screenshot, Esc quit; ``--speed X`` (emulator.harness.pace),
+  ``--video FILE``, ``--inspect``, ``--inspect-out DIR`` (``RunOptions.controls``).
 
 All PNGs go through the one writer, :func:`base.png.write_png`.  See docs/harness.md.
 """

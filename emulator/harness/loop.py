@@ -25,6 +25,7 @@ from fractions import Fraction
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol
 
+from emulator.harness.control_options import Controls
 from emulator.host_input import HostEvent, Quit
 
 if TYPE_CHECKING:
@@ -55,7 +56,14 @@ class Target(Protocol):
 
 
 class Plugin:
-    """A hook around each tick; subclasses override what they need."""
+    """A hook around each tick; subclasses override what they need.
+
+    A plugin that answers keys in the window lists them in a ``keys`` attribute, a list of
+    ``(key, what)`` pairs such as ``[("F5", "pause / resume")]``, with an optional
+    ``keys_title`` heading; the F1 help overlay (emulator.harness.help) shows every
+    plugin's keys with the program's own.  A plugin that acts on a key should take it out
+    of the events it returns, so the program (and a recording) never sees it.
+    """
 
     def start(self, harness: Harness) -> None:
         """Called once before the first tick."""
@@ -89,6 +97,7 @@ class RunOptions:
     command: str = "camlab88"           # for messages: "camlab88 kas edit"
     argv: list[str] = field(default_factory=list)   # for recordings
     inputs: list[Path] = field(default_factory=list)  # extra input files to record
+    controls: Controls = field(default_factory=Controls)  # --speed, --video, --inspect...
 
 
 class Harness:
@@ -96,11 +105,13 @@ class Harness:
 
     def __init__(self, target: Target, options: RunOptions,
                  plugins: list[Plugin] | None = None) -> None:
+        from emulator.harness.controls import control_plugins
         from emulator.harness.plugins import standard_plugins
 
         self.target = target
         self.options = options
-        self.plugins: list[Plugin] = [*standard_plugins(options), *(plugins or [])]
+        standard = standard_plugins(options)  # a replay adjusts the options here
+        self.plugins: list[Plugin] = [*control_plugins(options), *standard, *(plugins or [])]
         self.window: Any = None
         self.ticks = 0
         self.frames_shown = 0
@@ -116,21 +127,30 @@ class Harness:
 
     def run(self) -> Harness:
         """Tick until the target finishes, the window closes or a stop; returns self."""
+        from emulator.harness.pace import Pacer
         from emulator.harness.signals import DeferredSignals
-        from protocols.link import Throttle
 
         self._open_window()
-        throttle = Throttle(1.0 if self._paced() else None)
+        c = self.options.controls
+        self.pacer = Pacer(self._speed(), c.monotonic, c.sleep)
         with DeferredSignals() as signals:  # Ctrl-C ends the run between ticks
+            self.signals = signals  # (a paused run stops waiting when one comes)
             try:
                 for p in self.plugins:
                     p.start(self)
                 while self._tick_once() and signals.caught is None:
-                    throttle.pace(self.target.time())
+                    self.pacer.pace(self.target.time())
             finally:
                 self._finish()
         signals.deliver()  # after the plugins finished (a recording is written)
         return self
+
+    def _speed(self) -> float | None:
+        """``--speed`` if given, else period speed when paced (below), else flat out."""
+        speed = self.options.controls.speed
+        if speed is not None:
+            return speed
+        return 1.0 if self._paced() else None
 
     def _paced(self) -> bool:
         o = self.options

@@ -25,6 +25,7 @@ class RainbowTarget:
 
     fps = FPS
     size = (768, 576)
+    escape_is_a_key = False  # True where the program reads Esc itself (the harness: quit)
 
     def __init__(self, session: Any, step: Callable[[], bool], title: str, keys: str,
                  script: Player | None = None, end_with_script: bool = True,

@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from emulator.harness import codec
+from emulator.harness.control_options import Controls
 from emulator.harness.loop import Plugin, RunOptions
 from emulator.harness.session_record import screen_hash
 from emulator.host_input import HostEvent, Quit
@@ -67,12 +68,15 @@ class Replay:
     compared: int = 0
     runs: int = 0
     ended: ScreenHash | None = field(default=None)
+    controls: Controls | None = None  # the replay's --speed, --video, --inspect...
 
     def adjust(self, options: RunOptions) -> None:
         options.headless = self.headless
         options.paced = options.realtime = self.period
         options.frames, options.screenshot, options.record = self.frames, self.screenshot, None
         options.stop_after = None  # the recording's events and end decide
+        # the replay's controls, not the recorded run's (--period is --speed 1)
+        options.controls = self.controls or Controls(speed=1.0 if self.period else None)
         self.runs += 1
 
     def plugins(self) -> list[Plugin]:

@@ -21,6 +21,7 @@ class SigmaProgramTarget:
     it has played and the screen has settled (at most ``settle_limit`` s more)."""
 
     fps = 25
+    escape_is_a_key = True  # the KAS fronts: Esc cancels, or asks before quitting
 
     def __init__(self, session: Any, title: str, keys: str, key_names: frozenset[str],
                  script: list[Any], end_with_script: bool,
@@ -100,7 +101,7 @@ class PeriodTarget:
     tick takes one period (``next(periods)`` feeds the terminal and yields its index); the
     generator's return value is kept in ``result``."""
 
-    keys = "close the window to stop"
+    keys = "Esc or close the window to stop"
 
     def __init__(self, term: Any, periods: Any, fps: float, title: str) -> None:
         self.term, self.periods, self.title = term, periods, title

@@ -62,6 +62,7 @@ class SigmaLineTarget:
     (None: for ever)."""
 
     fps = 25
+    escape_is_a_key = True  # a terminal key: host programs read ESC (close the window quits)
 
     def __init__(self, term: Any, line: Any, bridge: Any, title: str,
                  until: Fraction | None = None, report: Any = None,

@@ -46,7 +46,7 @@ def compose(t: Terminal) -> np.ndarray:
     idx = t.indices()[::-1]
     if not r.graphics_on:
         idx = np.zeros_like(idx)
-    rgb = t.lut[idx]
+    rgb = np.take(t.lut, idx, axis=0)  # as t.lut[idx], four times faster (--speed 10)
     if r.alpha_on and t.alpha.chars.any():
         rgb[t.alpha.mask() & (idx == 0)] = ALPHA_RGB
     if r.cursor_on:

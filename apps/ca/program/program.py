@@ -324,7 +324,10 @@ class CAProgram:
         if not e.pressed:
             return
         if e.key == "escape":
-            self.cancel()
+            if self.dialogue is None and self.choice is None:
+                self.finished = True  # nothing to close: Esc leaves, as the window's close
+            else:
+                self.cancel()
         elif self.asking is not None and self.asking.kind == "text":
             if e.key in ("return", "enter", "kp_enter"):
                 self._answer(self.text.strip())

@@ -276,6 +276,9 @@ class Program:
             elif name in ("n", "escape"):
                 self.reject()
             return
+        if name == "escape" and self.mode in ("idle", "running", "replay"):
+            self.ask_exit(menus.HIGHLIGHT[menus.EXIT])  # as the Exit menu item
+            return
         if name == constants.KEY and self.mode in ("idle", "running", "replay"):
             self.open_menu(table_constants=True)
             return
@@ -315,6 +318,13 @@ class Program:
         m.track(int(self.menu_cursor[0]), int(self.menu_cursor[1]))
         self.mode = "menu"
 
+    def ask_exit(self, colour) -> None:
+        """The exit question: y saves and leaves, n leaves, Escape stays."""
+        self.mode = "exit"
+        where = str(self.save_to) if self.save_to else "a file you name"
+        self.say(f"Exit: y = save (all or some frames) to {where} and leave,\n"
+                 "n = leave without saving, escape = stay.", colour)
+
     def choose(self) -> None:
         assert self.menu is not None
         item = self.menu.close()
@@ -337,10 +347,7 @@ class Program:
                      "repeat); move the mouse up = frames, down = events; middle = select.",
                      colour)
         elif item == menus.EXIT:
-            self.mode = "exit"
-            where = str(self.save_to) if self.save_to else "a file you name"
-            self.say(f"Exit: y = save (all or some frames) to {where} and leave,\n"
-                     "n = leave without saving, escape = stay.", colour)
+            self.ask_exit(colour)
         elif item == menus.REPLAY:
             self.ask("replay", "Replay at 25 frames/s: first and last frame (Return = all):")
         elif item == menus.CUE_VELOCITY:

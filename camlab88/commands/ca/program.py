@@ -142,7 +142,9 @@ def _run(options, player, opts) -> dict:
         return not prog.finished
 
     end_with_script = opts.headless or opts.screenshot is not None
-    run(RainbowTarget(session, step, "camlab88 ca", KEYS, player, end_with_script), opts)
+    target = RainbowTarget(session, step, "camlab88 ca", KEYS, player, end_with_script)
+    target.escape_is_a_key = True  # Esc closes a question, or finishes when none is open
+    run(target, opts)
     return prog.session.statistics()
 
 

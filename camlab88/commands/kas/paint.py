@@ -62,7 +62,7 @@ class ReplayTarget:
     harness's time is the line's, so a window plays at the speed of the 9600-baud line."""
 
     fps = 1000  # every tick's picture is shown (ticks are >= 0.1 s of line time apart)
-    keys = "close the window to stop"
+    keys = "Esc or close the window to stop"
     size = (768, 512)
 
     def __init__(self, program: Any, term: Any, baud: int, keep: bool) -> None:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 
 from camlab88.runopts import fail
 
@@ -20,6 +21,9 @@ def register(actions: argparse._SubParsersAction) -> None:
                    help="render with the per-pixel reference compositor instead")
     r.add_argument("--strict", action="store_true",
                    help="the relic's video memory (64K 16-bit words)")
+    r.add_argument("--inspect-out", type=Path, metavar="DIR",
+                   help="also write the inspector's panel (bands over the screen, video "
+                        "memory, pad graph) as DIR/frame_00000.png")
     r.set_defaults(handler=render)
 
 
@@ -37,7 +41,24 @@ def render(args: argparse.Namespace) -> int:
         text = device.bands().to_text() if args.bands else None
     except RainbowError as exc:
         return fail(COMMAND, f"{args.scene}: {exc}")
-    return _write(args, frame, text)
+    status = _write(args, frame, text)
+    if status == 0 and args.inspect_out is not None:
+        return _inspect(args, device, frame)
+    return status
+
+
+def _inspect(args: argparse.Namespace, device, frame) -> int:
+    from base.png import frame_path, write_png
+    from emulator.inspect import PANEL_WIDTH
+    from emulator.inspect.rainbow import RainbowPanel
+
+    path = frame_path(args.inspect_out, 0)
+    try:
+        write_png(RainbowPanel(device, PANEL_WIDTH)(frame), path)
+    except OSError as exc:
+        return fail(COMMAND, exc)
+    print(f"wrote {path}")
+    return 0
 
 
 def _write(args: argparse.Namespace, frame, text: str | None) -> int:

@@ -9,7 +9,7 @@ from camlab88.runopts import add_run_options, positive, run_options
 from camlab88.traceopts import add_trace_options, open_trace
 
 COMMAND = "camlab88 rainbow run"
-KEYS = "middle button: the demo's menu; close the window to quit"
+KEYS = "middle button: the demo's menu; Esc or close the window to quit"
 HEADLESS_FRAMES = 250
 
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from camlab88.control_flags import add_control_options
 from camlab88.runopts import fail, frames_dir
 
 COMMAND = "camlab88 replay"
@@ -27,10 +28,12 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("recording", type=Path, metavar="FILE")
     p.add_argument("--headless", action="store_true", help="no window")
     p.add_argument("--check", action="store_true", help="compare every recorded screen hash")
-    p.add_argument("--period", action="store_true", help="play at the recorded speed")
+    p.add_argument("--period", action="store_true", help="play at the recorded speed "
+                   "(the same as --speed 1)")
     p.add_argument("--frames", type=frames_dir, metavar="DIR",
                    help="write every frame shown as DIR/frame_NNNNN.png")
     p.add_argument("--screenshot", type=Path, metavar="PNG", help="save the last screen")
+    add_control_options(p)
     p.set_defaults(handler=replay)
 
 
@@ -47,12 +50,26 @@ def replay(args: argparse.Namespace) -> int:
         return fail(COMMAND, exc)
     headless = choose_headless(COMMAND, args.headless, "checking the screen hashes")
     ctx = Replay(rec, headless=headless, period=args.period, check=args.check,
-                 frames=_abs(args.frames), screenshot=_abs(args.screenshot))
+                 frames=_abs(args.frames), screenshot=_abs(args.screenshot),
+                 controls=_controls(args, headless))
     try:
         status, said = rerun(ctx)
     except ReplayRefused as exc:  # the header (line 1) holds the command line
         return fail(COMMAND, f"{args.recording}:1: not replayed: {exc}")
     return _verdict(args, ctx, status, said)
+
+
+def _controls(args: argparse.Namespace, headless: bool):
+    """The replay's own controls; paths made absolute (the replay runs in a scratch
+    directory), --period is --speed 1, F12 screenshots land where the replay was started."""
+    from camlab88.control_flags import controls_from_args
+
+    c = controls_from_args(args, COMMAND, headless)
+    if args.period and c.speed is None:
+        c.speed = 1.0
+    c.video, c.inspect_out = _abs(c.video), _abs(c.inspect_out)
+    c.shots = Path.cwd()
+    return c
 
 
 def _abs(path: Path | None) -> Path | None:

@@ -7,6 +7,7 @@ import sys
 from fractions import Fraction
 from pathlib import Path
 
+from camlab88.control_flags import add_control_options
 from camlab88.runopts import frames_dir
 from camlab88.traceopts import add_trace_options, open_trace
 
@@ -29,6 +30,7 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
     r.add_argument("--baud", type=int, default=9600,
                    help="line speed that times --frames (a recording keeps its own times)")
     add_trace_options(r)
+    add_control_options(r)
     r.set_defaults(handler=render)
 
 
@@ -40,8 +42,9 @@ def render(args: argparse.Namespace) -> int:
     from emulator.sigma import Terminal
     from protocols.sigma.stream_file import StreamFileError, host_bytes, read_stream_file
 
-    if args.out is None and args.frames is None:
-        raise _die("give --out PNG and/or --frames DIR")
+    if args.out is None and args.frames is None and args.video is None \
+            and args.inspect_out is None:
+        raise _die("give --out PNG and/or --frames DIR (or --video FILE, --inspect-out DIR)")
     if args.fps < 1:
         raise _die("--fps must be at least 1")
     settings = _settings(args.baud)  # refuse a bad --baud even when no frames use it
@@ -54,7 +57,9 @@ def render(args: argparse.Namespace) -> int:
         trace.stream = host_bytes(got)
         feed = term.feed if trace.sink is None else trace.stream_feeder(term, got,
                                                                         settings.char_time)
-        if args.frames is not None:
+        if args.video is not None or args.inspect_out is not None:
+            _play(args, feed, term, got, settings)
+        elif args.frames is not None:
             n = _write_frames(feed, term, got, settings, Fraction(1, args.fps), args.frames)
             print(f"wrote {n} frames to {args.frames}")
         else:
@@ -101,6 +106,36 @@ def _write_frames(feed, term, got, settings, period: Fraction,
         _png(term.frame(), frame_path(directory, k))
         count += 1
     return count
+
+
+def _play(args: argparse.Namespace, feed, term, got, settings) -> None:
+    """The frame periods through the harness, headless and flat out unless --speed: the
+    emulator controls' --video and --inspect-out, and --frames too."""
+    from camlab88.control_flags import controls_from_args
+    from emulator.harness import RunOptions, run
+    from emulator.harness.sigma import PeriodTarget
+    from protocols.link.sniff import frame_count
+
+    period = Fraction(1, args.fps)
+    try:  # a damaged recording time must not mean hours of frames
+        frame_count(_duration(got, settings), args.fps, name=str(args.stream))
+    except ValueError as exc:
+        raise _die(str(exc)) from None
+
+    direct = feed == term.feed  # not --trace: through term.feed as it will be then (the
+                                # inspector listens there)
+
+    def periods():
+        for k, chunk in _periods(got, settings, period):
+            if direct:
+                term.feed(chunk)
+            else:
+                feed(chunk)
+            yield k
+
+    opts = RunOptions(headless=True, command=COMMAND, frames=args.frames,
+                      controls=controls_from_args(args, COMMAND, headless=True))
+    run(PeriodTarget(term, periods(), args.fps, f"{COMMAND} {args.stream}"), opts)
 
 
 def _duration(got, settings) -> Fraction:

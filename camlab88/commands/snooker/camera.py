@@ -75,4 +75,5 @@ def _run(shot, script, player, opts, plugins=()):
     tool = CameraTool(rb.client, shot, script)
     end_with_script = opts.headless or opts.screenshot is not None
     target = Target(rb, tool.step, COMMAND, KEYS, player, end_with_script)
+    target.escape_is_a_key = True  # the tool's own Esc: done
     return run(target, opts, list(plugins)), tool

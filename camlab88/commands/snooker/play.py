@@ -9,7 +9,7 @@ from camlab88.scriptopts import HEADLESS_NEEDS_EVENTS, add_events_option
 
 COMMAND = "camlab88 snooker"
 KEYS = ("middle button: menus; right: restart simulation; left held: mouse x4; "
-        "close the window to quit")
+        "Esc: leave (y saves, n does not, Esc stays); close the window to quit")
 
 
 def register(actions: argparse._SubParsersAction) -> None:
@@ -74,6 +74,7 @@ def _run(args: argparse.Namespace, opts, restore, player):
 
     end_with_script = opts.headless or opts.screenshot is not None
     target = RainbowTarget(rb, step, "camlab88 snooker", KEYS, player, end_with_script)
+    target.escape_is_a_key = True  # Esc cancels, or asks y/n/Esc before leaving
     return program, run(target, opts)
 
 

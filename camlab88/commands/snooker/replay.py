@@ -58,5 +58,5 @@ def _run(pos, on, opts):
     def step() -> bool:
         return next(steps, None) is not None
 
-    target = RainbowTarget(rb, step, "camlab88 snooker replay", "close the window to quit")
+    target = RainbowTarget(rb, step, "camlab88 snooker replay", "Esc or close the window to quit")
     return run(target, opts)

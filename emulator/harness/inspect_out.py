@@ -1,0 +1,45 @@
+"""``--inspect-out DIR``: the inspector's panel for every frame shown, as
+DIR/frame_NNNNN.png (headless or not)."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from base.png import frame_path, write_png
+from emulator.harness.loop import Plugin
+
+if TYPE_CHECKING:
+    from emulator.harness.loop import Harness
+
+
+class InspectOut(Plugin):
+    def __init__(self, directory: Path) -> None:
+        self.directory = Path(directory)
+        self.count = 0
+        self._panel: Any = None
+
+    def start(self, harness: Harness) -> None:
+        from emulator.inspect import panel_for
+
+        self._panel = panel_for(harness.target)
+        if self._panel is None:
+            raise SystemExit(f"{harness.options.command}: --inspect-out: this program's "
+                             "device has no inspector")
+
+    def on_frame(self, harness: Harness, frame: np.ndarray) -> None:
+        path = frame_path(self.directory, self.count)
+        try:
+            write_png(self._panel(frame), path)
+        except OSError as exc:
+            raise SystemExit(f"{harness.options.command}: cannot write {path}: "
+                             f"{exc.strerror or exc}") from None
+        self.count += 1
+
+    def finish(self, harness: Harness) -> None:
+        if self.count:
+            print(f"{harness.options.command}: wrote {self.count} inspector panels to "
+                  f"{self.directory}/frame_NNNNN.png", file=sys.stderr)

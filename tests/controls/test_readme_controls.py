@@ -1,0 +1,34 @@
+"""README's "Emulator controls" section: its commands run as printed and write what it says."""
+
+from __future__ import annotations
+
+import shlex
+from pathlib import Path
+
+from camlab88.cli import main
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _commands() -> list[list[str]]:
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    section = text.split("\n## Emulator controls", 1)[1].split("\n## ", 1)[0]
+    return [shlex.split(line.strip()) for line in section.splitlines()
+            if line.startswith("    camlab88 ")]
+
+
+def test_the_controls_commands_run_as_printed(tmp_path: Path, monkeypatch, capsys) -> None:
+    import imageio_ffmpeg
+
+    commands = _commands()
+    assert [c[1] for c in commands] == ["sigma", "rainbow", "ca", "replay"]
+    (tmp_path / "examples").symlink_to(ROOT / "examples")
+    monkeypatch.chdir(tmp_path)
+    for words in commands:
+        assert main(words[1:]) == 0, words
+    panels = sorted((tmp_path / "cameron_panels").iterdir())
+    assert imageio_ffmpeg.count_frames_and_secs("cameron.mp4")[0] == len(panels) > 1
+    assert (tmp_path / "scene_panel" / "frame_00000.png").is_file()
+    assert imageio_ffmpeg.count_frames_and_secs("glider.gif")[0] > 1
+    assert (tmp_path / "glider_panels" / "frame_00000.png").is_file()
+    assert "images" in (ROOT / "docs" / "images" / "inspector_sigma.png").parent.name
