@@ -5,12 +5,16 @@ level k remembers its centre after 2**j generations (j <= k - 2 - s, where 2**s 
 the rules' message reach), so repeated regions of space and time are computed once.  See
 docs/ca.md ("Jumping ahead: HashLife") and docs/perf/ca.md.
 
-Modules: ``store`` (the node table and its garbage collection), ``leaf`` (one generation of
-the rules on a small grid), ``evolve`` (the memoised recursion), ``convert`` (cells to and
-from a tree), ``plane`` (the 65536-square plane's wrapping and bounded edges) and
-``algorithm`` (the strategy the engine calls).  Two-state rules on a plane of 1s take the
-``bits`` subpackage instead: 16 x 16-cell leaves of bits advanced by bit operations, the
-same answers with far fewer, cheaper nodes.
+One tree (``tree``: the universe an engine adopts, the jumps and their memory handling,
+``plane``: the 65536-square plane's wrapping and bounded edges, ``algorithm``: the strategy
+the engine calls) over a leaf strategy chosen per run:
+
+* ``generic`` — leaves of life-form values: ``store`` (the node table and its garbage
+  collection), ``leaf`` (one generation of the rules on a small grid), ``evolve`` (the
+  memoised recursion), ``convert`` and ``census`` (cells and statistics);
+* ``bits.run`` — two-state rules on a plane of 1s: 16 x 16-cell leaves of bits advanced by
+  bit operations, the same answers with far fewer, cheaper nodes (``bits`` holds its
+  table, base case, recursion, conversions and census).
 """
 
 from base.kernel_notice import announce_compiles
@@ -20,4 +24,4 @@ _WARM = "apps.ca.hashlife.kernel_warmup:compile_kernels"  # both groups compile 
 announce_compiles("HashLife", 12.0, *(f"{__name__}.{m}" for m in (
     "store", "leaf", "evolve", "convert", "census")), completion=_WARM)
 announce_compiles("binary HashLife", 12.0, *(f"{__name__}.bits.{m}" for m in (
-    "rule", "store", "leaves", "evolve", "convert", "census", "frame", "run")), completion=_WARM)
+    "rule", "store", "leaves", "evolve", "convert", "census", "run")), completion=_WARM)

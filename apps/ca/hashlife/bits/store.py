@@ -286,6 +286,10 @@ class BitStore:
             raise MemoryError("node table full")
         return n
 
+    def mark_wall(self) -> None:
+        """A bounded plane is framed: from now on the kernels look for walls in leaves."""
+        self.meta[HAS_WALL] = 1
+
     def add_leaf(self, words: np.ndarray) -> int:
         n = int(leaf(words.reshape(1, 8), 0, 0, self.leaves, self.lslots, self.meta))
         if n < 0:
