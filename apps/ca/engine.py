@@ -1,7 +1,9 @@
 """The cellular automaton engine: a sparse 65536 x 65536 plane stepped by message passing.
 
-Live cells are kept as three int64 arrays (row, column, life-form) sorted row by row, the
-modern form of the thesis's figure 7.10 (rows with vectors of (position, type)).  A step
+The state is one universe (apps/ca/universe.py) in the form of the algorithm that last
+stepped it: for the direct engine three int64 arrays (row, column, life-form) sorted row by
+row, the modern form of the thesis's figure 7.10 (rows with vectors of (position, type)),
+or a dense grid while the population is dense; after HashLife jumps, its tree.  A step
 sends messages only from living cells (inside the advance area, if one is set), so work is
 proportional to the live cells and their message reach, never to the plane.  Deterministic:
 the only randomness (section 8.1 probabilistic outcomes) is a hash of seed, position and
