@@ -7,6 +7,10 @@ registry: one interface, one module per algorithm).
   whole plane, any number of generations at once; two-state rules (found by running them,
   hashlife/bits/rule.py) on a plane of 1s take its binary path of bit leaves.
 
+Each algorithm owns the form of the state it steps (apps.ca.universe: a cell list or dense
+grid for ``direct``, a tree for ``hashlife``); the engine holds whichever the last step left
+and converts it when another algorithm, or an edit, needs a cell list.
+
 ``auto`` picks HashLife when it applies and the run is long enough to pay for building the
 tree (:func:`choose_engine`).
 """

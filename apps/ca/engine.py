@@ -1,7 +1,9 @@
 """The cellular automaton engine: a sparse 65536 x 65536 plane stepped by message passing.
 
-Live cells are kept as three int64 arrays (row, column, life-form) sorted row by row, the
-modern form of the thesis's figure 7.10 (rows with vectors of (position, type)).  A step
+The state is one universe (apps/ca/universe.py) in the form of the algorithm that last
+stepped it: for the direct engine three int64 arrays (row, column, life-form) sorted row by
+row, the modern form of the thesis's figure 7.10 (rows with vectors of (position, type)),
+or a dense grid while the population is dense; after HashLife jumps, its tree.  A step
 sends messages only from living cells (inside the advance area, if one is set), so work is
 proportional to the live cells and their message reach, never to the plane.  Deterministic:
 the only randomness (section 8.1 probabilistic outcomes) is a hash of seed, position and
@@ -12,16 +14,13 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 import numpy as np
 
-from apps.ca import algorithms, grid_stats, kernels
+from apps.ca import algorithms, kernels
 from apps.ca.rules import RuleSet
 from apps.ca.tables import compile_rules
-
-if TYPE_CHECKING:  # HashLife is imported when a run first needs it (start-up: docs/perf/ca.md)
-    from apps.ca.hashlife.algorithm import Tree
+from apps.ca.universe import CellList, DenseGrid, Universe
 
 DEFAULT_MEMORY = 512 << 20  # bytes of HashLife node table, as Golly's default "maximum memory"
 
@@ -133,81 +132,67 @@ class Engine:
                              f"{algorithm!r}")
         self.algorithm = algorithm
         self.hashlife_memory = DEFAULT_MEMORY  # bytes of HashLife node table (Golly's limit)
-        # A HashLife tree equal to the cells, kept between jumps; while ``_tree_only`` the
-        # cell arrays are out of date and are rebuilt from the tree on demand.
-        self.tree: Tree | None = None
-        self._tree_only = False
         self.rules = rules
         self.edges = edges
         self.seed = int(seed)
         self.generation = 0
         self.advance_area: Rect | None = None
-        self._ys = np.zeros(0, np.int64)
-        self._xs = np.zeros(0, np.int64)
-        self._ts = np.zeros(0, np.int64)
-        # While the population is dense, the state may instead live in a dense window
-        # (row0, col0, uint8 type grid); the sparse arrays are rebuilt on demand.
-        self._dense: tuple[int, int, np.ndarray] | None = None
-        self._dense_pop = 0
+        # The state, in the form of the algorithm that last stepped it (apps.ca.universe):
+        # a cell list, a dense grid or a HashLife tree; edits turn it into a cell list.
+        self.universe: Universe = CellList()
         self._buffers: tuple[np.ndarray, np.ndarray] | None = None
         self._hash: tuple[np.ndarray, np.ndarray] | None = None
         self._sep_scratch: tuple[np.ndarray, ...] | None = None
         self.last_kernel = ""
 
-    # -- the two storage forms ------------------------------------------------------
-    def _sync(self) -> None:
-        if self._tree_only:
-            self._ys, self._xs, self._ts = self.tree.cells()
-            self._tree_only = False
-            return
-        if self._dense is None:
-            return
-        y0, x0, grid = self._dense
-        r, c = np.nonzero(grid)  # row-major order: already sorted
-        self._ts = grid[r, c].astype(np.int64)
-        self._ys = r.astype(np.int64) + y0
-        self._xs = c.astype(np.int64) + x0
-        self._dense = None
+    # -- the universe ----------------------------------------------------------------
+    def _list(self) -> CellList:
+        """The universe as a cell list (converted, for editing or the direct engine)."""
+        u = self.universe
+        if not isinstance(u, CellList):
+            ys, xs, ts = u.cells()
+            u = self.universe = CellList(ys, xs, ts)
+        return u
+
+    def adopt(self, universe: Universe) -> None:
+        """Take ``universe`` (an algorithm's form of the state) as the plane."""
+        self.universe = universe
+
+    @property
+    def tree(self) -> Universe | None:
+        """The HashLife tree that is the state, if it is one (read only)."""
+        u = self.universe
+        return None if isinstance(u, (CellList, DenseGrid)) else u
 
     @property
     def ys(self) -> np.ndarray:
-        self._sync()
-        return self._ys
+        return self.universe.cells()[0]
 
     @ys.setter
     def ys(self, value: np.ndarray) -> None:
-        self._sync()
-        self.tree = None
-        self._ys = value
+        self._list().ys = value
 
     @property
     def xs(self) -> np.ndarray:
-        self._sync()
-        return self._xs
+        return self.universe.cells()[1]
 
     @xs.setter
     def xs(self, value: np.ndarray) -> None:
-        self._sync()
-        self.tree = None
-        self._xs = value
+        self._list().xs = value
 
     @property
     def ts(self) -> np.ndarray:
-        self._sync()
-        return self._ts
+        return self.universe.cells()[2]
 
     @ts.setter
     def ts(self, value: np.ndarray) -> None:
-        self._sync()
-        self.tree = None
-        self._ts = value
+        self._list().ts = value
 
     # -- rules and options ------------------------------------------------------
     def set_rules(self, rules: RuleSet) -> None:
         """Change rules (mid-run too); life-forms without rules die next generation."""
         compile_rules(rules)
-        self._sync()
-        self.tree = None  # its node table belongs to the old rules
+        self._list()  # a tree's node table belongs to the old rules
         self.rules = rules
 
     def set_advance_area(self, rect: Rect | None) -> None:
@@ -219,17 +204,13 @@ class Engine:
     # -- cells ----------------------------------------------------------------
     @property
     def population(self) -> int:
-        if self._tree_only:  # counted on the tree: a jump may leave too many cells to list
-            return sum(self.by_type().values())
-        if self._dense is not None:
-            return self._dense_pop
-        return int(self._ts.shape[0])
+        return self.universe.population()
 
     @property
     def dense_window(self) -> tuple[int, int, np.ndarray] | None:
         """(top row, left column, uint8 grid of life-forms) while the state is a dense
         grid (read only), else None."""
-        return None if self._tree_only else self._dense
+        return self.universe.window()
 
     def cells(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(x, y, type) arrays of every live cell, row by row."""
@@ -285,8 +266,7 @@ class Engine:
             if y0 >= 0 and x0 >= 0 and top + h + pad_y <= SIDE and left + w + pad_x <= SIDE:
                 window = np.zeros((h + 2 * pad_y, w + 2 * pad_x), np.uint8)
                 window[pad_y:pad_y + h, pad_x:pad_x + w] = grid
-                self._dense = (y0, x0, window)
-                self._dense_pop = int(np.count_nonzero(grid))
+                self.universe = DenseGrid(y0, x0, window, int(np.count_nonzero(grid)))
                 return
         ys, xs = np.nonzero(grid)
         self.ts = grid[ys, xs].astype(np.int64)
@@ -327,8 +307,7 @@ class Engine:
     def clear(self, rect: Rect | None = None) -> None:
         """Remove every life-form (in ``rect``, or everywhere)."""
         if rect is None:
-            self._dense, self._tree_only = None, False  # nothing to convert: all goes
-            self.ys, self.xs, self.ts = (np.zeros(0, np.int64) for _ in range(3))
+            self.universe = CellList()  # nothing to convert: all goes
             return
         keep = ~self._in_rect(rect)
         self.ys, self.xs, self.ts = self.ys[keep], self.xs[keep], self.ts[keep]
@@ -349,12 +328,7 @@ class Engine:
 
     # -- statistics -------------------------------------------------------------
     def by_type(self) -> dict[int, int]:
-        if self._tree_only:
-            return self.tree.by_type(self.rules.max_form)
-        if self._dense is not None:  # counted on the grid, no cell list made
-            return grid_stats.by_type(self._dense[2])
-        types, counts = np.unique(self.ts, return_counts=True)
-        return {int(t): int(c) for t, c in zip(types, counts)}
+        return self.universe.by_type(self.rules.max_form if self.rules is not None else 0)
 
     def bbox(self) -> Rect | None:
         """Smallest rectangle holding every live cell.  On the wrapping plane each axis is
@@ -362,14 +336,7 @@ class Engine:
         shorter); with bounded edges plain minimum and maximum."""
         if self.population == 0:
             return None
-        if self._tree_only:  # the occupied columns and rows, read from the tree
-            xs, ys = self.tree.occupied(1), self.tree.occupied(0)
-        elif self._dense is not None:  # the occupied rows and columns of the grid
-            y0, x0, grid = self._dense
-            ys = np.flatnonzero(grid.any(axis=1)) + y0
-            xs = np.flatnonzero(grid.any(axis=0)) + x0
-        else:
-            xs, ys = self.xs, self.ys
+        xs, ys = self.universe.occupied()  # read from the tree or grid, no list made
         if self.edges == "bounded":
             return Rect(int(xs.min()), int(ys.min()), int(xs.max()), int(ys.max()))
         x0, x1 = _wrapped_interval(xs)
@@ -397,33 +364,20 @@ class Engine:
     def is_dense(self) -> bool:
         """At least 1/DENSE_MIN_FILL of the live cells' box is alive (cells listed, not a
         tree), as when the dense path runs."""
-        if self._tree_only:
-            return False
-        if self._dense is not None:
+        u = self.universe
+        if isinstance(u, DenseGrid):
             return True
-        n = self._ts.shape[0]
-        if n == 0:
-            return False
-        box = (int(self._ys[-1]) - int(self._ys[0]) + 1) * (int(self._xs.max())
-                                                           - int(self._xs.min()) + 1)
-        return n * DENSE_MIN_FILL >= box
+        return isinstance(u, CellList) and u.is_dense(DENSE_MIN_FILL)
 
     def step_direct(self, generations: int = 1,
                     progress: algorithms.Progress | None = None) -> None:
         """Advance one generation at a time by message passing (the direct algorithm)."""
-        if self._tree_only:  # a dense grid stays one: the first step takes it as it is
-            self._sync()
-        self.tree = None
+        if not isinstance(self.universe, DenseGrid):  # a dense grid stays one
+            self._list()
         for i in range(int(generations)):
             self._step_once()
             if progress is not None:
                 progress(i + 1, int(generations))
-
-    def adopt_tree(self, tree: Tree) -> None:
-        """Take a HashLife tree as the state (the cell arrays are rebuilt when needed)."""
-        self._dense = None  # the tree replaces whichever form held the state
-        self.tree = tree
-        self._tree_only = True
 
     def _step_once(self) -> None:
         if self.rules is None:
@@ -436,7 +390,7 @@ class Engine:
         if self._try_dense(t):
             self.generation += 1
             return
-        self._sync()
+        self._list()
         area = self.advance_area
         if area is None or area == FULL:
             ys, xs, ts = self.ys, self.xs, self.ts
@@ -501,8 +455,8 @@ class Engine:
             self._shift(ox, oy)
 
     def _shift(self, dx: int, dy: int) -> None:
-        self._ys, self._xs, self._ts = _sorted((self.ys + dy) % SIDE, (self.xs + dx) % SIDE,
-                                               self.ts)
+        self.universe = CellList(*_sorted((self.ys + dy) % SIDE, (self.xs + dx) % SIDE,
+                                          self.ts))
 
     def _hash_scratch(self, sends: int) -> tuple[np.ndarray, np.ndarray]:
         """Hash table scratch space (kept empty between generations), at least twice the
@@ -521,36 +475,22 @@ class Engine:
         """Step as dense grid passes when the rules allow it and the population is dense."""
         plan = t.dense
         if plan is None or (self.advance_area is not None and self.advance_area != FULL):
-            self._sync()
             return False
         my, mx = t.reach_y, t.reach_x
-        if self._dense is not None:
-            y0, x0, grid = self._dense
-            h, w = grid.shape
-            edge = (grid[:my].any() or grid[h - my:].any() or grid[:, :mx].any()
-                    or grid[:, w - mx:].any()) if (my or mx) else False
-            if self._dense_pop * DENSE_MIN_FILL < h * w:
-                self._sync()  # too sparse: leave the window
+        u = self.universe
+        if isinstance(u, DenseGrid):
+            h, w = u.grid.shape
+            g = u.grid
+            edge = (g[:my].any() or g[h - my:].any() or g[:, :mx].any()
+                    or g[:, w - mx:].any()) if (my or mx) else False
+            if u.pop * DENSE_MIN_FILL < h * w:
+                self._list()  # too sparse: leave the window
             elif edge and not self._grow_dense(my, mx):
-                self._sync()  # cannot grow in place: rebuild from the cells
-        if self._dense is None:
-            n = self._ts.shape[0]
-            if n == 0 or int(self._ts.max()) > 255:
-                return False
-            pad_y, pad_x = my + DENSE_MARGIN, mx + DENSE_MARGIN
-            y0 = int(self._ys[0]) - pad_y
-            y1 = int(self._ys[-1]) + pad_y
-            x0 = int(self._xs.min()) - pad_x
-            x1 = int(self._xs.max()) + pad_x
-            area_cells = (y1 - y0 + 1) * (x1 - x0 + 1)
-            if (y0 < 0 or x0 < 0 or y1 >= SIDE or x1 >= SIDE or area_cells > WINDOW_MAX
-                    or n * DENSE_MIN_FILL < area_cells):
-                return False
-            grid = np.zeros((y1 - y0 + 1, x1 - x0 + 1), np.uint8)
-            grid[self._ys - y0, self._xs - x0] = self._ts
-            self._dense = (y0, x0, grid)
-            self._dense_pop = n
-        y0, x0, grid = self._dense
+                self._list()  # cannot grow in place: rebuild from the cells
+        if not isinstance(self.universe, DenseGrid) and not self._enter_dense(my, mx):
+            return False
+        u = self.universe
+        grid = u.grid
         # Reuse the output grid between generations: fresh pages cost more than reuse.
         out, acc = self._buffers if self._buffers is not None else (None, None)
         if out is None or out.shape != grid.shape or acc.dtype != plan.msg_dtype:
@@ -558,25 +498,45 @@ class Engine:
             acc = np.zeros(grid.shape[1], plan.msg_dtype)
         sep = plan.sep
         if DENSE_SEPARABLE and sep is not None:
-            self._dense_pop = int(kernels.dense_step_separable(
+            pop = int(kernels.dense_step_separable(
                 grid, out, sep.gtype, sep.gval, sep.gy0, sep.gy1, sep.gx0, sep.gx1, sep.xg,
                 sep.xdy, sep.xdx, sep.etype, sep.edy, sep.edx, sep.eop, sep.evals, sep.interp,
                 plan.lut, sep.masks32, sep.masks64, sep.mforms, acc,
                 *self._separable_scratch(sep, grid.shape[1], plan.msg_dtype)))
         else:
-            self._dense_pop = int(kernels.dense_step(grid, out, plan.etype, plan.edy,
-                                                     plan.edx, plan.eop, plan.evals, plan.lut,
-                                                     acc))
-        self._dense = (y0, x0, out)
+            pop = int(kernels.dense_step(grid, out, plan.etype, plan.edy, plan.edx, plan.eop,
+                                         plan.evals, plan.lut, acc))
+        self.universe = DenseGrid(u.y0, u.x0, out, pop)
         self._buffers = (grid, acc)  # the old grid becomes the next output buffer
         self.last_kernel = "dense"
+        return True
+
+    def _enter_dense(self, my: int, mx: int) -> bool:
+        """Turn the cell list into a dense window if it is dense enough and fits."""
+        cl = self._list()
+        n = cl.ts.shape[0]
+        if n == 0 or int(cl.ts.max()) > 255:
+            return False
+        pad_y, pad_x = my + DENSE_MARGIN, mx + DENSE_MARGIN
+        y0 = int(cl.ys[0]) - pad_y
+        y1 = int(cl.ys[-1]) + pad_y
+        x0 = int(cl.xs.min()) - pad_x
+        x1 = int(cl.xs.max()) + pad_x
+        area_cells = (y1 - y0 + 1) * (x1 - x0 + 1)
+        if (y0 < 0 or x0 < 0 or y1 >= SIDE or x1 >= SIDE or area_cells > WINDOW_MAX
+                or n * DENSE_MIN_FILL < area_cells):
+            return False
+        grid = np.zeros((y1 - y0 + 1, x1 - x0 + 1), np.uint8)
+        grid[cl.ys - y0, cl.xs - x0] = cl.ts
+        self.universe = DenseGrid(y0, x0, grid, n)
         return True
 
     def _grow_dense(self, my: int, mx: int) -> bool:
         """Widen the dense window by the margin on each side where cells came within the
         message reach of its border, copying the grid (cheaper than rebuilding it from the
         cell list); False if the wider window would leave the plane or get too sparse."""
-        y0, x0, grid = self._dense
+        u = self.universe
+        y0, x0, grid = u.y0, u.x0, u.grid
         h, w = grid.shape
         top = DENSE_MARGIN if my and grid[:my].any() else 0
         bottom = DENSE_MARGIN if my and grid[h - my:].any() else 0
@@ -584,11 +544,11 @@ class Engine:
         right = DENSE_MARGIN if mx and grid[:, w - mx:].any() else 0
         nh, nw = h + top + bottom, w + left + right
         if (y0 - top < 0 or x0 - left < 0 or y0 - top + nh > SIDE or x0 - left + nw > SIDE
-                or nh * nw > WINDOW_MAX or self._dense_pop * DENSE_MIN_FILL < nh * nw):
+                or nh * nw > WINDOW_MAX or u.pop * DENSE_MIN_FILL < nh * nw):
             return False
         bigger = np.zeros((nh, nw), np.uint8)
         bigger[top:top + h, left:left + w] = grid
-        self._dense = (y0 - top, x0 - left, bigger)
+        self.universe = DenseGrid(y0 - top, x0 - left, bigger, u.pop)
         return True
 
     def _separable_scratch(self, sep, w: int, dtype: type) -> tuple[np.ndarray, ...]:
@@ -605,13 +565,15 @@ class Engine:
 
     # -- copies -------------------------------------------------------------------
     def copy(self) -> Engine:
-        self._sync()
         e = Engine(self.rules, self.edges, self.seed, self.algorithm)
         e.generation = self.generation
         e.advance_area = self.advance_area
         e.hashlife_memory = self.hashlife_memory
-        e.ys, e.xs, e.ts = self.ys.copy(), self.xs.copy(), self.ts.copy()
-        e.tree = self.tree  # nodes are immutable: the copy may share the tree
+        if self.tree is not None:
+            e.universe = self.tree  # nodes are immutable: the copy may share the tree
+        else:  # a dense grid's buffer is reused by the next step: the copy gets a list
+            ys, xs, ts = self.universe.cells()
+            e.universe = CellList(ys.copy(), xs.copy(), ts.copy())
         return e
 
     def same_state(self, other: Engine) -> bool:

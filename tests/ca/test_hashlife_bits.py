@@ -11,9 +11,11 @@ from hypothesis import strategies as st
 
 from apps.ca import log
 from apps.ca.engine import SIDE, Engine
-from apps.ca.hashlife.algorithm import HashLife, Tree
+from apps.ca.hashlife.algorithm import HashLife
 from apps.ca.hashlife.bits.rule import binary_rule, derive_table, totalistic_terms
-from apps.ca.hashlife.bits.run import BitTree
+from apps.ca.hashlife.bits.run import BitRun
+from apps.ca.hashlife.generic import GenericRun
+from apps.ca.hashlife.tree import Tree
 from apps.ca.library import rules_path
 from apps.ca.rules import load_rules, parse_rules
 
@@ -60,7 +62,7 @@ def both(e: Engine, counts: list[int], binary: bool) -> Engine:
     for n in counts:
         direct.step(n)
         jumps.step(n)
-        assert isinstance(jumps.tree, BitTree) == binary
+        assert isinstance(jumps.tree.run, BitRun) == binary
         assert jumps.generation == direct.generation
         assert jumps.population == direct.population
         assert jumps.bbox() == direct.bbox()
@@ -126,7 +128,7 @@ def test_rules_that_fail_the_qualification_keep_the_generic_path(name: str) -> N
     e = soup(rules, 3, *PLACES[0], forms=sorted(rules.forms))
     assert HashLife.binary(e) is None
     jumps = both(e, [5, 40], False)
-    assert isinstance(jumps.tree, Tree)
+    assert isinstance(jumps.tree, Tree) and isinstance(jumps.tree.run, GenericRun)
 
 
 def test_a_plane_holding_other_life_forms_takes_the_generic_path() -> None:
@@ -167,7 +169,7 @@ def test_checkpoint_after_a_jump_equals_one_after_stepping() -> None:
     jumped.algorithm = "hashlife"
     stepped.step_direct(300)
     jumped.step(300)
-    assert isinstance(jumped.tree, BitTree)
+    assert isinstance(jumped.tree.run, BitRun)
     assert log.format_checkpoint(jumped) == log.format_checkpoint(stepped)
     assert log.parse_checkpoint(log.format_checkpoint(jumped)).same_state(stepped)
 

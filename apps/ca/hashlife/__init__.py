@@ -5,19 +5,25 @@ level k remembers its centre after 2**j generations (j <= k - 2 - s, where 2**s 
 the rules' message reach), so repeated regions of space and time are computed once.  See
 docs/ca.md ("Jumping ahead: HashLife") and docs/perf/ca.md.
 
-Modules: ``store`` (the node table and its garbage collection), ``leaf`` (one generation of
-the rules on a small grid), ``evolve`` (the memoised recursion), ``convert`` (cells to and
-from a tree), ``plane`` (the 65536-square plane's wrapping and bounded edges) and
-``algorithm`` (the strategy the engine calls).  Two-state rules on a plane of 1s take the
-``bits`` subpackage instead: 16 x 16-cell leaves of bits advanced by bit operations, the
-same answers with far fewer, cheaper nodes.
+One tree (``tree``: the universe an engine adopts, the jumps and their memory handling,
+``plane``: the 65536-square plane's wrapping and bounded edges, ``algorithm``: the strategy
+the engine calls) over a leaf strategy chosen per run:
+
+* ``generic`` — leaves of life-form values: ``store`` (the node table and its garbage
+  collection), ``leaf`` (one generation of the rules on a small grid), ``evolve`` (the
+  memoised recursion), ``convert`` and ``census`` (cells and statistics);
+* ``bits.run`` — two-state rules on a plane of 1s: 16 x 16-cell leaves of bits advanced by
+  bit operations, the same answers with far fewer, cheaper nodes (``bits`` holds its
+  table, base case, recursion, conversions and census).
 """
 
 from base.kernel_notice import announce_compiles
 
 _WARM = "apps.ca.hashlife.kernel_warmup:compile_kernels"  # both groups compile together
-# Cold compile times measured on the project's 2-core machine (docs/perf/startup.md).
-announce_compiles("HashLife", 12.0, *(f"{__name__}.{m}" for m in (
+# Cold compile times measured on the project's 2-core machine (docs/perf/startup.md: both
+# groups with their completion 18 s of CPU at load 5-7, before the recursions called `join`
+# and the base case instead of inlining them 30-36 s).
+announce_compiles("HashLife", 8.0, *(f"{__name__}.{m}" for m in (
     "store", "leaf", "evolve", "convert", "census")), completion=_WARM)
-announce_compiles("binary HashLife", 12.0, *(f"{__name__}.bits.{m}" for m in (
-    "rule", "store", "leaves", "evolve", "convert", "census", "frame", "run")), completion=_WARM)
+announce_compiles("binary HashLife", 8.0, *(f"{__name__}.bits.{m}" for m in (
+    "rule", "store", "leaves", "evolve", "convert", "census", "run")), completion=_WARM)

@@ -83,13 +83,18 @@ def _emit(node, level, y0, x0, nodes, empty, out, n):
 
 
 @njit(cache=True)
-def cells(node, nodes, empty):
-    """(y, x, value) rows of the plane node's live cells, sorted row by row."""
+def _cells(node, nodes, empty):
     top = np.int64(PLANE_LEVEL)
     out = np.empty((_count(node, top, nodes, empty), 3), np.int64)
     _emit(node, top, np.int64(0), np.int64(0), nodes, empty, out, np.int64(0))
-    order = np.argsort(out[:, 0] * (np.int64(1) << PLANE_LEVEL) + out[:, 1])
-    return out[order]
+    return out
+
+
+def cells(node: int, nodes: np.ndarray, empty: np.ndarray) -> np.ndarray:
+    """(y, x, value) rows of the plane node's live cells, sorted row by row (by numpy:
+    a sort inside a kernel compiles numba's quicksort, seconds of a first run)."""
+    out = _cells(np.int64(node), nodes, empty)
+    return out[np.argsort(out[:, 0] * (1 << PLANE_LEVEL) + out[:, 1])]
 
 
 @njit(cache=True)

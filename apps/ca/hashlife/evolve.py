@@ -22,7 +22,16 @@ import numpy as np
 from numba import njit
 
 from apps.ca.hashlife.leaf import generation
-from apps.ca.hashlife.store import LEVEL, RES, RESJ, join
+from apps.ca.hashlife.store import LEVEL, RES, RESJ
+from apps.ca.hashlife.store import join as _join_inline
+
+
+@njit(cache=True, _nrt=False)
+def join(a, b, c, d, nodes, slots, meta):
+    """The store's join as a call, not IR-inlined at each of the recursion's ten-odd sites:
+    the first compile of both recursions took 18 s of CPU instead of 29, with the same jump
+    times in an A/B (docs/perf/startup.md).  Without numba's runtime, as the recursion."""
+    return _join_inline(a, b, c, d, nodes, slots, meta)
 
 
 @njit(cache=True, _nrt=False)

@@ -7,20 +7,24 @@ Stepping needs a node twice the plane's size whose centre is the plane:
 * bounded edges: the plane surrounded by ``WALL`` cells, which send nothing and never change,
   so no message crosses the edge and nothing is born outside it.
 
-Either way the result of the frame after 2**j generations is exactly the plane after them.
+Either way the result of the frame after any number of generations is exactly the plane after them.
+One frame for both leaf strategies: the level is part of the binary table's key.
 """
 
 from __future__ import annotations
 
-from apps.ca.hashlife.store import NodeStore
+PLANE_LEVEL = 16
 
 
-def frame(store: NodeStore, plane: int, edges: str) -> int:
-    """The level-17 node whose centre is the level-16 ``plane`` on a plane with ``edges``."""
+def frame(store, plane: int, edges: str) -> int:
+    """The level-17 node whose centre is the level-16 ``plane`` on a plane with ``edges``
+    (``store``: either leaf strategy's table, ``NodeStore`` or ``BitStore``)."""
     nw, ne, sw, se = store.quadrants(plane)
+    k = PLANE_LEVEL
     if edges == "wrap":
-        rolled = store.join(se, sw, ne, nw)
-        return store.join(rolled, rolled, rolled, rolled)
-    w = int(store.wall[15])
-    return store.join(store.join(w, w, w, nw), store.join(w, w, ne, w),
-                      store.join(w, sw, w, w), store.join(se, w, w, w))
+        rolled = store.join(se, sw, ne, nw, k)
+        return store.join(rolled, rolled, rolled, rolled, k + 1)
+    store.mark_wall()
+    w = int(store.wall[k - 1])
+    return store.join(store.join(w, w, w, nw, k), store.join(w, w, ne, w, k),
+                      store.join(w, sw, w, w, k), store.join(se, w, w, w, k), k + 1)

@@ -162,17 +162,31 @@ class NodeStore:
             ids[k] = self.join(*(int(ids[k - 1]),) * 4)
         return ids
 
-    def join(self, a: int, b: int, c: int, d: int) -> int:
+    def join(self, a: int, b: int, c: int, d: int, level: int = 0) -> int:
+        """The node of quadrants a, b, c, d (``level`` is implied by theirs here)."""
         n = int(join(np.int64(a), np.int64(b), np.int64(c), np.int64(d), self.nodes,
                      self.slots, self.meta))
         if n < 0:
             raise MemoryError("node table full")
         return n
 
+    def mark_wall(self) -> None:
+        """A bounded plane is framed (nothing to note: walls are level-0 values here)."""
+
+    @property
+    def crowded(self) -> bool:
+        """Whether the table is still (almost) full: collecting freed too little."""
+        return 10 * self.count > 9 * self.capacity
+
+    def full_error(self) -> MemoryError:
+        return MemoryError(f"the HashLife node table is full ({self.count} nodes, "
+                           f"{self.bytes >> 20} MB) and the memory limit "
+                           f"({self.limit_bytes >> 20} MB) allows no more")
+
     def make_room(self, roots: list[int]) -> list[int]:
         """Collect garbage keeping ``roots`` (returned renumbered) and every live tree an
         engine holds (renumbered in place: an engine whose state is only a tree survives
-        another engine's collection).  Raises MemoryError if that freed (almost) nothing."""
+        another engine's collection); see ``crowded``."""
         live = [t for t in self.trees if t.epoch == self.epoch]
         n, towers = len(roots), 2 * (TOP_LEVEL + 1)
         keep = np.array([*roots, *self.empty, *self.wall, *(t.node for t in live)], np.int64)
@@ -181,10 +195,6 @@ class NodeStore:
         self.empty, self.wall = keep[n:n + TOP_LEVEL + 1], keep[n + TOP_LEVEL + 1:n + towers]
         for tree, node in zip(live, keep[n + towers:], strict=True):
             tree.node, tree.epoch = int(node), self.epoch
-        if 10 * self.count > 9 * self.capacity:
-            raise MemoryError(f"the HashLife node table is full ({self.count} nodes, "
-                              f"{self.bytes >> 20} MB) and the memory limit "
-                              f"({self.limit_bytes >> 20} MB) allows no more")
         return [int(r) for r in keep[:n]]
 
     def grow_if_full(self) -> bool:

@@ -62,16 +62,13 @@ def _tile_key(tx, ty):
 
 
 @njit(cache=True)
-def build_grid(top, left, grid, nodes, slots, leaves, lslots, meta):
-    """The plane's node from a uint8 grid (nonzero = live) whose cell (0, 0) is at
-    (left, top): each 16 x 16 tile of the plane it covers becomes a leaf straight from the
-    grid's bytes (no cell list), then the levels as in :func:`build`; -1 if full."""
+def _grid_leaves(top, left, grid, leaves, lslots, meta, lkeys, ids):
+    """Each 16 x 16 tile of the plane a uint8 grid (nonzero = live, its cell (0, 0) at
+    (left, top)) covers, as a leaf straight from the grid's bytes (no cell list): their
+    Morton keys and ids into ``lkeys`` and ``ids``; returns how many (-1: table full)."""
     h, w = grid.shape
     ty0, ty1 = top >> LEAF_LEVEL, (top + h - 1) >> LEAF_LEVEL
     tx0, tx1 = left >> LEAF_LEVEL, (left + w - 1) >> LEAF_LEVEL
-    cap = (ty1 - ty0 + 1) * (tx1 - tx0 + 1)
-    lkeys = np.empty(cap, np.int64)
-    ids = np.empty(cap, np.int64)
     words = np.zeros((1, 8), np.uint64)
     m = 0
     for ty in range(ty0, ty1 + 1):
@@ -98,10 +95,7 @@ def build_grid(top, left, grid, nodes, slots, leaves, lslots, meta):
             lkeys[m] = _tile_key(tx, ty)
             ids[m] = t
             m += 1
-    if m == 0:
-        return np.int64(meta[EMPTY + PLANE_LEVEL])
-    order = np.argsort(lkeys[:m])
-    return _levels(lkeys[:m][order], ids[:m][order], np.int64(m), nodes, slots, meta)
+    return np.int64(m)
 
 
 @njit(cache=True)
@@ -179,14 +173,19 @@ def _emit(node, level, y0, x0, nodes, leaves, meta, out, n):
 
 
 @njit(cache=True)
-def cells(node, nodes, leaves, meta):
-    """(y, x) rows of the plane node's live cells, sorted row by row."""
+def _cells(node, nodes, leaves, meta):
     top = np.int64(PLANE_LEVEL)
     memo = np.full(meta[N_NODES], -1, np.int64)
     out = np.empty((population(node, top, memo, nodes, leaves), 2), np.int64)
     _emit(node, top, np.int64(0), np.int64(0), nodes, leaves, meta, out, np.int64(0))
-    order = np.argsort(out[:, 0] * (np.int64(1) << PLANE_LEVEL) + out[:, 1])
-    return out[order]
+    return out
+
+
+def cells(node: int, nodes: np.ndarray, leaves: np.ndarray, meta: np.ndarray) -> np.ndarray:
+    """(y, x) rows of the plane node's live cells, sorted row by row (by numpy: a sort
+    inside a kernel compiles numba's quicksort, seconds of a first run)."""
+    out = _cells(np.int64(node), nodes, leaves, meta)
+    return out[np.argsort(out[:, 0] * (1 << PLANE_LEVEL) + out[:, 1])]
 
 
 def to_tree(xs: np.ndarray, ys: np.ndarray, store) -> int:  # a BitStore
@@ -202,5 +201,14 @@ def to_tree(xs: np.ndarray, ys: np.ndarray, store) -> int:  # a BitStore
 def grid_to_tree(top: int, left: int, grid: np.ndarray, store) -> int:
     """The plane's node of a uint8 grid's live cells, its cell (0, 0) at (left, top);
     -1 if a table filled up."""
-    return int(build_grid(np.int64(top), np.int64(left), np.ascontiguousarray(grid, np.uint8),
-                          store.nodes, store.slots, store.leaves, store.lslots, store.meta))
+    h, w = grid.shape
+    tiles = (((top + h - 1) >> LEAF_LEVEL) - (top >> LEAF_LEVEL) + 1) * \
+        (((left + w - 1) >> LEAF_LEVEL) - (left >> LEAF_LEVEL) + 1)
+    lkeys, ids = np.empty(tiles, np.int64), np.empty(tiles, np.int64)
+    m = int(_grid_leaves(np.int64(top), np.int64(left), np.ascontiguousarray(grid, np.uint8),
+                         store.leaves, store.lslots, store.meta, lkeys, ids))
+    if m <= 0:
+        return m if m < 0 else int(store.meta[EMPTY + PLANE_LEVEL])
+    order = np.argsort(lkeys[:m])  # numpy's: a sort in a kernel compiles numba's quicksort
+    return int(_levels(lkeys[:m][order], ids[:m][order], np.int64(m), store.nodes,
+                       store.slots, store.meta))

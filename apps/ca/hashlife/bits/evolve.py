@@ -17,9 +17,18 @@ import numpy as np
 from numba import njit
 
 from apps.ca.hashlife.bits.leaves import base
-from apps.ca.hashlife.bits.store import EMPTY, FULL, LEAF_LEVEL, LEVEL, RES, RESJ, WALL, join
+from apps.ca.hashlife.bits.store import EMPTY, FULL, LEAF_LEVEL, LEVEL, RES, RESJ, WALL
+from apps.ca.hashlife.bits.store import join as _join_inline
 
 BASE = LEAF_LEVEL + 1
+
+
+@njit(cache=True, _nrt=False)
+def join(a, b, c, d, level, nodes, slots, meta):
+    """The store's join as a call, not IR-inlined at each of the recursion's ten-odd sites:
+    the first compile of both recursions took 18 s of CPU instead of 29, with the same jump
+    times in an A/B (docs/perf/startup.md).  Without numba's runtime, as the recursion."""
+    return _join_inline(a, b, c, d, level, nodes, slots, meta)
 
 
 @njit(cache=True, inline="always")

@@ -137,7 +137,11 @@ def lookup(s, d, lo, hi, R, G):
         G[d, i] = (top | (bottom << U32)) & ~G[2, i]
 
 
-@njit(cache=True, inline="always")
+# A call, not IR-inlined into the recursion (where it was inlined twice): a cold first run
+# of `ca run --engine hashlife` took 29 s of CPU instead of 42 with the same jump times
+# (docs/perf/startup.md).  Without numba's runtime, like the recursion, so the call passes
+# its arrays without atomic reference counts (the reason the inlining was measured faster).
+@njit(cache=True, _nrt=False)
 def base(node, gens, nodes, leaves, lslots, meta, R, G):
     """The centre leaf of level-5 ``node`` after ``gens`` (0..8) generations; -1 if the
     leaf table is full."""

@@ -1,5 +1,6 @@
-"""The binary path as the HashLife strategy uses it: a rule's tables, the jumps with their
-memory handling, and the tree the engine adopts."""
+"""HashLife's binary leaf strategy: two-state rules on a plane of 1s, 16 x 16-cell leaves
+of bits, jumps of any length up to MAX_JUMP in one pass (the tree, its jumps and their
+memory handling are ../tree.py's, shared with the generic strategy)."""
 
 from __future__ import annotations
 
@@ -8,7 +9,6 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from apps.ca.hashlife.bits import census, convert, evolve
-from apps.ca.hashlife.bits.frame import frame
 from apps.ca.hashlife.bits.leaves import PLANES
 from apps.ca.hashlife.bits.rule import BinaryRule, binary_rule
 from apps.ca.hashlife.bits.store import BitStore
@@ -17,50 +17,7 @@ from apps.ca.rules import RuleSet
 MAX_JUMP = 1 << 15  # generations: the level-17 frame's centre after at most 2**15
 
 
-@dataclass(eq=False)  # hashed by identity: the store keeps its live trees in a WeakSet
-class BitTree:
-    """A binary plane's state as a node of a rule's tables (valid while the epoch matches);
-    answers what the engine asks of a tree without listing the cells."""
-
-    store: BitStore
-    epoch: int
-    node: int
-    _census: dict = field(default_factory=dict, repr=False, compare=False)
-
-    def valid(self, store: object) -> bool:
-        return self.store is store and self.epoch == self.store.epoch
-
-    def _check(self) -> None:
-        """Node ids of an older epoch name other nodes: refuse rather than answer wrongly
-        (collections renumber every live tree, BitStore.make_room, so this is a bug)."""
-        if self.epoch != self.store.epoch:
-            raise RuntimeError("a HashLife tree missed a garbage collection's renumbering")
-
-    def by_type(self, forms: int) -> dict[int, int]:
-        """{1: cells} (empty if none); ``forms`` is ignored: a binary plane has only 1s."""
-        if "count" not in self._census:
-            self._check()
-            self._census["count"] = census.count(self.node, self.store)
-        n = self._census["count"]
-        return {1: n} if n else {}
-
-    def occupied(self, axis: int) -> np.ndarray:
-        """Sorted rows (axis 0) or columns (axis 1) that hold a live cell."""
-        key = ("occupied", axis)
-        if key not in self._census:
-            self._check()
-            self._census[key] = census.occupied(self.node, axis, self.store)
-        return self._census[key]
-
-    def cells(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """(ys, xs, types) of the live cells, row by row."""
-        self._check()
-        s = self.store
-        rows = convert.cells(np.int64(self.node), s.nodes, s.leaves, s.meta)
-        return rows[:, 0].copy(), rows[:, 1].copy(), np.ones(rows.shape[0], np.int64)
-
-
-@dataclass
+@dataclass(eq=False)
 class BitRun:
     """What one binary rule's jumps need: its tables, its kernel table and scratch rows."""
 
@@ -81,59 +38,31 @@ class BitRun:
         run.store.limit_bytes = int(memory)
         return run
 
-    def tree(self, node: int) -> BitTree:
-        """The tree an engine adopts; the store renumbers it if it collects garbage later
-        (another engine of these rules may hold its state only in a tree)."""
-        tree = BitTree(self.store, self.store.epoch, node)
-        self.store.trees.add(tree)
-        return tree
-
-    def plane(self, engine) -> int:  # an Engine
-        """The engine's plane as a node: its tree if that is ours and valid, else built
-        from its cells (all 1s)."""
-        tree = engine.tree
-        if isinstance(tree, BitTree) and tree.valid(self.store):
-            return tree.node
+    def build(self, engine) -> int:
+        """The engine's plane (all 1s) from its dense window or its cells."""
         window = engine.dense_window
-        s = self.store
-        collected = False
-        while True:  # a dense plane may need the tables doubled several times
-            node = (convert.grid_to_tree(window[0], window[1], window[2], s)
-                    if window is not None else convert.to_tree(engine.xs, engine.ys, s))
-            if node >= 0:
-                return node
-            if s.grow_if_full():
-                continue
-            if collected:
-                break
-            collected = True
-            s.make_room([])
-        raise MemoryError("the plane does not fit the HashLife memory limit "
-                          f"({s.limit_bytes >> 20} MB)")
+        if window is not None:
+            return convert.grid_to_tree(window[0], window[1], window[2], self.store)
+        return convert.to_tree(engine.xs, engine.ys, self.store)
 
-    def jump(self, node: int, generations: int, edges: str) -> int:
-        """The plane ``node`` after ``generations`` (1..MAX_JUMP); on a full table grow it
-        (within the memory limit) or collect garbage and retry, as a last resort two jumps
-        of half the length."""
+    def next_jump(self, node: int, remaining: int, edges: str) -> int:
+        return min(MAX_JUMP, remaining)
+
+    def advance(self, framed: int, generations: int) -> int:
+        return evolve.advance(framed, generations, self.store, self.rule.packed, self.grids)
+
+    def population(self, node: int) -> int:
+        return census.count(node, self.store)
+
+    def by_type(self, node: int, forms: int) -> dict[int, int]:
+        """{1: cells} (empty if none): a binary plane has only 1s."""
+        n = self.population(node)
+        return {1: n} if n else {}
+
+    def occupied(self, node: int, axis: int) -> np.ndarray:
+        return census.occupied(node, axis, self.store)
+
+    def cells(self, node: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         s = self.store
-        collected = False
-        while True:
-            try:
-                out = evolve.advance(frame(s, node, edges), generations, s, self.rule.packed,
-                                     self.grids)
-            except MemoryError:  # framing the plane found the table full
-                out = -1
-            if out >= 0:
-                return out
-            if s.grow_if_full():
-                continue
-            if collected:
-                break
-            collected = True
-            (node,) = s.make_room([node])
-            if s.crowded:
-                break
-        if generations == 1:
-            raise s.full_error()
-        first = generations // 2
-        return self.jump(self.jump(node, first, edges), generations - first, edges)
+        rows = convert.cells(np.int64(node), s.nodes, s.leaves, s.meta)
+        return rows[:, 0].copy(), rows[:, 1].copy(), np.ones(rows.shape[0], np.int64)

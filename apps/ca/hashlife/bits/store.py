@@ -165,7 +165,8 @@ def collect(roots, nodes, slots, leaves, lslots, meta):
     for i in range(1, m):
         if keep_leaf[i]:
             new_leaf[i] = k
-            leaves[k] = leaves[i]
+            for q in range(8):  # word by word: a row assignment compiles numpy's broadcasting
+                leaves[k, q] = leaves[i, q]
             k += 1
     meta[N_LEAVES] = k
     new = np.zeros(n, np.int64)
@@ -199,7 +200,8 @@ def towers(nodes, slots, leaves, lslots, meta):
     words = np.zeros((1, 8), np.uint64)
     if leaf(words, 0, 0, leaves, lslots, meta) != EMPTY_LEAF:
         return -1
-    words[0, 4:] = _M
+    for q in range(4, 8):
+        words[0, q] = _M
     if leaf(words, 0, 0, leaves, lslots, meta) != WALL_LEAF:
         return -1
     meta[EMPTY + LEAF_LEVEL] = EMPTY_LEAF
@@ -285,6 +287,10 @@ class BitStore:
         if n < 0:
             raise MemoryError("node table full")
         return n
+
+    def mark_wall(self) -> None:
+        """A bounded plane is framed: from now on the kernels look for walls in leaves."""
+        self.meta[HAS_WALL] = 1
 
     def add_leaf(self, words: np.ndarray) -> int:
         n = int(leaf(words.reshape(1, 8), 0, 0, self.leaves, self.lslots, self.meta))
