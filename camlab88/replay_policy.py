@@ -14,7 +14,7 @@ checked by the program's own argument parser. What each allowed option becomes:
              the outside bytes stored in the recording (``+`` wire records) are fed instead
 ``TAPE``     ``--tablet SOURCE``: kept so the program sets up the same decoder, but in a replay
              the device is never opened -- the tablet tape stored in the recording (``T`` wire
-             records) is decoded instead (emulator/tablet/taped.py); the value is only parsed
+             records) is decoded instead (emulator/tablet_input/taped.py); the value is only parsed
 
 Anything else is refused naming the option: listeners, ports, URLs, ``--dask``
 (a replay renders in process), options of other programs, and programs without ``--record``.

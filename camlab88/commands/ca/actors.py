@@ -124,7 +124,7 @@ def _open_tablet(text: str | None, record: bool):
     where the device is never opened)."""
     if not text:
         return None
-    from emulator.tablet.taped import TapedTablet
+    from emulator.tablet_input.taped import TapedTablet
     from protocols.tablets.sources import SourceError
 
     try:
