@@ -66,9 +66,20 @@ class SigmaMachine:
     def now(self) -> Fraction:
         return self.clock.exact
 
-    def tick(self, dt: TimeLike = TICK) -> None:
-        """Advance the clock by ``dt``; the terminal takes every byte that has arrived."""
+    def tick(self, dt: TimeLike = TICK, take_first: bool = False) -> None:
+        """Advance the clock by ``dt``; the terminal takes every byte that has arrived.
+        ``take_first``: it takes them before the clock moves instead, so the screen after
+        the tick is the line as it stood at the tick's start (the KAS programs' order,
+        kept so their sessions show what they always showed)."""
+        if take_first:
+            self.take()
+            self.clock.advance(dt)
+            return
         self.clock.advance(dt)
+        self.take()
+
+    def take(self) -> None:
+        """The terminal takes every byte that has arrived by now."""
         if self.tracer is None:
             data = self.line.device.read()
             if data:
@@ -95,6 +106,16 @@ class SigmaMachine:
     def frame(self) -> np.ndarray:
         """(512, 768, 3) uint8 as displayed, row 0 = top."""
         return self.terminal.frame()
+
+    def indices(self) -> np.ndarray:
+        """(512, 768) uint8 LUT indices on the screen, row 0 = top."""
+        return np.ascontiguousarray(self.terminal.indices()[::-1])
+
+    # ------------------------------------------------------------------ the user
+    def key(self, char: str) -> None:
+        """A key struck on the terminal's keyboard (by its user, not the host): its bytes
+        go up the line now."""
+        self.terminal.key(char)
 
     # ------------------------------------------------------------------ traces
     def trace(self, sink: Callable[[TraceEvent], None] | None,

@@ -1,0 +1,32 @@
+"""The port a host program talks to: its end of the line to a device.
+
+Host programs (apps/) are typed against this and nothing else: they write bytes, read what
+came back, ask the line's time and whether everything written has been taken.  Who runs the
+line and the device -- the machine, ticked by a command or the harness -- is not their
+business (emulator.machine.SigmaMachine.host satisfies it).
+"""
+
+from __future__ import annotations
+
+from typing import Protocol
+
+
+class HostPort(Protocol):
+    """A host program's end of a line to a device, on the line's (virtual) time."""
+
+    def write(self, data: bytes) -> float:
+        """Queue bytes now; returns the line time the last one reaches the device."""
+        ...
+
+    def read(self) -> bytes:
+        """Bytes the device sent that have arrived by now (consumed)."""
+        ...
+
+    @property
+    def now(self) -> float:
+        """The line's time in seconds."""
+        ...
+
+    def drained(self) -> bool:
+        """Everything written so far has arrived at the device and been taken by it."""
+        ...
