@@ -57,15 +57,15 @@ def sigma_frames() -> Iterator[Any]:
     """The Sigma showcase: the screen after each 1/25 s of line time at 9600 baud."""
     from fractions import Fraction  # imported here: every command builds the demo's parser
 
-    from emulator.sigma import Terminal
-    from protocols.link import LineSettings, chunks_by_period
+    from emulator.harness.sigma_batch import periods
+    from emulator.machine import SigmaMachine
+    from protocols.link import LineSettings
     from protocols.sigma.demo import sigma_demo_stream
 
-    term = Terminal("t5684")
-    for _k, chunk in chunks_by_period(sigma_demo_stream(), LineSettings(baud=9600),
-                                      Fraction(1, FPS)):
-        term.feed(chunk)
-        yield term.frame()
+    machine = SigmaMachine("t5684", LineSettings(baud=9600), xonxoff=False)
+    machine.host.write(sigma_demo_stream())
+    for _k in periods(machine, Fraction(1, FPS)):
+        yield machine.frame()
 
 
 def kas_frames() -> Iterator[Any]:
