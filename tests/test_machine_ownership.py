@@ -59,8 +59,6 @@ NOT_YET: set[tuple[str, str]] = {
     ("camlab88/commands/kas/paint.py", "builds a VirtualClock"),
     ("camlab88/commands/kas/paint.py", "feeds a terminal"),
     ("camlab88/commands/kas/paint.py", "plays the device end of a line"),
-    ("camlab88/commands/sigma/render.py", "advances a clock"),
-    ("camlab88/commands/sigma/render.py", "builds a VirtualClock"),
     ("camlab88/commands/sigma/run.py", "builds a SerialLine"),
     ("camlab88/commands/sigma/run.py", "builds a VirtualClock"),
 }
