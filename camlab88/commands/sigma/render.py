@@ -37,6 +37,7 @@ def _die(message: str) -> SystemExit:
 
 
 def render(args: argparse.Namespace) -> int:
+    from emulator.harness.sigma_batch import settle
     from protocols.sigma.stream_file import StreamFileError, host_bytes, read_stream_file
 
     if args.out is None and args.frames is None:
@@ -56,7 +57,7 @@ def render(args: argparse.Namespace) -> int:
             n = _write_frames(machine, got, settings, Fraction(1, args.fps), args.frames)
             print(f"wrote {n} frames to {args.frames}")
         else:
-            _settle(machine)
+            settle(machine)
     if trace.failed:
         return 1
     if args.out is not None:
@@ -81,12 +82,6 @@ def _machine(model: str, got, settings):
     for t, data in got.arrivals(">"):  # the host end, writing ahead at recorded times
         machine.line.host.write(data, at=max(Fraction(0), t - len(data) * ct))
     return machine
-
-
-def _settle(machine) -> None:
-    """Everything on its way taken, in one step of line time (however far off the last
-    byte's time: a recording may say hours)."""
-    machine.tick(machine.idle_time() - machine.now)
 
 
 def _settings(baud: int):
