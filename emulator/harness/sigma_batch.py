@@ -6,7 +6,10 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from emulator.machine import SigmaMachine
+import numpy as np
+
+from emulator.machine import HostPort, SigmaMachine
+from protocols.link import LineSettings
 from protocols.link.clock import TimeLike, to_time
 
 
@@ -37,3 +40,29 @@ def still(data: bytes, model: str = "t5684") -> SigmaMachine:
     return machine
 
 
+
+
+class MachineLink:
+    """A machine handed to a batch host program (protocols.link.port.BatchLink): its port,
+    and ``wait`` runs the machine until the line is quiet."""
+
+    def __init__(self, machine: SigmaMachine) -> None:
+        self.machine = machine
+
+    @property
+    def port(self) -> HostPort:
+        return self.machine.host
+
+    def wait(self) -> None:
+        settle(self.machine)
+
+    def frame(self) -> np.ndarray:
+        return self.machine.frame()
+
+    def indices(self) -> np.ndarray:
+        return self.machine.indices()
+
+
+def t5688_link() -> MachineLink:
+    """A fresh T5688 on a 9600-baud line (picklable by name, for render workers)."""
+    return MachineLink(SigmaMachine("t5688", LineSettings(baud=9600)))

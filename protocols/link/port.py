@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from typing import Protocol
 
+import numpy as np
+
 
 class HostPort(Protocol):
     """A host program's end of a line to a device, on the line's (virtual) time."""
@@ -30,3 +32,20 @@ class HostPort(Protocol):
     def drained(self) -> bool:
         """Everything written so far has arrived at the device and been taken by it."""
         ...
+
+
+class BatchLink(Protocol):
+    """What a batch host program (a renderer, an exporter) is handed by whoever runs its
+    machine: the ``port``, ``wait()`` -- block until everything written has arrived and been
+    taken, as a host process blocks in tcdrain() while the line runs -- and the screen, to
+    keep (``frame``: RGB, row 0 = top) and to measure (``indices``: LUT indices, row 0 =
+    top)."""
+
+    @property
+    def port(self) -> HostPort: ...
+
+    def wait(self) -> None: ...
+
+    def frame(self) -> np.ndarray: ...
+
+    def indices(self) -> np.ndarray: ...
