@@ -25,16 +25,6 @@ DEVICE = ("emulator/sigma/", "emulator/rainbow/", "emulator/tablet/")
 # Places not moved onto a machine yet.  This list only shrinks.
 NOT_YET: set[tuple[str, str]] = {
     ("camlab88/commands/demo/acts.py", "feeds a terminal"),
-    ("apps/kas/paint/program.py", "advances a clock"),
-    ("apps/kas/paint/program.py", "builds a SerialLine"),
-    ("apps/kas/paint/program.py", "builds a VirtualClock"),
-    ("apps/kas/paint/program.py", "feeds a terminal"),
-    ("apps/kas/paint/program.py", "plays the device end of a line"),
-    ("apps/kas/paint/replay.py", "advances a clock"),
-    ("apps/kas/paint/replay.py", "builds a SerialLine"),
-    ("apps/kas/paint/replay.py", "builds a VirtualClock"),
-    ("apps/kas/paint/replay.py", "feeds a terminal"),
-    ("apps/kas/paint/replay.py", "plays the device end of a line"),
     ("apps/kas/program/demo.py", "advances a clock"),
     ("apps/kas/program/demo.py", "builds a SerialLine"),
     ("apps/kas/program/demo.py", "builds a VirtualClock"),
@@ -49,11 +39,6 @@ NOT_YET: set[tuple[str, str]] = {
     ("apps/kas/program/viewer.py", "builds a VirtualClock"),
     ("apps/kas/program/viewer.py", "feeds a terminal"),
     ("apps/kas/program/viewer.py", "plays the device end of a line"),
-    ("camlab88/commands/kas/paint.py", "advances a clock"),
-    ("camlab88/commands/kas/paint.py", "builds a SerialLine"),
-    ("camlab88/commands/kas/paint.py", "builds a VirtualClock"),
-    ("camlab88/commands/kas/paint.py", "feeds a terminal"),
-    ("camlab88/commands/kas/paint.py", "plays the device end of a line"),
     ("camlab88/commands/sigma/run.py", "builds a SerialLine"),
     ("camlab88/commands/sigma/run.py", "builds a VirtualClock"),
 }

@@ -63,6 +63,11 @@ class MachineLink:
         return self.machine.indices()
 
 
+def link(model: str = "t5684", baud: int = 9600, xonxoff: bool = True) -> MachineLink:
+    """A fresh terminal on its line, handed over as a link."""
+    return MachineLink(SigmaMachine(model, LineSettings(baud=baud), xonxoff))
+
+
 def t5688_link() -> MachineLink:
     """A fresh T5688 on a 9600-baud line (picklable by name, for render workers)."""
-    return MachineLink(SigmaMachine("t5688", LineSettings(baud=9600)))
+    return link("t5688")

@@ -129,20 +129,26 @@ def paint_frames() -> Iterator[Any]:
     """The demo walk (with its rising sun) auto-painted from three operations done on its
     middle frame, every fourth frame painted and replayed double-buffered on a T5688 at 9600
     baud; one picture per 1/25 s of line time."""
+    from fractions import Fraction
+
     from apps.kas import demo
     from apps.kas.paint.ops import Op, OpsFile
     from apps.kas.paint.program import PaintProgram
-    from apps.kas.paint.replay import periods
-    from emulator.sigma import Terminal
+    from apps.kas.paint.replay import ReplayHost
+    from emulator.harness.sigma_batch import periods
+    from emulator.machine import SigmaMachine
+    from protocols.link import LineSettings
 
     seq = demo.build()
     mid = len(seq.frames) // 2
     sun = tuple(seq.frames[mid - 1].chains[2].centre())
     ops = OpsFile(ops=[Op("fill", 3, chains=(2,)), Op("fill", 5, chains=(1,)),
                        Op("region", 27, at=sun)], painted=mid)
-    term = Terminal("t5688")
-    for _ in periods(PaintProgram(seq, ops), term, 9600, FPS, range(1, len(seq.frames) + 1, 4)):
-        yield term.frame()
+    machine = SigmaMachine("t5688", LineSettings(baud=9600), xonxoff=False)
+    host = ReplayHost(PaintProgram(seq, ops), machine.host, range(1, len(seq.frames) + 1, 4))
+    for _ in periods(machine, Fraction(1, FPS)):
+        yield machine.frame()
+        host.step()  # the next frame once the line has delivered the last
 
 
 def snooker_camera_frames() -> Iterator[Any]:
