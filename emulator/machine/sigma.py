@@ -15,32 +15,14 @@ from emulator.sigma import Terminal
 from emulator.sigma.trace import SigmaTracer
 from protocols.link import LineSettings, SerialLine, VirtualClock
 from protocols.link.clock import TimeLike, to_time
+from protocols.link.port import LinePort
 
 TICK = Fraction(1, 100)  # how often the terminal takes what has arrived (as `sigma run`)
 
 
-class HostPort:
-    """The host end of the line: what a host program writes and reads, on virtual time."""
-
-    def __init__(self, line: SerialLine) -> None:
-        self._line = line
-
-    def write(self, data: bytes) -> float:
-        """Queue bytes now; returns the virtual time the last one reaches the terminal."""
-        return self._line.host.write(bytes(data))
-
-    def read(self) -> bytes:
-        """Bytes the terminal sent that have arrived by now (consumed)."""
-        return self._line.host.read()
-
-    @property
-    def now(self) -> float:
-        return self._line.clock.now
-
-    def drained(self) -> bool:
-        """Everything written so far has arrived at the terminal and been taken by it."""
-        host = self._line.host
-        return host.drain_time() <= self._line.clock.now and host.in_flight() == 0
+class HostPort(LinePort):
+    """The host end of the line: what a host program writes and reads, on virtual time
+    (protocols.link.port.LinePort)."""
 
 
 class SigmaMachine:

@@ -8,9 +8,13 @@ business (emulator.machine.SigmaMachine.host satisfies it).
 
 from __future__ import annotations
 
-from typing import Protocol
+from fractions import Fraction
+from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from protocols.link.line import SerialLine
 
 
 class HostPort(Protocol):
@@ -29,9 +33,39 @@ class HostPort(Protocol):
         """The line's time in seconds."""
         ...
 
+    @property
+    def exact(self) -> Fraction:
+        """The line's time as an exact Fraction (for programs that schedule by it)."""
+        ...
+
     def drained(self) -> bool:
         """Everything written so far has arrived at the device and been taken by it."""
         ...
+
+
+class LinePort:
+    """The host end of a SerialLine as a HostPort (what a machine hands its host program)."""
+
+    def __init__(self, line: SerialLine) -> None:
+        self._line = line
+
+    def write(self, data: bytes) -> float:
+        return self._line.host.write(bytes(data))
+
+    def read(self) -> bytes:
+        return self._line.host.read()
+
+    @property
+    def now(self) -> float:
+        return self._line.clock.now
+
+    @property
+    def exact(self) -> Fraction:
+        return self._line.clock.exact
+
+    def drained(self) -> bool:
+        host = self._line.host
+        return host.drain_time() <= self._line.clock.now and host.in_flight() == 0
 
 
 class BatchLink(Protocol):

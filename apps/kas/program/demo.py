@@ -13,7 +13,6 @@ from __future__ import annotations
 from collections.abc import Iterator
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
 
 from apps.kas import demo as kas_demo
 from apps.kas import files
@@ -23,8 +22,10 @@ from apps.kas.program.editor_front import EditorFront
 from apps.kas.program.script import Session, parse_timed_script
 from apps.kas.program.viewer import LineTest, ViewerReport
 from protocols.link import LineSettings, SerialLine, VirtualClock
+from protocols.link.port import LinePort
 
 PAUSE = Fraction(2)  # seconds of line time between the editor and the viewer
+TICK = Fraction(1, 100)  # the editor session's polling period
 
 DEMO_SCRIPT = """
 # the animator adds a small wandering line in yellow, then looks at edit mode's cursors
@@ -73,26 +74,27 @@ class DemoSession:
                 return
 
 
-class _NullTerminal:
-    """Stands in for a terminal while the host side is generated (keys never come)."""
+def _editor_part(session: Session, line: SerialLine) -> None:
+    """The editor session's host bytes on a line with no terminal at its end (so no key
+    ever comes back up: the demo's key lines do nothing, as they always have)."""
+    session.begin()
+    events = parse_timed_script(DEMO_SCRIPT, "demo script")
+    i = 0
+    while i < len(events) or session.busy():
+        mouse, _keys, i = session.due(events, i)
+        session.step(mouse)
+        line.device.read()  # nobody there: what arrives is only counted as arrived
+        line.clock.advance(TICK)
 
-    on_output: Any = None
 
-    def feed(self, data: bytes) -> None:
-        return None
-
-    def key(self, char: str) -> None:
-        return None
-
-
-def demo_session(terminal: Any = None) -> DemoSession:
-    """The demo's host bytes with their line times (9600 baud).  With a ``terminal`` the
-    editor part is also fed to it as it arrives."""
+def demo_session() -> DemoSession:
+    """The demo's host bytes with their line times (9600 baud)."""
     ed = Editor(files.load_keyframe(LIBRARY / "walk_a.kas"),
                 guide=files.load_keyframe(LIBRARY / "walk_b.kas"))
-    session = Session(EditorFront(ed), terminal or _NullTerminal())
-    session.run_script(parse_timed_script(DEMO_SCRIPT, "demo script"))
-    editor_end = session.line.host.drain_time_exact()
+    line = SerialLine(LineSettings(baud=9600), VirtualClock())
+    session = Session(EditorFront(ed), LinePort(line))
+    _editor_part(session, line)
+    editor_end = line.host.drain_time_exact()
     test = LineTest(kas_demo.build())
     rep = test.run("realtime", 9600)
     every = test.run("every", 9600)
