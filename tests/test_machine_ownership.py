@@ -24,7 +24,6 @@ DEVICE = ("emulator/sigma/", "emulator/rainbow/", "emulator/tablet/")
 
 # Places not moved onto a machine yet.  This list only shrinks.
 NOT_YET: set[tuple[str, str]] = {
-    ("camlab88/commands/demo/acts.py", "feeds a terminal"),
     ("apps/kas/program/demo.py", "advances a clock"),
     ("apps/kas/program/demo.py", "builds a SerialLine"),
     ("apps/kas/program/demo.py", "builds a VirtualClock"),

@@ -73,12 +73,15 @@ def kas_frames() -> Iterator[Any]:
     from fractions import Fraction
 
     from apps.kas.program import demo_session
-    from emulator.sigma import Terminal
+    from emulator.harness.sigma_batch import periods
+    from emulator.machine import SigmaMachine
+    from protocols.link import LineSettings
 
-    term = Terminal("t5684")
-    for _k, data in demo_session().arrivals(Fraction(1, FPS)):
-        term.feed(data)
-        yield term.frame()
+    machine = SigmaMachine("t5684", LineSettings(baud=9600))
+    for t, data in demo_session().chunks:  # the host's writes, each at its line time
+        machine.line.host.write(data, at=t)
+    for _k in periods(machine, Fraction(1, FPS)):
+        yield machine.frame()
 
 
 def snooker_frames() -> Iterator[Any]:
