@@ -13,10 +13,11 @@ from apps.kas.editor import Editor
 from apps.kas.program import EditorFront, LineTest, Session, parse_timed_script
 from apps.kas.program.draw import encode
 from apps.kas.program.keyboard import key_to_bytes
-from apps.kas.program.viewer import VIEW_CLIP, chain_prims, frame_points_px
+from apps.kas.program.viewer import VIEW_CLIP, ViewerHost, chain_prims, frame_points_px
 from emulator.harness.sigma import SigmaSessionRun
+from emulator.harness.sigma_batch import host_periods
 from emulator.machine import SigmaMachine
-from emulator.sigma import Terminal
+from protocols.link import LineSettings
 from protocols.sigma import Encoder
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -49,8 +50,9 @@ def viewer() -> None:
               f"characters a frame incl. 84 for the LUT swap): {baud} baud -> "
               f"{len(rep.shown)} shown, {len(rep.dropped)} dropped")
     t1 = time.perf_counter()
-    frames = []
-    test.run("every", 9600, terminal=Terminal("t5684"), on_period=lambda k, t: frames.append(k))
+    machine = SigmaMachine("t5684")
+    host = ViewerHost(test, "every", machine.host, LineSettings(baud=9600))
+    frames = list(host_periods(machine, host, host.period))
     t2 = time.perf_counter()
     print(f"viewer: four real-time runs (host side) {t1 - t0:.3f} s; every-frame run fed to the "
           f"emulated terminal, {len(frames)} periods: {t2 - t1:.2f} s wall")

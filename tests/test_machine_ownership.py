@@ -31,8 +31,6 @@ NOT_YET: set[tuple[str, str]] = {
     ("apps/kas/program/viewer.py", "advances a clock"),
     ("apps/kas/program/viewer.py", "builds a SerialLine"),
     ("apps/kas/program/viewer.py", "builds a VirtualClock"),
-    ("apps/kas/program/viewer.py", "feeds a terminal"),
-    ("apps/kas/program/viewer.py", "plays the device end of a line"),
     ("camlab88/commands/sigma/run.py", "builds a SerialLine"),
     ("camlab88/commands/sigma/run.py", "builds a VirtualClock"),
 }

@@ -146,14 +146,14 @@ class SigmaProgramTarget:
 
 
 class PeriodTarget:
-    """A terminal fed period by period by a program's generator (KAS's line test): each
-    tick takes one period (``next(periods)`` feeds the terminal and yields its index); the
-    generator's return value is kept in ``result``."""
+    """A machine run period by period by a generator (KAS's line test, through
+    sigma_batch.host_periods): each tick takes one period (``next(periods)`` runs the
+    machine and yields its index); the generator's return value is kept in ``result``."""
 
     keys = "close the window to stop"
 
-    def __init__(self, term: Any, periods: Any, fps: float, title: str) -> None:
-        self.term, self.periods, self.title = term, periods, title
+    def __init__(self, machine: SigmaMachine, periods: Any, fps: float, title: str) -> None:
+        self.machine, self.periods, self.title = machine, periods, title
         self._period = Fraction(fps).limit_denominator(10000)
         self.fps = self._period  # exact, so every period is shown
         self.size = (768, 512)
@@ -172,7 +172,7 @@ class PeriodTarget:
         return True
 
     def frame(self) -> np.ndarray:
-        return self.term.frame()
+        return self.machine.frame()
 
     def time(self) -> Fraction:
         return self.k / self._period

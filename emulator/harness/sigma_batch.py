@@ -4,7 +4,8 @@ interactive runs tick a machine in the harness loop (emulator.harness.sigma)."""
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Generator, Iterator
+from typing import Any
 
 import numpy as np
 
@@ -71,3 +72,24 @@ def link(model: str = "t5684", baud: int = 9600, xonxoff: bool = True) -> Machin
 def t5688_link() -> MachineLink:
     """A fresh T5688 on a 9600-baud line (picklable by name, for render workers)."""
     return link("t5688")
+
+
+def host_periods(machine: SigmaMachine, host: Any, period: TimeLike) -> Generator[int, None, Any]:
+    """A host program that acts at line times of its choosing (``host.wake``, None once it
+    is done; ``host.act()``) on a machine shown period by period: the machine runs to each
+    wake time in the period and the host acts, then to the period's end, and k is yielded;
+    it ends when the host is done and every byte has arrived; returns ``host.finish()``."""
+    p = to_time(period)
+    k = 0
+    while True:
+        boundary = (k + 1) * p
+        if host.wake is not None and host.wake <= boundary:
+            machine.run_until(max(host.wake, machine.now))
+            host.act()
+            continue
+        if host.wake is None and k * p >= machine.host.drain_exact():
+            break
+        machine.run_until(boundary)
+        yield k
+        k += 1
+    return host.finish()

@@ -46,6 +46,9 @@ class StreamPort:
     def drained(self) -> bool:
         return True
 
+    def drain_exact(self) -> Fraction:
+        return self.exact
+
 
 class RainbowMachine:
     """Device + executor + stream port (``host``) + pad-library client (``client``)."""

@@ -42,6 +42,11 @@ class HostPort(Protocol):
         """Everything written so far has arrived at the device and been taken by it."""
         ...
 
+    def drain_exact(self) -> Fraction:
+        """The exact line time everything written so far will have arrived (for programs
+        that schedule by it)."""
+        ...
+
 
 class LinePort:
     """The host end of a SerialLine as a HostPort (what a machine hands its host program)."""
@@ -66,6 +71,9 @@ class LinePort:
     def drained(self) -> bool:
         host = self._line.host
         return host.drain_time() <= self._line.clock.now and host.in_flight() == 0
+
+    def drain_exact(self) -> Fraction:
+        return Fraction(self._line.host.drain_time_exact())
 
 
 class BatchLink(Protocol):
