@@ -31,8 +31,6 @@ NOT_YET: set[tuple[str, str]] = {
     ("apps/kas/program/viewer.py", "advances a clock"),
     ("apps/kas/program/viewer.py", "builds a SerialLine"),
     ("apps/kas/program/viewer.py", "builds a VirtualClock"),
-    ("camlab88/commands/sigma/run.py", "builds a SerialLine"),
-    ("camlab88/commands/sigma/run.py", "builds a VirtualClock"),
 }
 
 

@@ -15,6 +15,7 @@ from emulator.sigma import Terminal
 from emulator.sigma.trace import SigmaTracer
 from protocols.link import LineSettings, SerialLine, VirtualClock
 from protocols.link.clock import TimeLike, to_time
+from protocols.link.line import RecorderLike
 from protocols.link.port import LinePort
 
 TICK = Fraction(1, 100)  # how often the terminal takes what has arrived (as `sigma run`)
@@ -31,10 +32,10 @@ class SigmaMachine:
     FPS = 25
 
     def __init__(self, model: str = "t5684", settings: LineSettings | None = None,
-                 xonxoff: bool = True) -> None:
+                 xonxoff: bool = True, recorder: RecorderLike | None = None) -> None:
         self.settings = settings or LineSettings()
         self.clock = VirtualClock()
-        self.line = SerialLine(self.settings, self.clock, xonxoff)
+        self.line = SerialLine(self.settings, self.clock, xonxoff, recorder)
         self.terminal = Terminal(model)
         self.terminal.on_output = self._up
         self.host = HostPort(self.line)
@@ -48,29 +49,31 @@ class SigmaMachine:
     def now(self) -> Fraction:
         return self.clock.exact
 
-    def tick(self, dt: TimeLike = TICK, take_first: bool = False) -> None:
+    def tick(self, dt: TimeLike = TICK, take_first: bool = False) -> bytes:
         """Advance the clock by ``dt``; the terminal takes every byte that has arrived.
         ``take_first``: it takes them before the clock moves instead, so the screen after
         the tick is the line as it stood at the tick's start (the KAS programs' order,
-        kept so their sessions show what they always showed)."""
+        kept so their sessions show what they always showed).  Returns the bytes taken."""
         if take_first:
-            self.take()
+            taken = self.take()
             self.clock.advance(dt)
-            return
+            return taken
         self.clock.advance(dt)
-        self.take()
+        return self.take()
 
-    def take(self) -> None:
-        """The terminal takes every byte that has arrived by now."""
+    def take(self) -> bytes:
+        """The terminal takes every byte that has arrived by now (returned)."""
         if self.tracer is None:
             data = self.line.device.read()
             if data:
                 self.terminal.feed(data)
-            return
+            return data
         step = self.settings.char_time
-        for t_last, data in self.line.device.read_timed(exact=True):
+        runs = self.line.device.read_timed(exact=True)
+        for t_last, data in runs:
             first = t_last - (len(data) - 1) * step
             self.tracer.feed(data, float(first), float(step))
+        return b"".join(data for _t, data in runs)
 
     def run_until(self, t: TimeLike, tick: TimeLike = TICK) -> None:
         """Tick (at most ``tick`` at a time) until the clock reads ``t``."""
