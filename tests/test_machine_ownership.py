@@ -22,17 +22,6 @@ OWNERS = ("emulator/machine/", "emulator/harness/", "camlab88/bench/")
 # the device packages themselves (a terminal warming its own kernels, a tracer's decoder)
 DEVICE = ("emulator/sigma/", "emulator/rainbow/", "emulator/tablet/")
 
-# Places not moved onto a machine yet.  This list only shrinks.
-NOT_YET: set[tuple[str, str]] = {
-    ("apps/kas/program/demo.py", "advances a clock"),
-    ("apps/kas/program/demo.py", "builds a SerialLine"),
-    ("apps/kas/program/demo.py", "builds a VirtualClock"),
-    ("apps/kas/program/demo.py", "plays the device end of a line"),
-    ("apps/kas/program/viewer.py", "advances a clock"),
-    ("apps/kas/program/viewer.py", "builds a SerialLine"),
-    ("apps/kas/program/viewer.py", "builds a VirtualClock"),
-}
-
 
 def _name(node: ast.AST) -> str:
     """The last name of a receiver: ``a.b.clock`` -> ``clock``, ``term`` -> ``term``."""
@@ -81,15 +70,10 @@ def violations() -> dict[tuple[str, str], int]:
 
 
 def test_only_machines_and_the_harness_run_a_device_on_its_line() -> None:
-    new = {k: n for k, n in violations().items() if k not in NOT_YET}
-    assert not new, "runs a device, line or clock outside emulator/machine and " \
+    found = violations()
+    assert not found, "runs a device, line or clock outside emulator/machine and " \
         "emulator/harness (give the program a port; let the harness run the machine):\n" + \
-        "\n".join(f"  {path}: {kind} ({n}x)" for (path, kind), n in sorted(new.items()))
-
-
-def test_the_list_of_places_not_moved_yet_only_names_real_places() -> None:
-    stale = set(NOT_YET) - set(violations())
-    assert not stale, f"moved onto a machine: remove from NOT_YET: {sorted(stale)}"
+        "\n".join(f"  {path}: {kind} ({n}x)" for (path, kind), n in sorted(found.items()))
 
 
 def test_the_scan_sees_each_kind_of_call() -> None:

@@ -21,8 +21,8 @@ from apps.kas.library import LIBRARY
 from apps.kas.program.editor_front import EditorFront
 from apps.kas.program.script import Session, parse_timed_script
 from apps.kas.program.viewer import LineTest, ViewerReport
-from protocols.link import LineSettings, SerialLine, VirtualClock
-from protocols.link.port import LinePort
+from protocols.link import LineSettings
+from protocols.link.host_only import HostOnlyLine
 
 PAUSE = Fraction(2)  # seconds of line time between the editor and the viewer
 TICK = Fraction(1, 100)  # the editor session's polling period
@@ -58,23 +58,22 @@ class DemoSession:
     def arrivals(self, period: Fraction = Fraction(1, 25)) -> Iterator[tuple[int, bytes]]:
         """``(k, bytes)``: what reaches the terminal in each period of line time when the
         chunks are written to a 9600-baud line at their times (feed them, show a frame)."""
-        clock = VirtualClock()
-        line = SerialLine(LineSettings(baud=9600), clock)
+        line = HostOnlyLine(LineSettings(baud=9600))
         i, k = 0, 0
         while True:
             end = (k + 1) * period
             while i < len(self.chunks) and self.chunks[i][0] <= end:
-                clock.advance_to(max(self.chunks[i][0], clock.exact))
-                line.host.write(self.chunks[i][1])
+                line.run_to(self.chunks[i][0])
+                line.port.write(self.chunks[i][1])
                 i += 1
-            clock.advance_to(end)
-            yield k, line.device.read()
+            line.run_to(end)
+            yield k, line.take()
             k += 1
-            if i == len(self.chunks) and line.host.in_flight() == 0:
+            if i == len(self.chunks) and line.in_flight() == 0:
                 return
 
 
-def _editor_part(session: Session, line: SerialLine) -> None:
+def _editor_part(session: Session, line: HostOnlyLine) -> None:
     """The editor session's host bytes on a line with no terminal at its end (so no key
     ever comes back up: the demo's key lines do nothing, as they always have)."""
     session.begin()
@@ -83,18 +82,18 @@ def _editor_part(session: Session, line: SerialLine) -> None:
     while i < len(events) or session.busy():
         mouse, _keys, i = session.due(events, i)
         session.step(mouse)
-        line.device.read()  # nobody there: what arrives is only counted as arrived
-        line.clock.advance(TICK)
+        line.take()  # nobody there: what arrives is only counted as arrived
+        line.run_to(line.now + TICK)
 
 
 def demo_session() -> DemoSession:
     """The demo's host bytes with their line times (9600 baud)."""
     ed = Editor(files.load_keyframe(LIBRARY / "walk_a.kas"),
                 guide=files.load_keyframe(LIBRARY / "walk_b.kas"))
-    line = SerialLine(LineSettings(baud=9600), VirtualClock())
-    session = Session(EditorFront(ed), LinePort(line))
+    line = HostOnlyLine(LineSettings(baud=9600))
+    session = Session(EditorFront(ed), line.port)
     _editor_part(session, line)
-    editor_end = line.host.drain_time_exact()
+    editor_end = line.port.drain_exact()
     test = LineTest(kas_demo.build())
     rep = test.run("realtime", 9600)
     every = test.run("every", 9600)

@@ -36,8 +36,9 @@ import numpy as np
 from apps.kas.model import FIELD_H, PALETTE, AnimSequence, Drawing
 from apps.kas.program.base import setup_bytes
 from apps.kas.program.draw import chain_prims, encode
-from protocols.link import LineSettings, SerialLine, VirtualClock
-from protocols.link.port import HostPort, LinePort
+from protocols.link import LineSettings
+from protocols.link.host_only import HostOnlyLine
+from protocols.link.port import HostPort
 from protocols.sigma import Encoder
 
 VIEW_SCALE = 512 / FIELD_H          # the twelve-field fills the screen's height
@@ -197,10 +198,10 @@ class LineTest:
         """Play the sequence over a line at ``baud`` with nobody at its end: what the host
         sends and when (a line of its own: the host's side only)."""
         settings = LineSettings(baud=baud)
-        line = SerialLine(settings, VirtualClock())
-        host = ViewerHost(self, mode, LinePort(line), settings, fps)
+        line = HostOnlyLine(settings)
+        host = ViewerHost(self, mode, line.port, settings, fps)
         while host.wake is not None:
-            line.clock.advance_to(max(host.wake, line.clock.exact))
+            line.run_to(host.wake)
             host.act()
         return host.finish()
 
