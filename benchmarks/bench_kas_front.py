@@ -12,8 +12,12 @@ from apps.kas import demo
 from apps.kas.editor import Editor
 from apps.kas.program import EditorFront, LineTest, Session, parse_timed_script
 from apps.kas.program.draw import encode
-from apps.kas.program.viewer import VIEW_CLIP, chain_prims, frame_points_px
-from emulator.sigma import Terminal
+from apps.kas.program.keyboard import key_to_bytes
+from apps.kas.program.viewer import VIEW_CLIP, ViewerHost, chain_prims, frame_points_px
+from emulator.harness.sigma import SigmaSessionRun
+from emulator.harness.sigma_batch import host_periods
+from emulator.machine import SigmaMachine
+from protocols.link import LineSettings
 from protocols.sigma import Encoder
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -23,13 +27,15 @@ def editor_session() -> None:
     text = (ROOT / "tests/data/kas_front/edit_all.txt").read_text()
     t0 = time.perf_counter()
     front = EditorFront(Editor(seed=1))
-    s = Session(front, Terminal("t5684"))
+    machine = SigmaMachine("t5684")
+    s = SigmaSessionRun(machine, Session(front, machine.host), key_to_bytes)
     s.run_script(parse_timed_script(text, "edit_all"))
     wall = time.perf_counter() - t0
-    sent = sum(len(d) for _, d in s.sent)
-    first = len(s.sent[0][1])
-    print(f"editor, edit_all.txt: {float(s.clock.exact):.2f} s of line time in {wall:.2f} s "
-          f"wall; {len(s.sent)} writes, {sent} characters ({first} for the start-up screen), "
+    sent = sum(len(d) for _, d in s.session.sent)
+    first = len(s.session.sent[0][1])
+    print(f"editor, edit_all.txt: {float(machine.now):.2f} s of line time in {wall:.2f} s "
+          f"wall; {len(s.session.sent)} writes, {sent} characters ({first} for the start-up "
+          "screen), "
           f"{front.painter.stats['erased']} erase blocks")
 
 
@@ -44,8 +50,9 @@ def viewer() -> None:
               f"characters a frame incl. 84 for the LUT swap): {baud} baud -> "
               f"{len(rep.shown)} shown, {len(rep.dropped)} dropped")
     t1 = time.perf_counter()
-    frames = []
-    test.run("every", 9600, terminal=Terminal("t5684"), on_period=lambda k, t: frames.append(k))
+    machine = SigmaMachine("t5684")
+    host = ViewerHost(test, "every", machine.host, LineSettings(baud=9600))
+    frames = list(host_periods(machine, host, host.period))
     t2 = time.perf_counter()
     print(f"viewer: four real-time runs (host side) {t1 - t0:.3f} s; every-frame run fed to the "
           f"emulated terminal, {len(frames)} periods: {t2 - t1:.2f} s wall")

@@ -23,7 +23,7 @@ from apps.snooker.render.palette import adaptive_palette, fixed_palette  # noqa:
 from apps.snooker.render.sigma_host import SigmaHost  # noqa: E402
 from apps.snooker.render.sigma_session import SigmaSession  # noqa: E402
 from apps.snooker.render.truecolour import RenderOptions, render_frame, render_linear  # noqa: E402
-from emulator.sigma import Terminal  # noqa: E402
+from emulator.harness.sigma_batch import t5688_link  # noqa: E402
 from tests.snooker_render.helpers import break_scene, break_views  # noqa: E402
 
 
@@ -101,8 +101,7 @@ def bench_sigma(frames: list[int]) -> None:
     scene, views = break_scene(), break_views()
     pal = fixed_palette(scene)
     for mode in ("period", "fixed", "adapted"):
-        term = Terminal("t5688")
-        session = SigmaSession(SigmaHost(scene, pal, mode), term)
+        session = SigmaSession(SigmaHost(scene, pal, mode), t5688_link())
         for f in frames:
             t = time.perf_counter()
             sent = session.show(views[f - 1])

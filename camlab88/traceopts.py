@@ -48,12 +48,6 @@ class TraceRun:
         if ev.warning is not None:
             self.problems += 1
 
-    def stream_feeder(self, term: Any, got: Any, char_time: Any) -> Callable[[bytes], None]:
-        from emulator.sigma.trace_stream import StreamTracer
-
-        assert self.sink is not None
-        return StreamTracer(term, got, char_time, self.sink, self.strict).feed
-
 
 @contextmanager
 def open_trace(args: argparse.Namespace, command: str, source: str) -> Iterator[TraceRun]:

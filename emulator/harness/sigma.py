@@ -4,29 +4,79 @@ line served to outside programs (``sigma run``) is emulator.harness.sigma_line."
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from fractions import Fraction
 from typing import Any
 
 import numpy as np
 
 from emulator.host_input import HostEvent
+from emulator.machine import SigmaMachine
+
+TICK = Fraction(1, 100)  # a program session's polling period: line time between polls
+
+
+class SigmaSessionRun:
+    """A program session on a Sigma machine, run: each ``step`` the keys are struck on the
+    terminal's keyboard (they travel up the line), the session polls (``session.step(mouse)``:
+    input in, update out, through the machine's port) and the machine moves on ``TICK`` with
+    the terminal taking what had arrived at the tick's start (the order the KAS programs have
+    always shown).  ``session`` has ``step``, ``due``, ``busy``, ``begin`` and ``front``
+    (apps side, duck-typed); ``key_bytes`` turns a key name into what the key sends."""
+
+    def __init__(self, machine: SigmaMachine, session: Any,
+                 key_bytes: Callable[[str], bytes]) -> None:
+        self.machine, self.session, self.key_bytes = machine, session, key_bytes
+
+    @property
+    def terminal(self) -> Any:
+        return self.machine.terminal
+
+    def step(self, mouse: list[Any] | tuple = (), keys: list[str] | tuple = ()) -> None:
+        self.session.begin()
+        for k in keys:
+            self.machine.key(self.key_bytes(k).decode("latin-1"))
+        self.session.step(mouse)
+        self.machine.tick(TICK, take_first=True)
+
+    def busy(self) -> bool:
+        """The screen is not up to date or the line is not quiet (either way)."""
+        return bool(self.session.busy() or self.machine.line.device.in_flight())
+
+    def run_script(self, events: list[Any], settle: bool = True) -> None:
+        self.session.begin()
+        i = 0
+        while i < len(events):
+            mouse, keys, i = self.session.due(events, i)
+            self.step(mouse, keys)
+        if settle:
+            self.settle()
+
+    def settle(self, limit: float = 3600.0) -> None:
+        """Run until the screen is up to date and the line is quiet."""
+        self.session.begin()
+        end = self.machine.now + Fraction(limit)
+        while self.busy():
+            if self.machine.now > end:
+                raise RuntimeError(f"the session did not settle within {limit} s of line time")
+            self.step()
 
 
 class SigmaProgramTarget:
-    """A program session on a Sigma over the line (KAS's editor and path fronts): ``session``
-    has ``step(mouse, keys)``, ``due(events, i)``, ``busy()``, ``clock`` and ``front``
-    (protocols side, duck-typed).  Window keys named in ``key_names`` (or printable
-    characters) are struck on the terminal; the left mouse button is the stylus tip.  A
-    timed ``script`` (session events) plays first; with ``end_with_script`` the run ends once
-    it has played and the screen has settled (at most ``settle_limit`` s more)."""
+    """A program session on a Sigma machine (KAS's editor and path fronts; see
+    ``SigmaSessionRun``).  Window keys named in ``key_names`` (or printable characters) are
+    struck on the terminal; the left mouse button is the stylus tip.  A timed ``script``
+    (session events) plays first; with ``end_with_script`` the run ends once it has played
+    and the screen has settled (at most ``settle_limit`` s more)."""
 
     fps = 25
     escape_is_a_key = True  # the KAS fronts: Esc cancels, or asks before quitting
 
-    def __init__(self, session: Any, title: str, keys: str, key_names: frozenset[str],
-                 script: list[Any], end_with_script: bool,
+    def __init__(self, run: SigmaSessionRun, title: str, keys: str,
+                 key_names: frozenset[str], script: list[Any], end_with_script: bool,
                  settle_limit: Fraction = Fraction(3600)) -> None:
-        self.session, self.title, self.keys = session, title, keys
+        self.run, self.session = run, run.session
+        self.title, self.keys = title, keys
         self.size = (768, 512)
         self.key_names = key_names
         self.script, self.i = script, 0
@@ -57,7 +107,7 @@ class SigmaProgramTarget:
         mouse, keys = [], []
         if self.i < len(self.script):
             mouse, keys, self.i = self.session.due(self.script, self.i)
-        self.session.step(mouse + self._mouse, keys + self._keys)
+        self.run.step(mouse + self._mouse, keys + self._keys)
         self._mouse, self._keys = [], []
         if getattr(self.session.front, "quitting", False):
             return False  # the program was asked to quit (Esc) and may
@@ -67,19 +117,19 @@ class SigmaProgramTarget:
         """The script has played and the screen is up to date (the line quiet)."""
         if self.i < len(self.script):
             return False
-        if self.session.busy() and self.time() > self._script_end() + self.settle_limit:
+        if self.run.busy() and self.time() > self._script_end() + self.settle_limit:
             raise ValueError(f"the session did not settle within {self.settle_limit} s of "
                              "line time")
-        return not self.session.busy()
+        return not self.run.busy()
 
     def _script_end(self) -> Fraction:
         return self.script[-1].t if self.script else Fraction(0)
 
     def frame(self) -> np.ndarray:
-        return self.session.terminal.frame()
+        return self.run.machine.frame()
 
     def time(self) -> Fraction:
-        return self.session.clock.exact
+        return self.run.machine.now
 
     def may_close(self) -> bool:
         return bool(self.session.front.may_close())
@@ -97,14 +147,14 @@ class SigmaProgramTarget:
 
 
 class PeriodTarget:
-    """A terminal fed period by period by a program's generator (KAS's line test): each
-    tick takes one period (``next(periods)`` feeds the terminal and yields its index); the
-    generator's return value is kept in ``result``."""
+    """A machine run period by period by a generator (KAS's line test, through
+    sigma_batch.host_periods): each tick takes one period (``next(periods)`` runs the
+    machine and yields its index); the generator's return value is kept in ``result``."""
 
     keys = "Esc or close the window to stop"
 
-    def __init__(self, term: Any, periods: Any, fps: float, title: str) -> None:
-        self.term, self.periods, self.title = term, periods, title
+    def __init__(self, machine: SigmaMachine, periods: Any, fps: float, title: str) -> None:
+        self.machine, self.periods, self.title = machine, periods, title
         self._period = Fraction(fps).limit_denominator(10000)
         self.fps = self._period  # exact, so every period is shown
         self.size = (768, 512)
@@ -123,7 +173,7 @@ class PeriodTarget:
         return True
 
     def frame(self) -> np.ndarray:
-        return self.term.frame()
+        return self.machine.frame()
 
     def time(self) -> Fraction:
         return self.k / self._period

@@ -19,6 +19,7 @@ from typing import Any
 import numpy as np
 
 from emulator.host_input import HostEvent
+from emulator.machine import SigmaMachine
 from emulator.sigma.host_input import KEYS_HINT, to_terminal
 
 TICK = Fraction(1, 100)  # virtual seconds per tick
@@ -56,18 +57,19 @@ class OutsideTap:
 
 
 class SigmaLineTarget:
-    """``term`` (emulator.sigma.Terminal) on ``line`` (protocols.link.SerialLine), whose
-    host end ``bridge`` serves (None in a replay: the recorded outside traffic comes back
-    through ``put_wire`` / ``put_hang_up``).  Runs until ``until`` seconds of line time
-    (None: for ever)."""
+    """A Sigma machine whose line's host end ``bridge`` serves (None in a replay: the
+    recorded outside traffic comes back through ``put_wire`` / ``put_hang_up``).  Runs until
+    ``until`` seconds of line time (None: for ever).  Set the machine's tracer
+    (``machine.trace``) for ``--trace`` / ``--strict``."""
 
     fps = 25
     escape_is_a_key = True  # a terminal key: host programs read ESC (close the window quits)
 
-    def __init__(self, term: Any, line: Any, bridge: Any, title: str,
+    def __init__(self, machine: SigmaMachine, bridge: Any, title: str,
                  until: Fraction | None = None, report: Any = None,
                  order_timeout: Fraction = ORDER_TIMEOUT) -> None:
-        self.term, self.line, self.bridge = term, line, bridge
+        self.machine, self.bridge = machine, bridge
+        self.term, self.line = machine.terminal, machine.line
         self.title, self.keys = title, KEYS_HINT
         self.size = (768, 512)
         self.until = until
@@ -79,13 +81,13 @@ class SigmaLineTarget:
         self._replayed: list[tuple[str, bytes]] = []  # a replay's outside traffic, this tick
         self._order_since: Fraction | None = None  # when the unfinished order began
         self._commands = 0
-        self.tap = OutsideTap(line.host, self._line_hung_up)  # the bridge's endpoint
-        self.tracer: Any = None  # emulator.sigma.trace.SigmaTracer for --trace / --strict
-        term.on_output = self._up
+        self.tap = OutsideTap(self.line.host, self._line_hung_up)  # the bridge's endpoint
+        self._machine_up = self.term.on_output
+        self.term.on_output = self._up
 
     def _up(self, data: bytes) -> None:
         self._sent += data
-        self.line.device.write(data)
+        self._machine_up(data)
 
     def handle_events(self, events: list[HostEvent]) -> None:
         # A new tick: an earlier tick's traffic nobody recorded is forgotten (memory bounded)
@@ -98,25 +100,12 @@ class SigmaLineTarget:
 
     def tick(self) -> bool:
         self._outside()
-        if self.tracer is None:
-            self._received = self.line.device.read()
-            if self._received:
-                self.term.feed(self._received)
-        else:
-            self._received = self._traced()
+        # the terminal takes what has arrived by the tick's start, then the line moves on
+        self._received = self.machine.tick(TICK, take_first=True)
         if self._received:
             self._frame = None
-        self._watch_order()
-        self.line.clock.advance(TICK)
-        return self.until is None or self.line.clock.exact < self.until
-
-    def _traced(self) -> bytes:
-        """This tick's bytes through the tracer, each at its arrival time."""
-        runs = self.line.device.read_timed(exact=True)
-        step = self.line.settings.char_time
-        for t_last, data in runs:
-            self.tracer.feed(data, float(t_last - (len(data) - 1) * step), float(step))
-        return b"".join(data for _t, data in runs)
+        self._watch_order(self.machine.now - TICK)
+        return self.until is None or self.machine.now < self.until
 
     def _outside(self) -> None:
         """The outside end's turn: the bridge polled, or a replay's recorded traffic."""
@@ -138,15 +127,15 @@ class SigmaLineTarget:
             if ev.kind in ("error", "disconnected", "refused"):
                 self.report(ev.kind, ev.detail)
 
-    def _watch_order(self) -> None:
-        """Note when the order now unfinished at the terminal began (this tick, if an order
-        was completed or none was pending)."""
+    def _watch_order(self, now: Fraction) -> None:
+        """Note when the order now unfinished at the terminal began (``now``, this tick's
+        start, if an order was completed or none was pending)."""
         decoder = self.term.decoder
         done, self._commands = self._commands != decoder.stats.commands, decoder.stats.commands
         if not decoder.mid_order:
             self._order_since = None
         elif self._order_since is None or done:
-            self._order_since = self.line.clock.exact
+            self._order_since = now
 
     def _order_overdue(self) -> bool:
         since = self._order_since

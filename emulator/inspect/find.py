@@ -12,6 +12,7 @@ PANEL_WIDTH = 384  # pixels beside the screen (64 characters of the ROM font)
 
 def _sigma_terminal(target: Any) -> Any:
     for term in (getattr(target, "term", None),
+                 getattr(getattr(target, "machine", None), "terminal", None),
                  getattr(getattr(target, "session", None), "terminal", None)):
         if term is not None and hasattr(term, "planes") and hasattr(term, "reg"):
             return term

@@ -5,6 +5,7 @@ program writes command frames to (``host``) and a pad-library client on that por
 from __future__ import annotations
 
 from collections.abc import Callable
+from fractions import Fraction
 
 import numpy as np
 
@@ -38,8 +39,15 @@ class StreamPort:
     def now(self) -> float:
         return self._machine.device.time_ms / 1000
 
+    @property
+    def exact(self) -> Fraction:
+        return Fraction(self._machine.device.time_ms, 1000)
+
     def drained(self) -> bool:
         return True
+
+    def drain_exact(self) -> Fraction:
+        return self.exact
 
 
 class RainbowMachine:

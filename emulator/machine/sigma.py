@@ -15,32 +15,15 @@ from emulator.sigma import Terminal
 from emulator.sigma.trace import SigmaTracer
 from protocols.link import LineSettings, SerialLine, VirtualClock
 from protocols.link.clock import TimeLike, to_time
+from protocols.link.line import RecorderLike
+from protocols.link.port import LinePort
 
 TICK = Fraction(1, 100)  # how often the terminal takes what has arrived (as `sigma run`)
 
 
-class HostPort:
-    """The host end of the line: what a host program writes and reads, on virtual time."""
-
-    def __init__(self, line: SerialLine) -> None:
-        self._line = line
-
-    def write(self, data: bytes) -> float:
-        """Queue bytes now; returns the virtual time the last one reaches the terminal."""
-        return self._line.host.write(bytes(data))
-
-    def read(self) -> bytes:
-        """Bytes the terminal sent that have arrived by now (consumed)."""
-        return self._line.host.read()
-
-    @property
-    def now(self) -> float:
-        return self._line.clock.now
-
-    def drained(self) -> bool:
-        """Everything written so far has arrived at the terminal and been taken by it."""
-        host = self._line.host
-        return host.drain_time() <= self._line.clock.now and host.in_flight() == 0
+class HostPort(LinePort):
+    """The host end of the line: what a host program writes and reads, on virtual time
+    (protocols.link.port.LinePort)."""
 
 
 class SigmaMachine:
@@ -49,10 +32,10 @@ class SigmaMachine:
     FPS = 25
 
     def __init__(self, model: str = "t5684", settings: LineSettings | None = None,
-                 xonxoff: bool = True) -> None:
+                 xonxoff: bool = True, recorder: RecorderLike | None = None) -> None:
         self.settings = settings or LineSettings()
         self.clock = VirtualClock()
-        self.line = SerialLine(self.settings, self.clock, xonxoff)
+        self.line = SerialLine(self.settings, self.clock, xonxoff, recorder)
         self.terminal = Terminal(model)
         self.terminal.on_output = self._up
         self.host = HostPort(self.line)
@@ -66,18 +49,31 @@ class SigmaMachine:
     def now(self) -> Fraction:
         return self.clock.exact
 
-    def tick(self, dt: TimeLike = TICK) -> None:
-        """Advance the clock by ``dt``; the terminal takes every byte that has arrived."""
+    def tick(self, dt: TimeLike = TICK, take_first: bool = False) -> bytes:
+        """Advance the clock by ``dt``; the terminal takes every byte that has arrived.
+        ``take_first``: it takes them before the clock moves instead, so the screen after
+        the tick is the line as it stood at the tick's start (the KAS programs' order,
+        kept so their sessions show what they always showed).  Returns the bytes taken."""
+        if take_first:
+            taken = self.take()
+            self.clock.advance(dt)
+            return taken
         self.clock.advance(dt)
+        return self.take()
+
+    def take(self) -> bytes:
+        """The terminal takes every byte that has arrived by now (returned)."""
         if self.tracer is None:
             data = self.line.device.read()
             if data:
                 self.terminal.feed(data)
-            return
+            return data
         step = self.settings.char_time
-        for t_last, data in self.line.device.read_timed(exact=True):
+        runs = self.line.device.read_timed(exact=True)
+        for t_last, data in runs:
             first = t_last - (len(data) - 1) * step
             self.tracer.feed(data, float(first), float(step))
+        return b"".join(data for _t, data in runs)
 
     def run_until(self, t: TimeLike, tick: TimeLike = TICK) -> None:
         """Tick (at most ``tick`` at a time) until the clock reads ``t``."""
@@ -95,6 +91,16 @@ class SigmaMachine:
     def frame(self) -> np.ndarray:
         """(512, 768, 3) uint8 as displayed, row 0 = top."""
         return self.terminal.frame()
+
+    def indices(self) -> np.ndarray:
+        """(512, 768) uint8 LUT indices on the screen, row 0 = top."""
+        return np.ascontiguousarray(self.terminal.indices()[::-1])
+
+    # ------------------------------------------------------------------ the user
+    def key(self, char: str) -> None:
+        """A key struck on the terminal's keyboard (by its user, not the host): its bytes
+        go up the line now."""
+        self.terminal.key(char)
 
     # ------------------------------------------------------------------ traces
     def trace(self, sink: Callable[[TraceEvent], None] | None,

@@ -6,9 +6,12 @@ Window y counts rows from the top; the terminal's y axis points up, so y = 511 -
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING
 
 from emulator.host_input import HostEvent, KeyDown, PointerButton, PointerMove
+
+if TYPE_CHECKING:
+    from emulator.sigma.terminal import Terminal
 
 KEY_CHARS = {"return": "\r", "kp_enter": "\r", "backspace": "\b", "escape": "\x1b",
              "tab": "\t", "delete": "\x7f"}
@@ -17,8 +20,8 @@ KEYS_HINT = ("keys go up the line; cursor keys move the crosshair (Shift x8); th
              "the tablet; close the window to quit")
 
 
-def to_terminal(ev: HostEvent, term: Any) -> None:
-    """Apply one window event to terminal ``term`` (emulator.sigma.Terminal)."""
+def to_terminal(ev: HostEvent, term: Terminal) -> None:
+    """Apply one window event to terminal ``term``."""
     if isinstance(ev, KeyDown):
         if ev.key in ARROWS:
             dx, dy = ARROWS[ev.key]

@@ -14,8 +14,7 @@ import pytest
 
 from emulator.harness import RunOptions, run
 from emulator.harness.sigma_line import TICK, SigmaLineTarget
-from emulator.sigma import Terminal
-from protocols.link import LineSettings, SerialLine
+from emulator.machine import SigmaMachine
 from protocols.session import read
 
 
@@ -24,7 +23,7 @@ class _InterruptedMidTick(SigmaLineTarget):
     before the harness could count the tick or show its frame."""
 
     def __init__(self, at: int, signum: int) -> None:
-        super().__init__(Terminal("t5684"), SerialLine(LineSettings()), None, "test")
+        super().__init__(SigmaMachine("t5684"), None, "test")
         self.at, self.signum, self.n = at, signum, 0
         self.line.host.write(b"\r+-*/HI2GI200200GJ600200600400200400200200")
 

@@ -7,10 +7,18 @@ from pathlib import Path
 from apps.kas.editor import Editor
 from apps.kas.events import Key, Pointer
 from apps.kas.program import EditorFront, Session, parse_timed_script
-from emulator.sigma import Terminal
+from apps.kas.program.keyboard import key_to_bytes
+from emulator.harness.sigma import SigmaSessionRun
+from emulator.machine import SigmaMachine
 
 DATA = Path(__file__).parent.parent / "data" / "kas_front"
 GOLDEN = DATA / "golden"
+
+
+def drive(front) -> SigmaSessionRun:
+    """``front`` on an emulated T5684 over a 9600-baud line, run as the harness runs it."""
+    machine = SigmaMachine("t5684")
+    return SigmaSessionRun(machine, Session(front, machine.host), key_to_bytes)
 
 
 def script(name: str):
@@ -21,8 +29,8 @@ def run_editor(name: str, seed: int = 1, background: str = "black", editor=None)
     saved = []
     front = EditorFront(editor or Editor(seed=seed), background,
                         on_save=lambda d: saved.append(d.copy()))
-    term = Terminal("t5684")
-    session = Session(front, term)
+    session = drive(front)
+    term = session.terminal
     session.run_script(script(name))
     return front, term, session, saved
 

@@ -8,10 +8,11 @@ import numpy as np
 
 from apps.kas.editor import Editor
 from apps.kas.model import Chain, Drawing
-from apps.kas.program import EditorFront, Session, parse_timed_script
+from apps.kas.program import EditorFront, parse_timed_script
 from apps.kas.program import layout as L
 from apps.kas.program.screen import dim_pens
 from emulator.sigma import Terminal
+from tests.kas_front.helpers import drive
 
 
 def _drawing(pens: list[int]) -> Drawing:
@@ -21,8 +22,9 @@ def _drawing(pens: list[int]) -> Drawing:
 
 def _run(pens: list[int], events: str, background: str = "black"):
     front = EditorFront(Editor(_drawing(pens)), background)
-    term = Terminal("t5684")
-    Session(front, term).run_script(parse_timed_script(events))
+    run = drive(front)
+    term = run.terminal
+    run.run_script(parse_timed_script(events))
     return front, term
 
 

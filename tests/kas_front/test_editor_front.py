@@ -8,10 +8,10 @@ import pytest
 
 from apps.kas.editor import Editor
 from apps.kas.files import KasFileError
-from apps.kas.program import EditorFront, Session, parse_timed_script
+from apps.kas.program import EditorFront, parse_timed_script
 from apps.kas.program.keyboard import KEY_BYTES, bytes_to_keys, key_to_bytes
 from emulator.sigma import Terminal
-from tests.kas_front.helpers import DATA, GOLDEN, model_only, run_editor
+from tests.kas_front.helpers import DATA, GOLDEN, drive, model_only, run_editor
 from tests.support.golden import assert_matches_golden
 
 
@@ -32,7 +32,7 @@ def test_every_command_through_the_front_matches_the_model(edit_all) -> None:
     # F2 at the end saved exactly that drawing
     assert len(saved) == 1 and saved[0].n_points == got.n_points
     # keys really went up the line, drawing orders down it, all understood
-    assert session.line.stats["device_to_host_bytes"] >= 60
+    assert session.machine.line.stats["device_to_host_bytes"] >= 60
     assert term.stats["unknown"] == term.stats["malformed"] == term.stats["errors"] == 0
 
 
@@ -53,12 +53,11 @@ def test_incremental_redraw_equals_a_full_redraw(edit_all) -> None:
 
 def test_freehand_sends_only_new_segments() -> None:
     front = EditorFront(Editor())
-    term = Terminal("t5684")
-    s = Session(front, term)
+    s = drive(front)
     # after the start-up screen has arrived, one new point every 0.1 s
     s.run_script(parse_timed_script("5.0 move 0 0\ndown 0 0\n" + "".join(
         f"+0.1 down {0.1 * i} {0.05 * (i % 3)}\n" for i in range(1, 30))))
-    sizes = [len(d) for _, d in s.sent[1:]]
+    sizes = [len(d) for _, d in s.session.sent[1:]]
     assert len(sizes) >= 25
     assert len(front.editor.drawing.chains[0]) == 30
     assert max(sizes[1:]) < 40  # a few AGS bytes per new point, never the whole chain again
@@ -75,8 +74,8 @@ def test_white_background_golden() -> None:
 
 def test_stylus_cursor_follows_without_touching_the_planes() -> None:
     front = EditorFront(Editor())
-    term = Terminal("t5684")
-    s = Session(front, term)
+    s = drive(front)
+    term = s.terminal
     s.run_script(parse_timed_script("move 0 0\n0.5 move 2 1\n1.0 wait"))
     before = term.indices().copy()
     s.run_script(parse_timed_script("move -3 -2\n+0.5 wait"))
@@ -129,8 +128,9 @@ CHECKPOINTS = [
 def test_screen_at_points_of_the_edit_session(line: int, name: str, has: dict) -> None:
     text = "\n".join((DATA / "edit_all.txt").read_text(encoding="utf-8").splitlines()[:line])
     front = EditorFront(Editor(seed=1))
-    term = Terminal("t5684")
-    Session(front, term).run_script(parse_timed_script(text + "\n", "edit_all.txt"))
+    run = drive(front)
+    term = run.terminal
+    run.run_script(parse_timed_script(text + "\n", "edit_all.txt"))
     idx = term.indices()
     for index, present in has.items():
         assert bool((idx == index).any()) == present, (name, index)

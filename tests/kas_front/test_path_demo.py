@@ -8,10 +8,10 @@ from apps.kas import files
 from apps.kas.events import Key, Pointer
 from apps.kas.library import LIBRARY
 from apps.kas.path_editor import PathEditor
-from apps.kas.program import PathFront, Session, demo_session
+from apps.kas.program import PathFront, demo_session
 from emulator.sigma import Terminal
 from protocols.sigma import Decoder
-from tests.kas_front.helpers import GOLDEN, script
+from tests.kas_front.helpers import GOLDEN, drive, script
 from tests.support.golden import assert_matches_golden
 
 
@@ -24,8 +24,8 @@ def _model() -> PathEditor:
 def test_path_front_draws_path_and_ticks_over_the_line() -> None:
     saved = []
     front = PathFront(_model(), on_save=lambda p, t: saved.append((p, t)))
-    term = Terminal("t5684")
-    s = Session(front, term)
+    s = drive(front)
+    term = s.terminal
     events = script("path.txt")
     s.run_script(events)
     want = _model()
@@ -51,11 +51,12 @@ def test_path_front_failed_save_keeps_the_path() -> None:
 
 
 def test_demo_session_plays_on_a_terminal() -> None:
-    term = Terminal("t5684")
-    demo = demo_session(term)
+    demo = demo_session()
     times = [t for t, _ in demo.chunks]
     assert times == sorted(times) and demo.duration > demo.editor_end
-    # the editor part arrived on the given terminal: the menu row's paint pots are there
+    # the editor part on a terminal: the menu row's paint pots are there
+    term = Terminal("t5684")
+    term.feed(b"".join(d for t, d in demo.chunks if t < demo.editor_end))
     assert term.frame()[50, 20].tolist() == [255, 255, 255]
     # the whole stream is orders the Sigma knows, and the viewer part ends on the last frame
     dec = Decoder()

@@ -10,12 +10,13 @@ from apps.kas import files
 from apps.kas.editor import Editor
 from apps.kas.files import KasFileError
 from apps.kas.library import LIBRARY
-from apps.kas.program import EditorFront, Session, parse_timed_script
+from apps.kas.program import EditorFront, parse_timed_script
 from apps.kas.program import layout as L
 from apps.kas.program.draw import Painter, chain_prims, clip_polyline, encode
 from apps.kas.program.keyboard import bytes_to_keys
 from emulator.sigma import Terminal
 from protocols.sigma import Decoder, Encoder
+from tests.kas_front.helpers import drive
 
 WORDS = st.sampled_from(["move", "down", "up", "key", "menu", "type", "wait", "fly", "+0.1",
                          "1.5", "-2", "nan", "pen2", "f2", "space", "x", "", "#c", "1e400"])
@@ -77,8 +78,9 @@ def test_painter_no_change_sends_nothing() -> None:
 def test_guide_keyframe_highlighted_on_screen() -> None:
     guide = files.load_keyframe(LIBRARY / "walk_a.kas")
     front = EditorFront(Editor(guide=guide))
-    term = Terminal("t5684")
-    Session(front, term).run_script(parse_timed_script("move 0 0\n5 wait"))
+    run = drive(front)
+    term = run.terminal
+    run.run_script(parse_timed_script("move 0 0\n5 wait"))
     idx = term.indices()
     # the first chain of walk_a is the one to draw next; the other is the plain guide
     assert (idx == L.GUIDE_NEXT).sum() > 50 and (idx == L.GUIDE).sum() > 50

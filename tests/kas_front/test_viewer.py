@@ -7,8 +7,11 @@ import pytest
 
 from apps.kas import demo
 from apps.kas import viewer_schedule as vs
-from apps.kas.program.viewer import LineTest, draw_frame, four_colours, setup, swap
+from apps.kas.program.viewer import LineTest, ViewerHost, draw_frame, four_colours, setup, swap
+from emulator.harness.sigma_batch import host_periods
+from emulator.machine import SigmaMachine
 from emulator.sigma import Terminal
+from protocols.link import LineSettings
 
 
 @pytest.fixture(scope="module")
@@ -74,7 +77,10 @@ def test_double_buffer_never_shows_a_half_drawn_frame(seq, how: str) -> None:
             if not is_complete(img):
                 hidden_partial += 1
 
-    test.run("every", 9600, terminal=Terminal("t5684"), on_period=period)
+    machine = SigmaMachine("t5684")
+    host = ViewerHost(test, "every", machine.host, LineSettings(baud=9600))
+    for k in host_periods(machine, host, host.period):
+        period(k, machine.terminal)
     assert len(seen) > 100
     assert hidden_partial > 20
     k = -1  # the last complete frame seen

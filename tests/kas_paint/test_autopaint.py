@@ -21,9 +21,10 @@ WALK_OPS = [Op("fill", 3, chains=(2,), line_no=10), Op("fill", 5, chains=(1,), l
 
 
 def _paint(seq: AnimSequence, ops: OpsFile) -> tuple[list[np.ndarray], object]:
-    from emulator.sigma import Terminal
+    from emulator.harness.sigma_batch import link
 
-    term = Terminal("t5688")
+    paint = link("t5688", xonxoff=False)
+    term = paint.machine.terminal
     got: list[np.ndarray] = []
     prog = PaintProgram(seq, ops)
 
@@ -32,7 +33,7 @@ def _paint(seq: AnimSequence, ops: OpsFile) -> tuple[list[np.ndarray], object]:
         assert term.reg.view == areas.BUFFERS[(n - 1) % 2].view
         got.append(term.planes[y0:y1 + 1, x0:x1 + 1].copy())
 
-    rep = replay(prog, Line(term), on_shown=shown)
+    rep = replay(prog, Line(paint), on_shown=shown)
     return got, rep
 
 

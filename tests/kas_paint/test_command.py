@@ -60,15 +60,17 @@ def test_window_input_selects_fills_and_picks() -> None:
     """The window's mouse and keys drive the same session: click near a chain, f to fill;
     in the preview a click on a swatch picks it and r steps its red."""
     from apps.kas.paint import areas, mixing
+    from apps.kas.paint.host import PaintHost
     from apps.kas.paint.ops import OpsFile
     from apps.kas.paint.session import PaintSession
-    from camlab88.commands.kas.paint import PaintTarget
+    from emulator.harness.sigma_host import SigmaHostTarget
     from emulator.host_input import KeyDown, PointerButton
-    from emulator.sigma import Terminal
+    from emulator.machine import SigmaMachine
 
     seq = walk(4)
     s = PaintSession(seq, OpsFile(painted=2))
-    t = PaintTarget(s, Terminal("t5688"), 9600, [], end=False)
+    machine = SigmaMachine("t5688", xonxoff=False)
+    t = SigmaHostTarget(machine, PaintHost(s, machine.host, [], end=False), "paint", "")
     px = areas.to_px(seq.frames[1].chains[1].points[:1])[0]   # painting area = screen (KQ1)
     t.handle_events([PointerButton(int(px[0]), 511 - int(px[1]), 1, True), KeyDown("f", "f")])
     assert [(o.kind, o.chains, o.colour) for o in s.ops.ops] == [("fill", (2,), 1)]
@@ -80,7 +82,7 @@ def test_window_input_selects_fills_and_picks() -> None:
     assert s.program.current == 6 and s.ops.palette[6][0] == min(40 + 8, 255)
     for _ in range(200):
         t.tick()
-    assert t.term.reg.view == 4
+    assert machine.terminal.reg.view == 4
 
 
 def test_readme_commands_as_printed(tmp_path, capsys, monkeypatch) -> None:

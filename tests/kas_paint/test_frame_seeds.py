@@ -18,7 +18,7 @@ from apps.kas.paint.ops import Op, OpsFile, Seeds
 from apps.kas.paint.program import Line, PaintProgram
 from apps.kas.paint.replay import replay
 from apps.kas.paint.session import PaintSession
-from emulator.sigma import Terminal
+from emulator.harness.sigma_batch import link
 from tests.kas_paint.helpers import walk
 
 # a figure-eight (two lobes, left and right of the origin), drawn in two frames
@@ -28,13 +28,14 @@ EIGHT_OPS = [Op("fill", 3, chains=(1,))]
 
 
 def _colours(seq: AnimSequence, ops: OpsFile) -> tuple[list[np.ndarray], object]:
-    term, got = Terminal("t5688"), []
+    paint, got = link("t5688", xonxoff=False), []
+    term = paint.machine.terminal
 
     def shown(n: int, _t: float) -> None:
         x0, y0, x1, y1 = areas.BUFFERS[(n - 1) % 2].box()
         got.append(term.planes[y0:y1 + 1, x0:x1 + 1] & 0x1F)
 
-    rep = replay(PaintProgram(seq, ops), Line(term), on_shown=shown)
+    rep = replay(PaintProgram(seq, ops), Line(paint), on_shown=shown)
     return got, rep
 
 

@@ -9,7 +9,7 @@ import pytest
 from apps.kas.paint import planes
 from apps.kas.paint.ops import Op, OpsFile
 from apps.kas.paint.program import HIGHLIGHT_RGB, Line, PaintProgram
-from emulator.sigma import Terminal
+from emulator.harness.sigma_batch import link
 from tests.kas_paint.helpers import walk
 
 
@@ -21,8 +21,9 @@ from tests.kas_paint.helpers import walk
 def test_select_and_clear_touch_only_the_highlight_plane() -> None:
     seq = walk(5)
     prog = PaintProgram(seq, OpsFile(ops=[Op("fill", 3, chains=(2,)), Op("fill", 5, chains=(1,))]))
-    term = Terminal("t5688")
-    line = Line(term)
+    paint = link("t5688", xonxoff=False)
+    term = paint.machine.terminal
+    line = Line(paint)
     line.send(prog.setup())
     data, _ = prog.frame(3)
     line.send(data)

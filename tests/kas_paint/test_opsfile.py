@@ -12,7 +12,7 @@ from apps.kas.paint import opsfile
 from apps.kas.paint.ops import Op, OpsFile
 from apps.kas.paint.palette import Palette
 from apps.kas.paint.program import Line, PaintProgram
-from emulator.sigma import Terminal
+from emulator.harness.sigma_batch import link
 from tests.kas_paint.helpers import one_frame
 
 TEXT = """KAS paint 1
@@ -91,9 +91,10 @@ def _centre_colour(text: str) -> int:
     seq = one_frame(*_squares())
     f = opsfile.parse(text, "x.ops")
     opsfile.check(f, seq)
-    term = Terminal("t5688")
+    paint = link("t5688", xonxoff=False)
+    term = paint.machine.terminal
     prog = PaintProgram(seq, f)
-    line = Line(term)
+    line = Line(paint)
     line.send(prog.setup())
     line.send(prog.frame(1)[0] + prog.show(1))
     # the squares overlap around (0, 0): which is in front?

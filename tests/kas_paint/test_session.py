@@ -10,7 +10,7 @@ from apps.kas.paint import areas, opsfile, script
 from apps.kas.paint.ops import OpsFile
 from apps.kas.paint.program import Line
 from apps.kas.paint.session import PaintSession
-from emulator.sigma import Terminal
+from emulator.harness.sigma_batch import link
 from tests.kas_paint.helpers import walk
 
 SCRIPT = """colour 3
@@ -30,8 +30,9 @@ def test_scripted_session_records_and_paints() -> None:
     text = SCRIPT.format(cx=ring.points[0][0], cy=ring.points[0][1],
                          wx=wander.points[5][0], wy=wander.points[5][1])
     s = PaintSession(seq, OpsFile(painted=4))
-    term = Terminal("t5688")
-    line = Line(term)
+    paint = link("t5688", xonxoff=False)
+    term = paint.machine.terminal
+    line = Line(paint)
     line.send(s.start())
     for cmd in script.parse(text, "s.paint"):
         line.send(script.run(s, cmd))
@@ -45,9 +46,10 @@ def test_scripted_session_records_and_paints() -> None:
     assert term.reg.view == 4
     # the recorded file paints the same frame the same way from scratch
     again = opsfile.parse(opsfile.ops_text(s.ops))
-    t2 = Terminal("t5688")
+    paint2 = link("t5688", xonxoff=False)
+    t2 = paint2.machine.terminal
     s2 = PaintSession(seq, again)
-    Line(t2).send(s2.start())
+    Line(paint2).send(s2.start())
     assert np.array_equal(t2.planes[y0:y1 + 1, x0:x1 + 1] & 0x1F, fill)
     assert s.autopaint() == []
 

@@ -11,7 +11,7 @@ import socket
 from fractions import Fraction
 
 from emulator.harness.sigma_line import SigmaLineTarget
-from emulator.sigma import Terminal
+from emulator.machine import SigmaMachine
 from protocols.link import LineSettings, SerialLine
 from protocols.link.transports import TcpBridge
 from tests.support.listeners import EchoLine, drain
@@ -49,8 +49,8 @@ def _tick(target: SigmaLineTarget) -> None:
 
 
 def test_a_sigma_line_starts_each_client_on_an_empty_line() -> None:
-    line = SerialLine(LineSettings())
-    target = SigmaLineTarget(Terminal("t5684"), line, None, "test")
+    target = SigmaLineTarget(SigmaMachine("t5684"), None, "test")
+    line = target.line
     target.bridge = TcpBridge(0, endpoint=target.tap)
     fed = bytearray()
     feed = target.term.feed

@@ -11,10 +11,10 @@ import time
 from fractions import Fraction
 
 from emulator.harness.sigma_line import SigmaLineTarget
+from emulator.machine import SigmaMachine
 from emulator.rainbow import Rainbow
 from emulator.rainbow.executor import Executor
 from emulator.rainbow.server import ServerStats, listen, serve
-from emulator.sigma import Terminal
 from protocols.link import LineSettings, SerialLine
 from protocols.link.transports import TcpBridge
 from protocols.rainbow.stream import encode
@@ -88,9 +88,7 @@ def test_each_rainbow_client_gets_a_fresh_pad_library_session() -> None:
 
 
 def _sigma_line(order_timeout: Fraction) -> SigmaLineTarget:
-    line = SerialLine(LineSettings())
-    target = SigmaLineTarget(Terminal("t5684"), line, None, "test",
-                             order_timeout=order_timeout)
+    target = SigmaLineTarget(SigmaMachine("t5684"), None, "test", order_timeout=order_timeout)
     target.bridge = TcpBridge(0, endpoint=target.tap)
     return target
 

@@ -6,7 +6,7 @@ from apps.snooker.render.palette import fixed_palette
 from apps.snooker.render.sigma_host import SigmaHost
 from apps.snooker.render.sigma_session import SigmaSession
 from apps.snooker.render.truecolour import RenderOptions, render_frame
-from emulator.sigma import Terminal
+from emulator.harness.sigma_batch import t5688_link
 from tests.snooker_render.helpers import DATA, break_scene, break_views, overhead
 from tests.support.golden import assert_matches_golden
 
@@ -25,6 +25,6 @@ def test_truecolour_close_up_from_above() -> None:
 
 def test_period_frame_on_the_t5688() -> None:
     scene = break_scene()
-    term = Terminal("t5688")
-    SigmaSession(SigmaHost(scene, fixed_palette(scene), "period"), term).show(break_views()[14])
-    assert_matches_golden(term.frame(), GOLDEN / "period_break_15.png")
+    link = t5688_link()
+    SigmaSession(SigmaHost(scene, fixed_palette(scene), "period"), link).show(break_views()[14])
+    assert_matches_golden(link.frame(), GOLDEN / "period_break_15.png")

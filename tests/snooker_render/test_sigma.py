@@ -12,7 +12,7 @@ import pytest
 from apps.snooker.render.palette import fixed_palette
 from apps.snooker.render.sigma_host import SigmaHost
 from apps.snooker.render.sigma_session import SigmaSession
-from emulator.sigma import Terminal
+from emulator.harness.sigma_batch import t5688_link
 from protocols.sigma import AlphaText, Decoder, GraphicsFlag, Order, Point, Points
 from tests.snooker_render.helpers import break_scene, break_views
 
@@ -24,9 +24,9 @@ def sent() -> dict[str, tuple]:
     pal = fixed_palette(scene)
     out = {}
     for mode in ("period", "fixed", "adapted"):
-        term = Terminal("t5688")
-        session = SigmaSession(SigmaHost(scene, pal, mode), term)
-        out[mode] = (session.show(view), term, session)
+        link = t5688_link()
+        session = SigmaSession(SigmaHost(scene, pal, mode), link)
+        out[mode] = (session.show(view), link.machine.terminal, session)
     return out
 
 

@@ -1,14 +1,14 @@
 """The painting program on the Sigma T5688 (thesis §3.3), in Sigma orders only.
 
-``PaintProgram`` makes the bytes; ``Line`` carries them to a terminal over the 9600-baud
-serial line on a virtual clock (protocols.link), so every figure of line time is what a
-1984 animator would have waited.  The terminal is anything with ``feed(bytes)``.
+``PaintProgram`` makes the bytes; ``Line`` writes them to the port of a T5688 on the
+9600-baud serial line (virtual clock) and waits for them, so every figure of line time is
+what a 1984 animator would have waited.  Whoever runs the machine hands the link over
+(protocols.link.port.BatchLink).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
 
 import numpy as np
 
@@ -16,34 +16,30 @@ from apps.kas.model import AnimSequence
 from apps.kas.paint import areas, mixing, orders, outlines, planes
 from apps.kas.paint.autopaint import AutoPainter, FramePlan
 from apps.kas.paint.ops import OpsFile
-from protocols.link import LineSettings, SerialLine, VirtualClock
+from protocols.link.port import BatchLink
 from protocols.sigma import Encoder
 
 HIGHLIGHT_RGB = (255, 0, 255)  # reconstructed: any colour unlike the pens; magenta
 
 
 class Line:
-    """Host -> serial line -> terminal.  ``send`` returns the line time when the last byte
-    has arrived; every byte is fed to the terminal by then."""
+    """The host's end of the line (no XON/XOFF: the orders are binary).  ``send`` returns
+    the line time when the last byte has arrived; the terminal has taken every byte by then
+    (the link waits for the line)."""
 
-    def __init__(self, terminal: Any, baud: int = 9600) -> None:
-        self.terminal = terminal
-        self.clock = VirtualClock()
-        self.line = SerialLine(LineSettings(baud=baud), self.clock, xonxoff=False)
+    def __init__(self, link: BatchLink) -> None:
+        self.link = link
         self.chars = 0
 
     def send(self, data: bytes) -> float:
-        if data:
-            self.line.host.write(data)
-            self.chars += len(data)
-        end = self.line.host.drain_time_exact()
-        self.clock.advance_to(max(end, self.clock.exact))
-        self.terminal.feed(self.line.device.read())
-        return float(end)
+        end = self.link.port.write(data)
+        self.chars += len(data)
+        self.link.wait()
+        return end
 
     @property
     def now(self) -> float:
-        return self.clock.now
+        return self.link.port.now
 
 
 @dataclass

@@ -21,6 +21,7 @@ from apps.kas.paint.areas import BUFFERS
 from apps.kas.paint.autopaint import Failure
 from apps.kas.paint.program import Line, PaintProgram
 from base.atomicfile import write_atomic
+from protocols.link.port import HostPort
 
 
 @dataclass
@@ -84,28 +85,40 @@ def write_movie(images: list[np.ndarray], out: str | os.PathLike[str], fps: floa
     return export(AnimSequence(frames, fps), out, render_frame=lambda f: by_id[id(f)])
 
 
-def periods(program: PaintProgram, terminal: object, baud: int = 9600, fps: float = 25,
-            frames: range | None = None):  # a generator of period indices
-    """The replay one 1/fps of line time at a time, for a run loop that shows the screen
-    at that rate: yields k once the bytes that arrived in period k are fed to ``terminal``
-    (anything with ``feed``).  Returns the number of painted frames shown."""
-    from fractions import Fraction
+class ReplayHost:
+    """The replay as a host program on its port, one step at a time, for a machine run
+    period by period (the demo) or frame by frame (``kas paint --replay``): the set-up and
+    the first frame go at once; each ``step`` writes the next frame, double-buffered, once
+    the line has delivered the last one."""
 
-    from protocols.link import LineSettings, SerialLine, VirtualClock
+    def __init__(self, program: PaintProgram, port: HostPort,
+                 frames: range | None = None) -> None:
+        self.program, self.port = program, port
+        self.frames = list(frames or range(1, len(program.seq.frames) + 1))
+        self.shown = 0  # frames written
+        self.chars = 0  # characters of the frames' orders
+        self.failures: list[Failure] = []
+        self.plans: list = []
+        port.write(program.setup())
+        if self.frames:
+            self._write_next()
 
-    clock = VirtualClock()
-    line = SerialLine(LineSettings(baud=baud), clock, xonxoff=False)
-    period = 1 / Fraction(fps).limit_denominator(10000)
-    line.host.write(program.setup())
-    k = 0
-    shown = 0
-    for j, n in enumerate(frames or range(1, len(program.seq.frames) + 1)):
-        buf = BUFFERS[j % 2]
-        line.host.write(program.frame(n, buf)[0] + program.show(buf.view))
-        shown += 1
-        while clock.exact < line.host.drain_time_exact():
-            clock.advance(period)
-            terminal.feed(line.device.read())  # type: ignore[attr-defined]
-            yield k
-            k += 1
-    return shown
+    @property
+    def finished(self) -> bool:
+        return self.shown == len(self.frames)
+
+    def step(self) -> bool:
+        """Write the next frame if the line is quiet; False when none was written."""
+        if self.finished or not self.port.drained():
+            return False
+        self._write_next()
+        return True
+
+    def _write_next(self) -> None:
+        buf = BUFFERS[self.shown % 2]
+        data, plan = self.program.frame(self.frames[self.shown], buf)
+        self.port.write(data + self.program.show(buf.view))
+        self.shown += 1
+        self.chars += len(data)
+        self.failures += plan.failures
+        self.plans.append(plan)

@@ -1,4 +1,4 @@
-"""Headless event scripts and the session that runs a front against a terminal over a line.
+"""Headless event scripts and the session of a front on its port to the terminal.
 
 Script format (UTF-8 text, one event a line, ``#`` starts a comment)::
 
@@ -17,15 +17,16 @@ without it an event comes 0.02 s after the previous one.  Times never go back.  
     wait         nothing; only moves time on (e.g. ``5.0 wait`` lets the screen catch up)
 
 Stylus events go through the tablet input layer exactly as a window's mouse does (a
-position on the 768 x 512 screen), keys are struck on the emulated terminal and travel up the
-serial line to the program; the program's drawing orders travel down it.  So a script
-exercises the whole byte path, on the line's virtual clock.
+position on the 768 x 512 screen), keys are struck on the emulated terminal (by the harness,
+which runs the machine: the user is not the host) and travel up the serial line to the
+program; the program's drawing orders travel down it.  So a script exercises the whole byte
+path, on the line's virtual clock.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable
+from collections.abc import Iterable
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any, Protocol
@@ -35,11 +36,10 @@ from apps.kas.files import KasFileError
 from apps.kas.program import layout as L
 from apps.kas.program.base import Front
 from apps.kas.program.keyboard import key_to_bytes
-from protocols.link import LineSettings, SerialLine, VirtualClock
+from protocols.link.port import HostPort
 from protocols.tablets.input_layer import InputLayer, MouseSample
 
 DEFAULT_STEP = Fraction(1, 50)
-TICK = Fraction(1, 100)  # the session's polling period: line time between input polls
 MAX_TIME = 10**6  # seconds: a script time beyond this is a typing error
 
 
@@ -125,47 +125,37 @@ def parse_timed_script(text: str, name: str = "<script>") -> list[TimedEvent]:
     return out
 
 
-class TerminalLike(Protocol):
-    on_output: Callable[[bytes], Any] | None
-
-    def feed(self, data: bytes) -> None: ...
-    def key(self, char: str) -> None: ...
-
-
 class PointerSource(Protocol):
     def poll(self, mouse: Iterable[MouseSample] = ()) -> list: ...
 
 
 class Session:
-    """A front and a terminal joined by a ``SerialLine`` on a virtual clock.
+    """A front on its port to the terminal (emulator.machine.SigmaMachine.host).
 
-    Every ``TICK`` of line time: stylus samples go through the input layer to the front, key
-    bytes that have arrived up the line go to the front, and if the line has drained the
-    front's update is sent; bytes that have arrived at the terminal are fed to it.
+    Each ``step`` (one poll; whoever runs the machine then moves the line on): stylus samples
+    go through the input layer to the front, key bytes that have arrived up the line go to
+    the front, and if everything sent so far has arrived the front's update is sent.
     """
 
-    def __init__(self, front: Front, terminal: TerminalLike,
-                 settings: LineSettings | None = None, pointer: PointerSource | None = None,
-                 recorder: Any = None) -> None:
+    def __init__(self, front: Front, port: HostPort,
+                 pointer: PointerSource | None = None) -> None:
         self.front = front
-        self.terminal = terminal
-        self.clock = VirtualClock()
-        self.line = SerialLine(settings or LineSettings(), self.clock, recorder=recorder)
-        terminal.on_output = self.line.device.write
+        self.port = port
         self.pointer_source = pointer or InputLayer(L.TABLET_AREA, None)
         self.sent: list[tuple[Fraction, bytes]] = []
         self.updates = 0
         self._dirty = True
         self._started = False
+        self._arrives = 0.0  # line time the last byte sent arrives
 
     @property
     def now(self) -> Fraction:
-        return self.clock.exact
+        return self.port.exact
 
     def send(self, data: bytes) -> None:
         if data:
-            self.sent.append((self.clock.exact, data))
-            self.line.host.write(data)
+            self.sent.append((self.port.exact, data))
+            self._arrives = self.port.write(data)
 
     def begin(self) -> None:
         if not self._started:
@@ -173,35 +163,27 @@ class Session:
             self.send(self.front.start())
             self._dirty = False
 
-    def strike(self, key: str) -> None:
-        """A key struck on the terminal's keyboard."""
-        self.terminal.key(key_to_bytes(key).decode("latin-1"))
-
-    def step(self, mouse: Iterable[MouseSample] = (), keys: Iterable[str] = ()) -> None:
-        """One poll: input in, screen update out, terminal fed; then TICK of line time."""
+    def step(self, mouse: Iterable[MouseSample] = ()) -> None:
+        """One poll: input in, screen update out."""
         self.begin()
-        for k in keys:
-            self.strike(k)
         events = self.pointer_source.poll(list(mouse))
         if events:
             self.front.pointer(events)
             self._dirty = True
-        data = self.line.host.read()
+        data = self.port.read()
         if data:
             self.front.keys(data)
             self._dirty = True
-        if self._dirty and self.line.host.drain_time_exact() <= self.clock.exact:
+        if self._dirty and self._arrives <= self.port.now:
             self.send(self.front.update())
             self.updates += 1
             self._dirty = False
-        self.terminal.feed(self.line.device.read())
-        self.clock.advance(TICK)
 
     def due(self, events: list[TimedEvent], i: int) -> tuple[list[MouseSample], list[str], int]:
         """Script events from index ``i`` that are due now, as mouse samples and keys."""
         mouse: list[MouseSample] = []
         keys: list[str] = []
-        while i < len(events) and events[i].t <= self.clock.exact:
+        while i < len(events) and events[i].t <= self.port.exact:
             ev = events[i]
             if ev.kind == "pointer":
                 mx, my = L.field_to_mouse(ev.x, ev.y)
@@ -211,26 +193,10 @@ class Session:
             i += 1
         return mouse, keys, i
 
-    def run_script(self, events: list[TimedEvent], settle: bool = True) -> None:
-        self.begin()
-        i = 0
-        while i < len(events):
-            mouse, keys, i = self.due(events, i)
-            self.step(mouse, keys)
-        if settle:
-            self.settle()
-
     def busy(self) -> bool:
-        return bool(self._dirty or self.line.host.in_flight() or self.line.device.in_flight())
-
-    def settle(self, limit: float = 3600.0) -> None:
-        """Run until the screen is up to date and the line is quiet."""
-        self.begin()
-        end = self.clock.exact + Fraction(limit)
-        while self.busy():
-            if self.clock.exact > end:
-                raise RuntimeError(f"the session did not settle within {limit} s of line time")
-            self.step()
+        """The screen is not up to date, or what was sent has not all been taken (keys on
+        their way up the line are the machine's to know)."""
+        return bool(self._dirty or not self.port.drained())
 
 
 def load_timed_script(path: Any) -> list[TimedEvent]:

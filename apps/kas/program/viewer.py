@@ -27,7 +27,6 @@ frames passed over are dropped.  All on the line's virtual clock, so the counts 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Generator
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
@@ -37,7 +36,9 @@ import numpy as np
 from apps.kas.model import FIELD_H, PALETTE, AnimSequence, Drawing
 from apps.kas.program.base import setup_bytes
 from apps.kas.program.draw import chain_prims, encode
-from protocols.link import LineSettings, SerialLine, VirtualClock
+from protocols.link import LineSettings
+from protocols.link.host_only import HostOnlyLine
+from protocols.link.port import HostPort
 from protocols.sigma import Encoder
 
 VIEW_SCALE = 512 / FIELD_H          # the twelve-field fills the screen's height
@@ -192,93 +193,90 @@ class LineTest:
     def sizes(self) -> list[int]:
         return [sum(map(len, self.frame_bytes(j, 0))) for j in range(len(self.seq.frames))]
 
-    def run(self, mode: str = "realtime", baud: int = 9600, fps: float | None = None,
-            terminal: Any = None, on_period: Callable[[int, Any], None] | None = None
+    def run(self, mode: str = "realtime", baud: int = 9600, fps: float | None = None
             ) -> ViewerReport:
-        """Play the sequence over a line at ``baud``; with a ``terminal`` (feed/frame) the
-        bytes arriving in each 1/fps of line time are fed to it and ``on_period(k, terminal)``
-        is called at the end of period k."""
-        periods = self.periods(mode, baud, fps, terminal)
-        while True:
-            try:
-                k = next(periods)
-            except StopIteration as done:
-                return done.value  # type: ignore[no-any-return]
-            if on_period is not None:
-                on_period(k, terminal)
+        """Play the sequence over a line at ``baud`` with nobody at its end: what the host
+        sends and when (a line of its own: the host's side only)."""
+        settings = LineSettings(baud=baud)
+        line = HostOnlyLine(settings)
+        host = ViewerHost(self, mode, line.port, settings, fps)
+        while host.wake is not None:
+            line.run_to(host.wake)
+            host.act()
+        return host.finish()
 
-    def periods(self, mode: str = "realtime", baud: int = 9600, fps: float | None = None,
-                terminal: Any = None) -> Generator[int, None, ViewerReport]:
-        """``run`` one period at a time, for a run loop that ticks: yields k once the bytes
-        of period k have been fed to ``terminal``; returns the report."""
+
+class ViewerHost:
+    """The viewer as a host program on its port (thesis §3.1.4), a small state machine on
+    the line's clock: it acts at line times it chooses (``wake``; None when it is done) --
+    choose a frame (dropping those the line cannot carry in real time), write it into the
+    hidden buffer, then the swap -- and whoever runs the line runs it to each ``wake`` and
+    calls ``act`` (emulator.harness.sigma_batch.host_periods, or ``LineTest.run``)."""
+
+    def __init__(self, test: LineTest, mode: str, port: HostPort, settings: LineSettings,
+                 fps: float | None = None) -> None:
         if mode not in ("realtime", "every"):
             raise ValueError(f"mode is realtime or every, not {mode!r}")
-        fps = float(fps or self.seq.fps)
+        fps = float(fps or test.seq.fps)
         if not (math.isfinite(fps) and fps > 0):
             raise ValueError("fps must be positive")
-        rate = Fraction(fps).limit_denominator(10000)
-        clock = VirtualClock()
-        line = SerialLine(LineSettings(baud=baud), clock)
-        ct = line.settings.char_time
-        n = len(self.seq.frames)
-        rep = ViewerReport(mode, baud, fps, self.sizes())
+        self.test, self.mode, self.port = test, mode, port
+        self.rate = Fraction(fps).limit_denominator(10000)
+        self.ct = settings.char_time
+        self.n = len(test.seq.frames)
+        self.rep = ViewerReport(mode, settings.baud, fps, test.sizes())
+        t0 = self._send(setup(test.enc, test.plan, test.how))
+        self.t0 = t0
+        self.rep.start = float(t0)
+        self.step, self.last, self.buffer, self.j, self.sw = "choose", -1, 0, 0, b""
+        self.origin = t0
+        self.wake: Fraction | None = t0
 
-        def send(data: bytes) -> Fraction:
-            rep.sent.append((clock.exact, data))
-            line.host.write(data)
-            return line.host.drain_time_exact()
+    def _send(self, data: bytes) -> Fraction:
+        self.rep.sent.append((self.port.exact, data))
+        self.port.write(data)
+        return Fraction(self.port.drain_exact())
 
-        t0 = send(setup(self.enc, self.plan, self.how))
-        rep.start = float(t0)
-        # the host program as a small state machine on the virtual clock
-        state = {"at": t0, "step": "choose", "last": -1, "buffer": 0, "j": 0, "swap": b"",
-                 "origin": t0}
+    def act(self) -> None:
+        """The host's turn, at line time ``wake``."""
+        if self.step == "choose":
+            self._choose()
+        elif self.step == "swap":
+            shown = self._send(self.sw)
+            if self.last < 0:  # §3.1.4: time runs from the first frame displayed
+                self.origin = shown
+            self.rep.shown.append((self.j, float(shown - self.t0)))
+            self.last, self.buffer, self.step, self.wake = self.j, 1 - self.buffer, "choose", shown
 
-        def host() -> None:
-            now = clock.exact
-            if state["step"] == "choose":
-                if mode == "every":
-                    j = state["last"] + 1
-                else:
-                    due = math.floor((now - state["origin"]) * rate + Fraction(1, 10**9))
-                    j = max(due, state["last"] + 1)
-                if j >= n:
-                    rep.dropped.extend(range(state["last"] + 1, n))
-                    state["step"] = "done"
-                    return
-                rep.dropped.extend(range(state["last"] + 1, j))
-                draw, sw = self.frame_bytes(j, state["buffer"])
-                drawn = send(draw)
-                state.update(j=j, swap=sw, step="swap")
-                # the swap arrives when the frame is drawn, never before the frame is due
-                due_t = state["origin"] + j / rate if mode == "realtime" else drawn
-                state["at"] = max(drawn, due_t - len(sw) * ct)
-            elif state["step"] == "swap":
-                shown = send(state["swap"])
-                if state["last"] < 0:  # §3.1.4: time runs from the first frame displayed
-                    state["origin"] = shown
-                rep.shown.append((state["j"], float(shown - t0)))
-                state.update(last=state["j"], buffer=1 - state["buffer"], step="choose",
-                             at=shown)
+    def _choose(self) -> None:
+        now = self.port.exact
+        if self.mode == "every":
+            j = self.last + 1
+        else:
+            due = math.floor((now - self.origin) * self.rate + Fraction(1, 10**9))
+            j = max(due, self.last + 1)
+        if j >= self.n:
+            self.rep.dropped.extend(range(self.last + 1, self.n))
+            self.step, self.wake = "done", None
+            return
+        self.rep.dropped.extend(range(self.last + 1, j))
+        draw, sw = self.test.frame_bytes(j, self.buffer)
+        drawn = self._send(draw)
+        self.j, self.sw, self.step = j, sw, "swap"
+        # the swap arrives when the frame is drawn, never before the frame is due
+        due_t = self.origin + j / self.rate if self.mode == "realtime" else drawn
+        self.wake = max(drawn, due_t - len(sw) * self.ct)
 
-        period = 1 / rate
-        k = 0
-        while True:
-            boundary = (k + 1) * period
-            if state["step"] != "done" and (terminal is None or state["at"] <= boundary):
-                clock.advance_to(max(state["at"], clock.exact))
-                host()
-                continue
-            if state["step"] == "done" and (terminal is None or
-                                            k * period >= line.host.drain_time_exact()):
-                break  # every byte has arrived and been fed, period by period
-            clock.advance_to(boundary)
-            terminal.feed(line.device.read())
-            yield k
-            k += 1
-        rep.end_exact = Fraction(line.host.drain_time_exact())
-        rep.end = float(rep.end_exact)
-        return rep
+    @property
+    def period(self) -> Fraction:
+        """One shown frame's worth of line time (1/fps)."""
+        return 1 / self.rate
+
+    def finish(self) -> ViewerReport:
+        """The report, once done (the line time the last byte arrives)."""
+        self.rep.end_exact = Fraction(self.port.drain_exact())
+        self.rep.end = float(self.rep.end_exact)
+        return self.rep
 
 
 def run_line_test(seq: AnimSequence, mode: str = "realtime", baud: int = 9600,

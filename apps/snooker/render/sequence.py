@@ -1,9 +1,10 @@
 """Rendering a run of frames (thesis 6.4: "the production of high quality versions of the
 frames in the sequence"): which views, which palette, and each frame in turn.
 
-The Sigma modes need a terminal; the caller plugs the emulated T5688 in (apps never import
-the emulator). With ``palette="adaptive"`` every frame is first rendered in true colour so
-the 256 colours can be chosen for the whole sequence (palette.adaptive_palette).
+The Sigma modes need a terminal on a line; the caller hands a link to a machine it runs
+(protocols.link.port.BatchLink; apps never import the emulator).  With
+``palette="adaptive"`` every frame is first rendered in true colour so the 256 colours can
+be chosen for the whole sequence (palette.adaptive_palette).
 """
 
 from __future__ import annotations
@@ -16,8 +17,9 @@ import numpy as np
 from apps.snooker.render.palette import Palette, adaptive_palette, fixed_palette
 from apps.snooker.render.scene import Scene
 from apps.snooker.render.sigma_host import SCREEN_H, SCREEN_W, SigmaHost
-from apps.snooker.render.sigma_session import SigmaSession, TerminalLike
+from apps.snooker.render.sigma_session import SigmaSession
 from apps.snooker.render.truecolour import RenderOptions, render_frame, render_linear
+from protocols.link.port import BatchLink
 
 MODES = ("period", "fixed", "adapted", "truecolour")
 PALETTES = ("fixed", "adaptive")
@@ -73,7 +75,7 @@ def choose_palette(scene: Scene, views: Sequence[object], kind: str,
 
 def render_sequence(scene: Scene, views: Sequence[object], mode: str, size: tuple[int, int],
                     palette: Palette | None = None,
-                    terminal_factory: Callable[[], TerminalLike] | None = None,
+                    link_factory: Callable[[], BatchLink] | None = None,
                     specks: bool = True, wood: bool = True) -> Iterator[RenderedFrame]:
     """Each view's frame in turn. ``truecolour`` at ``size``; the Sigma modes at 768 x 512
     through one terminal for the whole sequence (its LUT loaded once)."""
@@ -84,11 +86,11 @@ def render_sequence(scene: Scene, views: Sequence[object], mode: str, size: tupl
         return
     if mode not in MODES:
         raise SequenceError(f"unknown mode {mode!r}; choose from {', '.join(MODES)}")
-    if terminal_factory is None or palette is None:
+    if link_factory is None or palette is None:
         raise SequenceError(f"--mode {mode} needs a terminal and a palette")
-    terminal = terminal_factory()
-    session = SigmaSession(SigmaHost(scene, palette, mode, specks), terminal)
+    link = link_factory()
+    session = SigmaSession(SigmaHost(scene, palette, mode, specks), link)
     for v in views:
         sent = session.show(v)
-        yield RenderedFrame(int(v.frame), terminal.frame(), sent.line_seconds, sent.leaks,
+        yield RenderedFrame(int(v.frame), link.frame(), sent.line_seconds, sent.leaks,
                             sent.gaps)

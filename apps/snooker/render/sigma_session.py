@@ -1,31 +1,20 @@
-"""The host program and a terminal joined by the 9600-baud line (virtual clock).
+"""The host program on the 9600-baud line to a Sigma T5688 (virtual clock).
 
-The terminal is whatever the caller plugs in (the command wires the emulated T5688): it
-only has to take the bytes that arrive (``feed``), show its screen's LUT indices
-(``indices``, row 0 at the bottom, as the Sigma's y axis points up) and its picture
-(``frame``, RGB, row 0 at the top). The host writes each
-frame's orders to the line; the line delivers them at 9600 baud; the frame's line time is
-when its last byte arrives minus when its first was sent.
+The program writes each frame's orders to its port and waits for the line (the link's
+``wait``: whoever runs the machine runs it until everything has arrived); the frame's line
+time is when its last byte arrives minus when its first was sent.  The screen's LUT indices,
+read back afterwards, measure the colour leaks (leaks.classify).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Protocol
 
 import numpy as np
 
 from apps.snooker.render.leaks import classify
 from apps.snooker.render.sigma_host import SigmaFrame, SigmaHost
-from protocols.link import LineSettings, SerialLine, VirtualClock
-
-
-class TerminalLike(Protocol):
-    def feed(self, data: bytes) -> None: ...
-
-    def indices(self) -> np.ndarray: ...
-
-    def frame(self) -> np.ndarray: ...
+from protocols.link.port import BatchLink
 
 
 @dataclass(frozen=True)
@@ -38,24 +27,19 @@ class SentFrame:
 
 
 class SigmaSession:
-    def __init__(self, host: SigmaHost, terminal: TerminalLike,
-                 settings: LineSettings | None = None) -> None:
-        self.host, self.terminal = host, terminal
-        self.clock = VirtualClock()
-        self.line = SerialLine(settings or LineSettings(baud=9600), clock=self.clock)
+    def __init__(self, host: SigmaHost, link: BatchLink) -> None:
+        self.host, self.link = host, link
         self.setup_seconds = self._send(host.setup())
 
     def _send(self, data: bytes) -> float:
-        start = self.clock.exact
-        self.line.host.write(data)
-        end = self.line.host.drain_time_exact()
-        self.clock.advance_to(end)
-        self.terminal.feed(self.line.device.read())
-        return float(end - start)
+        start = self.link.port.now
+        end = self.link.port.write(data)
+        self.link.wait()
+        return end - start
 
     def show(self, view: object, frame: int | None = None) -> SentFrame:
         f = self.host.frame(view, frame)
         seconds = self._send(f.data)
-        screen = np.ascontiguousarray(self.terminal.indices()[::-1])
+        screen = self.link.indices()
         leaks, gaps = classify(screen, f.intended, f.flat_colours)
         return SentFrame(f, seconds, leaks, gaps, screen)

@@ -57,15 +57,15 @@ def sigma_frames() -> Iterator[Any]:
     """The Sigma showcase: the screen after each 1/25 s of line time at 9600 baud."""
     from fractions import Fraction  # imported here: every command builds the demo's parser
 
-    from emulator.sigma import Terminal
-    from protocols.link import LineSettings, chunks_by_period
+    from emulator.harness.sigma_batch import periods
+    from emulator.machine import SigmaMachine
+    from protocols.link import LineSettings
     from protocols.sigma.demo import sigma_demo_stream
 
-    term = Terminal("t5684")
-    for _k, chunk in chunks_by_period(sigma_demo_stream(), LineSettings(baud=9600),
-                                      Fraction(1, FPS)):
-        term.feed(chunk)
-        yield term.frame()
+    machine = SigmaMachine("t5684", LineSettings(baud=9600), xonxoff=False)
+    machine.host.write(sigma_demo_stream())
+    for _k in periods(machine, Fraction(1, FPS)):
+        yield machine.frame()
 
 
 def kas_frames() -> Iterator[Any]:
@@ -73,12 +73,15 @@ def kas_frames() -> Iterator[Any]:
     from fractions import Fraction
 
     from apps.kas.program import demo_session
-    from emulator.sigma import Terminal
+    from emulator.harness.sigma_batch import periods
+    from emulator.machine import SigmaMachine
+    from protocols.link import LineSettings
 
-    term = Terminal("t5684")
-    for _k, data in demo_session().arrivals(Fraction(1, FPS)):
-        term.feed(data)
-        yield term.frame()
+    machine = SigmaMachine("t5684", LineSettings(baud=9600))
+    for t, data in demo_session().chunks:  # the host's writes, each at its line time
+        machine.line.host.write(data, at=t)
+    for _k in periods(machine, Fraction(1, FPS)):
+        yield machine.frame()
 
 
 def snooker_frames() -> Iterator[Any]:
@@ -129,20 +132,26 @@ def paint_frames() -> Iterator[Any]:
     """The demo walk (with its rising sun) auto-painted from three operations done on its
     middle frame, every fourth frame painted and replayed double-buffered on a T5688 at 9600
     baud; one picture per 1/25 s of line time."""
+    from fractions import Fraction
+
     from apps.kas import demo
     from apps.kas.paint.ops import Op, OpsFile
     from apps.kas.paint.program import PaintProgram
-    from apps.kas.paint.replay import periods
-    from emulator.sigma import Terminal
+    from apps.kas.paint.replay import ReplayHost
+    from emulator.harness.sigma_batch import periods
+    from emulator.machine import SigmaMachine
+    from protocols.link import LineSettings
 
     seq = demo.build()
     mid = len(seq.frames) // 2
     sun = tuple(seq.frames[mid - 1].chains[2].centre())
     ops = OpsFile(ops=[Op("fill", 3, chains=(2,)), Op("fill", 5, chains=(1,)),
                        Op("region", 27, at=sun)], painted=mid)
-    term = Terminal("t5688")
-    for _ in periods(PaintProgram(seq, ops), term, 9600, FPS, range(1, len(seq.frames) + 1, 4)):
-        yield term.frame()
+    machine = SigmaMachine("t5688", LineSettings(baud=9600), xonxoff=False)
+    host = ReplayHost(PaintProgram(seq, ops), machine.host, range(1, len(seq.frames) + 1, 4))
+    for _ in periods(machine, Fraction(1, FPS)):
+        yield machine.frame()
+        host.step()  # the next frame once the line has delivered the last
 
 
 def snooker_camera_frames() -> Iterator[Any]:

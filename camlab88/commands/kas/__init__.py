@@ -55,13 +55,13 @@ def prepare_front(args: argparse.Namespace, command: str):
 def run_front(front, args: argparse.Namespace, command: str, keys: str,
               prepared=None):
     """Run a KAS program on an emulated T5684 over the line, on the harness: from a script
-    and/or a window.  Returns the program's session (protocols side)."""
-    from apps.kas.program.keyboard import KEY_BYTES
+    and/or a window.  Returns the run (the session and its machine)."""
+    from apps.kas.program.keyboard import KEY_BYTES, key_to_bytes
     from apps.kas.program.layout import TABLET_AREA
     from apps.kas.program.script import Session
     from emulator.harness import run
-    from emulator.harness.sigma import SigmaProgramTarget
-    from emulator.sigma import Terminal
+    from emulator.harness.sigma import SigmaProgramTarget, SigmaSessionRun
+    from emulator.machine import SigmaMachine
     from emulator.tablet_input.pointer import TabletInput
     from protocols.link import LineSettings
 
@@ -72,14 +72,16 @@ def run_front(front, args: argparse.Namespace, command: str, keys: str,
                          record=opts.record is not None)
     if tablet.live:  # a real stylus moves on the wall clock: keep the line time level with it
         opts.live = True
-    session = Session(front, Terminal("t5684"), LineSettings(baud=args.baud), pointer=tablet)
+    machine = SigmaMachine("t5684", LineSettings(baud=args.baud))
+    session = Session(front, machine.host, pointer=tablet)
     end = opts.headless or opts.screenshot is not None
-    target = SigmaProgramTarget(session, f"{command} - Sigma T5684", keys,
-                                frozenset(KEY_BYTES), events, end)
+    ran = SigmaSessionRun(machine, session, key_to_bytes)
+    target = SigmaProgramTarget(ran, f"{command} - Sigma T5684", keys, frozenset(KEY_BYTES),
+                                events, end)
     try:
         run(target, opts)
     finally:
         tablet.close()
         for n in notices:
             print(f"{command}: {n}")
-    return session
+    return ran

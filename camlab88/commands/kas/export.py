@@ -58,10 +58,8 @@ def _written(out: Path, n: int) -> str:
 def _on_sigma(background: str):
     """Each frame drawn on a fresh emulated T5684 (16 colours, the terminal's own vectors)."""
     from apps.kas.program.viewer import still_bytes
-    from emulator.sigma import Terminal
+    from emulator.harness.sigma_batch import still
 
     def on_sigma(frame):
-        term = Terminal("t5684")
-        term.feed(still_bytes(frame, background))
-        return term.frame()
+        return still(still_bytes(frame, background), "t5684").frame()
     return on_sigma

@@ -31,20 +31,24 @@ def register(actions: argparse._SubParsersAction) -> None:
 
 def view(args: argparse.Namespace) -> int:
     from apps.kas import files, library
-    from apps.kas.program.viewer import LineTest
+    from apps.kas.program.viewer import LineTest, ViewerHost
     from emulator.harness import run
     from emulator.harness.sigma import PeriodTarget
-    from emulator.sigma import Terminal
+    from emulator.harness.sigma_batch import host_periods
+    from emulator.machine import SigmaMachine
+    from protocols.link import LineSettings
 
     opts = run_options(args, COMMAND, "playing the line test to its end",
                        argv=getattr(args, "_argv", None))
     try:
         seq = files.load_sequence(library.resolve(args.seq))
         test = LineTest(seq, args.swap, args.background)
-        term = Terminal("t5684")
+        settings = LineSettings(baud=args.baud)
+        machine = SigmaMachine("t5684", settings)
+        host = ViewerHost(test, args.mode, machine.host, settings, args.fps)
+        periods = host_periods(machine, host, host.period)
         fps = args.fps or seq.fps
-        periods = test.periods(args.mode, args.baud, args.fps, term)
-        h = run(PeriodTarget(term, periods, fps, f"{COMMAND} - Sigma T5684"), opts)
+        h = run(PeriodTarget(machine, periods, fps, f"{COMMAND} - Sigma T5684"), opts)
     except (OSError, ValueError) as exc:
         return fail(COMMAND, exc)
     rep = h.target.result

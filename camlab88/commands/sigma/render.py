@@ -39,7 +39,7 @@ def _die(message: str) -> SystemExit:
 
 
 def render(args: argparse.Namespace) -> int:
-    from emulator.sigma import Terminal
+    from emulator.harness.sigma_batch import settle
     from protocols.sigma.stream_file import StreamFileError, host_bytes, read_stream_file
 
     if args.out is None and args.frames is None and args.video is None \
@@ -52,25 +52,41 @@ def render(args: argparse.Namespace) -> int:
         got = read_stream_file(args.stream)
     except StreamFileError as exc:
         raise _die(str(exc)) from None
-    term = Terminal(args.model)
+    machine = _machine(args.model, got, settings)
     with open_trace(args, COMMAND, str(args.stream)) as trace:
         trace.stream = host_bytes(got)
-        feed = term.feed if trace.sink is None else trace.stream_feeder(term, got,
-                                                                        settings.char_time)
+        machine.trace(trace.sink, trace.strict)
         if args.video is not None or args.inspect_out is not None:
-            _play(args, feed, term, got, settings)
+            _play(args, machine, got, settings)
         elif args.frames is not None:
-            n = _write_frames(feed, term, got, settings, Fraction(1, args.fps), args.frames)
+            n = _write_frames(machine, got, settings, Fraction(1, args.fps), args.frames)
             print(f"wrote {n} frames to {args.frames}")
         else:
-            feed(host_bytes(got))
+            settle(machine)
     if trace.failed:
         return 1
     if args.out is not None:
-        _png(term.frame(), args.out)
+        _png(machine.frame(), args.out)
         print(f"wrote {args.out}")
-    _say_skipped(term, args.stream, host_bytes(got))
+    _say_skipped(machine.terminal, args.stream, host_bytes(got))
     return 0
+
+
+def _machine(model: str, got, settings):
+    """A terminal on a line with the stream on its way: raw bytes back to back from t = 0,
+    or a recording's host-to-terminal runs each sent so that it arrives when recorded (a
+    recording keeps its own line settings)."""
+    from emulator.machine import SigmaMachine
+
+    if isinstance(got, bytes):
+        machine = SigmaMachine(model, settings, xonxoff=False)
+        machine.host.write(got)
+        return machine
+    machine = SigmaMachine(model, got.settings, xonxoff=False)
+    ct = got.settings.char_time
+    for t, data in got.arrivals(">"):  # the host end, writing ahead at recorded times
+        machine.line.host.write(data, at=max(Fraction(0), t - len(data) * ct))
+    return machine
 
 
 def _settings(baud: int):
@@ -91,9 +107,9 @@ def _png(frame, path: Path) -> None:
         raise _die(f"cannot write {path}: {exc.strerror or exc}") from None
 
 
-def _write_frames(feed, term, got, settings, period: Fraction,
-                  directory: Path) -> int:
+def _write_frames(machine, got, settings, period: Fraction, directory: Path) -> int:
     from base.png import frame_path
+    from emulator.harness.sigma_batch import periods
     from protocols.link.sniff import frame_count
 
     try:  # a damaged recording time must not mean hours of PNGs
@@ -101,41 +117,30 @@ def _write_frames(feed, term, got, settings, period: Fraction,
     except ValueError as exc:
         raise _die(str(exc)) from None
     count = 0
-    for k, chunk in _periods(got, settings, period):
-        feed(chunk)
-        _png(term.frame(), frame_path(directory, k))
+    for k in periods(machine, period):
+        _png(machine.frame(), frame_path(directory, k))
         count += 1
     return count
 
 
-def _play(args: argparse.Namespace, feed, term, got, settings) -> None:
+def _play(args: argparse.Namespace, machine, got, settings) -> None:
     """The frame periods through the harness, headless and flat out unless --speed: the
     emulator controls' --video and --inspect-out, and --frames too."""
     from camlab88.control_flags import controls_from_args
     from emulator.harness import RunOptions, run
     from emulator.harness.sigma import PeriodTarget
+    from emulator.harness.sigma_batch import periods
     from protocols.link.sniff import frame_count
 
-    period = Fraction(1, args.fps)
     try:  # a damaged recording time must not mean hours of frames
         frame_count(_duration(got, settings), args.fps, name=str(args.stream))
     except ValueError as exc:
         raise _die(str(exc)) from None
-
-    direct = feed == term.feed  # not --trace: through term.feed as it will be then (the
-                                # inspector listens there)
-
-    def periods():
-        for k, chunk in _periods(got, settings, period):
-            if direct:
-                term.feed(chunk)
-            else:
-                feed(chunk)
-            yield k
-
     opts = RunOptions(headless=True, command=COMMAND, frames=args.frames,
                       controls=controls_from_args(args, COMMAND, headless=True))
-    run(PeriodTarget(term, periods(), args.fps, f"{COMMAND} {args.stream}"), opts)
+    target = PeriodTarget(machine, periods(machine, Fraction(1, args.fps)), args.fps,
+                          f"{COMMAND} {args.stream}")
+    run(target, opts)
 
 
 def _duration(got, settings) -> Fraction:
@@ -143,24 +148,6 @@ def _duration(got, settings) -> Fraction:
     if isinstance(got, bytes):
         return Fraction(len(got)) * settings.char_time
     return Fraction(got.duration)
-
-
-def _periods(got, settings, period: Fraction):
-    """(k, bytes arrived in period k): raw bytes sent back to back from t = 0, or a
-    recording's host-to-device bytes at their recorded arrival times."""
-    from protocols.link import VirtualClock, chunks_by_period
-    from protocols.link.replay import ReplayEndpoint
-
-    if isinstance(got, bytes):
-        yield from chunks_by_period(got, settings, period)
-        return
-    clock = VirtualClock()
-    ep = ReplayEndpoint(got, ">", clock)
-    k = 0
-    while not ep.finished:
-        clock.advance_to((k + 1) * period)
-        yield k, ep.read()
-        k += 1
 
 
 def _say_skipped(term, stream: Path, data: bytes) -> None:

@@ -73,15 +73,13 @@ def run(args: argparse.Namespace) -> int:
                        + ("" if ends else " until Ctrl-C"), argv=getattr(args, "_argv", None))
     if replay.active() is None and opts.screenshot is None:
         opts.realtime = True  # an outside program's line runs at its baud rate, idle asleep
-    line, recorder = _line(args, settings)
-    target = _target(args, line, got)
+    machine, recorder = _machine(args, settings)
+    target = _target(args, machine, got)
+    line = machine.line
     # Ctrl-C, or SIGTERM (cli.main delivers it as Ctrl-C): the recording is still written
     with open_trace(args, COMMAND, "the line") as trace, contextlib.ExitStack() as done:
         done.callback(_finish, target, line, recorder, args)
-        if trace.sink is not None:
-            from emulator.sigma.trace import SigmaTracer
-
-            target.tracer = SigmaTracer(target.term, trace.sink, trace.strict)
+        machine.trace(trace.sink, trace.strict)
         if replay.active() is None:
             target.bridge = _open_bridge(args, settings, target.tap)
             opts.live = True  # outside bytes enter at the poll's virtual time: keep them level
@@ -121,8 +119,8 @@ def _stream_and_settings(args: argparse.Namespace):
         raise _die(str(exc)) from None
 
 
-def _line(args: argparse.Namespace, settings):
-    from protocols.link import SerialLine, VirtualClock
+def _machine(args: argparse.Namespace, settings):
+    from emulator.machine import SigmaMachine
 
     recorder = None
     if args.record_line is not None:
@@ -134,14 +132,14 @@ def _line(args: argparse.Namespace, settings):
             recorder = Recorder(args.record_line, settings)
         except OSError as exc:
             raise _die(f"cannot record to {args.record_line}: {exc.strerror or exc}") from None
-    return SerialLine(settings, clock=VirtualClock(), recorder=recorder), recorder
+    return SigmaMachine(args.model, settings, recorder=recorder), recorder
 
 
-def _target(args: argparse.Namespace, line, got):
+def _target(args: argparse.Namespace, machine, got):
     from emulator.harness.sigma_line import SigmaLineTarget
-    from emulator.sigma import Terminal
     from protocols.link.replay import replay_into
 
+    line = machine.line
     if isinstance(got, bytes):
         if got:
             line.host.write(got)
@@ -150,9 +148,8 @@ def _target(args: argparse.Namespace, line, got):
     until = None if args.seconds is None else Fraction(args.seconds)
     if until is None and args.screenshot is not None:  # once the --in stream has arrived
         until = Fraction(line.host.drain_time()) + FRAME
-    return SigmaLineTarget(Terminal(args.model), line, None,
-                           f"camlab88 Sigma {args.model.upper()}", until, _report,
-                           args.order_timeout)
+    return SigmaLineTarget(machine, None, f"camlab88 Sigma {args.model.upper()}", until,
+                           _report, args.order_timeout)
 
 
 def _report(kind: str, detail: str) -> None:

@@ -140,13 +140,13 @@ def _sigma_frames(args: argparse.Namespace, scene, views, frames: Path) -> str:
     from apps.snooker.render.sequence import choose_palette, render_sequence
     from base.atomicfile import write_atomic
     from base.png import png_bytes
-    from emulator.sigma import Terminal
+    from emulator.harness.sigma_batch import t5688_link
 
     palette = choose_palette(scene, views, "fixed")
     frames.mkdir(parents=True, exist_ok=True)
     line = 0.0
     for f in render_sequence(scene, views, args.mode, (768, 512), palette,
-                             lambda: Terminal("t5688"), not args.no_specks):
+                             t5688_link, not args.no_specks):
         write_atomic(frame_file(frames, f.frame), png_bytes(f.image))
         line += f.line_seconds or 0.0
     return f"{args.mode} on the emulated T5688, line time {line:.1f} s at 9600 baud"

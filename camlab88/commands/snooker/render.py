@@ -8,11 +8,7 @@ draw on one emulated T5688, frame after frame."""
 from __future__ import annotations
 
 import argparse
-import os
-import shutil
 import sys
-import tempfile
-from dataclasses import dataclass, field
 from pathlib import Path
 
 from camlab88.runopts import fail, frames_dir, positive, progress
@@ -154,39 +150,7 @@ def _truecolour(args: argparse.Namespace, scene, views, out: Path) -> str:
             + "".join(f"; frame {f} retried ({why})" for f, why in r.retries))
 
 
-@dataclass(frozen=True)
-class SigmaFrames:
-    """One frame on a fresh emulated T5688 (set up, LUT loaded, the frame's orders over the
-    9600-baud line, the screen read back) -> PNG bytes: a picklable renderer for the film
-    scheduler's workers. Byte-identical to one terminal drawing frame after frame, because
-    every frame starts from a cleared screen (checked in tests/snooker_render/test_parallel.py)."""
-
-    mode: str
-    specks: bool
-    palette_sha: str
-    palette: object = field(repr=False, compare=False)
-
-    def __call__(self, scene, task) -> bytes:
-        from apps.snooker.render.sequence import render_sequence
-        from base.png import png_bytes
-        from emulator.sigma import Terminal
-
-        f = next(render_sequence(scene, [task.view], self.mode, (768, 512), self.palette,
-                                 lambda: Terminal("t5688"), self.specks))
-        return png_bytes(f.image)
-
-
-def sigma_frames(mode: str, specks: bool, palette) -> SigmaFrames:
-    import hashlib
-
-    import numpy as np
-
-    lut = np.ascontiguousarray(palette.linear, dtype=np.float64).tobytes()
-    return SigmaFrames(mode, specks, hashlib.sha256(lut).hexdigest()[:32], palette)
-
-
-def _sigma_parallel(args: argparse.Namespace, scene, views, out: Path,
-                    render: SigmaFrames) -> str:
+def _sigma_parallel(args: argparse.Namespace, scene, views, out: Path, render) -> str:
     from apps.snooker.film.pipeline import FilmLook, shoot
     from apps.snooker.film.progress import progress_bar
 
@@ -199,57 +163,18 @@ def _sigma_parallel(args: argparse.Namespace, scene, views, out: Path,
 
 def _sigma(args: argparse.Namespace, scene, views, out: Path) -> str:
     from apps.snooker.render.sequence import choose_palette
+    from apps.snooker.render.sigma_frames import record, render_staged, sigma_frames
+    from emulator.harness.sigma_batch import t5688_link
 
     palette = choose_palette(scene, views, args.palette,
                              progress(f"{COMMAND}: choosing 256 colours"))
-    render = sigma_frames(args.mode, not args.no_specks, palette)
+    render = sigma_frames(args.mode, not args.no_specks, palette, t5688_link)
     if args.workers or args.dask:
         return _sigma_parallel(args, scene, views, out, render)
-    stats = _sigma_sequential(args, scene, views, out, palette)
-    _record(scene, views, out, render)
-    return stats
-
-
-def _record(scene, views, out: Path, render: SigmaFrames) -> None:
-    """The frames just drawn, in the resume record (a parallel rerun skips them)."""
-    from apps.snooker.film.pipeline import FilmLook, film_digest
-    from apps.snooker.film.schedule import Manifest, frame_file
-    from apps.snooker.film.task import task_key
-
-    look = FilmLook(specks=render.specks)
-    record, digest = Manifest(out / RECORD), film_digest(scene, render)
-    for v in views:
-        png = frame_file(out, int(v.frame)).read_bytes()  # what was just moved into place
-        record.put(int(v.frame), task_key(digest, look.task(v)), png)
-    record.save()
-
-
-def _sigma_sequential(args: argparse.Namespace, scene, views, out: Path,
-                      palette) -> str:
-    from apps.snooker.render.sequence import render_sequence
-    from emulator.png import frame_path, write_png
-    from emulator.sigma import Terminal
-
-    out.mkdir(parents=True, exist_ok=True)
-    stage = Path(tempfile.mkdtemp(prefix=".render-", dir=out))
-    show = progress(COMMAND)
-    line = leaks = gaps = 0.0
-    try:  # every frame goes to a staging directory first: nothing half-written
-        for k, f in enumerate(render_sequence(scene, views, args.mode, args.size, palette,
-                                              lambda: Terminal("t5688"), not args.no_specks,
-                                              not args.no_wood),
-                              start=1):
-            write_png(f.image, frame_path(stage, f.frame))
-            line += f.line_seconds or 0.0
-            leaks += f.leaks or 0
-            gaps += f.gaps or 0
-            if show is not None:
-                show(k, len(views))
-        for f in sorted(stage.iterdir()):
-            os.replace(f, out / f.name)
-    finally:
-        shutil.rmtree(stage, ignore_errors=True)
+    t = render_staged(scene, views, out, args.mode, args.size, palette, t5688_link,
+                      not args.no_specks, not args.no_wood, progress(COMMAND))
+    record(scene, views, out, render, RECORD)
     n = len(views)
-    return (f"; {args.palette} palette; line time {line:.1f} s at 9600 baud "
-            f"({line / n:.1f} s a frame); leaking pixels {int(leaks)}"
-            f" ({leaks / n:.1f} a frame), gaps {int(gaps)}")
+    return (f"; {args.palette} palette; line time {t.line:.1f} s at 9600 baud "
+            f"({t.line / n:.1f} s a frame); leaking pixels {int(t.leaks)}"
+            f" ({t.leaks / n:.1f} a frame), gaps {int(t.gaps)}")
