@@ -12,7 +12,6 @@ from fractions import Fraction
 
 from emulator.harness.sigma_line import SigmaLineTarget
 from emulator.machine import SigmaMachine
-from protocols.link import LineSettings, SerialLine
 from protocols.link.transports import TcpBridge
 from tests.support.listeners import EchoLine, drain
 
