@@ -70,8 +70,8 @@ def tile_colours(rules: object, states: set[int]) -> dict[int, tuple[int, int, i
 
     if not states:
         return {}
-    pal = palette(rules, max(states))  # type: ignore[arg-type]
-    return {s: tuple(int(v) for v in pal[s]) for s in states}  # type: ignore[misc]
+    pal = palette(rules, max(states))
+    return {s: tuple(int(v) for v in pal[s]) for s in states}
 
 
 def build(spec: FilmSpec) -> CaFilm:

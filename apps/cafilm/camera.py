@@ -69,7 +69,7 @@ def script_views(text: str, generations: int, path: str) -> GenerationViews:
     """Interpret the script (CclErrors listing every error if it has any)."""
     from apps.snooker.camera.ccl import compile_script
 
-    result = compile_script(text, _grid_motion(generations), path)  # type: ignore[arg-type]
+    result = compile_script(text, _grid_motion(generations), path)
     # the table frame is CCL's space with x mirrored: (-x, y, z); the board's world frame
     # is (x, -y, z) of CCL's, so world = (-tx, -ty, tz)
     flip = np.array([-1.0, -1.0, 1.0])

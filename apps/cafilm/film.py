@@ -79,9 +79,9 @@ def render_image(film: CaFilm, frame: int) -> np.ndarray:
 
 def render_png(film: CaFilm, task: FilmFrame) -> bytes:
     """The backends' render function: picklable inputs -> PNG bytes, the same anywhere."""
-    from apps.snooker.film.task import encode_png
+    from base.png import png_bytes
 
-    return encode_png(render_image(film, task.frame))
+    return png_bytes(render_image(film, task.frame))
 
 
 def digest(film: CaFilm) -> str:
@@ -106,9 +106,9 @@ def shoot(film: CaFilm, out_dir: str | os.PathLike[str], dask: str | None = None
     from apps.snooker.film.backends import open_backend
     from apps.snooker.film.schedule import render_film
 
-    backend = open_backend(film, dask, workers, render=render_png)  # type: ignore[arg-type]
+    backend = open_backend(film, dask, workers, render=render_png)
     try:
-        return render_film(tasks(film), Path(out_dir), backend, digest(film),  # type: ignore[arg-type]
+        return render_film(tasks(film), Path(out_dir), backend, digest(film),
                            progress)
     finally:
         backend.close()

@@ -39,14 +39,14 @@ class Timeline:
 
 def record(engine: object, generations: int) -> Timeline:
     """Step ``engine`` (apps.ca.engine.Engine) ``generations`` times, keeping each state."""
-    xs, ys, ts = engine.cells()  # type: ignore[attr-defined]
+    xs, ys, ts = engine.cells()
     x0 = int(xs.min()) if len(xs) else 0
     y0 = int(ys.min()) if len(ys) else 0
     gens = [Generation(xs - x0, ys - y0, ts.copy())]
     total = len(xs)
     for _ in range(generations):
-        engine.step(1)  # type: ignore[attr-defined]
-        xs, ys, ts = engine.cells()  # type: ignore[attr-defined]
+        engine.step(1)
+        xs, ys, ts = engine.cells()
         total += len(xs)
         if total > MAX_CELLS:
             raise TimelineError(f"more than {MAX_CELLS} live cells over the film's "

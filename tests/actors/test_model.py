@@ -115,5 +115,5 @@ def test_a_failed_save_keeps_the_old_file(tmp_path: Path) -> None:
     write_actors(path, s)
     before = path.read_bytes()
     with pytest.raises(AttributeError):
-        write_actors(path, ActorSet("life", {1: "not an actor"}))  # type: ignore[dict-item]
+        write_actors(path, ActorSet("life", {1: "not an actor"}))
     assert path.read_bytes() == before

@@ -14,5 +14,5 @@ CHESS = str(ROOT / "examples" / "ca" / "chess.actors")
 def glider_film(generations: int = 2, per_generation: int = 2, size: tuple[int, int] = (96, 64),
                 **kw: object) -> CaFilm:
     spec = FilmSpec("life", "glider", generations, CHESS, per_generation=per_generation,
-                    size=size, **kw)  # type: ignore[arg-type]
+                    size=size, **kw)
     return build(spec)

@@ -128,7 +128,7 @@ class ActorEditor:
         self.index = index % len(self.types)
         a = self.actor()
         i = None if a is None else first_lathe(a)
-        self.profile = Profile(() if i is None else a.parts[i].profile)  # type: ignore[union-attr]
+        self.profile = Profile(() if i is None else a.parts[i].profile)
         self.picked = None
         self.display.draw_profile(self.profile.points, None)
         self.display.sliders.show(self._slider_values())

@@ -29,6 +29,10 @@ class RunWriter:
         self.colour = c
         return self.enc.colour8(c)
 
+    def forget_colour(self) -> None:
+        """After anything that may change the terminal's colour behind our back."""
+        self.colour = -1
+
     def pixels(self, rows: np.ndarray, xs: np.ndarray, idx: np.ndarray) -> bytes:
         """Orders that set each (row, x) (row 0 = top of the screen) to its colour index."""
         if len(rows) == 0:

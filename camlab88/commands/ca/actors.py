@@ -11,7 +11,7 @@ KEYS = ("left: add/drag a point, set a slider; right: delete a point; middle: me
         "Tab next cell type; q, Esc or close the window to quit")
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     from camlab88.runopts import add_run_options
 
     p = actions.add_parser(
@@ -113,7 +113,7 @@ def _run(path: str, types: list, rules: str, player, opts, tablet):
 
     end_with_script = opts.headless or opts.screenshot is not None
     target = RainbowTarget(session, step, "camlab88 ca actors", KEYS, player, end_with_script)
-    target.may_close = editor.may_close  # type: ignore[method-assign]
+    target.may_close = editor.may_close
     target.tablet = tablet
     run(target, opts)
     return editor

@@ -29,7 +29,7 @@ def _movie(text: str) -> Path:
     return Path(text)
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+def register(actions: argparse._SubParsersAction) -> None:
     s = actions.add_parser(
         "film", help="the automaton as a film of 3-D actors (chessmen...) (§8.1)",
         description="Run RULES on PATTERN for N generations and film it with each cell "
@@ -131,21 +131,20 @@ def _truecolour(args: argparse.Namespace, movie, frames: Path) -> str:
 def _period(movie, frames: Path) -> str:
     from apps.cafilm.period import period_frames
     from apps.snooker.film.schedule import frame_file
-    from apps.snooker.film.task import encode_png
     from base.atomicfile import write_atomic
-    from emulator.machine.sigma import SigmaMachine
-    from protocols.link import LineSettings
+    from base.png import png_bytes
+    from emulator.harness.sigma_batch import t5688_link
 
-    machine = SigmaMachine("t5688", LineSettings(baud=9600))
+    link = t5688_link()  # a T5688 on its 9600-baud line; the film is a host on its port
 
     def send(orders: bytes):
-        start = machine.now
-        machine.host.write(orders)
-        machine.run_until(machine.idle_time())
-        return machine.frame(), float(machine.now - start)
+        start = link.port.now
+        link.port.write(orders)
+        link.wait()
+        return link.frame(), float(link.port.now - start)
 
     line = 0.0
     for f in period_frames(movie, send):
-        write_atomic(frame_file(frames, f.frame), encode_png(f.image))
+        write_atomic(frame_file(frames, f.frame), png_bytes(f.image))
         line += f.line_seconds
     return f"t5688: Sigma orders only, line time {line:.1f} s at 9600 baud"
