@@ -6,6 +6,7 @@
 ``--stop-after N``  stop after N frames (the count that ``--frames N`` used to be)
 ``--record FILE``  a session recording for ``camlab88 replay``
 ``--scale N``    window scale
+``--save-state FILE``, ``--at SECONDS``, ``--load-state FILE``  save states (stateopts.py)
 """
 
 from __future__ import annotations
@@ -53,6 +54,9 @@ def add_run_options(p: argparse.ArgumentParser, record: bool = True,
         p.add_argument("--record", type=Path, metavar="FILE",
                        help="record the session (replay it with 'camlab88 replay FILE')")
     p.add_argument("--scale", type=positive, default=1, help="window scale (default 1)")
+    from camlab88.stateopts import add_state_options
+
+    add_state_options(p)
 
 
 def run_options(args: argparse.Namespace, command: str, can_headless: str | None,
@@ -69,7 +73,10 @@ def run_options(args: argparse.Namespace, command: str, can_headless: str | None
     record = getattr(args, "record", None)
     if record is not None:
         _check_writable(command, Path(record), "record to")
+    from camlab88.stateopts import state_options
+
     return RunOptions(
+        state=state_options(args, command, active),
         headless=headless, scale=getattr(args, "scale", 1),
         screenshot=getattr(args, "screenshot", None), frames=getattr(args, "frames", None),
         record=getattr(args, "record", None), stop_after=getattr(args, "stop_after", None),

@@ -89,6 +89,7 @@ class RunOptions:
     command: str = "camlab88"           # for messages: "camlab88 kas edit"
     argv: list[str] = field(default_factory=list)   # for recordings
     inputs: list[Path] = field(default_factory=list)  # extra input files to record
+    state: Any = None  # emulator.harness.program_state.StateOptions: save states, seeking
 
 
 class Harness:

@@ -1,0 +1,425 @@
+"""A program's whole state as data: an object graph captured structurally and restored *in
+place* into a freshly built graph of the same program. Not pickle: a state file names no
+code. Loading never imports a module, never calls a constructor or any callable the file
+names; it only creates instances (``object.__new__``) of classes of camlab88's own packages
+that are already loaded, fills their attributes, and writes into the objects, arrays and
+closures the fresh build made (so the references wiring them together - callbacks, views,
+ports - stay the fresh build's).
+
+What is saved: numbers, strings, bytes, Fractions, containers, numpy arrays and scalars,
+random generators (Python's and numpy's), enums and instances of our own classes (their
+``__dict__`` and slots), the objects behind bound methods and the cells of our closures.
+What is *kept from the fresh build*, never read from a file: plain functions, classes,
+modules, paths, open files and sockets, locks, threads (configuration and the outside world).
+Anything else (e.g. a generator still running) cannot be saved: StateError names where it
+is, so a program's state is never silently partial.
+
+A tree is JSON: every non-scalar node is a one-key tagged mapping; bytes and arrays larger
+than ``INLINE`` go to a list of binary blobs beside it.
+"""
+
+from __future__ import annotations
+
+import base64
+import collections
+import enum
+import io
+import math
+import random
+import socket
+import sys
+import threading
+import types
+from fractions import Fraction
+from pathlib import PurePath
+from typing import Any
+
+import numpy as np
+
+OURS = ("apps.", "emulator.", "protocols.", "base.", "roms.", "camlab88.")
+INLINE = 256  # bytes: smaller ones stay in the tree (base64)
+_KEEP_TYPES: tuple[type, ...] = (
+    types.FunctionType, types.BuiltinFunctionType, types.ModuleType, type, PurePath,
+    io.IOBase, socket.socket, type(threading.Lock()), type(threading.RLock()),
+    threading.Thread, threading.Event, types.MethodWrapperType, types.WrapperDescriptorType,
+    types.MethodDescriptorType, np.ufunc)
+_DICTS = {collections.Counter: "counter", collections.OrderedDict: "ordered",
+          collections.defaultdict: "default"}
+_DICT_TYPES = {v: k for k, v in _DICTS.items()}
+_BIT_GENERATORS = {c.__name__: c for c in (np.random.PCG64, np.random.PCG64DXSM,
+                                           np.random.MT19937, np.random.Philox,
+                                           np.random.SFC64)}
+
+
+class StateError(ValueError):
+    """A graph that cannot be captured, or a tree that does not fit the fresh graph."""
+
+
+def _ours(cls: type) -> bool:
+    return cls.__module__.startswith(OURS)
+
+
+def _qual(cls: type) -> str:
+    return f"{cls.__module__}:{cls.__qualname__}"
+
+
+def _attrs(obj: Any) -> dict[str, Any]:
+    """An instance's own attributes: its ``__dict__`` and every slot that is set."""
+    out = dict(getattr(obj, "__dict__", {}))
+    for klass in type(obj).__mro__:
+        for name in getattr(klass, "__slots__", ()):
+            if name not in ("__dict__", "__weakref__") and hasattr(obj, name):
+                out[name] = getattr(obj, name)
+    return out
+
+
+# ---------------------------------------------------------------------------- capture
+class _Capture:
+    def __init__(self) -> None:
+        self.blobs: list[bytes] = []
+        self.memo: dict[int, int] = {}
+        self.keep_alive: list[Any] = []  # ids stay unique while the capture runs
+
+    def bytes_node(self, tag: str, data: bytes) -> dict[str, Any]:
+        if len(data) <= INLINE:
+            return {tag: base64.b64encode(data).decode("ascii")}
+        self.blobs.append(bytes(data))
+        return {tag + "#": len(self.blobs) - 1}
+
+    def node(self, obj: Any, where: str) -> Any:
+        if obj is None or isinstance(obj, bool | str):
+            return obj
+        t = type(obj)
+        if t is int:
+            return obj
+        if t is float:
+            return obj if math.isfinite(obj) else {"F": repr(obj)}
+        if t is bytes:
+            return self.bytes_node("B", obj)
+        if t is tuple:
+            return {"T": [self.node(v, f"{where}[{i}]") for i, v in enumerate(obj)]}
+        if t is frozenset:
+            return {"FS": [self.node(v, f"{where}{{}}") for v in obj]}
+        if t is Fraction:
+            return {"Q": [obj.numerator, obj.denominator]}
+        if t is complex:
+            return {"C": [repr(obj.real), repr(obj.imag)]}
+        if isinstance(obj, np.generic):
+            return {"NS": obj.dtype.str, "v": base64.b64encode(obj.tobytes()).decode()}
+        if isinstance(obj, enum.Enum):
+            return self._enum(obj, where)
+        if (isinstance(obj, _KEEP_TYPES) and not _closure(obj)) or _compiled(obj):
+            return {"K": 0}
+        key = id(obj)
+        if key in self.memo:
+            return {"R": self.memo[key]}
+        self.memo[key] = ref = len(self.memo)
+        self.keep_alive.append(obj)
+        body = self._mutable(obj, where)
+        body["id"] = ref
+        return body
+
+    def _enum(self, obj: enum.Enum, where: str) -> dict[str, Any]:
+        if not _ours(type(obj)):
+            raise StateError(f"{where}: enum {_qual(type(obj))} is not camlab88's")
+        return {"E": _qual(type(obj)), "n": obj.name}
+
+    def _mutable(self, obj: Any, where: str) -> dict[str, Any]:
+        t = type(obj)
+        if t is list:
+            return {"L": [self.node(v, f"{where}[{i}]") for i, v in enumerate(obj)]}
+        if t is dict:
+            return {"D": [[self.node(k, f"{where} key"), self.node(v, f"{where}[{k!r}]")]
+                          for k, v in obj.items()]}
+        if t is set:
+            return {"S": [self.node(v, f"{where}{{}}") for v in obj]}
+        if t in _DICTS:  # Counter, OrderedDict, defaultdict (its factory: the fresh one's)
+            return {"DX": _DICTS[t], "D": [[self.node(k, f"{where} key"),
+                                            self.node(v, f"{where}[{k!r}]")]
+                                           for k, v in obj.items()]}
+        if t is bytearray:
+            return self.bytes_node("BA", bytes(obj))
+        if t is collections.deque:
+            return {"DQ": [self.node(v, f"{where}[]") for v in obj], "max": obj.maxlen}
+        if isinstance(obj, np.ndarray):
+            return self._array(obj, where)
+        if t is random.Random:
+            return {"PR": self.node(obj.getstate(), where)}
+        if t is np.random.Generator:
+            bits = obj.bit_generator
+            return {"NR": type(bits).__name__, "s": self.node(bits.state, where)}
+        if isinstance(obj, types.FunctionType):  # one of our closures: its cells
+            return {"Fn": [self.node(c.cell_contents, f"{where}.<cell {i}>")
+                           for i, c in enumerate(obj.__closure__ or ())]}
+        if isinstance(obj, types.MethodType):
+            return {"M": self.node(obj.__self__, f"{where}.__self__")}
+        if _ours(t) and isinstance(obj, tuple):  # a NamedTuple of ours
+            return {"NT": _qual(t), "v": [self.node(v, f"{where}[{i}]")
+                                          for i, v in enumerate(obj)]}
+        if _ours(t):
+            # a list, not a mapping: restored in the order captured (references come after
+            # their object), whatever order a JSON writer puts mapping keys in
+            return {"O": _qual(t), "a": [[k, self.node(v, f"{where}.{k}")]
+                                         for k, v in _attrs(obj).items()]}
+        if isinstance(obj, types.GeneratorType) and obj.gi_frame is None:
+            return {"K": 0}  # finished: nothing left in it
+        what = "a running generator" if isinstance(obj, types.GeneratorType) else t.__name__
+        raise StateError(f"{where}: cannot save {what}")
+
+    def _array(self, a: np.ndarray, where: str) -> dict[str, Any]:
+        if a.dtype.hasobject:
+            return {"AO": [self.node(v, f"{where}[]") for v in a.ravel().tolist()],
+                    "sh": list(a.shape)}
+        node = self.bytes_node("A", np.ascontiguousarray(a).tobytes())
+        node.update(dt=a.dtype.str, sh=list(a.shape))
+        return node
+
+
+def _compiled(obj: Any) -> bool:
+    """A compiled kernel (numba's dispatcher): code, not state."""
+    return type(obj).__module__.startswith("numba") and callable(obj)
+
+
+def _closure(obj: Any) -> bool:
+    """One of our functions with cells (a closure over program state)."""
+    return (isinstance(obj, types.FunctionType) and bool(obj.__closure__)
+            and (obj.__module__ or "").startswith(OURS))
+
+
+def capture(root: Any) -> tuple[Any, list[bytes]]:
+    """(tree, blobs) of everything reachable from ``root``; StateError names what cannot be
+    saved, with its path from the root."""
+    limit = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(limit, 20000))
+    try:
+        cap = _Capture()
+        return cap.node(root, "state"), cap.blobs
+    finally:
+        sys.setrecursionlimit(limit)
+
+
+# ---------------------------------------------------------------------------- restore
+class _Restore:
+    def __init__(self, blobs: list[bytes]) -> None:
+        self.blobs = blobs
+        self.memo: dict[int, Any] = {}
+
+    def data(self, node: dict[str, Any], tag: str) -> bytes:
+        if tag in node:
+            return base64.b64decode(node[tag], validate=True)
+        index = node[tag + "#"]
+        if type(index) is not int or not 0 <= index < len(self.blobs):
+            raise StateError(f"blob {index!r} is missing")
+        return self.blobs[index]
+
+    def value(self, node: Any, fresh: Any, where: str) -> Any:
+        if node is None or isinstance(node, bool | int | float | str):
+            return node
+        if isinstance(node, list) or not isinstance(node, dict) or not node:
+            raise StateError(f"{where}: not a state node")
+        if "R" in node:
+            if node["R"] not in self.memo:
+                raise StateError(f"{where}: reference {node['R']!r} before its object")
+            return self.memo[node["R"]]
+        if "id" in node:
+            return self._mutable(node, fresh, where)
+        return self._immutable(node, fresh, where)
+
+    def _immutable(self, node: dict[str, Any], fresh: Any, where: str) -> Any:
+        if "K" in node:
+            return fresh
+        if "F" in node:
+            return float(node["F"])
+        if "B" in node or "B#" in node:
+            return self.data(node, "B")
+        if "T" in node:
+            return tuple(self._items(node["T"], fresh if type(fresh) is tuple else (), where))
+        if "FS" in node:
+            return frozenset(self.value(v, None, where) for v in node["FS"])
+        if "Q" in node:
+            return Fraction(int(node["Q"][0]), int(node["Q"][1]))
+        if "C" in node:
+            return complex(float(node["C"][0]), float(node["C"][1]))
+        if "NS" in node:
+            return np.frombuffer(base64.b64decode(node["v"]), dtype=np.dtype(node["NS"]))[0]
+        if "E" in node:
+            return _class(node["E"], where)[node["n"]]
+        raise StateError(f"{where}: unknown node {sorted(node)[:3]}")
+
+    def _items(self, nodes: list[Any], fresh: Any, where: str) -> list[Any]:
+        fresh = list(fresh) if isinstance(fresh, list | tuple) else []
+        return [self.value(v, fresh[i] if i < len(fresh) else None, f"{where}[{i}]")
+                for i, v in enumerate(nodes)]
+
+    def _mutable(self, node: dict[str, Any], fresh: Any, where: str) -> Any:
+        ref = node["id"]
+        if "L" in node:
+            out = fresh if type(fresh) is list else []
+            self.memo[ref] = out
+            out[:] = self._items(node["L"], out, where)
+            return out
+        if "D" in node:
+            return self._dict(node, fresh, where)
+        if "S" in node:
+            out = fresh if type(fresh) is set else set()
+            self.memo[ref] = out
+            items = {self.value(v, None, where) for v in node["S"]}
+            out.clear()
+            out.update(items)
+            return out
+        if "BA" in node or "BA#" in node:
+            out = fresh if type(fresh) is bytearray else bytearray()
+            out[:] = self.data(node, "BA")
+            self.memo[ref] = out
+            return out
+        if "DQ" in node:
+            out = collections.deque(maxlen=node["max"])
+            self.memo[ref] = out
+            out.extend(self._items(node["DQ"], fresh, where))
+            return out
+        if "A" in node or "A#" in node or "AO" in node:
+            self.memo[ref] = out = self._array(node, fresh, where)
+            return out
+        return self._special(node, fresh, where)
+
+    def _dict(self, node: dict[str, Any], fresh: Any, where: str) -> dict[Any, Any]:
+        kind = _DICT_TYPES.get(node.get("DX"), dict)  # type: ignore[arg-type]
+        if type(fresh) is kind:
+            out = fresh
+        elif kind is collections.defaultdict:
+            raise StateError(f"{where}: a defaultdict the fresh program lacks")
+        else:
+            out = kind()
+        self.memo[node["id"]] = out
+        items = []
+        for k, v in node["D"]:
+            key = self.value(k, None, f"{where} key")
+            items.append((key, self.value(v, out.get(key), f"{where}[{key!r}]")))
+        out.clear()
+        out.update(items)
+        return out
+
+    def _array(self, node: dict[str, Any], fresh: Any, where: str) -> np.ndarray:
+        shape = tuple(int(n) for n in node["sh"])
+        if "AO" in node:
+            a = np.empty(shape, dtype=object)
+            a.ravel()[:] = [self.value(v, None, where) for v in node["AO"]] or a.ravel()
+            return a
+        try:
+            dtype = np.dtype(node["dt"])
+            if dtype.hasobject:
+                raise TypeError("object dtype")
+            a = np.frombuffer(self.data(node, "A"), dtype=dtype).reshape(shape)
+        except (TypeError, ValueError) as exc:
+            raise StateError(f"{where}: array does not fit: {exc}") from None
+        if (isinstance(fresh, np.ndarray) and fresh.shape == shape and fresh.dtype == dtype
+                and fresh.flags.writeable):
+            fresh[...] = a  # in place: views of it the fresh build holds stay views
+            return fresh
+        return a.copy()
+
+    def _special(self, node: dict[str, Any], fresh: Any, where: str) -> Any:
+        ref = node["id"]
+        if "PR" in node:
+            out = fresh if type(fresh) is random.Random else random.Random()
+            self.memo[ref] = out
+            out.setstate(_tuples(self.value(node["PR"], None, where)))
+            return out
+        if "NR" in node:
+            return self._numpy_random(node, fresh, where)
+        if "Fn" in node:
+            return self._function(node, fresh, where)
+        if "M" in node:
+            if not isinstance(fresh, types.MethodType):
+                raise StateError(f"{where}: a bound method the fresh program lacks")
+            self.memo[ref] = fresh
+            self.value(node["M"], fresh.__self__, f"{where}.__self__")
+            return fresh
+        if "NT" in node:
+            cls = _class(node["NT"], where)
+            out = tuple.__new__(cls, self._items(node["v"], fresh, where))
+            self.memo[ref] = out
+            return out
+        if "O" in node:
+            return self._object(node, fresh, where)
+        raise StateError(f"{where}: unknown node {sorted(node)[:3]}")
+
+    def _numpy_random(self, node: dict[str, Any], fresh: Any, where: str) -> Any:
+        bits = _BIT_GENERATORS.get(node["NR"])
+        if bits is None:
+            raise StateError(f"{where}: unknown bit generator {node['NR']!r}")
+        out = fresh if type(fresh) is np.random.Generator and \
+            type(fresh.bit_generator) is bits else np.random.Generator(bits())
+        self.memo[node["id"]] = out
+        try:
+            out.bit_generator.state = self.value(node["s"], None, where)
+        except (TypeError, ValueError, KeyError) as exc:
+            raise StateError(f"{where}: random generator state: {exc}") from None
+        return out
+
+    def _function(self, node: dict[str, Any], fresh: Any, where: str) -> Any:
+        cells = fresh.__closure__ if isinstance(fresh, types.FunctionType) else None
+        if cells is None or len(cells) != len(node["Fn"]):
+            raise StateError(f"{where}: a closure the fresh program lacks")
+        self.memo[node["id"]] = fresh
+        for i, (cell, sub) in enumerate(zip(cells, node["Fn"], strict=True)):
+            cell.cell_contents = self.value(sub, cell.cell_contents, f"{where}.<cell {i}>")
+        return fresh
+
+    def _object(self, node: dict[str, Any], fresh: Any, where: str) -> Any:
+        cls = _class(node["O"], where)
+        if type(fresh) is cls:
+            out = fresh
+        elif cls.__new__ is object.__new__:
+            out = object.__new__(cls)
+        else:
+            raise StateError(f"{where}: {node['O']} is not built from a state")
+        self.memo[node["id"]] = out
+        before = _attrs(out)
+        attrs = node["a"]
+        if not isinstance(attrs, list) or not all(
+                isinstance(a, list) and len(a) == 2 and isinstance(a[0], str) for a in attrs):
+            raise StateError(f"{where}: attributes are not a list of [name, value]")
+        for name, sub in attrs:
+            value = self.value(sub, before.get(name), f"{where}.{name}")
+            try:
+                object.__setattr__(out, name, value)
+            except (AttributeError, TypeError) as exc:
+                raise StateError(f"{where}.{name}: {exc}") from None
+        return out
+
+
+def _tuples(value: Any) -> Any:
+    return tuple(_tuples(v) for v in value) if isinstance(value, list | tuple) else value
+
+
+def _class(name: Any, where: str) -> Any:
+    """One of our classes, already loaded; a state never imports anything."""
+    if not isinstance(name, str) or ":" not in name:
+        raise StateError(f"{where}: bad class name {name!r}")
+    module, qual = name.split(":", 1)
+    mod = sys.modules.get(module)
+    if not module.startswith(OURS) or mod is None:
+        raise StateError(f"{where}: class {name} is not one of this program's")
+    obj: Any = mod
+    for part in qual.split("."):
+        obj = getattr(obj, part, None)
+    if not isinstance(obj, type) or obj.__module__ != module:
+        raise StateError(f"{where}: class {name} is not one of this program's")
+    return obj
+
+
+def restore(root: Any, tree: Any, blobs: list[bytes]) -> Any:
+    """Write ``tree`` into the fresh graph at ``root`` (in place where it fits); returns the
+    restored root (``root`` itself when it is one of our objects). StateError when the tree
+    does not fit."""
+    limit = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(limit, 20000))
+    try:
+        return _Restore(blobs).value(tree, root, "state")
+    except (KeyError, IndexError, TypeError, ValueError) as exc:
+        if isinstance(exc, StateError):
+            raise
+        raise StateError(f"state does not fit this program: {exc!r}") from None
+    finally:
+        sys.setrecursionlimit(limit)
