@@ -10,7 +10,8 @@ What is saved: numbers, strings, bytes, Fractions, containers, numpy arrays and 
 random generators (Python's and numpy's), enums and instances of our own classes (their
 ``__dict__`` and slots), the objects behind bound methods and the cells of our closures.
 What is *kept from the fresh build*, never read from a file: plain functions, classes,
-modules, paths, open files and sockets, locks, threads (configuration and the outside world).
+modules, paths, parsed command lines, open files and sockets, locks, threads (configuration
+and the outside world).
 Anything else (e.g. a generator still running) cannot be saved: StateError names where it
 is, so a program's state is never silently partial.
 
@@ -20,6 +21,7 @@ than ``INLINE`` go to a list of binary blobs beside it.
 
 from __future__ import annotations
 
+import argparse
 import base64
 import collections
 import enum
@@ -42,7 +44,7 @@ _KEEP_TYPES: tuple[type, ...] = (
     types.FunctionType, types.BuiltinFunctionType, types.ModuleType, type, PurePath,
     io.IOBase, socket.socket, type(threading.Lock()), type(threading.RLock()),
     threading.Thread, threading.Event, types.MethodWrapperType, types.WrapperDescriptorType,
-    types.MethodDescriptorType, np.ufunc)
+    types.MethodDescriptorType, np.ufunc, argparse.Namespace)
 _DICTS = {collections.Counter: "counter", collections.OrderedDict: "ordered",
           collections.defaultdict: "default"}
 _DICT_TYPES = {v: k for k, v in _DICTS.items()}
@@ -64,8 +66,11 @@ def _qual(cls: type) -> str:
 
 
 def _attrs(obj: Any) -> dict[str, Any]:
-    """An instance's own attributes: its ``__dict__`` and every slot that is set."""
+    """An instance's own attributes: its ``__dict__`` and every slot that is set (less those
+    its class names in ``_state_exclude``: rebuilt after a load, never saved)."""
     out = dict(getattr(obj, "__dict__", {}))
+    for name in getattr(type(obj), "_state_exclude", ()):
+        out.pop(name, None)
     for klass in type(obj).__mro__:
         for name in getattr(klass, "__slots__", ()):
             if name not in ("__dict__", "__weakref__") and hasattr(obj, name):
@@ -203,6 +208,7 @@ class _Restore:
     def __init__(self, blobs: list[bytes]) -> None:
         self.blobs = blobs
         self.memo: dict[int, Any] = {}
+        self.restored: list[Any] = []  # objects told when the whole graph is in place
 
     def data(self, node: dict[str, Any], tag: str) -> bytes:
         if tag in node:
@@ -375,6 +381,8 @@ class _Restore:
         else:
             raise StateError(f"{where}: {node['O']} is not built from a state")
         self.memo[node["id"]] = out
+        if hasattr(out, "_state_restored"):
+            self.restored.append(out)
         before = _attrs(out)
         attrs = node["a"]
         if not isinstance(attrs, list) or not all(
@@ -409,17 +417,79 @@ def _class(name: Any, where: str) -> Any:
     return obj
 
 
-def restore(root: Any, tree: Any, blobs: list[bytes]) -> Any:
+def restore(root: Any, tree: Any, blobs: list[bytes], _hooks: bool = True) -> Any:
     """Write ``tree`` into the fresh graph at ``root`` (in place where it fits); returns the
     restored root (``root`` itself when it is one of our objects). StateError when the tree
     does not fit."""
     limit = sys.getrecursionlimit()
     sys.setrecursionlimit(max(limit, 20000))
     try:
-        return _Restore(blobs).value(tree, root, "state")
+        done = _Restore(blobs)
+        out = done.value(tree, root, "state")
+        for obj in done.restored if _hooks else ():  # (a hook's own restores run none)
+            obj._state_restored()
+        return out
     except (KeyError, IndexError, TypeError, ValueError) as exc:
         if isinstance(exc, StateError):
             raise
         raise StateError(f"state does not fit this program: {exc!r}") from None
     finally:
         sys.setrecursionlimit(limit)
+
+
+# ---------------------------------------------------------------------------- dialogues
+class Resumable:
+    """A program's dialogue (a generator asking questions) that can be saved.
+
+    A running generator cannot be saved, so this keeps what makes it again: the state of its
+    owner when it began, which of the owner's dialogue functions made it (looked up among
+    ``makers``, never named freely by a file), its arguments and every value sent to it.
+    After a load it is made again: the owner is put back as it was when the dialogue began,
+    the dialogue is run with the same values (deterministic: the same questions, the same
+    effects), and then the owner's saved state is put back over it. ``attr`` is the
+    owner's attribute that holds this object."""
+
+    _state_exclude = ("gen", "makers")
+
+    def __init__(self, owner: Any, attr: str, gen: Any, makers: dict[str, Any]) -> None:
+        code = gen.gi_code
+        self.maker = f"{gen.gi_frame.f_globals.get('__name__')}:{code.co_qualname}"
+        if makers.get(self.maker) is None:
+            raise StateError(f"{self.maker} is not one of the owner's dialogues")
+        self.args = dict(gen.gi_frame.f_locals)  # a generator not yet started: its arguments
+        self.owner, self.attr, self.gen, self.makers = owner, attr, gen, makers
+        self.before = capture(owner)
+        self.sent: list[Any] = []
+        self.started = False
+
+    def __iter__(self) -> Resumable:
+        return self
+
+    def __next__(self) -> Any:
+        return self.send(None)
+
+    def send(self, value: Any) -> Any:
+        if self.started:
+            self.sent.append(value)
+        self.started = True
+        return self.gen.send(value)
+
+    def close(self) -> None:
+        self.gen.close()
+
+    def _state_restored(self) -> None:
+        owner = self.owner
+        makers = getattr(type(owner), "dialogue_makers", lambda: {})()
+        maker = makers.get(self.maker)
+        if maker is None:
+            raise StateError(f"dialogue {self.maker!r} is not one of this program's")
+        now = capture(owner)
+        restore(owner, *self.before, _hooks=False)
+        gen = maker(**self.args)
+        if self.started:
+            gen.send(None)
+            for value in self.sent:
+                gen.send(value)
+        restore(owner, *now, _hooks=False)
+        again = getattr(owner, self.attr)
+        again.gen, again.makers = gen, makers

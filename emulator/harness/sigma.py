@@ -9,10 +9,12 @@ from typing import Any
 
 import numpy as np
 
+from emulator.harness.program_state import SavesState, load_object_state, object_state
 from emulator.host_input import HostEvent
+from emulator.machine.state_file import MachineStateError
 
 
-class SigmaProgramTarget:
+class SigmaProgramTarget(SavesState):
     """A program session on a Sigma over the line (KAS's editor and path fronts): ``session``
     has ``step(mouse, keys)``, ``due(events, i)``, ``busy()``, ``clock`` and ``front``
     (protocols side, duck-typed).  Window keys named in ``key_names`` (or printable
@@ -98,12 +100,18 @@ class SigmaProgramTarget:
 class PeriodTarget:
     """A terminal fed period by period by a program's generator (KAS's line test): each
     tick takes one period (``next(periods)`` feeds the terminal and yields its index); the
-    generator's return value is kept in ``result``."""
+    generator's return value is kept in ``result``.
+
+    Its state: the period reached and the terminal. A generator cannot be saved, so loading
+    one makes the program's generator again (``restart()``) and runs it to the saved period
+    (deterministic, on virtual time); the terminal then takes the saved state."""
 
     keys = "close the window to stop"
 
-    def __init__(self, term: Any, periods: Any, fps: float, title: str) -> None:
+    def __init__(self, term: Any, periods: Any, fps: float, title: str,
+                 restart: Any = None) -> None:
         self.term, self.periods, self.title = term, periods, title
+        self.restart = restart
         self._period = Fraction(fps).limit_denominator(10000)
         self.fps = self._period  # exact, so every period is shown
         self.size = (768, 512)
@@ -126,3 +134,26 @@ class PeriodTarget:
 
     def time(self) -> Fraction:
         return self.k / self._period
+
+    def save_state(self) -> bytes:
+        from emulator.machine.state_file import pack
+
+        if self.result is not None:
+            raise MachineStateError("the line test has finished: nothing left to save")
+        return pack("period", {"k": self.k}, {"terminal": object_state(self.term)})
+
+    def load_state(self, data: bytes) -> None:
+        from emulator.machine.state_file import unpack
+
+        head, blobs = unpack(data, "period")
+        k = head.get("k")
+        if type(k) is not int or k < 0 or "terminal" not in blobs:
+            raise MachineStateError("line test state: the period or the terminal is missing")
+        if k < self.k or self.result is not None:
+            if self.restart is None:
+                raise MachineStateError("this line test cannot go back")
+            self.periods, self.k, self.result = self.restart(), 0, None
+        while self.k < k:  # the program's generator run to the saved period
+            if not self.tick():
+                raise MachineStateError(f"the line test ends before period {k}")
+        load_object_state(self.term, blobs["terminal"])

@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 
+from emulator.harness.program_state import SavesState
 from emulator.host_input import HostEvent
 from emulator.sigma.host_input import KEYS_HINT, to_terminal
 
@@ -55,7 +56,7 @@ class OutsideTap:
         return getattr(self._endpoint, name)
 
 
-class SigmaLineTarget:
+class SigmaLineTarget(SavesState):
     """``term`` (emulator.sigma.Terminal) on ``line`` (protocols.link.SerialLine), whose
     host end ``bridge`` serves (None in a replay: the recorded outside traffic comes back
     through ``put_wire`` / ``put_hang_up``).  Runs until ``until`` seconds of line time

@@ -30,6 +30,8 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
 
 
 def view(args: argparse.Namespace) -> int:
+    from functools import partial
+
     from apps.kas import files, library
     from apps.kas.program.viewer import LineTest
     from emulator.harness import run
@@ -44,7 +46,8 @@ def view(args: argparse.Namespace) -> int:
         term = Terminal("t5684")
         fps = args.fps or seq.fps
         periods = test.periods(args.mode, args.baud, args.fps, term)
-        h = run(PeriodTarget(term, periods, fps, f"{COMMAND} - Sigma T5684"), opts)
+        again = partial(test.periods, args.mode, args.baud, args.fps, term)  # to load a state
+        h = run(PeriodTarget(term, periods, fps, f"{COMMAND} - Sigma T5684", again), opts)
     except (OSError, ValueError) as exc:
         return fail(COMMAND, exc)
     rep = h.target.result
