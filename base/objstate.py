@@ -302,7 +302,7 @@ class _Restore:
             key = self.value(k, None, f"{where} key")
             items.append((key, self.value(v, out.get(key), f"{where}[{key!r}]")))
         out.clear()
-        out.update(items)
+        dict.update(out, items)  # (Counter.update would count the pairs)
         return out
 
     def _array(self, node: dict[str, Any], fresh: Any, where: str) -> np.ndarray:

@@ -12,6 +12,9 @@ checked by the program's own argument parser. What each allowed option becomes:
 ``DROP``     a recorder (--record, --record-line, --record-stream): the replay does not repeat it
 ``OUTSIDE``  the line's outside end (sigma run --pty / --listen / --serial): never opened;
              the outside bytes stored in the recording (``+`` wire records) are fed instead
+``KEEP`` also covers ``--load-state FILE``: the state a recorded run began from is an input
+file, carried in the recording by content and loaded again from the replay's scratch copy
+(a recording whose state file is not in it cannot be replayed: the file is missing).
 ``TAPE``     ``--tablet SOURCE``: kept so the program sets up the same decoder, but in a replay
              the device is never opened -- the tablet tape stored in the recording (``T`` wire
              records) is decoded instead (emulator/tablet/taped.py); the value is only parsed
@@ -33,7 +36,10 @@ MAX_SCALE = 8       # --scale: a window 8 times 768x576 is already 85 MB of pixe
 MAX_WORDS, MAX_WORD = 256, 4096
 
 _RUN = {"--headless": KEEP, "--scale": KEEP, "--stop-after": KEEP, "--screenshot": SCRATCH,
-        "--frames": SCRATCH, "--record": DROP}
+        "--frames": SCRATCH, "--record": DROP,
+        # save states: the file saved is an output; the state a run began from is an input
+        # file the recording carries by content (like every input), so the replay loads it
+        "--save-state": SCRATCH, "--at": KEEP, "--load-state": KEEP}
 _KAS_FRONT = {**_RUN, "--script": KEEP, "--background": KEEP, "--baud": KEEP, "--tablet": TAPE}
 
 PROGRAMS: dict[tuple[str, str], dict[str, str]] = {

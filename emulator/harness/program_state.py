@@ -150,9 +150,10 @@ def _first_difference(theirs: Any, ours: list[str]) -> str:
 
 
 # ---------------------------------------------------------------------------- envelope
-def save_program(harness: Harness, version: str) -> bytes:
-    """The whole state now: identity, the harness's place, the target's state."""
-    head = dict(identity(harness, version), harness=_place(harness),
+def save_program(harness: Harness, ident: dict[str, Any]) -> bytes:
+    """The whole state now: ``ident`` (identity(): the program, version and input files as
+    they are now), the harness's place, the target's state."""
+    head = dict(ident, harness=_place(harness),
                 time=str(harness.target.time()))
     return pack("program", head, {"target": target_state(harness.target)})
 
@@ -162,17 +163,20 @@ def _place(harness: Harness) -> list[Any]:
             str(harness._shown_at)]
 
 
-def read_program(data: bytes, harness: Harness, version: str) -> tuple[dict[str, Any], bytes]:
+def read_program(data: bytes, ident: dict[str, Any] | None
+                 ) -> tuple[dict[str, Any], bytes]:
     head, blobs = unpack(data, "program")
-    check_identity(head, identity(harness, version))
+    if ident is not None:  # None: a state this run made itself (F3, F4)
+        check_identity(head, ident)
     if "target" not in blobs:
         raise MachineStateError("the state holds no program state")
     return head, blobs["target"]
 
 
-def load_program(data: bytes, harness: Harness, version: str) -> Fraction:
-    """Continue ``harness`` from a state (checked first); returns its virtual time."""
-    head, target = read_program(data, harness, version)
+def load_program(data: bytes, harness: Harness, ident: dict[str, Any] | None) -> Fraction:
+    """Continue ``harness`` from a state (checked against ``ident`` first); returns its
+    virtual time."""
+    head, target = read_program(data, ident)
     try:
         ticks, shown, next_show, shown_at = head["harness"]
         place = (int(ticks), int(shown), Fraction(next_show), Fraction(shown_at))

@@ -19,7 +19,13 @@ from typing import TYPE_CHECKING
 
 from base.atomicfile import write_atomic
 from emulator.harness.loop import Plugin
-from emulator.harness.program_state import SUFFIX, StateOptions, load_program, save_program
+from emulator.harness.program_state import (
+    SUFFIX,
+    StateOptions,
+    identity,
+    load_program,
+    save_program,
+)
 from emulator.host_input import HostEvent, KeyDown
 from emulator.machine.state_file import MachineStateError
 
@@ -51,7 +57,7 @@ class StatePlugin(Plugin):
         if o.load is not None or o.load_data is not None:
             try:
                 data = o.load_data if o.load_data is not None else Path(o.load).read_bytes()
-                when = load_program(data, harness, o.version)
+                when = load_program(data, harness, identity(harness, o.version))
             except OSError as exc:
                 raise SystemExit(f"{harness.options.command}: cannot read {o.load}: "
                                  f"{exc.strerror or exc}") from None
@@ -71,7 +77,7 @@ class StatePlugin(Plugin):
             self.saved_at_time = True
             self._write(harness, Path(o.save))
         if o.seek_to is not None and now >= o.seek_to:  # a seek's first run ends here
-            o.seek_state = save_program(harness, o.version)
+            o.seek_state = save_program(harness, identity(harness, o.version))
             harness.stop()
         elif (harness.window is not None or o.snapshots is not None) and \
                 now >= self._next_snapshot:
@@ -131,7 +137,7 @@ class StatePlugin(Plugin):
 
     def _load(self, harness: Harness, data: bytes, said: str) -> None:
         try:
-            when = load_program(data, harness, self.options.version)
+            when = load_program(data, harness, None)  # this run's own state
         except MachineStateError as exc:
             _say(harness, f"not loaded: {exc}")
             return
@@ -142,7 +148,7 @@ class StatePlugin(Plugin):
 
     def _snapshot(self, harness: Harness, now: Fraction) -> None:
         try:
-            data = save_program(harness, self.options.version)
+            data = save_program(harness, identity(harness, self.options.version))
         except MachineStateError:
             return  # e.g. mid-dialogue: the next tick tries again
         self.snapshots.append((now, data))
@@ -153,7 +159,7 @@ class StatePlugin(Plugin):
 
     def _write(self, harness: Harness, path: Path) -> None:
         try:
-            data = save_program(harness, self.options.version)
+            data = save_program(harness, identity(harness, self.options.version))
         except MachineStateError as exc:
             _say(harness, f"no state saved at {float(harness.target.time()):g} s: {exc}")
             return
