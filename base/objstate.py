@@ -8,8 +8,10 @@ ports - stay the fresh build's).
 
 What is saved: numbers, strings, bytes, Fractions, containers, numpy arrays and scalars,
 random generators (Python's and numpy's), enums and instances of our own classes (their
-``__dict__`` and slots), the objects behind bound methods and the cells of our closures.
-What is *kept from the fresh build*, never read from a file: plain functions, classes,
+``__dict__`` and slots), the objects behind bound methods, and our functions as *which* one
+(module, qualified name, first line) with their cells: a closure the program made while it
+ran (a callback waiting for an answer) is made again from its code, found in its module.
+What is *kept from the fresh build*, never read from a file: other functions, classes,
 modules, paths, parsed command lines, open files and sockets, locks, threads (configuration
 and the outside world).
 Anything else (e.g. a generator still running) cannot be saved: StateError names where it
@@ -113,7 +115,7 @@ class _Capture:
             return {"NS": obj.dtype.str, "v": base64.b64encode(obj.tobytes()).decode()}
         if isinstance(obj, enum.Enum):
             return self._enum(obj, where)
-        if (isinstance(obj, _KEEP_TYPES) and not _closure(obj)) or _compiled(obj):
+        if (isinstance(obj, _KEEP_TYPES) and not _our_function(obj)) or _compiled(obj):
             return {"K": 0}
         key = id(obj)
         if key in self.memo:
@@ -153,9 +155,12 @@ class _Capture:
         if t is np.random.Generator:
             bits = obj.bit_generator
             return {"NR": type(bits).__name__, "s": self.node(bits.state, where)}
-        if isinstance(obj, types.FunctionType):  # one of our closures: its cells
+        if isinstance(obj, types.FunctionType):  # one of our functions: which, and its cells
+            code = obj.__code__
             return {"Fn": [self.node(c.cell_contents, f"{where}.<cell {i}>")
-                           for i, c in enumerate(obj.__closure__ or ())]}
+                           for i, c in enumerate(obj.__closure__ or ())],
+                    "code": [obj.__module__, code.co_qualname, code.co_firstlineno],
+                    "defaults": self.node(obj.__defaults__, f"{where}.__defaults__")}
         if isinstance(obj, types.MethodType):
             return {"M": self.node(obj.__self__, f"{where}.__self__")}
         if _ours(t) and isinstance(obj, tuple):  # a NamedTuple of ours
@@ -185,10 +190,9 @@ def _compiled(obj: Any) -> bool:
     return type(obj).__module__.startswith("numba") and callable(obj)
 
 
-def _closure(obj: Any) -> bool:
-    """One of our functions with cells (a closure over program state)."""
-    return (isinstance(obj, types.FunctionType) and bool(obj.__closure__)
-            and (obj.__module__ or "").startswith(OURS))
+def _our_function(obj: Any) -> bool:
+    """One of our functions: saved as which one it is (and its cells, if a closure)."""
+    return isinstance(obj, types.FunctionType) and (obj.__module__ or "").startswith(OURS)
 
 
 def capture(root: Any) -> tuple[Any, list[bytes]]:
@@ -364,12 +368,18 @@ class _Restore:
         return out
 
     def _function(self, node: dict[str, Any], fresh: Any, where: str) -> Any:
-        cells = fresh.__closure__ if isinstance(fresh, types.FunctionType) else None
-        if cells is None or len(cells) != len(node["Fn"]):
+        code = _code(node.get("code"), where)
+        if not (isinstance(fresh, types.FunctionType) and fresh.__code__ is code):
+            fresh = _function(code, node["code"][0], len(node["Fn"]), where)
+        cells = fresh.__closure__ or ()
+        if len(cells) != len(node["Fn"]):
             raise StateError(f"{where}: a closure the fresh program lacks")
         self.memo[node["id"]] = fresh
+        defaults = self.value(node.get("defaults"), fresh.__defaults__, where)
+        if defaults != fresh.__defaults__:
+            fresh.__defaults__ = defaults
         for i, (cell, sub) in enumerate(zip(cells, node["Fn"], strict=True)):
-            cell.cell_contents = self.value(sub, cell.cell_contents, f"{where}.<cell {i}>")
+            cell.cell_contents = self.value(sub, _contents(cell), f"{where}.<cell {i}>")
         return fresh
 
     def _object(self, node: dict[str, Any], fresh: Any, where: str) -> Any:
@@ -395,6 +405,73 @@ class _Restore:
             except (AttributeError, TypeError) as exc:
                 raise StateError(f"{where}.{name}: {exc}") from None
         return out
+
+
+_CODES: dict[str, dict[tuple[str, int], types.CodeType]] = {}
+
+
+def _contents(cell: types.CellType) -> Any:
+    try:
+        return cell.cell_contents
+    except ValueError:  # an empty cell (a closure just made again)
+        return None
+
+
+def _code(ref: Any, where: str) -> types.CodeType:
+    """The code of one of our functions, found in its module (already loaded)."""
+    if not (isinstance(ref, list) and len(ref) == 3 and isinstance(ref[0], str)):
+        raise StateError(f"{where}: bad function reference {ref!r}")
+    module, qual, line = ref
+    mod = sys.modules.get(module)
+    if mod is None or not module.startswith(OURS):
+        raise StateError(f"{where}: function {module}:{qual} is not one of this program's")
+    if module not in _CODES:
+        _CODES[module] = _codes_of(mod)
+    code = _CODES[module].get((qual, line))
+    if code is None:
+        raise StateError(f"{where}: function {module}:{qual} is not one of this program's")
+    return code
+
+
+def _codes_of(mod: types.ModuleType) -> dict[tuple[str, int], types.CodeType]:
+    """Every code object defined in a module: its functions, methods and what they nest."""
+    out: dict[tuple[str, int], types.CodeType] = {}
+    todo: list[Any] = list(vars(mod).values())
+    seen: set[int] = set()
+    while todo:
+        obj = todo.pop()
+        if id(obj) in seen:
+            continue
+        seen.add(id(obj))
+        if isinstance(obj, type) and obj.__module__ == mod.__name__:
+            todo.extend(vars(obj).values())
+        elif isinstance(obj, staticmethod | classmethod | property):
+            todo.extend(f for f in (getattr(obj, "__func__", None), getattr(obj, "fget", None),
+                                    getattr(obj, "fset", None)) if f is not None)
+        elif isinstance(obj, types.FunctionType) and obj.__module__ == mod.__name__:
+            todo.append(obj.__code__)
+        elif isinstance(obj, types.CodeType):
+            out[(obj.co_qualname, obj.co_firstlineno)] = obj
+            todo.extend(c for c in obj.co_consts if isinstance(c, types.CodeType))
+    return out
+
+
+def _function(code: types.CodeType, module: str, n_cells: int, where: str) -> Any:
+    """The function a state names: a module-level one itself; a nested one (a closure the
+    program made while it ran) made again from its code, with empty cells to fill."""
+    mod = sys.modules[module]
+    if "<locals>" not in code.co_qualname:
+        obj: Any = mod
+        for part in code.co_qualname.split("."):
+            obj = getattr(obj, part, None)
+        if isinstance(obj, types.FunctionType) and obj.__code__ is code:
+            return obj
+        raise StateError(f"{where}: function {module}:{code.co_qualname} is not found")
+    if len(code.co_freevars) != n_cells:
+        raise StateError(f"{where}: closure {code.co_qualname} has "
+                         f"{len(code.co_freevars)} cells, the state {n_cells}")
+    cells = tuple(types.CellType() for _ in range(n_cells))
+    return types.FunctionType(code, mod.__dict__, code.co_name, None, cells)
 
 
 def _tuples(value: Any) -> Any:

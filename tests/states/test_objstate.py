@@ -44,6 +44,22 @@ def test_values_round_trip_and_arrays_are_written_in_place() -> None:
     assert (fresh.rng.random(), fresh.nprng.integers(1 << 30)) == want
 
 
+def test_a_callback_made_while_running_is_made_again_from_its_code() -> None:
+    from apps.kas.editor import Editor
+    from apps.kas.editor_edit import bindings
+
+    ed = Editor(None, None, 0)
+    bindings(ed)["m"]()  # "move points": waits for two points, then calls back
+    tree, blobs = capture(ed)
+    fresh = Editor(None, None, 0)
+    assert fresh.pending is None
+    restore(fresh, _through_json(tree), blobs)
+    assert fresh.pending is not None and fresh.pending.done is not ed.pending.done
+    assert fresh.pending.done.__code__ is ed.pending.done.__code__
+    assert fresh.pending.done.__closure__[0].cell_contents is fresh  # its cell: the new editor
+    assert fresh.pending.name == "move points"
+
+
 def test_a_running_generator_is_named_not_saved() -> None:
     def gen():
         yield 1
