@@ -209,8 +209,9 @@ def capture(root: Any) -> tuple[Any, list[bytes]]:
 
 # ---------------------------------------------------------------------------- restore
 class _Restore:
-    def __init__(self, blobs: list[bytes]) -> None:
+    def __init__(self, blobs: list[bytes], pinned: frozenset[str] = frozenset()) -> None:
         self.blobs = blobs
+        self.pinned = pinned
         self.memo: dict[int, Any] = {}
         self.restored: list[Any] = []  # objects told when the whole graph is in place
 
@@ -223,6 +224,8 @@ class _Restore:
         return self.blobs[index]
 
     def value(self, node: Any, fresh: Any, where: str) -> Any:
+        if isinstance(fresh, str) and fresh in self.pinned:
+            return fresh  # a word of the command line (a file name): never from a state
         if node is None or isinstance(node, bool | int | float | str):
             return node
         if isinstance(node, list) or not isinstance(node, dict) or not node:
@@ -494,14 +497,17 @@ def _class(name: Any, where: str) -> Any:
     return obj
 
 
-def restore(root: Any, tree: Any, blobs: list[bytes], _hooks: bool = True) -> Any:
+def restore(root: Any, tree: Any, blobs: list[bytes], _hooks: bool = True,
+            pinned: frozenset[str] = frozenset()) -> Any:
     """Write ``tree`` into the fresh graph at ``root`` (in place where it fits); returns the
-    restored root (``root`` itself when it is one of our objects). StateError when the tree
-    does not fit."""
+    restored root (``root`` itself when it is one of our objects). A string of the fresh
+    graph that is in ``pinned`` (the command line's words: file names the program was given)
+    stays as it is, whatever the state says, so a state never chooses where a program reads
+    or writes. StateError when the tree does not fit."""
     limit = sys.getrecursionlimit()
     sys.setrecursionlimit(max(limit, 20000))
     try:
-        done = _Restore(blobs)
+        done = _Restore(blobs, pinned)
         out = done.value(tree, root, "state")
         for obj in done.restored if _hooks else ():  # (a hook's own restores run none)
             obj._state_restored()

@@ -14,6 +14,7 @@ target down: device, line, clock, program, tablet decoder; base.objstate); a tar
 from __future__ import annotations
 
 import hashlib
+from contextvars import ContextVar
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
@@ -68,13 +69,18 @@ def object_state(obj: Any) -> bytes:
                 {str(i): b for i, b in enumerate(blobs)})
 
 
+# the command line's words while a state loads: strings a state may not replace
+PINNED: ContextVar[frozenset[str]] = ContextVar("camlab88_pinned", default=frozenset())
+
+
 def load_object_state(obj: Any, data: bytes) -> None:
     head, blobs = unpack(data, "target")
     if head.get("class") != type(obj).__qualname__:
         raise MachineStateError(f"the state is of a {head.get('class')!r}, this program runs "
                                 f"a {type(obj).__qualname__!r}")
     try:
-        restore(obj, head.get("tree"), [blobs[str(i)] for i in range(len(blobs))])
+        restore(obj, head.get("tree"), [blobs[str(i)] for i in range(len(blobs))],
+                pinned=PINNED.get())
     except (StateError, KeyError) as exc:
         raise MachineStateError(f"the state does not fit: {exc}") from None
 
@@ -113,6 +119,17 @@ def shaping_args(argv: list[str], extra: list[Path]) -> list[str]:
             continue
         out.append(_by_content(word))
     return out + [_by_content(str(p)) for p in extra]
+
+
+def _file_name(word: str) -> bool:
+    """A command-line word that names a file (has a directory or a suffix; not a number)."""
+    if word.startswith("-") or not ("/" in word or "." in word):
+        return False
+    try:
+        float(word)
+    except ValueError:
+        return True
+    return False
 
 
 def _by_content(word: str) -> str:
@@ -183,7 +200,12 @@ def load_program(data: bytes, harness: Harness, ident: dict[str, Any] | None) ->
         when = Fraction(head["time"])
     except (KeyError, TypeError, ValueError, ZeroDivisionError) as exc:
         raise MachineStateError(f"the harness's place is damaged: {exc!r}") from None
-    load_target_state(harness.target, target)
+    words = {w for a in harness.options.argv for w in (a, a.partition("=")[2]) if _file_name(w)}
+    token = PINNED.set(frozenset(words))
+    try:
+        load_target_state(harness.target, target)
+    finally:
+        PINNED.reset(token)
     harness.ticks, harness.frames_shown, harness._next_show, harness._shown_at = place
     harness.last_frame = harness.target.frame() if place[1] else None
     return when

@@ -103,3 +103,15 @@ def test_a_dialogue_in_progress_is_made_again_with_its_answers() -> None:
     prog._answer("Monochrome")
     fresh._answer("Monochrome")
     assert prog.display.mode == fresh.display.mode == "mono"
+
+
+def test_a_state_never_chooses_a_file_name_the_command_line_gave() -> None:
+    from emulator.harness.program_state import StateOptions as Box  # a plain class of ours
+
+    saved = Box()
+    saved.out, saved.message = "/etc/passwd", "typed text"
+    tree, blobs = capture(saved)
+    fresh = Box()
+    fresh.out, fresh.message = "walk.ops", ""
+    restore(fresh, _through_json(tree), blobs, pinned=frozenset({"walk.ops"}))
+    assert (fresh.out, fresh.message) == ("walk.ops", "typed text")
