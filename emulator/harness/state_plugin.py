@@ -67,8 +67,6 @@ class StatePlugin(Plugin):
                                  f"{exc}") from None
             self.last_saved = data
             self._next_snapshot = when
-        if o.at is not None and harness.target.time() >= o.at:
-            self.saved_at_time = True  # the state already lies past --at
 
     def post_tick(self, harness: Harness) -> None:
         now = harness.target.time()
