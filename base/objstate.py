@@ -55,6 +55,16 @@ _BIT_GENERATORS = {c.__name__: c for c in (np.random.PCG64, np.random.PCG64DXSM,
                                            np.random.SFC64)}
 
 
+_OWN_STATE: set[type] = set()
+
+
+def own_state(cls: type) -> type:
+    """Mark one of our classes as saving itself: ``save_state() -> bytes`` and
+    ``load_state(bytes)`` (in place) stand for its attributes in a captured graph."""
+    _OWN_STATE.add(cls)
+    return cls
+
+
 class StateError(ValueError):
     """A graph that cannot be captured, or a tree that does not fit the fresh graph."""
 
@@ -163,6 +173,10 @@ class _Capture:
                     "defaults": self.node(obj.__defaults__, f"{where}.__defaults__")}
         if isinstance(obj, types.MethodType):
             return {"M": self.node(obj.__self__, f"{where}.__self__")}
+        if t in _OWN_STATE:  # it saves itself (bytes), as a device model does
+            node = self.bytes_node("SB", obj.save_state())
+            node["OS"] = _qual(t)
+            return node
         if _ours(t) and isinstance(obj, tuple):  # a NamedTuple of ours
             return {"NT": _qual(t), "v": [self.node(v, f"{where}[{i}]")
                                           for i, v in enumerate(obj)]}
@@ -214,6 +228,7 @@ class _Restore:
         self.pinned = pinned
         self.memo: dict[int, Any] = {}
         self.restored: list[Any] = []  # objects told when the whole graph is in place
+        self.counterpart: dict[int, Any] = {}  # tree id -> the fresh object in its place
 
     def data(self, node: dict[str, Any], tag: str) -> bytes:
         if tag in node:
@@ -222,6 +237,22 @@ class _Restore:
         if type(index) is not int or not 0 <= index < len(self.blobs):
             raise StateError(f"blob {index!r} is missing")
         return self.blobs[index]
+
+    def pair(self, node: Any, fresh: Any) -> None:
+        """First pass: for every object of the tree, the fresh object that stands where it
+        stands in *any* place the fresh graph has one (an array the tree meets first where
+        the fresh build has nothing is still written into the fresh array a view holds)."""
+        todo = [(node, fresh)]
+        while todo:
+            node, fresh = todo.pop()
+            if not isinstance(node, dict) or fresh is None:
+                continue
+            ref = node.get("R", node.get("id"))
+            if ref is not None:
+                if ref in self.counterpart:
+                    continue
+                self.counterpart[ref] = fresh
+            todo.extend(_children(node, fresh))
 
     def value(self, node: Any, fresh: Any, where: str) -> Any:
         if isinstance(fresh, str) and fresh in self.pinned:
@@ -235,7 +266,7 @@ class _Restore:
                 raise StateError(f"{where}: reference {node['R']!r} before its object")
             return self.memo[node["R"]]
         if "id" in node:
-            return self._mutable(node, fresh, where)
+            return self._mutable(node, self.counterpart.get(node["id"], fresh), where)
         return self._immutable(node, fresh, where)
 
     def _immutable(self, node: dict[str, Any], fresh: Any, where: str) -> Any:
@@ -347,6 +378,13 @@ class _Restore:
                 raise StateError(f"{where}: a bound method the fresh program lacks")
             self.memo[ref] = fresh
             self.value(node["M"], fresh.__self__, f"{where}.__self__")
+            return fresh
+        if "OS" in node:
+            cls = _class(node["OS"], where)
+            if cls not in _OWN_STATE or type(fresh) is not cls:
+                raise StateError(f"{where}: a {node['OS']} the fresh program lacks")
+            self.memo[ref] = fresh
+            fresh.load_state(self.data(node, "SB"))
             return fresh
         if "NT" in node:
             cls = _class(node["NT"], where)
@@ -477,6 +515,34 @@ def _function(code: types.CodeType, module: str, n_cells: int, where: str) -> An
     return types.FunctionType(code, mod.__dict__, code.co_name, None, cells)
 
 
+def _children(node: dict[str, Any], fresh: Any) -> list[tuple[Any, Any]]:
+    """(child node, the fresh object in the same place) for a node and its fresh object."""
+    def at(seq: Any, i: int) -> Any:
+        return seq[i] if isinstance(seq, list | tuple) and i < len(seq) else None
+
+    for tag in ("L", "T", "DQ", "NT"):
+        if tag in node or (tag == "NT" and "v" in node):
+            items = node.get(tag) if tag != "NT" else node.get("v")
+            fresh_items = list(fresh) if isinstance(fresh, list | tuple) or \
+                type(fresh) is collections.deque else []
+            return [(sub, at(fresh_items, i)) for i, sub in enumerate(items or [])]
+    if "D" in node and isinstance(fresh, dict):
+        out = []
+        for k, v in node["D"]:
+            key = k if isinstance(k, str | int) else None
+            out.append((v, fresh.get(key) if key is not None else None))
+        return out
+    if "O" in node and isinstance(node.get("a"), list):
+        return [(sub, getattr(fresh, name, None)) for name, sub in node["a"]
+                if isinstance(name, str)]
+    if "M" in node and isinstance(fresh, types.MethodType):
+        return [(node["M"], fresh.__self__)]
+    if "Fn" in node and isinstance(fresh, types.FunctionType) and fresh.__closure__:
+        return [(sub, _contents(c)) for sub, c in zip(node["Fn"], fresh.__closure__,
+                                                      strict=False)]
+    return []
+
+
 def _tuples(value: Any) -> Any:
     return tuple(_tuples(v) for v in value) if isinstance(value, list | tuple) else value
 
@@ -508,6 +574,7 @@ def restore(root: Any, tree: Any, blobs: list[bytes], _hooks: bool = True,
     sys.setrecursionlimit(max(limit, 20000))
     try:
         done = _Restore(blobs, pinned)
+        done.pair(tree, root)
         out = done.value(tree, root, "state")
         for obj in done.restored if _hooks else ():  # (a hook's own restores run none)
             obj._state_restored()

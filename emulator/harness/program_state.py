@@ -20,8 +20,11 @@ from fractions import Fraction
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from base.objstate import StateError, capture, restore
+from base.objstate import StateError, capture, own_state, restore
 from emulator.machine.state_file import MachineStateError, pack, unpack
+from emulator.sigma import Terminal
+
+own_state(Terminal)  # the terminal's own versioned state (emulator/sigma/state.py)
 
 if TYPE_CHECKING:
     from emulator.harness.loop import Harness

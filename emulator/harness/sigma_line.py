@@ -62,6 +62,8 @@ class SigmaLineTarget(SavesState):
     through ``put_wire`` / ``put_hang_up``).  Runs until ``until`` seconds of line time
     (None: for ever)."""
 
+    _state_exclude = ("bridge", "tracer", "report")  # the outside world: kept as built
+
     fps = 25
 
     def __init__(self, term: Any, line: Any, bridge: Any, title: str,

@@ -199,3 +199,18 @@ def test_a_state_continues_in_a_fresh_process(tmp_path: Path, argv: list[str], a
     everything, rest = _pngs(d / "all"), _pngs(d / "rest")
     assert 0 < len(rest) < len(everything)
     assert rest == everything[len(everything) - len(rest):]
+
+
+def test_a_save_at_a_time_before_the_loaded_state_saves_at_once(rainbow_state: Path,
+                                                                tmp_path: Path) -> None:
+    again = tmp_path / "again.c88state"
+    assert main(["rainbow", "run", "--headless", "--stop-after", "14", "--load-state",
+                 str(rainbow_state), "--save-state", str(again), "--at", "0"]) == 0
+    head, _ = unpack(again.read_bytes(), "program")
+    loaded, _ = unpack(rainbow_state.read_bytes(), "program")
+    assert head["harness"][0] == loaded["harness"][0] + 1  # the first tick after loading
+
+
+def test_at_without_save_state_is_refused() -> None:
+    with pytest.raises(SystemExit, match="--at needs --save-state"):
+        main([*RAINBOW, "--at", "1"])
