@@ -12,6 +12,9 @@ checked by the program's own argument parser. What each allowed option becomes:
 ``DROP``     a recorder (--record, --record-line, --record-stream): the replay does not repeat it
 ``OUTSIDE``  the line's outside end (sigma run --pty / --listen / --serial): never opened;
              the outside bytes stored in the recording (``+`` wire records) are fed instead
+``KEEP`` also covers ``--load-state FILE``: the state a recorded run began from is an input
+file, carried in the recording by content and loaded again from the replay's scratch copy
+(a recording whose state file is not in it cannot be replayed: the file is missing).
 ``TAPE``     ``--tablet SOURCE``: kept so the program sets up the same decoder, but in a replay
              the device is never opened -- the tablet tape stored in the recording (``T`` wire
              records) is decoded instead (emulator/tablet_input/taped.py); the value is only parsed
@@ -36,7 +39,10 @@ _RUN = {"--headless": KEEP, "--scale": KEEP, "--stop-after": KEEP, "--screenshot
         "--frames": SCRATCH, "--record": DROP,
         # the emulator controls: pacing and the inspector change nothing a replay checks
         # (the replay's own flags decide them); the files they write are outputs
-        "--speed": KEEP, "--inspect": KEEP, "--video": SCRATCH, "--inspect-out": SCRATCH}
+        "--speed": KEEP, "--inspect": KEEP, "--video": SCRATCH, "--inspect-out": SCRATCH,
+        # save states: the file saved is an output; the state a run began from is an input
+        # file the recording carries by content (like every input), so the replay loads it
+        "--save-state": SCRATCH, "--at": KEEP, "--load-state": KEEP}
 _KAS_FRONT = {**_RUN, "--script": KEEP, "--background": KEEP, "--baud": KEEP, "--tablet": TAPE}
 
 PROGRAMS: dict[tuple[str, str], dict[str, str]] = {

@@ -7,6 +7,7 @@
 ``--record FILE``  a session recording for ``camlab88 replay``
 ``--scale N``    window scale
 ``--speed X``, ``--video FILE``, ``--inspect``, ``--inspect-out DIR``: camlab88.control_flags
+``--save-state FILE``, ``--at SECONDS``, ``--load-state FILE``  save states (stateopts.py)
 """
 
 from __future__ import annotations
@@ -57,6 +58,9 @@ def add_run_options(p: argparse.ArgumentParser, record: bool = True,
     from camlab88.control_flags import add_control_options
 
     add_control_options(p, speed_flag=not any(a.dest == "speed" for a in p._actions))
+    from camlab88.stateopts import add_state_options
+
+    add_state_options(p)
 
 
 def run_options(args: argparse.Namespace, command: str, can_headless: str | None,
@@ -74,10 +78,12 @@ def run_options(args: argparse.Namespace, command: str, can_headless: str | None
     if record is not None:
         _check_writable(command, Path(record), "record to")
     from camlab88.control_flags import controls_from_args
+    from camlab88.stateopts import state_options
 
     controls = controls_from_args(args, command, headless)
     return RunOptions(
-        controls=controls, headless=headless, scale=getattr(args, "scale", 1),
+        controls=controls, state=state_options(args, command, active),
+        headless=headless, scale=getattr(args, "scale", 1),
         screenshot=getattr(args, "screenshot", None), frames=getattr(args, "frames", None),
         record=getattr(args, "record", None), stop_after=getattr(args, "stop_after", None),
         command=command, argv=list(sys.argv[1:] if argv is None else argv))

@@ -41,7 +41,11 @@ class Target(Protocol):
     refused while e.g. unsaved work is asked about), ``wire() -> list[tuple[str, bytes]]``
     (the wire traffic since the last call, for recordings), ``put_wire(data)`` (replayed
     outside input on the wire), ``finish()`` and ``status() -> str`` (the keys, frame and
-    time, shown after ``title`` in the window's title bar).
+    time, shown after ``title`` in the window's title bar), ``save_state() -> bytes`` and
+    ``load_state(data: bytes) -> None`` (the target's whole state: device, line, clock,
+    program, tablet decoder; loaded into a freshly built target of the same program, or
+    MachineStateError; without them the harness captures the target's object graph itself:
+    emulator.harness.program_state).
     """
 
     title: str
@@ -98,6 +102,7 @@ class RunOptions:
     argv: list[str] = field(default_factory=list)   # for recordings
     inputs: list[Path] = field(default_factory=list)  # extra input files to record
     controls: Controls = field(default_factory=Controls)  # --speed, --video, --inspect...
+    state: Any = None  # emulator.harness.program_state.StateOptions: save states, seeking
 
 
 class Harness:

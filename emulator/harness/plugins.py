@@ -74,6 +74,10 @@ def standard_plugins(options: RunOptions) -> list[Plugin]:
         plugins += active.plugins()
     elif options.record is not None:
         plugins.append(session_record.SessionRecorder(options))
+    if options.state is not None:  # first: a loaded state is in place before others start
+        from emulator.harness.state_plugin import StatePlugin
+
+        plugins.insert(0, StatePlugin(options.state))
     if options.frames is not None:
         plugins.append(FrameWriter(options.frames))
     if options.screenshot is not None:

@@ -10,6 +10,7 @@ from typing import Any
 
 import numpy as np
 
+from emulator.harness.program_state import SavesState
 from emulator.host_input import HostEvent
 from emulator.rainbow.host_input import RainbowHostInput
 from protocols.rainbow.script import Player
@@ -17,7 +18,7 @@ from protocols.rainbow.script import Player
 FPS = 50  # the Rainbow's display frames per second
 
 
-class RainbowTarget:
+class RainbowTarget(SavesState):
     """``step()`` advances the program (True while it runs).  Window input goes to the
     device's input controller; with a ``script`` (protocols.rainbow.script.Player) the
     script drives the mouse and keyboard instead (and, with ``end_with_script``, the run

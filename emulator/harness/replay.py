@@ -15,7 +15,7 @@ from contextvars import ContextVar
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -69,6 +69,8 @@ class Replay:
     runs: int = 0
     ended: ScreenHash | None = field(default=None)
     controls: Controls | None = None  # the replay's --speed, --video, --inspect...
+    state: Any = None       # the replay's StateOptions (--seek, --save-state, --load-state)
+    seeking: bool = False   # a seek's first run: it stops at the seek time, not the end
 
     def adjust(self, options: RunOptions) -> None:
         options.headless = self.headless
@@ -163,7 +165,8 @@ class HashCheck(Plugin):
         frame = harness.last_frame if harness.last_frame is not None else harness.screen()
         self.replay.ended = ScreenHash(harness.frames_shown, harness.ticks,
                                        harness.target.time(), screen_hash(frame))
-        if not self.replay.check or self.replay.mismatch is not None or end is None:
+        if (not self.replay.check or self.replay.mismatch is not None or end is None
+                or self.replay.seeking):
             return
         if (harness.frames_shown, harness.ticks, harness.target.time()) != \
                 (end.frame, end.tick, end.time):

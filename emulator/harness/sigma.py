@@ -10,8 +10,10 @@ from typing import Any
 
 import numpy as np
 
+from emulator.harness.program_state import SavesState
 from emulator.host_input import HostEvent
 from emulator.machine import SigmaMachine
+from emulator.machine.state_file import MachineStateError
 
 TICK = Fraction(1, 100)  # a program session's polling period: line time between polls
 
@@ -62,7 +64,7 @@ class SigmaSessionRun:
             self.step()
 
 
-class SigmaProgramTarget:
+class SigmaProgramTarget(SavesState):
     """A program session on a Sigma machine (KAS's editor and path fronts; see
     ``SigmaSessionRun``).  Window keys named in ``key_names`` (or printable characters) are
     struck on the terminal; the left mouse button is the stylus tip.  A timed ``script``
@@ -149,12 +151,19 @@ class SigmaProgramTarget:
 class PeriodTarget:
     """A machine run period by period by a generator (KAS's line test, through
     sigma_batch.host_periods): each tick takes one period (``next(periods)`` runs the
-    machine and yields its index); the generator's return value is kept in ``result``."""
+    machine and yields its index); the generator's return value is kept in ``result``.
+
+    Its state: the period reached and the machine. A generator cannot be saved, so loading
+    one builds the machine and the program's generator again (``restart() -> (machine,
+    periods)``) and runs them to the saved period (deterministic, on virtual time); the
+    machine then takes the saved state."""
 
     keys = "Esc or close the window to stop"
 
-    def __init__(self, machine: SigmaMachine, periods: Any, fps: float, title: str) -> None:
+    def __init__(self, machine: SigmaMachine, periods: Any, fps: float, title: str,
+                 restart: Any = None) -> None:
         self.machine, self.periods, self.title = machine, periods, title
+        self.restart = restart
         self._period = Fraction(fps).limit_denominator(10000)
         self.fps = self._period  # exact, so every period is shown
         self.size = (768, 512)
@@ -177,3 +186,26 @@ class PeriodTarget:
 
     def time(self) -> Fraction:
         return self.k / self._period
+
+    def save_state(self) -> bytes:
+        from emulator.machine.state_file import pack
+
+        if self.result is not None:
+            raise MachineStateError("the line test has finished: nothing left to save")
+        return pack("period", {"k": self.k}, {"machine": self.machine.save_state()})
+
+    def load_state(self, data: bytes) -> None:
+        from emulator.machine.state_file import unpack
+
+        head, blobs = unpack(data, "period")
+        k = head.get("k")
+        if type(k) is not int or k < 0 or "machine" not in blobs:
+            raise MachineStateError("line test state: the period or the machine is missing")
+        if k < self.k or self.result is not None:
+            if self.restart is None:
+                raise MachineStateError("this line test cannot go back")
+            (self.machine, self.periods), self.k, self.result = self.restart(), 0, None
+        while self.k < k:  # the program's generator run to the saved period
+            if not self.tick():
+                raise MachineStateError(f"the line test ends before period {k}")
+        self.machine.load_state(blobs["machine"])

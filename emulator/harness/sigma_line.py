@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 
+from emulator.harness.program_state import SavesState
 from emulator.host_input import HostEvent
 from emulator.machine import SigmaMachine
 from emulator.sigma.host_input import KEYS_HINT, to_terminal
@@ -56,11 +57,13 @@ class OutsideTap:
         return getattr(self._endpoint, name)
 
 
-class SigmaLineTarget:
+class SigmaLineTarget(SavesState):
     """A Sigma machine whose line's host end ``bridge`` serves (None in a replay: the
     recorded outside traffic comes back through ``put_wire`` / ``put_hang_up``).  Runs until
     ``until`` seconds of line time (None: for ever).  Set the machine's tracer
     (``machine.trace``) for ``--trace`` / ``--strict``."""
+
+    _state_exclude = ("bridge", "tracer", "report")  # the outside world: kept as built
 
     fps = 25
     escape_is_a_key = True  # a terminal key: host programs read ESC (close the window quits)

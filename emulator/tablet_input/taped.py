@@ -22,6 +22,8 @@ def recorded_tape() -> Any:
 class TapedTablet:
     """``read(timeout)`` like a source; ``gone`` once it has been lost (not reopened)."""
 
+    _state_exclude = ("source",)  # the device: kept as opened
+
     def __init__(self, source: Any, tape: Any, live: bool) -> None:
         self.source, self.tape, self.live = source, tape, live
         self.gone = False

@@ -95,6 +95,8 @@ class _Reopen:
 
 
 class InputLayer:
+    _state_exclude = ("source", "reopen", "_spawn")  # the device: kept as opened
+
     def __init__(
         self,
         area: WorkingArea = TWELVE_FIELD,

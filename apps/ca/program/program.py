@@ -7,8 +7,10 @@ into the off-screen buffer before it is wanted, and discarded after any interven
 
 from __future__ import annotations
 
+import inspect
 import os
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from apps.ca import library, log
@@ -21,6 +23,7 @@ from apps.ca.program.edit import Editor
 from apps.ca.program.menus import EDIT_MODES, MainMenu, choice_menu, edit_menu
 from apps.ca.program.viewport import VIEW_H, VIEW_W, Viewport
 from apps.ca.session import Session
+from base.objstate import Resumable
 from protocols.rainbow.client import RainbowClient
 from protocols.rainbow.events import LEFT, RIGHT, KeyEvent, MouseEvent
 
@@ -47,6 +50,13 @@ class Options:
 
 
 class CAProgram:
+    @staticmethod
+    def dialogue_makers() -> dict[str, Callable[..., Dialogue]]:
+        """The program's dialogues by name: what a save state may make again."""
+        return {f"{fn.__module__}:{fn.__qualname__}": fn
+                for module in (commands, stepping) for fn in vars(module).values()
+                if inspect.isgeneratorfunction(fn) and fn.__module__ == module.__name__}
+
     def __init__(self, client: RainbowClient, options: Options | None = None) -> None:
         self.client = client
         self.options = opts = options or Options()
@@ -81,7 +91,7 @@ class CAProgram:
         self.finished = False
         self.mouse = (VIEW_W // 2, VIEW_H // 2)
         self.pan_from: tuple[int, int] | None = None
-        self.dialogue: Dialogue | None = None
+        self.dialogue: Resumable | None = None
         self.asking: Ask | None = None
         self.corner: tuple[int, int] | None = None
         self.text = ""
@@ -255,7 +265,8 @@ class CAProgram:
 
     # -- dialogues ----------------------------------------------------------------------------
     def _start(self, dialogue: Dialogue) -> None:
-        self.dialogue = dialogue
+        # kept with what makes it again, so a save state can hold a dialogue in progress
+        self.dialogue = Resumable(self, "dialogue", dialogue, self.dialogue_makers())
         self._answer(None, first=True)
 
     def _answer(self, value, first: bool = False) -> None:

@@ -44,11 +44,14 @@ def view(args: argparse.Namespace) -> int:
         seq = files.load_sequence(library.resolve(args.seq))
         test = LineTest(seq, args.swap, args.background)
         settings = LineSettings(baud=args.baud)
-        machine = SigmaMachine("t5684", settings)
-        host = ViewerHost(test, args.mode, machine.host, settings, args.fps)
-        periods = host_periods(machine, host, host.period)
         fps = args.fps or seq.fps
-        h = run(PeriodTarget(machine, periods, fps, f"{COMMAND} - Sigma T5684"), opts)
+
+        def build():  # a fresh machine and the viewer's periods over it (again to load a state)
+            machine = SigmaMachine("t5684", settings)
+            host = ViewerHost(test, args.mode, machine.host, settings, args.fps)
+            return machine, host_periods(machine, host, host.period)
+
+        h = run(PeriodTarget(*build(), fps, f"{COMMAND} - Sigma T5684", build), opts)
     except (OSError, ValueError) as exc:
         return fail(COMMAND, exc)
     rep = h.target.result

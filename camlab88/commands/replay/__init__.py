@@ -9,12 +9,14 @@ frame (and time) that differs; a damaged, truncated or newer recording is refuse
 from __future__ import annotations
 
 import argparse
+from fractions import Fraction
 from pathlib import Path
 
 from camlab88.control_flags import add_control_options
 from camlab88.runopts import fail, frames_dir
 
 COMMAND = "camlab88 replay"
+SNAPSHOT_EVERY = 1  # s of virtual time between a seek's snapshots (F4 steps back by them)
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -34,6 +36,12 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                    help="write every frame shown as DIR/frame_NNNNN.png")
     p.add_argument("--screenshot", type=Path, metavar="PNG", help="save the last screen")
     add_control_options(p)
+    from camlab88.stateopts import add_state_options, seconds
+
+    add_state_options(p)
+    p.add_argument("--seek", type=seconds, metavar="T",
+                   help="start showing at virtual time T: run there headless first, keeping "
+                   f"a state snapshot every {SNAPSHOT_EVERY} s for F4 (step back)")
     p.set_defaults(handler=replay)
 
 
@@ -51,8 +59,12 @@ def replay(args: argparse.Namespace) -> int:
     headless = choose_headless(COMMAND, args.headless, "checking the screen hashes")
     ctx = Replay(rec, headless=headless, period=args.period, check=args.check,
                  frames=_abs(args.frames), screenshot=_abs(args.screenshot),
-                 controls=_controls(args, headless))
+                 controls=_controls(args, headless), state=_state(args))
     try:
+        if args.seek is not None:
+            seeked = _seek(args, rec, ctx)
+            if seeked is not None:
+                return seeked
         status, said = rerun(ctx)
     except ReplayRefused as exc:  # the header (line 1) holds the command line
         return fail(COMMAND, f"{args.recording}:1: not replayed: {exc}")
@@ -70,6 +82,44 @@ def _controls(args: argparse.Namespace, headless: bool):
     c.video, c.inspect_out = _abs(c.video), _abs(c.inspect_out)
     c.shots = Path.cwd()
     return c
+def _state(args: argparse.Namespace):
+    """The replay's own StateOptions (paths made absolute: the replay runs elsewhere)."""
+    from camlab88 import __version__
+    from camlab88.runopts import check_output
+    from emulator.harness.program_state import StateOptions
+
+    if args.at is not None and args.save_state is None:
+        raise SystemExit(f"{COMMAND}: --at needs --save-state FILE")
+    if args.save_state is not None:
+        check_output(COMMAND, args.save_state, "save a state to")
+    if args.load_state is not None and not args.load_state.is_file():
+        raise SystemExit(f"{COMMAND}: cannot read {args.load_state}: no such file")
+    return StateOptions(save=_abs(args.save_state), at=args.at, load=_abs(args.load_state),
+                        version=__version__, key_dir=Path.cwd())
+
+
+def _seek(args: argparse.Namespace, rec, ctx) -> int | None:
+    """The first run of a seek: headless and unshown to T, keeping snapshots (and checking
+    the hashes on the way with --check); then ``ctx`` starts from the state at T.
+    Returns an exit status when the seek cannot go on."""
+    from dataclasses import replace
+
+    from camlab88.session_replay import rerun
+    from emulator.harness.replay import Replay
+
+    first = replace(ctx.state, seek_to=args.seek, snapshots=[],
+                    snapshot_every=Fraction(SNAPSHOT_EVERY), save=None, at=None)
+    ahead = Replay(rec, headless=True, check=args.check, state=first, seeking=True)
+    status, said = rerun(ahead)
+    if ahead.mismatch is not None or status != 0 or ahead.runs == 0:
+        return _verdict(args, ahead, status, said)
+    if first.seek_state is None:
+        end = float(rec.end.time) if rec.end is not None else 0.0
+        return fail(COMMAND, f"{args.recording}: --seek {float(args.seek):g}: the recording "
+                    f"ends at {end:g} s")
+    ctx.state.load_data, ctx.state.snapshots = first.seek_state, first.snapshots
+    ctx.compared = ahead.compared
+    return None
 
 
 def _abs(path: Path | None) -> Path | None:
@@ -81,8 +131,9 @@ def _verdict(args: argparse.Namespace, ctx, status: int, said: str) -> int:
     if ctx.runs == 0:
         return fail(COMMAND, f"{name}: the recorded command ran no program "
                     f"({' '.join(ctx.rec.argv)}; exit status {status}){_said(said)}")
-    if ctx.mismatch is not None:
-        return fail(COMMAND, f"{name}: {ctx.mismatch.describe()}", 1)
+    if ctx.mismatch is not None:  # and why, when the program failed
+        return fail(COMMAND, f"{name}: {ctx.mismatch.describe()}"
+                    f"{_said(said) if status != 0 else ''}", 1)
     if status != 0:
         return fail(COMMAND, f"{name}: the program ended with exit status {status}"
                     f"{_said(said)}", 1)

@@ -1,0 +1,133 @@
+"""Every program's whole state (device + program + input decoders) saved at a random frame of a
+random scripted session and loaded into a freshly built program continues with exactly the
+frames of the uninterrupted run."""
+
+from __future__ import annotations
+
+import tempfile
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from camlab88.cli import main
+from tests.states.support import assert_continues, inputs_of
+
+STATEFUL = settings(max_examples=3, deadline=None, derandomize=True,
+                    suppress_health_check=[HealthCheck.function_scoped_fixture])
+
+# --- scripted input: the Rainbow script language and the KAS event language ----------------
+_x, _y = st.integers(0, 767), st.integers(0, 575)
+_button = st.sampled_from(["left", "middle", "right"])
+rainbow_line = st.one_of(
+    st.builds(lambda x, y: f"move {x} {y}", _x, _y),
+    st.builds(lambda b, x, y: f"click {b} {x} {y}", _button, _x, _y),
+    st.builds(lambda b, x, y: f"press {b} {x} {y}\nframes 2\nrelease {b} {x} {y}",
+              _button, _x, _y),
+    st.builds(lambda n: f"frames {n}", st.integers(1, 6)),
+    st.sampled_from(["key space", "key return", "key escape", "type 3"]))
+rainbow_script = st.lists(rainbow_line, min_size=3, max_size=14).map(
+    lambda lines: "frames 3\n" + "\n".join(lines) + "\nframes 4\n")
+
+_kx, _ky = st.floats(-4.5, 4.5).map(lambda v: round(v, 2)), \
+    st.floats(-2.8, 2.8).map(lambda v: round(v, 2))
+kas_line = st.one_of(
+    st.builds(lambda x, y: f"move {x} {y}", _kx, _ky),
+    st.builds(lambda x, y, x2, y2: f"down {x} {y}\ndown {x2} {y2}\nup {x2} {y2}",
+              _kx, _ky, _kx, _ky),
+    st.sampled_from(["key space", "menu pen2", "menu pen3", "menu undo"]))
+kas_script = st.lists(kas_line, min_size=2, max_size=10).map("\n".join)
+fraction_of_run = st.floats(0.05, 0.8)
+
+
+def _scratch() -> Path:
+    return Path(tempfile.mkdtemp(prefix="camlab88-state-test-"))
+
+
+@STATEFUL
+@given(script=kas_script, when=fraction_of_run)
+def test_kas_edit_continues_from_a_state(monkeypatch, script: str, when: float) -> None:
+    d = _scratch()
+    (d / "s.script").write_text(script + "\n")
+    argv = ["kas", "edit", str(d / "k.kas"), "--headless", "--script", str(d / "s.script"),
+            "--seed", "1"]
+    assert main(argv) == 0  # makes k.kas, so both runs below start from the same file
+    assert_continues(monkeypatch, argv, when * 0.8, d / "s.c88state")
+
+
+@STATEFUL
+@given(when=fraction_of_run, upto=st.integers(3, 23))
+def test_kas_paint_continues_from_a_state(monkeypatch, when: float, upto: int) -> None:
+    d = inputs_of("examples/figures/fig-3.7.session", _scratch())
+    lines = (d / "fig-3.7.script").read_text().splitlines()[:upto]  # a random prefix
+    (d / "p.script").write_text("\n".join(lines) + "\n")
+    argv = ["kas", "paint", str(d / "face.kas"), "--headless", "--script", str(d / "p.script")]
+    assert_continues(monkeypatch, argv, when * 2, d / "p.c88state")
+
+
+@STATEFUL
+@given(when=fraction_of_run, mode=st.sampled_from(["--realtime", "--every"]))
+def test_kas_view_continues_from_a_state(monkeypatch, when: float, mode: str) -> None:
+    d = _scratch()
+    assert main(["kas", "demo", "--out", str(d / "seq.kas")]) == 0
+    argv = ["kas", "view", str(d / "seq.kas"), "--headless", mode]
+    assert_continues(monkeypatch, argv, when * 2, d / "v.c88state")
+
+
+@STATEFUL
+@given(script=rainbow_script, when=fraction_of_run)
+def test_snooker_play_continues_from_a_state(monkeypatch, script: str, when: float) -> None:
+    d = _scratch()
+    (d / "e.events").write_text(script)
+    argv = ["snooker", "play", "--headless", "--events", str(d / "e.events")]
+    assert_continues(monkeypatch, argv, when * 0.3, d / "p.c88state")
+
+
+@STATEFUL
+@given(when=fraction_of_run)
+def test_snooker_visualise_continues_from_a_state(monkeypatch, when: float) -> None:
+    d = inputs_of("examples/figures/fig-6.7.session", _scratch())
+    argv = ["snooker", "visualise", str(d / "pink_shot.cp"), str(d / "example.views"),
+            "--headless"]
+    assert_continues(monkeypatch, argv, when * 2.8, d / "v.c88state")
+
+
+@STATEFUL
+@given(script=rainbow_script, when=fraction_of_run,
+       pattern=st.sampled_from(["glider", "gosper_gun", "boat"]))
+def test_ca_program_continues_from_a_state(monkeypatch, script: str, when: float,
+                                           pattern: str) -> None:
+    d = _scratch()
+    (d / "e.events").write_text(script)
+    argv = ["ca", "program", "--headless", "--pattern", pattern, "--events", str(d / "e.events")]
+    assert_continues(monkeypatch, argv, when * 0.3, d / "c.c88state")
+
+
+@STATEFUL
+@given(data=st.binary(min_size=0, max_size=600), when=fraction_of_run)
+def test_sigma_run_continues_from_a_state(monkeypatch, data: bytes, when: float) -> None:
+    d = inputs_of("tests/data/sessions/sigma_run.session", _scratch())
+    (d / "in.sigma").write_bytes((d / "picture.sigma").read_bytes() + data)  # and noise
+    argv = ["sigma", "run", "--headless", "--in", str(d / "in.sigma"), "--seconds", "2"]
+    assert_continues(monkeypatch, argv, when * 2, d / "s.c88state")
+
+
+@STATEFUL
+@given(when=fraction_of_run, demo=st.sampled_from(["pads", "shelf"]))
+def test_rainbow_run_continues_from_a_state(monkeypatch, when: float, demo: str) -> None:
+    d = _scratch()
+    argv = ["rainbow", "run", "--headless", "--stop-after", "40", "--demo", demo]
+    assert_continues(monkeypatch, argv, when * 0.8, d / "r.c88state")
+
+
+@pytest.mark.parametrize("at", [0.0, 0.3])
+def test_a_ca_state_saved_mid_dialogue_continues(monkeypatch, tmp_path: Path, at: float) -> None:
+    """The middle button opens a menu (a dialogue in progress) that the script answers
+    after the save."""
+    (tmp_path / "e.events").write_text(
+        "frames 3\npress middle 400 300\nframes 20\nrelease middle 400 300\nframes 4\n"
+        "click right 300 300\nframes 6\n")
+    argv = ["ca", "program", "--headless", "--pattern", "glider", "--events",
+            str(tmp_path / "e.events")]
+    assert_continues(monkeypatch, argv, at + 0.1, tmp_path / "c.c88state")
