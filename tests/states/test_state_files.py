@@ -17,6 +17,7 @@ from camlab88.cli import main
 from emulator.harness.loop import Harness, RunOptions
 from emulator.harness.program_state import StateOptions
 from emulator.harness.rainbow import RainbowTarget
+from emulator.harness.state_plugin import StatePlugin
 from emulator.host_input import KeyDown
 from emulator.machine.state_file import MAGIC, pack, unpack
 from tests.states.support import ROOT, inputs_of
@@ -139,7 +140,7 @@ def _frame_hash(h: Harness) -> str:
 
 def test_f2_saves_f3_loads_and_f4_steps_back(tmp_path: Path, capsys) -> None:
     h = _demo_harness(tmp_path)
-    plugin = h.plugins[0]
+    plugin = next(p for p in h.plugins if isinstance(p, StatePlugin))
     for _ in range(5):
         h._tick_once()
     assert plugin.handle_events(h, [KeyDown("f2")]) == []  # the key is the plugin's
@@ -164,7 +165,7 @@ def test_a_program_that_uses_f2_keeps_it_and_shift_f2_saves(tmp_path: Path) -> N
     h = _demo_harness(tmp_path)
     h.target.key_names = frozenset({"f2"})  # as the KAS editor's target says
     h._tick_once()
-    plugin = h.plugins[0]
+    plugin = next(p for p in h.plugins if isinstance(p, StatePlugin))
     assert plugin.handle_events(h, [KeyDown("f2")]) == [KeyDown("f2")]
     assert not list(tmp_path.glob("*.c88state"))
     assert plugin.handle_events(h, [KeyDown("f2", mods=frozenset({"shift"}))]) == []
