@@ -14,7 +14,7 @@ from apps.kas.paint.ops import Op, OpsFile
 from apps.kas.paint.planes import FILL_MASK, OUTLINE_MASK
 from apps.kas.paint.program import Line, PaintProgram
 from apps.kas.paint.session import PaintSession
-from emulator.sigma import Terminal
+from emulator.harness.sigma_batch import link
 from tests.kas_paint.test_golden import FIG_OPS, figure_38
 
 HAT = 4  # FIG_OPS fills the hat (chains 5 and 6) in colour 4
@@ -35,13 +35,13 @@ def _head_vertices(seq: AnimSequence) -> tuple[np.ndarray, np.ndarray]:
 
 def _painted_whole(seq: AnimSequence, ops: list[Op]) -> np.ndarray:
     prog = PaintProgram(seq, OpsFile(ops=ops))
-    term = Terminal("t5688")
-    line = Line(term)
+    paint = link("t5688", xonxoff=False)
+    line = Line(paint)
     line.send(prog.setup())
     data, plan = prog.frame(1)
     assert plan.failures == []
     line.send(data + prog.show(areas.PAINTING.view))
-    return term.indices()  # row 0 = bottom: device y
+    return paint.machine.terminal.indices()  # row 0 = bottom: device y
 
 
 def test_later_fill_hides_earlier_outline_in_a_whole_frame() -> None:
@@ -87,8 +87,8 @@ def test_a_fill_in_colour_0_hides_no_outline() -> None:
 def test_interactive_fill_hides_the_outline_it_covers() -> None:
     seq = figure_38()
     s = PaintSession(seq, OpsFile())
-    term = Terminal("t5688")
-    line = Line(term)
+    paint = link("t5688", xonxoff=False)
+    line = Line(paint)
     line.send(s.start())
     for colour, chains in ((10, [(0, -2.5)]), (HAT, [(0, 3.0), (-2.1, 1.0)])):
         s.program.current = colour
@@ -96,7 +96,7 @@ def test_interactive_fill_hides_the_outline_it_covers() -> None:
             line.send(s.select_near(x, y))
         line.send(s.fill())
     line.send(s.show("painting"))
-    screen = term.indices()
+    screen = paint.machine.terminal.indices()  # row 0 = bottom: device y
     under_hat, below = _head_vertices(seq)
     assert np.all(_at(screen, under_hat) & OUTLINE_MASK == 0)
     assert np.all(_at(screen, under_hat) & FILL_MASK == HAT)
