@@ -80,6 +80,9 @@ def _qual(cls: type) -> str:
 def _attrs(obj: Any) -> dict[str, Any]:
     """An instance's own attributes: its ``__dict__`` and every slot that is set (less those
     its class names in ``_state_exclude``: rebuilt after a load, never saved)."""
+    refusal = getattr(obj, "_state_refusal", None)  # an object that knows it cannot be saved
+    if refusal:
+        raise StateError(refusal)
     out = dict(getattr(obj, "__dict__", {}))
     for name in getattr(type(obj), "_state_exclude", ()):
         out.pop(name, None)
@@ -327,7 +330,7 @@ class _Restore:
         return self._special(node, fresh, where)
 
     def _dict(self, node: dict[str, Any], fresh: Any, where: str) -> dict[Any, Any]:
-        kind = _DICT_TYPES.get(node.get("DX"), dict)  # type: ignore[arg-type]
+        kind = _DICT_TYPES.get(str(node.get("DX")), dict)
         if type(fresh) is kind:
             out = fresh
         elif kind is collections.defaultdict:
@@ -608,7 +611,11 @@ class Resumable:
             raise StateError(f"{self.maker} is not one of the owner's dialogues")
         self.args = dict(gen.gi_frame.f_locals)  # a generator not yet started: its arguments
         self.owner, self.attr, self.gen, self.makers = owner, attr, gen, makers
-        self.before = capture(owner)
+        self._state_refusal = ""
+        try:
+            self.before = capture(owner)
+        except StateError as exc:  # the dialogue runs all the same; only a save refuses
+            self.before, self._state_refusal = None, f"a dialogue began while {exc}"
         self.sent: list[Any] = []
         self.started = False
 

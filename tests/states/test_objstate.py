@@ -105,6 +105,27 @@ def test_a_dialogue_in_progress_is_made_again_with_its_answers() -> None:
     assert prog.display.mode == fresh.display.mode == "mono"
 
 
+class _Foreign:
+    """Something a state cannot hold (a class outside camlab88's packages)."""
+
+
+def test_a_dialogue_begun_while_the_program_holds_the_unsaveable_runs_and_refuses_a_save(
+) -> None:
+    from apps.ca.program import commands
+    from apps.ca.program.program import CAProgram, Options
+    from emulator.rainbow.session import in_process
+
+    prog = CAProgram(in_process().client, Options(pattern="glider"))
+    prog.frame()
+    prog.oddity = _Foreign()
+    prog._start(commands.alter_display(prog))  # begins: the dialogue is not refused
+    assert prog.asking
+    with pytest.raises(StateError, match="a dialogue began while"):
+        capture(prog)
+    prog._answer("Monochrome")
+    assert prog.display.mode == "mono"
+
+
 def test_a_state_never_chooses_a_file_name_the_command_line_gave() -> None:
     from emulator.harness.program_state import StateOptions as Box  # a plain class of ours
 
