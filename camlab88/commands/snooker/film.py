@@ -11,16 +11,10 @@ import sys
 from pathlib import Path
 
 from apps.snooker.render.modes import MODES
-from camlab88.commands.snooker import frame_size
+from camlab88.argtypes import film_path, frame_size
 from camlab88.runopts import fail, positive
 
 COMMAND = "camlab88 snooker film"
-
-
-def _movie(text: str) -> Path:
-    if Path(text).suffix.lower() not in (".mp4", ".gif"):
-        raise argparse.ArgumentTypeError(f"{text}: the film is .mp4 or .gif")
-    return Path(text)
 
 
 def _word(text: str) -> str:
@@ -44,9 +38,9 @@ def register(actions: argparse._SubParsersAction) -> None:
     s.add_argument("--titles", metavar="WORD", type=_word,
                    help="instead of a shot: the §6.5 title animation, WORD spelled by "
                    "giant lettered balls aimed with 'set up next shot' (e.g. CAMLAB88)")
-    s.add_argument("--out", type=_movie, required=True, metavar="FILM",
+    s.add_argument("--out", type=film_path, required=True, metavar="FILM",
                    help="the film: .mp4 (H.264) or .gif")
-    s.add_argument("--gif", type=_movie, metavar="FILE", help="also a GIF of the film")
+    s.add_argument("--gif", type=film_path, metavar="FILE", help="also a GIF of the film")
     s.add_argument("--mode", choices=MODES, default="truecolour",
                    help="truecolour (default), or a Sigma mode drawn on the emulated T5688")
     s.add_argument("--size", type=frame_size, default=(768, 512), metavar="WxH",
