@@ -51,27 +51,14 @@ def register(actions: argparse._SubParsersAction) -> None:
 
 
 def film(args: argparse.Namespace) -> int:
-    from apps.snooker.camera.errors import CclErrors
     from apps.snooker.film.schedule import FilmError
+    from camlab88.filmrun import run_film
 
     if args.mode == "t5688" and (args.size != (768, 512) or args.dask or args.workers):
         return fail(COMMAND, "--mode t5688 draws the T5688's 768x512 screen one frame "
                     "after another; --size, --dask and --workers are truecolour's")
-    missing = [p for p in (args.actors, args.camera, args.lights)
-               if p is not None and not Path(p).exists()]
-    if missing:
-        return fail(COMMAND, f"{missing[0]}: no such file")
-    try:
-        return _film(args)
-    except KeyboardInterrupt:
-        print(f"{COMMAND}: interrupted; the frames written so far stay, and the same "
-              "command resumes from them", file=sys.stderr)
-        raise
-    except CclErrors as exc:
-        print(exc, file=sys.stderr)
-        return fail(COMMAND, "the camera script has errors; nothing rendered")
-    except (FilmError, FileNotFoundError, OSError, ValueError) as exc:
-        return fail(COMMAND, exc)
+    return run_film(COMMAND, (args.actors, args.camera, args.lights), lambda: _film(args),
+                    (FilmError, FileNotFoundError, OSError, ValueError))
 
 
 def _film(args: argparse.Namespace) -> int:

@@ -61,11 +61,11 @@ def register(actions: argparse._SubParsersAction) -> None:
 
 
 def film(args: argparse.Namespace) -> int:
-    from apps.snooker.camera.errors import CclErrors
     from apps.snooker.checkpoint import CheckpointError
     from apps.snooker.film.schedule import FilmError
     from apps.snooker.render.lights import LightsError
     from apps.snooker.session import SessionError
+    from camlab88.filmrun import run_film
 
     if (args.titles is None) == (args.motion is None or args.script is None):
         return fail(COMMAND, "give CHECKPOINT|SESSION and SCRIPT.ccl, or --titles WORD")
@@ -74,20 +74,8 @@ def film(args: argparse.Namespace) -> int:
     if args.mode != "truecolour" and (args.size != (768, 512) or args.dask or args.motion_blur):
         return fail(COMMAND, f"--mode {args.mode} draws the T5688's 768x512 screen one "
                     "frame after another; --size, --dask and --motion-blur are truecolour's")
-    missing = [p for p in (args.motion, args.script) if p is not None and not Path(p).exists()]
-    if missing:  # before any work, and not as a raw [Errno 2]
-        return fail(COMMAND, f"{missing[0]}: no such file")
-    try:
-        return _film(args)
-    except KeyboardInterrupt:  # one line; cli.main gives the exit status (130, or 143)
-        print(f"{COMMAND}: interrupted; the frames written so far stay, and the same "
-              "command resumes from them", file=sys.stderr)
-        raise
-    except CclErrors as exc:
-        print(exc, file=sys.stderr)
-        return fail(COMMAND, "the camera script has errors; nothing rendered")
-    except (CheckpointError, SessionError, LightsError, FilmError, OSError, ValueError) as exc:
-        return fail(COMMAND, exc)
+    return run_film(COMMAND, (args.motion, args.script), lambda: _film(args),
+                    (CheckpointError, SessionError, LightsError, FilmError, OSError, ValueError))
 
 
 def _film(args: argparse.Namespace) -> int:
