@@ -5,6 +5,11 @@ play, snooker camera, ca program): scripted mouse and keyboard input, one langua
 from __future__ import annotations
 
 import argparse
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from emulator.harness import RunOptions
+    from protocols.rainbow.script import Player
 
 HEADLESS_NEEDS_EVENTS = ("Headless it needs --events (the run ends with the script) or "
                          "--stop-after N.")
@@ -14,3 +19,26 @@ def add_events_option(p: argparse.ArgumentParser) -> None:
     p.add_argument("--events", metavar="FILE",
                    help="scripted mouse/keyboard input (the Rainbow script format, "
                    "docs/harness.md: move, glide, press, release, click, drag, key, type, wait)")
+
+
+def events_player(path: str | None) -> Player | None:
+    """The --events script's player, or None without one (ScriptError names file:line)."""
+    from protocols.rainbow.script import Player, load
+
+    return Player(load(path)) if path else None
+
+
+def scripted_run_options(args: argparse.Namespace, command: str, player: Player | None,
+                         idle_frames: int | None = 100) -> RunOptions:
+    """The run options of a program driven by the mouse and keyboard: a window is wanted
+    unless the --events script (or --stop-after) gives a headless run an end; a headless
+    run with neither (the display rule chose it) stops after ``idle_frames`` frames."""
+    from camlab88.runopts import run_options
+
+    useful = "playing the --events script" if player else (
+        "for --stop-after frames" if args.stop_after else None)
+    opts = run_options(args, command, useful, "give --headless with --events FILE",
+                       getattr(args, "_argv", None))
+    if idle_frames and opts.headless and player is None and opts.stop_after is None:
+        opts.stop_after = idle_frames
+    return opts

@@ -74,13 +74,8 @@ class ActorsSigmaHost:
     def setup(self) -> bytes:
         """Graphics mode, reset, all 8 planes, quadrant 0 on screen, the palette in the LUT."""
         e = self.enc
-        out = bytearray(b"\r" + e.flag() + e.reset() + e.flag_anywhere())
-        out += e.sequence_length(0) + e.graphics_on() + e.alpha_off() + e.cursor_off()
-        out += e.write_mask(0xFF) + e.display_mask(0xFF) + e.view(0) + e.line_solid()
-        for i, (r, g, b) in enumerate(self.palette.lut.tolist()):
-            out += e.lut24(i, r, g, b)
         self.runs.forget_colour()
-        return bytes(out)
+        return e.take_over() + e.full_colour_screen() + e.lut24_table(self.palette.lut.tolist())
 
     def frame(self, linear: np.ndarray) -> SentFrame:
         """The host's (512, 768, 3) linear picture -> the orders that put it on the screen."""

@@ -8,7 +8,7 @@ plain ints chosen here; ``SCREEN`` (0) is the root cluster, 768 x 576.
 from __future__ import annotations
 
 import struct
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 
 import numpy as np
 
@@ -160,6 +160,15 @@ class RainbowClient:
     # -- time and input ----------------------------------------------------------------------
     def poll_events(self, limit: int = 256) -> list[Event]:
         return decode_events(self._call("poll_events", limit), "poll_events reply")
+
+    def drain_events(self, limit: int = 256) -> Iterator[Event]:
+        """Every queued input event in order, however many arrived since the last look: a
+        reply that comes back full (``limit`` events) means more wait, so poll again."""
+        while True:
+            events = self.poll_events(limit)
+            yield from events
+            if len(events) < limit:
+                return
 
     def wait_frame(self) -> tuple[int, int]:
         """Let the device show one frame (50 Hz); returns (frame count, device time ms)."""

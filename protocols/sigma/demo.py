@@ -32,7 +32,7 @@ def sigma_picture_stream() -> bytes:
 
 def _power_on(e: Encoder) -> bytes:
     """A banner on the alpha screen, then into graphics as the RAL GKS driver does; a LUT."""
-    out = (b"\r" + e.flag() + e.reset() + e.flag_anywhere() + e.sequence_length(0)
+    out = (e.take_over() + e.sequence_length(0)
            + e.graphics_on() + e.alpha_on() + e.alpha_mode()
            + b"camlab88: Sigma T5684 on a 9600 baud line\r\n" + b"\r" + e.flag() + e.cursor_off())
     for i, rgb in enumerate(((0, 0, 0), (15, 15, 15), (15, 3, 3), (3, 15, 3), (4, 6, 15),

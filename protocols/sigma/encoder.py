@@ -129,6 +129,23 @@ class Encoder:
     def lut(self, index: int, red: int, green: int, blue: int, ext: int = 0) -> bytes:
         return self.order("JG", index, red, green, blue, ext)
 
+    # ------------------------------------------------------------ a host's opening bytes
+    def take_over(self) -> bytes:
+        """CR, the flag, HH reset and flag-anywhere: the terminal in graphics mode from
+        whatever state a previous program left it in (every host's first bytes)."""
+        return b"\r" + self.flag() + self.reset() + self.flag_anywhere()
+
+    def full_colour_screen(self) -> bytes:
+        """Graphics only (no alpha, no cursor), all eight planes written and shown, quadrant
+        0 on screen, solid lines: the T5688 as one 256-colour picture."""
+        return (self.sequence_length(0) + self.graphics_on() + self.alpha_off()
+                + self.cursor_off() + self.write_mask(0xFF) + self.display_mask(0xFF)
+                + self.view(0) + self.line_solid())
+
+    def lut24_table(self, lut: Iterable[Sequence[int]]) -> bytes:
+        """KG for entries 0, 1, ... of a table of (red, green, blue) bytes (T5688)."""
+        return b"".join(self.lut24(i, r, g, b) for i, (r, g, b) in enumerate(lut))
+
     def colour(self, index: int) -> bytes:
         """HI for 0..15, the reconstructed 8-bit KI above that (T5688)."""
         return self.order("HI", index) if index < 16 else self.order("KI", index)

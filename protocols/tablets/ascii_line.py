@@ -9,6 +9,7 @@ socket can carry) bit 7 is the parity bit, checked here.
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import ClassVar
 
 from protocols.tablets.base import ProtocolError, TabletParser
 from protocols.tablets.events import TabletEvent, TabletModel
@@ -73,3 +74,24 @@ class AsciiLineParser(TabletParser):
 
 def apply_parity(data: bytes, parity: str) -> bytes:
     return bytes(add_parity(b, parity) for b in data)
+
+
+LineDecoder = Callable[[str, float], TabletEvent | None]
+
+
+class AsciiReportParser(AsciiLineParser):
+    """A tablet whose every report is one ASCII line (the Bit Pads): a subclass names its
+    default model, parity and line terminators, and ``line_decoder(tool)``, the decoder of
+    one line for the tool in use."""
+
+    default_model: ClassVar[TabletModel]
+    default_parity: ClassVar[str]
+    terminators: ClassVar[bytes]
+    line_decoder: ClassVar[Callable[[str], LineDecoder]]
+
+    def __init__(self, model: TabletModel | None = None, *, parity: str | None = None,
+                 tool: str = "puck", parmrk: bool = False) -> None:
+        super().__init__(model if model is not None else self.default_model,
+                         self.line_decoder(tool),
+                         parity=self.default_parity if parity is None else parity,
+                         terminators=self.terminators, parmrk=parmrk)

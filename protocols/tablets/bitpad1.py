@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import re
 
-from protocols.tablets.ascii_line import AsciiLineParser, apply_parity
+from protocols.tablets.ascii_line import AsciiReportParser, apply_parity
 from protocols.tablets.base import ProtocolError, TabletEncoder, clamp_check
 from protocols.tablets.events import TabletEvent, TabletModel
 
@@ -32,19 +32,12 @@ def _decoder(tool: str):
     return decode
 
 
-class Bitpad1Parser(AsciiLineParser):
+class Bitpad1Parser(AsciiReportParser):
     name = NAME
-
-    def __init__(
-        self,
-        model: TabletModel = DEFAULT_MODEL,
-        *,
-        parity: str = "N",
-        tool: str = "puck",
-        parmrk: bool = False,
-    ) -> None:
-        super().__init__(model, _decoder(tool), parity=parity, terminators=b"\n\r",
-                         parmrk=parmrk)
+    default_model = DEFAULT_MODEL
+    default_parity = "N"
+    terminators = b"\n\r"
+    line_decoder = staticmethod(_decoder)
 
 
 class Bitpad1Encoder(TabletEncoder):

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import re
 
-from protocols.tablets.ascii_line import AsciiLineParser, apply_parity
+from protocols.tablets.ascii_line import AsciiReportParser, apply_parity
 from protocols.tablets.base import ProtocolError, TabletEncoder, clamp_check
 from protocols.tablets.events import DeviceReply, TabletEvent, TabletModel
 
@@ -38,19 +38,12 @@ def _decoder(tool: str):
     return decode
 
 
-class Bitpad2Parser(AsciiLineParser):
+class Bitpad2Parser(AsciiReportParser):
     name = NAME
-
-    def __init__(
-        self,
-        model: TabletModel = DEFAULT_MODEL,
-        *,
-        parity: str = "E",
-        tool: str = "puck",
-        parmrk: bool = False,
-    ) -> None:
-        super().__init__(model, _decoder(tool), parity=parity, terminators=b"\r\n",
-                         parmrk=parmrk)
+    default_model = DEFAULT_MODEL
+    default_parity = "E"
+    terminators = b"\r\n"
+    line_decoder = staticmethod(_decoder)
 
     def _finish(self, line: bytes, timestamp: float) -> TabletEvent | None:
         if line.startswith(CONFIG_PREFIX.encode("ascii")):

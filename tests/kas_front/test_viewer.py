@@ -111,3 +111,23 @@ def test_four_colours_keep_the_most_used_pens(seq) -> None:
     assert sorted(plan.slot_of_pen.values())[:1] == [1]
     assert set(plan.slot_of_pen.values()) <= {1, 2, 3}
     assert len(plan.rgb) == 4 and plan.rgb[0] == (0, 0, 0)
+
+
+def test_pens_beyond_the_three_most_used_borrow_the_nearest_colour(seq) -> None:
+    import copy
+
+    from apps.kas.paint import outlines
+    from apps.kas.pens import pen_counts, pen_slots
+
+    more = copy.deepcopy(seq)
+    more.frames[0].chains[0].colours[:] = 7  # a fourth pen, used least
+    counts = pen_counts(more)
+    assert counts[7] == len(seq.frames[0].chains[0].colours)
+    top = sorted(counts, key=lambda p: (-counts[p], p))[:3]
+    assert 7 in counts and 7 not in top
+    colours = {top[0]: (0, 0, 0), top[1]: (0, 0, 10), top[2]: (200, 0, 0), 7: (0, 0, 9)}
+    got_top, slots = pen_slots(more, colours.__getitem__)
+    assert got_top == top and [slots[p] for p in top] == [1, 2, 3]
+    assert slots[7] == 2  # (0, 0, 9) is nearest (0, 0, 10)
+    # on black the line test and the painting program put every pen in the same slot
+    assert four_colours(more).slot_of_pen == outlines.plan(more).slot_of_pen

@@ -172,6 +172,15 @@ def test_keyboard_and_tablet_events_reach_the_program_in_order() -> None:
     assert s.client.poll_events() == []
 
 
+def test_draining_the_event_queue_polls_again_while_a_reply_comes_back_full() -> None:
+    s = in_process()
+    keys = [KeyEvent(0, chr(ord("a") + i), "", True) for i in range(5)]
+    for k in keys:
+        s.inject(k)
+    assert list(s.client.drain_events(limit=2)) == keys  # replies of 2, 2 and 1 events
+    assert list(s.client.drain_events(limit=2)) == []
+
+
 def test_socket_garbage_gets_a_reason_then_the_next_client_is_served() -> None:
     import socket
 

@@ -174,3 +174,17 @@ def test_unknown_and_malformed_are_counted_and_resynchronised() -> None:
 
 def test_field_kinds_are_dec_or_hex() -> None:
     assert {f.kind for o in ORDERS for f in o.fields} <= {Kind.DEC, Kind.HEX}
+
+
+def test_a_full_colour_opening_leaves_a_t5688_with_all_planes_and_the_given_lut() -> None:
+    from emulator.sigma import Terminal
+
+    e = Encoder(high_res=True)
+    lut = [(1, 2, 3), (250, 128, 7), (0, 255, 64)]
+    term = Terminal("t5688")
+    term.reg.write_mask = term.reg.display_mask = 0x0F  # a previous program's state
+    term.reg.line_dashed = True
+    term.feed(e.take_over() + e.full_colour_screen() + e.lut24_table(lut))
+    assert (term.reg.write_mask, term.reg.display_mask) == (0xFF, 0xFF)
+    assert not term.reg.line_dashed
+    assert term.lut[:3].tolist() == [list(rgb) for rgb in lut]

@@ -185,12 +185,8 @@ class ActorEditor:
 
     # -- the frame loop -----------------------------------------------------------------------
     def frame(self) -> None:
-        while True:
-            events = self.client.poll_events(POLL_LIMIT)
-            for e in events:
-                self.handle(e)
-            if len(events) < POLL_LIMIT:
-                break
+        for e in self.client.drain_events(POLL_LIMIT):
+            self.handle(e)
         if not self.finished:
             self._turn()
         self.client.wait_frame()

@@ -59,11 +59,7 @@ class JumpBar:
         self.p.client.wait_frame()  # let the device show it
 
     def _read_input(self) -> None:
-        while True:
-            events = self.p.client.poll_events(POLL_LIMIT)
-            for e in events:
-                if isinstance(e, KeyEvent) and e.pressed and e.key == "escape":
-                    raise JumpStopped
-                self.p.held_events.append(e)
-            if len(events) < POLL_LIMIT:
-                return
+        for e in self.p.client.drain_events(POLL_LIMIT):
+            if isinstance(e, KeyEvent) and e.pressed and e.key == "escape":
+                raise JumpStopped
+            self.p.held_events.append(e)

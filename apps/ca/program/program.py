@@ -176,12 +176,8 @@ class CAProgram:
         held, self.held_events = self.held_events, []
         for e in held:
             self.handle(e)
-        while True:  # read the whole queue, however much arrived this frame
-            events = self.client.poll_events(POLL_LIMIT)
-            for e in events:
-                self.handle(e)
-            if len(events) < POLL_LIMIT:
-                break
+        for e in self.client.drain_events(POLL_LIMIT):  # however much arrived this frame
+            self.handle(e)
         if not self.finished:
             self._idle()
         self.client.wait_frame()

@@ -14,6 +14,7 @@ import numpy as np
 from apps.kas.model import PALETTE, AnimSequence, Drawing
 from apps.kas.paint import areas
 from apps.kas.paint.planes import RGB
+from apps.kas.pens import pen_slots
 
 
 @dataclass(frozen=True)
@@ -25,19 +26,13 @@ class OutlinePlan:
         return self.slot_of_pen.get(pen, 1)
 
 
+def _palette_rgb(pen: int) -> tuple[int, int, int]:
+    return PALETTE.get(pen, ("", (255, 255, 255)))[1]
+
+
 def plan(seq: AnimSequence) -> OutlinePlan:
-    counts: dict[int, int] = {}
-    for f in seq.frames:
-        for c in f.chains:
-            for pen, n in zip(*np.unique(c.colours, return_counts=True), strict=True):
-                counts[int(pen)] = counts.get(int(pen), 0) + int(n)
-    top = sorted(counts, key=lambda p: (-counts[p], p))[:3] or [1]
-    rgb_of = {p: np.array(PALETTE.get(p, ("", (255, 255, 255)))[1]) for p in counts | {1: 0}}
-    slots = {p: i + 1 for i, p in enumerate(top)}
-    for p in counts:
-        if p not in slots:
-            slots[p] = 1 + int(np.argmin([np.abs(rgb_of[p] - rgb_of[q]).sum() for q in top]))
-    rgb = [(0, 0, 0)] + [tuple(int(v) for v in rgb_of[p]) for p in top]
+    top, slots = pen_slots(seq, _palette_rgb)
+    rgb = [(0, 0, 0)] + [tuple(int(v) for v in _palette_rgb(p)) for p in top]
     while len(rgb) < 4:
         rgb.append(rgb[-1])
     return OutlinePlan(slots, tuple(rgb))  # type: ignore[arg-type]

@@ -60,7 +60,7 @@ class PaintProgram:
     def setup(self) -> bytes:
         """Graphics mode, reset, 4-digit coordinates, all planes, the arranged LUT."""
         e = self.enc
-        out = bytearray(b"\r" + e.flag() + e.reset() + e.flag_anywhere() + e.coords4())
+        out = bytearray(e.take_over() + e.coords4())
         out += e.sequence_length(0) + e.graphics_on() + e.alpha_off() + e.cursor_off()
         out += e.write_mask(planes.ALL_PLANES) + e.display_mask(planes.ALL_PLANES)
         out += b"".join(e.lut24(i, *rgb) for i, rgb in enumerate(self.lut()))

@@ -17,7 +17,7 @@ from protocols.tablets.input_layer import PointerEvent
 
 def setup_bytes(enc: Encoder, lut: list[tuple[int, int, int]], cursor: bool = True) -> bytes:
     """Into graphics mode, reset, graphics only, all planes, the LUT, the stylus cursor."""
-    out = bytearray(b"\r" + enc.flag() + enc.reset() + enc.flag_anywhere())
+    out = bytearray(enc.take_over())
     out += enc.sequence_length(0) + enc.graphics_on() + enc.alpha_off()
     out += enc.write_mask(0x0F) + enc.display_mask(0x0F) + enc.line_solid()
     for i, (r, g, b) in enumerate(lut):

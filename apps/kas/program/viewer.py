@@ -34,6 +34,7 @@ from typing import Any
 import numpy as np
 
 from apps.kas.model import FIELD_H, PALETTE, AnimSequence, Drawing
+from apps.kas.pens import pen_slots
 from apps.kas.program.base import setup_bytes
 from apps.kas.program.draw import chain_prims, encode
 from protocols.link import LineSettings
@@ -65,18 +66,7 @@ def _pen_rgb(pen: int, background: str) -> tuple[int, int, int]:
 
 def four_colours(seq: AnimSequence, background: str = "black") -> FourColours:
     """The three most used pens (by points, ties to the lower pen) keep their colours."""
-    counts: dict[int, int] = {}
-    for f in seq.frames:
-        for c in f.chains:
-            for pen, n in zip(*np.unique(c.colours, return_counts=True), strict=True):
-                counts[int(pen)] = counts.get(int(pen), 0) + int(n)
-    top = sorted(counts, key=lambda p: (-counts[p], p))[:3] or [1]
-    slot_of_pen = {p: i + 1 for i, p in enumerate(top)}
-    for p in counts:
-        if p not in slot_of_pen:
-            rgb = np.array(_pen_rgb(p, background))
-            d = [np.abs(rgb - np.array(_pen_rgb(q, background))).sum() for q in top]
-            slot_of_pen[p] = int(np.argmin(d)) + 1
+    top, slot_of_pen = pen_slots(seq, lambda pen: _pen_rgb(pen, background))
     bg = (15, 15, 15) if background == "white" else (0, 0, 0)
     rgb = [bg] + [tuple(round(v / 17) for v in _pen_rgb(p, background)) for p in top]
     while len(rgb) < 4:

@@ -54,10 +54,7 @@ def _lut(enc: Encoder) -> bytes:
 
 
 def setup(enc: Encoder) -> bytes:
-    out = bytearray(b"\r" + enc.flag() + enc.reset() + enc.flag_anywhere())
-    out += enc.sequence_length(0) + enc.graphics_on() + enc.alpha_off() + enc.cursor_off()
-    out += enc.write_mask(0xFF) + enc.display_mask(0xFF) + enc.view(0) + enc.line_solid()
-    return bytes(out + _lut(enc) + enc.colour8(0) + enc.erase())
+    return enc.take_over() + enc.full_colour_screen() + _lut(enc) + enc.colour8(0) + enc.erase()
 
 
 def _to_screen(x0: int, fx: float, fy: float) -> tuple[int, int]:

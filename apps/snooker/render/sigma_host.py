@@ -80,12 +80,7 @@ class SigmaHost:
     def setup(self) -> bytes:
         """Graphics mode, reset, all 8 planes, quadrant 0 on screen, the palette in the LUT."""
         e = self.enc
-        out = bytearray(b"\r" + e.flag() + e.reset() + e.flag_anywhere())
-        out += e.sequence_length(0) + e.graphics_on() + e.alpha_off() + e.cursor_off()
-        out += e.write_mask(0xFF) + e.display_mask(0xFF) + e.view(0) + e.line_solid()
-        for i, (r, g, b) in enumerate(self.palette.lut.tolist()):
-            out += e.lut24(i, r, g, b)
-        return bytes(out)
+        return e.take_over() + e.full_colour_screen() + e.lut24_table(self.palette.lut.tolist())
 
     def frame(self, view: object, frame: int | None = None) -> SigmaFrame:
         g = frame_geometry(self.scene, np.asarray(view.observer), np.asarray(view.viewpoint),

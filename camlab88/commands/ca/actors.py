@@ -12,24 +12,21 @@ KEYS = ("left: add/drag a point, set a slider; right: delete a point; middle: me
 
 
 def register(actions: argparse._SubParsersAction) -> None:
+    from camlab88.rainbow_tablet import add_tablet_option
     from camlab88.runopts import add_run_options
+    from camlab88.scriptopts import HEADLESS_NEEDS_EVENTS, add_events_option
 
     p = actions.add_parser(
         "actors", help="the 3-D picture editor for cell types (section 8.1)",
         description="Edit a rule set's actors file on the emulated Rainbow: pick a cell type, "
         "draw its lathe profile, watch the solid turn, set colour and material, save "
-        "(docs/ca_actors.md). Headless it needs --events (the run ends with the script) or "
-        "--stop-after N. A --screenshot run never saves.")
+        "(docs/ca_actors.md). " + HEADLESS_NEEDS_EVENTS + " A --screenshot run never saves.")
     p.add_argument("file", metavar="FILE", help="the actors file (created by the first save)")
     p.add_argument("--rules",
                    help="rule file or library name whose cell types are edited (default: "
                    "the one FILE names, else life)")
-    p.add_argument("--events", metavar="FILE",
-                   help="scripted mouse/keyboard input (the Rainbow script format, "
-                   "docs/harness.md)")
-    p.add_argument("--tablet", metavar="SOURCE",
-                   help="also draw with a real tablet (hid:VID:PID, serial:PORT?protocol=P, "
-                   "or a pyserial URL?protocol=P): its surface maps onto the profile pad")
+    add_events_option(p)
+    add_tablet_option(p, "draw with", ": its surface maps onto the profile pad")
     add_run_options(p)
     p.set_defaults(handler=actors)
 
@@ -37,26 +34,21 @@ def register(actions: argparse._SubParsersAction) -> None:
 def actors(args: argparse.Namespace) -> int:
     from apps.ca.rules import RuleError
     from base.atomicfile import probe
-    from camlab88.runopts import fail, run_options
-    from protocols.rainbow.script import Player, ScriptError, load
+    from camlab88.rainbow_tablet import open_tablet
+    from camlab88.runopts import fail
+    from camlab88.scriptopts import events_player, scripted_run_options
+    from protocols.rainbow.script import ScriptError
 
     try:
         rules_name = args.rules or _rules_of(args.file)
         types = _cell_types(rules_name)
-        player = Player(load(args.events)) if args.events else None
-        useful = "playing the --events script" if player else (
-            "for --stop-after frames" if args.stop_after else None)
-        opts = run_options(args, COMMAND, useful, "give --headless with --events FILE",
-                           getattr(args, "_argv", None))
+        player = events_player(args.events)
+        opts = scripted_run_options(args, COMMAND, player)
         if opts.screenshot is None:  # a save must be possible before the editing starts
             probe(args.file)
     except (OSError, RuleError, ScriptError, ValueError) as exc:
         return fail(COMMAND, exc)
-    if opts.headless and player is None and opts.stop_after is None:
-        opts.stop_after = 100
-    tablet = _open_tablet(args.tablet, opts.record is not None)
-    if tablet is not None and tablet.live:  # a real stylus moves on the wall clock
-        opts.live = True
+    tablet = open_tablet(COMMAND, args.tablet, opts)
     try:
         editor = _run(args.file, types, rules_name, player, opts, tablet)
     finally:
@@ -119,36 +111,16 @@ def _run(path: str, types: list, rules: str, player, opts, tablet):
     return editor
 
 
-def _open_tablet(text: str | None, record: bool):
-    """The --tablet source (on a tape with --record; from the recording's tape in a replay,
-    where the device is never opened)."""
-    if not text:
-        return None
-    from emulator.tablet_input.taped import TapedTablet
-    from protocols.tablets.sources import SourceError
-
-    try:
-        return TapedTablet.open(text, record)
-    except (SourceError, OSError) as exc:
-        raise SystemExit(f"{COMMAND}: --tablet {text}: {exc}") from None
-
-
 def _poll_tablet(tablet, session, editor) -> None:
     """New tablet reports to the device's tablet input, the pen scaled to the tablet's
     range; a lost tablet is reported once and dropped."""
-    from emulator.rainbow.host_input import tablet_event
-    from protocols.tablets.sources import SourceLost
+    from camlab88.rainbow_tablet import feed_tablet
 
     model = getattr(tablet.source, "model", None)
     if model is not None:
         editor.pen.extent = (max(1, model.max_x), max(1, model.max_y))
         editor.pen.flip = getattr(model, "origin", "upper-left") == "lower-left"
-    try:
-        for ev in tablet.read(0.0):
-            session.inject(tablet_event(ev))
-    except (SourceLost, OSError) as exc:
-        print(f"{COMMAND}: tablet lost ({exc}); carrying on without it", file=sys.stderr)
-        tablet.close()
+    feed_tablet(COMMAND, tablet, session)
 
 
 def _report(editor) -> int:

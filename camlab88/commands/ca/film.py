@@ -9,24 +9,10 @@ import argparse
 import sys
 from pathlib import Path
 
+from camlab88.argtypes import film_path, frame_size
 from camlab88.runopts import check_output, fail, positive
 
 COMMAND = "camlab88 ca film"
-
-
-def _size(text: str) -> tuple[int, int]:
-    w, sep, h = text.lower().partition("x")
-    if not (sep and w.isascii() and w.isdigit() and h.isascii() and h.isdigit()):
-        raise argparse.ArgumentTypeError(f"expected WxH such as 768x512, not {text!r}")
-    if not (8 <= int(w) <= 8192 and 8 <= int(h) <= 8192):
-        raise argparse.ArgumentTypeError(f"{text}: each side must be 8..8192 pixels")
-    return int(w), int(h)
-
-
-def _movie(text: str) -> Path:
-    if Path(text).suffix.lower() not in (".mp4", ".gif"):
-        raise argparse.ArgumentTypeError(f"{text}: the film is .mp4 or .gif")
-    return Path(text)
 
 
 def register(actions: argparse._SubParsersAction) -> None:
@@ -44,10 +30,10 @@ def register(actions: argparse._SubParsersAction) -> None:
     s.add_argument("--generations", type=positive, required=True, metavar="N")
     s.add_argument("--camera", metavar="SCRIPT", help="camera script (CCL over the grid: "
                    "events are generation numbers, coordinates cells)")
-    s.add_argument("--out", type=_movie, required=True, metavar="FILM", help=".mp4 or .gif")
-    s.add_argument("--gif", type=_movie, metavar="FILE", help="also a GIF of the film")
+    s.add_argument("--out", type=film_path, required=True, metavar="FILM", help=".mp4 or .gif")
+    s.add_argument("--gif", type=film_path, metavar="FILE", help="also a GIF of the film")
     s.add_argument("--mode", choices=("truecolour", "t5688"), default="truecolour")
-    s.add_argument("--size", type=_size, default=(768, 512), metavar="WxH",
+    s.add_argument("--size", type=frame_size, default=(768, 512), metavar="WxH",
                    help="truecolour frame size (t5688: its 768x512 screen)")
     s.add_argument("--frames-per-generation", type=positive, default=8, metavar="F")
     s.add_argument("--glide", default="all", metavar="all|none|S,S",
@@ -65,27 +51,14 @@ def register(actions: argparse._SubParsersAction) -> None:
 
 
 def film(args: argparse.Namespace) -> int:
-    from apps.snooker.camera.errors import CclErrors
     from apps.snooker.film.schedule import FilmError
+    from camlab88.filmrun import run_film
 
     if args.mode == "t5688" and (args.size != (768, 512) or args.dask or args.workers):
         return fail(COMMAND, "--mode t5688 draws the T5688's 768x512 screen one frame "
                     "after another; --size, --dask and --workers are truecolour's")
-    missing = [p for p in (args.actors, args.camera, args.lights)
-               if p is not None and not Path(p).exists()]
-    if missing:
-        return fail(COMMAND, f"{missing[0]}: no such file")
-    try:
-        return _film(args)
-    except KeyboardInterrupt:
-        print(f"{COMMAND}: interrupted; the frames written so far stay, and the same "
-              "command resumes from them", file=sys.stderr)
-        raise
-    except CclErrors as exc:
-        print(exc, file=sys.stderr)
-        return fail(COMMAND, "the camera script has errors; nothing rendered")
-    except (FilmError, FileNotFoundError, OSError, ValueError) as exc:
-        return fail(COMMAND, exc)
+    return run_film(COMMAND, (args.actors, args.camera, args.lights), lambda: _film(args),
+                    (FilmError, FileNotFoundError, OSError, ValueError))
 
 
 def _film(args: argparse.Namespace) -> int:

@@ -5,8 +5,13 @@ from __future__ import annotations
 import argparse
 import sys
 
-from camlab88.runopts import add_run_options, fail, run_options
-from camlab88.scriptopts import HEADLESS_NEEDS_EVENTS, add_events_option
+from camlab88.runopts import add_run_options, fail
+from camlab88.scriptopts import (
+    HEADLESS_NEEDS_EVENTS,
+    add_events_option,
+    events_player,
+    scripted_run_options,
+)
 
 COMMAND = "camlab88 ca program"
 KEYS = ("left button pans; middle: menus; right: edit / step; Finish (menu) or close the "
@@ -61,17 +66,12 @@ def program(args: argparse.Namespace) -> int:
     from apps.ca.log import LogError
     from apps.ca.patterns import PatternError
     from apps.ca.rules import RuleError
-    from protocols.rainbow.script import Player, ScriptError, load
+    from protocols.rainbow.script import ScriptError
 
     try:
         _apply_tripos(args)
-        player = Player(load(args.events)) if args.events else None
-        useful = "playing the --events script" if player else (
-            "for --stop-after frames" if args.stop_after else None)
-        opts = run_options(args, COMMAND, useful, "give --headless with --events FILE",
-                           getattr(args, "_argv", None))
-        if opts.headless and player is None and opts.stop_after is None:
-            opts.stop_after = 100
+        player = events_player(args.events)
+        opts = scripted_run_options(args, COMMAND, player)
         options = _options(args, preview=opts.screenshot is not None)
         stats = _run(options, player, opts)
     except (OSError, LogError, RuleError, PatternError, ScriptError, ValueError) as exc:

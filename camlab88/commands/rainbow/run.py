@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import argparse
-import sys
 
+from camlab88.rainbow_tablet import add_tablet_option, feed_tablet, open_tablet
 from camlab88.runopts import add_run_options, positive, run_options
 from camlab88.traceopts import add_trace_options, open_trace
 
@@ -29,9 +29,7 @@ def register(actions: argparse._SubParsersAction) -> None:
                    help="pads: the Appendix I transparency example and double-buffered pads "
                    "(default); shelf: Appendix I's shelf unit of translucent components on "
                    "four pads sliding apart (left button pauses)")
-    u.add_argument("--tablet", metavar="SOURCE",
-                   help="also feed a real tablet (hid:VID:PID, serial:PORT?protocol=P, or a "
-                   "pyserial URL?protocol=P) to the Rainbow's tablet input")
+    add_tablet_option(u, "feed", " to the Rainbow's tablet input")
     add_trace_options(u, strict="--strict-protocol")
     u.set_defaults(handler=run)
 
@@ -43,9 +41,7 @@ def run(args: argparse.Namespace) -> int:
                        argv=getattr(args, "_argv", None))
     opts.stop_after = args.stop_after or args.stop_after_old or (
         HEADLESS_FRAMES if opts.headless else None)
-    tablet = _open_tablet(args.tablet, opts.record is not None)
-    if tablet is not None and tablet.live:  # a real stylus moves on the wall clock
-        opts.live = True
+    tablet = open_tablet(COMMAND, args.tablet, opts)
     target = None
     try:
         with open_trace(args, COMMAND, "the command stream") as trace:
@@ -94,38 +90,10 @@ def _target(args: argparse.Namespace, opts, tablet, trace):
 
     def step() -> bool:
         if target.tablet is not None and not target.tablet.gone:
-            target.tablet = _poll_tablet(target.tablet, session)
+            feed_tablet(COMMAND, target.tablet, session)
         demo.step()
         return True  # the demo runs until the window closes or --stop-after
 
     target = RainbowTarget(session, step, "camlab88 Rainbow", KEYS)
     target.tablet = tablet
     return target
-
-
-def _open_tablet(text: str | None, record: bool):
-    """The --tablet source (on a tape with --record; from the recording's tape in a replay,
-    where the device is never opened)."""
-    if not text:
-        return None
-    from emulator.tablet_input.taped import TapedTablet
-    from protocols.tablets.sources import SourceError
-
-    try:
-        return TapedTablet.open(text, record)
-    except (SourceError, OSError) as exc:
-        raise SystemExit(f"{COMMAND}: --tablet {text}: {exc}") from None
-
-
-def _poll_tablet(tablet, session):
-    """Feed new tablet reports to the device; a lost tablet is reported once and dropped."""
-    from emulator.rainbow.host_input import tablet_event
-    from protocols.tablets.sources import SourceLost
-
-    try:
-        for ev in tablet.read(0.0):
-            session.inject(tablet_event(ev))
-    except (SourceLost, OSError) as exc:
-        print(f"{COMMAND}: tablet lost ({exc}); carrying on without it", file=sys.stderr)
-        tablet.close()  # gone: not read again (its tape keeps what it said)
-    return tablet

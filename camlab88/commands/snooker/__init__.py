@@ -14,16 +14,6 @@ HELP = ("snooker motion development (thesis chapter 6): `camlab88 snooker [SESSI
 ACTIONS = ("play", "simulate", "replay", "ccl", "visualise", "camera", "render", "film")
 
 
-def frame_size(text: str) -> tuple[int, int]:
-    """``--size WxH`` of the rendering actions (render, film): each side 8..8192 pixels."""
-    w, sep, h = text.lower().partition("x")
-    if not (sep and w.isascii() and w.isdigit() and h.isascii() and h.isdigit()):
-        raise argparse.ArgumentTypeError(f"expected WxH such as 768x512, not {text!r}")
-    if not (8 <= int(w) <= 8192 and 8 <= int(h) <= 8192):
-        raise argparse.ArgumentTypeError(f"{text}: each side must be 8..8192 pixels")
-    return int(w), int(h)
-
-
 def register(subparsers: argparse._SubParsersAction) -> None:
     register_area(subparsers, __name__, "snooker", HELP, ACTIONS)
 

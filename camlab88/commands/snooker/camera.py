@@ -6,8 +6,13 @@ from __future__ import annotations
 import argparse
 import sys
 
-from camlab88.runopts import add_run_options, fail, run_options
-from camlab88.scriptopts import HEADLESS_NEEDS_EVENTS, add_events_option
+from camlab88.runopts import add_run_options, fail
+from camlab88.scriptopts import (
+    HEADLESS_NEEDS_EVENTS,
+    add_events_option,
+    events_player,
+    scripted_run_options,
+)
 
 COMMAND = "camlab88 snooker camera"
 KEYS = ("type to edit the script (it is re-interpreted at once; saving it from another editor "
@@ -33,17 +38,14 @@ def camera(args: argparse.Namespace) -> int:
     from apps.snooker.camera import motion
     from apps.snooker.checkpoint import CheckpointError
     from apps.snooker.session import SessionError
-    from protocols.rainbow.script import Player, ScriptError, load
+    from protocols.rainbow.script import ScriptError
 
     try:
         shot = motion.load(args.motion)
-        player = Player(load(args.events)) if args.events else None
+        player = events_player(args.events)
     except (CheckpointError, SessionError, ScriptError, OSError) as exc:
         return fail(COMMAND, exc)
-    useful = "playing the --events script" if player else (
-        "for --stop-after frames" if args.stop_after else None)
-    opts = run_options(args, COMMAND, useful, "give --headless with --events FILE",
-                       argv=getattr(args, "_argv", None))
+    opts = scripted_run_options(args, COMMAND, player, idle_frames=None)
     h, tool = _run(shot, args.script, player, opts)
     r = tool.result
     n = len(r.errors) if r is not None else 0

@@ -11,16 +11,10 @@ import sys
 from pathlib import Path
 
 from apps.snooker.render.modes import MODES
-from camlab88.commands.snooker import frame_size
+from camlab88.argtypes import film_path, frame_size
 from camlab88.runopts import fail, positive
 
 COMMAND = "camlab88 snooker film"
-
-
-def _movie(text: str) -> Path:
-    if Path(text).suffix.lower() not in (".mp4", ".gif"):
-        raise argparse.ArgumentTypeError(f"{text}: the film is .mp4 or .gif")
-    return Path(text)
 
 
 def _word(text: str) -> str:
@@ -44,9 +38,9 @@ def register(actions: argparse._SubParsersAction) -> None:
     s.add_argument("--titles", metavar="WORD", type=_word,
                    help="instead of a shot: the §6.5 title animation, WORD spelled by "
                    "giant lettered balls aimed with 'set up next shot' (e.g. CAMLAB88)")
-    s.add_argument("--out", type=_movie, required=True, metavar="FILM",
+    s.add_argument("--out", type=film_path, required=True, metavar="FILM",
                    help="the film: .mp4 (H.264) or .gif")
-    s.add_argument("--gif", type=_movie, metavar="FILE", help="also a GIF of the film")
+    s.add_argument("--gif", type=film_path, metavar="FILE", help="also a GIF of the film")
     s.add_argument("--mode", choices=MODES, default="truecolour",
                    help="truecolour (default), or a Sigma mode drawn on the emulated T5688")
     s.add_argument("--size", type=frame_size, default=(768, 512), metavar="WxH",
@@ -67,11 +61,11 @@ def register(actions: argparse._SubParsersAction) -> None:
 
 
 def film(args: argparse.Namespace) -> int:
-    from apps.snooker.camera.errors import CclErrors
     from apps.snooker.checkpoint import CheckpointError
     from apps.snooker.film.schedule import FilmError
     from apps.snooker.render.lights import LightsError
     from apps.snooker.session import SessionError
+    from camlab88.filmrun import run_film
 
     if (args.titles is None) == (args.motion is None or args.script is None):
         return fail(COMMAND, "give CHECKPOINT|SESSION and SCRIPT.ccl, or --titles WORD")
@@ -80,20 +74,8 @@ def film(args: argparse.Namespace) -> int:
     if args.mode != "truecolour" and (args.size != (768, 512) or args.dask or args.motion_blur):
         return fail(COMMAND, f"--mode {args.mode} draws the T5688's 768x512 screen one "
                     "frame after another; --size, --dask and --motion-blur are truecolour's")
-    missing = [p for p in (args.motion, args.script) if p is not None and not Path(p).exists()]
-    if missing:  # before any work, and not as a raw [Errno 2]
-        return fail(COMMAND, f"{missing[0]}: no such file")
-    try:
-        return _film(args)
-    except KeyboardInterrupt:  # one line; cli.main gives the exit status (130, or 143)
-        print(f"{COMMAND}: interrupted; the frames written so far stay, and the same "
-              "command resumes from them", file=sys.stderr)
-        raise
-    except CclErrors as exc:
-        print(exc, file=sys.stderr)
-        return fail(COMMAND, "the camera script has errors; nothing rendered")
-    except (CheckpointError, SessionError, LightsError, FilmError, OSError, ValueError) as exc:
-        return fail(COMMAND, exc)
+    return run_film(COMMAND, (args.motion, args.script), lambda: _film(args),
+                    (CheckpointError, SessionError, LightsError, FilmError, OSError, ValueError))
 
 
 def _film(args: argparse.Namespace) -> int:

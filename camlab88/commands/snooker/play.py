@@ -4,8 +4,13 @@ from __future__ import annotations
 
 import argparse
 
-from camlab88.runopts import add_run_options, fail, run_options
-from camlab88.scriptopts import HEADLESS_NEEDS_EVENTS, add_events_option
+from camlab88.runopts import add_run_options, fail
+from camlab88.scriptopts import (
+    HEADLESS_NEEDS_EVENTS,
+    add_events_option,
+    events_player,
+    scripted_run_options,
+)
 
 COMMAND = "camlab88 snooker"
 KEYS = ("middle button: menus; right: restart simulation; left held: mouse x4; "
@@ -31,19 +36,14 @@ def register(actions: argparse._SubParsersAction) -> None:
 
 def play(args: argparse.Namespace) -> int:
     from apps.snooker.session import Session, SessionError
-    from protocols.rainbow.script import Player, ScriptError, load
+    from protocols.rainbow.script import ScriptError
 
     try:
         restore = Session.load(args.session) if _exists(args.session) else None
-        player = Player(load(args.events)) if args.events else None
+        player = events_player(args.events)
     except (SessionError, ScriptError) as exc:
         return fail(COMMAND, exc)
-    useful = "playing the --events script" if player else (
-        "for --stop-after frames" if args.stop_after else None)
-    opts = run_options(args, COMMAND, useful, "give --headless with --events FILE",
-                       getattr(args, "_argv", None))
-    if opts.headless and player is None and opts.stop_after is None:
-        opts.stop_after = 100
+    opts = scripted_run_options(args, COMMAND, player)
     try:
         program, h = _run(args, opts, restore, player)
     except SessionError as exc:

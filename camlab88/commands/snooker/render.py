@@ -11,20 +11,11 @@ import argparse
 import sys
 from pathlib import Path
 
+from camlab88.argtypes import film_of_kind, frame_size
 from camlab88.runopts import fail, frames_dir, positive, progress
 
 COMMAND = "camlab88 snooker render"
 RECORD = ".camlab88-render.json"  # the resume record, hidden among the frames
-
-
-def _size(text: str) -> tuple[int, int]:
-    w, sep, h = text.lower().partition("x")
-    if not (sep and w.isascii() and w.isdigit() and h.isascii() and h.isdigit()):
-        raise argparse.ArgumentTypeError(f"expected WxH such as 768x512, not {text!r}")
-    if not (8 <= int(w) <= 8192 and 8 <= int(h) <= 8192):
-        raise argparse.ArgumentTypeError(f"{text}: each side must be 8..8192 pixels")
-    return int(w), int(h)
-
 
 DESCRIPTION = (
     "Render every frame of a view file over a checkpoint or session. "
@@ -57,7 +48,7 @@ def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-
                    default="period", help="(default period)")
     s.add_argument("--palette", choices=("fixed", "adaptive"), default="fixed",
                    help="the T5688's 256 colours: fixed (period) or chosen for the sequence")
-    s.add_argument("--size", type=_size, default=(768, 512), metavar="WxH",
+    s.add_argument("--size", type=frame_size, default=(768, 512), metavar="WxH",
                    help="truecolour picture size (the Sigma modes are 768x512)")
     s.add_argument("--first", type=positive, metavar="N", help="first frame (default: all)")
     s.add_argument("--last", type=positive, metavar="M", help="last frame")
@@ -78,18 +69,10 @@ def _add_sequence_options(s: argparse.ArgumentParser) -> None:
                    "sequential unless given; --dask local: its workers)")
     s.add_argument("--dask", metavar="ADDRESS|local",
                    help="render on a Dask cluster (a scheduler address, or 'local')")
-    s.add_argument("--mp4", type=_movie(".mp4"), metavar="FILE",
+    s.add_argument("--mp4", type=film_of_kind(".mp4"), metavar="FILE",
                    help="also film the frames: H.264 at 25 frames/s, no sound")
-    s.add_argument("--gif", type=_movie(".gif"), metavar="FILE",
+    s.add_argument("--gif", type=film_of_kind(".gif"), metavar="FILE",
                    help="also film the frames as a GIF at 25 frames/s")
-
-
-def _movie(ext: str):  # an argparse type
-    def check(text: str) -> Path:
-        if Path(text).suffix.lower() != ext:
-            raise argparse.ArgumentTypeError(f"{text}: expected a {ext} file")
-        return Path(text)
-    return check
 
 
 def render(args: argparse.Namespace) -> int:
