@@ -3,6 +3,9 @@
 
 from __future__ import annotations
 
+import os
+import subprocess
+import sys
 from pathlib import Path
 
 import apps.ca.hashlife  # noqa: F401 - registers its kernel groups
@@ -19,4 +22,39 @@ def test_every_hashlife_kernel_module_is_in_an_announced_group() -> None:
     missing = with_kernels - set(kernel_notice._state.groups)
     assert not missing, f"kernels compiled without the notice: {sorted(missing)}"
     labels = {kernel_notice._state.groups[m].label for m in with_kernels}
-    assert labels == {"HashLife", "binary HashLife"}
+    assert labels == {"HashLife rule", "HashLife", "binary HashLife"}
+
+
+LIFE_RUN = """
+from numba.core import event
+class Log(event.Listener):
+    def on_start(self, ev):
+        print("compiled", ev.data["dispatcher"].py_func.__module__, flush=True)
+    def on_end(self, ev):
+        pass
+event.register("numba:compile", Log())
+from apps.ca.engine import CENTRE, Engine
+from apps.ca.library import pattern_path, rules_path
+from apps.ca.patterns import read_pattern
+from apps.ca.rules import load_rules
+engine = Engine(load_rules(rules_path("life")), algorithm="hashlife")
+engine.set_cells(*read_pattern(pattern_path("gosper_gun")).placed(CENTRE, CENTRE, "identity"))
+engine.step(300)
+print("population", engine.stats()["population"])
+"""
+
+
+def test_a_first_life_run_compiles_the_binary_group_alone(tmp_path: Path) -> None:
+    """Life's first run (and the completion at its exit) compiles no generic recursion or
+    table kernel: those wait, under their own notice, for a rule set of more life-forms."""
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"), PYTHONPATH=str(ROOT))
+    done = subprocess.run([sys.executable, "-c", LIFE_RUN], env=env, capture_output=True,
+                          text=True, timeout=600)
+    assert done.returncode == 0, done.stderr
+    compiled = {line.split()[1] for line in done.stdout.splitlines()
+                if line.startswith("compiled ")}
+    assert "apps.ca.hashlife.bits.evolve" in compiled
+    generic = {f"apps.ca.hashlife.{m}" for m in ("store", "evolve", "convert", "census")}
+    assert not compiled & generic
+    assert "compiling HashLife kernels" not in done.stderr
+    assert "compiling binary HashLife kernels" in done.stderr
