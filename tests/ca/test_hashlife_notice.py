@@ -26,6 +26,18 @@ def test_every_hashlife_kernel_module_is_in_an_announced_group() -> None:
                       "binary HashLife growth and collection"}
 
 
+def test_every_hashlife_group_completion_is_a_function() -> None:
+    """A misnamed completion would only print "not compiled ahead" at a first run's exit."""
+    import importlib
+
+    completions = {g.completion for m, g in kernel_notice._state.groups.items()
+                   if m.startswith("apps.ca.hashlife") and g.completion}
+    assert len(completions) == 4
+    for completion in completions:
+        module, _, function = completion.partition(":")
+        assert callable(getattr(importlib.import_module(module), function))
+
+
 LIFE_RUN = """
 from numba.core import event
 class Log(event.Listener):

@@ -24,9 +24,9 @@ _WARM = "apps.ca.hashlife.kernel_warmup:compile_"  # + the group's part
 # Each group completes alone, so a run compiles only the groups it touches; the rule
 # interpreter is its own group (both paths run it: the binary one to build its table).
 announce_compiles("HashLife rule", 1.0, f"{__name__}.leaf")
-announce_compiles("HashLife", 8.0, *(f"{__name__}.{m}" for m in (
+announce_compiles("HashLife", 6.0, *(f"{__name__}.{m}" for m in (
     "store", "evolve", "convert", "census")), completion=_WARM + "generic")
-announce_compiles("binary HashLife", 8.0, *(f"{__name__}.bits.{m}" for m in (
+announce_compiles("binary HashLife", 7.0, *(f"{__name__}.bits.{m}" for m in (
     "rule", "store", "leaves", "evolve", "convert", "census", "run")),
     completion=_WARM + "binary")
 announce_compiles("binary HashLife cell-list", 2.0, f"{__name__}.bits.cells",
