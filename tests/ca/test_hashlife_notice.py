@@ -51,15 +51,17 @@ from apps.ca.library import pattern_path, rules_path
 from apps.ca.patterns import read_pattern
 from apps.ca.rules import load_rules
 engine = Engine(load_rules(rules_path("life")), algorithm="hashlife")
-engine.set_cells(*read_pattern(pattern_path("gosper_gun")).placed(CENTRE, CENTRE, "identity"))
+engine.set_grid(*read_pattern(pattern_path("gosper_gun")).placed_grid(CENTRE, CENTRE))
 engine.step(300)
 print("population", engine.stats()["population"])
 """
 
 
 def test_a_first_life_run_compiles_the_binary_group_alone(tmp_path: Path) -> None:
-    """Life's first run (and the completion at its exit) compiles no generic recursion or
-    table kernel: those wait, under their own notice, for a rule set of more life-forms."""
+    """Life's first run as `ca run --json` makes it (the pattern from its grid; the
+    completion at its exit included) compiles no generic recursion or table kernel, nor the
+    binary cell lists or collector: each waits, under its own notice, for a run that needs
+    it."""
     env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"), PYTHONPATH=str(ROOT))
     done = subprocess.run([sys.executable, "-c", LIFE_RUN], env=env, capture_output=True,
                           text=True, timeout=600)
@@ -67,7 +69,9 @@ def test_a_first_life_run_compiles_the_binary_group_alone(tmp_path: Path) -> Non
     compiled = {line.split()[1] for line in done.stdout.splitlines()
                 if line.startswith("compiled ")}
     assert "apps.ca.hashlife.bits.evolve" in compiled
-    generic = {f"apps.ca.hashlife.{m}" for m in ("store", "evolve", "convert", "census")}
-    assert not compiled & generic
+    unused = {f"apps.ca.hashlife.{m}" for m in ("store", "evolve", "convert", "census",
+                                                 "bits.cells", "bits.collect")}
+    assert not compiled & unused
     assert "compiling HashLife kernels" not in done.stderr
+    assert "cell-list" not in done.stderr
     assert "compiling binary HashLife kernels" in done.stderr
