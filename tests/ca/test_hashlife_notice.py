@@ -3,6 +3,9 @@
 
 from __future__ import annotations
 
+import os
+import subprocess
+import sys
 from pathlib import Path
 
 import apps.ca.hashlife  # noqa: F401 - registers its kernel groups
@@ -19,4 +22,56 @@ def test_every_hashlife_kernel_module_is_in_an_announced_group() -> None:
     missing = with_kernels - set(kernel_notice._state.groups)
     assert not missing, f"kernels compiled without the notice: {sorted(missing)}"
     labels = {kernel_notice._state.groups[m].label for m in with_kernels}
-    assert labels == {"HashLife", "binary HashLife"}
+    assert labels == {"HashLife rule", "HashLife", "binary HashLife", "binary HashLife cell-list",
+                      "binary HashLife growth and collection"}
+
+
+def test_every_hashlife_group_completion_is_a_function() -> None:
+    """A misnamed completion would only print "not compiled ahead" at a first run's exit."""
+    import importlib
+
+    completions = {g.completion for m, g in kernel_notice._state.groups.items()
+                   if m.startswith("apps.ca.hashlife") and g.completion}
+    assert len(completions) == 4
+    for completion in completions:
+        module, _, function = completion.partition(":")
+        assert callable(getattr(importlib.import_module(module), function))
+
+
+LIFE_RUN = """
+from numba.core import event
+class Log(event.Listener):
+    def on_start(self, ev):
+        print("compiled", ev.data["dispatcher"].py_func.__module__, flush=True)
+    def on_end(self, ev):
+        pass
+event.register("numba:compile", Log())
+from apps.ca.engine import CENTRE, Engine
+from apps.ca.library import pattern_path, rules_path
+from apps.ca.patterns import read_pattern
+from apps.ca.rules import load_rules
+engine = Engine(load_rules(rules_path("life")), algorithm="hashlife")
+engine.set_grid(*read_pattern(pattern_path("gosper_gun")).placed_grid(CENTRE, CENTRE))
+engine.step(300)
+print("population", engine.stats()["population"])
+"""
+
+
+def test_a_first_life_run_compiles_the_binary_group_alone(tmp_path: Path) -> None:
+    """Life's first run as `ca run --json` makes it (the pattern from its grid; the
+    completion at its exit included) compiles no generic recursion or table kernel, nor the
+    binary cell lists or collector: each waits, under its own notice, for a run that needs
+    it."""
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"), PYTHONPATH=str(ROOT))
+    done = subprocess.run([sys.executable, "-c", LIFE_RUN], env=env, capture_output=True,
+                          text=True, timeout=600)
+    assert done.returncode == 0, done.stderr
+    compiled = {line.split()[1] for line in done.stdout.splitlines()
+                if line.startswith("compiled ")}
+    assert "apps.ca.hashlife.bits.evolve" in compiled
+    unused = {f"apps.ca.hashlife.{m}" for m in ("store", "evolve", "convert", "census",
+                                                 "bits.cells", "bits.collect")}
+    assert not compiled & unused
+    assert "compiling HashLife kernels" not in done.stderr
+    assert "cell-list" not in done.stderr
+    assert "compiling binary HashLife kernels" in done.stderr

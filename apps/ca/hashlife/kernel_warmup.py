@@ -1,11 +1,14 @@
 """Every HashLife kernel called once, with the argument types real runs use.
 
-The completion of the "HashLife" and "binary HashLife" kernel groups
-(base.kernel_notice): after the first cold compile of either, both compile, so Life
-(the binary path, which also uses the generic tree's conversions) and a later rule set of
-more life-forms (the generic path: the Turing machine, the maze, the circuits) share one
-compile. Short runs through the engine itself, on both edge modes, with a node-table limit
-small enough to make the garbage collector run.
+The completions of HashLife's kernel groups (base.kernel_notice), one per group: after the
+first cold compile of a group the rest of that group compiles, so its notice is printed
+once per install. The binary path (Life) is three groups: the jumps (with the census and
+the dense window's conversion: all a `ca run --json` of a small pattern needs), the cell
+lists (pictures, sparse patterns) and the tables' growth and collection (runs that fill
+them); the generic path (the Turing machine, the maze, the circuits) is one. So Life's
+first run compiles neither the generic recursion nor what it does not use. Short runs
+through the engine itself, on both edge modes. ``compile_kernels`` (``camlab88 warm-up``)
+compiles every group.
 """
 
 from __future__ import annotations
@@ -14,33 +17,71 @@ import numpy as np
 
 from apps.ca.engine import CENTRE, Engine
 from apps.ca.hashlife import convert
-from apps.ca.hashlife.bits import convert as bit_convert
-from apps.ca.hashlife.bits.store import EMPTY, BitStore
-from apps.ca.hashlife.bits.store import rehash as bit_rehash
+from apps.ca.hashlife.bits import cells as bit_cells
+from apps.ca.hashlife.bits.collect import rehash as bit_rehash
+from apps.ca.hashlife.bits.store import BitStore
 from apps.ca.hashlife.store import NodeStore
 from apps.ca.library import pattern_path, rules_path
 from apps.ca.patterns import read_pattern
 from apps.ca.rules import load_rules
 
-RUNS = (("life", "gosper_gun"), ("turing_primes", "primes_25"))
+BINARY_RUN = ("life", "gosper_gun")
+GENERIC_RUN = ("turing_primes", "primes_25")
 
 
 def compile_kernels() -> None:
-    for rules_name, pattern_name in RUNS:
-        rules = load_rules(rules_path(rules_name))
-        xs, ys, ts = read_pattern(pattern_path(pattern_name)).placed(CENTRE, CENTRE,
-                                                                     "identity")
-        for edges in ("wrap", "bounded"):
-            engine = Engine(rules, edges=edges, algorithm="hashlife")
-            engine.set_cells(xs, ys, ts)
-            engine.step(300)
-            engine.stats()
+    """Every group (``camlab88 warm-up``)."""
+    compile_binary()
+    compile_bit_cells()
+    compile_bit_upkeep()
+    compile_generic()
+
+
+def compile_binary() -> None:
+    """The binary group's completion: jumps, census, the dense window's conversion."""
+    _runs(*BINARY_RUN, cells=False)
+
+
+def compile_bit_cells() -> None:
+    """The binary cell lists' completion: cells to a tree and back."""
+    store = BitStore()
+    xs = ys = np.array([5, 40000], np.int64)
+    bit_cells.cells(np.int64(bit_cells.to_tree(xs, ys, store)), store.nodes, store.leaves,
+                    store.meta)
+
+
+def compile_bit_upkeep() -> None:
+    """The binary tables' growth and collection (their group's completion)."""
+    bits = BitStore()
+    bits.make_room([])
+    bits.slots[:] = 0  # as grow_if_full does after doubling: every entry hashed again
+    bits.lslots[:] = 0
+    bit_rehash(bits.nodes, bits.slots, bits.leaves, bits.lslots, bits.meta)
+
+
+def compile_generic() -> None:
+    """The generic group's completion."""
+    _runs(*GENERIC_RUN)
+    _generic_tables()
+
+
+def _runs(rules_name: str, pattern_name: str, cells: bool = True) -> None:
+    """Jumps from the pattern as `ca run` places it (a dense pattern from its grid)."""
+    rules = load_rules(rules_path(rules_name))
+    pattern = read_pattern(pattern_path(pattern_name))
+    grid = pattern.placed_grid(CENTRE, CENTRE, "identity")
+    cells = pattern.placed(CENTRE, CENTRE, "identity") if grid is None else None
+    for edges in ("wrap", "bounded"):
+        engine = Engine(rules, edges=edges, algorithm="hashlife")
+        engine.set_grid(*grid) if grid is not None else engine.set_cells(*cells)
+        engine.step(300)
+        engine.stats()
+        if cells:
             engine.cells()
-    _tables()
 
 
-def _tables() -> None:
-    """Growth, collection and the cell lists of empty planes, on both kinds of table."""
+def _generic_tables() -> None:
+    """Growth, collection and the cell lists of an empty plane, on the generic table."""
     generic = NodeStore()
     top = int(convert.PLANE_LEVEL)
     plane = np.int64(generic.empty[top])
@@ -48,10 +89,3 @@ def _tables() -> None:
     convert.near_seam(int(plane), 1, generic.nodes, generic.empty)
     generic.make_room([])
     generic._grow()  # the rehash kernel, as a growing run calls it
-    bits = BitStore()
-    bit_convert.cells(np.int64(bits.meta[EMPTY + bit_convert.PLANE_LEVEL]), bits.nodes,
-                      bits.leaves, bits.meta)
-    bits.make_room([])
-    bits.slots[:] = 0  # as grow_if_full does after doubling: every entry hashed again
-    bits.lslots[:] = 0
-    bit_rehash(bits.nodes, bits.slots, bits.leaves, bits.lslots, bits.meta)

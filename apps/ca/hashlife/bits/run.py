@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from apps.ca.hashlife.bits import census, convert, evolve
+from apps.ca.hashlife.bits import cells, census, convert, evolve
 from apps.ca.hashlife.bits.leaves import PLANES
 from apps.ca.hashlife.bits.rule import BinaryRule, binary_rule
 from apps.ca.hashlife.bits.store import BitStore
@@ -43,7 +43,7 @@ class BitRun:
         window = engine.dense_window
         if window is not None:
             return convert.grid_to_tree(window[0], window[1], window[2], self.store)
-        return convert.to_tree(engine.xs, engine.ys, self.store)
+        return cells.to_tree(engine.xs, engine.ys, self.store)
 
     def next_jump(self, node: int, remaining: int, edges: str) -> int:
         return min(MAX_JUMP, remaining)
@@ -64,5 +64,5 @@ class BitRun:
 
     def cells(self, node: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         s = self.store
-        rows = convert.cells(np.int64(node), s.nodes, s.leaves, s.meta)
+        rows = cells.cells(np.int64(node), s.nodes, s.leaves, s.meta)
         return rows[:, 0].copy(), rows[:, 1].copy(), np.ones(rows.shape[0], np.int64)
