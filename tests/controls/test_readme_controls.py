@@ -2,19 +2,16 @@
 
 from __future__ import annotations
 
-import shlex
 from pathlib import Path
 
 from camlab88.cli import main
+from tests.support.readme import section_commands
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
 def _commands() -> list[list[str]]:
-    text = (ROOT / "README.md").read_text(encoding="utf-8")
-    section = text.split("\n## Emulator controls", 1)[1].split("\n## ", 1)[0]
-    return [shlex.split(line.strip()) for line in section.splitlines()
-            if line.startswith("    camlab88 ")]
+    return section_commands("Emulator controls")
 
 
 def test_the_controls_commands_run_as_printed(tmp_path: Path, monkeypatch, capsys) -> None:
