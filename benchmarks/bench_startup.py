@@ -62,6 +62,19 @@ README_MORE = [
 ]
 
 
+# README sections after the CA's, whose commands run headless as printed
+MORE_SECTIONS = ("Emulator controls", "Save states and seeking",
+                 "The cellular automaton in 3-D: cells as actors")
+
+
+def more_sections() -> list[list[str]]:
+    """Their commands, less the ones that open a window (the editor without --headless)."""
+    from tests.support.readme import section_commands
+
+    return [argv[1:] for heading in MORE_SECTIONS for argv in section_commands(heading)
+            if not (argv[1:3] == ["ca", "actors"] and "--headless" not in argv)]
+
+
 def camlab88() -> list[str]:
     script = Path(sys.executable).with_name("camlab88")
     return [str(script)] if script.exists() else [sys.executable, "-m", "camlab88"]
@@ -105,7 +118,7 @@ def readme(work: Path, demo: bool) -> None:
     text = (ROOT / "README.md").read_text(encoding="utf-8")
     for d in walkthrough_directories(text):  # the README's `mkdir -p` lines
         (work / d).mkdir(parents=True, exist_ok=True)
-    commands = [argv[1:] for argv in walkthrough_commands(text)] + README_MORE
+    commands = [argv[1:] for argv in walkthrough_commands(text)] + README_MORE + more_sections()
     if demo:
         commands.append(["demo", "--headless"])
     cache = work / "newcomer-cache"

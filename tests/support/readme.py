@@ -13,5 +13,5 @@ def section_commands(heading: str) -> list[list[str]]:
     """Every ``    camlab88 ...`` line between ``## heading`` and the next ``## ``."""
     text = (ROOT / "README.md").read_text(encoding="utf-8")
     section = text.split(f"\n## {heading}", 1)[1].split("\n## ", 1)[0]
-    return [shlex.split(line.strip()) for line in section.splitlines()
+    return [shlex.split(line.strip(), comments=True) for line in section.splitlines()
             if line.startswith("    camlab88 ")]
