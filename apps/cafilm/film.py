@@ -77,6 +77,16 @@ def render_image(film: CaFilm, frame: int) -> np.ndarray:
     return render_frame(stage, shot, film.look)
 
 
+def compile_here(film: CaFilm) -> None:
+    """Render the first frame small in this process: on a cold numba cache the renderer's
+    kernels compile once, here, under one notice, and the workers load them from the cache
+    instead of each compiling them (kernel signatures depend on types, not on sizes)."""
+    from dataclasses import replace
+
+    stage, shot = stage_at(film, 1)
+    render_frame(stage, shot, replace(film.look, width=16, height=12))
+
+
 def render_png(film: CaFilm, task: FilmFrame) -> bytes:
     """The backends' render function: picklable inputs -> PNG bytes, the same anywhere."""
     from base.png import png_bytes
@@ -107,6 +117,8 @@ def shoot(film: CaFilm, out_dir: str | os.PathLike[str], dask: str | None = None
     from apps.snooker.film.schedule import render_film
 
     backend = open_backend(film, dask, workers, render=render_png)
+    if backend.workers > 1 or dask is not None:
+        compile_here(film)
     try:
         return render_film(tasks(film), Path(out_dir), backend, digest(film),
                            progress)
