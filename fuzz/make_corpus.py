@@ -200,11 +200,28 @@ def _sessions() -> None:
     _put("session-recording", "every_record.session", dumps(rec))
 
 
+def _states() -> None:
+    """A Sigma machine with a stream half taken, and a CA program's whole state."""
+    from apps.ca.program.program import CAProgram, Options
+    from emulator.harness.program_state import object_state
+    from emulator.machine import SigmaMachine
+    from emulator.rainbow.session import in_process
+    from protocols.sigma.demo import sigma_animation_stream
+
+    machine = SigmaMachine("t5684")
+    machine.host.write(sigma_animation_stream()[:400])
+    machine.run_until(0.2)
+    _put("machine-state", "sigma_mid_stream.state", machine.save_state())
+    program = CAProgram(in_process().client, Options(pattern="glider"))
+    program.frame()
+    _put("program-state", "ca_glider.state", object_state(program))
+
+
 def main() -> int:
     if CORPUS.exists():
         shutil.rmtree(CORPUS)
     for make in (_rainbow, _link_and_sigma, _kas, _snooker, _ca, _tablets, _scripts_and_views,
-                 _kas_paint, _sessions):
+                 _kas_paint, _sessions, _states):
         make()
     for folder in sorted(CORPUS.iterdir()):
         files = list(folder.iterdir())

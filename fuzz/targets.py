@@ -247,6 +247,27 @@ def _actors(data: bytes) -> object:
     return _via_file(data, read_actors, ".actors")
 
 
+_PROGRAMS: list = []
+
+
+def _machine_state(data: bytes) -> object:
+    from emulator.machine import SigmaMachine
+
+    return SigmaMachine("t5684").load_state(data)
+
+
+def _program_state(data: bytes) -> object:
+    """A whole-program state (base.objstate) loaded in place into a CA program."""
+    from emulator.harness.program_state import load_object_state
+
+    if not _PROGRAMS:
+        from apps.ca.program.program import CAProgram, Options
+        from emulator.rainbow.session import in_process
+
+        _PROGRAMS.append(CAProgram(in_process().client, Options(pattern="glider")))
+    return load_object_state(_PROGRAMS[0], data)
+
+
 TARGETS: dict[str, Target] = {t.name: t for t in (
     Target("rainbow-scene", _scene, (ValueError, _rainbow_error())),
     Target("rainbow-recording", _rainbow_recording),
@@ -282,4 +303,6 @@ TARGETS: dict[str, Target] = {t.name: t for t in (
     Target("kas-paint-ops", _kas_ops, (_kas_paint_ops(),)),
     Target("session-recording", _session, (_session_error(),)),
     Target("ca-actors", _actors, (_actors_error(),)),
+    Target("machine-state", _machine_state),
+    Target("program-state", _program_state),
 )}
