@@ -41,8 +41,13 @@ kas_script = st.lists(kas_line, min_size=2, max_size=10).map("\n".join)
 fraction_of_run = st.floats(0.05, 0.8)
 
 
+# hypothesis runs each example in one test call, so each gets its own directory under one
+# that is removed when the test process ends (tmp_path would be shared by the examples)
+_SCRATCH = tempfile.TemporaryDirectory(prefix="camlab88-state-tests-")
+
+
 def _scratch() -> Path:
-    return Path(tempfile.mkdtemp(prefix="camlab88-state-test-"))
+    return Path(tempfile.mkdtemp(dir=_SCRATCH.name))
 
 
 @STATEFUL
