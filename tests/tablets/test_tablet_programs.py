@@ -191,3 +191,21 @@ def test_the_window_mouse_and_keys_drive_the_tablet_through_its_protocol() -> No
         (True, "eraser", True), (False, "eraser", False)]
     assert (seen[1].x, seen[2].x) == (pytest.approx(m.max_x / 2, abs=m.max_x / w), m.max_x)
     assert frame.shape == (h, w, 3) and emu.view.ink.any()  # the stroke drawn, from the bytes
+
+
+def test_the_headless_tools_never_import_pygame(tmp_path) -> None:
+    import os
+    import subprocess
+    import sys
+
+    script = ("import sys\nfrom camlab88.cli import main\n"
+              "main(['tablet', 'monitor', 'emulated:summa-mm?drive=demo', '--count', '3'])\n"
+              "main(['tablet', 'calibrate', 'emulated:bitpad2?drive=demo'])\n"
+              "main(['tablet', 'monitor', 'loop://?protocol=calcomp', '--seconds', '0.1'])\n"
+              "print('pygame' in sys.modules)\n")
+    env = {k: v for k, v in os.environ.items()
+           if k not in ("DISPLAY", "WAYLAND_DISPLAY", "SDL_VIDEODRIVER")}
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                          timeout=120, env={**env, "CAMLAB88_CONFIG_DIR": str(tmp_path)})
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines()[-1] == "False"
