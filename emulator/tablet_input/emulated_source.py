@@ -1,10 +1,18 @@
 """Tablet sources for the tablet tools: a real one (HID, serial) or an emulated tablet on a
 pty, driven by the window's mouse or a scripted stroke (host input beside the emulated
-tablet).  ``open_tablet`` gives ``(source, emulated-or-None, spec)``."""
+tablet).  ``open_tablet`` gives ``(source, emulated-or-None, spec)``.
+
+The emulated tablet owns no window: the harness polls the window and hands its events to
+``handle``; ``frame`` is the tablet's view (``with_view``) for the harness to show."""
 
 from __future__ import annotations
 
 import sys
+from collections.abc import Iterable
+
+import numpy as np
+
+PUCK_PROTOCOLS = ("bitpad1", "bitpad2", "calcomp")  # a four-button puck, not a stylus
 
 
 class EmulatedSource:
@@ -33,7 +41,6 @@ class EmulatedSource:
         self.local = make_parser(spec.protocol, options)
         self.local_events: list = []
         self.script = iter(script) if script is not None else None
-        self.window = None
         self.view = None
         self.frames = 0
         self._pointer = None
@@ -42,46 +49,57 @@ class EmulatedSource:
         print(f"emulated {self.tablet.model.name} ({spec.protocol}) on {self.tablet.slave_path}",
               file=sys.stderr)
 
-    def open_window(self) -> None:
+    @property
+    def tool(self) -> str:
+        return "puck" if self.tablet.protocol in PUCK_PROTOCOLS else "pen"
+
+    @property
+    def title(self) -> str:
+        return f"camlab88 emulated tablet: {self.tablet.protocol}"
+
+    def with_view(self) -> None:
+        """Draw what the tablet sends (for a window), and take the window's mouse."""
         from emulator.tablet import TabletView
         from emulator.tablet.drive import PointerState
-        from emulator.window import Window
 
         self.view = TabletView(self.tablet.model)
-        self.window = Window(f"camlab88 emulated tablet: {self.tablet.protocol}", self.view.size)
         self._pointer = PointerState()
 
     def step(self) -> bool:
-        """Advance the driver one tick; False when the script ends or the window closes."""
-        from emulator.host_input import KeyDown, Quit
+        """Advance the scripted stroke one tick; False once it has ended (never without one)."""
         from emulator.tablet import pointer_to_tablet
 
-        model = self.tablet.model
-        tool = "puck" if self.tablet.protocol in ("bitpad1", "bitpad2", "calcomp") else "pen"
-        if self.script is not None:
-            nxt = next(self.script, None)
-            if nxt is None:
-                return False
-            fx, fy, buttons = nxt
-            w, h = self.view.size if self.view else (1001, 1001)
-            event = pointer_to_tablet(fx * (w - 1), fy * (h - 1), (w, h), model, buttons,
-                                      tool=tool)
-            self._send(event)
-        if self.window is not None:
-            for ev in self.window.poll():
-                if isinstance(ev, Quit):
-                    return False
-                if isinstance(ev, KeyDown) and ev.key == "o":  # lift the pen out of range
-                    self.away = not self.away
-                elif isinstance(ev, KeyDown) and ev.key == "e" and tool == "pen":
-                    self.eraser = not self.eraser  # turn the stylus over
-                elif not (self.script is None and self._pointer.apply(ev)):
-                    continue
-                p = self._pointer
-                self._send(pointer_to_tablet(
-                    p.x, p.y, self.view.size, model, p.mask, proximity=not self.away,
-                    tool="eraser" if self.eraser and tool == "pen" else tool))
+        if self.script is None:
+            return True
+        nxt = next(self.script, None)
+        if nxt is None:
+            return False
+        fx, fy, buttons = nxt
+        w, h = self.view.size if self.view else (1001, 1001)
+        self._send(pointer_to_tablet(fx * (w - 1), fy * (h - 1), (w, h), self.tablet.model,
+                                     buttons, tool=self.tool))
         return True
+
+    def handle(self, events: Iterable[object]) -> None:
+        """The window's events: o (out of proximity), e (eraser end), and the mouse as the
+        pen unless a script draws."""
+        from emulator.host_input import KeyDown
+        from emulator.tablet import pointer_to_tablet
+
+        if self.view is None:
+            return
+        tool = self.tool
+        for ev in events:
+            if isinstance(ev, KeyDown) and ev.key == "o":  # lift the pen out of range
+                self.away = not self.away
+            elif isinstance(ev, KeyDown) and ev.key == "e" and tool == "pen":
+                self.eraser = not self.eraser  # turn the stylus over
+            elif not (self.script is None and self._pointer.apply(ev)):
+                continue
+            p = self._pointer
+            self._send(pointer_to_tablet(
+                p.x, p.y, self.view.size, self.tablet.model, p.mask, proximity=not self.away,
+                tool="eraser" if self.eraser and tool == "pen" else tool))
 
     def _send(self, event) -> None:
         data = self.tablet.send(event)
@@ -93,22 +111,25 @@ class EmulatedSource:
         return events
 
     def show(self, events) -> None:
-        if self.window is None:
-            self.frames += 1  # headless: a frame's time has still passed
+        """One frame's time has passed; the view draws ``events``."""
+        self.frames += 1
+        if self.view is None:
             return
         # the host may have moved the origin (Summagraphics "b"): draw as the tablet reports
         self.view.model = self.tablet.model
         for e in events:
             self.view.add(e)
-        self.window.show(self.view.frame())
-        self.frames += 1
+
+    def frame(self) -> np.ndarray:
+        """The view (a single black pixel without one: headless)."""
+        if self.view is None:
+            return np.zeros((1, 1, 3), dtype=np.uint8)
+        return self.view.frame()
 
     def close(self) -> None:
         if self.source is not None:
             self.source.close()
         self.tablet.close()
-        if self.window is not None:
-            self.window.close()
 
 
 def open_tablet(source_text: str, on_raw=None, script=None):
@@ -127,3 +148,13 @@ def open_tablet(source_text: str, on_raw=None, script=None):
         raise SystemExit(f"camlab88 tablet: {exc}") from None
 
 
+def needs_window(source_text: str) -> bool:
+    """A SOURCE that is the emulated tablet driven by the mouse (a parse error: False,
+    ``open_tablet`` reports it)."""
+    from protocols.tablets.sources import SourceError, parse_source
+
+    try:
+        spec = parse_source(source_text)
+    except (SourceError, ValueError):
+        return False
+    return spec.kind == "emulated" and spec.options.get("drive", "mouse") == "mouse"

@@ -8,10 +8,12 @@ socket can carry) bit 7 is the parity bit, checked here.
 
 from __future__ import annotations
 
+import re
+from abc import abstractmethod
 from collections.abc import Callable
 from typing import ClassVar
 
-from protocols.tablets.base import ProtocolError, TabletParser
+from protocols.tablets.base import TabletParser, one_of
 from protocols.tablets.events import TabletEvent, TabletModel
 from protocols.tablets.framing import add_parity, parity_ok
 
@@ -29,9 +31,7 @@ class AsciiLineParser(TabletParser):
         parmrk: bool = False,
     ) -> None:
         super().__init__(model, parmrk)
-        if parity not in ("N", "E", "O"):
-            raise ProtocolError(f"parity must be N, E or O, not {parity!r}")
-        self.parity = parity
+        self.parity = one_of("parity", parity, ("N", "E", "O"))
         self._decode_line = decode_line
         self._terminators = terminators
         self._line = bytearray()
@@ -76,22 +76,43 @@ def apply_parity(data: bytes, parity: str) -> bytes:
     return bytes(add_parity(b, parity) for b in data)
 
 
-LineDecoder = Callable[[str, float], TabletEvent | None]
+def bit_pad_model(name: str) -> TabletModel:
+    """A Bit Pad's active area as the factory sets it: 2200 x 2200 at 200 lpi (11 inches
+    square), origin lower-left; One and Two alike."""
+    return TabletModel(name, 2200, 2200, 200.0, None, None, origin="lower-left")
 
 
 class AsciiReportParser(AsciiLineParser):
-    """A tablet whose every report is one ASCII line (the Bit Pads): a subclass names its
-    default model, parity and line terminators, and ``line_decoder(tool)``, the decoder of
-    one line for the tool in use."""
+    """A tablet whose every report is one ASCII line ``XXXX,YYYY,F`` (the Bit Pads): four
+    decimal digits of X and of Y and a flag character.  A subclass names its default model,
+    parity and line terminators, the flag characters it sends (``flags``, a regex class) and
+    ``flag_state(flag) -> (proximity, buttons)``."""
 
     default_model: ClassVar[TabletModel]
     default_parity: ClassVar[str]
     terminators: ClassVar[bytes]
-    line_decoder: ClassVar[Callable[[str], LineDecoder]]
+    flags: ClassVar[str]
 
     def __init__(self, model: TabletModel | None = None, *, parity: str | None = None,
                  tool: str = "puck", parmrk: bool = False) -> None:
         super().__init__(model if model is not None else self.default_model,
-                         self.line_decoder(tool),
+                         self._line_decoder(tool),
                          parity=self.default_parity if parity is None else parity,
                          terminators=self.terminators, parmrk=parmrk)
+
+    @staticmethod
+    @abstractmethod
+    def flag_state(flag: str) -> tuple[bool, int]: ...
+
+    def _line_decoder(self, tool: str) -> Callable[[str, float], TabletEvent]:
+        line = re.compile(rf"(\d{{4}}),(\d{{4}}),([{self.flags}])")
+
+        def decode(text: str, timestamp: float) -> TabletEvent:
+            match = line.fullmatch(text)
+            if match is None:
+                raise ValueError(f"not a {self.default_model.name} report: {text!r}")
+            proximity, buttons = self.flag_state(match.group(3))
+            return TabletEvent(int(match.group(1)), int(match.group(2)), proximity, buttons,
+                               None, None, None, tool, timestamp)
+
+        return decode

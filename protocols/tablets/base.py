@@ -3,9 +3,13 @@
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
+from collections.abc import Callable
+from typing import TypeVar
 
 from protocols.tablets.events import DeviceReply, TabletEvent, TabletModel
 from protocols.tablets.framing import ParmrkFilter, ParseStats, SyncFramer
+
+T = TypeVar("T")
 
 
 class ProtocolError(ValueError):
@@ -51,6 +55,11 @@ class TabletParser(ABC):
             out.append(event)
         return out
 
+    def _use_framer(self, packet_size: int) -> None:
+        """Binary packets of ``packet_size`` bytes framed on the sync bit (framing.py)."""
+        self._framer = SyncFramer(packet_size)
+        self.stats = self._framer.stats
+
     def take_replies(self) -> list[DeviceReply]:
         replies, self._replies = self._replies, []
         return replies
@@ -68,10 +77,6 @@ class SyncFramedParser(TabletParser):
     Summagraphics): the framing is shared, ``decode`` turns one whole packet into an event
     (or None for a packet that is not a report)."""
 
-    def _use_framer(self, packet_size: int) -> None:
-        self._framer = SyncFramer(packet_size)
-        self.stats = self._framer.stats
-
     def _byte(self, byte: int, ok: bool, timestamp: float) -> TabletEvent | None:
         if not ok:  # a parity error spoils the packet it falls in
             self._framer.reset()
@@ -87,9 +92,15 @@ class TabletEncoder(ABC):
     """Turns events into the bytes the real tablet would send (for the emulated tablet)."""
 
     name: str = ""
+    xy_max: int = 0xFFFF  # the largest X or Y the format's fields hold
 
     def __init__(self, model: TabletModel) -> None:
         self.model = model
+
+    def checked_xy(self, event: TabletEvent) -> tuple[int, int]:
+        """The event's X and Y, or ProtocolError for one the format cannot hold."""
+        return (clamp_check(event.x, 0, self.xy_max, "X"),
+                clamp_check(event.y, 0, self.xy_max, "Y"))
 
     @abstractmethod
     def encode(self, event: TabletEvent) -> bytes: ...
@@ -105,6 +116,15 @@ class TabletEncoder(ABC):
     def split_commands(self, data: bytes) -> tuple[list[bytes], bytes]:
         """Split host bytes into complete commands; return (commands, unfinished rest)."""
         return [], b""
+
+
+def one_of(what: str, value: T, allowed: tuple[T, ...],
+           show: Callable[[T], str] = repr) -> T:
+    """``value`` if it is one of ``allowed``, else ProtocolError naming the choices."""
+    if value not in allowed:
+        choices = ", ".join(map(show, allowed[:-1])) + f" or {show(allowed[-1])}"
+        raise ProtocolError(f"{what} must be {choices}, not {show(value)}")
+    return value
 
 
 def clamp_check(value: int, low: int, high: int, what: str) -> int:

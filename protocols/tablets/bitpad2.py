@@ -8,34 +8,16 @@ cursor data) is a reconstruction: button n pressed -> digit n, none -> 0.
 
 from __future__ import annotations
 
-import re
-
-from protocols.tablets.ascii_line import AsciiReportParser, apply_parity
+from protocols.tablets.ascii_line import AsciiReportParser, apply_parity, bit_pad_model
 from protocols.tablets.base import ProtocolError, TabletEncoder, clamp_check
 from protocols.tablets.events import DeviceReply, TabletEvent, TabletModel
 
 NAME = "bitpad2"
-DEFAULT_MODEL = TabletModel("Summagraphics Bit Pad Two (MM1103)", 2200, 2200, 200.0, None, None,
-                            origin="lower-left")
+DEFAULT_MODEL = bit_pad_model("Summagraphics Bit Pad Two (MM1103)")
 # The Send Configuration reply is "MM1103 BIT PAD II by Summagraphics Version n.n<CR>[<LF>]"
 # (manual p.27).  Its command letter is not recovered, so we never ask, but a tablet that sends
 # it (e.g. after a front-panel request) yields a DeviceReply rather than a bad report.
 CONFIG_PREFIX = "MM1103 BIT PAD II"
-_LINE = re.compile(r"(\d{4}),(\d{4}),([0-9])")
-
-
-def _decoder(tool: str):
-    def decode(text: str, timestamp: float) -> TabletEvent:
-        match = _LINE.fullmatch(text)
-        if match is None:
-            raise ValueError(f"not a Bit Pad Two report: {text!r}")
-        x, y, flag = int(match.group(1)), int(match.group(2)), int(match.group(3))
-        if flag == 9:
-            return TabletEvent(x, y, False, 0, None, None, None, tool, timestamp)
-        buttons = 0 if flag == 0 else 1 << (flag - 1)
-        return TabletEvent(x, y, True, buttons, None, None, None, tool, timestamp)
-
-    return decode
 
 
 class Bitpad2Parser(AsciiReportParser):
@@ -43,7 +25,13 @@ class Bitpad2Parser(AsciiReportParser):
     default_model = DEFAULT_MODEL
     default_parity = "E"
     terminators = b"\r\n"
-    line_decoder = staticmethod(_decoder)
+    flags = "0-9"
+
+    @staticmethod
+    def flag_state(flag: str) -> tuple[bool, int]:
+        """9: out of proximity; n: button n (one at a time); 0: none."""
+        n = int(flag)
+        return (False, 0) if n == 9 else (True, 0 if n == 0 else 1 << (n - 1))
 
     def _finish(self, line: bytes, timestamp: float) -> TabletEvent | None:
         if line.startswith(CONFIG_PREFIX.encode("ascii")):
@@ -55,6 +43,7 @@ class Bitpad2Parser(AsciiReportParser):
 
 class Bitpad2Encoder(TabletEncoder):
     name = NAME
+    xy_max = 9999
 
     def __init__(
         self, model: TabletModel = DEFAULT_MODEL, *, parity: str = "E", linefeed: bool = True
@@ -65,8 +54,7 @@ class Bitpad2Encoder(TabletEncoder):
         self.streaming = True
 
     def encode(self, event: TabletEvent) -> bytes:
-        x = clamp_check(event.x, 0, 9999, "X")
-        y = clamp_check(event.y, 0, 9999, "Y")
+        x, y = self.checked_xy(event)
         if not event.proximity:
             flag = 9
         else:

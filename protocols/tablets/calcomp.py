@@ -12,6 +12,7 @@ from protocols.tablets.base import (
     SyncFramedParser,
     TabletEncoder,
     clamp_check,
+    one_of,
 )
 from protocols.tablets.events import TabletEvent, TabletModel
 
@@ -35,9 +36,8 @@ class CalcompParser(SyncFramedParser):
         parmrk: bool = False,
     ) -> None:
         super().__init__(model, parmrk)
-        if prox_bit not in (0, 0x20, 0x40):
-            raise ProtocolError(f"prox_bit must be 0, 0x20 or 0x40, not {prox_bit:#x}")
-        self.prox_bit = prox_bit
+        self.prox_bit = one_of("prox_bit", prox_bit, (0, 0x20, 0x40),
+                               lambda v: hex(v) if v else "0")
         self.tool = tool
         self._use_framer(6)
 
@@ -58,8 +58,7 @@ class CalcompEncoder(TabletEncoder):
         self.streaming = True
 
     def encode(self, event: TabletEvent) -> bytes:
-        x = clamp_check(event.x, 0, 0xFFFF, "X")
-        y = clamp_check(event.y, 0, 0xFFFF, "Y")
+        x, y = self.checked_xy(event)
         buttons = clamp_check(event.buttons, 0, 15, "buttons")
         if not event.proximity and not self.prox_bit:
             raise ProtocolError("this CalComp variant has no proximity bit")

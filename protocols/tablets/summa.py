@@ -14,6 +14,7 @@ from protocols.tablets.base import (
     SyncFramedParser,
     TabletEncoder,
     clamp_check,
+    one_of,
 )
 from protocols.tablets.events import TabletEvent, TabletModel
 
@@ -66,9 +67,7 @@ class SummaParser(SyncFramedParser):
         parmrk: bool = False,
     ) -> None:
         super().__init__(model or (FLAIR_MODEL if flair else DEFAULT_MODEL), parmrk)
-        if buttons not in ("code", "mask"):
-            raise ProtocolError(f"buttons must be 'code' or 'mask', not {buttons!r}")
-        self.button_encoding = buttons
+        self.button_encoding = one_of("buttons", buttons, ("code", "mask"))
         self.tool = tool
         self.flair = flair
         self._use_framer(7 if flair else 5)
@@ -93,6 +92,7 @@ class SummaEncoder(TabletEncoder):
     """MM-format reports plus the few host commands a SummaSketch answers."""
 
     name = NAME
+    xy_max = 0x3FFF
 
     def __init__(
         self,
@@ -111,8 +111,7 @@ class SummaEncoder(TabletEncoder):
         self.prompted = 0  # reports owed after "P" in prompt mode
 
     def encode(self, event: TabletEvent) -> bytes:
-        x = clamp_check(event.x, 0, 0x3FFF, "X")
-        y = clamp_check(event.y, 0, 0x3FFF, "Y")
+        x, y = self.checked_xy(event)
         b0 = 0x80 | (0 if event.proximity else 0x40) | (0x20 if self.tablet_id else 0) | 0x18
         b0 |= _field_from_buttons(event.buttons, self.button_encoding)
         packet = bytes((b0, x & 0x7F, x >> 7, y & 0x7F, y >> 7))

@@ -98,13 +98,9 @@ class RecordingSource(TabletSource):
             self.stall_release = inner.stall_release
             self.stall_fallback = inner.stall_fallback
 
-    @property
-    def model(self) -> TabletModel:
-        return self.inner.model
-
-    @property
-    def last_data(self) -> float:
-        return self.inner.last_data
+    # the inner source's, read live (a Wacom's model changes once it has said what it is)
+    model = property(lambda self: self.inner.model)
+    last_data = property(lambda self: self.inner.last_data)
 
     def read(self, timeout: float = 0.0) -> list[TabletEvent]:
         if not self._opened:  # noted at the poll that first reads it (when it was adopted)

@@ -10,9 +10,14 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, replace
 
-from protocols.tablets.base import ProtocolError, TabletEncoder, TabletParser, clamp_check
+from protocols.tablets.base import (
+    ProtocolError,
+    TabletEncoder,
+    TabletParser,
+    clamp_check,
+    one_of,
+)
 from protocols.tablets.events import DeviceReply, TabletEvent, TabletModel
-from protocols.tablets.framing import SyncFramer
 
 NAME = "wacom4"
 # A 12x12 inch tablet at 1270 lpi: TabletMagic's default and the ~C the emulator answers.
@@ -171,12 +176,9 @@ class Wacom4Parser(TabletParser):
         parmrk: bool = False,
     ) -> None:
         super().__init__(model, parmrk)
-        if extra_z_bits not in (0, 1, 2):
-            raise ProtocolError(f"extra_z_bits must be 0, 1 or 2, not {extra_z_bits}")
-        self.extra_z_bits = extra_z_bits
+        self.extra_z_bits = one_of("extra_z_bits", extra_z_bits, (0, 1, 2))
         self.eraser_mask = eraser_mask
-        self._framer = SyncFramer(9 if tilt else 7)
-        self.stats = self._framer.stats
+        self._use_framer(9 if tilt else 7)
         self._reply: bytearray | None = None
 
     @property
@@ -278,8 +280,7 @@ class Wacom4Encoder(TabletEncoder):
         self.streaming = True
 
     def encode(self, event: TabletEvent) -> bytes:
-        x = clamp_check(event.x, 0, 0xFFFF, "X")
-        y = clamp_check(event.y, 0, 0xFFFF, "Y")
+        x, y = self.checked_xy(event)
         buttons = clamp_check(event.buttons, 0, 15, "buttons")
         stylus = event.tool in ("pen", "eraser")
         if event.tool == "eraser":

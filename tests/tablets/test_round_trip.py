@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -74,46 +75,20 @@ def _round_trip(pair, name: str, events: list[TabletEvent], options=None) -> Non
     assert pair.through(parser, data) == events
 
 
+@pytest.mark.parametrize(("name", "strategy", "options"), [
+    ("wacom4", wacom_events(), None),
+    ("wacom4", wacom_events(tilt=True), {"tilt": "1"}),
+    ("summa-mm", summa_events(), None),
+    ("summa-flair", summa_events(flair=True), None),
+    ("bitpad2", bitpad2_events(), None),
+    ("bitpad1", bitpad1_events(), None),
+    ("calcomp", calcomp_events(), None),
+], ids=["wacom4", "wacom4-tilt", "summa-mm", "summa-flair", "bitpad2", "bitpad1", "calcomp"])
 @SETTINGS
-@given(st.lists(wacom_events(), min_size=1, max_size=6))
-def test_wacom4(shared_pty, events) -> None:
-    _round_trip(shared_pty, "wacom4", events)
-
-
-@SETTINGS
-@given(st.lists(wacom_events(tilt=True), min_size=1, max_size=6))
-def test_wacom4_tilt(shared_pty, events) -> None:
-    _round_trip(shared_pty, "wacom4", events, {"tilt": "1"})
-
-
-@SETTINGS
-@given(st.lists(summa_events(), min_size=1, max_size=6))
-def test_summa_mm(shared_pty, events) -> None:
-    _round_trip(shared_pty, "summa-mm", events)
-
-
-@SETTINGS
-@given(st.lists(summa_events(flair=True), min_size=1, max_size=6))
-def test_summa_flair(shared_pty, events) -> None:
-    _round_trip(shared_pty, "summa-flair", events)
-
-
-@SETTINGS
-@given(st.lists(bitpad2_events(), min_size=1, max_size=6))
-def test_bitpad2(shared_pty, events) -> None:
-    _round_trip(shared_pty, "bitpad2", events)
-
-
-@SETTINGS
-@given(st.lists(bitpad1_events(), min_size=1, max_size=6))
-def test_bitpad1(shared_pty, events) -> None:
-    _round_trip(shared_pty, "bitpad1", events)
-
-
-@SETTINGS
-@given(st.lists(calcomp_events(), min_size=1, max_size=6))
-def test_calcomp(shared_pty, events) -> None:
-    _round_trip(shared_pty, "calcomp", events)
+@given(data=st.data())
+def test_events_come_back_through_a_pty(shared_pty, name, strategy, options, data) -> None:
+    events = data.draw(st.lists(strategy, min_size=1, max_size=6))
+    _round_trip(shared_pty, name, events, options)
 
 
 STRATEGIES = {"wacom4": wacom_events(), "summa-mm": summa_events(),

@@ -5,6 +5,9 @@ from __future__ import annotations
 
 import json
 import time
+from collections.abc import Iterator
+from contextlib import contextmanager
+from typing import Any
 
 import pytest
 
@@ -93,12 +96,30 @@ def _collect(source, n: int) -> list[TabletEvent]:
     return out
 
 
-def test_wacom_source_identifies_the_emulated_tablet() -> None:
-    tablet = EmulatedTablet("wacom4")
+@contextmanager
+def _hosted(protocol: str, options: dict[str, str] | None = None, encoder: Any = None,
+            early: TabletEvent | None = None) -> Iterator[tuple[EmulatedTablet, SerialSource]]:
+    """An emulated tablet (its encoder replaced by ``encoder``; ``early`` sent before the host
+    starts) answering from its thread, and our serial source opened on its pty."""
+    tablet = EmulatedTablet(protocol, options)
+    if encoder is not None:
+        tablet.encoder = encoder
+    if early is not None:
+        tablet.send(early)  # streaming before the host starts
     tablet.serve_in_background()
-    source = SerialSource(parse_source(f"serial:{tablet.slave_path}?protocol=wacom4"),
-                          sleep=lambda s: None)
     try:
+        source = SerialSource(parse_source(f"serial:{tablet.slave_path}?protocol={protocol}"),
+                              sleep=lambda s: None)
+        try:
+            yield tablet, source
+        finally:
+            source.close()
+    finally:
+        tablet.close()
+
+
+def test_wacom_source_identifies_the_emulated_tablet() -> None:
+    with _hosted("wacom4") as (tablet, source):
         texts = [r.text for r in source.replies]
         assert texts[0].startswith("~#UD") and texts[1].startswith("~R")
         assert source.model.max_x == 15240 and source.model.name == "Wacom UD"
@@ -108,39 +129,22 @@ def test_wacom_source_identifies_the_emulated_tablet() -> None:
         assert b"~#" in tablet.commands and b"ST" in tablet.commands  # setup string sent
         tablet.send(TabletEvent(100, 200, True, 1, 99))
         assert _collect(source, 1) == [TabletEvent(100, 200, True, 1, 99)]
-    finally:
-        source.close()
-        tablet.close()
 
 
 def test_wacom_tilt_tablet_switches_the_source_to_9_byte_packets() -> None:
-    tablet = EmulatedTablet("wacom4", {"tilt": "1"})
-    tablet.serve_in_background()
-    source = SerialSource(parse_source(f"serial:{tablet.slave_path}?protocol=wacom4"),
-                          sleep=lambda s: None)
-    try:
+    with _hosted("wacom4", {"tilt": "1"}) as (tablet, source):
         assert source.parser.tilt  # the ~R settings word has the tilt bit set
         event = TabletEvent(300, 400, True, 1, 10, -12, 34)
         tablet.send(event)
         assert _collect(source, 1) == [event]
-    finally:
-        source.close()
-        tablet.close()
 
 
 def test_summa_source_reads_the_size_from_the_config_report() -> None:
-    tablet = EmulatedTablet("summa-mm")
-    tablet.serve_in_background()
-    source = SerialSource(parse_source(f"serial:{tablet.slave_path}?protocol=summa-mm"),
-                          sleep=lambda s: None)
-    try:
+    with _hosted("summa-mm") as (tablet, source):
         assert (source.model.max_x, source.model.max_y) == (6000, 6000)
         assert _handled(tablet, b"F")
         assert tablet.commands[:3] == [b"\x00", b"B", b"0"] and b"zb" in tablet.commands
         assert tablet.commands.index(b"a") < tablet.commands.index(b"@")
-    finally:
-        source.close()
-        tablet.close()
 
 
 class _Streaming(summa.SummaEncoder):
@@ -154,18 +158,10 @@ class _Streaming(summa.SummaEncoder):
 
 
 def test_summa_size_is_not_taken_from_reports_already_streaming() -> None:
-    tablet = EmulatedTablet("summa-mm")
-    tablet.encoder = _Streaming()
-    tablet.serve_in_background()
-    source = SerialSource(parse_source(f"serial:{tablet.slave_path}?protocol=summa-mm"),
-                          sleep=lambda s: None)
-    try:
+    with _hosted("summa-mm", encoder=_Streaming()) as (tablet, source):
         assert (source.model.max_x, source.model.max_y) == (6000, 6000)
         assert not source.size_notes
         assert _handled(tablet, b"F") and tablet.streaming  # "@" after the size query
-    finally:
-        source.close()
-        tablet.close()
 
 
 class _StreamsRegardless(summa.SummaEncoder):
@@ -178,37 +174,22 @@ class _StreamsRegardless(summa.SummaEncoder):
 
 
 def test_implausible_size_reply_keeps_the_default_and_says_why() -> None:
-    tablet = EmulatedTablet("summa-mm")
-    tablet.encoder = _StreamsRegardless()
-    tablet.serve_in_background()
-    source = SerialSource(parse_source(f"serial:{tablet.slave_path}?protocol=summa-mm"),
-                          sleep=lambda s: None)
-    try:
+    with _hosted("summa-mm", encoder=_StreamsRegardless()) as (tablet, source):
         assert (source.model.max_x, source.model.max_y) == (6000, 6000)
         assert "2 reports" in source.size_notes[0] and "keeping 0..6000" in source.size_notes[0]
-    finally:
-        source.close()
-        tablet.close()
 
 
 def test_calcomp_start_up_sets_resolution_and_reads_the_size() -> None:
     from protocols.tablets.calcomp import CalcompEncoder
     from protocols.tablets.events import TabletModel
 
-    tablet = EmulatedTablet("calcomp")
-    tablet.encoder = CalcompEncoder(TabletModel("DrawingBoard II 12x18", 18000, 12000, 1000.0))
-    tablet.send(TabletEvent(50, 60, True, 1))  # streaming before the host starts
-    tablet.serve_in_background()
-    source = SerialSource(parse_source(f"serial:{tablet.slave_path}?protocol=calcomp"),
-                          sleep=lambda s: None)
-    try:
+    encoder = CalcompEncoder(TabletModel("DrawingBoard II 12x18", 18000, 12000, 1000.0))
+    with _hosted("calcomp", encoder=encoder, early=TabletEvent(50, 60, True, 1)) as (
+            tablet, source):
         assert _handled(tablet, b"IR")
         assert b"JR1000,0" in tablet.commands and b"VS" in tablet.commands
         assert (source.model.max_x, source.model.max_y) == (18000, 12000)
         assert tablet.streaming  # ESC%IR after the query
-    finally:
-        source.close()
-        tablet.close()
 
 
 # --- input layer ------------------------------------------------------------------------------
