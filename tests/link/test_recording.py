@@ -51,6 +51,17 @@ class HashingDevice:
         self.backlog = max(0, self.backlog - 5)  # "processing" 5 bytes per poll
 
 
+def polled_device(end, clock) -> HashingDevice:
+    """A fresh device polling ``end`` every 1/100 s for the session's 60 steps, ``clock``
+    moved to each poll's time first."""
+    device = HashingDevice()
+    for step in range(60):
+        now = Fraction(step, 100)
+        clock.advance_to(now)
+        device.poll(end, now)
+    return device
+
+
 def host_program(line: SerialLine, step: int) -> None:
     if step % 3 == 0:
         line.host.write(b"+-*/" + bytes(range(40, 40 + step % 50)) + b"?")
@@ -82,20 +93,12 @@ def test_record_then_replay_is_bit_identical(tmp_path: Path) -> None:
     # 1. the recording fed into a fresh line, with a fresh device answering live
     line2 = SerialLine()
     replay_into(rec, line2.host)
-    device2 = HashingDevice()
-    for step in range(60):
-        now = Fraction(step, 100)
-        line2.clock.advance_to(now)
-        device2.poll(line2.device, now)
+    device2 = polled_device(line2.device, line2.clock)
     assert device2.h.hexdigest() == original
 
     # 2. the recording as an endpoint the device reads directly
     end = ReplayEndpoint(rec, ">")
-    device3 = HashingDevice()
-    for step in range(60):
-        now = Fraction(step, 100)
-        end.clock.advance_to(now)
-        device3.poll(end, now)
+    device3 = polled_device(end, end.clock)
     assert device3.h.hexdigest() == original
     assert device3.runs == device2.runs  # even the grouping into runs is the same
 
@@ -110,12 +113,7 @@ def test_a_different_session_gives_a_different_hash(tmp_path: Path) -> None:
         rec.settings, [(e.t + CT, e.direction, e.data) for e in rec.exact_entries], rec.xonxoff
     )
     end = ReplayEndpoint(shifted, ">")
-    device = HashingDevice()
-    for step in range(60):
-        now = Fraction(step, 100)
-        end.clock.advance_to(now)
-        device.poll(end, now)
-    assert device.h.hexdigest() != original
+    assert polled_device(end, end.clock).h.hexdigest() != original
 
 
 def test_stream_and_round_trip_of_every_byte_value(tmp_path: Path) -> None:
