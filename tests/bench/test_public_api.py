@@ -3,14 +3,12 @@ These tests import nothing but ``camlab88``'s public names and the plugin's fixt
 
 from __future__ import annotations
 
-import subprocess
-import sys
-
 import numpy as np
 import pytest
 
 import camlab88
 from camlab88 import ProtocolError, Rainbow, Sigma, TraceEvent
+from tests.support.processes import fresh_python
 
 BOX = b"\r+-*/HI2GI200200GJ600200600400200400200200BH"
 
@@ -26,9 +24,7 @@ def test_all_names_exactly_the_public_api():
 def test_importing_camlab88_loads_no_device_code():
     code = ("import sys, camlab88; heavy = [m for m in ('numpy', 'emulator', 'numba') "
             "if m in sys.modules]; print(heavy)")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         check=True)
-    assert out.stdout.strip() == "[]"
+    assert fresh_python(code).strip() == "[]"
 
 
 def test_sigma_draws_what_it_is_sent_and_traces_every_order(sigma, assert_no_protocol_errors):

@@ -5,6 +5,8 @@ from __future__ import annotations
 from collections.abc import Iterator
 from contextlib import contextmanager
 
+from hypothesis import strategies as st
+
 from apps.ca import engine as engine_mod
 from apps.ca.engine import Engine
 from apps.ca.library import rules_path
@@ -20,6 +22,15 @@ def life(cells: str, x0: int = 100, y0: int = 100, **kw) -> Engine:
            for x, ch in enumerate(row.strip()) if ch == "O"]
     e.set_cells([p[0] for p in pts], [p[1] for p in pts], 1)
     return e
+
+
+def kernels_used(e: Engine, generations: int) -> set[str]:
+    """Step ``e`` ``generations`` times; the kernels (``Engine.last_kernel``) the steps took."""
+    used = set()
+    for _ in range(generations):
+        e.step()
+        used.add(e.last_kernel)
+    return used
 
 
 def cellset(e: Engine) -> set[tuple[int, int, int]]:
@@ -42,3 +53,22 @@ def engine_constants(**consts) -> Iterator[None]:
     finally:
         for k, v in saved.items():
             setattr(engine_mod, k, v)
+
+
+def interpretation_lines(forms: int, low: int = 0, top: int = 80, width: int = 60,
+                         bits: int = 8, prefix: str = "#B",
+                         random: bool = False) -> st.SearchStrategy[list[str]]:
+    """One to eight lines of a rule set's table after the '$', each giving a life-form (0 ..
+    ``forms``) to a neighbourhood value: one value (``low`` .. ``top``), a range ``R lo hi``
+    at most ``width`` wide, a bit pattern (``prefix`` then up to ``bits`` of 0, 1, ?) and, with
+    ``random``, a 50/50 choice between a form and the last form."""
+    form, value = st.integers(0, forms), st.integers(low, top)
+    exact = st.tuples(value, form).map(lambda t: f"{t[0]} {t[1]}")
+    span = st.tuples(value, st.integers(0, width), form).map(
+        lambda t: f"R {t[0]} {t[0] + t[1]} {t[2]}")
+    pattern = st.tuples(st.lists(st.sampled_from("01?"), min_size=1, max_size=bits), form).map(
+        lambda t: f"{prefix}{''.join(t[0])} {t[1]}")
+    kinds = [exact, span, pattern]
+    if random:
+        kinds.append(st.tuples(value, form).map(lambda t: f"{t[0]} 50% {t[1]} 50% {forms}"))
+    return st.lists(st.one_of(kinds), min_size=1, max_size=8)

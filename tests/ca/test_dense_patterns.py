@@ -4,9 +4,6 @@ engine started from a grid (direct and HashLife) — the same results as the cel
 from __future__ import annotations
 
 import json
-import os
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -19,6 +16,7 @@ from apps.ca.patterns import ORIENTATIONS, GridPattern, Pattern, PatternError, p
 from apps.ca.rle_body import SMALL_BODY, decode, decode_body, decode_compiled
 from camlab88.cli import main
 from tests.ca.helpers import LIFE
+from tests.support.processes import fresh_python
 
 
 def _fail(offset: int, message: str) -> PatternError:
@@ -166,8 +164,4 @@ def test_a_short_rle_is_read_without_loading_the_compiled_scanner() -> None:
             "from apps.ca.library import pattern_path; "
             "p = read_pattern(pattern_path('gosper_gun')); print(len(p.cell_set()), "
             "'apps.ca.rle_scan' in sys.modules)")
-    env = {**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parents[2])}
-    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                            timeout=120, env=env)
-    assert result.returncode == 0, result.stderr
-    assert result.stdout.split() == ["36", "False"]
+    assert fresh_python(code).split() == ["36", "False"]

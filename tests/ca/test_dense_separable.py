@@ -12,7 +12,7 @@ from apps.ca import tables as tables_mod
 from apps.ca.engine import Engine
 from apps.ca.rules import parse_rules
 from apps.ca.tables import compile_rules
-from tests.ca.helpers import engine_constants
+from tests.ca.helpers import engine_constants, interpretation_lines, kernels_used
 
 
 @st.composite
@@ -38,17 +38,7 @@ def commuting_rules(draw) -> str:
                 entries.append(".")
         text.append(f"{n} {r} {r} {r} {r} {' '.join(entries)}")
     text.append("$")
-    for _ in range(draw(st.integers(1, 8))):
-        form = draw(st.integers(0, forms))
-        kind = draw(st.sampled_from(["exact", "range", "pattern"]))
-        if kind == "exact":
-            text.append(f"{draw(st.integers(1, 40))} {form}")
-        elif kind == "range":
-            lo = draw(st.integers(1, 40))
-            text.append(f"R {lo} {lo + draw(st.integers(0, 20))} {form}")
-        else:
-            bits = "".join(draw(st.lists(st.sampled_from("01?"), min_size=1, max_size=6)))
-            text.append(f"#B1{bits} {form}")
+    text += draw(interpretation_lines(forms, low=1, top=40, width=20, bits=6, prefix="#B1"))
     return "\n".join(text)
 
 
@@ -57,11 +47,7 @@ def _run(rules_text: str, cells: np.ndarray, types: np.ndarray, edges: str, **co
         e = Engine(parse_rules(rules_text), edges=edges)
         ys, xs = cells
         e.set_cells(xs + 40, ys + 40, types)
-        used = set()
-        for _ in range(5):
-            e.step()
-            used.add(e.last_kernel)
-        return e, used
+        return e, kernels_used(e, 5)
 
 
 @settings(max_examples=30, deadline=None)

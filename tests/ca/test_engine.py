@@ -10,7 +10,7 @@ from apps.ca.engine import Engine, Rect
 from apps.ca.library import pattern_path
 from apps.ca.patterns import read_pattern
 from apps.ca.rules import parse_rules
-from tests.ca.helpers import LIFE, cellset, life, shifted
+from tests.ca.helpers import LIFE, cellset, kernels_used, life, shifted
 
 BLOCK = "OO\nOO"
 BEEHIVE = ".OO.\nO..O\n.OO."
@@ -264,11 +264,7 @@ def test_dense_fast_path_equals_general_kernels(rules_name: str, monkeypatch) ->
     def run() -> tuple[Engine, set]:
         e = Engine(rules)
         e.set_cells(xs + 5000, ys + 5000, ts)
-        kernels = set()
-        for _ in range(40):
-            e.step()
-            kernels.add(e.last_kernel)
-        return e, kernels
+        return e, kernels_used(e, 40)
 
     fast, used = run()
     assert "dense" in used

@@ -7,7 +7,7 @@ from hypothesis import strategies as st
 
 from apps.ca.engine import Engine
 from apps.ca.rules import parse_rules
-from tests.ca.helpers import engine_constants
+from tests.ca.helpers import engine_constants, interpretation_lines, kernels_used
 
 OPS = ["+", "|", "&", "^"]
 
@@ -29,19 +29,7 @@ def rule_sets(draw) -> str:
                 entries.append(f"{op}{val}")
         text.append(f"{n} {r} {r} {r} {r} {' '.join(entries)}")
     text.append("$")
-    for _ in range(draw(st.integers(1, 8))):
-        kind = draw(st.sampled_from(["exact", "range", "pattern", "random"]))
-        form = draw(st.integers(0, forms))
-        if kind == "exact":
-            text.append(f"{draw(st.integers(0, 80))} {form}")
-        elif kind == "range":
-            lo = draw(st.integers(0, 80))
-            text.append(f"R {lo} {lo + draw(st.integers(0, 60))} {form}")
-        elif kind == "pattern":
-            bits = "".join(draw(st.lists(st.sampled_from("01?"), min_size=1, max_size=8)))
-            text.append(f"#B{bits} {form}")
-        else:
-            text.append(f"{draw(st.integers(0, 80))} 50% {form} 50% {forms}")
+    text += draw(interpretation_lines(forms, random=True))
     return "\n".join(text)
 
 
@@ -60,11 +48,7 @@ def test_all_paths_agree(text: str, cells, edges: str, shift: int) -> None:
             # Across the plane's corner (wrapping and the bounded edge matter) or inside it.
             e.set_cells([(x + shift) % 65536 for x, _, _ in cells],
                         [(y + shift) % 65536 for _, y, _ in cells], [t for _, _, t in cells])
-            used = set()
-            for _ in range(6):
-                e.step()
-                used.add(e.last_kernel)
-            return e, used
+            return e, kernels_used(e, 6)
 
     hashed, _ = run(DENSE_MIN_FILL=0, WINDOW_MIN=0, WINDOW_CELLS_PER_SENDER=0)
     windowed, _ = run(DENSE_MIN_FILL=0, WINDOW_MIN=1 << 30, WINDOW_CELLS_PER_SENDER=1 << 20)

@@ -108,39 +108,35 @@ def test_rle_details() -> None:
     assert pos.ref == (2, 1)
 
 
-@pytest.mark.parametrize(("text", "line", "words"), [
-    ("", 1, "RLE header"),
-    ("#N x\nfoo\n", 2, "RLE header"),
-    ("x = 2, y = 1\n2o", 2, "'!'"),
-    ("x = 2, y = 1\n2z!", 2, "expected b, o"),
-    ("x = 2, y = 1\n02o!", 2, "leading zero"),
-    ("x = 2, y = 1\npZ!", 2, "expected A..X"),
-    ("x = 2, y = 1\n2 o!", 2, "cell symbol after the repeat count"),
-    ("x = 2, y = 1\nyX!", 2, "above 255"),
-    ("x = 2, y = 1\n999999999o!", 2, "wider or taller than the 65536-cell plane"),
-    ("x = 2, y = 1\n70000$o!", 2, "wider or taller"),
-])
-def test_rle_errors(text: str, line: int, words: str) -> None:
-    with pytest.raises(PatternError) as info:
-        parse_rle(text, "bad.rle")
-    assert info.value.line == line and words in str(info.value)
-    assert str(info.value).startswith(f"bad.rle:{line}:")
+READERS = {"rle": (parse_rle, "bad.rle"), "native": (parse_native, "bad.pat")}
 
 
-@pytest.mark.parametrize(("text", "line", "words"), [
-    ("", 1, "CAMLAB88-CA-PATTERN 1"),
-    ("CAMLAB88-CA-PATTERN 1\nbogus 1\n", 2, "expected name"),
-    ("CAMLAB88-CA-PATTERN 1\nref 1\ncells 0\nend\n", 2, "'ref x y'"),
-    ("CAMLAB88-CA-PATTERN 1\n", 1, "'cells n'"),
-    ("CAMLAB88-CA-PATTERN 1\ncells 2\n0 0 1\n", 3, "file ended early"),
-    ("CAMLAB88-CA-PATTERN 1\ncells 1\n0 0\nend\n", 3, "'x y life-form'"),
-    ("CAMLAB88-CA-PATTERN 1\ncells 1\n0 0 0\nend\n", 3, "1..65535"),
-    ("CAMLAB88-CA-PATTERN 1\ncells 1\n0 0 1\n", 4, "'end'"),
-])
-def test_native_errors(text: str, line: int, words: str) -> None:
+@pytest.mark.parametrize(("reader", "text", "line", "words"), [
+    ("rle", "", 1, "RLE header"),
+    ("rle", "#N x\nfoo\n", 2, "RLE header"),
+    ("rle", "x = 2, y = 1\n2o", 2, "'!'"),
+    ("rle", "x = 2, y = 1\n2z!", 2, "expected b, o"),
+    ("rle", "x = 2, y = 1\n02o!", 2, "leading zero"),
+    ("rle", "x = 2, y = 1\npZ!", 2, "expected A..X"),
+    ("rle", "x = 2, y = 1\n2 o!", 2, "cell symbol after the repeat count"),
+    ("rle", "x = 2, y = 1\nyX!", 2, "above 255"),
+    ("rle", "x = 2, y = 1\n999999999o!", 2, "wider or taller than the 65536-cell plane"),
+    ("rle", "x = 2, y = 1\n70000$o!", 2, "wider or taller"),
+    ("native", "", 1, "CAMLAB88-CA-PATTERN 1"),
+    ("native", "CAMLAB88-CA-PATTERN 1\nbogus 1\n", 2, "expected name"),
+    ("native", "CAMLAB88-CA-PATTERN 1\nref 1\ncells 0\nend\n", 2, "'ref x y'"),
+    ("native", "CAMLAB88-CA-PATTERN 1\n", 1, "'cells n'"),
+    ("native", "CAMLAB88-CA-PATTERN 1\ncells 2\n0 0 1\n", 3, "file ended early"),
+    ("native", "CAMLAB88-CA-PATTERN 1\ncells 1\n0 0\nend\n", 3, "'x y life-form'"),
+    ("native", "CAMLAB88-CA-PATTERN 1\ncells 1\n0 0 0\nend\n", 3, "1..65535"),
+    ("native", "CAMLAB88-CA-PATTERN 1\ncells 1\n0 0 1\n", 4, "'end'"),
+], ids=lambda v: v if isinstance(v, str) else f"line{v}")
+def test_errors_name_the_file_and_line(reader: str, text: str, line: int, words: str) -> None:
+    parse, name = READERS[reader]
     with pytest.raises(PatternError) as info:
-        parse_native(text, "bad.pat")
+        parse(text, name)
     assert info.value.line == line and words in str(info.value)
+    assert str(info.value).startswith(f"{name}:{line}:")
 
 
 def test_cells_errors_and_limits() -> None:

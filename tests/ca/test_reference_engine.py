@@ -12,7 +12,7 @@ from apps.ca import library
 from apps.ca.engine import Engine
 from apps.ca.patterns import read_pattern
 from apps.ca.reference_engine import ReferenceEngine
-from apps.ca.rules import load_rules, parse_rules
+from apps.ca.rules import RuleSet, load_rules, parse_rules
 from tests.ca.test_equivalence import rule_sets
 
 
@@ -20,20 +20,26 @@ def _fast_cells(e: Engine) -> list[tuple[int, int, int]]:
     return list(zip(e.ys.tolist(), e.xs.tolist(), e.ts.tolist(), strict=True))
 
 
-def _agree(rules_name: str, pattern: str, generations: int, x: int = 20000,
-           y: int = 20000) -> int:
-    """Run both engines from a library pattern; compare every generation; final population."""
-    rules = load_rules(library.rules_path(rules_name))
-    xs, ys, ts = read_pattern(library.pattern_path(pattern)).placed(x, y)
-    fast, ref = Engine(rules), ReferenceEngine(rules)
+def _in_step(rules: RuleSet, xs, ys, ts, generations: int, edges: str = "wrap") -> Engine:
+    """Start both engines from the same cells and compare them at the start and after every
+    generation; the fast engine at the end."""
+    fast, ref = Engine(rules, edges=edges), ReferenceEngine(rules, edges=edges)
     fast.set_cells(xs, ys, ts)
     ref.set_cells(xs, ys, ts)
     assert ref.cells() == _fast_cells(fast)
     for g in range(1, generations + 1):
         fast.step()
         ref.step()
-        assert ref.cells() == _fast_cells(fast), f"{pattern}: differ at generation {g}"
-    return fast.population
+        assert ref.cells() == _fast_cells(fast), f"differ at generation {g}"
+    return fast
+
+
+def _agree(rules_name: str, pattern: str, generations: int, x: int = 20000,
+           y: int = 20000) -> int:
+    """Run both engines from a library pattern; compare every generation; final population."""
+    rules = load_rules(library.rules_path(rules_name))
+    xs, ys, ts = read_pattern(library.pattern_path(pattern)).placed(x, y)
+    return _in_step(rules, xs, ys, ts, generations).population
 
 
 @pytest.mark.claim("§7.5: the engine keeps a linked list of rows with vectors of cells, a "
@@ -59,13 +65,7 @@ def test_overgrazing_on_a_larger_random_soup_agrees() -> None:
     rules = load_rules(library.rules_path("overgrazing"))
     rng = np.random.default_rng(2)
     xs, ys = rng.integers(0, 80, 1500) + 30000, rng.integers(0, 80, 1500) + 30000
-    fast, ref = Engine(rules), ReferenceEngine(rules)
-    fast.set_cells(xs, ys, 1)
-    ref.set_cells(xs, ys, [1] * 1500)
-    for _ in range(200):
-        fast.step()
-        ref.step()
-        assert ref.cells() == _fast_cells(fast)
+    fast = _in_step(rules, xs, ys, [1] * 1500, 200)
     assert 0 < fast.population < 100  # grazed out, a few survivors left cycling
 
 
@@ -117,13 +117,7 @@ def test_edges_agree(edges: str) -> None:
     xs = (rng.integers(0, 30, 300) + x0) % 65536
     ys = rng.integers(1 if edges == "wrap" else 0, 30, 300)
     ys += 5 if edges == "wrap" else 0
-    fast, ref = Engine(rules, edges=edges), ReferenceEngine(rules, edges=edges)
-    fast.set_cells(xs, ys, 1)
-    ref.set_cells(xs, ys, [1] * 300)
-    for _ in range(30):
-        fast.step()
-        ref.step()
-        assert ref.cells() == _fast_cells(fast)
+    _in_step(rules, xs, ys, [1] * 300, 30, edges=edges)
 
 
 def test_rows_across_the_wrapping_seam_are_refused() -> None:
@@ -141,10 +135,4 @@ def test_random_rule_sets_agree(text: str, cells) -> None:
     rules = parse_rules(text)
     top = max(rules.forms)
     cells = [(x + 1000, y + 1000, min(t, top)) for x, y, t in cells]
-    fast, ref = Engine(rules, edges="bounded"), ReferenceEngine(rules, edges="bounded")
-    fast.set_cells(*zip(*cells, strict=True))
-    ref.set_cells(*zip(*cells, strict=True))
-    for _ in range(5):
-        fast.step()
-        ref.step()
-        assert ref.cells() == _fast_cells(fast)
+    _in_step(rules, *zip(*cells, strict=True), 5, edges="bounded")

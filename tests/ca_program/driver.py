@@ -50,6 +50,17 @@ class Driver:
     def type(self, text: str) -> None:
         self.run(f"type {text}\nkey return\nframes 1")
 
+    def step(self, n: int = 1) -> None:
+        """Right-click the view ``n`` times: in step mode each click is one generation."""
+        self.run("click right 600 500\nframes 1\n" * n)
+
+    def place_pattern(self, name: str, cx: int, cy: int, orientation: str) -> None:
+        """Load pattern ``name`` and place it at cell (cx, cy) in ``orientation``."""
+        self.main("Load pattern")
+        self.type(name)
+        self.click_cell(cx, cy)
+        self.pick(orientation)
+
     def screen_of(self, cx: int, cy: int) -> tuple[int, int]:
         v = self.program.view
         sx, sy = v.screen_of_cell(cx, cy)

@@ -149,10 +149,7 @@ def test_load_pattern_orientation_copies_and_erase():
     d.leave_editing()
     gun = read_pattern(library.pattern_path("glider"))
     e = d.program.session.engine
-    d.main("Load pattern")
-    d.type("glider")
-    d.click_cell(CENTRE, CENTRE)
-    d.pick("rot90")
+    d.place_pattern("glider", CENTRE, CENTRE, "rot90")
     d.click_cell(CENTRE + 10, CENTRE)  # a second copy, same orientation
     e = d.program.session.engine
     for x0 in (CENTRE, CENTRE + 10):
@@ -191,7 +188,7 @@ def test_randomly_populate_statistics_and_modes():
     d.run("click right 600 500\nframes 1")  # dismisses the statistics
     ready = d.program.pending
     assert ready is not None and ready.generation == 1
-    d.run("click right 600 500\nframes 1")
+    d.step()
     assert d.program.session.generation == 1 and d.program.session.engine is ready
     d.main("Auto mode")
     g = d.program.session.generation
@@ -233,7 +230,7 @@ def test_clear_advance_area_and_alter_display():
     assert e.advance_area == Rect(CENTRE, CENTRE, CENTRE + 5, CENTRE + 5)
     outside = [(x, y, t) for x, y, t in zip(*e.cells()) if not (x <= CENTRE + 5
                                                                   and y <= CENTRE + 5)]
-    d.run("click right 600 500\nframes 1\nclick right 600 500\nframes 1")
+    d.step(2)
     e = d.program.session.engine
     assert e.generation == 2
     assert all(e.get(x, y) == t for x, y, t in outside)  # frozen outside
@@ -248,24 +245,27 @@ def test_clear_advance_area_and_alter_display():
     assert d.program.session.engine.population == 0 < n
 
 
+def _edit_step_and_load_a_glider(d: Driver, edit_at: int, steps: int, load_at: int,
+                                 orientation: str) -> None:
+    """A logged session's interventions: an edited cell, ``steps`` generations, a loaded glider."""
+    d.click_cell(CENTRE + edit_at, CENTRE + edit_at)
+    d.leave_editing()
+    d.step(steps)
+    d.place_pattern("glider", CENTRE + load_at, CENTRE + load_at, orientation)
+    d.run("key escape\nframes 1")
+
+
 @pytest.mark.parametrize("every", [0, 5])
 def test_log_replayed_as_script_reaches_the_same_generation(tmp_path, every):
     log_path = tmp_path / "session.log"
     d = Driver(Options(pattern="r_pentomino", log=str(log_path), record_pans=True,
                        checkpoint=every))
-    d.click_cell(CENTRE + 6, CENTRE + 6)
-    d.leave_editing()
-    d.run("click right 600 500\nframes 1\n" * 7)
-    d.main("Load pattern")
-    d.type("glider")
-    d.click_cell(CENTRE - 8, CENTRE - 8)
-    d.pick("flip_x")
-    d.run("key escape\nframes 1")
-    d.main("Display frequency" if False else "Alter display")
+    _edit_step_and_load_a_glider(d, edit_at=6, steps=7, load_at=-8, orientation="flip_x")
+    d.main("Alter display")
     d.pick("Display frequency")
     d.type("3")
     d.run("drag left 300 300 250 280 3\nframes 1")
-    d.run("click right 600 500\nframes 1\n" * 4)
+    d.step(4)
     e = d.program.session.engine
     assert e.generation == 7 + 12
     if every:
@@ -285,7 +285,7 @@ def test_log_replayed_as_script_reaches_the_same_generation(tmp_path, every):
     # a script begun earlier picks up the later interventions as its generations come
     r2 = Driver(Options(script=str(log_path), start=3))
     r2.leave_editing()
-    r2.run("click right 600 500\nframes 1\n" * (e.generation - 3))
+    r2.step(e.generation - 3)
     assert r2.program.session.engine.same_state(e)
 
 
@@ -322,7 +322,7 @@ def test_next_generation_is_recomputed_after_an_edit_and_grid_option():
     want = d.program.session.engine.copy()
     want.step()
     assert again is not first and again.same_state(want)
-    d.run("click right 600 500\nframes 1")
+    d.step()
     assert d.program.session.engine.same_state(want)
     # the grid: gap pixels white with the grid on, the dead colour with it off
     d.main("Alter display")
@@ -346,10 +346,7 @@ def test_save_pattern_then_load_it_back(tmp_path):
     assert saved.ref == (0, 0) and len(saved.xs) == 5
     d.main("Clear area")
     d.pick("Clear the entire grid")
-    d.main("Load pattern")
-    d.type(str(tmp_path / "mine.pat"))
-    d.click_cell(CENTRE, CENTRE)
-    d.pick("identity")
+    d.place_pattern(str(tmp_path / "mine.pat"), CENTRE, CENTRE, "identity")
     d.run("key escape\nframes 1")
     e = d.program.session.engine
     xs, ys, _ = e.cells()
@@ -406,7 +403,7 @@ def _probabilistic_session(tmp_path, **kw) -> Driver:
     d = Driver(Options(rules=str(rules), pattern="r_pentomino", log=str(tmp_path / "s.log"),
                        **kw))
     d.leave_editing()
-    d.run("click right 600 500\nframes 1\n" * 12)
+    d.step(12)
     assert d.program.session.generation == 12
     return d
 
@@ -434,15 +431,8 @@ def test_same_file_for_log_and_script_continues_the_history(tmp_path):
     replayed history; replaying the continued log reaches the continued state."""
     path = tmp_path / "s.log"
     d = Driver(Options(pattern="r_pentomino", log=str(path), checkpoint=5))
-    d.click_cell(CENTRE + 9, CENTRE + 9)
-    d.leave_editing()
-    d.run("click right 600 500\nframes 1\n" * 8)
-    d.main("Load pattern")
-    d.type("glider")
-    d.click_cell(CENTRE - 12, CENTRE - 12)
-    d.pick("identity")
-    d.run("key escape\nframes 1")
-    d.run("click right 600 500\nframes 1\n" * 4)
+    _edit_step_and_load_a_glider(d, edit_at=9, steps=8, load_at=-12, orientation="identity")
+    d.step(4)
     first = log.read_log(path)
     assert [ev.kind for ev in first] == ["rules", "load", "edit", "load"]
     assert (tmp_path / "s.log10").exists()
@@ -453,14 +443,14 @@ def test_same_file_for_log_and_script_continues_the_history(tmp_path):
     assert not (tmp_path / "s.log10").exists() and (tmp_path / "s.log10.superseded").exists()
     assert (tmp_path / "s.log5").exists()
     c.leave_editing()
-    c.run("click right 600 500\nframes 1\n" * 2)
+    c.step(2)
     c.click_cell(CENTRE + 20, CENTRE)  # step mode: not editing, so this steps again
     c.main("Clear area")
     c.pick("Clear a rectangle")
     a, b = c.screen_of(CENTRE - 3, CENTRE - 3), c.screen_of(CENTRE + 3, CENTRE + 3)
     c.run(f"move {a[0]} {a[1]}\nclick right {a[0]} {a[1]}\nmove {b[0]} {b[1]}\n"
           f"click right {b[0]} {b[1]}\nframes 1")
-    c.run("click right 600 500\nframes 1\n" * 6)
+    c.step(6)
     cont = c.program.session.engine
     assert cont.generation == 15
     events = log.read_log(path)

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from fractions import Fraction
-
 import numpy as np
 
 
@@ -49,30 +47,6 @@ class FakeWindow:
 
     def close(self) -> None:
         self.closed = True
-
-
-class Counter:
-    """A target counting ticks of 1/50 s: frame k is k in every pixel (25 fps shown)."""
-
-    title, keys, fps = "counter", "a: a key; b: another", 25
-
-    def __init__(self, n: int, size: tuple[int, int] = (4, 3)) -> None:
-        self.n, self.t, self.size = n, 0, size
-        self.got: list[object] = []
-
-    def handle_events(self, events: list) -> None:
-        self.got += events
-
-    def tick(self) -> bool:
-        self.t += 1
-        return self.t < self.n
-
-    def frame(self) -> np.ndarray:
-        w, h = self.size
-        return np.full((h, w, 3), self.t % 256, np.uint8)
-
-    def time(self) -> Fraction:
-        return Fraction(self.t, 50)
 
 
 def harness_with(target, window: FakeWindow | None, clock: FakeClock, **controls):

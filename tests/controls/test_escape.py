@@ -5,7 +5,8 @@ those programs leave on Esc too, asking y/n/Esc where there is unsaved work."""
 from __future__ import annotations
 
 from emulator.host_input import KeyDown, KeyUp, Quit
-from tests.controls.fakes import Counter, FakeClock, FakeWindow, harness_with
+from tests.controls.fakes import FakeClock, FakeWindow, harness_with
+from tests.support.targets import Counter
 
 
 def esc() -> list:

@@ -11,7 +11,8 @@ from PIL import Image
 
 from emulator.harness import Plugin
 from emulator.host_input import KeyDown, KeyUp, Quit
-from tests.controls.fakes import Counter, FakeClock, FakeWindow, harness_with
+from tests.controls.fakes import FakeClock, FakeWindow, harness_with
+from tests.support.targets import Counter
 
 
 def key(name: str) -> list:

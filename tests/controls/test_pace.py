@@ -6,7 +6,8 @@ from __future__ import annotations
 import pytest
 
 from emulator.harness.pace import Pacer
-from tests.controls.fakes import Counter, FakeClock, harness_with
+from tests.controls.fakes import FakeClock, harness_with
+from tests.support.targets import Counter
 
 
 @pytest.mark.parametrize("speed, wall", [(1.0, 1.98), (10.0, 0.198), (0.5, 3.96)])

@@ -4,25 +4,17 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from camlab88.cli import main
-from tests.support.readme import section_commands
+from tests.support.readme import run_as_printed, section_commands
 
 ROOT = Path(__file__).resolve().parents[2]
-
-
-def _commands() -> list[list[str]]:
-    return section_commands("Emulator controls")
 
 
 def test_the_controls_commands_run_as_printed(tmp_path: Path, monkeypatch, capsys) -> None:
     import imageio_ffmpeg
 
-    commands = _commands()
+    commands = section_commands("Emulator controls")
     assert [c[1] for c in commands] == ["sigma", "rainbow", "ca", "replay"]
-    (tmp_path / "examples").symlink_to(ROOT / "examples")
-    monkeypatch.chdir(tmp_path)
-    for words in commands:
-        assert main(words[1:]) == 0, words
+    run_as_printed(commands, tmp_path, monkeypatch)
     panels = sorted((tmp_path / "cameron_panels").iterdir())
     assert imageio_ffmpeg.count_frames_and_secs("cameron.mp4")[0] == len(panels) > 1
     assert (tmp_path / "scene_panel" / "frame_00000.png").is_file()

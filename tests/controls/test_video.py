@@ -8,7 +8,8 @@ import sys
 
 import pytest
 
-from tests.controls.fakes import Counter, FakeClock, harness_with
+from tests.controls.fakes import FakeClock, harness_with
+from tests.support.targets import Counter
 
 imageio_ffmpeg = pytest.importorskip("imageio_ffmpeg", reason="--video needs imageio-ffmpeg")
 

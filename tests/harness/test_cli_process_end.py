@@ -10,6 +10,7 @@ import sys
 from pathlib import Path
 
 from camlab88.cli import build_parser
+from tests.support.processes import fresh_python
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -55,11 +56,7 @@ def test_a_command_loads_only_its_own_area() -> None:
     code = (f"import sys; from camlab88.cli import main; main({words!r}); "
             "print(sorted(m for m in sys.modules if m.startswith('camlab88.commands.')"
             " and m.count('.') == 2))")
-    env = {**os.environ, "PYTHONPATH": str(ROOT)}
-    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                            timeout=120, env=env, cwd=ROOT)
-    assert result.returncode == 0, result.stderr
-    assert result.stdout.splitlines()[-1] == "['camlab88.commands.ca']"
+    assert fresh_python(code, cwd=ROOT).splitlines()[-1] == "['camlab88.commands.ca']"
 
 
 def test_the_area_parser_and_the_whole_parser() -> None:

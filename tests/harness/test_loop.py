@@ -3,39 +3,13 @@
 from __future__ import annotations
 
 import argparse
-from fractions import Fraction
 
 import numpy as np
 import pytest
 
 from emulator.harness import DisplayRefused, Plugin, RunOptions, choose_headless, run
 from emulator.host_input import KeyDown, Quit
-
-
-class Counter:
-    """A target counting to ``n``: frame k is k in every pixel; two ticks a frame."""
-
-    title, keys, size, fps = "test", "none", (4, 3), 25
-
-    def __init__(self, n: int, closable: bool = True) -> None:
-        self.n, self.t, self.closable = n, 0, closable
-        self.got: list[object] = []
-
-    def handle_events(self, events: list) -> None:
-        self.got += events
-
-    def tick(self) -> bool:
-        self.t += 1
-        return self.t < self.n
-
-    def frame(self) -> np.ndarray:
-        return np.full((3, 4, 3), self.t, np.uint8)
-
-    def time(self) -> Fraction:
-        return Fraction(self.t, 50)
-
-    def may_close(self) -> bool:
-        return self.closable
+from tests.support.targets import Counter
 
 
 class Log(Plugin):

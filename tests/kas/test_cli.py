@@ -10,6 +10,7 @@ from apps.kas import demo, files
 from apps.kas.events import Key, MenuPick, Pointer, parse_script
 from apps.kas.files import KasFileError
 from camlab88.cli import main
+from tests.support.refusals import refusal_of
 
 
 def test_pipeline(tmp_path, capsys):
@@ -92,10 +93,7 @@ def test_library_and_demo_commands(tmp_path, capsys):
 @settings(max_examples=60, deadline=None)
 @given(st.text(max_size=120))
 def test_script_parser_only_raises_named_errors(text):
-    try:
-        parse_script(text, "s.txt")
-    except KasFileError as exc:
-        assert str(exc).startswith("s.txt:")
+    refusal_of(parse_script, text, "s.txt", KasFileError)
 
 
 def test_path_script(tmp_path):

@@ -182,13 +182,20 @@ def test_move_back_unwinds_a_composite():
     assert np.allclose(ed.drawing.chains[0].points, ORIGINAL[0])
 
 
-def test_move_back_unwinds_repeats_too():
-    # "enlarge, again, rotate, again": four transformations applied, so four move backs
-    # undo them, rotations first - never the inverse of something not applied.
+def _enlarged_twice_then_turned_twice(about: tuple[float, float], degrees: str) -> Editor:
+    """The first chain selected: enlarged x2 about (1, 0), again; turned ``degrees`` about
+    ``about``, again - four transformations applied."""
     ed = start()
     select(ed, 0, 2)
     ed.run(keys("z") + tap(1, 0) + typed("2") + keys("a"))
-    ed.run(keys("t") + tap(0, 0) + typed("90") + keys("a"))
+    ed.run(keys("t") + tap(*about) + typed(degrees) + keys("a"))
+    return ed
+
+
+def test_move_back_unwinds_repeats_too():
+    # four transformations applied, so four move backs undo them, rotations first - never
+    # the inverse of something not applied.
+    ed = _enlarged_twice_then_turned_twice((0, 0), "90")
     ed.run(keys("b", "b"))  # both rotations undone: back to the twice-enlarged chain
     assert np.allclose(ed.drawing.chains[0].points, [[-3, 0], [1, 0], [5, 0]])
     ed.run(keys("b", "b"))
@@ -200,10 +207,7 @@ def test_move_back_unwinds_repeats_too():
 def test_composite_replayed_elsewhere_with_the_remembered_parameters():
     from apps.kas import editor_commands as ops
 
-    ed = start()
-    select(ed, 0, 2)
-    ed.run(keys("z") + tap(1, 0) + typed("2") + keys("a"))
-    ed.run(keys("t") + tap(0, 3) + typed("30") + keys("a"))
+    ed = _enlarged_twice_then_turned_twice((0, 3), "30")
     ed.run(keys("m") + tap(0, 0) + tap(0.5, -0.25))
     # now on the third chain: Return at every prompt takes the remembered origin, factor,
     # angle and (from a new starting touch) the same move vector

@@ -8,15 +8,26 @@ from apps.kas import files
 from apps.kas.inbetween import inbetween
 from apps.kas.library import LIBRARY
 from apps.kas.model import AnimSequence, Chain, Drawing
-from apps.kas.paint.ops import OpsFile
-from apps.kas.paint.program import PaintProgram
+from apps.kas.paint.ops import Op, OpsFile
+from apps.kas.paint.program import Line, PaintProgram
+from emulator.harness.sigma_batch import link
 from emulator.sigma import Terminal
+
+# the walk's body (line-chain 2) filled in colour 3, its head (line-chain 1) in colour 5
+WALK_FILLS = (Op("fill", 3, chains=(2,)), Op("fill", 5, chains=(1,)))
 
 
 def terminal_for(program: PaintProgram) -> Terminal:
     t = Terminal("t5688")
     t.feed(program.setup())
     return t
+
+
+def t5688_line() -> tuple[Line, Terminal]:
+    """The painting program's line to a fresh T5688 (no XON/XOFF: the orders are binary), and
+    the terminal at its far end."""
+    paint = link("t5688", xonxoff=False)
+    return Line(paint), paint.machine.terminal
 
 
 def one_frame(*chains: np.ndarray) -> AnimSequence:

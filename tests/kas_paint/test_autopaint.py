@@ -11,20 +11,17 @@ import pytest
 from apps.kas.model import AnimSequence, Chain, Drawing
 from apps.kas.paint import areas, shape, vector
 from apps.kas.paint.ops import Op, OpsFile
-from apps.kas.paint.program import Line, PaintProgram
+from apps.kas.paint.program import PaintProgram
 from apps.kas.paint.replay import replay
 from tests.kas_paint import oracle
-from tests.kas_paint.helpers import sun, walk
+from tests.kas_paint.helpers import sun, t5688_line, walk
 
 WALK_OPS = [Op("fill", 3, chains=(2,), line_no=10), Op("fill", 5, chains=(1,), line_no=11),
             Op("line", 8, chains=(1,), line_no=12)]
 
 
 def _paint(seq: AnimSequence, ops: OpsFile) -> tuple[list[np.ndarray], object]:
-    from emulator.harness.sigma_batch import link
-
-    paint = link("t5688", xonxoff=False)
-    term = paint.machine.terminal
+    line, term = t5688_line()
     got: list[np.ndarray] = []
     prog = PaintProgram(seq, ops)
 
@@ -33,7 +30,7 @@ def _paint(seq: AnimSequence, ops: OpsFile) -> tuple[list[np.ndarray], object]:
         assert term.reg.view == areas.BUFFERS[(n - 1) % 2].view
         got.append(term.planes[y0:y1 + 1, x0:x1 + 1].copy())
 
-    rep = replay(prog, Line(paint), on_shown=shown)
+    rep = replay(prog, line, on_shown=shown)
     return got, rep
 
 

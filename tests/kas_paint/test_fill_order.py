@@ -12,9 +12,9 @@ from apps.kas.model import AnimSequence, Chain, Drawing
 from apps.kas.paint import areas
 from apps.kas.paint.ops import Op, OpsFile
 from apps.kas.paint.planes import FILL_MASK, OUTLINE_MASK
-from apps.kas.paint.program import Line, PaintProgram
+from apps.kas.paint.program import PaintProgram
 from apps.kas.paint.session import PaintSession
-from emulator.harness.sigma_batch import link
+from tests.kas_paint.helpers import t5688_line
 from tests.kas_paint.test_golden import FIG_OPS, figure_38
 
 HAT = 4  # FIG_OPS fills the hat (chains 5 and 6) in colour 4
@@ -35,13 +35,12 @@ def _head_vertices(seq: AnimSequence) -> tuple[np.ndarray, np.ndarray]:
 
 def _painted_whole(seq: AnimSequence, ops: list[Op]) -> np.ndarray:
     prog = PaintProgram(seq, OpsFile(ops=ops))
-    paint = link("t5688", xonxoff=False)
-    line = Line(paint)
+    line, term = t5688_line()
     line.send(prog.setup())
     data, plan = prog.frame(1)
     assert plan.failures == []
     line.send(data + prog.show(areas.PAINTING.view))
-    return paint.machine.terminal.indices()  # row 0 = bottom: device y
+    return term.indices()  # row 0 = bottom: device y
 
 
 def test_later_fill_hides_earlier_outline_in_a_whole_frame() -> None:
@@ -87,8 +86,7 @@ def test_a_fill_in_colour_0_hides_no_outline() -> None:
 def test_interactive_fill_hides_the_outline_it_covers() -> None:
     seq = figure_38()
     s = PaintSession(seq, OpsFile())
-    paint = link("t5688", xonxoff=False)
-    line = Line(paint)
+    line, term = t5688_line()
     line.send(s.start())
     for colour, chains in ((10, [(0, -2.5)]), (HAT, [(0, 3.0), (-2.1, 1.0)])):
         s.program.current = colour
@@ -96,7 +94,7 @@ def test_interactive_fill_hides_the_outline_it_covers() -> None:
             line.send(s.select_near(x, y))
         line.send(s.fill())
     line.send(s.show("painting"))
-    screen = paint.machine.terminal.indices()  # row 0 = bottom: device y
+    screen = term.indices()  # row 0 = bottom: device y
     under_hat, below = _head_vertices(seq)
     assert np.all(_at(screen, under_hat) & OUTLINE_MASK == 0)
     assert np.all(_at(screen, under_hat) & FILL_MASK == HAT)

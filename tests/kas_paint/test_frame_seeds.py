@@ -15,11 +15,10 @@ from hypothesis import strategies as st
 from apps.kas.model import AnimSequence, Chain, Drawing
 from apps.kas.paint import areas, opsfile
 from apps.kas.paint.ops import Op, OpsFile, Seeds
-from apps.kas.paint.program import Line, PaintProgram
+from apps.kas.paint.program import PaintProgram
 from apps.kas.paint.replay import replay
 from apps.kas.paint.session import PaintSession
-from emulator.harness.sigma_batch import link
-from tests.kas_paint.helpers import walk
+from tests.kas_paint.helpers import WALK_FILLS, t5688_line, walk
 
 # a figure-eight (two lobes, left and right of the origin), drawn in two frames
 EIGHT_PTS = [(-2, -1), (2, 1), (2, -1), (-2, 1)]
@@ -28,14 +27,13 @@ EIGHT_OPS = [Op("fill", 3, chains=(1,))]
 
 
 def _colours(seq: AnimSequence, ops: OpsFile) -> tuple[list[np.ndarray], object]:
-    paint, got = link("t5688", xonxoff=False), []
-    term = paint.machine.terminal
+    (line, term), got = t5688_line(), []
 
     def shown(n: int, _t: float) -> None:
         x0, y0, x1, y1 = areas.BUFFERS[(n - 1) % 2].box()
         got.append(term.planes[y0:y1 + 1, x0:x1 + 1] & 0x1F)
 
-    rep = replay(PaintProgram(seq, ops), Line(paint), on_shown=shown)
+    rep = replay(PaintProgram(seq, ops), line, on_shown=shown)
     return got, rep
 
 
@@ -51,10 +49,26 @@ def _recorded(seq: AnimSequence, ops: OpsFile) -> str:
     return opsfile.ops_text(s.ops)
 
 
+def _two_eights() -> AnimSequence:
+    return AnimSequence([Drawing([EIGHT]), Drawing([EIGHT])])
+
+
+def _two_eights_recorded() -> str:
+    """The eight in two frames, its fill painted in the first and auto-painted in the second."""
+    return _recorded(_two_eights(), OpsFile(ops=list(EIGHT_OPS), painted=1))
+
+
+def _second_frames_seeds_edited(start: str, name: str) -> tuple[OpsFile, int]:
+    """The two eights' recording, its second frame's seeds line begun ``start`` instead of
+    ``seeds fill 1 at``, read as file ``name``; and that line's number."""
+    text = _two_eights_recorded().replace("seeds fill 1 at", start, 1)
+    f = opsfile.parse(text, name)
+    return f, next(r.line_no for r in f.frame_seeds[2])
+
+
 def test_autopaint_records_every_frames_seeds_and_replay_uses_them() -> None:
     seq = walk(6)
-    ops = OpsFile(ops=[Op("fill", 3, chains=(2,)), Op("fill", 5, chains=(1,)),
-                       Op("line", 8, chains=(1,))], painted=3)
+    ops = OpsFile(ops=[*WALK_FILLS, Op("line", 8, chains=(1,))], painted=3)
     text = _recorded(seq, ops)
     back = opsfile.parse(text, "w.ops")
     opsfile.check(back, seq)
@@ -94,12 +108,8 @@ def test_a_frames_seed_removed_by_hand_fills_one_lobe_in_that_frame_only() -> No
 
 
 def test_a_seed_outside_the_shape_is_listed_and_nothing_leaks() -> None:
-    seq = AnimSequence([Drawing([EIGHT]), Drawing([EIGHT])])
-    text = _recorded(seq, OpsFile(ops=list(EIGHT_OPS), painted=1))
-    text = text.replace("seeds fill 1 at", "seeds fill 1 at 4.5 3.0", 1)
-    f = opsfile.parse(text, "o.ops")
-    line = next(r.line_no for r in f.frame_seeds[2])
-    got, rep = _colours(seq, f)
+    f, line = _second_frames_seeds_edited("seeds fill 1 at 4.5 3.0", "o.ops")
+    got, rep = _colours(_two_eights(), f)
     assert [(x.frame, x.line) for x in rep.failures] == [(2, f.ops[0].line_no)]
     assert f"recorded at line {line} is not inside" in rep.failures[0].reason
     assert np.sum(got[1] == 3) == 0          # the bad frame's fill is not done at all
@@ -107,14 +117,10 @@ def test_a_seed_outside_the_shape_is_listed_and_nothing_leaks() -> None:
 
 
 def test_seeds_for_no_sequence_operation_refused_with_line_and_column() -> None:
-    seq = AnimSequence([Drawing([EIGHT]), Drawing([EIGHT])])
-    text = _recorded(seq, OpsFile(ops=list(EIGHT_OPS), painted=1))
-    bad = text.replace("seeds fill 1 at", "seeds fill 2 at", 1)
-    f = opsfile.parse(bad, "s.ops")
-    line = next(r.line_no for r in f.frame_seeds[2])
+    f, line = _second_frames_seeds_edited("seeds fill 2 at", "s.ops")
     with pytest.raises(opsfile.OpsFileError, match=rf"^s\.ops:{line}:7: seeds for 'fill 2' "
                                                    r"but no such sequence operation"):
-        opsfile.check(f, seq)
+        opsfile.check(f, _two_eights())
 
 
 @pytest.mark.parametrize(("line", "col", "msg"), [
@@ -122,9 +128,7 @@ def test_seeds_for_no_sequence_operation_refused_with_line_and_column() -> None:
     ("frame 2 ops 0 seed 1", 1, "expected 'frame N ops K \\[seeds M\\]'"),
 ])
 def test_bad_frame_headers(line: str, col: int, msg: str) -> None:
-    seq = AnimSequence([Drawing([EIGHT]), Drawing([EIGHT])])
-    text = _recorded(seq, OpsFile(ops=list(EIGHT_OPS), painted=1))
-    text = text.replace("frame 2 ops 0 seeds 1", line)
+    text = _two_eights_recorded().replace("frame 2 ops 0 seeds 1", line)
     n = text.splitlines().index(line) + 1
     with pytest.raises(opsfile.OpsFileError, match=rf"^h\.ops:{n}:{col}: {msg}"):
         opsfile.parse(text, "h.ops")
@@ -137,8 +141,7 @@ def test_bad_frame_headers(line: str, col: int, msg: str) -> None:
     ("seeds fill at 0 0", "'seeds fill' names at least one line-chain"),
 ])
 def test_bad_seeds_lines(tail: str, msg: str) -> None:
-    seq = AnimSequence([Drawing([EIGHT]), Drawing([EIGHT])])
-    lines = _recorded(seq, OpsFile(ops=list(EIGHT_OPS), painted=1)).splitlines()
+    lines = _two_eights_recorded().splitlines()
     i = next(k for k, ln in enumerate(lines) if ln.startswith("seeds fill 1 at"))
     lines[i] = tail
     with pytest.raises(opsfile.OpsFileError, match=rf"^b\.ops:{i + 1}:\d+: {msg}"):
@@ -146,8 +149,7 @@ def test_bad_seeds_lines(tail: str, msg: str) -> None:
 
 
 def test_truncated_seeds_section_noticed() -> None:
-    seq = AnimSequence([Drawing([EIGHT]), Drawing([EIGHT])])
-    text = _recorded(seq, OpsFile(ops=list(EIGHT_OPS), painted=1))
+    text = _two_eights_recorded()
     cut = text[:text.index("seeds fill 1 at")]
     with pytest.raises(opsfile.OpsFileError, match="file ends before a 'seeds' line"):
         opsfile.parse(cut, "t.ops")

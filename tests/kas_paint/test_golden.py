@@ -11,10 +11,9 @@ import pytest
 from apps.kas.model import AnimSequence, Chain, Drawing
 from apps.kas.paint import areas
 from apps.kas.paint.ops import Op, OpsFile
-from apps.kas.paint.program import Line, PaintProgram
+from apps.kas.paint.program import PaintProgram
 from apps.kas.paint.replay import replay
-from emulator.harness.sigma_batch import link
-from tests.kas_paint.helpers import walk
+from tests.kas_paint.helpers import WALK_FILLS, t5688_line, walk
 from tests.support.golden import assert_matches_golden
 
 DATA = Path(__file__).parents[1] / "data" / "kas_paint"
@@ -48,10 +47,8 @@ FIG_OPS = [Op("fill", 10, chains=(1,)), Op("fill", 1, chains=(2,)), Op("fill", 1
             "outline under it as §3.3's fill order says (the drawing is ours; the figure's "
             "artwork is not reproduced)")
 def test_figure_38_painted_outline_image() -> None:
-    paint = link("t5688", xonxoff=False)
-    term = paint.machine.terminal
+    line, term = t5688_line()
     prog = PaintProgram(figure_38(), OpsFile(ops=FIG_OPS))
-    line = Line(paint)
     line.send(prog.setup())
     data, plan = prog.frame(1)
     assert plan.failures == []
@@ -66,11 +63,9 @@ def test_figure_38_painted_outline_image() -> None:
     verdict="agrees")
 def test_four_working_areas_quarter_size() -> None:
     seq = walk(4)
-    ops = OpsFile(ops=[Op("fill", 3, chains=(2,)), Op("fill", 5, chains=(1,))], painted=2)
-    paint = link("t5688", xonxoff=False)
-    term = paint.machine.terminal
+    ops = OpsFile(ops=list(WALK_FILLS), painted=2)
+    line, term = t5688_line()
     prog = PaintProgram(seq, ops)
-    line = Line(paint)
     replay(prog, line, frames=range(1, 3))           # the two double buffers
     line.send(prog.frame(3)[0] + prog.mixing_area() + prog.show(areas.PREVIEW))
     assert_matches_golden(term.frame(), DATA / "four_areas.png")

@@ -7,10 +7,9 @@ import numpy as np
 import pytest
 
 from apps.kas.paint import planes
-from apps.kas.paint.ops import Op, OpsFile
-from apps.kas.paint.program import HIGHLIGHT_RGB, Line, PaintProgram
-from emulator.harness.sigma_batch import link
-from tests.kas_paint.helpers import walk
+from apps.kas.paint.ops import OpsFile
+from apps.kas.paint.program import HIGHLIGHT_RGB, PaintProgram
+from tests.kas_paint.helpers import WALK_FILLS, t5688_line, walk
 
 
 @pytest.mark.claim(
@@ -19,11 +18,8 @@ from tests.kas_paint.helpers import walk
     measured="the T5688's planes before and after select and clear: only plane 7 changes",
     verdict="agrees")
 def test_select_and_clear_touch_only_the_highlight_plane() -> None:
-    seq = walk(5)
-    prog = PaintProgram(seq, OpsFile(ops=[Op("fill", 3, chains=(2,)), Op("fill", 5, chains=(1,))]))
-    paint = link("t5688", xonxoff=False)
-    term = paint.machine.terminal
-    line = Line(paint)
+    prog = PaintProgram(walk(5), OpsFile(ops=list(WALK_FILLS)))
+    line, term = t5688_line()
     line.send(prog.setup())
     data, _ = prog.frame(3)
     line.send(data)

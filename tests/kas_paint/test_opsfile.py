@@ -11,9 +11,8 @@ from hypothesis import strategies as st
 from apps.kas.paint import opsfile
 from apps.kas.paint.ops import Op, OpsFile
 from apps.kas.paint.palette import Palette
-from apps.kas.paint.program import Line, PaintProgram
-from emulator.harness.sigma_batch import link
-from tests.kas_paint.helpers import one_frame
+from apps.kas.paint.program import PaintProgram
+from tests.kas_paint.helpers import one_frame, t5688_line
 
 TEXT = """KAS paint 1
 # two overlapping squares
@@ -91,10 +90,8 @@ def _centre_colour(text: str) -> int:
     seq = one_frame(*_squares())
     f = opsfile.parse(text, "x.ops")
     opsfile.check(f, seq)
-    paint = link("t5688", xonxoff=False)
-    term = paint.machine.terminal
+    line, term = t5688_line()
     prog = PaintProgram(seq, f)
-    line = Line(paint)
     line.send(prog.setup())
     line.send(prog.frame(1)[0] + prog.show(1))
     # the squares overlap around (0, 0): which is in front?

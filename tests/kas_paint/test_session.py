@@ -8,10 +8,8 @@ import pytest
 
 from apps.kas.paint import areas, opsfile, script
 from apps.kas.paint.ops import OpsFile
-from apps.kas.paint.program import Line
 from apps.kas.paint.session import PaintSession
-from emulator.harness.sigma_batch import link
-from tests.kas_paint.helpers import walk
+from tests.kas_paint.helpers import t5688_line, walk
 
 SCRIPT = """colour 3
 select {cx} {cy}
@@ -30,9 +28,7 @@ def test_scripted_session_records_and_paints() -> None:
     text = SCRIPT.format(cx=ring.points[0][0], cy=ring.points[0][1],
                          wx=wander.points[5][0], wy=wander.points[5][1])
     s = PaintSession(seq, OpsFile(painted=4))
-    paint = link("t5688", xonxoff=False)
-    term = paint.machine.terminal
-    line = Line(paint)
+    line, term = t5688_line()
     line.send(s.start())
     for cmd in script.parse(text, "s.paint"):
         line.send(script.run(s, cmd))
@@ -46,10 +42,8 @@ def test_scripted_session_records_and_paints() -> None:
     assert term.reg.view == 4
     # the recorded file paints the same frame the same way from scratch
     again = opsfile.parse(opsfile.ops_text(s.ops))
-    paint2 = link("t5688", xonxoff=False)
-    t2 = paint2.machine.terminal
-    s2 = PaintSession(seq, again)
-    Line(paint2).send(s2.start())
+    line2, t2 = t5688_line()
+    line2.send(PaintSession(seq, again).start())
     assert np.array_equal(t2.planes[y0:y1 + 1, x0:x1 + 1] & 0x1F, fill)
     assert s.autopaint() == []
 

@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 
 from emulator.machine import MachineStateError, RainbowMachine, SigmaMachine
 from emulator.machine.state_file import MAGIC
+from tests.support.processes import fresh_python
 
 PICTURE = (b"\r+-*/HI2GI200200GJ600200600400200400200200BHtext\r\n+-*/JH 6s0\x1fGIKQ1"
            b"HI5GI150150GJFHBG300300BH")
@@ -120,10 +121,6 @@ print(hashlib.sha256(m.frame().tobytes()).hexdigest(), m.clock.exact, m.host.rea
 
 def test_a_sigma_state_continues_identically_in_a_fresh_process(tmp_path):
     import hashlib
-    import os
-    import subprocess
-    import sys
-    from pathlib import Path
 
     m = SigmaMachine()
     m.host.write(PICTURE)
@@ -135,7 +132,4 @@ def test_a_sigma_state_continues_identically_in_a_fresh_process(tmp_path):
     m.run_until(2)
     want = f"{hashlib.sha256(m.frame().tobytes()).hexdigest()} {m.clock.exact} " \
            f"{m.host.read().hex()}"
-    env = dict(os.environ, PYTHONPATH=str(Path(__file__).resolve().parents[2]))
-    got = subprocess.run([sys.executable, "-c", CONTINUE, str(path)], capture_output=True,
-                         text=True, check=True, env=env).stdout.strip()
-    assert got == want
+    assert fresh_python(CONTINUE, str(path)).strip() == want

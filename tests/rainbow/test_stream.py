@@ -4,7 +4,6 @@ replay."""
 from __future__ import annotations
 
 import struct
-import threading
 
 import numpy as np
 import pytest
@@ -13,12 +12,12 @@ from hypothesis import strategies as st
 
 from emulator.rainbow import Rainbow, VideoMemory
 from emulator.rainbow.executor import Executor
-from emulator.rainbow.server import listen, serve
 from emulator.rainbow.session import in_process, replay_on
 from protocols.rainbow import MouseEvent, RainbowClient, RainbowRefused, SocketTransport
 from protocols.rainbow.events import KeyEvent, TabletEvent, decode_events, encode_event
 from protocols.rainbow.recording import Recording
 from protocols.rainbow.stream import OPS_LIST, Decoder, StreamError, encode
+from tests.support.rainbow_server import serving
 
 
 def test_every_op_round_trips_through_the_decoder() -> None:
@@ -98,10 +97,7 @@ def test_refusals_carry_the_reason() -> None:
 
 def test_socket_transport_drives_the_same_device() -> None:
     device = Rainbow()
-    sock = listen(0)
-    port = sock.getsockname()[1]
-    t = threading.Thread(target=serve, args=(Executor(device), sock, 1), daemon=True)
-    t.start()
+    port, t, _ = serving(1, device)
     c = RainbowClient(SocketTransport(port))
     try:
         p = c.create_pad(64, 32, 4, lut_page=1)
@@ -117,7 +113,6 @@ def test_socket_transport_drives_the_same_device() -> None:
     finally:
         c.close()
         t.join(5)
-        sock.close()
     assert (device.peek()[20:52, 10:74] == [255, 0, 0]).all()
 
 
@@ -185,10 +180,7 @@ def test_socket_garbage_gets_a_reason_then_the_next_client_is_served() -> None:
     import socket
 
     device = Rainbow()
-    sock = listen(0)
-    port = sock.getsockname()[1]
-    t = threading.Thread(target=serve, args=(Executor(device), sock, 2), daemon=True)
-    t.start()
+    port, t, _ = serving(2, device)
     try:
         with socket.create_connection(("127.0.0.1", port), timeout=5) as raw:
             raw.sendall(encode("create_cluster", 5, 10, 10) + b"\xfe\x00\x00\x00\x00")
@@ -207,6 +199,5 @@ def test_socket_garbage_gets_a_reason_then_the_next_client_is_served() -> None:
         c.close()
     finally:
         t.join(5)
-        sock.close()
     # each connection is its own pad-library session: the first client's cluster 5 is gone
     assert set(device.graph.nodes) == {0, 6}

@@ -16,21 +16,6 @@ import pytest
 OLD = b"the user's old file\n"
 
 
-def _mount(where: Path, options: str) -> None:
-    where.mkdir(parents=True, exist_ok=True)
-    if os.geteuid() != 0:
-        pytest.skip(f"a tmpfs cannot be mounted at {where}: mounting needs root (CI runs as "
-                    "root)")
-    done = subprocess.run(["mount", "-t", "tmpfs", "-o", options, "tmpfs", str(where)],
-                          capture_output=True, text=True, timeout=30, check=False)
-    if done.returncode != 0:
-        pytest.skip(f"a tmpfs cannot be mounted at {where}: {done.stderr.strip()}")
-
-
-def _umount(where: Path) -> None:
-    subprocess.run(["umount", "-l", str(where)], capture_output=True, timeout=30, check=False)
-
-
 def fill(folder: Path) -> None:
     """Use every free block of ``folder``'s filesystem."""
     with open(folder / "filler", "wb", buffering=0) as fh:
@@ -41,27 +26,38 @@ def fill(folder: Path) -> None:
 
 
 @contextlib.contextmanager
-def full_disk(base: Path, old: dict[str, bytes] | None = None) -> Iterator[Path]:
-    """A 256 KiB tmpfs holding the files ``old`` (name: bytes), then filled."""
-    where = base / "full"
-    _mount(where, "size=256k,mode=0777")
+def _tmpfs(where: Path, old: dict[str, bytes] | None) -> Iterator[Path]:
+    """A 256 KiB tmpfs mounted at ``where`` holding the files ``old`` (name: bytes), unmounted
+    when the block ends; the test is skipped, saying why, where it cannot be mounted."""
+    where.mkdir(parents=True, exist_ok=True)
+    if os.geteuid() != 0:
+        pytest.skip(f"a tmpfs cannot be mounted at {where}: mounting needs root (CI runs as "
+                    "root)")
+    done = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=256k,mode=0777", "tmpfs",
+                           str(where)], capture_output=True, text=True, timeout=30, check=False)
+    if done.returncode != 0:
+        pytest.skip(f"a tmpfs cannot be mounted at {where}: {done.stderr.strip()}")
     try:
         for name, data in (old or {}).items():
             (where / name).write_bytes(data)
-        fill(where)
         yield where
     finally:
-        _umount(where)
+        subprocess.run(["umount", "-l", str(where)], capture_output=True, timeout=30,
+                       check=False)
+
+
+@contextlib.contextmanager
+def full_disk(base: Path, old: dict[str, bytes] | None = None) -> Iterator[Path]:
+    """A 256 KiB tmpfs holding the files ``old`` (name: bytes), then filled."""
+    with _tmpfs(base / "full", old) as where:
+        fill(where)
+        yield where
 
 
 @contextlib.contextmanager
 def read_only(base: Path, old: dict[str, bytes] | None = None) -> Iterator[Path]:
     """A tmpfs holding the files ``old`` (name: bytes), remounted read-only."""
-    where = base / "ro"
-    _mount(where, "size=256k,mode=0777")
-    try:
-        for name, data in (old or {}).items():
-            (where / name).write_bytes(data)
+    with _tmpfs(base / "ro", old) as where:
         done = subprocess.run(["mount", "-o", "remount,ro", str(where)], capture_output=True,
                               text=True, timeout=30, check=False)
         if done.returncode != 0:
@@ -70,5 +66,3 @@ def read_only(base: Path, old: dict[str, bytes] | None = None) -> Iterator[Path]
             (where / "probe").write_bytes(b"x")
         assert caught.value.errno == errno.EROFS
         yield where
-    finally:
-        _umount(where)

@@ -8,20 +8,17 @@ from __future__ import annotations
 import random
 import socket
 import struct
-import threading
 import time
 from fractions import Fraction
 
 import pytest
 
-from emulator.rainbow import Rainbow
-from emulator.rainbow.executor import Executor
-from emulator.rainbow.server import ServerStats, listen, serve
 from protocols.link import LineSettings, SerialLine
 from protocols.link.transports import TcpBridge
 from protocols.rainbow import RainbowClient, SocketTransport
 from protocols.rainbow.stream import encode
 from tests.support.listeners import drain, echo_step
+from tests.support.rainbow_server import serving
 
 ROUNDS = 12
 
@@ -106,19 +103,7 @@ def _attack_rainbow(rng: random.Random, port: int) -> None:
 def test_rainbow_serve_serves_each_honest_program_fresh_after_random_attackers(
         seed: int) -> None:
     rng = random.Random(seed)
-    sock = listen(0)
-    port = sock.getsockname()[1]
-    stats: list[ServerStats] = []
-
-    def run() -> None:
-        try:
-            stats.append(serve(Executor(Rainbow()), sock, 2 * ROUNDS, frame_timeout=0.5,
-                               poll=0.02))
-        finally:
-            sock.close()
-
-    t = threading.Thread(target=run, daemon=True)
-    t.start()
+    port, t, stats = serving(2 * ROUNDS, frame_timeout=0.5, poll=0.02)
     for r in range(ROUNDS):
         _attack_rainbow(rng, port)
         began = time.monotonic()

@@ -6,35 +6,16 @@ not. Servers the tests start on 127.0.0.1 ports they open; every wait bounded.""
 from __future__ import annotations
 
 import socket
-import threading
 import time
 from fractions import Fraction
 
 from emulator.harness.sigma_line import SigmaLineTarget
 from emulator.machine import SigmaMachine
-from emulator.rainbow import Rainbow
-from emulator.rainbow.executor import Executor
-from emulator.rainbow.server import ServerStats, listen, serve
 from protocols.link import LineSettings, SerialLine
 from protocols.link.transports import TcpBridge
 from protocols.rainbow.stream import encode
 from tests.support.listeners import port_of, start, stop
-
-
-def _rainbow(frame_timeout: float) -> tuple[int, threading.Thread, list[ServerStats]]:
-    sock = listen(0)
-    out: list[ServerStats] = []
-
-    def run() -> None:
-        try:
-            out.append(serve(Executor(Rainbow()), sock, 1, frame_timeout=frame_timeout,
-                             poll=0.05))
-        finally:
-            sock.close()
-
-    t = threading.Thread(target=run, daemon=True)
-    t.start()
-    return sock.getsockname()[1], t, out
+from tests.support.rainbow_server import serving
 
 
 def _closed(s: socket.socket) -> bool:
@@ -47,7 +28,7 @@ def _closed(s: socket.socket) -> bool:
 
 
 def test_a_rainbow_frame_sent_a_byte_at_a_time_times_out_by_its_age() -> None:
-    port, t, stats = _rainbow(frame_timeout=1.5)
+    port, t, stats = serving(1, frame_timeout=1.5, poll=0.05)
     frame = encode("create_cluster", 5, 10, 10)  # 20 bytes: 12 s at a byte every 0.6 s
     with socket.create_connection(("127.0.0.1", port), timeout=5) as s:
         s.setblocking(False)

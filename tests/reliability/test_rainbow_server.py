@@ -8,27 +8,14 @@ import socket
 import struct
 import threading
 
-from emulator.rainbow import Rainbow
-from emulator.rainbow.executor import Executor
-from emulator.rainbow.server import BUSY, ServerStats, listen, serve
+from emulator.rainbow.server import BUSY, ServerStats
 from protocols.rainbow import RainbowClient, SocketTransport
 from protocols.rainbow.stream import HEADER, REFUSED, encode
+from tests.support.rainbow_server import serving
 
 
 def _start(connections: int, **kw: float) -> tuple[int, threading.Thread, list[ServerStats]]:
-    sock = listen(0)
-    port = sock.getsockname()[1]
-    out: list[ServerStats] = []
-
-    def run() -> None:
-        try:
-            out.append(serve(Executor(Rainbow()), sock, connections, poll=0.05, **kw))
-        finally:
-            sock.close()
-
-    t = threading.Thread(target=run, daemon=True)
-    t.start()
-    return port, t, out
+    return serving(connections, poll=0.05, **kw)
 
 
 def _reply(raw: socket.socket) -> tuple[int, bytes]:

@@ -2,8 +2,12 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from apps.snooker.program import script_events
 from apps.snooker.program.program import Program
+from apps.snooker.session import Session
+from apps.snooker.table import CUE
 
 
 def feed(rb, program: Program, text: str) -> None:
@@ -21,3 +25,13 @@ def screen_colour(rb, x: int, y: int) -> tuple[int, int, int]:
 
 def hex_rgb(c: str) -> tuple[int, int, int]:
     return (int(c[1:3], 16), int(c[3:5], 16), int(c[5:7], 16))
+
+
+def saved_game(path: Path, angle_deg: float) -> Session:
+    """A new game, the cue ball struck at 1 m/s ``angle_deg`` degrees from up the table and
+    run until every ball is at rest, saved to ``path``."""
+    s = Session.new_game()
+    s.strike(CUE, 1.0, angle_deg)
+    s.simulate_to_rest()
+    s.save(path)
+    return s

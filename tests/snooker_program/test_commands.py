@@ -12,7 +12,7 @@ from apps.snooker.program import pads
 from apps.snooker.session import Session
 from apps.snooker.table import CUE
 from camlab88.cli import main
-from tests.snooker_program.helpers import hex_rgb
+from tests.snooker_program.helpers import hex_rgb, saved_game
 
 
 def test_play_headless_with_events_screenshot_and_exit_save(tmp_path, capsys):
@@ -39,11 +39,8 @@ def test_play_headless_with_events_screenshot_and_exit_save(tmp_path, capsys):
 
 
 def test_play_restores_a_session(tmp_path, capsys):
-    s = Session.new_game()
-    s.strike(CUE, 1.0, 0.0)
-    s.simulate_to_rest()
     path = tmp_path / "g.json"
-    s.save(path)
+    s = saved_game(path, 0.0)
     events = tmp_path / "r.events"
     events.write_text("key r\nwait 2\n")
     assert main(["snooker", "play", str(path), "--headless", "--events", str(events)]) == 0

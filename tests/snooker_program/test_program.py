@@ -12,7 +12,7 @@ from apps.snooker.program import menus, pads
 from apps.snooker.program.program import MAGNIFY, WARN_COLOUR, Program
 from apps.snooker.session import Session
 from apps.snooker.table import BLUE, CUE
-from tests.snooker_program.helpers import feed, hex_rgb, screen_colour
+from tests.snooker_program.helpers import feed, hex_rgb, saved_game, screen_colour
 
 CUE_AT = (175, 325)  # the cue ball's pixel in the opening position
 EMPTY = (300, 420)  # cloth, no ball
@@ -148,11 +148,8 @@ def test_alter_frame_auto_repeat_and_units(rainbow, prog):
 
 
 def test_start_new_or_restore_and_exit_saves(rainbow, tmp_path):
-    saved = Session.new_game()
-    saved.strike(CUE, 1.0, 45.0)
-    saved.simulate_to_rest()
     path = tmp_path / "game.json"
-    saved.save(path)
+    saved = saved_game(path, 45.0)
     p = Program(rainbow.client, restore=Session.load(path), save_to=path)
     feed(rainbow, p, "key x\nwait 1")
     assert p.mode == "start"

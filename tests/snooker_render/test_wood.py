@@ -20,18 +20,26 @@ LIGHTS = Lights(np.array([[0.9, 0.4, 1.0], [-0.9, -0.4, 1.0]]),
                 np.array([[0.3, 0.3, 0.3], [0.5, 0.4, 0.3]]), np.full(3, 0.2))
 
 
-def _rail() -> object:
-    return next(f for f in table_faces(Table()) if f.name == "baulk rail")
+def _rail_from_beyond_baulk(focal: float) -> tuple[object, Pinhole, np.ndarray]:
+    """The baulk rail, a 160x120 camera beyond baulk looking at it through a ``focal`` mm
+    lens, and the rail's wood parameters with the grain off (Phong alone)."""
+    face = next(f for f in table_faces(Table()) if f.name == "baulk rail")
+    pin = Pinhole.of(np.array([-2.6, 0.3, 0.5]), face.centre, focal, 160, 120)
+    plain = wood_params(face)
+    plain[W_CONTRAST] = 0.0
+    return face, pin, plain
+
+
+def _shade(pin: Pinhole, params: np.ndarray, x: float, y: float) -> np.ndarray:
+    """The wood kernel's colour at pixel (x, y) under LIGHTS."""
+    lights = np.hstack([LIGHTS.positions, LIGHTS.colours])
+    return K.wood_shade(camera_params(pin), params, lights, LIGHTS.ambient, x, y)
 
 
 def test_phong_on_the_rail_with_per_pixel_directions() -> None:
-    face = _rail()
-    pin = Pinhole.of(np.array([-2.6, 0.3, 0.5]), face.centre, 50.0, 160, 120)
-    p = wood_params(face)
-    p[W_CONTRAST] = 0.0  # the grain off: Phong alone
-    lights = np.hstack([LIGHTS.positions, LIGHTS.colours])
+    face, pin, p = _rail_from_beyond_baulk(50.0)
     for x, y in ((80.5, 60.5), (70.5, 61.5), (95.5, 58.5)):
-        got = K.wood_shade(camera_params(pin), p, lights, LIGHTS.ambient, x, y)
+        got = _shade(pin, p, x, y)
         d = pin.rays(np.array(x), np.array(y))
         t = ((face.vertices[0] - pin.observer) @ face.normal) / (d @ face.normal)
         point = pin.observer + t * d
@@ -54,29 +62,17 @@ def test_phong_on_the_rail_with_per_pixel_directions() -> None:
     measured="the shading across one rail with per-pixel light and eye directions",
     verdict="agrees (wood texture and Phong on the wood were never done in 1987; they are here)")
 def test_the_light_and_eye_directions_change_across_the_rail() -> None:
-    face = _rail()
-    pin = Pinhole.of(np.array([-2.6, 0.3, 0.5]), face.centre, 50.0, 160, 120)
-    p = wood_params(face)
-    p[W_CONTRAST] = 0.0
-    lights = np.hstack([LIGHTS.positions, LIGHTS.colours])
-    a = K.wood_shade(camera_params(pin), p, lights, LIGHTS.ambient, 40.5, 60.5)
-    b = K.wood_shade(camera_params(pin), p, lights, LIGHTS.ambient, 120.5, 60.5)
-    assert not np.allclose(a, b)  # constant normal, yet not constant shading
+    _, pin, p = _rail_from_beyond_baulk(50.0)
+    # constant normal, yet not constant shading
+    assert not np.allclose(_shade(pin, p, 40.5, 60.5), _shade(pin, p, 120.5, 60.5))
 
 
 def _grain_amplitude(focal: float) -> float:
     """How far the grain moves the rail's colour along a row of pixels at this zoom."""
-    face = _rail()
-    pin = Pinhole.of(np.array([-2.6, 0.3, 0.5]), face.centre, focal, 160, 120)
-    lights = np.hstack([LIGHTS.positions, LIGHTS.colours])
-    plain = wood_params(face)
-    plain[W_CONTRAST] = 0.0
-    out = []
-    for x in np.arange(20.5, 140.5):
-        with_grain = K.wood_shade(camera_params(pin), wood_params(face), lights,
-                                  LIGHTS.ambient, x, 60.5)
-        out.append(with_grain[0] / K.wood_shade(camera_params(pin), plain, lights,
-                                                LIGHTS.ambient, x, 60.5)[0])
+    face, pin, plain = _rail_from_beyond_baulk(focal)
+    grain = wood_params(face)
+    out = [_shade(pin, grain, x, 60.5)[0] / _shade(pin, plain, x, 60.5)[0]
+           for x in np.arange(20.5, 140.5)]
     return float(np.max(np.abs(np.array(out) - 1.0)))
 
 

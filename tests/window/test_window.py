@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import subprocess
-import sys
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -12,6 +10,7 @@ import pytest
 from PIL import Image
 
 from emulator.host_input import KeyDown, KeyUp, PointerButton, PointerMove, Quit
+from tests.support.processes import fresh_python
 
 
 @pytest.fixture()
@@ -28,8 +27,7 @@ def test_importing_the_emulator_does_not_import_pygame() -> None:
         "import sys, emulator, emulator.window, emulator.host_input\n"
         "print('pygame' in sys.modules)"
     )
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
-    assert out.stdout.strip() == "False"
+    assert fresh_python(code).strip() == "False"
 
 
 def test_frame_is_shown_scaled_and_the_screenshot_matches(window, tmp_path: Path) -> None:
