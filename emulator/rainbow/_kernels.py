@@ -19,7 +19,7 @@ from base.lazy_kernels import LazyKernels
 def _announce() -> None:
     from base.kernel_notice import announce_compiles
 
-    announce_compiles("Rainbow", 9.0, __name__,  # cold compile time, measured
+    announce_compiles("Rainbow", 4.0, __name__,  # cold compile time, measured
                       completion="emulator.rainbow.kernel_warmup:compile_kernels")
 
 
