@@ -82,3 +82,21 @@ def test_the_sigma_streams_share_one_compile(tmp_path: Path) -> None:
                             env=env, capture_output=True, text=True, timeout=300)
     assert second.returncode == 0, second.stderr
     assert "compiling" not in second.stderr
+
+
+def test_the_rainbow_group_compiles_whole(tmp_path: Path) -> None:
+    """A program that only compiles band structures (no frame shown) leaves the video
+    processor's scan-out compiled too: the next program's frame compiles nothing."""
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"), PYTHONPATH=str(ROOT))
+    device = ("from emulator.rainbow import Rainbow\n"
+              "r = Rainbow(); p = r.create_pad(20, 20, 1); r.map(r.screen, p, 5, 5)\n")
+    first = subprocess.run([sys.executable, "-c", COUNT_COMPILES + device + "r.bands()\n"],
+                           env=env, capture_output=True, text=True, timeout=300)
+    assert first.returncode == 0, first.stderr
+    notices = first.stderr.splitlines()
+    assert len(notices) == 1 and notices[0].startswith("camlab88: compiling Rainbow kernels")
+    assert "compiled scanout" in first.stdout.splitlines()  # by the completion, at exit
+    second = subprocess.run([sys.executable, "-c", COUNT_COMPILES + device + "r.frame()\n"],
+                            env=env, capture_output=True, text=True, timeout=300)
+    assert second.returncode == 0, second.stderr
+    assert second.stdout == "" and second.stderr == ""

@@ -19,7 +19,8 @@ from base.lazy_kernels import LazyKernels
 def _announce() -> None:
     from base.kernel_notice import announce_compiles
 
-    announce_compiles("Rainbow", 9.0, __name__)  # cold compile time, measured
+    announce_compiles("Rainbow", 4.0, __name__,  # cold compile time, measured
+                      completion="emulator.rainbow.kernel_warmup:compile_kernels")
 
 
 _kernels = LazyKernels(globals(), _announce)
@@ -32,13 +33,54 @@ I_Y0, I_Y1, I_X0, I_X1, I_OX, I_OY, I_RANK, I_PAD, I_MX, I_MY, I_PLANE, I_DEPTH,
 INSTANCE_COLUMNS = 13
 
 
+# Cold-compile cost matters here (every Rainbow command's first run compiles this module):
+# the loops below stand in for numpy calls numba compiles slowly. A slice assignment
+# (``b[:n] = a``) drags in its broadcast check's error-message formatting, ~3.5 s of
+# compile; np.unique drags in numba's generic quicksort, ~1.5 s (docs/perf/startup.md).
 @_kernel
 def _grow(a, need):
     if need <= a.shape[0]:
         return a
     b = np.empty((max(need, 2 * a.shape[0]), a.shape[1]), a.dtype)
-    b[: a.shape[0]] = a
+    for i in range(a.shape[0]):
+        for c in range(a.shape[1]):
+            b[i, c] = a[i, c]
     return b
+
+
+@_kernel
+def _unique(a):
+    """np.unique of a 1-D array (sorted distinct values), sorting ``a`` in place (heapsort)."""
+    n = a.shape[0]
+    end = n
+    start = n // 2
+    while end > 1:
+        if start > 0:
+            start -= 1  # building the heap
+        else:
+            end -= 1  # taking its greatest to the end
+            tmp = a[0]
+            a[0] = a[end]
+            a[end] = tmp
+        root = start
+        while True:
+            child = 2 * root + 1
+            if child >= end:
+                break
+            if child + 1 < end and a[child] < a[child + 1]:
+                child += 1
+            if a[root] >= a[child]:
+                break
+            tmp = a[root]
+            a[root] = a[child]
+            a[child] = tmp
+            root = child
+    m = 0
+    for p in range(n):
+        if m == 0 or a[p] != a[m - 1]:
+            a[m] = a[p]
+            m += 1
+    return a[:m]
 
 
 @_kernel
@@ -92,7 +134,7 @@ def compile_rows(ya, yb, width, inst):
         ye[k] = min(max(inst[i, I_Y0], ya), yb)
         ye[k + 1] = min(max(inst[i, I_Y1], ya), yb)
         k += 2
-    ye = np.unique(ye)
+    ye = _unique(ye)
 
     bands = np.empty((16, 4), np.int64)
     spans = np.empty((64, 5), np.int64)
@@ -118,7 +160,7 @@ def compile_rows(ya, yb, width, inst):
         for j in range(na):
             xe[2 + 2 * j] = inst[active[j], I_X0]
             xe[3 + 2 * j] = inst[active[j], I_X1]
-        xe = np.unique(xe)
+        xe = _unique(xe)
         band_s0 = nsp
         band_r0 = nsr
         for g in range(xe.shape[0] - 1):
