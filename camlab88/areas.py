@@ -1,16 +1,18 @@
 """How a command area registers its actions: one module per action, named in a tuple.
 
 ``camlab88/commands/<area>/__init__.py`` lists ``ACTIONS = ("play", "simulate", ...)``; each
-``camlab88/commands/<area>/<action>.py`` defines ``register(actions)``, which adds its parser
-to the area's subparsers and sets ``handler``.  Adding an action is one new module and one
-name in the tuple; action modules never import each other (import-linter checks it).
+action's parser is its entry in ``camlab88/commands/<area>/commands.toml`` (built by
+camlab88.commandspec), and ``camlab88/commands/<area>/<action>.py`` holds its handler.  Adding
+an action is one new module, one entry and one name in the tuple; action modules never import
+each other (import-linter checks it).
 """
 
 from __future__ import annotations
 
 import argparse
-import importlib
 from collections.abc import Sequence
+
+from camlab88.commandspec import add_command
 
 
 def register_area(subparsers: argparse._SubParsersAction, package: str, name: str,
@@ -20,7 +22,7 @@ def register_area(subparsers: argparse._SubParsersAction, package: str, name: st
     parser = subparsers.add_parser(name, help=help, description=description or help)
     sub = parser.add_subparsers(dest=f"{name}_action", metavar="ACTION")
     for action in actions:
-        importlib.import_module(f"{package}.{action}").register(sub)
+        add_command(sub, f"{package}.{action}")
     parser.set_defaults(handler=lambda args: _no_action(parser))
     return parser
 

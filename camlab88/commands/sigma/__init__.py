@@ -8,6 +8,7 @@ from camlab88.areas import register_area
 
 HELP = "the Sigma T5684/T5688 terminals"
 ACTIONS = ("render", "run")
+MODELS = ("t5684", "t5688")  # the --model choices of both actions
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:

@@ -7,23 +7,11 @@ from __future__ import annotations
 import argparse
 import sys
 
-from camlab88.runopts import add_run_options, fail, run_options
+from camlab88.commandspec import keys_of
+from camlab88.runopts import fail, run_options
 
 COMMAND = "camlab88 snooker visualise"
-KEYS = ("space play/pause, left/right step, page up/down 25 frames, home/end, "
-        "drag with the left button to scrub, escape quits")
-
-
-def register(actions: argparse._SubParsersAction) -> None:
-    s = actions.add_parser(
-        "visualise", help="the perspective view of every frame on the Rainbow (§6.3.2)",
-        description="Play a view file (from 'snooker ccl') over a checkpoint or session on "
-        f"the emulated Rainbow at 25 frames/s. Keys: {KEYS}. Headless it plays every frame "
-        "once; --frames DIR writes DIR/frame_NNNNN.png numbered as the checkpoint's frames.")
-    s.add_argument("motion", metavar="CHECKPOINT|SESSION")
-    s.add_argument("views", metavar="VIEWS", help="the view file")
-    add_run_options(s)
-    s.set_defaults(handler=visualise)
+KEYS = keys_of(__name__)
 
 
 def visualise(args: argparse.Namespace) -> int:

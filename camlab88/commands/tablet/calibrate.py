@@ -6,21 +6,9 @@ import argparse
 import sys
 import time
 
-from camlab88.commands.tablet import add_source_argument
-
 # the scripted stroke of an emulated ?drive=demo tablet: a tap near each corner
 TAPS = ([(0.1, 0.1, 0)] * 3 + [(0.1, 0.1, 1)] * 3 + [(0.1, 0.1, 0)] * 3
         + [(0.9, 0.9, 0)] * 3 + [(0.9, 0.9, 1)] * 3 + [(0.9, 0.9, 0)] * 3)
-
-
-def register(actions: argparse._SubParsersAction) -> None:
-    s = actions.add_parser("calibrate", help="touch two corners; saved per device",
-                           description="Touch the top-left then the bottom-right corner of "
-                           "the working area. Saved under $CAMLAB88_CONFIG_DIR (else "
-                           "~/.config/camlab88)/calibration.json.")
-    add_source_argument(s)
-    s.add_argument("--seconds", type=float, default=120.0, help="give up after S seconds")
-    s.set_defaults(handler=calibrate)
 
 
 def calibrate(args: argparse.Namespace) -> int:
