@@ -39,3 +39,17 @@ def test_every_area_lists_its_actions_one_module_each() -> None:
             module = importlib.import_module(f"camlab88.commands.{area}.{action}")
             handler = area_spec(area)[action]["handler"]
             assert callable(getattr(module, handler)), (area, action, handler)
+
+
+def test_action_modules_hold_no_parser_prose() -> None:
+    """An action's parser and its prose are its entry in the area's commands.toml
+    (camlab88/commandspec.py), not add_parser/add_argument calls in its module."""
+    found = []
+    for path in sorted((ROOT / "commands").glob("*/*.py")):
+        if path.name == "__init__.py":  # an area's own option helpers live there
+            continue
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+                    and node.func.attr in ("add_parser", "add_argument")):
+                found.append(f"{path.relative_to(ROOT.parent)}:{node.lineno}")
+    assert not found, "move these into commands.toml:\n" + "\n".join(found)
