@@ -12,14 +12,17 @@ from __future__ import annotations
 import argparse
 from collections.abc import Sequence
 
-from camlab88.commandspec import add_command
+from camlab88.commandspec import add_command, area_spec
 
 
-def register_area(subparsers: argparse._SubParsersAction, package: str, name: str,
-                  help: str, actions: Sequence[str],
-                  description: str | None = None) -> argparse.ArgumentParser:
-    """Add area ``name`` with its ``actions`` (modules of ``package``) to ``subparsers``."""
-    parser = subparsers.add_parser(name, help=help, description=description or help)
+def register_area(subparsers: argparse._SubParsersAction, package: str,
+                  actions: Sequence[str]) -> argparse.ArgumentParser:
+    """Add the area of `package` (``camlab88.commands.ca`` -> ``ca``), its help and
+    description from the top of its commands.toml, with its `actions`."""
+    name = package.rsplit(".", 1)[1]
+    spec = area_spec(name)
+    parser = subparsers.add_parser(name, help=spec["help"],
+                                   description=spec.get("description", spec["help"]))
     sub = parser.add_subparsers(dest=f"{name}_action", metavar="ACTION")
     for action in actions:
         add_command(sub, f"{package}.{action}")

@@ -1,7 +1,8 @@
 """Every command's parser built from data: what a user reads lives once, as prose.
 
-Each area keeps ``camlab88/commands/<area>/commands.toml``: a table per action module (an
-area that is one command, ``demo``, ``replay`` ..., a table named after itself) with ``help``,
+Each area keeps ``camlab88/commands/<area>/commands.toml``: the area's own ``help`` and
+``description`` (camlab88.areas), then a table per action module (an area that is one
+command, ``demo``, ``replay`` ..., a table named after itself) with ``help``,
 ``description``, ``epilog``, ``keys`` (the window's key legend), ``name`` (when the command's
 name is not the module's), ``defaults`` (more ``set_defaults``) and an ordered
 ``[[<action>.args]]`` list. An argument is ``name`` (a positional) or ``flags`` (``"--x"`` or

@@ -12,16 +12,12 @@ from pathlib import Path
 
 from camlab88.areas import register_area
 
-HELP = "KAS, the keyframe animation suite (chapter 3)"
 ACTIONS = ("inbetween", "superimpose", "plot", "export", "schedule", "edit_script",
            "path_script", "edit", "path", "view", "demo", "library", "paint")
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
-    register_area(subparsers, __name__, "kas", HELP, ACTIONS,
-                  "KAS: keyframe editor model, in-betweener, superimposer, viewer schedule "
-                  "and hard copy (thesis ch. 3). File names may be library names (see "
-                  "'kas library').")
+    register_area(subparsers, __name__, ACTIONS)
 
 
 def front_options(p: argparse.ArgumentParser) -> None:
