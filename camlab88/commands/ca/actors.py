@@ -70,6 +70,7 @@ def _cell_types(rules: str) -> list:
 
 def _run(path: str, types: list, rules: str, player, opts, tablet):
     from apps.actors.editor.program import ActorEditor
+    from camlab88.runopts import unattended
     from emulator.harness import run
     from emulator.harness.rainbow import RainbowTarget
     from emulator.rainbow.session import in_process
@@ -84,8 +85,8 @@ def _run(path: str, types: list, rules: str, player, opts, tablet):
         editor.frame()
         return not editor.finished
 
-    end_with_script = opts.headless or opts.screenshot is not None
-    target = RainbowTarget(session, step, "camlab88 ca actors", KEYS, player, end_with_script)
+    target = RainbowTarget(session, step, "camlab88 ca actors", KEYS, player,
+                           unattended(opts))
     target.may_close = editor.may_close
     target.tablet = tablet
     run(target, opts)

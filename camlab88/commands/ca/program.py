@@ -6,7 +6,7 @@ import argparse
 import sys
 
 from camlab88.commandspec import keys_of
-from camlab88.runopts import fail
+from camlab88.runopts import fail, unattended
 from camlab88.scriptopts import events_player, scripted_run_options
 
 COMMAND = "camlab88 ca program"
@@ -96,8 +96,7 @@ def _run(options, player, opts) -> dict:
         prog.frame()
         return not prog.finished
 
-    end_with_script = opts.headless or opts.screenshot is not None
-    target = RainbowTarget(session, step, "camlab88 ca", KEYS, player, end_with_script)
+    target = RainbowTarget(session, step, "camlab88 ca", KEYS, player, unattended(opts))
     target.escape_is_a_key = True  # Esc closes a question, or finishes when none is open
     run(target, opts)
     return prog.session.statistics()

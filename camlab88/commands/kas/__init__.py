@@ -55,6 +55,7 @@ def run_front(front, args: argparse.Namespace, command: str, keys: str,
     from apps.kas.program.keyboard import KEY_BYTES, key_to_bytes
     from apps.kas.program.layout import TABLET_AREA
     from apps.kas.program.script import Session
+    from camlab88.runopts import unattended
     from emulator.harness import run
     from emulator.harness.sigma import SigmaProgramTarget, SigmaSessionRun
     from emulator.machine import SigmaMachine
@@ -70,10 +71,9 @@ def run_front(front, args: argparse.Namespace, command: str, keys: str,
         opts.live = True
     machine = SigmaMachine("t5684", LineSettings(baud=args.baud))
     session = Session(front, machine.host, pointer=tablet)
-    end = opts.headless or opts.screenshot is not None
     ran = SigmaSessionRun(machine, session, key_to_bytes)
     target = SigmaProgramTarget(ran, f"{command} - Sigma T5684", keys, frozenset(KEY_BYTES),
-                                events, end)
+                                events, unattended(opts))
     try:
         run(target, opts)
     finally:

@@ -7,7 +7,7 @@ import time
 from dataclasses import replace
 from typing import Any
 
-from camlab88.runopts import fail, run_options
+from camlab88.runopts import fail, run_options, unattended
 
 COMMAND = "camlab88 kas paint"
 FLAT_OUT = "flat out, not at the line's speed"  # headless time is virtual: nothing paces it
@@ -101,7 +101,7 @@ def _interactive(seq: Any, ops: Any, args: argparse.Namespace) -> int:
     session = PaintSession(seq, ops)
     machine = _machine(args.baud)
     host = PaintHost(session, machine.host, commands,
-                     end=opts.headless or opts.screenshot is not None)
+                     end=unattended(opts))
     # one tick = 1/25 s of line time
     run(SigmaHostTarget(machine, host, f"{COMMAND} - Sigma T5688", KEYS), opts)
     for m in host.messages:

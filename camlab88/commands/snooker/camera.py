@@ -7,7 +7,7 @@ import argparse
 import sys
 
 from camlab88.commandspec import keys_of
-from camlab88.runopts import fail
+from camlab88.runopts import fail, unattended
 from camlab88.scriptopts import events_player, scripted_run_options
 
 COMMAND = "camlab88 snooker camera"
@@ -55,7 +55,6 @@ def _run(shot, script, player, opts, plugins=()):
 
     rb = in_process(record=opts.record is not None)
     tool = CameraTool(rb.client, shot, script)
-    end_with_script = opts.headless or opts.screenshot is not None
-    target = Target(rb, tool.step, COMMAND, KEYS, player, end_with_script)
+    target = Target(rb, tool.step, COMMAND, KEYS, player, unattended(opts))
     target.escape_is_a_key = True  # the tool's own Esc: done
     return run(target, opts, list(plugins)), tool

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 
 from camlab88.commandspec import keys_of
-from camlab88.runopts import fail
+from camlab88.runopts import fail, unattended
 from camlab88.scriptopts import events_player, scripted_run_options
 
 COMMAND = "camlab88 snooker"
@@ -50,8 +50,7 @@ def _run(args: argparse.Namespace, opts, restore, player):
         program.step()
         return not program.done
 
-    end_with_script = opts.headless or opts.screenshot is not None
-    target = RainbowTarget(rb, step, "camlab88 snooker", KEYS, player, end_with_script)
+    target = RainbowTarget(rb, step, "camlab88 snooker", KEYS, player, unattended(opts))
     target.escape_is_a_key = True  # Esc cancels, or asks y/n/Esc before leaving
     return program, run(target, opts)
 

@@ -8,7 +8,7 @@ import argparse
 import sys
 
 from camlab88.commandspec import keys_of
-from camlab88.runopts import fail, run_options
+from camlab88.runopts import fail, run_options, unattended
 
 COMMAND = "camlab88 snooker visualise"
 KEYS = keys_of(__name__)
@@ -55,7 +55,7 @@ def _run(shot, views, opts, frames_dir):
 
     rb = in_process(record=opts.record is not None)
     vis = Visualiser(rb.client, shot, views)
-    once = opts.headless or opts.screenshot is not None
+    once = unattended(opts)
 
     def step() -> bool:
         last = vis.index == len(vis.views) - 1
