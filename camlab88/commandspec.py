@@ -75,14 +75,10 @@ def _where(module: str) -> tuple[str, str]:
     return parts[0], parts[-1]
 
 
-def spec_of(module: str) -> dict[str, Any]:
-    area, action = _where(module)
-    return area_spec(area)[action]
-
-
 def keys_of(module: str) -> str:
     """The window's key legend of a command module (its ``keys``)."""
-    return spec_of(module)["keys"]
+    area, action = _where(module)
+    return area_spec(area)[action]["keys"]
 
 
 def add_command(actions: argparse._SubParsersAction, module: str,
@@ -119,12 +115,11 @@ def _add(p: argparse.ArgumentParser, arg: dict[str, Any], module: str,
         use = arg.pop("use")
         _resolve(GROUPS.get(use, use))(p, **arg)
         return
-    group = arg.pop("exclusive", None)
+    group, required = arg.pop("exclusive", None), arg.pop("exclusive_required", False)
     target = p
     if group is not None:
-        if group not in exclusive:
-            exclusive[group] = p.add_mutually_exclusive_group(
-                required=arg.pop("exclusive_required", False))
+        if group not in exclusive:  # made where its first member stands, as argparse lists it
+            exclusive[group] = p.add_mutually_exclusive_group(required=required)
         target = exclusive[group]
     flags = arg.pop("flags", None) or arg.pop("name")
     names = [flags] if isinstance(flags, str) else flags
