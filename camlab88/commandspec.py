@@ -11,8 +11,9 @@ module's own, else one of ``TYPES``), a string ``choices`` names a sequence (the
 module's, or "module:NAME"); ``exclusive = "G"`` puts it in mutually exclusive group G. An
 entry ``use = "<group>"`` adds one of the shared option groups (``GROUPS``, or an area's own
 as "module:function"), its other keys passed to the group's helper. ``{NAME}`` in prose is a
-constant of the action module (a sequence: joined with ", ") or one of the sentences several
-commands share (``SNIPPETS``). docs/development.md shows an entry.
+field of the entry (``{KEYS}``), one of the sentences several commands share
+(``SNIPPETS``), or a constant of the action module (a sequence: joined with ", ").
+docs/development.md shows an entry.
 """
 
 from __future__ import annotations
@@ -54,6 +55,9 @@ TYPES = {
 # sentences several commands' prose shares: {NAME} -> "module:constant"
 SNIPPETS = {
     "HEADLESS_NEEDS_EVENTS": "camlab88.scriptopts:HEADLESS_NEEDS_EVENTS",
+    # the link tools' lines, shared with `python -m protocols.link`
+    "LINK_ECHO_HELP": "protocols.link.cli_args:ECHO_HELP",
+    "LINK_STREAM_HELP": "protocols.link.cli_args:STREAM_HELP",
 }
 
 _PROSE = ("help", "description", "epilog")
@@ -89,7 +93,7 @@ def add_command(actions: argparse._SubParsersAction, module: str,
     runs (``ca run --help`` reads no other action's code)."""
     area, action = _where(module)
     spec = area_spec(area)[action]
-    texts = {k: _fill(spec[k], module) for k in _PROSE if k in spec}
+    texts = {k: _fill(spec[k], module, spec) for k in _PROSE if k in spec}
     p = actions.add_parser(spec.get("name", action), **texts)
     exclusive: dict[str, Any] = {}
     for arg in spec.get("args", ()):
@@ -140,13 +144,15 @@ def _resolve(where: str) -> Any:
     return getattr(importlib.import_module(module), name)
 
 
-def _fill(text: str, module: str) -> str:
-    """{NAME}: a shared sentence, else a constant of the action module."""
+def _fill(text: str, module: str, spec: dict[str, Any] | None = None) -> str:
+    """{NAME}: the entry's own field (``{KEYS}``: its ``keys``), a shared sentence, else a
+    constant of the action module."""
     if "{" not in text:
         return text
-    return re.sub(r"\{([A-Z_]+)\}", lambda m: _constant(m[1], module), text)
+    return re.sub(r"\{([A-Z_]+)\}", lambda m: _constant(m[1], module, spec or {}), text)
 
 
-def _constant(name: str, module: str) -> str:
-    value = _resolve(SNIPPETS.get(name) or f"{module}:{name}")
+def _constant(name: str, module: str, spec: dict[str, Any]) -> str:
+    own = spec.get(name.lower())
+    value = own if isinstance(own, str) else _resolve(SNIPPETS.get(name) or f"{module}:{name}")
     return value if isinstance(value, str) else ", ".join(map(str, value))
