@@ -9,8 +9,9 @@ name is not the module's), ``defaults`` (more ``set_defaults``) and an ordered
 ``["-x", "--x"]``) with argparse's own keywords: ``type`` names a function (the action
 module's own, else one of ``TYPES``), a string ``choices`` names a sequence (the action
 module's, or "module:NAME"); ``exclusive = "G"`` puts it in mutually exclusive group G. An
-entry ``use = "<group>"`` adds one of the shared option groups (``GROUPS``, or an area's own
-as "module:function"), its other keys passed to the group's helper. ``{NAME}`` in prose is a
+entry ``use = "<group>"`` adds a group of options: one the area's commands share, listed
+once under ``[[shared.<group>]]`` in its file; one of every area's (``GROUPS``); or a
+"module:function" helper, its other keys passed to the helper. ``{NAME}`` in prose is a
 field of the entry (``{KEYS}``), one of the sentences several commands share
 (``SNIPPETS``), or a constant of the action module (a sequence: joined with ", ").
 docs/development.md shows an entry.
@@ -96,8 +97,9 @@ def add_command(actions: argparse._SubParsersAction, module: str,
     texts = {k: _fill(spec[k], module, spec) for k in _PROSE if k in spec}
     p = actions.add_parser(spec.get("name", action), **texts)
     exclusive: dict[str, Any] = {}
+    shared = area_spec(area).get("shared", {})
     for arg in spec.get("args", ()):
-        _add(p, dict(arg), module, exclusive)
+        _add(p, dict(arg), module, exclusive, shared)
     p.set_defaults(**spec.get("defaults", {}),
                    handler=handler or Handler(f"{module}:{spec['handler']}"))
     return p
@@ -114,10 +116,14 @@ class Handler:
 
 
 def _add(p: argparse.ArgumentParser, arg: dict[str, Any], module: str,
-         exclusive: dict[str, Any]) -> None:
+         exclusive: dict[str, Any], shared: dict[str, list[dict[str, Any]]]) -> None:
     if "use" in arg:
         use = arg.pop("use")
-        _resolve(GROUPS.get(use, use))(p, **arg)
+        if use in shared:  # the area's own group, written once in its [shared] table
+            for each in shared[use]:
+                _add(p, dict(each), module, exclusive, shared)
+        else:
+            _resolve(GROUPS.get(use, use))(p, **arg)
         return
     group, required = arg.pop("exclusive", None), arg.pop("exclusive_required", False)
     target = p

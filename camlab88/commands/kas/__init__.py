@@ -8,7 +8,6 @@ model on a script) and the programs on the emulated Sigma T5684 (``edit``, ``pat
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
 from camlab88.areas import register_area
 
@@ -18,18 +17,6 @@ ACTIONS = ("inbetween", "superimpose", "plot", "export", "schedule", "edit_scrip
 
 def register(subparsers: argparse._SubParsersAction) -> None:
     register_area(subparsers, __name__, ACTIONS)
-
-
-def front_options(p: argparse.ArgumentParser) -> None:
-    """The options of the programs on the Sigma (``kas edit``, ``kas path``)."""
-    from camlab88.runopts import add_run_options
-
-    p.add_argument("--script", type=Path, help="event script (docs/kas.md; times optional)")
-    p.add_argument("--tablet", metavar="SOURCE", help="tablet source (see 'camlab88 tablet'); "
-                   "default: the mouse")
-    p.add_argument("--background", choices=("black", "white"), default="black")
-    p.add_argument("--baud", type=int, default=9600)
-    add_run_options(p, stop_after=False)
 
 
 def prepare_front(args: argparse.Namespace, command: str):
