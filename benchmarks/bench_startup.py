@@ -48,6 +48,7 @@ COMMANDS: dict[str, list[str]] = {
     "sigma render (small stream)": ["sigma", "render", "--in", "examples/sigma/pgplot_goc.sig",
                                     "--out", "screen.png"],
     "camlab88 --help": ["--help"],
+    "ca run --help": ["ca", "run", "--help"],
 }
 DEMO = {"demo --headless": ["demo", "--headless"]}
 # README's cellular-automaton section, after the first ten minutes

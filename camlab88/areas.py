@@ -1,26 +1,31 @@
 """How a command area registers its actions: one module per action, named in a tuple.
 
 ``camlab88/commands/<area>/__init__.py`` lists ``ACTIONS = ("play", "simulate", ...)``; each
-``camlab88/commands/<area>/<action>.py`` defines ``register(actions)``, which adds its parser
-to the area's subparsers and sets ``handler``.  Adding an action is one new module and one
-name in the tuple; action modules never import each other (import-linter checks it).
+action's parser is its entry in ``camlab88/commands/<area>/commands.toml`` (built by
+camlab88.commandspec), and ``camlab88/commands/<area>/<action>.py`` holds its handler.  Adding
+an action is one new module, one entry and one name in the tuple; action modules never import
+each other (import-linter checks it).
 """
 
 from __future__ import annotations
 
 import argparse
-import importlib
 from collections.abc import Sequence
 
+from camlab88.commandspec import add_command, area_spec
 
-def register_area(subparsers: argparse._SubParsersAction, package: str, name: str,
-                  help: str, actions: Sequence[str],
-                  description: str | None = None) -> argparse.ArgumentParser:
-    """Add area ``name`` with its ``actions`` (modules of ``package``) to ``subparsers``."""
-    parser = subparsers.add_parser(name, help=help, description=description or help)
+
+def register_area(subparsers: argparse._SubParsersAction, package: str,
+                  actions: Sequence[str]) -> argparse.ArgumentParser:
+    """Add the area of `package` (``camlab88.commands.ca`` -> ``ca``), its help and
+    description from the top of its commands.toml, with its `actions`."""
+    name = package.rsplit(".", 1)[1]
+    spec = area_spec(name)
+    parser = subparsers.add_parser(name, help=spec["help"],
+                                   description=spec.get("description", spec["help"]))
     sub = parser.add_subparsers(dest=f"{name}_action", metavar="ACTION")
     for action in actions:
-        importlib.import_module(f"{package}.{action}").register(sub)
+        add_command(sub, f"{package}.{action}")
     parser.set_defaults(handler=lambda args: _no_action(parser))
     return parser
 

@@ -34,3 +34,7 @@ def film_of_kind(ext: str) -> Callable[[str], Path]:
             raise argparse.ArgumentTypeError(f"{text}: expected a {ext} file")
         return Path(text)
     return check
+
+
+mp4_file = film_of_kind(".mp4")
+gif_file = film_of_kind(".gif")

@@ -89,6 +89,12 @@ def run_options(args: argparse.Namespace, command: str, can_headless: str | None
         command=command, argv=list(sys.argv[1:] if argv is None else argv))
 
 
+def unattended(opts: RunOptions) -> bool:
+    """A run nobody watches (headless, or one that ends in a screenshot): it ends when its
+    script or input does, instead of waiting for the window to be closed."""
+    return opts.headless or opts.screenshot is not None
+
+
 def _check_writable(command: str, path: Path, doing: str) -> None:
     """Refuse at the start, not after the session, a file that cannot be written."""
     check_output(command, path, doing)

@@ -1,1 +1,2 @@
-"""One module per area; each defines ``register(subparsers)`` and sets ``handler`` defaults."""
+"""One package per area; each defines ``register(subparsers)``, the parsers built from its
+``commands.toml`` (camlab88.commandspec)."""

@@ -6,12 +6,9 @@ import argparse
 
 from camlab88.areas import register_area
 
-HELP = "the programmable cellular automaton (chapter 7)"
 ACTIONS = ("run", "convert", "replay", "library", "program", "film", "actors")
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
-    register_area(subparsers, __name__, "ca", HELP, ACTIONS,
-                  "The programmable cellular automaton of thesis chapter 7: rule files, "
-                  "patterns, logs and scripts.")
+    register_area(subparsers, __name__, ACTIONS)
 

@@ -6,29 +6,10 @@ from __future__ import annotations
 import argparse
 import sys
 
+from camlab88.commandspec import keys_of
+
 COMMAND = "camlab88 ca actors"
-KEYS = ("left: add/drag a point, set a slider; right: delete a point; middle: menu; s save; "
-        "Tab next cell type; q, Esc or close the window to quit")
-
-
-def register(actions: argparse._SubParsersAction) -> None:
-    from camlab88.rainbow_tablet import add_tablet_option
-    from camlab88.runopts import add_run_options
-    from camlab88.scriptopts import HEADLESS_NEEDS_EVENTS, add_events_option
-
-    p = actions.add_parser(
-        "actors", help="the 3-D picture editor for cell types (section 8.1)",
-        description="Edit a rule set's actors file on the emulated Rainbow: pick a cell type, "
-        "draw its lathe profile, watch the solid turn, set colour and material, save "
-        "(docs/ca_actors.md). " + HEADLESS_NEEDS_EVENTS + " A --screenshot run never saves.")
-    p.add_argument("file", metavar="FILE", help="the actors file (created by the first save)")
-    p.add_argument("--rules",
-                   help="rule file or library name whose cell types are edited (default: "
-                   "the one FILE names, else life)")
-    add_events_option(p)
-    add_tablet_option(p, "draw with", ": its surface maps onto the profile pad")
-    add_run_options(p)
-    p.set_defaults(handler=actors)
+KEYS = keys_of(__name__)
 
 
 def actors(args: argparse.Namespace) -> int:
@@ -89,6 +70,7 @@ def _cell_types(rules: str) -> list:
 
 def _run(path: str, types: list, rules: str, player, opts, tablet):
     from apps.actors.editor.program import ActorEditor
+    from camlab88.runopts import unattended
     from emulator.harness import run
     from emulator.harness.rainbow import RainbowTarget
     from emulator.rainbow.session import in_process
@@ -103,8 +85,8 @@ def _run(path: str, types: list, rules: str, player, opts, tablet):
         editor.frame()
         return not editor.finished
 
-    end_with_script = opts.headless or opts.screenshot is not None
-    target = RainbowTarget(session, step, "camlab88 ca actors", KEYS, player, end_with_script)
+    target = RainbowTarget(session, step, "camlab88 ca actors", KEYS, player,
+                           unattended(opts))
     target.may_close = editor.may_close
     target.tablet = tablet
     run(target, opts)

@@ -7,16 +7,6 @@ import argparse
 import sys
 
 
-def register(actions: argparse._SubParsersAction) -> None:
-    p = actions.add_parser("convert", help="convert a pattern between native, RLE, .cells and .mc",
-                          description="Read a pattern and write it in the format given by the "
-                          "output file's extension (.rle, .cells, .mc Golly's macrocell, anything "
-                          "else native).")
-    p.add_argument("source", help="pattern file or library name")
-    p.add_argument("dest", help="output file")
-    p.set_defaults(handler=_convert)
-
-
 def _convert(args: argparse.Namespace) -> int:
     from apps.ca import library
     from apps.ca.patterns import PatternError, read_pattern, write_pattern

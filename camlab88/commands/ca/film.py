@@ -9,45 +9,9 @@ import argparse
 import sys
 from pathlib import Path
 
-from camlab88.argtypes import film_path, frame_size
-from camlab88.runopts import check_output, fail, positive
+from camlab88.runopts import check_output, fail
 
 COMMAND = "camlab88 ca film"
-
-
-def register(actions: argparse._SubParsersAction) -> None:
-    s = actions.add_parser(
-        "film", help="the automaton as a film of 3-D actors (chessmen...) (§8.1)",
-        description="Run RULES on PATTERN for N generations and film it with each cell "
-        "state drawn as its actor (docs/ca_actors.md; a state without one is a coloured "
-        "tile), births growing, deaths shrinking, moving cells gliding, F frames a "
-        "generation. Beside --out: OUT_frames/frame_NNNNN.png; frames already rendered are "
-        "kept, so a stopped truecolour film resumes (docs/ca_film.md).")
-    s.add_argument("rules", metavar="RULES", help="rule file or library name (life, maze)")
-    s.add_argument("pattern", metavar="PATTERN", help="pattern file or library name")
-    s.add_argument("--actors", metavar="FILE", help="the actors file (e.g. "
-                   "examples/ca/chess.actors); without it every cell is a tile")
-    s.add_argument("--generations", type=positive, required=True, metavar="N")
-    s.add_argument("--camera", metavar="SCRIPT", help="camera script (CCL over the grid: "
-                   "events are generation numbers, coordinates cells)")
-    s.add_argument("--out", type=film_path, required=True, metavar="FILM", help=".mp4 or .gif")
-    s.add_argument("--gif", type=film_path, metavar="FILE", help="also a GIF of the film")
-    s.add_argument("--mode", choices=("truecolour", "t5688"), default="truecolour")
-    s.add_argument("--size", type=frame_size, default=(768, 512), metavar="WxH",
-                   help="truecolour frame size (t5688: its 768x512 screen)")
-    s.add_argument("--frames-per-generation", type=positive, default=8, metavar="F")
-    s.add_argument("--glide", default="all", metavar="all|none|S,S",
-                   help="states whose cells glide to a neighbouring birth (default all)")
-    s.add_argument("--samples", type=positive, default=2, metavar="S",
-                   help="anti-aliasing: S x S samples a pixel (default 2)")
-    s.add_argument("--lights", metavar="FILE", help="lights file (x y z in cells; default "
-                   "four lights above the board)")
-    s.add_argument("--edges", choices=("wrap", "dead"), default="wrap")
-    s.add_argument("--seed", type=int, default=0)
-    s.add_argument("--dask", metavar="ADDRESS|local", help="render on a Dask cluster")
-    s.add_argument("--workers", type=positive, metavar="N",
-                   help="processes (default: one per core)")
-    s.set_defaults(handler=film)
 
 
 def film(args: argparse.Namespace) -> int:

@@ -5,11 +5,6 @@ from __future__ import annotations
 import argparse
 
 
-def register(actions: argparse._SubParsersAction) -> None:
-    p = actions.add_parser("library", help="list the shipped rule sets and patterns")
-    p.set_defaults(handler=_library)
-
-
 def _library(args: argparse.Namespace) -> int:
     from apps.ca import library
 

@@ -6,21 +6,6 @@ import argparse
 import sys
 
 
-def register(actions: argparse._SubParsersAction) -> None:
-    p = actions.add_parser("replay", help="replay a Log as a Script up to a generation",
-                         description="Start from the latest checkpoint (log name + generation) "
-                         "at or before GENERATION, apply the script's interventions and rules "
-                         "up to GENERATION, and print the statistics.")
-    p.add_argument("--script", required=True, help="log file written by a ca session")
-    p.add_argument("--generation", type=int, required=True)
-    p.add_argument("--edges", choices=("wrap", "bounded"),
-                     help="only for logs that do not record their edges (default wrap)")
-    p.add_argument("--seed", type=int,
-                     help="only for logs that do not record their seed (default 0)")
-    p.add_argument("--json", action="store_true")
-    p.set_defaults(handler=_replay)
-
-
 def _replay(args: argparse.Namespace) -> int:
     from apps.ca.engine import Engine
     from apps.ca.log import (

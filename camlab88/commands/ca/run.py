@@ -9,37 +9,6 @@ from pathlib import Path
 from camlab88.runopts import check_output, fail
 
 
-def register(actions: argparse._SubParsersAction) -> None:
-    p = actions.add_parser("run", help="run rules on a pattern headless and print statistics",
-                         description="Load RULES and PATTERN (paths or library names), place "
-                         "the pattern's reference point at the centre of the 65536x65536 plane, "
-                         "run N generations and print the statistics of the Statistics menu.")
-    p.add_argument("--rules", required=True, help="rule file or library name (e.g. life)")
-    p.add_argument("--pattern", required=True,
-                     help="pattern file (.pat native, .rle, .cells) or library name")
-    p.add_argument("--generations", type=int, required=True, help="generations to run")
-    p.add_argument("--json", action="store_true", help="print one JSON object last")
-    p.add_argument("--edges", choices=("wrap", "bounded"), default="wrap",
-                     help="plane edges wrap round (torus) or are bounded (default wrap)")
-    p.add_argument("--seed", type=int, default=0,
-                     help="seed of the reproducible random outcomes (default 0)")
-    p.add_argument("--orientation", default="identity",
-                     help="one of the eight orientations (identity, rot90, ... antitranspose)")
-    p.add_argument("--every", type=int, default=0,
-                     help="also print a statistics line every N generations")
-    p.add_argument("--png", metavar="PATH",
-                     help="also write a picture of the final population's bounding box")
-    p.add_argument("--zoom", type=int, default=4, help="pixels per cell for --png")
-    p.add_argument("--monochrome", action="store_true", help="--png in white on black")
-    p.add_argument("--engine", choices=("auto", "hashlife", "direct"), default="auto",
-                   help="hashlife jumps (deterministic rules only), direct steps one "
-                   "generation at a time; auto picks hashlife for long runs (default)")
-    p.add_argument("--memory", type=int, default=512, metavar="MB",
-                   help="HashLife node-table limit; past it the table is garbage-collected "
-                   "(default 512)")
-    p.set_defaults(handler=_run)
-
-
 def _run(args: argparse.Namespace) -> int:
     from apps.ca import library
     from apps.ca.engine import CENTRE, Engine

@@ -12,6 +12,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from camlab88.commandspec import add_command
 from camlab88.runopts import fail
 
 COMMAND = "camlab88 figures"
@@ -40,16 +41,7 @@ CAPTIONS: dict[str, str] = {
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
-    p = subparsers.add_parser(
-        "figures", help="the thesis's screen figures, replayed from shipped recordings",
-        description="The thesis's screen figures as session recordings (examples/figures). "
-        "With no number, the list with captions; with one, that figure replayed in a window, "
-        "or headless to a PNG of its last screen.")
-    p.add_argument("number", nargs="?", help="a figure number, e.g. 6.5")
-    p.add_argument("--headless", action="store_true", help="no window: write the PNG")
-    p.add_argument("--screenshot", type=Path, metavar="PNG",
-                   help="save the last screen here (default fig-N.png when headless)")
-    p.set_defaults(handler=figures)
+    add_command(subparsers, __name__, figures)
 
 
 def recording(number: str) -> Path:

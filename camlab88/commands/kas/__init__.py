@@ -8,32 +8,15 @@ model on a script) and the programs on the emulated Sigma T5684 (``edit``, ``pat
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
 from camlab88.areas import register_area
 
-HELP = "KAS, the keyframe animation suite (chapter 3)"
 ACTIONS = ("inbetween", "superimpose", "plot", "export", "schedule", "edit_script",
            "path_script", "edit", "path", "view", "demo", "library", "paint")
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
-    register_area(subparsers, __name__, "kas", HELP, ACTIONS,
-                  "KAS: keyframe editor model, in-betweener, superimposer, viewer schedule "
-                  "and hard copy (thesis ch. 3). File names may be library names (see "
-                  "'kas library').")
-
-
-def front_options(p: argparse.ArgumentParser) -> None:
-    """The options of the programs on the Sigma (``kas edit``, ``kas path``)."""
-    from camlab88.runopts import add_run_options
-
-    p.add_argument("--script", type=Path, help="event script (docs/kas.md; times optional)")
-    p.add_argument("--tablet", metavar="SOURCE", help="tablet source (see 'camlab88 tablet'); "
-                   "default: the mouse")
-    p.add_argument("--background", choices=("black", "white"), default="black")
-    p.add_argument("--baud", type=int, default=9600)
-    add_run_options(p, stop_after=False)
+    register_area(subparsers, __name__, ACTIONS)
 
 
 def prepare_front(args: argparse.Namespace, command: str):
@@ -59,6 +42,7 @@ def run_front(front, args: argparse.Namespace, command: str, keys: str,
     from apps.kas.program.keyboard import KEY_BYTES, key_to_bytes
     from apps.kas.program.layout import TABLET_AREA
     from apps.kas.program.script import Session
+    from camlab88.runopts import unattended
     from emulator.harness import run
     from emulator.harness.sigma import SigmaProgramTarget, SigmaSessionRun
     from emulator.machine import SigmaMachine
@@ -74,10 +58,9 @@ def run_front(front, args: argparse.Namespace, command: str, keys: str,
         opts.live = True
     machine = SigmaMachine("t5684", LineSettings(baud=args.baud))
     session = Session(front, machine.host, pointer=tablet)
-    end = opts.headless or opts.screenshot is not None
     ran = SigmaSessionRun(machine, session, key_to_bytes)
     target = SigmaProgramTarget(ran, f"{command} - Sigma T5684", keys, frozenset(KEY_BYTES),
-                                events, end)
+                                events, unattended(opts))
     try:
         run(target, opts)
     finally:

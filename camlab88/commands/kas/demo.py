@@ -7,12 +7,6 @@ import argparse
 from camlab88.runopts import fail
 
 
-def register(actions: argparse._SubParsersAction) -> None:
-    p = actions.add_parser("demo", help="build 'a line taking a walk' from the library")
-    p.add_argument("--out", required=True, help="sequence file to write")
-    p.set_defaults(handler=_demo)
-
-
 def _demo(args: argparse.Namespace) -> int:
     from apps.kas import demo, files
 

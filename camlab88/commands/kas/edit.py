@@ -6,25 +6,11 @@ import argparse
 import sys
 from pathlib import Path
 
-from camlab88.commands.kas import front_options
+from camlab88.commandspec import keys_of
 from camlab88.runopts import fail
 
 COMMAND = "camlab88 kas edit"
-KEYS = "F2 saves; Esc/close quits (asks if unsaved: y saves, n discards, Esc stays)"
-
-
-def register(actions: argparse._SubParsersAction) -> None:
-    p = actions.add_parser("edit", help="the keyframe editor on the emulated Sigma T5684",
-                           description="Edit keyframe FILE (created, empty, if missing) on an "
-                           "emulated Sigma T5684 over a 9600-baud line: the stylus is the "
-                           "tablet (--tablet SOURCE) or the mouse, keys are typed on the "
-                           "terminal. F2 saves. --script runs an event script (docs/kas.md); "
-                           "--headless needs one. A --screenshot run saves nothing but the PNG.")
-    p.add_argument("file")
-    front_options(p)
-    p.add_argument("--over", help="previous keyframe to draw over (§2.3 guide)")
-    p.add_argument("--seed", type=int, default=0, help="de-regularise random seed")
-    p.set_defaults(handler=edit)
+KEYS = keys_of(__name__)
 
 
 def edit(args: argparse.Namespace) -> int:

@@ -7,18 +7,6 @@ import argparse
 from camlab88.runopts import fail
 
 
-def register(actions: argparse._SubParsersAction) -> None:
-    p = actions.add_parser("edit-script", help="run the keyframe editor model on an event script",
-                        description="Headless: feed the editor model the events of SCRIPT "
-                        "(move/down/up X Y, key K, menu ITEM, type TEXT) and save the keyframe.")
-    p.add_argument("script")
-    p.add_argument("--start", help="keyframe to start from (default empty)")
-    p.add_argument("--over", help="previous keyframe to draw over (§2.3 guide)")
-    p.add_argument("--seed", type=int, default=0)
-    p.add_argument("--out", required=True)
-    p.set_defaults(handler=_edit_script)
-
-
 def _edit_script(args: argparse.Namespace) -> int:
     from apps.kas import files, library
     from apps.kas.editor import Editor

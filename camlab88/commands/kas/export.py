@@ -11,21 +11,6 @@ from camlab88.runopts import check_output, fail, progress
 COMMAND = "camlab88 kas export"
 
 
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
-    p = actions.add_parser("export", help="export a sequence as GIF, MP4 or PNGs",
-                           description="Render every frame and write OUT.gif, OUT.mp4 or "
-                           "OUT_NNNN.png, with a progress bar. By default each frame is drawn "
-                           "by the emulated Sigma T5684 (768 x 512, 16 colours, its own "
-                           "vectors); --renderer raster uses the software rasteriser at any "
-                           "--width.")
-    p.add_argument("seq")
-    p.add_argument("out")
-    p.add_argument("--renderer", choices=("sigma", "raster"), default="sigma")
-    p.add_argument("--width", type=int, default=768, help="raster renderer only")
-    p.add_argument("--background", choices=("black", "white"), default="black")
-    p.set_defaults(handler=export)
-
-
 def export(args: argparse.Namespace) -> int:
     from apps.kas import files, library
     from apps.kas.export import export as write

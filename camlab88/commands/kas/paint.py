@@ -5,35 +5,12 @@ from __future__ import annotations
 import argparse
 import time
 from dataclasses import replace
-from pathlib import Path
 from typing import Any
 
-from camlab88.runopts import add_run_options, fail, run_options
+from camlab88.runopts import fail, run_options, unattended
 
 COMMAND = "camlab88 kas paint"
 FLAT_OUT = "flat out, not at the line's speed"  # headless time is virtual: nothing paces it
-
-
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
-    p = actions.add_parser("paint", help="paint a sequence on the emulated Sigma T5688",
-                           description="Paint SEQ on an emulated Sigma T5688 over a 9600-baud "
-                           "line (thesis 3.3). Interactive (a window, or --headless with "
-                           "--script): select chains, fill, colour, edit the palette; the "
-                           "operations are recorded (--save). With --replay, or --ops with "
-                           "--frames/--gif/--mp4: every frame painted from the operations "
-                           "file, double-buffered in the two spare quarters, each painted "
-                           "frame written as DIR/frame_NNNNN.png (from 1).")
-    p.add_argument("seq", help="the sequence (.kas; library names work)")
-    p.add_argument("--ops", type=Path, help="operations file to start from / replay")
-    p.add_argument("--save", type=Path, help="write the operations file here at the end, "
-                   "with the seed points each frame used (default: --ops when interactive)")
-    p.add_argument("--script", type=Path, help="painting script (docs/kas.md)")
-    p.add_argument("--replay", action="store_true", help="paint every frame and play it")
-    p.add_argument("--gif", type=Path, help="the painted sequence as a GIF")
-    p.add_argument("--mp4", type=Path, help="the painted sequence as an MP4")
-    p.add_argument("--baud", type=int, default=9600)
-    add_run_options(p)
-    p.set_defaults(handler=paint)
 
 
 def paint(args: argparse.Namespace) -> int:
@@ -124,7 +101,7 @@ def _interactive(seq: Any, ops: Any, args: argparse.Namespace) -> int:
     session = PaintSession(seq, ops)
     machine = _machine(args.baud)
     host = PaintHost(session, machine.host, commands,
-                     end=opts.headless or opts.screenshot is not None)
+                     end=unattended(opts))
     # one tick = 1/25 s of line time
     run(SigmaHostTarget(machine, host, f"{COMMAND} - Sigma T5688", KEYS), opts)
     for m in host.messages:

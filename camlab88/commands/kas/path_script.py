@@ -7,19 +7,6 @@ import argparse
 from camlab88.runopts import fail
 
 
-def register(actions: argparse._SubParsersAction) -> None:
-    p = actions.add_parser("path-script", help="draw a sample path and tick marks from a script",
-                        description="Headless in-betweener set-up: keyframes A and B are "
-                        "shown, the SCRIPT's stylus stroke draws the path, 't' then touches "
-                        "place tick marks; writes the path and the tick timing.")
-    p.add_argument("first")
-    p.add_argument("second")
-    p.add_argument("script")
-    p.add_argument("--path-out", required=True)
-    p.add_argument("--timing-out", required=True)
-    p.set_defaults(handler=_path_script)
-
-
 def _path_script(args: argparse.Namespace) -> int:
     from apps.kas import files, library
     from apps.kas.events import parse_script

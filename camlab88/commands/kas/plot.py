@@ -7,21 +7,6 @@ import argparse
 from camlab88.runopts import fail, progress
 
 
-def register(actions: argparse._SubParsersAction) -> None:
-    p = actions.add_parser("plot", help="plot every frame (HP-GL, SVG, PDF) with registration "
-                        "marks", description="Each frame at the given size (default the "
-                        "twelve-field, 12 x 8.75 inches) with registration marks; HP-GL uses "
-                        "pen N for colour N; PDF is one multi-page sequence.pdf.")
-    p.add_argument("seq")
-    p.add_argument("--hpgl", metavar="DIR")
-    p.add_argument("--svg", metavar="DIR")
-    p.add_argument("--pdf", metavar="DIR")
-    p.add_argument("--width", type=float, default=12.0, help="inches (default 12)")
-    p.add_argument("--height", type=float, default=8.75, help="inches (default 8.75)")
-    p.add_argument("--margin", type=float, default=1.0, help="inches round the field")
-    p.set_defaults(handler=_plot)
-
-
 def _plot(args: argparse.Namespace) -> int:
     from apps.kas import files, library, plot
 

@@ -8,22 +8,6 @@ from pathlib import Path
 from camlab88.runopts import fail
 
 
-def register(actions: argparse._SubParsersAction) -> None:
-    p = actions.add_parser("schedule", help="which frames the real-time viewer shows and drops",
-                        description="Given each frame's size in characters on the line, "
-                        "compute the real-time line test of §3.1.4: the frame due now is "
-                        "sent after each swap; frames passed over are dropped.")
-    p.add_argument("sizes", help="comma-separated characters per frame, or @FILE with one "
-                    "number a line")
-    p.add_argument("--fps", type=float, default=25.0)
-    p.add_argument("--baud", type=float, default=9600)
-    p.add_argument("--bits-per-char", type=float, default=10.0, help="10 for 8N1")
-    p.add_argument("--clock", choices=("first-shown", "first-sent"), default="first-shown",
-                   help="time runs from the first frame displayed (§3.1.4, default) or from "
-                   "its first character sent (the earlier model)")
-    p.set_defaults(handler=_schedule)
-
-
 def _schedule(args: argparse.Namespace) -> int:
     from apps.kas import viewer_schedule as vs
 

@@ -4,29 +4,9 @@ from __future__ import annotations
 
 import argparse
 
-from camlab88.runopts import add_run_options, fail, run_options
+from camlab88.runopts import fail, run_options
 
 COMMAND = "camlab88 kas view"
-
-
-def register(actions: argparse._SubParsersAction) -> None:
-    p = actions.add_parser("view", help="the line test: play a sequence on the emulated Sigma",
-                           description="Play SEQ on an emulated Sigma T5684 over the line, "
-                           "double buffered in two 2-bit buffers (four colours). --realtime "
-                           "(default) keeps period-line time and drops the frames the line "
-                           "cannot carry; --every shows every frame however long it takes.")
-    p.add_argument("seq")
-    g = p.add_mutually_exclusive_group()
-    g.add_argument("--realtime", dest="mode", action="store_const", const="realtime")
-    g.add_argument("--every", dest="mode", action="store_const", const="every")
-    p.set_defaults(mode="realtime")
-    p.add_argument("--baud", type=int, default=9600)
-    p.add_argument("--fps", type=float, help="default: the sequence's")
-    p.add_argument("--swap", choices=("lut", "mask"), default="lut",
-                   help="buffer switch: rewrite the LUT (default) or the display mask")
-    p.add_argument("--background", choices=("black", "white"), default="black")
-    add_run_options(p, stop_after=False)
-    p.set_defaults(handler=view)
 
 
 def view(args: argparse.Namespace) -> int:

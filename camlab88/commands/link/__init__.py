@@ -6,10 +6,8 @@ import argparse
 
 from camlab88.areas import register_area
 
-HELP = "serial-line tools: dump recordings, extract streams, echo device"
 ACTIONS = ("dump", "stream", "echo")
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
-    register_area(subparsers, __name__, "link", HELP, ACTIONS,
-                  "Tools for the emulated serial line (see docs/link.md).")
+    register_area(subparsers, __name__, ACTIONS)

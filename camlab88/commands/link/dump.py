@@ -10,19 +10,6 @@ SESSION_NOTE = ("is a session recording, not a link recording: `sigma run --reco
                 "`sigma run --record-line FILE` writes the link recording that `link dump` reads")
 
 
-def register(actions: argparse._SubParsersAction) -> None:
-    p = actions.add_parser("dump", help="print a link recording readably",
-                           description="Print a link recording (sigma run --record-line FILE, "
-                           "link record ...) readably: one timed chunk a line.")
-    p.add_argument("recording")
-    p.add_argument("--decode", action="store_true",
-                   help="show the host-to-terminal bytes as decoded Sigma orders (byte offset, "
-                   "arrival time, order, arguments, warnings) and the replies as text")
-    p.add_argument("--model", choices=("t5684", "t5688"), default="t5684",
-                   help="the terminal that decodes them (with --decode)")
-    p.set_defaults(handler=dump)
-
-
 def dump(args: argparse.Namespace) -> int:
     from protocols.link.cli import dump as dump_recording
 

@@ -4,14 +4,6 @@ from __future__ import annotations
 
 import argparse
 
-from protocols.link.cli_args import STREAM_HELP, add_stream_arguments
-
-
-def register(actions: argparse._SubParsersAction) -> None:
-    p = actions.add_parser("stream", help=STREAM_HELP)
-    add_stream_arguments(p)
-    p.set_defaults(handler=stream)
-
 
 def stream(args: argparse.Namespace) -> int:
     from protocols.link.cli import write_stream

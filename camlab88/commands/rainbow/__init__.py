@@ -6,12 +6,9 @@ import argparse
 
 from camlab88.areas import register_area
 
-HELP = "the Rainbow workstation emulator"
 ACTIONS = ("render", "run", "serve", "replay")
 __all__ = ["ACTIONS", "register"]
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
-    register_area(subparsers, __name__, "rainbow", HELP, ACTIONS,
-                  "The Cambridge Rainbow workstation: pads, clusters, band structure, "
-                  "video processor.")
+    register_area(subparsers, __name__, ACTIONS)

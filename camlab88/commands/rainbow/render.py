@@ -3,28 +3,10 @@
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
 from camlab88.runopts import fail
 
 COMMAND = "camlab88 rainbow render"
-
-
-def register(actions: argparse._SubParsersAction) -> None:
-    r = actions.add_parser("render", help="render a scene file (JSON pad graph) to a PNG",
-                           description="Compile SCENE.json's pad graph to band structure and "
-                           "render one 768x576 frame.")
-    r.add_argument("scene", metavar="SCENE.json")
-    r.add_argument("--out", required=True, metavar="PNG", help="where to write the frame")
-    r.add_argument("--bands", metavar="FILE", help="also write the band structure as text")
-    r.add_argument("--reference", action="store_true",
-                   help="render with the per-pixel reference compositor instead")
-    r.add_argument("--strict", action="store_true",
-                   help="the relic's video memory (64K 16-bit words)")
-    r.add_argument("--inspect-out", type=Path, metavar="DIR",
-                   help="also write the inspector's panel (bands over the screen, video "
-                        "memory, pad graph) as DIR/frame_00000.png")
-    r.set_defaults(handler=render)
 
 
 def render(args: argparse.Namespace) -> int:

@@ -11,22 +11,6 @@ from camlab88.runopts import fail
 COMMAND = "camlab88 rainbow replay"
 
 
-def register(actions: argparse._SubParsersAction) -> None:
-    p = actions.add_parser("replay", help="replay a recorded command stream and check it",
-                           description="Feed a recording's commands and input events "
-                           "(rainbow run --record-stream) to a fresh Rainbow; every reply "
-                           "must match the recorded one. A session recording (--record) is run "
-                           "again with every screen hash checked, as 'camlab88 replay --check'.")
-    p.add_argument("recording", metavar="FILE")
-    p.add_argument("--headless", action="store_true", help="no window")
-    p.add_argument("--screenshot", metavar="PNG", help="save the last frame")
-    p.add_argument("--scale", type=int, default=1, help="window scale factor")
-    p.add_argument("--strict", action="store_true",
-                   help="replay on the relic's video memory (for stream recordings made with "
-                   "--strict; a session recording repeats its own options)")
-    p.set_defaults(handler=replay)
-
-
 def replay(args: argparse.Namespace) -> int:
     from base.png import write_png
     from emulator.rainbow.device import Rainbow

@@ -4,34 +4,14 @@ from __future__ import annotations
 
 import argparse
 
-from camlab88.rainbow_tablet import add_tablet_option, feed_tablet, open_tablet
-from camlab88.runopts import add_run_options, positive, run_options
-from camlab88.traceopts import add_trace_options, open_trace
+from camlab88.commandspec import keys_of
+from camlab88.rainbow_tablet import feed_tablet, open_tablet
+from camlab88.runopts import run_options
+from camlab88.traceopts import open_trace
 
 COMMAND = "camlab88 rainbow run"
-KEYS = "middle button: the demo's menu; Esc or close the window to quit"
+KEYS = keys_of(__name__)
 HEADLESS_FRAMES = 250
-
-
-def register(actions: argparse._SubParsersAction) -> None:
-    u = actions.add_parser("run", help="open the window with a demo of pads and transparency",
-                           description="Run the Rainbow with the Appendix I transparency "
-                           "example and moving double-buffered pads (headless: "
-                           f"{HEADLESS_FRAMES} frames unless --stop-after N).")
-    add_run_options(u)
-    u.add_argument("--screenshot-frame", type=positive, metavar="N", dest="stop_after_old",
-                   help="the same as --stop-after N (kept for old command lines)")
-    u.add_argument("--record-stream", metavar="FILE",
-                   help="record the device's command stream and input for 'rainbow replay'")
-    u.add_argument("--strict", action="store_true",
-                   help="the relic's video memory (64K 16-bit words)")
-    u.add_argument("--demo", choices=("pads", "shelf"), default="pads",
-                   help="pads: the Appendix I transparency example and double-buffered pads "
-                   "(default); shelf: Appendix I's shelf unit of translucent components on "
-                   "four pads sliding apart (left button pauses)")
-    add_tablet_option(u, "feed", " to the Rainbow's tablet input")
-    add_trace_options(u, strict="--strict-protocol")
-    u.set_defaults(handler=run)
 
 
 def run(args: argparse.Namespace) -> int:

@@ -5,30 +5,9 @@ from __future__ import annotations
 import argparse
 
 from camlab88.runopts import fail
-from camlab88.traceopts import add_trace_options, open_trace
+from camlab88.traceopts import open_trace
 
 COMMAND = "camlab88 rainbow serve"
-
-
-def register(actions: argparse._SubParsersAction) -> None:
-    v = actions.add_parser("serve", help="serve a Rainbow to a program over a local TCP socket",
-                           description="Listen on 127.0.0.1:PORT for a program using "
-                           "protocols.rainbow.SocketTransport; show its frames in the window "
-                           "(no display: headless, serving only).")
-    v.add_argument("--port", type=int, default=4711, help="TCP port on 127.0.0.1 (0 = any)")
-    v.add_argument("--headless", action="store_true", help="no window")
-    v.add_argument("--connections", type=int, default=None,
-                   help="stop after serving this many programs (default: for ever)")
-    v.add_argument("--scale", type=int, default=1, help="window scale factor")
-    v.add_argument("--strict", action="store_true",
-                   help="the relic's video memory (64K 16-bit words)")
-    v.add_argument("--frame-timeout", type=_seconds, default=10.0, metavar="S",
-                   help="hang up on a program whose frame is unfinished S seconds after its "
-                   "first byte (default 10)")
-    v.add_argument("--idle-timeout", type=_seconds, default=60.0, metavar="S",
-                   help="a program silent for S seconds gives way to one waiting (default 60)")
-    add_trace_options(v, strict="--strict-protocol")
-    v.set_defaults(handler=serve)
 
 
 def _seconds(text: str) -> float:

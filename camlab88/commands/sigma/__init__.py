@@ -6,11 +6,10 @@ import argparse
 
 from camlab88.areas import register_area
 
-HELP = "the Sigma T5684/T5688 terminals"
 ACTIONS = ("render", "run")
+MODELS = ("t5684", "t5688")  # the --model choices of both actions
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
-    register_area(subparsers, __name__, "sigma", HELP, ACTIONS,
-                  "Emulated Sigma T5684 / T5688 graphics terminals.")
+    register_area(subparsers, __name__, ACTIONS)
 

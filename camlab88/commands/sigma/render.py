@@ -7,31 +7,9 @@ import sys
 from fractions import Fraction
 from pathlib import Path
 
-from camlab88.control_flags import add_control_options
-from camlab88.runopts import frames_dir
-from camlab88.traceopts import add_trace_options, open_trace
+from camlab88.traceopts import open_trace
 
-MODELS = ("t5684", "t5688")
 COMMAND = "camlab88 sigma render"
-
-
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
-    r = actions.add_parser("render", help="decode a stream and write the screen as PNG",
-                           description="Feed a Sigma byte stream (raw bytes or a link "
-                           "recording) to an emulated terminal and write the final screen, "
-                           "768x512 PNG, row 0 = top; or with --frames, the screen at every "
-                           "1/FPS s of line time.")
-    r.add_argument("--model", choices=MODELS, default="t5684")
-    r.add_argument("--in", dest="stream", required=True, type=Path, help="stream file")
-    r.add_argument("--out", type=Path, help="final screen PNG")
-    r.add_argument("--frames", type=frames_dir, metavar="DIR",
-                   help="directory for one PNG per frame period (frame_NNNNN.png)")
-    r.add_argument("--fps", type=int, default=25, help="frames per second of line time")
-    r.add_argument("--baud", type=int, default=9600,
-                   help="line speed that times --frames (a recording keeps its own times)")
-    add_trace_options(r)
-    add_control_options(r)
-    r.set_defaults(handler=render)
 
 
 def _die(message: str) -> SystemExit:

@@ -7,45 +7,12 @@ import argparse
 import contextlib
 import sys
 from fractions import Fraction
-from pathlib import Path
 
-from camlab88.runopts import add_run_options, run_options
-from camlab88.traceopts import add_trace_options, open_trace
+from camlab88.runopts import run_options
+from camlab88.traceopts import open_trace
 
-MODELS = ("t5684", "t5688")
 COMMAND = "camlab88 sigma run"
 FRAME = Fraction(1, 25)
-
-
-def register(actions: argparse._SubParsersAction) -> None:
-    u = actions.add_parser("run", help="an interactive terminal in a window",
-                           description="Run an emulated terminal in a window, its line on a "
-                           "pseudo-terminal (--pty) or a TCP port on 127.0.0.1 (--listen). "
-                           "Keys typed into the window go up the line; cursor keys move the "
-                           "crosshair, the mouse is the tablet. --screenshot: the screen at "
-                           "--seconds, else once the --in stream has arrived.")
-    u.add_argument("--model", choices=MODELS, default="t5684")
-    g = u.add_mutually_exclusive_group()
-    g.add_argument("--pty", action="store_true", help="open a pseudo-terminal (the default)")
-    g.add_argument("--listen", type=int, metavar="PORT", help="listen on 127.0.0.1:PORT")
-    g.add_argument("--serial", metavar="URL", help="any pyserial URL, e.g. /dev/ttyUSB0")
-    u.add_argument("--baud", type=int,
-                   help="line speed (default 9600, or that of an --in recording)")
-    u.add_argument("--in", dest="stream", type=Path,
-                   help="also play this stream down the line: raw bytes back to back from "
-                   "the start, a recording at its recorded times")
-    u.add_argument("--seconds", type=float, help="exit after this many seconds of line time")
-    u.add_argument("--order-timeout", type=_seconds, default=Fraction(10), metavar="S",
-                   help="hang up on a --listen client that leaves half an order unfinished "
-                   "this many seconds of line time (default 10)")
-    u.add_argument("--idle-timeout", type=_seconds, default=Fraction(60), metavar="S",
-                   help="a --listen client silent this many seconds of line time gives way "
-                   "to one that connects (default 60)")
-    u.add_argument("--record-line", type=Path, metavar="FILE",
-                   help="record the line (both directions) as a link recording")
-    add_run_options(u, stop_after=False)
-    add_trace_options(u)
-    u.set_defaults(handler=run)
 
 
 def _seconds(text: str) -> Fraction:

@@ -9,13 +9,11 @@ import argparse
 
 from camlab88.areas import register_area
 
-HELP = ("snooker motion development (thesis chapter 6): `camlab88 snooker [SESSION]` runs the "
-        "interactive program (= `snooker play`); simulate shots; replay checkpoint files")
 ACTIONS = ("play", "simulate", "replay", "ccl", "visualise", "camera", "render", "film")
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
-    register_area(subparsers, __name__, "snooker", HELP, ACTIONS)
+    register_area(subparsers, __name__, ACTIONS)
 
 
 def normalise_argv(argv: list[str]) -> list[str]:

@@ -6,32 +6,12 @@ from __future__ import annotations
 import argparse
 import sys
 
-from camlab88.runopts import add_run_options, fail
-from camlab88.scriptopts import (
-    HEADLESS_NEEDS_EVENTS,
-    add_events_option,
-    events_player,
-    scripted_run_options,
-)
+from camlab88.commandspec import keys_of
+from camlab88.runopts import fail, unattended
+from camlab88.scriptopts import events_player, scripted_run_options
 
 COMMAND = "camlab88 snooker camera"
-KEYS = ("type to edit the script (it is re-interpreted at once; saving it from another editor "
-        "works too); ctrl-s saves, ctrl-r reloads; tab play/pause; page up/down step; left "
-        "button on the time line scrubs; escape quits")
-
-
-def register(actions: argparse._SubParsersAction) -> None:
-    s = actions.add_parser(
-        "camera", help="edit a camera script with the live view beside it (§6.5)",
-        description="The camera script beside the live perspective view on the emulated "
-        "Rainbow: every edit, typed here or saved to SCRIPT from any text editor, is "
-        "re-interpreted and the view updates at once; errors are marked at their lines "
-        f"while the preview goes on. Keys: {KEYS}. " + HEADLESS_NEEDS_EVENTS)
-    s.add_argument("script", metavar="SCRIPT", help="the camera script (created if missing)")
-    s.add_argument("motion", metavar="CHECKPOINT|SESSION")
-    add_events_option(s)
-    add_run_options(s)
-    s.set_defaults(handler=camera)
+KEYS = keys_of(__name__)
 
 
 def camera(args: argparse.Namespace) -> int:
@@ -75,7 +55,6 @@ def _run(shot, script, player, opts, plugins=()):
 
     rb = in_process(record=opts.record is not None)
     tool = CameraTool(rb.client, shot, script)
-    end_with_script = opts.headless or opts.screenshot is not None
-    target = Target(rb, tool.step, COMMAND, KEYS, player, end_with_script)
+    target = Target(rb, tool.step, COMMAND, KEYS, player, unattended(opts))
     target.escape_is_a_key = True  # the tool's own Esc: done
     return run(target, opts, list(plugins)), tool

@@ -11,22 +11,6 @@ from camlab88.runopts import fail
 COMMAND = "camlab88 snooker ccl"
 
 
-def register(actions: argparse._SubParsersAction) -> None:
-    s = actions.add_parser(
-        "ccl", help="interpret a camera script over a shot; write the view file",
-        description="Interpret a camera control language script (thesis §6.3.1) over the "
-        "ball positions of a checkpoint file or a session file, and write the view file: "
-        "'frame ox oy oz vx vy vz focal' for every frame (metres from the table's centre, "
-        "focal length in mm). Every error of the script is reported, with its line and "
-        "column. See docs/snooker.md for the language.")
-    s.add_argument("script", metavar="SCRIPT", help="the camera script")
-    s.add_argument("motion", metavar="CHECKPOINT|SESSION",
-                   help="the motion program's checkpoint file, or its session file (whose "
-                   "collision events then give CUEBALL STRIKES and HITBALL)")
-    s.add_argument("--out", required=True, metavar="VIEWS", help="the view file to write")
-    s.set_defaults(handler=ccl)
-
-
 def ccl(args: argparse.Namespace) -> int:
     from apps.snooker.camera import ccl as language
     from apps.snooker.camera import motion

@@ -10,9 +10,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from apps.snooker.render.modes import MODES
-from camlab88.argtypes import film_path, frame_size
-from camlab88.runopts import fail, positive
+from camlab88.runopts import fail
 
 COMMAND = "camlab88 snooker film"
 
@@ -21,43 +19,6 @@ def _word(text: str) -> str:
     if not (1 <= len(text) <= 8 and all(c.isascii() and c.isprintable() for c in text)):
         raise argparse.ArgumentTypeError(f"{text!r}: 1 to 8 printable ASCII letters")
     return text.upper()
-
-
-def register(actions: argparse._SubParsersAction) -> None:
-    s = actions.add_parser(
-        "film", help="camera script -> views -> rendered frames -> MP4/GIF (§6.3-6.4)",
-        description="Interpret the camera script over the shot, render every frame and "
-        "film them at 25 frames/s (no sound). Beside --out: OUT.views and OUT_frames/. "
-        "Frames already rendered (complete PNGs of the right size) are skipped, so a "
-        "stopped film resumes. Truecolour frames render on a local process pool (one "
-        "process per core), or on a Dask cluster: --dask tcp://HOST:8786 (started with "
-        "'dask scheduler' and 'dask worker tcp://HOST:8786'), or --dask local.")
-    s.add_argument("motion", metavar="CHECKPOINT|SESSION", nargs="?")
-    s.add_argument("script", metavar="SCRIPT.ccl", nargs="?",
-                   help="the camera script (§6.3.1)")
-    s.add_argument("--titles", metavar="WORD", type=_word,
-                   help="instead of a shot: the §6.5 title animation, WORD spelled by "
-                   "giant lettered balls aimed with 'set up next shot' (e.g. CAMLAB88)")
-    s.add_argument("--out", type=film_path, required=True, metavar="FILM",
-                   help="the film: .mp4 (H.264) or .gif")
-    s.add_argument("--gif", type=film_path, metavar="FILE", help="also a GIF of the film")
-    s.add_argument("--mode", choices=MODES, default="truecolour",
-                   help="truecolour (default), or a Sigma mode drawn on the emulated T5688")
-    s.add_argument("--size", type=frame_size, default=(768, 512), metavar="WxH",
-                   help="truecolour frame size")
-    s.add_argument("--dask", metavar="ADDRESS|local",
-                   help="render on a Dask cluster (a scheduler address, or 'local')")
-    s.add_argument("--workers", type=positive, metavar="N",
-                   help="processes (default: one per core; --dask local: its workers)")
-    s.add_argument("--motion-blur", action="store_true",
-                   help="integrate each frame over a 1/50 s shutter (§6.4)")
-    s.add_argument("--blur-samples", type=positive, default=12, metavar="N",
-                   help="renders averaged over the shutter with --motion-blur")
-    s.add_argument("--lights", type=Path, metavar="FILE", help="lights file (see render)")
-    s.add_argument("--no-specks", action="store_true", help="leave out the dust specks")
-    s.add_argument("--no-wood", action="store_true",
-                   help="truecolour: constant-shaded wood, as the Sigma modes draw it")
-    s.set_defaults(handler=film)
 
 
 def film(args: argparse.Namespace) -> int:

@@ -4,34 +4,12 @@ from __future__ import annotations
 
 import argparse
 
-from camlab88.runopts import add_run_options, fail
-from camlab88.scriptopts import (
-    HEADLESS_NEEDS_EVENTS,
-    add_events_option,
-    events_player,
-    scripted_run_options,
-)
+from camlab88.commandspec import keys_of
+from camlab88.runopts import fail, unattended
+from camlab88.scriptopts import events_player, scripted_run_options
 
 COMMAND = "camlab88 snooker"
-KEYS = ("middle button: menus; right: restart simulation; left held: mouse x4; "
-        "Esc: leave (y saves, n does not, Esc stays); close the window to quit")
-
-
-def register(actions: argparse._SubParsersAction) -> None:
-    s = actions.add_parser(
-        "play", help="the interactive motion-development program on the emulated Rainbow",
-        description="The interactive program (thesis §6.2.1-§6.2.2) on the emulated Rainbow. "
-        "Middle button: menus and everything else; right: restart simulation; left held: "
-        "mouse movement x4. With SESSION you are asked: new game (n) or restore (r). "
-        + HEADLESS_NEEDS_EVENTS)
-    s.add_argument("session", nargs="?", metavar="SESSION",
-                   help="a saved session file to offer for restoring (and to save to)")
-    add_events_option(s)
-    s.add_argument("--save", metavar="SESSION",
-                   help="where 'Exit from the program' saves (default: SESSION; "
-                   "with neither, Exit asks for a file name)")
-    add_run_options(s)
-    s.set_defaults(handler=play)
+KEYS = keys_of(__name__)
 
 
 def play(args: argparse.Namespace) -> int:
@@ -72,8 +50,7 @@ def _run(args: argparse.Namespace, opts, restore, player):
         program.step()
         return not program.done
 
-    end_with_script = opts.headless or opts.screenshot is not None
-    target = RainbowTarget(rb, step, "camlab88 snooker", KEYS, player, end_with_script)
+    target = RainbowTarget(rb, step, "camlab88 snooker", KEYS, player, unattended(opts))
     target.escape_is_a_key = True  # Esc cancels, or asks y/n/Esc before leaving
     return program, run(target, opts)
 

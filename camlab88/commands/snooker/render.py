@@ -11,68 +11,10 @@ import argparse
 import sys
 from pathlib import Path
 
-from camlab88.argtypes import film_of_kind, frame_size
-from camlab88.runopts import fail, frames_dir, positive, progress
+from camlab88.runopts import fail, progress
 
 COMMAND = "camlab88 snooker render"
 RECORD = ".camlab88-render.json"  # the resume record, hidden among the frames
-
-DESCRIPTION = (
-    "Render every frame of a view file over a checkpoint or session. "
-    "--mode period: the 1984 program on the emulated T5688 over the 9600-baud line "
-    "(firmware outlines + flood fill: polygon colour leaks past the anti-aliased edges, "
-    "counted); fixed: the same with software Bresenham outlines (no leaks); adapted: "
-    "firmware outlines anti-aliased where the firmware puts them (no leaks, period's line "
-    "time); truecolour: 24-bit at --size. Writes DIR/frame_NNNNN.png numbered as the "
-    "checkpoint's frames. Truecolour renders in parallel: one process per core (--workers N), "
-    "or on a Dask cluster (--dask tcp://HOST:8786 from 'dask scheduler' + 'dask worker', "
-    "or --dask local); it resumes: a frame whose PNG is complete and was made from the "
-    "same shot, view and settings (DIR/.camlab88-render.json) is skipped; each frame is "
-    "written atomically and a failed frame or dead worker is retried and reported. The "
-    "Sigma modes by default draw every frame on one emulated T5688 over the 9600-baud "
-    "line, one after another as in 1984, and report line time and leaks; with --workers "
-    "N or --dask they go parallel too: each frame on a fresh emulated T5688 (LUT loaded, "
-    "screen cleared), byte-identical to the sequential frames since every frame starts "
-    "from a cleared screen, but without the line statistics.")
-
-
-def register(actions: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
-    s = actions.add_parser(
-        "render", help="finished frames on the emulated Sigma T5688 or in true colour (§6.4)",
-        description=DESCRIPTION)
-    s.add_argument("motion", metavar="CHECKPOINT|SESSION")
-    s.add_argument("views", metavar="VIEWS", help="the view file (from 'snooker ccl')")
-    s.add_argument("--frames", type=frames_dir, metavar="DIR", required=True,
-                   help="write DIR/frame_NNNNN.png")
-    s.add_argument("--mode", choices=("period", "fixed", "adapted", "truecolour"),
-                   default="period", help="(default period)")
-    s.add_argument("--palette", choices=("fixed", "adaptive"), default="fixed",
-                   help="the T5688's 256 colours: fixed (period) or chosen for the sequence")
-    s.add_argument("--size", type=frame_size, default=(768, 512), metavar="WxH",
-                   help="truecolour picture size (the Sigma modes are 768x512)")
-    s.add_argument("--first", type=positive, metavar="N", help="first frame (default: all)")
-    s.add_argument("--last", type=positive, metavar="M", help="last frame")
-    s.add_argument("--lights", type=Path, metavar="FILE",
-                   help="lights file: 'x y z [intensity | r g b]' a line (default: a canopy "
-                   "of four bulbs)")
-    s.add_argument("--no-specks", action="store_true", help="leave out the dust specks")
-    s.add_argument("--no-wood", action="store_true",
-                   help="truecolour: constant-shaded wood, as the Sigma modes draw it")
-    _add_sequence_options(s)
-    s.set_defaults(handler=render)
-
-
-def _add_sequence_options(s: argparse.ArgumentParser) -> None:
-    """Where the frames are rendered, and the films made of them (issue 14)."""
-    s.add_argument("--workers", type=positive, metavar="N",
-                   help="processes (truecolour default: one per core; Sigma modes: "
-                   "sequential unless given; --dask local: its workers)")
-    s.add_argument("--dask", metavar="ADDRESS|local",
-                   help="render on a Dask cluster (a scheduler address, or 'local')")
-    s.add_argument("--mp4", type=film_of_kind(".mp4"), metavar="FILE",
-                   help="also film the frames: H.264 at 25 frames/s, no sound")
-    s.add_argument("--gif", type=film_of_kind(".gif"), metavar="FILE",
-                   help="also film the frames as a GIF at 25 frames/s")
 
 
 def render(args: argparse.Namespace) -> int:

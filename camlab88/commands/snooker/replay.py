@@ -4,21 +4,10 @@ from __future__ import annotations
 
 import argparse
 
-from camlab88.runopts import add_run_options, fail, run_options
+from camlab88.runopts import fail, run_options
 
 COMMAND = "camlab88 snooker replay"
 OUTPUT_HINT = "give --frames DIR or --screenshot PNG to write what it plays"
-
-
-def register(actions: argparse._SubParsersAction) -> None:
-    s = actions.add_parser("replay", help="play a checkpoint file on the Rainbow at 25 fps",
-                           description="Play a §6.2.2 checkpoint file on the emulated Rainbow "
-                           "at 25 frames/s (real time in a window, virtual time headless).")
-    s.add_argument("checkpoint", metavar="CHECKPOINT")
-    s.add_argument("--first", type=int, default=0, help="first frame (default 0)")
-    s.add_argument("--last", type=int, help="last frame (default: the last)")
-    add_run_options(s)
-    s.set_defaults(handler=replay)
 
 
 def replay(args: argparse.Namespace) -> int:

@@ -16,36 +16,6 @@ def _table_option(value: str) -> tuple[str, str]:
     return k.strip(), v.strip()
 
 
-def register(actions: argparse._SubParsersAction) -> None:
-    s = actions.add_parser(
-        "simulate",
-        help="simulate a shot headlessly until every ball stops; write a checkpoint",
-        description="Simulate until all balls have stopped and write the §6.2.2 checkpoint "
-        "file (4096 units per foot). ANGLE_DEG is measured anticlockwise from straight up "
-        "the table (from the baulk end towards the black); SPIN is m/s along the shot "
-        "(+ top spin, - back spin).",
-    )
-    s.add_argument("--from", dest="source", metavar="SESSION|CHECKPOINT",
-                   help="start from a saved session (JSON) or the last frame of a checkpoint")
-    how = s.add_mutually_exclusive_group(required=True)
-    how.add_argument("--break", dest="break_speed", type=float, metavar="SPEED_M_S",
-                     help="the opening position, cue ball in the D struck at the pack")
-    how.add_argument("--shot", nargs="+", metavar="ARG",
-                     help="BALL SPEED_M_S ANGLE_DEG [SPIN_M_S]; BALL is 1..22 or a name "
-                     "(cue, yellow, ..., black, red1..red15)")
-    s.add_argument("--out", required=True, metavar="CHECKPOINT", help="checkpoint file to write")
-    s.add_argument("--save-session", metavar="SESSION", help="also save the session file")
-    s.add_argument("--first", type=int, default=0, help="first time frame to write (default 0)")
-    s.add_argument("--last", type=int, help="last time frame to write (default: the last)")
-    s.add_argument("--table", action="append", type=_table_option, default=[],
-                   metavar="NAME=VALUE",
-                   help="change a table constant, e.g. cushion_restitution=1.2 "
-                   "ball_diameter_m=0.2 (new games only)")
-    s.add_argument("--max-seconds", type=float, default=600.0,
-                   help="give up if balls are still moving after this long (default 600)")
-    s.set_defaults(handler=simulate)
-
-
 def simulate(args: argparse.Namespace) -> int:
     from apps.snooker.checkpoint import CheckpointError
     from apps.snooker.physics import SimulationError

@@ -7,23 +7,11 @@ from __future__ import annotations
 import argparse
 import sys
 
-from camlab88.runopts import add_run_options, fail, run_options
+from camlab88.commandspec import keys_of
+from camlab88.runopts import fail, run_options, unattended
 
 COMMAND = "camlab88 snooker visualise"
-KEYS = ("space play/pause, left/right step, page up/down 25 frames, home/end, "
-        "drag with the left button to scrub, escape quits")
-
-
-def register(actions: argparse._SubParsersAction) -> None:
-    s = actions.add_parser(
-        "visualise", help="the perspective view of every frame on the Rainbow (§6.3.2)",
-        description="Play a view file (from 'snooker ccl') over a checkpoint or session on "
-        f"the emulated Rainbow at 25 frames/s. Keys: {KEYS}. Headless it plays every frame "
-        "once; --frames DIR writes DIR/frame_NNNNN.png numbered as the checkpoint's frames.")
-    s.add_argument("motion", metavar="CHECKPOINT|SESSION")
-    s.add_argument("views", metavar="VIEWS", help="the view file")
-    add_run_options(s)
-    s.set_defaults(handler=visualise)
+KEYS = keys_of(__name__)
 
 
 def visualise(args: argparse.Namespace) -> int:
@@ -67,7 +55,7 @@ def _run(shot, views, opts, frames_dir):
 
     rb = in_process(record=opts.record is not None)
     vis = Visualiser(rb.client, shot, views)
-    once = opts.headless or opts.screenshot is not None
+    once = unattended(opts)
 
     def step() -> bool:
         last = vis.index == len(vis.views) - 1

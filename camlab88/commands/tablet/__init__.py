@@ -6,7 +6,6 @@ import argparse
 
 from camlab88.areas import register_area
 
-HELP = "graphics tablets: real (HID/serial) and emulated"
 ACTIONS = ("list", "monitor", "calibrate", "emulate")
 SOURCE_HELP = (
     "hid:VID:PID | serial:PORT?protocol=P[&baud=N] | URL?protocol=P (loop://, socket://...) | "
@@ -21,6 +20,4 @@ def add_source_argument(p: argparse.ArgumentParser) -> None:
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
-    register_area(subparsers, __name__, "tablet", HELP, ACTIONS,
-                  "Graphics tablets over USB HID or serial, and an emulated tablet that "
-                  "speaks a real protocol on a pty.")
+    register_area(subparsers, __name__, ACTIONS)

@@ -5,11 +5,6 @@ from __future__ import annotations
 import argparse
 
 
-def register(actions: argparse._SubParsersAction) -> None:
-    s = actions.add_parser("list", help="HID digitizers and serial ports found")
-    s.set_defaults(handler=cmd_list)
-
-
 def cmd_list(args: argparse.Namespace) -> int:
     from protocols.tablets.hid_source import backend_name, list_digitizers
 

@@ -13,6 +13,8 @@ from __future__ import annotations
 import argparse
 import sys
 
+from camlab88.commandspec import add_command
+
 COMMAND = "camlab88 warm-up"
 
 # (what, a completion "module:function" or a camlab88 command line); order: cheapest first
@@ -32,12 +34,7 @@ STEPS: tuple[tuple[str, str | tuple[str, ...]], ...] = (
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
-    p = subparsers.add_parser(
-        "warm-up", help="compile every numba kernel now (otherwise: on first use)",
-        description="Compile every kernel group of every program into numba's cache now, "
-        "with a progress line, instead of on the first run that needs each group. Later "
-        "commands load them from the cache (NUMBA_CACHE_DIR if set, else __pycache__).")
-    p.set_defaults(handler=_run)
+    add_command(subparsers, __name__, _run)
 
 
 def _run(args: argparse.Namespace) -> int:
