@@ -5,7 +5,9 @@ base.kernel_notice). ``warm-up`` does all of it at once instead — useful befor
 to an audience, or in CI so every test process loads the kernels from one cache. Each step
 is a group's own completion (every kernel of the group called once) or, for groups without
 one, a small command run in a scratch directory, in this process, so the kernels land in the
-same cache every later command reads.
+same cache every later command reads. The last step builds the ahead-of-time extensions of
+the modules listed in ``aot.py`` (a command that loads only those never imports numba);
+without a C compiler it says so and the JIT-compiled kernels are used.
 """
 
 from __future__ import annotations
@@ -36,7 +38,9 @@ def register(subparsers: argparse._SubParsersAction) -> None:
         "warm-up", help="compile every numba kernel now (otherwise: on first use)",
         description="Compile every kernel group of every program into numba's cache now, "
         "with a progress line, instead of on the first run that needs each group. Later "
-        "commands load them from the cache (NUMBA_CACHE_DIR if set, else __pycache__).")
+        "commands load them from the cache (NUMBA_CACHE_DIR if set, else __pycache__). "
+        "Last, the cellular automaton's kernels are built ahead of time as extension modules "
+        "(needs a C compiler), so a `ca run` process need not import numba at all.")
     p.set_defaults(handler=_run)
 
 
@@ -47,11 +51,13 @@ def _run(args: argparse.Namespace) -> int:
     import time
 
     from base.kernel_notice import complete_pending, run_completion
+    from camlab88.commands.warmup.aot import build_step
 
     start = time.perf_counter()
+    total = len(STEPS) + 1
     with tempfile.TemporaryDirectory(prefix="camlab88-warm-up-") as scratch:
         for i, (what, step) in enumerate(STEPS, 1):
-            print(f"[{i}/{len(STEPS)}] {what} ...", end="", file=sys.stderr, flush=True)
+            print(f"[{i}/{total}] {what} ...", end="", file=sys.stderr, flush=True)
             t0 = time.perf_counter()
             with contextlib.redirect_stdout(io.StringIO()), contextlib.chdir(scratch):
                 failed = _step(step, run_completion)
@@ -61,6 +67,7 @@ def _run(args: argparse.Namespace) -> int:
                   file=sys.stderr, flush=True)
             if failed:
                 return 1
+    build_step(total, total)
     print(f"camlab88 warm-up: every kernel compiled in {time.perf_counter() - start:.0f} s",
           file=sys.stderr)
     return 0
