@@ -12,7 +12,9 @@ exports' declared types, which need not be the exact types a JIT caller passes, 
 read-only array) never add a second signature to a kernel in the user's cache. The
 extension is written to a temporary directory beside its final place and renamed into it,
 so a reader never sees half a file; older extensions of the same module are then removed.
-A module whose extension is up to date is not rebuilt. Needs a C compiler (pycc compiles
+A module whose extension is up to date is not rebuilt. A module whose kernels call another
+kernel module's must name it in ``KernelSet(..., sources=...)`` (the key then covers its
+source too); the build refuses one that does not. Needs a C compiler (pycc compiles
 numba's runtime helpers with it); without one each module reports why and commands go on
 using the JIT-compiled kernels.
 
@@ -28,6 +30,7 @@ import subprocess
 import sys
 import tempfile
 from pathlib import Path
+from types import ModuleType
 
 from base import aot_load
 
@@ -64,6 +67,10 @@ def build_here(module: str, where: Path) -> str:
         return "failed: no KernelSet with exports in the module"
     if kernels.mode != "jit":
         return "failed: the module was loaded ahead of time, not JIT"
+    missing = sorted(kernel_dependencies(module) - set(kernels.sources))
+    if missing:  # their code would be compiled in, unseen by the key
+        return (f"failed: its kernels call kernels of {', '.join(missing)}: declare them as "
+                "KernelSet(__name__, sources=(...))")
     final = aot_load.path(module, aot_load.key(module, kernels.sources), where)
     if final.is_file():
         return UP_TO_DATE
@@ -83,6 +90,25 @@ def build_here(module: str, where: Path) -> str:
         if old != final and old.is_file():
             old.unlink(missing_ok=True)
     return BUILT
+
+
+def kernel_dependencies(module: str) -> set[str]:
+    """The other kernel modules whose kernels ``module``'s kernels may call (its globals
+    holding such a module or one of its compiled kernels), transitively."""
+    from base.kernel_set import SETS
+
+    found: set[str] = set()
+    todo = [module]
+    while todo:
+        for value in vars(importlib.import_module(todo.pop())).values():
+            if isinstance(value, ModuleType):
+                owner = value.__name__
+            else:
+                owner = getattr(getattr(value, "py_func", None), "__module__", None)
+            if owner in SETS and owner != module and owner not in found:
+                found.add(owner)
+                todo.append(owner)
+    return found
 
 
 def _entry(name: str, dispatcher: object, signature: str) -> object:
