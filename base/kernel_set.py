@@ -13,12 +13,14 @@ Two ways to run, chosen when the set is made:
   is up to date). Then numba is never imported: each ``export`` is the extension's function
   behind a check of its argument types (base/aot_args.py), each ``kernel`` stays the plain
   Python function (only compiled code calls it, and that is in the extension).
-* **just in time** otherwise (no extension, a stale one, ``CAMLAB88_AOT=0``): every kernel
-  is ``njit(cache=True, ...)`` exactly as a bare decorator would make it.
+* **just in time** otherwise (no extension, a stale one, ``CAMLAB88_AOT=0``, or another
+  kernel set of the process already JIT: see the end of this file): every kernel is
+  ``njit(cache=True, ...)`` exactly as a bare decorator would make it.
 """
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Callable
 from types import ModuleType
 from typing import Any
@@ -38,9 +40,28 @@ class KernelSet:
         self.exports: dict[str, str] = {}       # kernel name -> numba signature
         self.kernels: dict[str, Callable[..., Any]] = {}  # name -> compiled (or plain) kernel
         self.python: dict[str, tuple[Callable[..., Any], dict[str, Any]]] = {}  # plain, options
-        self.aot: ModuleType | None
-        self.aot, self.why_jit = aot_load.load(module, sources)
+        self.aot: ModuleType | None = None
+        if aot_load.enabled() and any(s.aot is None for s in SETS.values()):
+            self.why_jit = _MIXED
+        else:
+            self.aot, self.why_jit = aot_load.load(module, sources)
         SETS[module] = self
+        if self.aot is None:
+            _all_jit()
+
+    def _to_jit(self) -> dict[int, tuple[Any, Any]]:
+        """Give up the extension: every kernel njit-compiled; {id(old): (old, new)} for the
+        plain functions and checked exports replaced."""
+        from numba import njit
+
+        swaps: dict[int, tuple[Any, Any]] = {}
+        for name, (fn, options) in self.python.items():
+            compiled = njit(cache=True, **options)(fn)
+            for old in (self.kernels[name], fn):
+                swaps[id(old)] = (old, compiled)
+            self.kernels[name] = compiled
+        self.aot, self.why_jit = None, _MIXED
+        return swaps
 
     @property
     def mode(self) -> str:
@@ -80,3 +101,28 @@ class KernelSet:
             self.kernels[name] = wrapped
             return wrapped
         return declare
+
+
+# Compiled code can only call a kernel of another module that is a numba dispatcher, so the
+# kernel sets of one process all run one way: the first set that takes the JIT path (its
+# module not built, or edited since) turns every ahead-of-time set into JIT ones, rebinding
+# their kernels and exports wherever kernel code looks them up (the modules' globals), and
+# every later set takes the JIT path too. numba is imported by then anyway.
+_MIXED = "another kernel module of this process is JIT-compiled"
+
+
+def _all_jit() -> None:
+    swaps: dict[int, tuple[Any, Any]] = {}  # (the old objects kept alive: ids stay theirs)
+    for kernel_set in SETS.values():
+        if kernel_set.aot is not None:
+            swaps.update(kernel_set._to_jit())
+    if not swaps:
+        return
+    namespaces = {id(d): d for d in (
+        [vars(m) for m in map(sys.modules.get, SETS) if m is not None]
+        + [fn.__globals__ for s in SETS.values() for fn, _ in s.python.values()])}
+    for namespace in namespaces.values():
+        for key, value in list(namespace.items()):
+            swap = swaps.get(id(value))
+            if swap is not None and swap[0] is value:
+                namespace[key] = swap[1]
