@@ -12,7 +12,9 @@ exports' declared types, which need not be the exact types a JIT caller passes, 
 read-only array) never add a second signature to a kernel in the user's cache. The
 extension is written to a temporary directory beside its final place and renamed into it,
 so a reader never sees half a file; older extensions of the same module are then removed.
-A module whose extension is up to date is not rebuilt. A module whose kernels call another
+A module whose extension is up to date is not rebuilt. A module without exports (kernels
+only other modules' kernels call) gets a marker file instead of an extension, so it too
+loads without numba. A module whose kernels call another
 kernel module's must name it in ``KernelSet(..., sources=...)`` (the key then covers its
 source too); the build refuses one that does not. Needs a C compiler (pycc compiles
 numba's runtime helpers with it); without one each module reports why and commands go on
@@ -31,8 +33,12 @@ import sys
 import tempfile
 from pathlib import Path
 from types import ModuleType
+from typing import TYPE_CHECKING
 
 from base import aot_load
+
+if TYPE_CHECKING:
+    from base.kernel_set import KernelSet
 
 BUILT, UP_TO_DATE = "built", "up to date"
 
@@ -63,8 +69,8 @@ def build_here(module: str, where: Path) -> str:
 
     importlib.import_module(module)
     kernels = SETS.get(module)
-    if kernels is None or not kernels.exports:
-        return "failed: no KernelSet with exports in the module"
+    if kernels is None:
+        return "failed: no KernelSet in the module"
     if kernels.mode != "jit":
         return "failed: the module was loaded ahead of time, not JIT"
     missing = sorted(kernel_dependencies(module) - set(kernels.sources))
@@ -72,12 +78,27 @@ def build_here(module: str, where: Path) -> str:
         return (f"failed: its kernels call kernels of {', '.join(missing)}: declare them as "
                 "KernelSet(__name__, sources=(...))")
     final = aot_load.path(module, aot_load.key(module, kernels.sources), where)
+    if not kernels.exports:  # kernels only other modules' kernels call: a marker
+        final = aot_load.kernels_only(final)
     if final.is_file():
         return UP_TO_DATE
+    where.mkdir(parents=True, exist_ok=True)
+    if not kernels.exports:
+        with tempfile.NamedTemporaryFile(dir=where, prefix=f".{module}-", delete=False) as f:
+            f.write(b"kernels compiled into the extensions of the modules calling them\n")
+        os.replace(f.name, final)
+    else:
+        _compile(module, kernels, final)
+    for old in where.glob(f"{module}-*"):  # earlier builds of the module
+        if old != final and old.is_file():
+            old.unlink(missing_ok=True)
+    return BUILT
+
+
+def _compile(module: str, kernels: KernelSet, final: Path) -> None:
     from numba.pycc import CC
 
-    where.mkdir(parents=True, exist_ok=True)
-    with tempfile.TemporaryDirectory(prefix=f".{module}-", dir=where) as tmp:
+    with tempfile.TemporaryDirectory(prefix=f".{module}-", dir=final.parent) as tmp:
         cc = CC(aot_load.extension_name(module), source_module=module)
         cc.output_dir = tmp
         cc.output_file = final.name
@@ -86,10 +107,6 @@ def build_here(module: str, where: Path) -> str:
             cc.export(name, signature)(_entry(name, kernels.kernels[name], signature))
         cc.compile()
         os.replace(Path(tmp) / final.name, final)
-    for old in where.glob(f"{module}-*"):  # earlier builds of the module
-        if old != final and old.is_file():
-            old.unlink(missing_ok=True)
-    return BUILT
 
 
 def kernel_dependencies(module: str) -> set[str]:

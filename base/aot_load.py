@@ -30,6 +30,7 @@ FORMAT = "1"  # bump when the extensions' layout or contents change in a way the
 _HERE = Path(__file__).resolve().parent
 # the files whose change changes what a build makes
 _BUILD_FILES = ("kernel_set.py", "aot_load.py", "aot_build.py")
+_SUFFIX = importlib.machinery.EXTENSION_SUFFIXES[0]
 _shared: list[bytes] = []  # the part of every key that is the same for all modules
 
 
@@ -81,8 +82,14 @@ def key(module: str, sources: tuple[str, ...] = ()) -> str:
 
 def path(module: str, key_: str, where: Path | None = None) -> Path:
     """The file of ``module``'s extension with key ``key_``."""
-    suffix = importlib.machinery.EXTENSION_SUFFIXES[0]
-    return (where or directory()) / f"{module}-{key_}{suffix}"
+    return (where or directory()) / f"{module}-{key_}{_SUFFIX}"
+
+
+def kernels_only(extension: Path) -> Path:
+    """The marker a build leaves for a module without exports (its kernels are compiled
+    into the extensions of the modules calling them): there is no extension to load, but
+    its sources are the ones those extensions were built from."""
+    return extension.with_name(extension.name.removesuffix(_SUFFIX) + ".kernels-only")
 
 
 def load(module: str, sources: tuple[str, ...] = ()) -> tuple[ModuleType | None, str]:
@@ -92,6 +99,8 @@ def load(module: str, sources: tuple[str, ...] = ()) -> tuple[ModuleType | None,
     try:
         file = path(module, key(module, sources))
         if not file.is_file():
+            if kernels_only(file).is_file():  # built: nothing to load, nothing to compile
+                return ModuleType(extension_name(module)), ""
             return None, "not built for these sources"
         name = extension_name(module)
         loader = importlib.machinery.ExtensionFileLoader(name, str(file))

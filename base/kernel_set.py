@@ -94,8 +94,9 @@ class KernelSet:
                 return self.kernel(fn, **options)
             built = getattr(self.aot, name, None)
             if built is None:  # built from these very sources, so a broken build
-                raise ImportError(f"{self.aot.__file__} has no kernel {name}: delete it "
-                                  "and run camlab88 warm-up again")
+                where = getattr(self.aot, "__file__", f"the build of {self.module}")
+                raise ImportError(f"{where} has no kernel {name}: delete it and run "
+                                  "camlab88 warm-up again")
             self.python[name] = (fn, {**self.options, **options})
             wrapped = aot_args.checked(built, name, signature)
             self.kernels[name] = wrapped

@@ -73,3 +73,30 @@ def test_an_undeclared_kernel_module_is_refused(tmp_path: Path) -> None:
 def test_a_declared_one_is_in_the_key(tmp_path: Path) -> None:
     assert _check(tmp_path, "declared", ', sources=("declared.inner",)', COVERED) == [
         "['declared.inner']", "True"]
+
+
+def test_a_module_of_kernels_only_gets_a_marker(tmp_path: Path) -> None:
+    """No exports, so nothing to compile on its own (its kernels are compiled into the
+    callers' extensions): the build leaves a marker, and the module then loads without
+    numba; edited, it takes the JIT path."""
+    (tmp_path / "onlykernels.py").write_text(INNER)
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"),
+               CAMLAB88_AOT_DIR=str(tmp_path / "aot"),
+               PYTHONPATH=os.pathsep.join([str(tmp_path), str(ROOT)]))
+    build = subprocess.run([sys.executable, "-m", "base.aot_build", "--out",
+                            str(tmp_path / "aot"), "onlykernels"], capture_output=True,
+                           text=True, timeout=300, cwd=tmp_path, env=dict(env, CAMLAB88_AOT="0"))
+    assert build.stdout == "onlykernels\tbuilt\n", build.stderr
+    assert [p.suffix for p in (tmp_path / "aot").iterdir()] == [".kernels-only"]
+    code = ("import sys, onlykernels as k\n"
+            "print(k.kernels.mode, k.twice(4), 'numba' in sys.modules)\n")
+
+    def run() -> str:
+        done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                              timeout=300, cwd=tmp_path, env=env)
+        assert done.returncode == 0, done.stderr
+        return done.stdout
+
+    assert run() == "aot 8 False\n"
+    (tmp_path / "onlykernels.py").write_text(INNER + "# edited\n")
+    assert run() == "jit 8 True\n"
