@@ -97,6 +97,10 @@ def build_here(module: str, where: Path) -> str:
 
 def _compile(module: str, kernels: KernelSet, final: Path) -> None:
     from numba.pycc import CC
+    from numba.pycc.platform import external_compiler_works
+
+    if not external_compiler_works():  # (numba's own message is about conda)
+        raise NoCompiler("no working C compiler (numba.pycc needs one: gcc, say)")
 
     with tempfile.TemporaryDirectory(prefix=f".{module}-", dir=final.parent) as tmp:
         cc = CC(aot_load.extension_name(module), source_module=module)
@@ -107,6 +111,10 @@ def _compile(module: str, kernels: KernelSet, final: Path) -> None:
             cc.export(name, signature)(_entry(name, kernels.kernels[name], signature))
         cc.compile()
         os.replace(Path(tmp) / final.name, final)
+
+
+class NoCompiler(RuntimeError):
+    """numba.pycc cannot build without a C compiler."""
 
 
 def kernel_dependencies(module: str) -> set[str]:
@@ -148,6 +156,8 @@ def main(argv: list[str] | None = None) -> int:
     for module in args.modules:
         try:
             outcome = build_here(module, args.out)
+        except NoCompiler as exc:
+            outcome = f"failed: {exc}"
         except Exception as exc:  # reported per module; the others still build
             first = (str(exc).strip().splitlines() or [""])[0]
             outcome = f"failed: {type(exc).__name__}: {first}"

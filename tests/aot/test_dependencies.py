@@ -100,3 +100,17 @@ def test_a_module_of_kernels_only_gets_a_marker(tmp_path: Path) -> None:
     assert run() == "aot 8 False\n"
     (tmp_path / "onlykernels.py").write_text(INNER + "# edited\n")
     assert run() == "jit 8 True\n"
+
+
+def test_without_a_c_compiler_the_warm_up_step_says_so(tmp_path: Path) -> None:
+    env = dict(os.environ, CC="/bin/false", NUMBA_CACHE_DIR=str(tmp_path / "cache"),
+               CAMLAB88_AOT_DIR=str(tmp_path / "aot"), PYTHONPATH=str(ROOT))
+    code = "from camlab88.commands.warmup.aot import build_step\nbuild_step(9, 9)\n"
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          timeout=600, cwd=tmp_path, env=env)
+    assert done.returncode == 0, done.stderr
+    lines = done.stderr.splitlines()
+    assert lines[0].startswith("[9/9] ahead-of-time modules ...")
+    assert "apps.ca.kernels: failed: no working C compiler" in done.stderr
+    assert all(ln.endswith("its kernels stay JIT-compiled") for ln in lines[1:] if "failed" in ln)
+    assert not (tmp_path / "aot").exists() or not any((tmp_path / "aot").glob("*.so"))
