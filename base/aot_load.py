@@ -125,7 +125,7 @@ def _shared_part() -> bytes:
 
 def _numba_version() -> str:
     """numba's version file, found without importing numba."""
-    spec = importlib.util.find_spec("numba")
+    spec = importlib.machinery.PathFinder.find_spec("numba")  # (no import hooks run)
     if spec is None or not spec.submodule_search_locations:
         return "no numba"
     try:

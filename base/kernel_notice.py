@@ -36,7 +36,6 @@ from ahead-of-time extensions never imports numba at all.
 from __future__ import annotations
 
 import importlib.abc
-import importlib.util
 import os
 import signal
 import sys
@@ -100,15 +99,21 @@ class _NumbaWatch(importlib.abc.MetaPathFinder):
     def find_spec(self, name: str, path: Any, target: Any = None) -> Any:
         if name != "numba":
             return None
-        _unwatch()
-        spec = importlib.util.find_spec(name)
+        for finder in list(sys.meta_path):  # the spec the other finders give
+            found = getattr(finder, "find_spec", None)
+            spec = found(name, path, target) if finder is not self and found else None
+            if spec is not None:
+                break
+        else:
+            return None
         loader = getattr(spec, "loader", None)
         if loader is None or not hasattr(loader, "exec_module"):
             return spec
         original = loader.exec_module
 
-        def exec_module(module: Any) -> None:
+        def exec_module(module: Any) -> None:  # (a spec only looked up is never executed)
             original(module)
+            _unwatch()
             _start_listening()
 
         loader.exec_module = exec_module

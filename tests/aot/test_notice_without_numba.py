@@ -18,6 +18,10 @@ from base.kernel_notice import announce_compiles
 
 announce_compiles("early toy", 2.0, __name__)  # before numba, as a package __init__ may
 
+import importlib.util
+
+importlib.util.find_spec("numba")  # only looked up (not imported) first: still announced
+
 from numba import njit
 
 
