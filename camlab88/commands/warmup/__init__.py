@@ -45,16 +45,41 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 
 
 def _run(args: argparse.Namespace) -> int:
+    import os
+    import time
+
+    from base import aot_load
+    from camlab88.commands.warmup.aot import build_step
+
+    start = time.perf_counter()
+    total = len(STEPS) + 1
+    # The JIT steps fill numba's cache even where extensions exist: a process in which some
+    # kernel set is JIT-compiled runs them all so (base/kernel_set.py).
+    saved = os.environ.get(aot_load.OFF_VARIABLE)
+    os.environ[aot_load.OFF_VARIABLE] = "0"
+    try:
+        status = _jit_steps(total)
+    finally:
+        if saved is None:
+            os.environ.pop(aot_load.OFF_VARIABLE, None)
+        else:
+            os.environ[aot_load.OFF_VARIABLE] = saved
+    if status:
+        return status
+    build_step(total, total)
+    print(f"camlab88 warm-up: every kernel compiled in {time.perf_counter() - start:.0f} s",
+          file=sys.stderr)
+    return 0
+
+
+def _jit_steps(total: int) -> int:
     import contextlib
     import io
     import tempfile
     import time
 
     from base.kernel_notice import complete_pending, run_completion
-    from camlab88.commands.warmup.aot import build_step
 
-    start = time.perf_counter()
-    total = len(STEPS) + 1
     with tempfile.TemporaryDirectory(prefix="camlab88-warm-up-") as scratch:
         for i, (what, step) in enumerate(STEPS, 1):
             print(f"[{i}/{total}] {what} ...", end="", file=sys.stderr, flush=True)
@@ -67,9 +92,6 @@ def _run(args: argparse.Namespace) -> int:
                   file=sys.stderr, flush=True)
             if failed:
                 return 1
-    build_step(total, total)
-    print(f"camlab88 warm-up: every kernel compiled in {time.perf_counter() - start:.0f} s",
-          file=sys.stderr)
     return 0
 
 
