@@ -27,12 +27,15 @@ the outermost compile runs, SIGINT instead ends the process at once with status 
 line on stderr. Nothing is lost that would have been kept: numba writes its cache files by
 rename, and the project writes user files atomically (base.atomicfile).
 
-It lives in protocols/ because apps, emulator and the command line may all import it; it
-imports numba only when a kernel module (which has imported numba already) registers.
+It lives in base/ because apps, emulator and the command line may all import it. It never
+imports numba itself: a group registered before numba is imported starts the listening
+(and the lean cache loads) as numba's import finishes, so a process whose kernels all come
+from ahead-of-time extensions never imports numba at all.
 """
 
 from __future__ import annotations
 
+import importlib.abc
 import os
 import signal
 import sys
@@ -76,10 +79,60 @@ def announce_compiles(label: str, seconds: float, *modules: str,
     with _lock:
         for name in modules:
             _state.groups.setdefault(name, group)
+    if "numba" in sys.modules:
+        _start_listening()
+    else:  # nothing can compile before numba is imported; a process that never does
+        _watch_for_numba()  # (ahead-of-time kernels, base/kernel_set.py) pays nothing
+
+
+def _start_listening() -> None:
+    with _lock:
         if not _state.listening:
             _listen()
             lean_cache_loads()  # a warm run's first kernel call: ~0.2 s less
             _state.listening = True
+
+
+class _NumbaWatch(importlib.abc.MetaPathFinder):
+    """Starts listening as soon as numba's own import has finished (once)."""
+
+    def find_spec(self, name: str, path: Any, target: Any = None) -> Any:
+        if name != "numba":
+            return None
+        for finder in list(sys.meta_path):  # the spec the other finders give
+            found = getattr(finder, "find_spec", None)
+            spec = found(name, path, target) if finder is not self and found else None
+            if spec is not None:
+                break
+        else:
+            return None
+        loader = getattr(spec, "loader", None)
+        if loader is None or not hasattr(loader, "exec_module"):
+            return spec
+        original = loader.exec_module
+
+        def exec_module(module: Any) -> None:  # (a spec only looked up is never executed)
+            original(module)
+            _unwatch()
+            _start_listening()
+
+        loader.exec_module = exec_module
+        return spec
+
+
+_watch = _NumbaWatch()
+
+
+def _watch_for_numba() -> None:
+    with _lock:
+        if _watch not in sys.meta_path and not _state.listening:
+            sys.meta_path.insert(0, _watch)
+
+
+def _unwatch() -> None:
+    with _lock:
+        if _watch in sys.meta_path:
+            sys.meta_path.remove(_watch)
 
 
 def notice_line(label: str, seconds: float) -> str:

@@ -4,10 +4,13 @@
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+
+from base.kernel_set import KernelSet
+
+kernels = KernelSet(__name__)
 
 
-@njit(cache=True)
+@kernels.export("int64[:](uint8[::1])")
 def _histogram(flat):
     counts = np.zeros(256, np.int64)
     for i in range(flat.shape[0]):

@@ -10,7 +10,10 @@ rle_body.py, which still words the error messages.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+
+from base.kernel_set import KernelSet
+
+kernels = KernelSet(__name__)
 
 PLANE = 65536
 MAX_STATE = 255
@@ -38,7 +41,7 @@ def _tables() -> tuple[np.ndarray, np.ndarray]:
 _KIND, _STATE = _tables()
 
 
-@njit(cache=True, inline="always")
+@kernels.kernel(inline="always")
 def _symbol(b, i, kind, state):
     """(state, length) of the symbol at byte i; length 0 if there is none."""
     k = kind[b[i]]
@@ -49,7 +52,7 @@ def _symbol(b, i, kind, state):
     return np.int64(0), np.int64(0)
 
 
-@njit(cache=True)
+@kernels.export("int64[:](uint8[::1], int32[::1], int32[::1], int32[::1], uint8[::1])")
 def scan(b, ry, rx, rn, rs):
     """The one pass over the body bytes ``b`` (uint8): the _FIELDS figures above, and the
     live runs' rows, columns, lengths and states in ``ry``, ``rx``, ``rn``, ``rs`` (room for
@@ -121,7 +124,8 @@ def scan(b, ry, rx, rn, rs):
     return res
 
 
-@njit(cache=True)
+@kernels.export("none(int32[::1], int32[::1], int32[::1], uint8[::1], int64, uint8[:, ::1], "
+                "int64, int64)")
 def to_grid(ry, rx, rn, rs, runs, grid, top, left):
     """The first ``runs`` runs written into ``grid`` (rows from ``top``, columns from
     ``left``)."""
@@ -131,7 +135,8 @@ def to_grid(ry, rx, rn, rs, runs, grid, top, left):
             grid[y, x] = rs[k]
 
 
-@njit(cache=True)
+@kernels.export("none(int32[::1], int32[::1], int32[::1], uint8[::1], int64, int64[::1], "
+                "int64[::1], int64[::1], int64, int64)")
 def to_cells(ry, rx, rn, rs, runs, cx, cy, ct, top, left):
     """The first ``runs`` runs as cell arrays, relative to (left, top)."""
     i = 0

@@ -5,7 +5,9 @@ base.kernel_notice). ``warm-up`` does all of it at once instead — useful befor
 to an audience, or in CI so every test process loads the kernels from one cache. Each step
 is a group's own completion (every kernel of the group called once) or, for groups without
 one, a small command run in a scratch directory, in this process, so the kernels land in the
-same cache every later command reads.
+same cache every later command reads. The last step builds the ahead-of-time extensions of
+the modules listed in ``aot.py`` (a command that loads only those never imports numba);
+without a C compiler it says so and the JIT-compiled kernels are used.
 """
 
 from __future__ import annotations
@@ -23,7 +25,7 @@ STEPS: tuple[tuple[str, str | tuple[str, ...]], ...] = (
                           "--timing", "walk_ticks", "--out", "w.kas")),
     ("Sigma raster", "emulator.sigma.kernel_warmup:compile_kernels"),
     ("snooker", ("snooker", "simulate", "--break", "5", "--out", "b.cp")),
-    ("Rainbow", ("demo", "--headless", "--only", "shelf", "--out", "demo")),
+    ("Rainbow", "emulator.rainbow.kernel_warmup:compile_kernels"),
     ("KAS painting", ("demo", "--headless", "--only", "paint", "--out", "demo")),
     ("snooker visualiser and renderer",
      ("demo", "--headless", "--only", "snooker_camera", "--only", "film", "--out", "demo")),
@@ -38,6 +40,34 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 
 
 def _run(args: argparse.Namespace) -> int:
+    import os
+    import time
+
+    from base import aot_load
+    from camlab88.commands.warmup.aot import build_step
+
+    start = time.perf_counter()
+    total = len(STEPS) + 1
+    # The JIT steps fill numba's cache even where extensions exist: a process in which some
+    # kernel set is JIT-compiled runs them all so (base/kernel_set.py).
+    saved = os.environ.get(aot_load.OFF_VARIABLE)
+    os.environ[aot_load.OFF_VARIABLE] = "0"
+    try:
+        status = _jit_steps(total)
+    finally:
+        if saved is None:
+            os.environ.pop(aot_load.OFF_VARIABLE, None)
+        else:
+            os.environ[aot_load.OFF_VARIABLE] = saved
+    if status:
+        return status
+    build_step(total, total)
+    print(f"camlab88 warm-up: every kernel compiled in {time.perf_counter() - start:.0f} s",
+          file=sys.stderr)
+    return 0
+
+
+def _jit_steps(total: int) -> int:
     import contextlib
     import io
     import tempfile
@@ -45,10 +75,9 @@ def _run(args: argparse.Namespace) -> int:
 
     from base.kernel_notice import complete_pending, run_completion
 
-    start = time.perf_counter()
     with tempfile.TemporaryDirectory(prefix="camlab88-warm-up-") as scratch:
         for i, (what, step) in enumerate(STEPS, 1):
-            print(f"[{i}/{len(STEPS)}] {what} ...", end="", file=sys.stderr, flush=True)
+            print(f"[{i}/{total}] {what} ...", end="", file=sys.stderr, flush=True)
             t0 = time.perf_counter()
             with contextlib.redirect_stdout(io.StringIO()), contextlib.chdir(scratch):
                 failed = _step(step, run_completion)
@@ -58,8 +87,6 @@ def _run(args: argparse.Namespace) -> int:
                   file=sys.stderr, flush=True)
             if failed:
                 return 1
-    print(f"camlab88 warm-up: every kernel compiled in {time.perf_counter() - start:.0f} s",
-          file=sys.stderr)
     return 0
 
 

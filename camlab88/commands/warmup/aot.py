@@ -1,0 +1,34 @@
+"""The kernel modules compiled ahead of time by ``camlab88 warm-up`` (base/aot_build.py), in
+one place: a module listed here must declare its kernels through base.kernel_set.KernelSet,
+and tests/aot builds every one and compares its results with the JIT path's."""
+
+from __future__ import annotations
+
+import sys
+import time
+
+# what a Life `ca run` loads outside HashLife
+AOT_MODULES: tuple[str, ...] = (
+    "apps.ca.grid_stats",
+    "apps.ca.rle_scan",
+    "apps.ca.kernels",
+)
+
+STEP = "ahead-of-time modules"
+
+
+def build_step(index: int, total: int) -> None:
+    """Build the listed modules' extensions, one line each; a failure (no C compiler, say)
+    is reported and leaves those modules on the JIT path."""
+    from base import aot_build, aot_load
+
+    print(f"[{index}/{total}] {STEP} ...", end="", file=sys.stderr, flush=True)
+    if not aot_load.enabled():
+        print(f" skipped ({aot_load.OFF_VARIABLE} is off)", file=sys.stderr, flush=True)
+        return
+    t0 = time.perf_counter()
+    outcomes = aot_build.build(AOT_MODULES)
+    print(f" ({time.perf_counter() - t0:.1f} s, in {aot_load.directory()})", file=sys.stderr)
+    for module, outcome in outcomes.items():
+        note = ("; its kernels stay JIT-compiled" if outcome.startswith("failed") else "")
+        print(f"      {module}: {outcome}{note}", file=sys.stderr, flush=True)
