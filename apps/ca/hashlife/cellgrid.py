@@ -2,8 +2,9 @@
 generations, by running the rules (``leaf.generation``) on its cells as a grid of
 life-form values.
 
-The scratch ``G`` is the store's common scratch (uint64, 4 planes of the base node's side
-squared), read here as int64: planes 0 and 1 hold this and the next generation, plane 2
+The scratch ``G`` is the recursion's (uint64, 2-d: 4 planes of the base node's side squared,
+one above the other), read here as int64 planes (a reshape per call: a helper call numba
+makes, too slow for the bit leaves' kernel but small beside this one's work): planes 0 and 1 hold this and the next generation, plane 2
 node ids while a centre is built, plane 3 the messages.  The rules arrive packed as uint64
 (the common type of the recursion's rules argument) and are read as int64.
 """
@@ -66,7 +67,7 @@ def advance(node, T, nodes, slots, leaves, lslots, meta, R, G):
     level = np.int64(nodes[node, LEVEL])
     n = np.int64(1) << level
     r = meta[REACH]
-    cells = G.view(np.int64)
+    cells = G.view(np.int64).reshape(4, n, n)
     rules = R.view(np.int64)
     to_grid(node, level, cells, np.int64(0), nodes)
     s = np.int64(0)

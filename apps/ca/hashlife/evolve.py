@@ -45,7 +45,7 @@ from base.kernel_set import KernelSet
 
 kernels = KernelSet(__name__)
 
-RULES, SCRATCH = "uint64[::1]", "uint64[:, :, ::1]"
+RULES, SCRATCH = "uint64[::1]", "uint64[:, ::1]"
 
 
 @kernels.kernel(inline="always")

@@ -47,7 +47,7 @@ class GenericRun(StoreRun):
             store = Store(0, base, shift, reach, limit_bytes=memory, nodes=NODES,
                           min_nodes=MIN_NODES)
             run = cls(store, pack(rules).view(np.uint64),
-                      np.zeros((4, 1 << base, 1 << base), np.uint64), reach,
+                      np.zeros((4 << base, 1 << base), np.uint64), reach,
                       order_matters(rules), rules.max_form)
             rules._tables["hashlife_run"] = run
         run.store.limit_bytes = int(memory)

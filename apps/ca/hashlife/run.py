@@ -16,7 +16,7 @@ from apps.ca.hashlife.store import Store
 class StoreRun:
     store: Store
     rules: np.ndarray  # uint64: the leaf kernel's packed rules
-    scratch: np.ndarray  # uint64, 3-d: the leaf kernel's work space
+    scratch: np.ndarray  # uint64, 2-d: the leaf kernel's work space
 
     def advance(self, framed: int, generations: int) -> int:
         """The centre of the framed plane after ``generations``; -1 if a table filled."""

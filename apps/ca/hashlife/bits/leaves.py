@@ -1,8 +1,7 @@
 """The binary path's base case: a level-5 node (32 x 32 cells, four leaves) to its centre
 leaf after up to 8 generations, by bit operations on two rows of 32 cells per uint64.
 
-The scratch (uint64, the store's common 3-d scratch of shape PLANES x 1 x 32, read as
-PLANES x 32): planes 0 and 1 hold the live cells of this and the next
+The scratch ``G`` (uint64, PLANES x 32): planes 0 and 1 hold the live cells of this and the next
 generation, plane 2 the wall, in 16 words each (word i: row 2i in bits 0..31, row 2i+1 in
 bits 32..63, column x in bit x of its row); plane 3 is work space.  Generation g is only
 computed in the words that later generations still need (rows beyond the square read
@@ -145,10 +144,9 @@ def lookup(s, d, lo, hi, R, G):
 # (docs/perf/startup.md).  Without numba's runtime, like the recursion, so the call passes
 # its arrays without atomic reference counts (the reason the inlining was measured faster).
 @kernels.kernel(_nrt=False)
-def advance(node, gens, nodes, slots, leaves, lslots, meta, R, G3):
+def advance(node, gens, nodes, slots, leaves, lslots, meta, R, G):
     """The centre leaf of level-5 ``node`` after ``gens`` (0..8) generations; -1 if the
     leaf table is full.  (The arguments are the recursion's; ``slots`` is not needed.)"""
-    G = G3.reshape(G3.shape[0], G3.shape[2])
     load(np.int64(nodes[node, 0]), np.int64(nodes[node, 1]), np.int64(nodes[node, 2]),
          np.int64(nodes[node, 3]), leaves, meta, G)
     s = np.int64(0)

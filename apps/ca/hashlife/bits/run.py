@@ -33,7 +33,7 @@ class BitRun(StoreRun):
         run = rules._tables.get("hashlife_bits_run")
         if run is None:
             store = Store(BIT_LEAF_LEVEL, BIT_LEAF_LEVEL + 1, 0, 1, limit_bytes=memory)
-            run = cls(store, rule.packed, np.zeros((PLANES, 1, 32), np.uint64), rule)
+            run = cls(store, rule.packed, np.zeros((PLANES, 32), np.uint64), rule)
             rules._tables["hashlife_bits_run"] = run
         run.store.limit_bytes = int(memory)
         return run
