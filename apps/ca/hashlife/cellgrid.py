@@ -2,11 +2,11 @@
 generations, by running the rules (``leaf.generation``) on its cells as a grid of
 life-form values.
 
-The scratch ``G`` is the recursion's (uint64, 2-d: 4 planes of the base node's side squared,
-one above the other), read here as int64 planes (a reshape per call: a helper call numba
-makes, too slow for the bit leaves' kernel but small beside this one's work): planes 0 and 1 hold this and the next generation, plane 2
-node ids while a centre is built, plane 3 the messages.  The rules arrive packed as uint64
-(the common type of the recursion's rules argument) and are read as int64.
+The scratch ``G`` is the recursion's (uint64, four square planes of the base node's side,
+one above the other: plane p, row y is G[p * side + y]), read here as int64: planes 0 and 1
+hold this and the next generation, plane 2 node ids while a centre is built, plane 3 the
+messages.  The rules arrive packed as uint64 (the recursion's one type for both kinds of
+leaf) and are read as int64.
 """
 
 from __future__ import annotations
@@ -24,17 +24,18 @@ kernels = KernelSet(__name__, _nrt=False)
 def to_grid(node, level, G, p, nodes):
     """Write the cells of ``node`` into plane ``p`` of G, splitting in place."""
     side = np.int64(1) << level
-    G[p, 0, 0] = node
+    P = p * G.shape[1]
+    G[P, 0] = node
     half = side
     while half > 1:
         quarter = half >> 1
         for y in range(0, side, half):
             for x in range(0, side, half):
-                n = G[p, y, x]
-                G[p, y, x] = nodes[n, 0]
-                G[p, y, x + quarter] = nodes[n, 1]
-                G[p, y + quarter, x] = nodes[n, 2]
-                G[p, y + quarter, x + quarter] = nodes[n, 3]
+                n = G[P + y, x]
+                G[P + y, x] = nodes[n, 0]
+                G[P + y, x + quarter] = nodes[n, 1]
+                G[P + y + quarter, x] = nodes[n, 2]
+                G[P + y + quarter, x + quarter] = nodes[n, 3]
         half = quarter
 
 
@@ -43,22 +44,23 @@ def from_grid(G, p, y0, x0, level, nodes, slots, meta):
     """The node of the 2**level square at (y0, x0) of plane ``p``, built bottom-up in
     plane 2; -1 if the table is full."""
     side = np.int64(1) << level
+    P, W = p * G.shape[1], 2 * G.shape[1]
     for y in range(side):
         for x in range(side):
-            G[2, y, x] = G[p, y0 + y, x0 + x]
+            G[W + y, x] = G[P + y0 + y, x0 + x]
     step = np.int64(1)
     k = np.int64(1)
     while step < side:
         for y in range(0, side, 2 * step):
             for x in range(0, side, 2 * step):
-                n = join(G[2, y, x], G[2, y, x + step], G[2, y + step, x],
-                         G[2, y + step, x + step], k, nodes, slots, meta)
+                n = join(G[W + y, x], G[W + y, x + step], G[W + y + step, x],
+                         G[W + y + step, x + step], k, nodes, slots, meta)
                 if n < 0:
                     return np.int64(-1)
-                G[2, y, x] = n
+                G[W + y, x] = n
         step *= 2
         k += 1
-    return np.int64(G[2, 0, 0])
+    return np.int64(G[W, 0])
 
 
 @kernels.kernel
@@ -67,7 +69,7 @@ def advance(node, T, nodes, slots, leaves, lslots, meta, R, G):
     level = np.int64(nodes[node, LEVEL])
     n = np.int64(1) << level
     r = meta[REACH]
-    cells = G.view(np.int64).reshape(4, n, n)
+    cells = G.view(np.int64)
     rules = R.view(np.int64)
     to_grid(node, level, cells, np.int64(0), nodes)
     s = np.int64(0)
