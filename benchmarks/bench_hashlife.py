@@ -43,6 +43,9 @@ CASES = [("acorn", pattern_path("acorn"), 5206),
          ("gosper_gun", pattern_path("gosper_gun"), 100_000),
          ("puffer_train", str(HERE / "patterns" / "puffer_train.rle"), 30_000),
          ("spacefiller", str(HERE / "patterns" / "spacefiller.rle"), 65_000)]
+# The generic path (multi-state rules, leaves of life-form values): ours only.
+GENERIC = [("turing_primes", "turing_primes", pattern_path("primes_25"), 4096),
+           ("circuits", "circuits", pattern_path("adder_demo"), 2048)]
 RUNS = 5
 
 
@@ -56,8 +59,9 @@ def rle_body(path: str) -> str:
     return "".join(lines)
 
 
-def ours(path: str, generations: int) -> tuple[list[float], list[float], int, str]:
-    rules = load_rules(rules_path("life"))
+def ours(path: str, generations: int,
+         rules_name: str = "life") -> tuple[list[float], list[float], int, str]:
+    rules = load_rules(rules_path(rules_name))
     xs, ys, ts = read_pattern(path).placed(CENTRE, CENTRE, "identity")
     cpu, wall = [], []
     for _ in range(RUNS):
@@ -70,14 +74,17 @@ def ours(path: str, generations: int) -> tuple[list[float], list[float], int, st
         pop = e.population
         cpu.append(time.process_time() - c)
         wall.append(time.perf_counter() - w)
+        box = e.stats()["bbox"]
     bits = rules._tables.get("hashlife_bits_run")
     if bits is not None:
         s = bits.store
         table = f"binary {s.bytes / 2**20:.1f} MB, {s.count:,} nodes + {s.leaf_count:,} leaves"
     else:
         s = rules._tables["hashlife_run"].store
-        table = f"generic {s.bytes / 2**20:.1f} MB, {s.count:,} nodes"
-    return cpu, wall, pop, table
+        # nodes made: ids start after the leaves' (before one store: after 65537 value ids)
+        made = s.count - (1 if hasattr(s, "leaf_count") else 65537)
+        table = f"generic {s.bytes / 2**20:.1f} MB, {made:,} nodes"
+    return cpu, wall, pop, f"{table}, box {box}"
 
 
 def theirs(path: str, generations: int) -> tuple[list[float], list[float], int] | str:
@@ -142,13 +149,17 @@ def main() -> None:
         cpu, wall, pop, table = ours(path, gens)
         ref = theirs(path, gens)
         if isinstance(ref, str):
-            print(f"{name:14} {gens:>11,} {pop:>12,}  {fmt(cpu)}   {ref}")
+            print(f"{name:14} {gens:>11,} {pop:>12,}  {fmt(cpu)}   {ref}\n{'':16}{table}")
             continue
         rcpu, _, rpop = ref
         same = "" if rpop == pop else f"  POPULATIONS DIFFER: lifelib {rpop}"
         ratio = min(cpu) / max(min(rcpu), 1e-4)
         print(f"{name:14} {gens:>11,} {pop:>12,}  {fmt(cpu)}   {fmt(rcpu)}   {ratio:5.1f}x  "
               f"{fmt(wall)}  {table}   {load()}{same}")
+    for name, rules_name, path, gens in GENERIC:
+        cpu, wall, pop, table = ours(path, gens, rules_name)
+        print(f"{name:14} {gens:>11,} {pop:>12,}  {fmt(cpu)}   {'':26}{'':9}{fmt(wall)}  "
+              f"{table}   {load()}")
     if "--no-process" not in sys.argv:
         whole_processes()
 

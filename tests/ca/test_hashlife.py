@@ -114,17 +114,18 @@ def test_checkpoint_after_a_jump_equals_one_after_stepping(tmp_path) -> None:
     assert back.same_state(stepped)
 
 
-def test_jumps_interleave_with_edits_and_direct_steps() -> None:
-    e = soup(LIBRARY["life"], 11, *PLACES[0])
+@pytest.mark.parametrize("name", ["life", "maze"])  # bit leaves; value leaves
+def test_jumps_interleave_with_edits_and_direct_steps(name: str) -> None:
+    e = soup(LIBRARY[name], 11, *PLACES[0])
     ref = e.copy()
     e.algorithm = "hashlife"
-    for n in (5, 64):
+    for n in (5, 64, 300):
         e.step(n)
-        ref.step(n)
+        ref.step_direct(n)
         e.set(30010, 30010, 1)
         ref.set(30010, 30010, 1)
         e.step_direct(3)
-        ref.step(3)
+        ref.step_direct(3)
     assert e.same_state(ref)
 
 

@@ -174,20 +174,6 @@ def test_checkpoint_after_a_jump_equals_one_after_stepping() -> None:
     assert log.parse_checkpoint(log.format_checkpoint(jumped)).same_state(stepped)
 
 
-def test_jumps_interleave_with_edits_and_direct_steps() -> None:
-    e = soup(LIFE, 11, *PLACES[0])
-    ref = e.copy()
-    e.algorithm = "hashlife"
-    for n in (5, 64, 1000):
-        e.step(n)
-        ref.step_direct(n)
-        e.set(30010, 30010, 1)
-        ref.set(30010, 30010, 1)
-        e.step_direct(3)
-        ref.step_direct(3)
-    assert e.same_state(ref)
-
-
 def test_a_collection_for_one_engine_keeps_another_engines_tree() -> None:
     rules = parse_rules(LIFE.text, source="life-bits-two-engines")  # its own tables
     first, second = soup(rules, 21, *PLACES[0]), soup(rules, 22, 20000, 20000, n=3000,

@@ -17,7 +17,7 @@ def test_a_collection_for_one_engine_keeps_another_engines_tree() -> None:
     ref = first.copy()
     for e in (first, second):
         e.algorithm = "hashlife"
-        e.hashlife_memory = 6 << 20  # the smallest generic table, and no room to grow
+        e.hashlife_memory = 3 << 20  # the smallest generic table, and no room to grow
     first.step(300)  # its state is now only a tree
     assert first.tree is not None and "hashlife_bits_run" not in rules._tables
     store = rules._tables["hashlife_run"].store

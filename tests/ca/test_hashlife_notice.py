@@ -17,13 +17,14 @@ ROOT = Path(__file__).resolve().parents[2]
 def test_every_hashlife_kernel_module_is_in_an_announced_group() -> None:
     package = ROOT / "apps" / "ca" / "hashlife"
     with_kernels = {".".join(p.relative_to(ROOT).with_suffix("").parts)
-                    for p in package.rglob("*.py") if "@njit" in p.read_text()}
-    assert {"apps.ca.hashlife.evolve", "apps.ca.hashlife.bits.evolve"} <= with_kernels
+                    for p in package.rglob("*.py")
+                    if "@njit" in p.read_text() or "@kernels." in p.read_text()}
+    assert {"apps.ca.hashlife.evolve", "apps.ca.hashlife.bits.leaves"} <= with_kernels
     missing = with_kernels - set(kernel_notice._state.groups)
     assert not missing, f"kernels compiled without the notice: {sorted(missing)}"
     labels = {kernel_notice._state.groups[m].label for m in with_kernels}
-    assert labels == {"HashLife rule", "HashLife", "binary HashLife", "binary HashLife cell-list",
-                      "binary HashLife growth and collection"}
+    assert labels == {"HashLife rule", "HashLife", "HashLife cell-list",
+                      "HashLife growth and collection"}
 
 
 def test_every_hashlife_group_completion_is_a_function() -> None:
@@ -32,7 +33,7 @@ def test_every_hashlife_group_completion_is_a_function() -> None:
 
     completions = {g.completion for m, g in kernel_notice._state.groups.items()
                    if m.startswith("apps.ca.hashlife") and g.completion}
-    assert len(completions) == 4
+    assert len(completions) == 3
     for completion in completions:
         module, _, function = completion.partition(":")
         assert callable(getattr(importlib.import_module(module), function))
@@ -59,19 +60,15 @@ print("population", engine.stats()["population"])
 
 def test_a_first_life_run_compiles_the_binary_group_alone(tmp_path: Path) -> None:
     """Life's first run as `ca run --json` makes it (the pattern from its grid; the
-    completion at its exit included) compiles no generic recursion or table kernel, nor the
-    binary cell lists or collector: each waits, under its own notice, for a run that needs
-    it."""
+    completion at its exit included) compiles the jumps' group alone, not the cell lists or
+    the collector: each waits, under its own notice, for a run that needs it; one notice."""
     env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"), PYTHONPATH=str(ROOT))
     done = subprocess.run([sys.executable, "-c", LIFE_RUN], env=env, capture_output=True,
                           text=True, timeout=600)
     assert done.returncode == 0, done.stderr
     compiled = {line.split()[1] for line in done.stdout.splitlines()
                 if line.startswith("compiled ")}
-    assert "apps.ca.hashlife.bits.evolve" in compiled
-    unused = {f"apps.ca.hashlife.{m}" for m in ("store", "evolve", "convert", "census",
-                                                 "bits.cells", "bits.collect")}
-    assert not compiled & unused
-    assert "compiling HashLife kernels" not in done.stderr
-    assert "cell-list" not in done.stderr
-    assert "compiling binary HashLife kernels" in done.stderr
+    assert {"apps.ca.hashlife.evolve", "apps.ca.hashlife.bits.leaves"} <= compiled
+    assert not compiled & {"apps.ca.hashlife.cells", "apps.ca.hashlife.upkeep"}
+    assert "cell-list" not in done.stderr and "collection" not in done.stderr
+    assert done.stderr.count("compiling HashLife kernels") == 1

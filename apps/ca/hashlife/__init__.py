@@ -7,29 +7,29 @@ docs/ca.md ("Jumping ahead: HashLife") and docs/perf/ca.md.
 
 One tree (``tree``: the universe an engine adopts, the jumps and their memory handling,
 ``plane``: the 65536-square plane's wrapping and bounded edges, ``algorithm``: the strategy
-the engine calls) over a leaf strategy chosen per run:
+the engine calls) over one node store (``store``, with ``upkeep``: growth and garbage
+collection), one memoised recursion (``evolve``), one conversion each way (``grid``: a dense
+window or leaves to a tree; ``cells``: cell lists to a tree and back) and one census
+(``census``); the kind of leaf is chosen per run, and only the leaf kernel depends on it:
 
-* ``generic`` — leaves of life-form values: ``store`` (the node table and its garbage
-  collection), ``leaf`` (one generation of the rules on a small grid), ``evolve`` (the
-  memoised recursion), ``convert`` and ``census`` (cells and statistics);
+* ``generic`` — leaves are single cells holding life-form values (any deterministic rules);
+  the base case runs the rules on a small grid (``cellgrid``, with ``leaf``: one
+  generation of the rules);
 * ``bits.run`` — two-state rules on a plane of 1s: 16 x 16-cell leaves of bits advanced by
-  bit operations, the same answers with far fewer, cheaper nodes (``bits`` holds its
-  table, base case, recursion, conversions and census).
+  bit operations (``bits.leaves``), the same answers with far fewer, cheaper nodes.
 """
 
 from base.kernel_notice import announce_compiles
 
 _WARM = "apps.ca.hashlife.kernel_warmup:compile_"  # + the group's part
 # Cold compile times (CPU) measured on the project's 2-core machine (docs/perf/startup.md).
-# Each group completes alone, so a run compiles only the groups it touches; the rule
-# interpreter is its own group (both paths run it: the binary one to build its table).
+# Each group completes alone, so a run compiles only the groups it touches: the jumps (with
+# the census and a dense window's conversion: all a `ca run --json` of a small Life pattern
+# needs), the cell lists, the tables' growth and collection.  The rule interpreter is its
+# own group (every run runs it: the binary one to build its table).
 announce_compiles("HashLife rule", 1.0, f"{__name__}.leaf")
-announce_compiles("HashLife", 6.0, *(f"{__name__}.{m}" for m in (
-    "store", "evolve", "convert", "census")), completion=_WARM + "generic")
-announce_compiles("binary HashLife", 7.0, *(f"{__name__}.bits.{m}" for m in (
-    "rule", "store", "leaves", "evolve", "convert", "census", "run")),
-    completion=_WARM + "binary")
-announce_compiles("binary HashLife cell-list", 2.0, f"{__name__}.bits.cells",
-                  completion=_WARM + "bit_cells")
-announce_compiles("binary HashLife growth and collection", 2.0, f"{__name__}.bits.collect",
-                  completion=_WARM + "bit_upkeep")
+announce_compiles("HashLife", 7.0, *(f"{__name__}.{m}" for m in (
+    "store", "evolve", "cellgrid", "bits.leaves", "census", "grid")), completion=_WARM + "jumps")
+announce_compiles("HashLife cell-list", 2.0, f"{__name__}.cells", completion=_WARM + "cells")
+announce_compiles("HashLife growth and collection", 2.0, f"{__name__}.upkeep",
+                  completion=_WARM + "upkeep")

@@ -1,141 +1,126 @@
-"""The memoised HashLife recursion, generalised to the rules' message reach.
+"""The memoised HashLife recursion (Gosper 1984), once for both kinds of leaf.
 
-A node of level k (2**k cells square) with 2**s >= the reach knows its centre (level k-1)
-after 2**j generations for any j <= k - 2 - s: the light cone of 2**j generations at reach
-r <= 2**s stays inside the 2**(k-2) margin.  At full speed (j = k - 2 - s) the nine
-overlapping sub-squares advance 2**(j-1) and the four squares built from their results
-advance 2**(j-1) more (Gosper 1984); below full speed the nine contribute their centres
-unadvanced and the four advance 2**j.  Leaves (level ``base``) run the rules directly
-(``leaf.generation``).  Every kernel returns -1 when the node table is full.
+With 2**s at least the rules' message reach, a node of level k knows its centre after T
+generations for any T <= 2**(k-2-s): the light cone stays inside the 2**(k-2) margin.  The
+four squares built from the nine overlapping sub-squares' results advance
+t2 = min(T, 2**(k-3-s)) generations, the nine the rest, T - t2 (none: their centres as they
+are).  At full speed (T = 2**(k-2-s)) that is Gosper's; any other T costs one pass too,
+where jumps of powers of two would take one pass per binary digit.  The memo keeps one T
+per node besides the full-speed result.  Nodes of the base level run the leaf kernel
+directly: ``bits.leaves`` (binary rules: four 16 x 16 bit leaves, up to 8 generations by
+bit operations) or ``cellgrid`` (any rules: the rules on a grid of life-form values).
+Which one is a branch on the store's leaf level, the only place the recursion knows the
+kind of leaf.  Every kernel returns -1 when a table is full.
 
 Written for numba's costs as measured: compiled without numba's runtime (``_nrt=False``:
 nothing here allocates), so array arguments are not atomically reference counted per call
-(on the binary path, bits/evolve.py, that was half the time of small jumps); the recursion
-is self-recursive only (a cached mutually recursive pair crashed the next process), passes
-few arrays, keeps the nine and four squares in scalars (no heap allocation per call) and
-looks up memoised results before calling.
+(that was half the time of small jumps); one signature for both kinds of leaf (the rules
+and the scratch are uint64 for both); self-recursive only (a cached mutually recursive pair
+crashed the next process); the nine and four squares in scalars (no heap allocation per
+call); memoised results looked up before calling.
 """
 
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
-from apps.ca.hashlife.leaf import generation
-from apps.ca.hashlife.store import LEVEL, RES, RESJ
-from apps.ca.hashlife.store import join as _join_inline
+from apps.ca.hashlife import cellgrid
+from apps.ca.hashlife.bits import leaves as bitleaves
+from apps.ca.hashlife.store import (
+    BASE,
+    EMPTY,
+    FULL,
+    LEAF,
+    LEVEL,
+    META_T,
+    NODES,
+    RES,
+    RESJ,
+    SHIFT,
+    TABLES,
+    WALL_AT,
+    join,
+)
+from base.kernel_set import KernelSet
 
+kernels = KernelSet(__name__)
 
-@njit(cache=True, _nrt=False)
-def join(a, b, c, d, nodes, slots, meta):
-    """The store's join as a call, not IR-inlined at each of the recursion's ten-odd sites:
-    the first compile of both recursions took 18 s of CPU instead of 29, with the same jump
-    times in an A/B (docs/perf/startup.md).  Without numba's runtime, as the recursion."""
-    return _join_inline(a, b, c, d, nodes, slots, meta)
-
-
-@njit(cache=True, _nrt=False)
-def to_grid(node, level, G, p, nodes):
-    """Write the cells of ``node`` into plane ``p`` of G, splitting in place."""
-    side = np.int64(1) << level
-    G[p, 0, 0] = node
-    half = side
-    while half > 1:
-        quarter = half >> 1
-        for y in range(0, side, half):
-            for x in range(0, side, half):
-                n = G[p, y, x]
-                G[p, y, x] = nodes[n, 0]
-                G[p, y, x + quarter] = nodes[n, 1]
-                G[p, y + quarter, x] = nodes[n, 2]
-                G[p, y + quarter, x + quarter] = nodes[n, 3]
-        half = quarter
+RULES, SCRATCH = "uint64[::1]", "uint64[:, ::1]"
 
 
-@njit(cache=True, _nrt=False)
-def from_grid(G, p, y0, x0, level, nodes, slots, meta):
-    """The node of the 2**level square at (y0, x0) of plane ``p``, built bottom-up in
-    plane 2; -1 if the table is full."""
-    side = np.int64(1) << level
-    for y in range(side):
-        for x in range(side):
-            G[2, y, x] = G[p, y0 + y, x0 + x]
-    step = np.int64(1)
-    while step < side:
-        for y in range(0, side, 2 * step):
-            for x in range(0, side, 2 * step):
-                n = join(G[2, y, x], G[2, y, x + step], G[2, y + step, x],
-                         G[2, y + step, x + step], nodes, slots, meta)
-                if n < 0:
-                    return np.int64(-1)
-                G[2, y, x] = n
-        step *= 2
-    return np.int64(G[2, 0, 0])
-
-
-@njit(cache=True, _nrt=False)
-def leaf_step(node, j, r, nodes, slots, meta, R, G):
-    """Centre of leaf ``node`` after 2**j generations, by running the rules on its grid
-    (planes 0 and 1 of G in turn)."""
-    level = np.int64(nodes[node, LEVEL])
-    n = np.int64(1) << level
-    to_grid(node, level, G, np.int64(0), nodes)
-    total = np.int64(1) << j
-    s = np.int64(0)
-    for g in range(1, total + 1):
-        lo = n // 4 - (total - g) * r  # only what the later generations still need
-        generation(G, s, 1 - s, lo, n - lo, R)
-        s = 1 - s
-    return from_grid(G, s, n // 4, n // 4, level - 1, nodes, slots, meta)
-
-
-@njit(cache=True, inline="always")
+@kernels.kernel(inline="always")
 def _q(nodes, n, q):
     return np.int64(nodes[n, q])
 
 
-@njit(cache=True, _nrt=False)
-def _centre(n, nodes, slots, meta):
-    """The centre half of ``n`` (no time passes); -1 if the table is full."""
+@kernels.kernel(inline="always")
+def _leaf_step(node, T, nodes, slots, leaves, lslots, meta, R, G):
+    """The leaf kernel: the centre of base-level ``node`` after T generations."""
+    if meta[LEAF] == 0:
+        return cellgrid.advance(node, T, nodes, slots, leaves, lslots, meta, R, G)
+    return bitleaves.advance(node, T, nodes, slots, leaves, lslots, meta, R, G)
+
+
+@kernels.kernel(inline="always")
+def _centre(n, h, nodes, slots, leaves, lslots, meta, R, G):
+    """The centre half of ``n`` (of level h; no time passes); -1 if a table is full."""
+    if h == meta[LEAF] + 1:  # its quadrants are leaves: the leaf kernel, for 0 generations
+        return _leaf_step(n, np.int64(0), nodes, slots, leaves, lslots, meta, R, G)
     return join(_q(nodes, _q(nodes, n, 0), 3), _q(nodes, _q(nodes, n, 1), 2),
-                _q(nodes, _q(nodes, n, 2), 1), _q(nodes, _q(nodes, n, 3), 0), nodes, slots,
-                meta)
+                _q(nodes, _q(nodes, n, 2), 1), _q(nodes, _q(nodes, n, 3), 0), h - 1, nodes,
+                slots, meta)
 
 
-@njit(cache=True, inline="always")
-def _memo(n, j, nodes):
-    """The memoised result of ``n`` for 2**j generations, -2 if none (-1: n is -1)."""
+@kernels.kernel(inline="always")
+def _known(n, T, level, nodes, meta):
+    """The result of ``n`` (of ``level``) for T generations if it is known without
+    recursing — an empty or wall node's, or memoised — else -2 (-1: n is -1)."""
     if n < 0:
         return n
-    if nodes[n, RESJ] == j + 1:
+    if n == meta[EMPTY + level]:
+        return meta[EMPTY + level - 1]
+    if n == meta[WALL_AT + level]:
+        return meta[WALL_AT + level - 1]
+    if T == np.int64(1) << (level - 2 - meta[SHIFT]):
+        if nodes[n, FULL] > 0:
+            return np.int64(nodes[n, FULL])
+    elif nodes[n, RESJ] == T + 1:
         return np.int64(nodes[n, RES])
     return np.int64(-2)
 
 
-@njit(cache=True, _nrt=False)
-def step(node, j, P, nodes, slots, meta, empty, R, G):
-    """Centre of ``node`` after 2**j generations (j <= level - 2 - s); -1 if the table is
-    full.  ``P`` = (leaf level, s, reach)."""
+@kernels.export(f"int64(int64, int64, int64, {NODES}, {META_T})", _nrt=False)
+def known(n, T, level, nodes, meta):
+    """``_known`` for Python (a jump's first look)."""
+    return _known(n, T, level, nodes, meta)
+
+
+# _nrt=False: the recursion allocates nothing, and without numba's runtime its array
+# arguments are not reference counted — perf showed those atomic counts taking half the time
+# of small jumps (gun 1.6 -> 0.7 ms, spacefiller 1.7 -> 0.8, puffer 95 -> 77).
+@kernels.export(f"int64(int64, int64, {TABLES}, {RULES}, {SCRATCH})", _nrt=False)
+def step(node, T, nodes, slots, leaves, lslots, meta, R, G):
+    """Centre of ``node`` after T generations (1 <= T <= 2**(level - 2 - s)); -1 if a table
+    is full.  The caller has looked for a known result first (``_known``)."""
     k = np.int64(nodes[node, LEVEL])
-    if node == empty[k]:
-        return np.int64(empty[k - 1])
-    if k == P[0]:
-        out = leaf_step(node, j, P[2], nodes, slots, meta, R, G)
+    if k == meta[BASE]:
+        out = _leaf_step(node, T, nodes, slots, leaves, lslots, meta, R, G)
     else:
-        full = j == k - 2 - P[1]
-        jj = j - 1 if full else j
+        h = k - 1
+        t2 = min(T, np.int64(1) << (k - 3 - meta[SHIFT]))  # the four's: full speed if it can
+        t1 = T - t2  # the nine's (0: their centres as they are)
         a, b, c, d = _q(nodes, node, 0), _q(nodes, node, 1), _q(nodes, node, 2), \
             _q(nodes, node, 3)
         nine = (a, join(_q(nodes, a, 1), _q(nodes, b, 0), _q(nodes, a, 3), _q(nodes, b, 2),
-                        nodes, slots, meta),
+                        h, nodes, slots, meta),
                 b, join(_q(nodes, a, 2), _q(nodes, a, 3), _q(nodes, c, 0), _q(nodes, c, 1),
-                        nodes, slots, meta),
+                        h, nodes, slots, meta),
                 join(_q(nodes, a, 3), _q(nodes, b, 2), _q(nodes, c, 1), _q(nodes, d, 0),
-                     nodes, slots, meta),
+                     h, nodes, slots, meta),
                 join(_q(nodes, b, 2), _q(nodes, b, 3), _q(nodes, d, 0), _q(nodes, d, 1),
-                     nodes, slots, meta),
+                     h, nodes, slots, meta),
                 c, join(_q(nodes, c, 1), _q(nodes, d, 0), _q(nodes, c, 3), _q(nodes, d, 2),
-                        nodes, slots, meta),
+                        h, nodes, slots, meta),
                 d)
         # the order above: r00, r01, r02, r10, r11, r12, r20, r21, r22 (row by row)
         r00 = r01 = r02 = r10 = r11 = r12 = r20 = r21 = r22 = np.int64(-1)
@@ -143,12 +128,12 @@ def step(node, j, P, nodes, slots, meta, empty, R, G):
             n = nine[i]
             if n < 0:
                 return np.int64(-1)
-            if full:
-                v = _memo(n, jj, nodes)
+            if t1 > 0:
+                v = _known(n, t1, h, nodes, meta)
                 if v == -2:
-                    v = step(n, jj, P, nodes, slots, meta, empty, R, G)
+                    v = step(n, t1, nodes, slots, leaves, lslots, meta, R, G)
             else:
-                v = _centre(n, nodes, slots, meta)
+                v = _centre(n, h, nodes, slots, leaves, lslots, meta, R, G)
             if v < 0:
                 return np.int64(-1)
             if i == 0:
@@ -169,39 +154,41 @@ def step(node, j, P, nodes, slots, meta, empty, R, G):
                 r21 = v
             else:
                 r22 = v
-        four = (join(r00, r01, r10, r11, nodes, slots, meta),
-                join(r01, r02, r11, r12, nodes, slots, meta),
-                join(r10, r11, r20, r21, nodes, slots, meta),
-                join(r11, r12, r21, r22, nodes, slots, meta))
-        t0 = t1 = t2 = t3 = np.int64(-1)
+        four = (join(r00, r01, r10, r11, h, nodes, slots, meta),
+                join(r01, r02, r11, r12, h, nodes, slots, meta),
+                join(r10, r11, r20, r21, h, nodes, slots, meta),
+                join(r11, r12, r21, r22, h, nodes, slots, meta))
+        u0 = u1 = u2 = u3 = np.int64(-1)
         for i in range(4):
             n = four[i]
             if n < 0:
                 return np.int64(-1)
-            v = _memo(n, jj, nodes)
+            v = _known(n, t2, h, nodes, meta)
             if v == -2:
-                v = step(n, jj, P, nodes, slots, meta, empty, R, G)
+                v = step(n, t2, nodes, slots, leaves, lslots, meta, R, G)
             if v < 0:
                 return np.int64(-1)
             if i == 0:
-                t0 = v
+                u0 = v
             elif i == 1:
-                t1 = v
+                u1 = v
             elif i == 2:
-                t2 = v
+                u2 = v
             else:
-                t3 = v
-        out = join(t0, t1, t2, t3, nodes, slots, meta)
-    if out >= 0:
+                u3 = v
+        out = join(u0, u1, u2, u3, h, nodes, slots, meta)
+    if out >= 0 and T == np.int64(1) << (k - 2 - meta[SHIFT]):
+        nodes[node, FULL] = out
+    elif out >= 0:
         nodes[node, RES] = out
-        nodes[node, RESJ] = j + 1
+        nodes[node, RESJ] = T + 1
     return out
 
 
-def advance(node: int, j: int, params: np.ndarray, store, rules: np.ndarray,
-            grids: np.ndarray) -> int:
-    """The centre of ``node`` after 2**j generations (-1: the table filled up)."""
-    if store.nodes[node, RESJ] == j + 1:
-        return int(store.nodes[node, RES])
-    return int(step(np.int64(node), np.int64(j), params, store.nodes, store.slots,
-                    store.meta, store.empty, rules, grids))
+def advance(node: int, T: int, store, R: np.ndarray, G: np.ndarray) -> int:  # a Store
+    """The centre of ``node`` after T generations (-1: a table filled up)."""
+    found = int(known(np.int64(node), np.int64(T), np.int64(store.nodes[node, LEVEL]),
+                      store.nodes, store.meta))
+    if found != -2:
+        return found
+    return int(step(np.int64(node), np.int64(T), *store.tables, R, G))

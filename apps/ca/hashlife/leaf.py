@@ -10,11 +10,13 @@ sends nothing and never changes.  The rules travel as one packed int64 array (``
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from apps.ca.hashlife.store import WALL
 from apps.ca.rules import OP_ADD, OP_AND, OP_OR, OP_XOR, RuleSet
 from apps.ca.tables import LOOKUP_SIZE, compile_rules
+from base.kernel_set import KernelSet
+
+kernels = KernelSet(__name__)
 
 M32 = 0xFFFFFFFF
 # Header of the packed rules: counts, then where each table starts in the array.
@@ -84,7 +86,7 @@ def pack(rules: RuleSet) -> np.ndarray:
     return np.concatenate([head, *(np.asarray(p, np.int64) for p in parts)])
 
 
-@njit(cache=True, inline="always")
+@kernels.kernel(inline="always")
 def _apply(cur, op, val):
     if op == 1:
         return (cur + val) & M32
@@ -95,7 +97,7 @@ def _apply(cur, op, val):
     return cur ^ val
 
 
-@njit(cache=True)
+@kernels.kernel
 def _interpret(v, R):
     """The life-form a cell with message value ``v`` becomes (0: dies)."""
     if v < LOOKUP_SIZE:
@@ -117,34 +119,37 @@ def _interpret(v, R):
     return np.int64(0) if i < 0 else R[R[H_FORM] + i]
 
 
-@njit(cache=True)
+@kernels.export("void(int64[:, ::1], int64, int64, int64, int64, int64[::1])")
 def generation(G, s, d, lo, hi, R):
-    """G[d, y, x] = next value of G[s, y, x] for lo <= y, x < hi (the caller keeps the
-    reach of every such cell inside the grid); G[3] is the message scratch.  (Planes of
-    one array, not views: numba reference-counts every view.)"""
+    """Plane d = the next values of plane s for lo <= y, x < hi (the caller keeps the reach
+    of every such cell inside the grid); plane 3 is the message scratch.  G holds four
+    square planes one above the other (plane p, row y: G[p * side + y]; planes of one
+    array, not views: numba reference-counts every view)."""
+    n = G.shape[1]
+    S, D, M = s * n, d * n, 3 * n
     ntypes, ry, rx = R[H_TYPES], R[H_RY], R[H_RX]
     start, sdy, sdx, sop, sval = R[H_START], R[H_DY], R[H_DX], R[H_OP], R[H_VAL]
     for y in range(lo, hi):
         for x in range(lo, hi):
-            G[3, y, x] = -1  # -1: received nothing (message values are 32-bit, >= 0)
+            G[M + y, x] = -1  # -1: received nothing (message values are 32-bit, >= 0)
     for y in range(lo - ry, hi + ry):
         for x in range(lo - rx, hi + rx):
-            t = G[s, y, x]
+            t = G[S + y, x]
             if t <= 0 or t >= ntypes:
                 continue
             for k in range(R[start + t], R[start + t + 1]):
                 ty = y + R[sdy + k]
                 tx = x + R[sdx + k]
                 if lo <= ty < hi and lo <= tx < hi:
-                    cur = G[3, ty, tx]
-                    G[3, ty, tx] = _apply(cur if cur >= 0 else np.int64(0), R[sop + k],
-                                         R[sval + k])
+                    cur = G[M + ty, tx]
+                    G[M + ty, tx] = _apply(cur if cur >= 0 else np.int64(0), R[sop + k],
+                                          R[sval + k])
     for y in range(lo, hi):
         for x in range(lo, hi):
-            v = G[3, y, x]
-            if G[s, y, x] == WALL:
-                G[d, y, x] = WALL
+            v = G[M + y, x]
+            if G[S + y, x] == WALL:
+                G[D + y, x] = WALL
             elif v < 0:
-                G[d, y, x] = 0
+                G[D + y, x] = 0
             else:
-                G[d, y, x] = _interpret(v, R)
+                G[D + y, x] = _interpret(v, R)

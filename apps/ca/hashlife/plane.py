@@ -8,7 +8,7 @@ Stepping needs a node twice the plane's size whose centre is the plane:
   so no message crosses the edge and nothing is born outside it.
 
 Either way the result of the frame after any number of generations is exactly the plane after them.
-One frame for both leaf strategies: the level is part of the binary table's key.
+One frame for both kinds of leaf: the level is part of a node's key.
 """
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ PLANE_LEVEL = 16
 
 def frame(store, plane: int, edges: str) -> int:
     """The level-17 node whose centre is the level-16 ``plane`` on a plane with ``edges``
-    (``store``: either leaf strategy's table, ``NodeStore`` or ``BitStore``)."""
+    (``store``: the rule set's ``Store``, either kind of leaf)."""
     nw, ne, sw, se = store.quadrants(plane)
     k = PLANE_LEVEL
     if edges == "wrap":

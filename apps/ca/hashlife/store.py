@@ -1,12 +1,25 @@
-"""The hash-consed node table (numba open addressing) and its garbage collection.
+"""HashLife's one node store (numba open addressing), for either kind of leaf.
 
-Node ids below ``LEAF_IDS`` are level-0 nodes: the life-form value itself (0 = dead, 1..65535)
-or ``WALL``, the outside of a bounded plane.  Every other id is a row of ``nodes``, created
-at most once per distinct quadruple of quadrants by :func:`join`.  A row holds, packed in one
-int32 array so the recursion passes one array (measured: numba reference-counts every array
-argument of every call): the quadrants nw, ne, sw, se; the memoised result and 1 + the
-generation exponent it is for (0: none); the level.  Kernels return -1 when the table is
-full; the caller collects garbage or grows the table and tries again.
+Nodes of the levels above the leaves are rows of ``nodes`` (int32 x 8): quadrants nw, ne,
+sw, se; a memoised result for some T generations and 1 + T (0: none); the level; the
+memoised result at full speed (0: none).  Two memos, as one pass of any length asks a
+level for two lengths (evolve.py), which would otherwise evict each other's results.  A
+node's key is its quadrants and its level (leaf and node ids overlap).
+
+The quadrants of the lowest nodes (level ``leaf + 1``) are leaf ids, by kind of leaf:
+
+* values (``leaf`` 0, any deterministic rules): the leaf is one cell and its id is the
+  life-form value itself (0 dead, 1..65535) or ``WALL``, the outside of a bounded plane;
+  the leaf table stays empty;
+* bits (``leaf`` 4, binary rules): 16 x 16 cells, a row of ``leaves`` (uint64 x 8): words
+  0..3 the live cells (row y in bits 16*(y%4).. of word y//4, column x in bit x of its
+  row), words 4..7 the same for the wall; leaf 1 is the empty leaf, leaf 2 the all-wall
+  leaf.
+
+Id 0 of either table is never a node or table leaf (0 marks an empty hash slot).  ``meta``
+packs the counts, the leaf geometry, the empty and wall towers and a flag, so kernels take
+one array for them (numba reference-counts every array argument of every call).  Kernels
+return -1 when a table is full; the caller grows it or collects garbage and retries.
 """
 
 from __future__ import annotations
@@ -14,18 +27,33 @@ from __future__ import annotations
 import weakref
 
 import numpy as np
-from numba import njit
 
-WALL = 65536  # level-0 value outside a bounded plane: never changes, sends nothing
-LEAF_IDS = WALL + 1
+from base.kernel_set import KernelSet
+
+kernels = KernelSet(__name__)
+
 TOP_LEVEL = 17  # the 65536-square plane is level 16; stepping frames it in a level-17 node
-RES, RESJ, LEVEL = 4, 5, 6  # columns of a node row after its four quadrants
-ROW = 8  # int32 per row (two spare: rows stay 32-byte aligned)
-BYTES_PER_NODE = 4 * ROW + 2 * 4  # the row and two hash slots
-MIN_CAPACITY = 1 << 17  # a power of two (so is the hash index, twice as long) > LEAF_IDS
+RES, RESJ, LEVEL, FULL = 4, 5, 6, 7  # node row columns after the four quadrants
+ROW = 8
+WALL = 65536  # the wall cell of value leaves: never changes, sends nothing
+BIT_LEAF_LEVEL = 4
+EMPTY_LEAF, WALL_LEAF = 1, 2  # of bit leaves
+# meta: node and leaf counts; the leaf level, the base case's level, s (2**s >= the rules'
+# reach) and the reach; whether any leaf has a wall yet (a bounded plane was framed; until
+# then the bit kernels skip it); the ids of the empty and the wall node of each level.
+N_NODES, N_LEAVES, LEAF, BASE, SHIFT, REACH, HAS_WALL = range(7)
+EMPTY = 7
+WALL_AT = EMPTY + TOP_LEVEL + 1
+META = WALL_AT + TOP_LEVEL + 1
+NODE_BYTES = 4 * ROW + 2 * 4  # a row and two hash slots (load factor at most 1/2)
+LEAF_BYTES = 8 * 8 + 2 * 4
+
+# The types Python passes (the exports' signatures).
+NODES, SLOTS, LEAVES, META_T = "int32[:, ::1]", "int32[::1]", "uint64[:, ::1]", "int64[::1]"
+TABLES = f"{NODES}, {SLOTS}, {LEAVES}, {SLOTS}, {META_T}"  # nodes, slots, leaves, lslots, meta
 
 
-@njit(cache=True, inline="always")
+@kernels.kernel(inline="always")
 def _hash4(a, b, c, d, mask):
     h = (np.uint64(a) * np.uint64(0x9E3779B97F4A7C15)
          ^ np.uint64(b) * np.uint64(0xC2B2AE3D27D4EB4F)
@@ -34,20 +62,38 @@ def _hash4(a, b, c, d, mask):
     return np.int64((h ^ (h >> np.uint64(29))) & np.uint64(mask))
 
 
-@njit(cache=True, inline="always")
-def join(a, b, c, d, nodes, slots, meta):
-    """The node with quadrants a, b, c, d (nw, ne, sw, se; equal levels), made at most once;
-    -1 if the table is full."""
+@kernels.kernel(inline="always")
+def node_hash(a, b, c, d, level, mask):
+    return _hash4(a, b, c, np.int64(d) ^ (np.int64(level) << 27), mask)
+
+
+@kernels.kernel(inline="always")
+def _mix(h):
+    h = (h ^ (h >> np.uint64(31))) * np.uint64(0x7FB5D329728EA185)
+    return h ^ (h >> np.uint64(27))
+
+
+@kernels.kernel(inline="always")
+def leaf_hash(W, r, at, mask):
+    h = np.uint64(0)
+    for i in range(8):
+        h = _mix(h ^ W[r, at + i] ^ np.uint64(i))
+    return np.int64(h & np.uint64(mask))
+
+
+@kernels.kernel(inline="always")
+def _join(a, b, c, d, level, nodes, slots, meta):
     mask = slots.shape[0] - 1
-    s = _hash4(a, b, c, d, mask)
+    s = node_hash(a, b, c, d, level, mask)
     while True:
         i = slots[s]
-        if i == 0:  # empty slot (real nodes have ids >= LEAF_IDS)
+        if i == 0:
             break
-        if nodes[i, 0] == a and nodes[i, 1] == b and nodes[i, 2] == c and nodes[i, 3] == d:
+        if (nodes[i, 0] == a and nodes[i, 1] == b and nodes[i, 2] == c and nodes[i, 3] == d
+                and nodes[i, LEVEL] == level):
             return np.int64(i)
         s = (s + 1) & mask
-    n = meta[0]
+    n = meta[N_NODES]
     if n >= nodes.shape[0]:
         return np.int64(-1)
     slots[s] = n
@@ -56,159 +102,215 @@ def join(a, b, c, d, nodes, slots, meta):
     nodes[n, 2] = c
     nodes[n, 3] = d
     nodes[n, RESJ] = 0
-    nodes[n, LEVEL] = (nodes[a, LEVEL] if a >= LEAF_IDS else 0) + 1
-    meta[0] = n + 1
+    nodes[n, LEVEL] = level
+    nodes[n, FULL] = 0
+    meta[N_NODES] = n + 1
     return np.int64(n)
 
 
-@njit(cache=True)
-def rehash(nodes, slots, n):
-    """Enter nodes LEAF_IDS..n-1 (all distinct) into an empty hash index."""
-    mask = slots.shape[0] - 1
-    for i in range(LEAF_IDS, n):
-        s = _hash4(np.int64(nodes[i, 0]), np.int64(nodes[i, 1]), np.int64(nodes[i, 2]),
-                   np.int64(nodes[i, 3]), mask)
-        while slots[s] != 0:
-            s = (s + 1) & mask
-        slots[s] = i
+# A call, not IR-inlined at each of the recursion's ten-odd sites: the first compile of the
+# recursion took 18 s of CPU instead of 29, with the same jump times in an A/B
+# (docs/perf/startup.md).  Without numba's runtime, as the recursion.
+@kernels.export(f"int64(int64, int64, int64, int64, int64, {NODES}, {SLOTS}, {META_T})",
+                _nrt=False)
+def join(a, b, c, d, level, nodes, slots, meta):
+    """The node of ``level`` with quadrants a, b, c, d (nw, ne, sw, se), made at most
+    once; -1 if the table is full."""
+    return _join(a, b, c, d, level, nodes, slots, meta)
 
 
-@njit(cache=True)
-def collect(roots, nodes, slots, meta):
-    """Keep only the nodes reachable from ``roots`` (renumbered, children before parents,
-    as they were made), forget every memoised result, rebuild the hash; roots are rewritten
-    with their new ids.  Returns the number of nodes kept."""
-    n = meta[0]
-    keep = np.zeros(n, np.uint8)
-    stack = np.empty(4 * n + roots.shape[0], np.int64)
-    top = 0
-    for r in range(roots.shape[0]):
-        stack[top] = roots[r]
-        top += 1
-    while top > 0:
-        top -= 1
-        i = stack[top]
-        if i < LEAF_IDS or keep[i]:
-            continue
-        keep[i] = 1
-        for q in range(4):
-            stack[top] = nodes[i, q]
-            top += 1
-    new = np.arange(n, dtype=np.int64)
-    m = LEAF_IDS
-    for i in range(LEAF_IDS, n):
-        if keep[i]:
-            new[i] = m
-            for q in range(4):
-                nodes[m, q] = new[nodes[i, q]]
-            nodes[m, RESJ] = 0
-            nodes[m, LEVEL] = nodes[i, LEVEL]
-            m += 1
-    slots[:] = 0
-    meta[0] = m
-    rehash(nodes, slots, np.int64(m))
-    for r in range(roots.shape[0]):
-        roots[r] = new[roots[r]]
-    return m
+@kernels.kernel(inline="always")
+def leaf(W, r, at, leaves, lslots, meta):
+    """The id of the bit leaf with words W[r, at:at+8], made at most once; -1 if full.
+    (Row and offset rather than a slice, and inlined: every array handed to a call is
+    reference counted with atomic operations, measured at half the time of small jumps.)"""
+    mask = lslots.shape[0] - 1
+    s = leaf_hash(W, r, at, mask)
+    while True:
+        i = lslots[s]
+        if i == 0:
+            break
+        same = True
+        for q in range(8):
+            if leaves[i, q] != W[r, at + q]:
+                same = False
+                break
+        if same:
+            return np.int64(i)
+        s = (s + 1) & mask
+    n = meta[N_LEAVES]
+    if n >= leaves.shape[0]:
+        return np.int64(-1)
+    lslots[s] = n
+    for q in range(8):
+        leaves[n, q] = W[r, at + q]
+    meta[N_LEAVES] = n + 1
+    return np.int64(n)
 
 
-class NodeStore:
-    """The arrays of one rule set's node table, its memory limit and garbage collection."""
+@kernels.export(f"int64(uint64[:, ::1], {TABLES})")
+def towers(words, nodes, slots, leaves, lslots, meta):
+    """The empty and the all-wall leaf (values 0 and WALL; or bit leaves 1 and 2, the rows
+    of ``words``) and the uniform nodes of every level above them, into meta (one call: 26
+    calls from Python cost 0.1 ms a store)."""
+    low = meta[LEAF]
+    for which in range(2):
+        base = EMPTY if which == 0 else WALL_AT
+        if low == 0:
+            meta[base] = 0 if which == 0 else WALL
+        else:
+            if leaf(words, which, 0, leaves, lslots, meta) != EMPTY_LEAF + which:
+                return -1
+            meta[base + low] = EMPTY_LEAF + which
+        for k in range(low + 1, TOP_LEVEL + 1):
+            q = meta[base + k - 1]
+            n = _join(q, q, q, q, np.int64(k), nodes, slots, meta)
+            if n < 0:
+                return -1
+            meta[base + k] = n
+    return 0
 
-    def __init__(self, capacity: int = 1 << 20, limit_bytes: int = 512 << 20) -> None:
+
+class Store:
+    """One rule set's node table (and leaf table, for bit leaves), its memory limit and
+    garbage collection.  ``leaf``: the leaf level (0: values, 4: bits); ``base``: the level
+    whose nodes the leaf kernel advances; ``shift``, ``reach``: 2**shift >= the rules'
+    reach."""
+
+    def __init__(self, leaf: int, base: int, shift: int, reach: int,
+                 limit_bytes: int = 512 << 20, nodes: int = 1 << 13, leaves: int = 1 << 12,
+                 min_nodes: int = 1 << 12) -> None:
+        # Small to start: a fresh page costs a fault at first touch, and the hash touches
+        # them at random, so a big empty table is slower than doubling a small one.
         self.limit_bytes = int(limit_bytes)
-        self.epoch = 0  # bumped by every collection: node ids of older epochs are void
-        # Trees engines hold (objects with .node and .epoch), renumbered by every collection.
+        self.epoch = 0  # bumped by every collection: ids of older epochs are void
+        # Trees engines hold (objects with .node and .epoch): kept and renumbered by every
+        # collection, so an engine whose state is only a tree never loses it.
         self.trees: weakref.WeakSet = weakref.WeakSet()
-        cap = MIN_CAPACITY
-        while 2 * cap <= capacity and 2 * cap * BYTES_PER_NODE <= self.limit_bytes:
-            cap *= 2
-        if cap * BYTES_PER_NODE > self.limit_bytes:
+        cap_l = max(2, min(leaves, 1 << 11)) if leaf else 2  # value leaves: no table
+        cap_n = min_nodes
+        while 2 * cap_n <= nodes and \
+                self._bytes(2 * cap_n, 2 * cap_l if leaf else cap_l) <= self.limit_bytes:
+            cap_n *= 2
+            if leaf and 2 * cap_l <= leaves:
+                cap_l *= 2
+        if self._bytes(cap_n, cap_l) > self.limit_bytes:
             raise MemoryError(f"the HashLife memory limit ({self.limit_bytes >> 20} MB) is "
                               f"below the smallest node table "
-                              f"({cap * BYTES_PER_NODE / 2**20:.1f} MB)")
-        self._allocate(cap)
-        self.empty = self._tower(0)
-        self.wall = self._tower(WALL)
+                              f"({self._bytes(cap_n, cap_l) / 2**20:.1f} MB)")
+        self.meta = np.zeros(META, np.int64)
+        self.meta[N_NODES] = self.meta[N_LEAVES] = 1
+        self.meta[LEAF], self.meta[BASE], self.meta[SHIFT], self.meta[REACH] = \
+            leaf, base, shift, reach
+        self.nodes, self.slots = self._table(cap_n, ROW, np.int32)
+        self.leaves, self.lslots = self._table(cap_l, 8, np.uint64)
+        words = np.zeros((2, 8), np.uint64)  # the empty bit leaf, the all-wall bit leaf
+        words[1, 4:] = np.uint64(0xFFFFFFFFFFFFFFFF)
+        if towers(words, *self.tables) < 0:
+            raise MemoryError("the HashLife node table cannot hold its fixed part")
 
-    def _allocate(self, cap: int) -> None:
-        # Zeros mean "none" in both (no memo; empty slot), so the pages stay untouched
-        # until used: allocating a large table costs nothing up front.
-        self.nodes = np.zeros((cap, ROW), np.int32)
-        self.slots = np.zeros(2 * cap, np.int32)  # load factor at most 1/2
-        self.meta = np.array([LEAF_IDS], np.int64)
+    @staticmethod
+    def _bytes(cap_n: int, cap_l: int) -> int:
+        return cap_n * NODE_BYTES + cap_l * LEAF_BYTES
+
+    @staticmethod
+    def _table(cap: int, row: int, dtype: type) -> tuple[np.ndarray, np.ndarray]:
+        # Zeros mean "none" (no memo, empty slot): the pages stay untouched until used.
+        return np.zeros((cap, row), dtype), np.zeros(2 * cap, np.int32)
+
+    @property
+    def tables(self) -> tuple[np.ndarray, ...]:
+        """(nodes, slots, leaves, lslots, meta): what most kernels take."""
+        return self.nodes, self.slots, self.leaves, self.lslots, self.meta
+
+    @property
+    def leaf_level(self) -> int:
+        return int(self.meta[LEAF])
+
+    @property
+    def empty(self) -> np.ndarray:
+        return self.meta[EMPTY:EMPTY + TOP_LEVEL + 1]
+
+    @property
+    def wall(self) -> np.ndarray:
+        return self.meta[WALL_AT:WALL_AT + TOP_LEVEL + 1]
 
     @property
     def count(self) -> int:
-        return int(self.meta[0])
+        return int(self.meta[N_NODES])
 
     @property
-    def capacity(self) -> int:
-        return int(self.nodes.shape[0])
+    def leaf_count(self) -> int:
+        return int(self.meta[N_LEAVES])
 
     @property
     def bytes(self) -> int:
-        return self.nodes.nbytes + self.slots.nbytes
+        return self.nodes.nbytes + self.slots.nbytes + self.leaves.nbytes + \
+            self.lslots.nbytes
 
     def quadrants(self, node: int) -> tuple[int, int, int, int]:
         nw, ne, sw, se = (int(q) for q in self.nodes[node, :4])
         return nw, ne, sw, se
 
-    def _tower(self, value: int) -> np.ndarray:
-        """The uniform node of every level 0..TOP_LEVEL filled with ``value``."""
-        ids = np.zeros(TOP_LEVEL + 1, np.int64)
-        ids[0] = value
-        for k in range(1, TOP_LEVEL + 1):
-            ids[k] = self.join(*(int(ids[k - 1]),) * 4)
-        return ids
-
-    def join(self, a: int, b: int, c: int, d: int, level: int = 0) -> int:
-        """The node of quadrants a, b, c, d (``level`` is implied by theirs here)."""
-        n = int(join(np.int64(a), np.int64(b), np.int64(c), np.int64(d), self.nodes,
-                     self.slots, self.meta))
+    def join(self, a: int, b: int, c: int, d: int, level: int) -> int:
+        n = int(join(np.int64(a), np.int64(b), np.int64(c), np.int64(d), np.int64(level),
+                     self.nodes, self.slots, self.meta))
         if n < 0:
             raise MemoryError("node table full")
         return n
 
     def mark_wall(self) -> None:
-        """A bounded plane is framed (nothing to note: walls are level-0 values here)."""
+        """A bounded plane is framed: from now on the bit kernels look for walls in leaves."""
+        self.meta[HAS_WALL] = 1
+
+    def make_room(self, roots: list[int]) -> list[int]:
+        """Collect garbage keeping ``roots`` (returned renumbered) and every live tree
+        (renumbered in place); see ``crowded``."""
+        live = [t for t in self.trees if t.epoch == self.epoch]
+        keep = np.array([*roots, *(t.node for t in live)], np.int64)
+        from apps.ca.hashlife.upkeep import collect  # its own kernel group
+
+        collect(keep, *self.tables)
+        self.epoch += 1
+        for tree, node in zip(live, keep[len(roots):], strict=True):
+            tree.node, tree.epoch = int(node), self.epoch
+        return [int(r) for r in keep[:len(roots)]]
+
+    def _full(self) -> tuple[bool, bool]:
+        return (10 * self.count > 9 * self.nodes.shape[0],
+                10 * self.leaf_count > 9 * self.leaves.shape[0])
 
     @property
     def crowded(self) -> bool:
-        """Whether the table is still (almost) full: collecting freed too little."""
-        return 10 * self.count > 9 * self.capacity
+        """Whether a table is still (almost) full: collecting freed too little."""
+        return any(self._full())
 
     def full_error(self) -> MemoryError:
-        return MemoryError(f"the HashLife node table is full ({self.count} nodes, "
+        leaves = f"{self.leaf_count} leaves, " if self.leaf_level else ""
+        return MemoryError(f"the HashLife node table is full ({self.count} nodes, {leaves}"
                            f"{self.bytes >> 20} MB) and the memory limit "
                            f"({self.limit_bytes >> 20} MB) allows no more")
 
-    def make_room(self, roots: list[int]) -> list[int]:
-        """Collect garbage keeping ``roots`` (returned renumbered) and every live tree an
-        engine holds (renumbered in place: an engine whose state is only a tree survives
-        another engine's collection); see ``crowded``."""
-        live = [t for t in self.trees if t.epoch == self.epoch]
-        n, towers = len(roots), 2 * (TOP_LEVEL + 1)
-        keep = np.array([*roots, *self.empty, *self.wall, *(t.node for t in live)], np.int64)
-        collect(keep, self.nodes, self.slots, self.meta)
-        self.epoch += 1
-        self.empty, self.wall = keep[n:n + TOP_LEVEL + 1], keep[n + TOP_LEVEL + 1:n + towers]
-        for tree, node in zip(live, keep[n + towers:], strict=True):
-            tree.node, tree.epoch = int(node), self.epoch
-        return [int(r) for r in keep[:n]]
-
     def grow_if_full(self) -> bool:
-        """Double the table instead of collecting while it is small (results survive
-        growing, not collecting); False once the memory limit stops it."""
-        if 2 * self.bytes > self.limit_bytes:
+        """Double whichever table is full instead of collecting while there is room (results
+        survive growing, not collecting); False once the memory limit stops it."""
+        grow_nodes, grow_leaves = self._full()
+        extra = (self.nodes.nbytes + self.slots.nbytes if grow_nodes else 0) + \
+            (self.leaves.nbytes + self.lslots.nbytes if grow_leaves else 0)
+        if not extra or self.bytes + extra > self.limit_bytes:
             return False
-        self._grow()
+        if grow_nodes:
+            self.nodes, self.slots = self._grown(self.nodes, self.count)
+        if grow_leaves:
+            self.leaves, self.lslots = self._grown(self.leaves, self.leaf_count)
+        self.slots[:] = 0
+        self.lslots[:] = 0
+        from apps.ca.hashlife.upkeep import rehash  # its own kernel group
+
+        rehash(*self.tables)
         return True
 
-    def _grow(self) -> None:
-        """Double the table; every node keeps its id and its memoised result."""
-        old, n = self.nodes, self.count
-        self._allocate(2 * self.capacity)
-        self.nodes[:n] = old[:n]
-        self.meta[0] = n
-        rehash(self.nodes, self.slots, np.int64(n))
+    def _grown(self, table: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
+        bigger, slots = self._table(2 * table.shape[0], table.shape[1], table.dtype)
+        bigger[:n] = table[:n]
+        return bigger, slots

@@ -1,7 +1,7 @@
 """The binary path's base case: a level-5 node (32 x 32 cells, four leaves) to its centre
 leaf after up to 8 generations, by bit operations on two rows of 32 cells per uint64.
 
-The scratch ``G`` (uint64, 4 x 32): planes 0 and 1 hold the live cells of this and the next
+The scratch ``G`` (uint64, PLANES x 32): planes 0 and 1 hold the live cells of this and the next
 generation, plane 2 the wall, in 16 words each (word i: row 2i in bits 0..31, row 2i+1 in
 bits 32..63, column x in bit x of its row); plane 3 is work space.  Generation g is only
 computed in the words that later generations still need (rows beyond the square read
@@ -17,10 +17,12 @@ holding no live cells, it sends nothing.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from apps.ca.hashlife.bits.rule import KIND_TOTALISTIC, LUT, TERM, TERM_ANY, TERM_BIRTH
-from apps.ca.hashlife.bits.store import HAS_WALL, leaf
+from apps.ca.hashlife.store import HAS_WALL, leaf
+from base.kernel_set import KernelSet
+
+kernels = KernelSet(__name__)
 
 LOW = np.uint64(0xFFFFFFFF)
 HALF = np.uint64(0xFFFF)
@@ -28,17 +30,17 @@ ONES = np.uint64(0xFFFFFFFFFFFFFFFF)
 U1, U16, U32 = np.uint64(1), np.uint64(16), np.uint64(32)
 SCRATCH, WORDS_AT = 3, 16  # plane 3: the lookup kernel's rows, from word 16 the leaf words
 X0, X1, N0, OUT = 4, 5, 6, 10  # the totalistic kernel's planes (row sums, block sums, out)
-PLANES = 11  # of the scratch G (run.py)
+PLANES = 11  # of the scratch (run.py)
 
 
-@njit(cache=True, inline="always")
+@kernels.kernel(inline="always")
 def _pair(leaves, i, w, half):
     """Rows 2h, 2h+1 (h = 2w + half) of leaf i's word w as 16-bit pieces at bits 0 and 32."""
     x = leaves[i, w] >> np.uint64(32 * half)
     return (x & HALF) | ((x & np.uint64(0xFFFF0000)) << U16)
 
 
-@njit(cache=True, inline="always")
+@kernels.kernel(inline="always")
 def load(nw, ne, sw, se, leaves, meta, G):
     """The 32 x 32 square of four leaves into planes 0 (live) and 2 (wall)."""
     walls = meta[HAS_WALL] != 0  # no wall anywhere until a bounded plane was framed
@@ -50,7 +52,7 @@ def load(nw, ne, sw, se, leaves, meta, G):
                 (_pair(leaves, se, w, half) << U16)
 
 
-@njit(cache=True, inline="always")
+@kernels.kernel(inline="always")
 def centre(p, G, leaves, lslots, meta):
     """The leaf of the centre 16 x 16 of plane ``p`` (with the wall of plane 2); -1 if the
     leaf table is full."""
@@ -65,14 +67,14 @@ def centre(p, G, leaves, lslots, meta):
     return leaf(G, SCRATCH, WORDS_AT, leaves, lslots, meta)
 
 
-@njit(cache=True, inline="always")
+@kernels.kernel(inline="always")
 def _sum3(x):
     """Two bits of x << 1 + x + x >> 1 at each bit."""
     left, right = x << U1, x >> U1
     return left ^ x ^ right, (left & x) | (right & (left ^ x))
 
 
-@njit(cache=True, inline="always")
+@kernels.kernel(inline="always")
 def totalistic(s, d, lo, hi, R, G):
     """Plane d words lo..hi-1 = the next generation of plane s by the terms of R (block
     sums, rule.totalistic_terms): the sum of each 3 x 3 block, centre included, by
@@ -115,7 +117,7 @@ def totalistic(s, d, lo, hi, R, G):
         G[d, i] = G[OUT, i] & ~G[2, i]
 
 
-@njit(cache=True, inline="always")
+@kernels.kernel(inline="always")
 def lookup(s, d, lo, hi, R, G):
     """Plane d words lo..hi-1 = the next generation of plane s by R's 4 x 4 -> 2 x 2 table:
     each word's two rows from the four rows around them, two columns at a time (columns 0
@@ -141,10 +143,10 @@ def lookup(s, d, lo, hi, R, G):
 # of `ca run --engine hashlife` took 29 s of CPU instead of 42 with the same jump times
 # (docs/perf/startup.md).  Without numba's runtime, like the recursion, so the call passes
 # its arrays without atomic reference counts (the reason the inlining was measured faster).
-@njit(cache=True, _nrt=False)
-def base(node, gens, nodes, leaves, lslots, meta, R, G):
+@kernels.kernel(_nrt=False)
+def advance(node, gens, nodes, slots, leaves, lslots, meta, R, G):
     """The centre leaf of level-5 ``node`` after ``gens`` (0..8) generations; -1 if the
-    leaf table is full."""
+    leaf table is full.  (The arguments are the recursion's; ``slots`` is not needed.)"""
     load(np.int64(nodes[node, 0]), np.int64(nodes[node, 1]), np.int64(nodes[node, 2]),
          np.int64(nodes[node, 3]), leaves, meta, G)
     s = np.int64(0)

@@ -41,12 +41,12 @@ def derive_table(rules: RuleSet) -> np.ndarray:
     """The next value of the centre of each 3 x 3 neighbourhood of 0s and 1s, by running
     one generation of the rules (leaf.generation) on it; values may be other than 0, 1."""
     packed = pack(rules)
-    grid = np.zeros((4, 5, 5), np.int64)
+    grid = np.zeros((4 * 5, 5), np.int64)  # four 5 x 5 planes, one above the other
     out = np.zeros(512, np.int64)
     for index in range(512):
-        grid[0, 1:4, 1:4] = (index >> np.arange(9).reshape(3, 3)) & 1
+        grid[1:4, 1:4] = (index >> np.arange(9).reshape(3, 3)) & 1
         generation(grid, 0, 1, 2, 3, packed)
-        out[index] = grid[1, 2, 2]
+        out[index] = grid[5 + 2, 2]
     return out
 
 

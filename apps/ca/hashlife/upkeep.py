@@ -1,66 +1,73 @@
-"""The binary tables' upkeep: entering every entry into fresh hash indexes (after a table
-doubled) and garbage collection (when the memory limit stops the doubling).  Their own
-module and kernel group: a run whose tables never fill (the README's Life runs) does not
-compile them, and the first run that does fill announces them (a second, short notice).
+"""The store's upkeep: entering every entry into fresh hash indexes (after a table doubled)
+and garbage collection (when the memory limit stops the doubling), for either kind of leaf.
+Their own module and kernel group: a run whose tables never fill (the README's Life runs)
+does not compile them, and the first run that does fill announces them (a short notice).
 """
 
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
-from apps.ca.hashlife.bits.store import (
+from apps.ca.hashlife.store import (
     EMPTY,
     EMPTY_LEAF,
     FULL,
-    LEAF_LEVEL,
+    LEAF,
     LEVEL,
     N_LEAVES,
     N_NODES,
     RESJ,
+    TABLES,
     TOP_LEVEL,
-    WALL,
+    WALL_AT,
     WALL_LEAF,
-    _hash4,
-    _leaf_hash,
+    leaf_hash,
+    node_hash,
 )
+from base.kernel_set import KernelSet
+
+kernels = KernelSet(__name__)
 
 
-@njit(cache=True)
+@kernels.export(f"void({TABLES})")
 def rehash(nodes, slots, leaves, lslots, meta):
-    """Enter every node and leaf (all distinct) into empty hash indexes."""
+    """Enter every node and table leaf (all distinct) into empty hash indexes."""
     mask = slots.shape[0] - 1
     for i in range(1, meta[N_NODES]):
-        s = _hash4(nodes[i, 0], nodes[i, 1], nodes[i, 2],
-                   np.int64(nodes[i, 3]) ^ (np.int64(nodes[i, LEVEL]) << 27), mask)
+        s = node_hash(nodes[i, 0], nodes[i, 1], nodes[i, 2], nodes[i, 3], nodes[i, LEVEL],
+                      mask)
         while slots[s] != 0:
             s = (s + 1) & mask
         slots[s] = i
     mask = lslots.shape[0] - 1
     for i in range(1, meta[N_LEAVES]):
-        s = _leaf_hash(leaves, i, 0, mask)
+        s = leaf_hash(leaves, i, 0, mask)
         while lslots[s] != 0:
             s = (s + 1) & mask
         lslots[s] = i
 
 
-@njit(cache=True)
+@kernels.export(f"int64(int64[::1], {TABLES})")
 def collect(roots, nodes, slots, leaves, lslots, meta):
-    """Keep only the nodes and leaves reachable from ``roots`` (renumbered in the order they
-    were made, so children stay before parents), forget every memoised result, rebuild
-    both hashes; ``roots`` are rewritten with their new ids."""
+    """Keep only the nodes and leaves reachable from ``roots`` and the empty and wall
+    towers (renumbered in the order they were made, so children stay before parents),
+    forget every memoised result, rebuild both hashes; ``roots`` are rewritten with their
+    new ids.  Value leaves are not entries: their ids stay."""
     n, m = meta[N_NODES], meta[N_LEAVES]
+    low = meta[LEAF] + 1  # the level whose quadrants are leaves
+    values = meta[LEAF] == 0
     keep = np.zeros(n, np.uint8)
     keep_leaf = np.zeros(m, np.uint8)
-    keep_leaf[EMPTY_LEAF] = keep_leaf[WALL_LEAF] = 1
+    if not values:
+        keep_leaf[EMPTY_LEAF] = keep_leaf[WALL_LEAF] = 1
     stack = np.empty(4 * n + roots.shape[0] + 2 * TOP_LEVEL, np.int64)
     top = 0
     for r in range(roots.shape[0]):
         stack[top] = roots[r]
         top += 1
-    for lv in range(LEAF_LEVEL + 1, TOP_LEVEL + 1):
+    for lv in range(low, TOP_LEVEL + 1):
         stack[top] = meta[EMPTY + lv]
-        stack[top + 1] = meta[WALL + lv]
+        stack[top + 1] = meta[WALL_AT + lv]
         top += 2
     while top > 0:
         top -= 1
@@ -69,11 +76,11 @@ def collect(roots, nodes, slots, leaves, lslots, meta):
             continue
         keep[i] = 1
         for q in range(4):
-            if nodes[i, LEVEL] == LEAF_LEVEL + 1:
-                keep_leaf[nodes[i, q]] = 1
-            else:
+            if nodes[i, LEVEL] != low:
                 stack[top] = nodes[i, q]
                 top += 1
+            elif not values:
+                keep_leaf[nodes[i, q]] = 1
     new_leaf = np.zeros(m, np.int64)
     k = 1
     for i in range(1, m):
@@ -88,9 +95,15 @@ def collect(roots, nodes, slots, leaves, lslots, meta):
     for i in range(1, n):
         if keep[i]:
             new[i] = k
-            low = nodes[i, LEVEL] == LEAF_LEVEL + 1
+            below = nodes[i, LEVEL] == low
             for q in range(4):
-                nodes[k, q] = new_leaf[nodes[i, q]] if low else new[nodes[i, q]]
+                c = nodes[i, q]
+                if not below:
+                    nodes[k, q] = new[c]
+                elif values:
+                    nodes[k, q] = c
+                else:
+                    nodes[k, q] = new_leaf[c]
             nodes[k, RESJ] = 0
             nodes[k, LEVEL] = nodes[i, LEVEL]
             nodes[k, FULL] = 0
@@ -101,7 +114,7 @@ def collect(roots, nodes, slots, leaves, lslots, meta):
     rehash(nodes, slots, leaves, lslots, meta)
     for r in range(roots.shape[0]):
         roots[r] = new[roots[r]]
-    for lv in range(LEAF_LEVEL + 1, TOP_LEVEL + 1):
+    for lv in range(low, TOP_LEVEL + 1):
         meta[EMPTY + lv] = new[meta[EMPTY + lv]]
-        meta[WALL + lv] = new[meta[WALL + lv]]
+        meta[WALL_AT + lv] = new[meta[WALL_AT + lv]]
     return k

@@ -1,0 +1,171 @@
+"""Cell lists to the plane's tree and back, for either kind of leaf: a sparse pattern's
+cells (no dense window) into leaves and levels, a plane's live cells out (for pictures and
+cell queries), and whether live cells lie near the wrapping plane's seam.  Their own module
+and kernel group: a `ca run --json` of a small Life pattern (built from its dense window)
+never compiles them; the first run that needs them announces them."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from apps.ca.hashlife.census import count
+from apps.ca.hashlife.grid import PLANE_LEVEL, levels, tile_key
+from apps.ca.hashlife.store import (
+    EMPTY,
+    LEAF,
+    LEAVES,
+    META_T,
+    N_NODES,
+    NODES,
+    TABLES,
+    WALL,
+    leaf,
+)
+from base.kernel_set import KernelSet
+
+kernels = KernelSet(__name__)
+
+INTS = "int64[::1]"
+
+
+@kernels.export(f"{INTS}({INTS}, {INTS}, int64)")
+def morton(xs, ys, shift):
+    """Morton keys of the leaves (of 2**shift cells square) holding the cells."""
+    keys = np.empty(xs.shape[0], np.int64)
+    for i in range(xs.shape[0]):
+        keys[i] = tile_key(xs[i] >> shift, ys[i] >> shift, PLANE_LEVEL - shift)
+    return keys
+
+
+@kernels.export(f"int64({INTS}, {INTS}, {INTS}, {TABLES})")
+def from_cells(keys, xs, ys_or_values, nodes, slots, leaves, lslots, meta):
+    """The plane's node from cells sorted by leaf key (``morton``): value leaves are the
+    cells' values (``ys_or_values``; keys distinct), bit leaves are made from the cells'
+    low bits (``xs``, ``ys_or_values``: columns and rows); then the levels above; -1 if a
+    table is full."""
+    n = keys.shape[0]
+    lkeys = np.empty(n, np.int64)
+    ids = np.empty(n, np.int64)
+    low = meta[LEAF]
+    if low == 0:
+        lkeys[:] = keys
+        ids[:] = ys_or_values
+        return levels(lkeys, ids, n, low, nodes, slots, meta)
+    words = np.zeros((1, 8), np.uint64)
+    m = 0
+    i = 0
+    while i < n:
+        key = keys[i]
+        words[:] = 0
+        while i < n and keys[i] == key:
+            y, x = ys_or_values[i] & 15, xs[i] & 15
+            words[0, y >> 2] |= np.uint64(1) << np.uint64(16 * (y & 3) + x)
+            i += 1
+        t = leaf(words, 0, 0, leaves, lslots, meta)
+        if t < 0:
+            return np.int64(-1)
+        lkeys[m] = key
+        ids[m] = t
+        m += 1
+    return levels(lkeys, ids, np.int64(m), low, nodes, slots, meta)
+
+
+@kernels.kernel
+def _emit(node, level, y0, x0, nodes, leaves, meta, out, n):
+    """Append (y, x, value) of the live cells of ``node`` to ``out`` from row ``n``."""
+    if level == meta[LEAF]:
+        if level == 0:
+            if 0 < node < WALL:
+                out[n, 0], out[n, 1], out[n, 2] = y0, x0, node
+                n += 1
+            return n
+        for y in range(16):
+            row = (leaves[node, y >> 2] >> np.uint64(16 * (y & 3))) & np.uint64(0xFFFF)
+            for x in range(16):
+                if (row >> np.uint64(x)) & np.uint64(1):
+                    out[n, 0], out[n, 1], out[n, 2] = y0 + y, x0 + x, 1
+                    n += 1
+        return n
+    if node == meta[EMPTY + level]:
+        return n
+    h = np.int64(1) << (level - 1)
+    k = level - 1
+    n = _emit(np.int64(nodes[node, 0]), k, y0, x0, nodes, leaves, meta, out, n)
+    n = _emit(np.int64(nodes[node, 1]), k, y0, x0 + h, nodes, leaves, meta, out, n)
+    n = _emit(np.int64(nodes[node, 2]), k, y0 + h, x0, nodes, leaves, meta, out, n)
+    return _emit(np.int64(nodes[node, 3]), k, y0 + h, x0 + h, nodes, leaves, meta, out, n)
+
+
+@kernels.export(f"int64[:, ::1](int64, {NODES}, {LEAVES}, {META_T})")
+def listing(node, nodes, leaves, meta):
+    """(y, x, value) rows of the live cells of the plane ``node``, in quadtree order."""
+    top = np.int64(PLANE_LEVEL)
+    memo = np.full(meta[N_NODES], -1, np.int64)
+    out = np.empty((count(node, top, np.int64(0), memo, nodes, leaves, meta), 3), np.int64)
+    _emit(node, top, np.int64(0), np.int64(0), nodes, leaves, meta, out, np.int64(0))
+    return out
+
+
+@kernels.kernel
+def _any_live(node, level, y0, x0, top, bottom, left, right, nodes, leaves, meta):
+    """Whether ``node`` (its corner at y0, x0) has a live cell in rows top..bottom-1,
+    columns left..right-1."""
+    side = np.int64(1) << level
+    if (node == meta[EMPTY + level] or y0 >= bottom or y0 + side <= top or x0 >= right
+            or x0 + side <= left):
+        return False
+    if level == meta[LEAF]:
+        if level == 0:
+            return 0 < node < WALL
+        for y in range(max(top - y0, 0), min(bottom - y0, 16)):
+            row = (leaves[node, y >> 2] >> np.uint64(16 * (y & 3))) & np.uint64(0xFFFF)
+            for x in range(max(left - x0, 0), min(right - x0, 16)):
+                if (row >> np.uint64(x)) & np.uint64(1):
+                    return True
+        return False
+    h = side >> 1
+    k = level - 1
+    for q in range(4):
+        if _any_live(np.int64(nodes[node, q]), k, y0 + h * (q >> 1), x0 + h * (q & 1), top,
+                     bottom, left, right, nodes, leaves, meta):
+            return True
+    return False
+
+
+@kernels.export(f"boolean(int64, int64, int64, int64, int64, {NODES}, {LEAVES}, {META_T})")
+def any_live(node, top, bottom, left, right, nodes, leaves, meta):
+    """Whether the plane ``node`` has a live cell in rows top..bottom-1, columns
+    left..right-1."""
+    return _any_live(node, np.int64(PLANE_LEVEL), np.int64(0), np.int64(0), top, bottom,
+                     left, right, nodes, leaves, meta)
+
+
+def to_tree(xs: np.ndarray, ys: np.ndarray, ts: np.ndarray, store) -> int:  # a Store
+    """The plane's node of the cells at (xs, ys) of life-forms ts (all 1 for bit leaves);
+    -1 if a table filled up."""
+    xs = np.ascontiguousarray(xs, np.int64)
+    ys = np.ascontiguousarray(ys, np.int64)
+    low = store.leaf_level
+    keys = morton(xs, ys, np.int64(low))
+    order = np.argsort(keys, kind="stable")
+    second = ys if low else np.ascontiguousarray(ts, np.int64)
+    return int(from_cells(keys[order], xs[order], second[order], *store.tables))
+
+
+def cells(node: int, store) -> tuple[np.ndarray, np.ndarray, np.ndarray]:  # a Store
+    """(ys, xs, values) of the plane node's live cells, sorted row by row (by numpy: a
+    sort inside a kernel compiles numba's quicksort, seconds of a first run)."""
+    out = listing(np.int64(node), store.nodes, store.leaves, store.meta)
+    out = out[np.argsort(out[:, 0] * (1 << PLANE_LEVEL) + out[:, 1])]
+    return out[:, 0].copy(), out[:, 1].copy(), out[:, 2].copy()
+
+
+def near_seam(node: int, distance: int, store) -> bool:  # a Store
+    """Whether the plane ``node`` has a live cell within ``distance`` of the wrapping
+    plane's seam (the first or last ``distance`` rows or columns)."""
+    side = 1 << PLANE_LEVEL
+    d = min(int(distance), side)
+    strips = ((0, d, 0, side), (side - d, side, 0, side), (0, side, 0, d),
+              (0, side, side - d, side))
+    return any(any_live(np.int64(node), *(np.int64(v) for v in strip), store.nodes,
+                        store.leaves, store.meta) for strip in strips)
