@@ -53,6 +53,13 @@ def test_every_kernel_gives_the_jit_result(aot_dir: Path, tmp_path: Path) -> Non
      "--engine", "direct", "--json"],
     ["ca", "run", "--rules", "life", "--pattern", "gosper_gun", "--generations", "300",
      "--engine", "direct", "--json", "--edges", "wrap"],
+    # HashLife: bit leaves (Life, both edges) and value leaves (a multi-state rule table)
+    ["ca", "run", "--rules", "life", "--pattern", "acorn", "--generations", "5206",
+     "--engine", "hashlife", "--json"],
+    ["ca", "run", "--rules", "life", "--pattern", "gosper_gun", "--generations", "100000",
+     "--engine", "hashlife", "--json", "--edges", "wrap"],
+    ["ca", "run", "--rules", "turing_primes", "--pattern", "primes_25", "--generations",
+     "4096", "--engine", "hashlife", "--json"],
 ])
 def test_ca_run_prints_the_same_without_numba(aot_dir: Path, tmp_path: Path,
                                                argv: list[str]) -> None:

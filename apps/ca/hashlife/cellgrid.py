@@ -17,7 +17,10 @@ from apps.ca.hashlife.leaf import generation
 from apps.ca.hashlife.store import LEVEL, REACH, join
 from base.kernel_set import KernelSet
 
-kernels = KernelSet(__name__, _nrt=False)
+kernels = KernelSet(__name__, _nrt=False, sources=(
+    "apps.ca.hashlife.leaf",
+    "apps.ca.hashlife.store",
+))
 
 
 @kernels.kernel

@@ -23,7 +23,11 @@ from apps.ca.hashlife.store import (
 )
 from base.kernel_set import KernelSet
 
-kernels = KernelSet(__name__)
+kernels = KernelSet(__name__, sources=(
+    "apps.ca.hashlife.census",
+    "apps.ca.hashlife.grid",
+    "apps.ca.hashlife.store",
+))
 
 INTS = "int64[::1]"
 

@@ -43,7 +43,12 @@ from apps.ca.hashlife.store import (
 )
 from base.kernel_set import KernelSet
 
-kernels = KernelSet(__name__)
+kernels = KernelSet(__name__, sources=(
+    "apps.ca.hashlife.bits.leaves",
+    "apps.ca.hashlife.cellgrid",
+    "apps.ca.hashlife.leaf",
+    "apps.ca.hashlife.store",
+))
 
 RULES, SCRATCH = "uint64[::1]", "uint64[:, ::1]"
 

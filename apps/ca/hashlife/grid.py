@@ -8,7 +8,7 @@ import numpy as np
 from apps.ca.hashlife.store import BIT_LEAF_LEVEL, EMPTY, META_T, TABLES, join, leaf
 from base.kernel_set import KernelSet
 
-kernels = KernelSet(__name__)
+kernels = KernelSet(__name__, sources=("apps.ca.hashlife.store",))
 
 PLANE_LEVEL = 16
 INTS = "int64[::1]"

@@ -26,7 +26,7 @@ from apps.ca.hashlife.store import (
 )
 from base.kernel_set import KernelSet
 
-kernels = KernelSet(__name__)
+kernels = KernelSet(__name__, sources=("apps.ca.hashlife.store",))
 
 
 @kernels.export(f"void({TABLES})")

@@ -7,11 +7,20 @@ from __future__ import annotations
 import sys
 import time
 
-# what a Life `ca run` loads outside HashLife
+# what a `ca run` loads: the direct engine, the pattern readers' scanner, HashLife
 AOT_MODULES: tuple[str, ...] = (
     "apps.ca.grid_stats",
     "apps.ca.rle_scan",
     "apps.ca.kernels",
+    "apps.ca.hashlife.store",
+    "apps.ca.hashlife.leaf",
+    "apps.ca.hashlife.census",
+    "apps.ca.hashlife.grid",
+    "apps.ca.hashlife.upkeep",
+    "apps.ca.hashlife.cells",
+    "apps.ca.hashlife.cellgrid",
+    "apps.ca.hashlife.bits.leaves",
+    "apps.ca.hashlife.evolve",
 )
 
 STEP = "ahead-of-time modules"

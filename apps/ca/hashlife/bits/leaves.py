@@ -22,7 +22,7 @@ from apps.ca.hashlife.bits.rule import KIND_TOTALISTIC, LUT, TERM, TERM_ANY, TER
 from apps.ca.hashlife.store import HAS_WALL, leaf
 from base.kernel_set import KernelSet
 
-kernels = KernelSet(__name__)
+kernels = KernelSet(__name__, sources=("apps.ca.hashlife.store",))
 
 LOW = np.uint64(0xFFFFFFFF)
 HALF = np.uint64(0xFFFF)
