@@ -407,15 +407,21 @@ def format_rle(p: Pattern) -> str:
             sym = _state_symbol(t, multi)
             items.append(f"{n}{sym}" if n > 1 else sym)
     items.append("!")
-    body: list[str] = []
+    return "\n".join(head + rle_lines(items)) + "\n"
+
+
+def rle_lines(tokens: list[str], width: int = 70) -> list[str]:
+    """RLE run tokens joined into lines of at most ``width`` columns, cut only between tokens
+    (as Golly writes them)."""
+    lines: list[str] = []
     line = ""
-    for it in items:
-        if len(line) + len(it) > 70:
-            body.append(line)
+    for t in tokens:
+        if len(line) + len(t) > width:
+            lines.append(line)
             line = ""
-        line += it
-    body.append(line)
-    return "\n".join(head + body) + "\n"
+        line += t
+    lines.append(line)
+    return lines
 
 
 _HEADER = re.compile(
