@@ -315,9 +315,7 @@ class CAProgram:
 
     def _close_choice(self) -> None:
         if self.choice is not None:
-            self.choice.close()
-            self.client.destroy(self.choice.pad)
-            self.client.destroy(self.choice.cluster)
+            self.choice.dispose()
             self.choice = None
 
     # -- input --------------------------------------------------------------------------------
