@@ -3,13 +3,14 @@ through ``--load-state FILE``: every outcome must be a clean run (status 0) or a
 (status 1 or 2) on one line naming the file — never a traceback, a hang or memory without
 bound.
 
-A state is an envelope (emulator.machine.state_file) whose parts are deflated, so a byte
-flipped in the file is almost always refused by zlib's checksum and goes no deeper. The
-fuzzers therefore work on the state *opened*: one JSON line (the program envelope's header
-and the target envelope's header, which holds the object tree), then the target's binary
-parts, each length-prefixed. ``close_state`` packs it again (deflating the parts) before the
-command reads it, so a mutation lands in the tree, the harness's place or an array's bytes
-and is read by objstate and the program itself.
+A state is an envelope (emulator.machine.state_file) around a deflated envelope of the
+program's object tree, so a byte flipped in the file is almost always refused by zlib's
+checksum and goes no deeper. The fuzzers therefore work on the state *opened*: one JSON line
+(the program envelope's header and the target envelope's header, which holds the object
+tree), then the target's binary parts (arrays, long byte strings) as they are in the file,
+each length-prefixed. ``close_state`` packs it again before the command reads it, so a
+mutation lands in the tree or the harness's place and is read by objstate and the program
+itself (one in a part is refused by zlib, as in a file).
 """
 
 from __future__ import annotations
@@ -34,6 +35,8 @@ PROGRAMS: dict[str, list[str]] = {
     "snooker-play": ["snooker", "play", "--headless", "--stop-after", "2"],
     "sigma-run": ["sigma", "run", "--headless", "--in", str(STREAM), "--seconds", "0.3"],
 }
+COMMANDS = {"camlab88 ca program": "ca-program", "camlab88 snooker": "snooker-play",
+            "camlab88 sigma run": "sigma-run"}  # as a state names its program
 _LENGTH = 4  # bytes of each part's length prefix in an opened state
 
 
@@ -148,15 +151,19 @@ def check_isolated(program: str, data: bytes, path: Path, limit: float,
 
 # ------------------------------------------------------------------ opened states
 def open_state(data: bytes) -> bytes:
-    """A state file as one JSON line of both headers and its target's parts, uncompressed."""
-    from emulator.machine.state_file import unpack
+    """A state file as one JSON line of both headers (the target's holds the object tree),
+    then the target's parts as they are in the file (deflated), each length-prefixed."""
+    from emulator.machine.state_file import MAGIC, unpack
 
     outer, blobs = unpack(data, "program")
-    inner, parts = unpack(blobs["target"], "target")
+    inner_bytes = blobs["target"]
+    inner, _ = unpack(inner_bytes, "target")  # checks it; the parts are taken still deflated
+    k = len(MAGIC) + 4 + int.from_bytes(inner_bytes[len(MAGIC):len(MAGIC) + 4], "big")
     heads = {"program": _bare(outer), "target": _bare(inner)}
     out = bytearray(json.dumps(heads, sort_keys=True).encode("utf-8") + b"\n")
-    for i in range(len(parts)):
-        out += len(parts[str(i)]).to_bytes(_LENGTH, "big") + parts[str(i)]
+    for _name, n in inner["blobs"]:
+        out += n.to_bytes(_LENGTH, "big") + inner_bytes[k:k + n]
+        k += n
     return bytes(out)
 
 
@@ -164,7 +171,7 @@ def close_state(opened: bytes) -> bytes:
     """The state file an opened state stands for. A header line that is no longer JSON, or
     not the two headers, is passed on as it is (the loader refuses it); parts whose lengths
     no longer add up are cut where the bytes end."""
-    from emulator.machine.state_file import pack
+    from emulator.machine.state_file import MAGIC, VERSION, pack
 
     line, _, rest = opened.partition(b"\n")
     try:
@@ -180,8 +187,21 @@ def close_state(opened: bytes) -> bytes:
         n = int.from_bytes(rest[k:k + _LENGTH], "big")
         parts.append(rest[k + _LENGTH:k + _LENGTH + n])
         k += _LENGTH + n
-    inner = pack("target", target, {str(i): p for i, p in enumerate(parts)})
+    # the target's envelope as state_file.pack writes it, its parts already deflated
+    head = dict(target, format_version=VERSION, device="target",
+                blobs=[[str(i), len(p)] for i, p in enumerate(parts)])
+    text = json.dumps(head, sort_keys=True).encode("utf-8")
+    inner = MAGIC + len(text).to_bytes(4, "big") + text + b"".join(parts)
     return pack("program", program, {"target": inner})
+
+
+def program_of(opened: bytes) -> str:
+    """The program an opened state names (the first one if it names none we run)."""
+    line = opened.partition(b"\n")[0]
+    for command, name in COMMANDS.items():
+        if f'"program": "{command}"'.encode() in line:
+            return name
+    return next(iter(PROGRAMS))
 
 
 def _bare(head: dict[str, Any]) -> dict[str, Any]:
