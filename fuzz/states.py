@@ -97,15 +97,6 @@ def verdict(path: Path, code: int, err: str) -> str | None:
     return None
 
 
-def rss_mb() -> float:
-    """This process's resident memory now (MB), from /proc where there is one."""
-    try:
-        with open("/proc/self/statm") as fh:
-            return int(fh.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 2**20
-    except OSError:
-        return 0.0
-
-
 def check_isolated(program: str, data: bytes, path: Path, limit: float,
                    memory_mb: float) -> str | None:
     """Load ``data`` (a state file's bytes) into ``program`` in a forked copy of this
@@ -113,7 +104,9 @@ def check_isolated(program: str, data: bytes, path: Path, limit: float,
     restores in place, module constants included) dies with it; None if the outcome keeps
     the rule, else the finding (a traceback, a bad status, a refusal not naming the file,
     no answer within ``limit`` s, or more than ``memory_mb`` MB above this process)."""
-    base = rss_mb()
+    from fuzz.engine import rss_now_mb
+
+    base = rss_now_mb()
     r, w = os.pipe()
     pid = os.fork()
     if pid == 0:  # the child: report and leave at once (no cleanup of the parent's state)
