@@ -30,6 +30,14 @@ def _orientation(verts):  # numba kernel
 
 
 @njit(cache=True, nogil=True)
+def _edge(verts, e):  # numba kernel
+    """Edge ``e`` of a polygon (k, 2): its first corner and the step to the next one."""
+    f = (e + 1) % verts.shape[0]
+    ax, ay = verts[e, 0], verts[e, 1]
+    return ax, ay, verts[f, 0] - ax, verts[f, 1] - ay
+
+
+@njit(cache=True, nogil=True)
 def polygon(img, verts, colour):  # numba kernel
     """Blend a convex polygon (k, 2 screen pixels) of one colour over ``img`` (H, W, C) by
     its coverage of each pixel, Pitteway & Watkinson's area rule: along an edge whose x
@@ -102,10 +110,7 @@ def full_span(verts, orient, yc):  # numba kernel
     x0 = -1e300
     x1 = 1e300
     for e in range(k):
-        f = (e + 1) % k
-        ax, ay = verts[e, 0], verts[e, 1]
-        dx = verts[f, 0] - ax
-        dy = verts[f, 1] - ay
+        ax, ay, dx, dy = _edge(verts, e)
         if dx == 0.0 and dy == 0.0:
             continue
         # 0.5 + d = alpha + beta * x (as in coverage_at)
@@ -132,10 +137,7 @@ def coverage_at(verts, orient, xc, yc):  # numba kernel
     k = verts.shape[0]
     excl = 0.0
     for e in range(k):
-        f = (e + 1) % k
-        ax, ay = verts[e, 0], verts[e, 1]
-        dx = verts[f, 0] - ax
-        dy = verts[f, 1] - ay
+        ax, ay, dx, dy = _edge(verts, e)
         if dx == 0.0 and dy == 0.0:
             continue
         if abs(dx) >= abs(dy):
