@@ -235,7 +235,8 @@ def edit_tree(data: bytes, edits: list[tuple[int, Any]]) -> bytes:
     for index, value in edits:
         places = scalar_places(heads)
         node, key = places[index % len(places)]
-        node[key] = value
+        node[key] = json.loads(json.dumps(value))  # a copy: ODD_VALUES are shared, and a
+        # later edit inside a shared one could make the tree hold itself
     return close_state(json.dumps(heads).encode("utf-8") + b"\n" + rest)
 
 

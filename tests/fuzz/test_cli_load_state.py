@@ -33,10 +33,22 @@ LIMIT_S = 20.0
 MEMORY_MB = 1024.0
 
 
+class Seeds:
+    """The saved states by program, with a short repr (hypothesis prints its arguments)."""
+
+    def __init__(self, folder: Path) -> None:
+        self.states = {name: save_state(name, folder / f"{name}.c88state") for name in PROGRAMS}
+
+    def __getitem__(self, name: str) -> bytes:
+        return self.states[name]
+
+    def __repr__(self) -> str:
+        return f"Seeds({sorted(self.states)})"
+
+
 @pytest.fixture(scope="module")
-def seeds(tmp_path_factory: pytest.TempPathFactory) -> dict[str, bytes]:
-    folder = tmp_path_factory.mktemp("states")
-    return {name: save_state(name, folder / f"{name}.c88state") for name in PROGRAMS}
+def seeds(tmp_path_factory: pytest.TempPathFactory) -> Seeds:
+    return Seeds(tmp_path_factory.mktemp("states"))
 
 
 @pytest.fixture(scope="module")
