@@ -10,7 +10,8 @@ import os
 import platform
 import statistics
 import tempfile
-import time
+
+from _bench import times
 
 from apps.actors.editor import layout as L
 from apps.actors.editor.cell_types import CellType
@@ -26,12 +27,7 @@ SIZE = (L.PREVIEW[2], L.PREVIEW[3])
 
 
 def median_ms(fn, repeat: int = 12) -> float:
-    ts = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        fn()
-        ts.append(time.perf_counter() - t)
-    return 1000 * statistics.median(ts)
+    return 1000 * statistics.median(times(fn, repeat))
 
 
 def main() -> None:
@@ -53,11 +49,7 @@ def main() -> None:
         shutil.copy(CHESS, path)
         session = in_process()
         ed = ActorEditor(session.client, path, [CellType(1, "form 1", (0, 255, 0))], "life")
-        ts = []
-        for _ in range(8 * PREVIEW_EVERY):
-            t = time.perf_counter()
-            ed.frame()
-            ts.append(time.perf_counter() - t)
+        ts = times(ed.frame, 8 * PREVIEW_EVERY)
         new = [t for i, t in enumerate(ts) if i % PREVIEW_EVERY == 0][1:]
         rest = [t for i, t in enumerate(ts) if i % PREVIEW_EVERY][1:]
         print(f"\nEditor frame with a new picture: {1000 * statistics.median(new):.0f} ms; "

@@ -19,16 +19,10 @@ import tempfile
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
+from _bench import ROOT, load
 
-from apps.cafilm.build import FilmSpec, build  # noqa: E402
-from apps.cafilm.film import render_image, shoot  # noqa: E402
-
-
-def load() -> str:
-    a, b, c = os.getloadavg()
-    return f"load {a:.2f} {b:.2f} {c:.2f}"
+from apps.cafilm.build import FilmSpec, build
+from apps.cafilm.film import render_image, shoot
 
 
 def main() -> int:

@@ -23,7 +23,7 @@ import numpy as np
 
 from apps.ca.engine import CENTRE, Engine
 from apps.ca.library import rules_path
-from apps.ca.patterns import read_pattern
+from apps.ca.patterns import read_pattern, rle_lines
 from apps.ca.rules import load_rules
 
 SIDE = 4000
@@ -51,14 +51,7 @@ def soup_rle(side: int = SIDE, seed: int = 2026) -> str:
             sym = "o" if row[s] else "b"
             tokens.append(f"{n}{sym}" if n > 1 else sym)
         tokens.append("$" if y < side - 1 else "!")
-    lines, line = [], ""
-    for t in tokens:
-        if len(line) + len(t) > 70:
-            lines.append(line)
-            line = ""
-        line += t
-    lines.append(line)
-    return f"x = {side}, y = {side}, rule = B3/S23\n" + "\n".join(lines) + "\n"
+    return f"x = {side}, y = {side}, rule = B3/S23\n" + "\n".join(rle_lines(tokens)) + "\n"
 
 
 def in_process(path: str, algorithm: str) -> tuple[float, float, dict]:

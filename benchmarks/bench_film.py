@@ -16,20 +16,14 @@ import tempfile
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
+from _bench import load
 
-from apps.snooker.camera.views import View  # noqa: E402
-from apps.snooker.film.backends import DaskCluster, InProcess, LocalPool  # noqa: E402
-from apps.snooker.film.schedule import render_film  # noqa: E402
-from apps.snooker.film.task import FrameTask, render_png, scene_digest  # noqa: E402
-from apps.snooker.render.scene import Scene  # noqa: E402
-from base.atomicfile import write_atomic  # noqa: E402
-
-
-def load() -> str:
-    a, b, c = os.getloadavg()
-    return f"load {a:.2f} {b:.2f} {c:.2f}"
+from apps.snooker.camera.views import View
+from apps.snooker.film.backends import DaskCluster, InProcess, LocalPool
+from apps.snooker.film.schedule import render_film
+from apps.snooker.film.task import FrameTask, render_png, scene_digest
+from apps.snooker.render.scene import Scene
+from base.atomicfile import write_atomic
 
 
 def long_break(frames: int) -> Scene:

@@ -8,10 +8,10 @@ from __future__ import annotations
 import subprocess
 import sys
 import tempfile
-import time
 from pathlib import Path
 
 import numpy as np
+from _bench import times
 
 from apps.kas import files, timing
 from apps.kas.files import SamplePath
@@ -33,12 +33,7 @@ def keyframe(seed: int, chains: int, total: int) -> Drawing:
 
 
 def best(fn, repeat: int = 5) -> float:
-    times = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return min(times)
+    return min(times(fn, repeat))
 
 
 def main() -> None:

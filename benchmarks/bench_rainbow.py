@@ -7,9 +7,9 @@ from __future__ import annotations
 
 import platform
 import statistics
-import time
 
 import numpy as np
+from _bench import rate, times
 
 from emulator.rainbow import Rainbow
 from emulator.rainbow.compiler import Compiler
@@ -34,12 +34,7 @@ def scene(n: int, seed: int = 0) -> tuple[Rainbow, list[int]]:
 
 
 def timeit(fn, repeat: int) -> float:
-    ts = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        fn()
-        ts.append(time.perf_counter() - t)
-    return statistics.median(ts)
+    return statistics.median(times(fn, repeat))
 
 
 def compile_table() -> list[str]:
@@ -82,10 +77,7 @@ def fps_lines() -> list[str]:
     for _ in range(20):
         step()
     n = 300
-    t = time.perf_counter()
-    for _ in range(n):
-        step()
-    fps = n / (time.perf_counter() - t)
+    fps = rate(step, n)
     out.append(f"- 64 pads moving every frame, device API (compile + scan-out): "
                f"**{fps:.0f} frames/s**")
     # the same through the client API and command stream, in process
@@ -108,10 +100,7 @@ def fps_lines() -> list[str]:
 
     for _ in range(20):
         cstep()
-    t = time.perf_counter()
-    for _ in range(n):
-        cstep()
-    fps2 = n / (time.perf_counter() - t)
+    fps2 = rate(cstep, n)
     out.append(f"- the same through the client API (65 stream commands a frame, in process): "
                f"**{fps2:.0f} frames/s**")
     # scan-out alone

@@ -11,34 +11,22 @@ import os
 import statistics
 import sys
 import time
-from pathlib import Path
 
 import numpy as np
+from _bench import load, times
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-
-from apps.snooker.render.metrics import score  # noqa: E402
-from apps.snooker.render.palette import adaptive_palette, fixed_palette  # noqa: E402
-from apps.snooker.render.sigma_host import SigmaHost  # noqa: E402
-from apps.snooker.render.sigma_session import SigmaSession  # noqa: E402
-from apps.snooker.render.truecolour import RenderOptions, render_frame, render_linear  # noqa: E402
-from emulator.harness.sigma_batch import t5688_link  # noqa: E402
-from tests.snooker_render.helpers import break_scene, break_views  # noqa: E402
-
-
-def load() -> str:
-    a, b, c = os.getloadavg()
-    return f"load average {a:.2f} {b:.2f} {c:.2f}"
+from apps.snooker.render.metrics import score
+from apps.snooker.render.palette import adaptive_palette, fixed_palette
+from apps.snooker.render.sigma_host import SigmaHost
+from apps.snooker.render.sigma_session import SigmaSession
+from apps.snooker.render.truecolour import RenderOptions, render_frame, render_linear
+from emulator.harness.sigma_batch import t5688_link
+from tests.snooker_render.helpers import break_scene, break_views
 
 
 def timed(fn, repeat: int) -> tuple[float, float]:
-    times = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t)
-    return min(times), statistics.median(times)
+    ts = times(fn, repeat)
+    return min(ts), statistics.median(ts)
 
 
 def bench_truecolour(repeat: int) -> None:

@@ -168,6 +168,10 @@ def _main(argv: Sequence[str] | None) -> int:
         return OK
     except OSError as exc:
         return _write_fault(words, exc)
+    except Exception as exc:
+        if getattr(args, "load_state", None) is None:
+            raise
+        return _state_fault(words, args.load_state, exc)
     finally:
         if previous is not None:
             import signal
@@ -189,6 +193,17 @@ def _write_fault(words: list[str], exc: OSError) -> int:
     command = " ".join(["camlab88", *[w for w in words[:2] if not w.startswith("-")]])
     print(f"{command}: {exc.filename}: {exc.strerror}", file=sys.stderr)
     return 1
+
+
+def _state_fault(words: list[str], state: object, exc: Exception) -> int:
+    """A run continued from ``--load-state FILE`` failed: a state passes its checks when it
+    names this program, version and inputs and its tree fits the program's objects, but its
+    values are the program's own, unchecked — a damaged or hand-edited file can hold ones
+    the program never makes. One line naming the file, status 2 (an input it was given)."""
+    command = " ".join(["camlab88", *[w for w in words[:2] if not w.startswith("-")]])
+    print(f"{command}: {state}: the program failed on this state ({type(exc).__name__}: "
+          f"{exc}); is the file damaged or edited?", file=sys.stderr)
+    return 2
 
 
 def entry(argv: Sequence[str] | None = None) -> int:

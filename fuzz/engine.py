@@ -4,6 +4,7 @@ unexpected exception, a hang (SIGALRM after ``timeout`` s) and memory growth."""
 from __future__ import annotations
 
 import hashlib
+import os
 import random
 import resource
 import signal
@@ -39,6 +40,15 @@ class Report:
 
 def _rss_mb() -> float:
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024  # Linux: KB
+
+
+def rss_now_mb() -> float:
+    """Resident memory now (ru_maxrss is only the peak), from /proc where there is one."""
+    try:
+        with open("/proc/self/statm") as fh:
+            return int(fh.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 2**20
+    except OSError:
+        return 0.0
 
 
 def _alarm(signum: int, frame: object) -> None:

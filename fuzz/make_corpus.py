@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import shutil
 import sys
+import tempfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -217,11 +218,23 @@ def _states() -> None:
     _put("program-state", "ca_glider.state", object_state(program))
 
 
+def _cli_states() -> None:
+    """Real states saved by three commands, opened (fuzz/states.py): the cli-load-state
+    seeds. They name the camlab88 version: make them again after a version change, or the
+    commands refuse them all at the version check and the fuzzing goes no deeper."""
+    from fuzz import states
+
+    with tempfile.TemporaryDirectory() as scratch:
+        for name in states.PROGRAMS:  # opened: see fuzz/states.py
+            data = states.save_state(name, Path(scratch) / f"{name}.c88state")
+            _put("cli-load-state", f"{name}.opened", states.open_state(data))
+
+
 def main() -> int:
     if CORPUS.exists():
         shutil.rmtree(CORPUS)
     for make in (_rainbow, _link_and_sigma, _kas, _snooker, _ca, _tablets, _scripts_and_views,
-                 _kas_paint, _sessions, _states):
+                 _kas_paint, _sessions, _states, _cli_states):
         make()
     for folder in sorted(CORPUS.iterdir()):
         files = list(folder.iterdir())

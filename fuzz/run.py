@@ -18,7 +18,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from fuzz.engine import FINDINGS, Report, fuzz  # noqa: E402
+from fuzz.engine import FINDINGS, Report, fuzz, rss_now_mb  # noqa: E402
 from fuzz.targets import TARGETS  # noqa: E402
 
 
@@ -34,16 +34,7 @@ def _atheris(name: str, seconds: float) -> int:
 
 
 def _progress(report: Report) -> None:
-    print(f"  ... {report.line()}  rss {_rss_now_mb():.0f} MB", flush=True)
-
-
-def _rss_now_mb() -> float:
-    """Resident memory now (ru_maxrss is only the peak), from /proc where there is one."""
-    try:
-        with open("/proc/self/statm") as fh:
-            return int(fh.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 2**20
-    except OSError:
-        return 0.0
+    print(f"  ... {report.line()}  rss {rss_now_mb():.0f} MB", flush=True)
 
 
 def main(argv: list[str] | None = None) -> int:

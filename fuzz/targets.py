@@ -268,6 +268,21 @@ def _program_state(data: bytes) -> object:
     return load_object_state(_PROGRAMS[0], data)
 
 
+def _cli_load_state(data: bytes) -> object:
+    """An opened state (fuzz.states) packed again and given to the program it names through
+    the real command line's ``--load-state``; any outcome but a clean run or a one-line
+    refusal naming the file is a finding."""
+    from fuzz import states
+
+    path = _via_file(states.close_state(data), lambda p: p, ".c88state")
+    program = states.program_of(data)
+    code, err = states.load_state(program, Path(path), 60.0)
+    found = states.verdict(Path(path), code, err)
+    if found is not None:
+        raise AssertionError(f"{program}: {found}")
+    return code
+
+
 TARGETS: dict[str, Target] = {t.name: t for t in (
     Target("rainbow-scene", _scene, (ValueError, _rainbow_error())),
     Target("rainbow-recording", _rainbow_recording),
@@ -305,4 +320,6 @@ TARGETS: dict[str, Target] = {t.name: t for t in (
     Target("ca-actors", _actors, (_actors_error(),)),
     Target("machine-state", _machine_state),
     Target("program-state", _program_state),
+    # a command's outcome, not a reader's error: nothing escaping main() is expected
+    Target("cli-load-state", _cli_load_state, ()),
 )}

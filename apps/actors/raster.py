@@ -32,9 +32,11 @@ SHADOW_BIAS = 0.01
 @njit(cache=True, nogil=True)
 def rasterise(sx, sy, d, zbuf, ids, b1, b2):  # numba kernel
     """Triangles (n, 3) screen x, y (pixels, y down) and depth d -> nearest per pixel centre:
-    zbuf (depth), ids (triangle), b1, b2 (perspective-correct weights of corners 1, 2)."""
+    zbuf (depth), ids (triangle), b1, b2 (perspective-correct weights of corners 1, 2); with
+    ids of no rows (0, 0), only the depths."""
     h = zbuf.shape[0]
     w = zbuf.shape[1]
+    full = ids.shape[0] > 0
     for t in range(sx.shape[0]):
         d0 = d[t, 0]
         d1 = d[t, 1]
@@ -68,56 +70,28 @@ def rasterise(sx, sy, d, zbuf, ids, b1, b2):  # numba kernel
                 z = 1.0 / q
                 if z < zbuf[j, i]:
                     zbuf[j, i] = z
-                    ids[j, i] = t
-                    b1[j, i] = e1 / d1 * z
-                    b2[j, i] = e2 / d2 * z
+                    if full:
+                        ids[j, i] = t
+                        b1[j, i] = e1 / d1 * z
+                        b2[j, i] = e2 / d2 * z
 
 
 @njit(cache=True, nogil=True)
 def shadow_depth(verts, light, smap):  # numba kernel
     """Rasterise world triangles (n, 3, 3) into the shadow map of the light
-    (lx, ly, lz, f): the nearest lz - Z per texel."""
+    (lx, ly, lz, f): the nearest lz - Z per texel (``rasterise`` with the light's view)."""
     m = smap.shape[0]
-    lx = light[0]
-    ly = light[1]
-    lz = light[2]
-    f = light[3]
-    for t in range(verts.shape[0]):
-        ok = True
+    n = verts.shape[0]
+    u = np.zeros((n, 3))
+    v = np.zeros((n, 3))
+    d = np.empty((n, 3))
+    for t in range(n):
         for k in range(3):
-            if lz - verts[t, k, 2] < NEAR:
-                ok = False
-        if not ok:
-            continue
-        u0 = m / 2.0 + f * (verts[t, 0, 0] - lx) / (lz - verts[t, 0, 2])
-        v0 = m / 2.0 + f * (verts[t, 0, 1] - ly) / (lz - verts[t, 0, 2])
-        u1 = m / 2.0 + f * (verts[t, 1, 0] - lx) / (lz - verts[t, 1, 2])
-        v1 = m / 2.0 + f * (verts[t, 1, 1] - ly) / (lz - verts[t, 1, 2])
-        u2 = m / 2.0 + f * (verts[t, 2, 0] - lx) / (lz - verts[t, 2, 2])
-        v2 = m / 2.0 + f * (verts[t, 2, 1] - ly) / (lz - verts[t, 2, 2])
-        d0 = lz - verts[t, 0, 2]
-        d1 = lz - verts[t, 1, 2]
-        d2 = lz - verts[t, 2, 2]
-        area = (u1 - u0) * (v2 - v0) - (u2 - u0) * (v1 - v0)
-        if abs(area) < 1e-12:
-            continue
-        i0 = max(int(math.ceil(min(u0, min(u1, u2)) - 0.5)), 0)
-        i1 = min(int(math.floor(max(u0, max(u1, u2)) - 0.5)), m - 1)
-        j0 = max(int(math.ceil(min(v0, min(v1, v2)) - 0.5)), 0)
-        j1 = min(int(math.floor(max(v0, max(v1, v2)) - 0.5)), m - 1)
-        inv = 1.0 / area
-        for j in range(j0, j1 + 1):
-            yc = j + 0.5
-            for i in range(i0, i1 + 1):
-                xc = i + 0.5
-                e1 = ((xc - u0) * (v2 - v0) - (u2 - u0) * (yc - v0)) * inv
-                e2 = ((u1 - u0) * (yc - v0) - (xc - u0) * (v1 - v0)) * inv
-                e0 = 1.0 - e1 - e2
-                if e0 < -1e-9 or e1 < -1e-9 or e2 < -1e-9:
-                    continue
-                z = 1.0 / (e0 / d0 + e1 / d1 + e2 / d2)
-                if z < smap[j, i]:
-                    smap[j, i] = z
+            d[t, k] = light[2] - verts[t, k, 2]
+            if d[t, k] >= NEAR:  # else rasterise skips the triangle
+                u[t, k] = m / 2.0 + light[3] * (verts[t, k, 0] - light[0]) / d[t, k]
+                v[t, k] = m / 2.0 + light[3] * (verts[t, k, 1] - light[1]) / d[t, k]
+    rasterise(u, v, d, smap, np.empty((0, 0), np.int64), np.empty((0, 0)), np.empty((0, 0)))
 
 
 @njit(cache=True, nogil=True)

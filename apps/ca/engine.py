@@ -117,6 +117,19 @@ def _sorted(ys: np.ndarray, xs: np.ndarray, ts: np.ndarray):
     return ys[order], xs[order], ts[order]
 
 
+def _cell_column(i: int, name: str) -> property:
+    """The live cells' column ``i`` (ys, xs, ts) from whichever universe holds the state;
+    setting it makes the state a cell list first."""
+
+    def get(self: Engine) -> np.ndarray:
+        return self.universe.cells()[i]
+
+    def put(self: Engine, value: np.ndarray) -> None:
+        setattr(self._list(), name, value)
+
+    return property(get, put)
+
+
 class Engine:
     """State of the plane plus the rules; the model behind the ``ca`` program.
 
@@ -164,29 +177,9 @@ class Engine:
         u = self.universe
         return None if isinstance(u, (CellList, DenseGrid)) else u
 
-    @property
-    def ys(self) -> np.ndarray:
-        return self.universe.cells()[0]
-
-    @ys.setter
-    def ys(self, value: np.ndarray) -> None:
-        self._list().ys = value
-
-    @property
-    def xs(self) -> np.ndarray:
-        return self.universe.cells()[1]
-
-    @xs.setter
-    def xs(self, value: np.ndarray) -> None:
-        self._list().xs = value
-
-    @property
-    def ts(self) -> np.ndarray:
-        return self.universe.cells()[2]
-
-    @ts.setter
-    def ts(self, value: np.ndarray) -> None:
-        self._list().ts = value
+    ys = _cell_column(0, "ys")
+    xs = _cell_column(1, "xs")
+    ts = _cell_column(2, "ts")
 
     # -- rules and options ------------------------------------------------------
     def set_rules(self, rules: RuleSet) -> None:

@@ -241,13 +241,25 @@ def format_native(p: Pattern) -> str:
     return "\n".join(lines) + "\n"
 
 
+@dataclass
+class _About:
+    """What a pattern file's header lines say about the pattern, gathered as they come."""
+
+    name: str = ""
+    rule: str = ""
+    comments: list[str] = field(default_factory=list)
+    authors: list[str] = field(default_factory=list)
+
+    def fields(self) -> tuple[str, str, list[str], str]:
+        """Name, rule, comments and author, in Pattern's order."""
+        return self.name, self.rule, self.comments, "\n".join(self.authors)
+
+
 def parse_native(text: str, source: str = "<pattern>") -> Pattern:
     lines = text.splitlines()
     if not lines or lines[0].strip() != NATIVE_MAGIC:
         raise PatternError(source, 1, 1, f"expected '{NATIVE_MAGIC}' on the first line")
-    name = rule = ""
-    comments: list[str] = []
-    authors: list[str] = []
+    about = _About()
     ref = (0, 0)
     i = 1
     count = None
@@ -258,13 +270,13 @@ def parse_native(text: str, source: str = "<pattern>") -> Pattern:
         if word == "":
             continue
         if word == "name":
-            name = rest
+            about.name = rest
         elif word == "rules":
-            rule = rest
+            about.rule = rest
         elif word == "comment":
-            comments.append(rest)
+            about.comments.append(rest)
         elif word == "author":
-            authors.append(rest)
+            about.authors.append(rest)
         elif word == "ref":
             ref = _ints(rest, 2, source, i, raw, "'ref x y'")
         elif word == "cells":
@@ -284,7 +296,7 @@ def parse_native(text: str, source: str = "<pattern>") -> Pattern:
         i += 1
     if i >= len(lines) or lines[i].strip() != "end":
         raise PatternError(source, i + 1, 1, "expected 'end' after the cell lines")
-    p = Pattern(xs, ys, ts, ref, name, rule, comments, "\n".join(authors)).normalised()
+    p = Pattern(xs, ys, ts, ref, *about.fields()).normalised()
     if not xs.size:
         p.ref = ref
     return p
@@ -407,15 +419,21 @@ def format_rle(p: Pattern) -> str:
             sym = _state_symbol(t, multi)
             items.append(f"{n}{sym}" if n > 1 else sym)
     items.append("!")
-    body: list[str] = []
+    return "\n".join(head + rle_lines(items)) + "\n"
+
+
+def rle_lines(tokens: list[str], width: int = 70) -> list[str]:
+    """RLE run tokens joined into lines of at most ``width`` columns, cut only between tokens
+    (as Golly writes them)."""
+    lines: list[str] = []
     line = ""
-    for it in items:
-        if len(line) + len(it) > 70:
-            body.append(line)
+    for t in tokens:
+        if len(line) + len(t) > width:
+            lines.append(line)
             line = ""
-        line += it
-    body.append(line)
-    return "\n".join(head + body) + "\n"
+        line += t
+    lines.append(line)
+    return lines
 
 
 _HEADER = re.compile(
@@ -424,9 +442,7 @@ _HEADER = re.compile(
 
 def parse_rle(text: str, source: str = "<rle>") -> Pattern:
     lines = text.splitlines()
-    name = rule = ""
-    comments: list[str] = []
-    authors: list[str] = []
+    about = _About()
     pos = (0, 0)
     i = 0
     header = None
@@ -438,15 +454,15 @@ def parse_rle(text: str, source: str = "<rle>") -> Pattern:
         if s.startswith("#"):
             tag, _, rest = s.partition(" ")
             if s.startswith(RULES_COMMENT.strip()):
-                rule = s[len(RULES_COMMENT.strip()):].strip()
+                about.rule = s[len(RULES_COMMENT.strip()):].strip()
             elif tag == "#N":
-                name = rest.strip()
+                about.name = rest.strip()
             elif tag == "#O":
-                authors.append(rest.strip())
+                about.authors.append(rest.strip())
             elif tag in ("#C", "#c"):
-                comments.append(rest.strip())
+                about.comments.append(rest.strip())
             elif tag == "#r":
-                rule = rest.strip()
+                about.rule = rest.strip()
             elif tag == "#CXRLE":
                 m = re.search(r"Pos\s*=\s*(-?[0-9]{1,6})\s*,\s*(-?[0-9]{1,6})(?![0-9])", rest)
                 if m:  # a reference point further than the plane is wide means nothing
@@ -456,7 +472,7 @@ def parse_rle(text: str, source: str = "<rle>") -> Pattern:
         if not header:
             raise PatternError(source, i, 1, "expected the RLE header 'x = m, y = n[, rule = "
                                              f"R]', found '{s[:40]}'")
-        rule = header.group(3) or rule
+        about.rule = header.group(3) or about.rule
         break
     if header is None:
         raise PatternError(source, max(1, len(lines)), 1, "expected the RLE header "
@@ -474,8 +490,8 @@ def parse_rle(text: str, source: str = "<rle>") -> Pattern:
     # Golly's origin: Pos gives the box corner relative to it.
     ref = (-pos[0] - left, -pos[1] - top)
     if isinstance(cells, np.ndarray):
-        return GridPattern(cells, ref, name, rule, comments, "\n".join(authors))
-    return Pattern(*cells, ref, name, rule, comments, "\n".join(authors)).shifted_to_origin()
+        return GridPattern(cells, ref, *about.fields())
+    return Pattern(*cells, ref, *about.fields()).shifted_to_origin()
 
 
 # -- Golly's macrocell (.mc) ---------------------------------------------------------------

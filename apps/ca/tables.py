@@ -204,15 +204,20 @@ def _dense_plan(rules: RuleSet, top: int, lookup: np.ndarray, out_start: list[in
     if lut[0] != 0:
         return None  # a cell that received nothing must die
     return DensePlan(
-        etype=np.array([t for t, _ in entries], np.int64),
-        edy=np.array([m.dy for _, m in entries], np.int64),
-        edx=np.array([m.dx for _, m in entries], np.int64),
-        eop=np.array([m.op for _, m in entries], np.int64),
-        evals=np.array([m.value for _, m in entries], dtype),
+        **_entry_arrays(entries, dtype),
         lut=lut,
         msg_dtype=dtype,
         sep=_separable_plan(entries, dtype, lut, bound),
     )
+
+
+def _entry_arrays(entries: list, dtype: type) -> dict[str, np.ndarray]:
+    """The (type, message) entries as the kernels' parallel arrays, values in ``dtype``."""
+    return {"etype": np.array([t for t, _ in entries], np.int64),
+            "edy": np.array([m.dy for _, m in entries], np.int64),
+            "edx": np.array([m.dx for _, m in entries], np.int64),
+            "eop": np.array([m.op for _, m in entries], np.int64),
+            "evals": np.array([m.value for _, m in entries], dtype)}
 
 
 # Bit-set interpretation is used for at most this many distinct next life-forms.
@@ -268,11 +273,7 @@ def _separable_plan(entries: list, dtype: type, lut: np.ndarray, bound: int) -> 
         xg=np.array([g for g, _, _ in excluded], np.int64),
         xdy=np.array([dy for _, dy, _ in excluded], np.int64),
         xdx=np.array([dx for _, _, dx in excluded], np.int64),
-        etype=np.array([t for t, _ in rest], np.int64),
-        edy=np.array([m.dy for _, m in rest], np.int64),
-        edx=np.array([m.dx for _, m in rest], np.int64),
-        eop=np.array([m.op for _, m in rest], np.int64),
-        evals=np.array([m.value for _, m in rest], dtype),
+        **_entry_arrays(rest, dtype),
         interp=interp,
         masks32=np.array(bitsets if interp == 1 else [], np.uint32),
         masks64=np.array(bitsets if interp == 2 else [], np.uint64),

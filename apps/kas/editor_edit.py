@@ -122,11 +122,17 @@ def _transform(ed: Editor, matrix: np.ndarray, scope: str) -> bool:
     if not targets:
         ed.message = "no points to act on"
         return False
-    moved = [(ci, lo, hi, ops.apply(matrix, ed.drawing.chains[ci].points[lo:hi + 1]))
-             for ci, lo, hi in targets]
-    if not all(ed._inside(p) for *_, p in moved):
+    return _rewrite(ed, targets, lambda p: ops.apply(matrix, p))
+
+
+def _rewrite(ed: Editor, spans: list[tuple[int, int, int]],
+             fn: Callable[[np.ndarray], np.ndarray]) -> bool:
+    """Each span's points (chain, first, last) through ``fn``, written back only if every
+    result stays inside the drawing area; True if written."""
+    new = [(ci, lo, hi, fn(ed.drawing.chains[ci].points[lo:hi + 1])) for ci, lo, hi in spans]
+    if not all(ed._inside(p) for *_, p in new):
         return False
-    for ci, lo, hi, p in moved:
+    for ci, lo, hi, p in new:
         c = ed.drawing.chains[ci]
         pts = c.points.copy()
         pts[lo:hi + 1] = p
@@ -175,15 +181,7 @@ def _reshape(ed: Editor, fn: Callable[[np.ndarray], np.ndarray]) -> None:
     if not sel:
         ed.message = "no points to act on"
         return
-    new = [(ci, lo, hi, fn(ed.drawing.chains[ci].points[lo:hi + 1])) for ci, lo, hi in sel]
-    if not all(ed._inside(p) for *_, p in new):
-        return
-    for ci, lo, hi, p in new:
-        c = ed.drawing.chains[ci]
-        pts = c.points.copy()
-        pts[lo:hi + 1] = p
-        c.points = pts
-    ed.dirty = True
+    _rewrite(ed, sel, fn)
 
 
 def _delete(ed: Editor) -> None:

@@ -17,15 +17,12 @@ from emulator.sigma.alpha import AlphaScreen
 from emulator.sigma.fast import scan_points_fast
 from emulator.sigma.models import Model, get_model
 from protocols.sigma import (
-    AgsEnd,
     AgsEscape,
     AgsPoints,
     AlphaText,
     Command,
     Decoder,
     Dots,
-    DotsEnd,
-    GraphicsFlag,
     GraphicsText,
     Order,
     Point,
@@ -144,8 +141,7 @@ class Terminal:
                 self._text(cmd.text)
             elif t is AgsEscape:
                 self._ags_escape(cmd)
-            elif t in (GraphicsFlag, AgsEnd, DotsEnd):
-                pass
+            # GraphicsFlag, AgsEnd and DotsEnd only switch the decoder's mode: nothing to draw
 
     def _send(self, data: bytes) -> None:
         if self.on_output is not None:

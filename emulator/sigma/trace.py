@@ -14,19 +14,7 @@ from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
 from emulator.protocol_trace import ProtocolError, TraceEvent
-from protocols.sigma import (
-    AgsEnd,
-    AgsEscape,
-    AgsPoints,
-    AlphaText,
-    Dots,
-    DotsEnd,
-    GraphicsFlag,
-    GraphicsText,
-    Order,
-    Point,
-    Points,
-)
+from protocols.sigma import commands as sc
 from protocols.sigma.orders import BY_CODE, ORDERS, Mode
 
 if TYPE_CHECKING:
@@ -130,25 +118,25 @@ class SigmaTracer:
 
     def _one(self, c: Any, t: float) -> list[TraceEvent]:
         at = self.start
-        if isinstance(c, Order):
+        if isinstance(c, sc.Order):
             fields = BY_CODE[c.code.encode()].fields
             return [TraceEvent(at, t, c.code, {f.name: v for f, v in zip(fields, c.args)})]
-        if isinstance(c, Point):
+        if isinstance(c, sc.Point):
             pen = "draw" if self.term.reg.pen_down else "move"
             return [TraceEvent(at, t, "pair", {"x": c.x, "y": c.y, "pen": pen})]
-        if isinstance(c, Points | AgsPoints):
-            name = "ags point" if isinstance(c, AgsPoints) else "pair"
+        if isinstance(c, sc.Points | sc.AgsPoints):
+            name = "ags point" if isinstance(c, sc.AgsPoints) else "pair"
             return [TraceEvent(at, t, name, {"x": int(x), "y": int(y)}) for x, y in c.xy]
-        if isinstance(c, AlphaText):
+        if isinstance(c, sc.AlphaText):
             return [TraceEvent(at, t, "alpha", {"text": c.data.decode("latin-1")})]
-        if isinstance(c, GraphicsText):
+        if isinstance(c, sc.GraphicsText):
             return [TraceEvent(at, t, "BA text", {"text": c.text.decode("latin-1")})]
-        if isinstance(c, Dots):
+        if isinstance(c, sc.Dots):
             return [TraceEvent(at, t, "dots", {"colours": c.colours.hex()})]
-        if isinstance(c, AgsEscape):
+        if isinstance(c, sc.AgsEscape):
             return [TraceEvent(at, t, "ESC", {"letter": c.letter,
                                               "param": c.param.decode("latin-1")})]
-        names = {GraphicsFlag: "+-*/", AgsEnd: "US", DotsEnd: "Z"}
+        names = {sc.GraphicsFlag: "+-*/", sc.AgsEnd: "US", sc.DotsEnd: "Z"}
         return [TraceEvent(at, t, names.get(type(c), type(c).__name__))]
 
     # ------------------------------------------------------------------ problems
@@ -179,7 +167,7 @@ class SigmaTracer:
                                       "graphics mode", "unknown",
                                       "an order letter, a digit, or +-*/", ctx))
         if self.term.errors > errors:
-            order = next((c for c in reversed(cmds) if isinstance(c, Order)), None)
+            order = next((c for c in reversed(cmds) if isinstance(c, sc.Order)), None)
             code = order.code if order is not None else "?"
             args = list(order.args) if order is not None else []
             out.append(TraceEvent(self.start, t, code, {"values": args},

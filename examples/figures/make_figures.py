@@ -131,12 +131,17 @@ def fig_7_3() -> str:
                      "which the editing method\nis chosen.")
 
 
-def fig_7_4() -> str:
-    ca = _CA("gosper_gun")
-    ca.auto_then_step(120)
+def _after_auto(caption: str, frames: int, *pattern_and_rules: str) -> str:
+    """The CA's screen after ``frames`` generations in auto mode, held in step mode."""
+    ca = _CA(*pattern_and_rules)
+    ca.auto_then_step(frames)
     ca.run("frames 2")
-    return ca.script("Figure 7.4: Gosper's glider gun in auto mode, a generation a frame, "
-                     "until four gliders are on their way.")
+    return ca.script(caption)
+
+
+def fig_7_4() -> str:
+    return _after_auto("Figure 7.4: Gosper's glider gun in auto mode, a generation a frame, "
+                       "until four gliders are on their way.", 120, "gosper_gun")
 
 
 def fig_7_5() -> str:
@@ -151,12 +156,9 @@ def fig_7_5() -> str:
 
 
 def fig_7_9() -> str:
-    ca = _CA("primes_25", "turing_primes")
-    ca.auto_then_step(16)
-    ca.run("frames 2")
-    return ca.script("Figure 7.9: the three-tape Turing machine testing 25: number, divisor, "
-                     "remainder and the head\nbelow, in auto mode, early on while the divisor "
-                     "is 3.")
+    return _after_auto("Figure 7.9: the three-tape Turing machine testing 25: number, "
+                       "divisor, remainder and the head\nbelow, in auto mode, early on while "
+                       "the divisor is 3.", 16, "primes_25", "turing_primes")
 
 
 # -- the snooker motion program: fixed scripts on its screen's coordinates ------------------

@@ -50,6 +50,13 @@ BACKLOG = 128  # connections the kernel queues between two polls (a burst is not
 WRITE_TIMEOUT = 2.0  # s a serial port may hold our bytes (handlers that support it)
 
 
+def _close_quietly(handle: Any) -> None:
+    """Close a socket or serial port that may already be broken: the bridge is letting go
+    of it, so an error closing it changes nothing."""
+    with contextlib.suppress(Exception):
+        handle.close()
+
+
 @dataclass(frozen=True)
 class BridgeEvent:
     kind: str  # "connected", "disconnected", "refused", "error"
@@ -144,7 +151,14 @@ class Bridge:
         self._settle = SETTLE_POLLS
 
     def close(self) -> None:
+        """Release the bridge's ports (once: closing again does nothing)."""
+        if self.closed:
+            return
         self.closed = True
+        self._release()
+
+    def _release(self) -> None:
+        """Close what the bridge opened to the outside (subclasses)."""
 
     def __enter__(self) -> Any:
         return self
@@ -178,8 +192,7 @@ class PtyBridge(Bridge):
     def _write_outside(self, data: bytes) -> None:
         self.port.write(data)
 
-    def close(self) -> None:
-        super().close()
+    def _release(self) -> None:
         self.port.close()
 
 
@@ -257,8 +270,7 @@ class TcpBridge(Bridge):
         line still go down it (``nc host port < plot`` draws the whole plot), and the line
         hangs up when the next client connects."""
         if self._client is not None:
-            with contextlib.suppress(OSError):
-                self._client.close()
+            _close_quietly(self._client)
             self._client = None
             self._pending.clear()
             self._event("disconnected", why)
@@ -358,13 +370,9 @@ class TcpBridge(Bridge):
         if len(self._pending) > 1 << 20:  # a client that never reads: bounded, then dropped
             self._drop_client("client not reading (over 1 MiB pending)", hang_up=True)
 
-    def close(self) -> None:
-        if self.closed:
-            return
-        super().close()
+    def _release(self) -> None:
         if self._client is not None:
-            with contextlib.suppress(OSError):
-                self._client.close()
+            _close_quietly(self._client)
             self._client = None
         self._server.close()
 
@@ -415,8 +423,7 @@ class SerialUrlBridge(Bridge):
         self._event("connected", self.url)
 
     def _fail(self, exc: Exception) -> None:
-        with contextlib.suppress(Exception):
-            self._port.close()
+        _close_quietly(self._port)
         self._port = None
         self._retry_in = self.RETRY_POLLS
         self._event("disconnected", f"{self.url}: {exc}")
@@ -448,11 +455,7 @@ class SerialUrlBridge(Bridge):
         except (serial.SerialException, OSError) as exc:
             self._fail(exc)
 
-    def close(self) -> None:
-        if self.closed:
-            return
-        super().close()
+    def _release(self) -> None:
         if self._port is not None:
-            with contextlib.suppress(Exception):
-                self._port.close()
+            _close_quietly(self._port)
             self._port = None

@@ -6,6 +6,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+# the package (protocols.sigma) re-exports exactly these
+__all__ = ["AgsEnd", "AgsEscape", "AgsPoints", "AlphaText", "Command", "DecoderStats", "Dots",
+           "DotsEnd", "GraphicsFlag", "GraphicsText", "Order", "Point", "Points"]
+
 
 @dataclass(frozen=True, slots=True)
 class Order:

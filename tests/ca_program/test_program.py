@@ -134,11 +134,11 @@ def test_main_menu_layout_and_do_nothing():
     d.leave_editing()
     d.run("press middle 300 300\nframes 1")
     menu = d.program.main_menu
-    assert menu.is_open and MAIN_ITEMS[menu.highlighted] == "Do nothing"
+    assert menu.open_ and MAIN_ITEMS[menu.highlighted] == "Do nothing"
     f = d.frame
     ox, oy = menu.x, menu.y
     d.run("release middle 300 300\nframes 1")
-    assert not menu.is_open and d.program.session.generation == 0
+    assert not menu.open_ and d.program.session.generation == 0
     assert MAIN_ITEMS[:10][5] == "Do nothing" and MAIN_ITEMS[10] == "Centralise viewport"
     assert menu.width == 3 * 144  # the third column: HashLife's jumps
     assert_matches_golden(f[oy:oy + 180, ox:ox + menu.width], DATA / "main_menu.png")

@@ -22,7 +22,8 @@ from fuzz.targets import CORPUS, TARGETS
 
 ROOT = Path(__file__).resolve().parents[2]
 IN_PROCESS_INPUTS = 150  # per format: 31 formats, about 4500 inputs
-SLOW = {"sigma-stream": 40}  # the terminal draws every order of a 7 KB demo stream
+# the terminal draws every order of a 7 KB demo stream; a command runs for each state
+SLOW = {"sigma-stream": 40, "cli-load-state": 12}
 CLI_INPUTS = 40  # mutated inputs per command line below, besides the corpus files
 HANG_S = 20.0
 MEMORY_MB = 1024.0

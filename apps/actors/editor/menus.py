@@ -63,7 +63,5 @@ class Menus:
 
     def cancel(self) -> None:
         if self.types is not None:
-            self.types.close()
-            self.client.destroy(self.types.pad)
-            self.client.destroy(self.types.cluster)
+            self.types.dispose()
             self.types = None

@@ -33,10 +33,10 @@ from apps.actors.editor.profile import Profile
 from apps.actors.editor.tablet import TabletPen
 from apps.actors.model import Actor, ActorFileError, ActorSet, Material, read_actors, write_actors
 from apps.actors.preview import turntable
+from apps.quitting import QUIT_QUESTION, AsksBeforeQuitting
 from protocols.rainbow.client import RainbowClient
 from protocols.rainbow.events import KeyEvent, MouseEvent, TabletEvent
 
-QUIT_QUESTION = "unsaved work: y saves and quits, n quits without saving, Esc stays"
 ERROR, INFO, PROMPT = "#ffb0b0", "#c8e8ff", "#fff0a0"
 # A new turntable picture every PREVIEW_EVERY frames (12.5 a second), turned 6 degrees
 # further: one picture costs about 0.15 s at the preview's size, so rendering one every frame
@@ -46,7 +46,7 @@ DEGREES_PER_PICTURE = 6  # once round in 60 pictures (4.8 s)
 POLL_LIMIT = 256
 
 
-class ActorEditor:
+class ActorEditor(AsksBeforeQuitting):
     def __init__(self, client: RainbowClient, path: str, types: list[CellType],
                  rules: str, may_save: bool = True) -> None:
         self.client = client
@@ -199,33 +199,18 @@ class ActorEditor:
         self.frames += 1
 
     # -- quitting -----------------------------------------------------------------------------
-    def may_close(self) -> bool:
-        """The window's close button: True to close now (asks first over unsaved work)."""
-        return self.request_quit(closing=True)
+    # (apps.quitting asks over unsaved work)
+    def save_work(self) -> bool:
+        return self.save()
 
-    def request_quit(self, closing: bool = False) -> bool:
-        if self.asking and closing:
-            self.discarded = True
-        elif self.unsaved():
-            self.asking = True
-            self.say(QUIT_QUESTION, PROMPT)
-            return False
-        self.asking = False
+    def ask_quit(self) -> None:
+        self.say(QUIT_QUESTION, PROMPT)
+
+    def stay(self) -> None:
+        self.say("carrying on", INFO)
+
+    def end(self) -> None:
         self.finished = True
-        return True
-
-    def _answer(self, key: str) -> None:
-        if key == "y":
-            self.asking = False
-            self.finished = self.save()
-        elif key == "n":
-            self.asking = False
-            self.discarded = self.finished = True
-        elif key == "escape":
-            self.asking = False
-            self.say("carrying on", INFO)
-        else:
-            self.say(QUIT_QUESTION, PROMPT)
 
     # -- input --------------------------------------------------------------------------------
     def handle(self, e: object) -> None:
@@ -242,7 +227,7 @@ class ActorEditor:
 
     def _key(self, key: str, char: str = "") -> None:
         if self.asking:
-            self._answer(key)
+            self.answer_quit(key)
         elif self.naming is not None:
             self._name_key(key, char)
         elif key == "escape" and self.menus.is_open():

@@ -17,6 +17,7 @@ from apps.ca.program import colours, raster
 from apps.ca.program.viewport import BAND_W, VIEW_H, VIEW_W, Viewport
 from protocols.rainbow.client import SCREEN, RainbowClient
 from protocols.rainbow.ui import MessageArea, SuperPad
+from protocols.rainbow.ui.double_buffer import Flip
 
 PAD_W, PAD_H = VIEW_W + BAND_W, VIEW_H + BAND_W  # the super pad: the view plus a margin
 BAND_PAGE, CURSOR_PAGE, RUBBER_PAGE, AREA_PAGE = 5, 6, 7, 8
@@ -104,11 +105,11 @@ class Display:
         self.rules = None
         self.mode = "colour"  # or "mono"
         self.editing = False
-        self.clusters = [c.create_cluster(VIEW_W, VIEW_H) for _ in range(2)]
-        self.cluster_arcs = [c.map(SCREEN, cl, 0, 0, GRID_PRIORITY, on=(i == 0))
-                             for i, cl in enumerate(self.clusters)]
-        self.buffers = [GridBuffer(c, cl, view) for cl in self.clusters]
-        self.shown = 0
+        clusters = (c.create_cluster(VIEW_W, VIEW_H), c.create_cluster(VIEW_W, VIEW_H))
+        # double buffering: the back one is drawn while the front one is shown
+        self.buffers = Flip(c, (GridBuffer(c, clusters[0], view), GridBuffer(c, clusters[1], view)),
+                            (c.map(SCREEN, clusters[0], 0, 0, GRID_PRIORITY, on=True),
+                             c.map(SCREEN, clusters[1], 0, 0, GRID_PRIORITY, on=False)))
         c.set_lut(BAND_PAGE * 256, ["#303040"])
         band = c.create_pad(BAND_W, VIEW_H, 0, lut_page=BAND_PAGE)
         c.map(SCREEN, band, VIEW_W, 0, GRID_PRIORITY)
@@ -124,33 +125,18 @@ class Display:
         self.set_marker(1)
 
     # -- buffers ----------------------------------------------------------------------------
-    @property
-    def front(self) -> GridBuffer:
-        return self.buffers[self.shown]
-
-    @property
-    def back(self) -> GridBuffer:
-        return self.buffers[1 - self.shown]
-
-    def swap(self) -> None:
-        """Show the back buffer whole at the next frame (double buffering)."""
-        c = self.client
-        c.set_on(self.cluster_arcs[1 - self.shown], True)
-        c.set_on(self.cluster_arcs[self.shown], False)
-        self.shown = 1 - self.shown
-
     def draw_back(self, engine: Engine) -> None:
-        self.back.engine = engine
-        self.back.redraw()
+        self.buffers.back.engine = engine
+        self.buffers.back.redraw()
 
     def redraw_front(self, engine: Engine) -> None:
-        self.front.engine = engine
-        self.front.redraw()
-        self.back.stale = True
+        self.buffers.front.engine = engine
+        self.buffers.front.redraw()
+        self.buffers.back.stale = True
 
     def pan(self) -> None:
         """The viewport moved: move both buffers' arcs, drawing only newly exposed strips."""
-        for buf in self.buffers:
+        for buf in self.buffers.items:
             if buf.stale:  # it is redrawn whole before being shown: no strips needed
                 buf.vx, buf.vy = self.view.px, self.view.py
             else:
@@ -160,8 +146,8 @@ class Display:
         """One cell of the shown state changed (an edit): redraw just that cell."""
         z = self.view.zoom or 1
         wx, wy = self.view.world_of_cell(cx, cy)
-        self.front.redraw_world(wx, wy, z, z)
-        self.back.stale = True
+        self.buffers.front.redraw_world(wx, wy, z, z)
+        self.buffers.back.stale = True
 
     # -- colours ----------------------------------------------------------------------------
     def set_rules(self, rules) -> None:
@@ -184,7 +170,7 @@ class Display:
 
     def apply_page(self) -> None:
         p = self.page()
-        for buf in self.buffers:
+        for buf in self.buffers.items:
             self.client.set_page(buf.pad, p)
         self.client.set_page(self.marker, colours.PAGE_EDIT if self.view.zoom == 0 else p)
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
 from protocols.rainbow.ui import CrossMenu, PopupMenu
-from protocols.rainbow.ui.menu import pastel
+from protocols.rainbow.ui.menu import ItemMenu, pastel
 
 MAIN_LEFT = ["Advance area", "Alter display", "Change rules", "Clear area", "Statistics",
              "Do nothing", "Save pattern", "Load pattern", "Randomly populate", "Edit cells"]
@@ -49,7 +49,7 @@ def main_item_point(item: str, cx: int, cy: int, jumps: bool = False) -> tuple[i
     return x + ix + COL_W // 2, y + iy + ROW_H // 2
 
 
-class MainMenu:
+class MainMenu(ItemMenu):
     """Two columns of ten items in one 5-bit pad (values: border, ink, one per item)."""
 
     def __init__(self, client: RainbowClient, lut_page: int = 15, colour: str = "#f8c890",
@@ -58,6 +58,7 @@ class MainMenu:
         self.items = MAIN_ITEMS + (JUMP_ITEMS if jumps else [])
         self.columns = 3 if jumps else 2
         self.base = lut_page * 256
+        self.plane = 0
         self.colour = colour
         self.highlights = [pastel(i, len(self.items)) for i in range(len(self.items))]
         self.width, self.height = self.columns * COL_W, 10 * ROW_H
@@ -75,7 +76,7 @@ class MainMenu:
         self.first = MAIN_ITEMS.index("Do nothing")
         self.highlighted: int | None = None
         self.x = self.y = 0
-        self.is_open = False
+        self.open_ = False
 
     def _draw_item(self, i: int) -> None:
         x, y = _cell(i)
@@ -94,21 +95,12 @@ class MainMenu:
             if name in self.items:
                 self._draw_item(self.items.index(name))
 
-    def _highlight(self, i: int | None) -> None:
-        if i == self.highlighted:
-            return
-        if self.highlighted is not None:
-            self.client.set_lut(self.base + 2 + self.highlighted, [self.colour])
-        if i is not None:
-            self.client.set_lut(self.base + 2 + i, [self.highlights[i]])
-        self.highlighted = i
-
     def open(self, cx: int, cy: int) -> None:
         self.x, self.y = main_menu_origin(cx, cy, self.columns)
         self.client.move(self.arc, self.x, self.y)
         self._highlight(self.first)
         self.client.set_on(self.arc, True)
-        self.is_open = True
+        self.open_ = True
 
     def track(self, cx: int, cy: int) -> str | None:
         dx, dy = cx - self.x, cy - self.y
@@ -117,12 +109,6 @@ class MainMenu:
         self._highlight(i if i is not None and i < len(self.items) else None)
         return None if self.highlighted is None else self.items[self.highlighted]
 
-    def close(self) -> str | None:
-        self.client.set_on(self.arc, False)
-        chosen = self.highlighted
-        self._highlight(None)
-        self.is_open = False
-        return None if chosen is None else self.items[chosen]
 
 
 def edit_menu(client: RainbowClient) -> CrossMenu:

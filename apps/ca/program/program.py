@@ -211,10 +211,10 @@ class CAProgram:
         if self.pending is None:
             self._compute_pending()
         assert self.pending is not None
-        if self.display.back.stale:
+        if self.display.buffers.back.stale:
             self.display.draw_back(self.pending)
-        self.display.swap()
-        self.display.back.stale = True
+        self.display.buffers.swap()
+        self.display.buffers.back.stale = True
         self.session.engine = self.pending
         self.frequency = stepping.next_frequency(self.frequency, self.fast_forward)
         self.pending = None
@@ -315,9 +315,7 @@ class CAProgram:
 
     def _close_choice(self) -> None:
         if self.choice is not None:
-            self.choice.close()
-            self.client.destroy(self.choice.pad)
-            self.client.destroy(self.choice.cluster)
+            self.choice.dispose()
             self.choice = None
 
     # -- input --------------------------------------------------------------------------------

@@ -79,7 +79,7 @@ def go_to_generation(p: CAProgram) -> Dialogue:
         while p.session.generation < target:
             p.pending, p.pending_checkpoints = ahead(p.session, target - p.session.generation,
                                                      p.script.next_generation, bar)
-            p.display.back.stale = True  # drawn by commit, once
+            p.display.buffers.back.stale = True  # drawn by commit, once
             p.commit()
     except JumpStopped:
         p.pending, p.pending_checkpoints = None, []

@@ -11,6 +11,7 @@ from __future__ import annotations
 from apps.kas.program import layout as L
 from apps.kas.program.draw import Painter, Prim
 from apps.kas.program.keyboard import bytes_to_keys
+from apps.quitting import QUIT_QUESTION, AsksBeforeQuitting
 from protocols.sigma import Encoder
 from protocols.tablets.input_layer import PointerEvent
 
@@ -31,16 +32,11 @@ def setup_bytes(enc: Encoder, lut: list[tuple[int, int, int]], cursor: bool = Tr
     return bytes(out)
 
 
-QUIT_QUESTION = "unsaved work: y saves and quits, n quits without saving, Esc stays"
-
-
-class Front:
+class Front(AsksBeforeQuitting):
     """Base of the editor and path fronts: subclasses give ``prims()`` and handle input.
 
     Quitting (Esc with no command to cancel, or the window's close button) is the same for
-    every front: with no unsaved work the program ends at once; with unsaved work the
-    message line asks first — y saves and quits, n quits without saving, Esc stays (a
-    second close while asked also quits without saving)."""
+    every front (apps.quitting)."""
 
     def __init__(self, background: str = "black") -> None:
         self.enc = Encoder()
@@ -82,36 +78,14 @@ class Front:
     def say(self, message: str) -> None:
         """Put ``message`` on the program's message line."""
 
-    def may_close(self) -> bool:
-        """The window's close button: True to close now (asks first over unsaved work)."""
-        return self.request_quit(closing=True)
+    def ask_quit(self) -> None:
+        self.say(QUIT_QUESTION)
 
-    def request_quit(self, closing: bool = False) -> bool:
-        """Esc or close: quit now if nothing is unsaved, else ask (see the class)."""
-        if self.asking and closing:
-            self.discarded = True
-        elif self.unsaved():
-            self.asking = True
-            self.say(QUIT_QUESTION)
-            return False
-        self.asking = False
+    def stay(self) -> None:
+        self.say("")
+
+    def end(self) -> None:
         self.quitting = True
-        return True
-
-    def _answer(self, key: str) -> None:
-        k = key.lower()
-        if k == "y":
-            self.asking = False
-            if self.save_work():
-                self.quitting = True
-        elif k == "n":
-            self.asking = False
-            self.discarded = self.quitting = True
-        elif k == "escape":
-            self.asking = False
-            self.say("")
-        else:
-            self.say(QUIT_QUESTION)
 
     # -- driving ---------------------------------------------------------------------------
     def start(self) -> bytes:
@@ -132,7 +106,7 @@ class Front:
             if self.quitting:
                 return
             if self.asking:
-                self._answer(k)
+                self.answer_quit(k)
             else:
                 self.on_key(k)
 

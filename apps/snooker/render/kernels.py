@@ -30,6 +30,14 @@ def _orientation(verts):  # numba kernel
 
 
 @njit(cache=True, nogil=True)
+def _edge(verts, e):  # numba kernel
+    """Edge ``e`` of a polygon (k, 2): its first corner and the step to the next one."""
+    f = (e + 1) % verts.shape[0]
+    ax, ay = verts[e, 0], verts[e, 1]
+    return ax, ay, verts[f, 0] - ax, verts[f, 1] - ay
+
+
+@njit(cache=True, nogil=True)
 def polygon(img, verts, colour):  # numba kernel
     """Blend a convex polygon (k, 2 screen pixels) of one colour over ``img`` (H, W, C) by
     its coverage of each pixel, Pitteway & Watkinson's area rule: along an edge whose x
@@ -102,10 +110,7 @@ def full_span(verts, orient, yc):  # numba kernel
     x0 = -1e300
     x1 = 1e300
     for e in range(k):
-        f = (e + 1) % k
-        ax, ay = verts[e, 0], verts[e, 1]
-        dx = verts[f, 0] - ax
-        dy = verts[f, 1] - ay
+        ax, ay, dx, dy = _edge(verts, e)
         if dx == 0.0 and dy == 0.0:
             continue
         # 0.5 + d = alpha + beta * x (as in coverage_at)
@@ -132,10 +137,7 @@ def coverage_at(verts, orient, xc, yc):  # numba kernel
     k = verts.shape[0]
     excl = 0.0
     for e in range(k):
-        f = (e + 1) % k
-        ax, ay = verts[e, 0], verts[e, 1]
-        dx = verts[f, 0] - ax
-        dy = verts[f, 1] - ay
+        ax, ay, dx, dy = _edge(verts, e)
         if dx == 0.0 and dy == 0.0:
             continue
         if abs(dx) >= abs(dy):
@@ -272,6 +274,20 @@ def ball(img, cam, b, lights, specks):  # numba kernel
 
 
 @njit(cache=True, nogil=True)
+def _light_terms(lights, m, px, py, pz, nx, ny, nz, vx, vy, vz):  # numba kernel
+    """Phong's two cosines for light ``m`` at point p with unit normal n and unit vector v
+    to the eye: N.L, and R.V where R is L mirrored about N (R.V is 0 when N.L <= 0)."""
+    lx, ly, lz = lights[m, 0] - px, lights[m, 1] - py, lights[m, 2] - pz
+    ln = math.sqrt(lx * lx + ly * ly + lz * lz)
+    lx, ly, lz = lx / ln, ly / ln, lz / ln
+    ndl = nx * lx + ny * ly + nz * lz
+    if ndl <= 0.0:
+        return ndl, 0.0
+    rx, ry, rz = 2.0 * ndl * nx - lx, 2.0 * ndl * ny - ly, 2.0 * ndl * nz - lz
+    return ndl, rx * vx + ry * vy + rz * vz
+
+
+@njit(cache=True, nogil=True)
 def shade(b, lights, specks, nx, ny, nz, ox, oy, oz, r_px):
     """Phong at the sphere point with world normal n (eye at o): ambient, diffuse, specular."""
     px = b[B_C] + b[B_R] * nx
@@ -288,14 +304,9 @@ def shade(b, lights, specks, nx, ny, nz, ox, oy, oz, r_px):
     for c in range(3):
         out[c] = b[B_KA] * b[B_AMB + c] * albedo[c]
     for m in range(lights.shape[0]):
-        lx, ly, lz = lights[m, 0] - px, lights[m, 1] - py, lights[m, 2] - pz
-        ln = math.sqrt(lx * lx + ly * ly + lz * lz)
-        lx, ly, lz = lx / ln, ly / ln, lz / ln
-        ndl = nx * lx + ny * ly + nz * lz
+        ndl, rdv = _light_terms(lights, m, px, py, pz, nx, ny, nz, vx, vy, vz)
         if ndl <= 0.0:
             continue
-        rx, ry, rz = 2.0 * ndl * nx - lx, 2.0 * ndl * ny - ly, 2.0 * ndl * nz - lz
-        rdv = rx * vx + ry * vy + rz * vz
         spec = b[B_KS] * rdv ** b[B_N] if rdv > 0.0 else 0.0
         for c in range(3):
             out[c] += (b[B_KD] * ndl * albedo[c] + spec) * lights[m, 3 + c]
@@ -404,14 +415,9 @@ def wood_shade(cam, p, lights, ambient, x, y):  # numba kernel
     for c in range(3):
         out[c] = p[15] * ambient[c] * p[12 + c] * shade
     for m in range(lights.shape[0]):
-        lx, ly, lz = lights[m, 0] - px, lights[m, 1] - py, lights[m, 2] - pz
-        ln = math.sqrt(lx * lx + ly * ly + lz * lz)
-        lx, ly, lz = lx / ln, ly / ln, lz / ln
-        ndl = nx * lx + ny * ly + nz * lz
+        ndl, rdv = _light_terms(lights, m, px, py, pz, nx, ny, nz, vx, vy, vz)
         if ndl <= 0.0:
             continue
-        rx, ry, rz = 2.0 * ndl * nx - lx, 2.0 * ndl * ny - ly, 2.0 * ndl * nz - lz
-        rdv = rx * vx + ry * vy + rz * vz
         spec = p[17] * rdv ** p[18] if rdv > 0.0 else 0.0
         for c in range(3):
             out[c] += (p[16] * ndl * p[12 + c] * shade + spec) * lights[m, 3 + c]

@@ -6,35 +6,52 @@ so the new picture appears whole at the next frame and nothing is copied.
 
 from __future__ import annotations
 
+from typing import Generic, TypeVar
+
 from protocols.rainbow.client import RainbowClient
 
+T = TypeVar("T")
 
-class DoubleBuffer:
-    def __init__(self, client: RainbowClient, parent: int, width: int, height: int,
-                 depth: int, plane: int = 0, lut_page: int = 0, x: int = 0, y: int = 0,
-                 priority: int = 0) -> None:
+
+class Flip(Generic[T]):
+    """Two things of which one is on screen: arc ``arcs[i]`` shows ``items[i]``, the first
+    at the start."""
+
+    def __init__(self, client: RainbowClient, items: tuple[T, T],
+                 arcs: tuple[int, int]) -> None:
         self.client = client
-        self.pads = (client.create_pad(width, height, depth, plane, lut_page),
-                     client.create_pad(width, height, depth, plane, lut_page))
-        self.arcs = (client.map(parent, self.pads[0], x, y, priority, on=True),
-                     client.map(parent, self.pads[1], x, y, priority, on=False))
+        self.items = items
+        self.arcs = arcs
         self.shown = 0
         self.swaps = 0
 
     @property
-    def front(self) -> int:
-        return self.pads[self.shown]
+    def front(self) -> T:
+        return self.items[self.shown]
 
     @property
-    def back(self) -> int:
-        return self.pads[1 - self.shown]
+    def back(self) -> T:
+        return self.items[1 - self.shown]
 
     def swap(self) -> None:
-        """Show the back pad, hide the front one (both take effect at the next frame)."""
+        """Show the back one, hide the front one (both take effect at the next frame)."""
         self.client.set_on(self.arcs[1 - self.shown], True)
         self.client.set_on(self.arcs[self.shown], False)
         self.shown = 1 - self.shown
         self.swaps += 1
+
+
+class DoubleBuffer(Flip[int]):
+    """Two pads mapped at the same place under ``parent``."""
+
+    def __init__(self, client: RainbowClient, parent: int, width: int, height: int,
+                 depth: int, plane: int = 0, lut_page: int = 0, x: int = 0, y: int = 0,
+                 priority: int = 0) -> None:
+        self.pads = (client.create_pad(width, height, depth, plane, lut_page),
+                     client.create_pad(width, height, depth, plane, lut_page))
+        super().__init__(client, self.pads,
+                         (client.map(parent, self.pads[0], x, y, priority, on=True),
+                          client.map(parent, self.pads[1], x, y, priority, on=False)))
 
     def move(self, x: int, y: int) -> None:
         for a in self.arcs:

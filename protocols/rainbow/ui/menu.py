@@ -27,7 +27,41 @@ def pastel(i: int, n: int, saturation: float = 0.35) -> str:
     return f"#{round(r * 255):02x}{round(g * 255):02x}{round(b * 255):02x}"
 
 
-class PopupMenu:
+class ItemMenu:
+    """What a menu of items with LUT-only highlighting does, whatever its layout: item i's
+    background is pixel value 2 + i (shifted to ``plane``) on LUT page ``base`` // 256, and
+    ``arc`` shows it. Subclasses draw it and set the attributes annotated here."""
+
+    client: RainbowClient
+    items: list[str]
+    colour: str
+    highlights: list[str]
+    base: int
+    plane: int
+    arc: int
+    highlighted: int | None
+    open_: bool
+
+    def _highlight(self, i: int | None) -> None:
+        if i == self.highlighted:
+            return
+        if self.highlighted is not None:
+            self.client.set_lut(self.base + ((2 + self.highlighted) << self.plane),
+                                [self.colour])
+        if i is not None:
+            self.client.set_lut(self.base + ((2 + i) << self.plane), [self.highlights[i]])
+        self.highlighted = i
+
+    def close(self) -> str | None:
+        """Hide the menu; returns the item chosen (None if the cursor was off the menu)."""
+        self.client.set_on(self.arc, False)
+        chosen = self.highlighted
+        self._highlight(None)
+        self.open_ = False
+        return None if chosen is None else self.items[chosen]
+
+
+class PopupMenu(ItemMenu):
     def __init__(self, client: RainbowClient, items: list[str], colour: str = "#f8c890",
                  lut_page: int = 15, plane: int = 0, width: int | None = None,
                  visible_rows: int | None = None, highlights: list[str] | None = None,
@@ -62,17 +96,6 @@ class PopupMenu:
         self.x = self.y = 0
         self.open_ = False
 
-    # -- LUT-only highlighting -----------------------------------------------------------
-    def _highlight(self, i: int | None) -> None:
-        if i == self.highlighted:
-            return
-        if self.highlighted is not None:
-            self.client.set_lut(self.base + ((2 + self.highlighted) << self.plane),
-                                [self.colour])
-        if i is not None:
-            self.client.set_lut(self.base + ((2 + i) << self.plane), [self.highlights[i]])
-        self.highlighted = i
-
     def _set_scroll(self, s: int) -> None:
         s = max(min(s, 0), self.window_h - self.height)
         if s != self.scroll:
@@ -103,13 +126,11 @@ class PopupMenu:
         self._highlight((wy - self.scroll) // ROW_H if inside else None)
         return self.highlighted
 
-    def close(self) -> str | None:
-        """Hide the menu; returns the item chosen (None if the cursor was off the menu)."""
-        self.client.set_on(self.arc, False)
-        chosen = self.highlighted
-        self._highlight(None)
-        self.open_ = False
-        return None if chosen is None else self.items[chosen]
+    def dispose(self) -> None:
+        """Close the menu and free its pad and cluster on the device (it is not used again)."""
+        self.close()
+        self.client.destroy(self.pad)
+        self.client.destroy(self.cluster)
 
 
 class CrossMenu:

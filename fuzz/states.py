@@ -1,0 +1,251 @@
+"""Mutated whole-program states (``.c88state``) loaded by the real commands, in process,
+through ``--load-state FILE``: every outcome must be a clean run (status 0) or a refusal
+(status 1 or 2) on one line naming the file — never a traceback, a hang or memory without
+bound.
+
+A state is an envelope (emulator.machine.state_file) around a deflated envelope of the
+program's object tree, so a byte flipped in the file is almost always refused by zlib's
+checksum and goes no deeper. The fuzzers therefore work on the state *opened*: one JSON line
+(the program envelope's header and the target envelope's header, which holds the object
+tree), then the target's binary parts (arrays, long byte strings) as they are in the file,
+each length-prefixed. ``close_state`` packs it again before the command reads it, so a
+mutation lands in the tree or the harness's place and is read by objstate and the program
+itself (one in a part is refused by zlib, as in a file).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import os
+import random
+import select
+import signal
+import traceback
+from pathlib import Path
+from typing import Any
+
+ROOT = Path(__file__).resolve().parents[1]
+STREAM = ROOT / "examples" / "sigma" / "pgplot_goc.sig"
+
+# program -> a short headless run of it (a state is saved from it and loaded into it)
+PROGRAMS: dict[str, list[str]] = {
+    "ca-program": ["ca", "program", "--pattern", "glider", "--headless", "--stop-after", "2"],
+    "snooker-play": ["snooker", "play", "--headless", "--stop-after", "2"],
+    "sigma-run": ["sigma", "run", "--headless", "--in", str(STREAM), "--seconds", "0.3"],
+}
+COMMANDS = {"camlab88 ca program": "ca-program", "camlab88 snooker": "snooker-play",
+            "camlab88 sigma run": "sigma-run"}  # as a state names its program
+_LENGTH = 4  # bytes of each part's length prefix in an opened state
+
+
+class Hang(Exception):
+    """A command took longer than its bound."""
+
+
+def _alarm(signum: int, frame: object) -> None:
+    raise Hang
+
+
+def run_cli(argv: list[str], limit: float) -> tuple[int, str]:
+    """``camlab88.cli.main(argv)`` in process: (exit status, stderr). A command's one-line
+    refusal (SystemExit with a message) counts as status 2, as ``camlab88.cli.entry`` ends
+    it; any other exception propagates (a traceback is a finding); Hang after ``limit`` s."""
+    from camlab88.cli import main
+
+    err = io.StringIO()
+    old = signal.signal(signal.SIGALRM, _alarm)
+    signal.setitimer(signal.ITIMER_REAL, limit)
+    try:
+        with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
+            try:
+                code = main(argv)
+            except SystemExit as exc:
+                if isinstance(exc.code, str):
+                    err.write(exc.code + "\n")
+                code = exc.code if isinstance(exc.code, int) else 2
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+    return code, err.getvalue()
+
+
+def save_state(program: str, path: Path, limit: float = 300.0) -> bytes:
+    """A real state of ``program``: its short run, saved at the end."""
+    code, err = run_cli([*PROGRAMS[program], "--save-state", str(path)], limit)
+    if code != 0:
+        raise RuntimeError(f"{program}: could not save a state: {err}")
+    return path.read_bytes()
+
+
+def load_state(program: str, path: Path, limit: float) -> tuple[int, str]:
+    """``program``'s short run continued from the state file ``path``."""
+    return run_cli([*PROGRAMS[program], "--load-state", str(path)], limit)
+
+
+def verdict(path: Path, code: int, err: str) -> str | None:
+    """None if the outcome keeps the rule; else what is wrong with it."""
+    if "Traceback" in err:
+        return f"a traceback (status {code}): {err[-400:]}"
+    if code == 0:
+        return None
+    if code not in (1, 2):
+        return f"exit status {code}: {err[-400:]}"
+    if str(path) not in err:
+        return f"a refusal (status {code}) that does not name the file: {err[-400:]!r}"
+    return None
+
+
+def check_isolated(program: str, data: bytes, path: Path, limit: float,
+                   memory_mb: float) -> str | None:
+    """Load ``data`` (a state file's bytes) into ``program`` in a forked copy of this
+    process, so that what a damaged state writes into the program's objects (objstate
+    restores in place, module constants included) dies with it; None if the outcome keeps
+    the rule, else the finding (a traceback, a bad status, a refusal not naming the file,
+    no answer within ``limit`` s, or more than ``memory_mb`` MB above this process)."""
+    from fuzz.engine import rss_now_mb
+
+    base = rss_now_mb()
+    r, w = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # the child: report and leave at once (no cleanup of the parent's state)
+        os.close(r)
+        try:
+            path.write_bytes(data)
+            try:
+                code, err = load_state(program, path, limit)
+                found = verdict(path, code, err)
+            except Hang:
+                found = f"no answer within {limit:g} s"
+            except BaseException as exc:  # anything escaping is the finding
+                found = "a traceback: " + "".join(traceback.format_exception(exc))[-1500:]
+            os.write(w, (found or "").encode("utf-8", "replace"))
+        finally:
+            os._exit(0)
+    os.close(w)
+    try:
+        ready, _, _ = select.select([r], [], [], limit + 30.0)
+        if not ready:  # stuck where the child's alarm cannot reach (compiled code)
+            os.kill(pid, signal.SIGKILL)
+        with os.fdopen(r, "rb") as fh:
+            out = fh.read().decode("utf-8", "replace")
+    finally:
+        _, status, usage = os.wait4(pid, 0)
+    if not ready:
+        return f"no answer within {limit + 30:g} s (killed)"
+    if status != 0:
+        return f"the child ended with wait status {status}: {out}"
+    grew = usage.ru_maxrss / 1024 - base
+    if grew > memory_mb:
+        return f"memory grew {grew:.0f} MB"
+    return out or None
+
+
+# ------------------------------------------------------------------ opened states
+def open_state(data: bytes) -> bytes:
+    """A state file as one JSON line of both headers (the target's holds the object tree),
+    then the target's parts as they are in the file (deflated), each length-prefixed."""
+    from emulator.machine.state_file import MAGIC, unpack
+
+    outer, blobs = unpack(data, "program")
+    inner_bytes = blobs["target"]
+    inner, _ = unpack(inner_bytes, "target")  # checks it; the parts are taken still deflated
+    k = len(MAGIC) + 4 + int.from_bytes(inner_bytes[len(MAGIC):len(MAGIC) + 4], "big")
+    heads = {"program": _bare(outer), "target": _bare(inner)}
+    out = bytearray(json.dumps(heads, sort_keys=True).encode("utf-8") + b"\n")
+    for _name, n in inner["blobs"]:
+        out += n.to_bytes(_LENGTH, "big") + inner_bytes[k:k + n]
+        k += n
+    return bytes(out)
+
+
+def close_state(opened: bytes) -> bytes:
+    """The state file an opened state stands for. A header line that is no longer JSON, or
+    not the two headers, is passed on as it is (the loader refuses it); parts whose lengths
+    no longer add up are cut where the bytes end."""
+    from emulator.machine.state_file import MAGIC, VERSION, pack
+
+    line, _, rest = opened.partition(b"\n")
+    try:
+        heads = json.loads(line.decode("utf-8"))
+        program, target = heads["program"], heads["target"]
+        if not (isinstance(program, dict) and isinstance(target, dict)):
+            raise TypeError
+    except (UnicodeDecodeError, ValueError, KeyError, TypeError):
+        return opened
+    parts: list[bytes] = []
+    k = 0
+    while k < len(rest):
+        n = int.from_bytes(rest[k:k + _LENGTH], "big")
+        parts.append(rest[k + _LENGTH:k + _LENGTH + n])
+        k += _LENGTH + n
+    # the target's envelope as state_file.pack writes it, its parts already deflated
+    head = dict(target, format_version=VERSION, device="target",
+                blobs=[[str(i), len(p)] for i, p in enumerate(parts)])
+    text = json.dumps(head, sort_keys=True).encode("utf-8")
+    inner = MAGIC + len(text).to_bytes(4, "big") + text + b"".join(parts)
+    return pack("program", program, {"target": inner})
+
+
+def program_of(opened: bytes) -> str:
+    """The program an opened state names (the first one if it names none we run)."""
+    line = opened.partition(b"\n")[0]
+    for command, name in COMMANDS.items():
+        if f'"program": "{command}"'.encode() in line:
+            return name
+    return next(iter(PROGRAMS))
+
+
+def _bare(head: dict[str, Any]) -> dict[str, Any]:
+    """A header without what ``pack`` writes itself."""
+    return {k: v for k, v in head.items() if k not in ("blobs", "format_version", "device")}
+
+
+# ------------------------------------------------------------------ tree edits
+# what a value in a state's tree may be replaced with: other types, edges, huge sizes
+ODD_VALUES: tuple[Any, ...] = (
+    None, True, False, 0, -1, 1, 2**31, -(2**63), 2**64, 10**30, 0.5, -1e308, 1e308,
+    "", "x", "0", "1/0", "-1", "nan", [], {}, [0], [[]], {"": 0}, {"O": "builtins:object"},
+    {"R": 0}, {"R": 10**9}, {"L": []}, {"T": [1, 2]}, {"A": "x"}, [-1, -1, -1, -1],
+)
+
+
+def scalar_places(tree: Any) -> list[tuple[Any, Any]]:
+    """Every (container, key) whose value is a scalar or an empty container, in order."""
+    out: list[tuple[Any, Any]] = []
+    stack = [tree]
+    while stack:
+        node = stack.pop()
+        items = node.items() if isinstance(node, dict) else enumerate(node)
+        for key, value in items:
+            if isinstance(value, dict | list) and value:
+                stack.append(value)
+            else:
+                out.append((node, key))
+    return out
+
+
+def edit_tree(data: bytes, edits: list[tuple[int, Any]]) -> bytes:
+    """The state file with values of its headers' trees replaced: each edit is (a place's
+    number, taken modulo the number of places; the new value)."""
+    opened = open_state(data)
+    line, _, rest = opened.partition(b"\n")
+    heads = json.loads(line)
+    for index, value in edits:
+        places = scalar_places(heads)
+        node, key = places[index % len(places)]
+        node[key] = json.loads(json.dumps(value))  # a copy: ODD_VALUES are shared, and a
+        # later edit inside a shared one could make the tree hold itself
+    return close_state(json.dumps(heads).encode("utf-8") + b"\n" + rest)
+
+
+def random_edits(rng: random.Random, count: int) -> list[tuple[int, Any]]:
+    """``count`` edits for ``edit_tree``, from ``rng``."""
+    out: list[tuple[int, Any]] = []
+    for _ in range(count):
+        value = rng.choice(ODD_VALUES)
+        if rng.random() < 0.3:  # a nearby number instead: passes type checks, not range ones
+            value = rng.choice((-1, 1, 7, 255, 256, 65535, 65536)) * rng.choice((1, -1))
+        out.append((rng.randrange(1 << 30), value))
+    return out
