@@ -52,8 +52,9 @@ def from_cells(keys, xs, ys_or_values, nodes, slots, leaves, lslots, meta):
     ids = np.empty(n, np.int64)
     low = meta[LEAF]
     if low == 0:
-        lkeys[:] = keys
-        ids[:] = ys_or_values
+        for i in range(n):  # a loop: an array-to-array slice assignment compiles numba's
+            lkeys[i] = keys[i]  # broadcast checks, ~2 s of the first compile
+            ids[i] = ys_or_values[i]
         return levels(lkeys, ids, n, low, nodes, slots, meta)
     words = np.zeros((1, 8), np.uint64)
     m = 0
