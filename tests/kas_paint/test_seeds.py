@@ -5,7 +5,7 @@ them fills every enclosed piece and nothing outside (checked against a geometric
 from __future__ import annotations
 
 import numpy as np
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from apps.kas.paint import areas, orders, seeds
@@ -51,7 +51,39 @@ def figure_eight(cx: int, cy: int, a: int, b: int, n: int) -> np.ndarray:
     return _closed([tuple(v) for v in np.rint(p).astype(int).tolist()])
 
 
-def _check(poly: np.ndarray) -> None:
+def _gaps(poly: np.ndarray) -> bool:
+    """Does a vertex of the closed ``poly`` pass within 4 px of a segment it does not end,
+    without touching it?  Such a gap can be shut in the geometry (the oracle's walls) and
+    open on the screen, where the terminal's line steps diagonally past the vertex: the
+    filler gets through, so no seed may go into that face (it would flood the screen)."""
+    p = np.asarray(poly, dtype=float)
+    n = len(p) - 1
+    for i in range(n):
+        for j in range(n):
+            if (p[i] == p[j]).all() or (p[i] == p[j + 1]).all():
+                continue  # a segment ending at (a copy of) the vertex
+            d = oracle.seg_distance([p[j:j + 2]], p[i:i + 1, 0], p[i:i + 1, 1])[0]
+            if 0 < d < 4:
+                return True
+    return False
+
+
+def _screen_open(poly: np.ndarray, box: tuple[int, int, int, int]) -> np.ndarray:
+    """Over ``box`` (as ``oracle.classify``): pixels the filler could reach from outside the
+    shape, walled only by the boundary as the terminal draws it (``vector``, tested against
+    the terminal pixel for pixel in test_vector.py)."""
+    x0, y0, x1, y1 = box
+    wall, (wx, wy) = seeds.window([poly])
+    out = np.ones((y1 - y0 + 1, x1 - x0 + 1), dtype=bool)
+    h, w = wall.shape
+    out[wy - y0:wy - y0 + h, wx - x0:wx - x0 + w] = oracle.exterior(wall == 0)
+    return out
+
+
+def _check(poly: np.ndarray, gaps: bool = False) -> None:
+    """Seeds on no line and inside; the terminal's fill leaks nowhere and paints every pixel
+    the oracle is sure is inside (more than 2.5 px from the lines) - with ``gaps`` (see
+    ``_gaps``), every such pixel the screen's own boundary encloses."""
     found = seeds.shape_seeds(poly)
     x0, y0 = poly.min(axis=0) - 3
     x1, y1 = poly.max(axis=0) + 3
@@ -71,7 +103,10 @@ def _check(poly: np.ndarray) -> None:
            & 0x1F) == 7
     leaks = int(np.sum(got & ~inside & sure))
     # a shallow piece of a face of winding number 0 is left to the boundary (seeds.py)
-    misses = int(np.sum(~got & inside & sure & (dist > 2.5)))
+    missed = ~got & inside & sure & (dist > 2.5)
+    if gaps:
+        missed &= ~_screen_open(poly, (x0, y0, x1, y1))
+    misses = int(np.sum(missed))
     assert (leaks, misses) == (0, 0)
 
 
@@ -95,6 +130,9 @@ def test_figure_eight_has_two_seeds() -> None:
 
 @settings(max_examples=40, deadline=None)
 @given(points, points)
+# the first chain's end passes 1.8 px from the second's last segment: a face shut in the
+# geometry is open on the screen, so it gets no seed (a seed there flooded the screen)
+@example(a=[(118, 247), (100, 80), (124, 246)], b=[(100, 80), (185, 208), (115, 251)])
 def test_two_chains_crossing_each_other(a: list[tuple[int, int]], b: list[tuple[int, int]]
                                         ) -> None:
     # select of two chains: their end points joined into one closed shape
@@ -102,7 +140,9 @@ def test_two_chains_crossing_each_other(a: list[tuple[int, int]], b: list[tuple[
 
     seq = one_frame(np.array(a, dtype=float), np.array(b, dtype=float))
     poly = areas.dedup(shape.closed_shape(seq.frames[0], (1, 2)).astype(np.int64))
-    _check(poly)
+    # the chains are each well spaced but not from each other: where a near miss between
+    # them leaves the screen and the geometry to disagree, the screen decides
+    _check(poly, gaps=_gaps(poly))
 
 
 def test_square_seed_is_deep_inside() -> None:
