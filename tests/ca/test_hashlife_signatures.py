@@ -18,8 +18,8 @@ from apps.ca.patterns import read_pattern
 from apps.ca.rules import load_rules
 from base.kernel_set import KernelSet
 
-MODULES = ["store", "upkeep", "evolve", "cellgrid", "census", "grid", "cells", "leaf",
-           "bits.leaves"]
+MODULES = ["store", "upkeep", "evolve", "cellgrid", "census", "grid", "cells", "listing",
+           "leaf", "bits.leaves", "bits.window"]
 
 
 def _eager_exports(monkeypatch: pytest.MonkeyPatch) -> int:

@@ -1,21 +1,19 @@
-"""Cell lists to the plane's tree and back, for either kind of leaf: a sparse pattern's
-cells (no dense window) into leaves and levels, a plane's live cells out (for pictures and
-cell queries), and whether live cells lie near the wrapping plane's seam.  Their own module
-and kernel group: a `ca run --json` of a small Life pattern (built from its dense window)
-never compiles them; the first run that needs them announces them."""
+"""Cell lists to the plane's tree, for either kind of leaf: a sparse pattern's cells (no
+dense window) into leaves and levels, and whether live cells lie near the wrapping plane's
+seam.  Their own module and kernel group: a `ca run --json` of a small Life pattern (built
+from its dense window) never compiles them; the first run that needs them announces them.
+The way back, a plane's cells listed, is ``listing``."""
 
 from __future__ import annotations
 
 import numpy as np
 
-from apps.ca.hashlife.census import count
 from apps.ca.hashlife.grid import PLANE_LEVEL, levels, tile_key
 from apps.ca.hashlife.store import (
     EMPTY,
     LEAF,
     LEAVES,
     META_T,
-    N_NODES,
     NODES,
     TABLES,
     WALL,
@@ -24,7 +22,6 @@ from apps.ca.hashlife.store import (
 from base.kernel_set import KernelSet
 
 kernels = KernelSet(__name__, sources=(
-    "apps.ca.hashlife.census",
     "apps.ca.hashlife.grid",
     "apps.ca.hashlife.store",
 ))
@@ -76,42 +73,6 @@ def from_cells(keys, xs, ys_or_values, nodes, slots, leaves, lslots, meta):
 
 
 @kernels.kernel
-def _emit(node, level, y0, x0, nodes, leaves, meta, out, n):
-    """Append (y, x, value) of the live cells of ``node`` to ``out`` from row ``n``."""
-    if level == meta[LEAF]:
-        if level == 0:
-            if 0 < node < WALL:
-                out[n, 0], out[n, 1], out[n, 2] = y0, x0, node
-                n += 1
-            return n
-        for y in range(16):
-            row = (leaves[node, y >> 2] >> np.uint64(16 * (y & 3))) & np.uint64(0xFFFF)
-            for x in range(16):
-                if (row >> np.uint64(x)) & np.uint64(1):
-                    out[n, 0], out[n, 1], out[n, 2] = y0 + y, x0 + x, 1
-                    n += 1
-        return n
-    if node == meta[EMPTY + level]:
-        return n
-    h = np.int64(1) << (level - 1)
-    k = level - 1
-    n = _emit(np.int64(nodes[node, 0]), k, y0, x0, nodes, leaves, meta, out, n)
-    n = _emit(np.int64(nodes[node, 1]), k, y0, x0 + h, nodes, leaves, meta, out, n)
-    n = _emit(np.int64(nodes[node, 2]), k, y0 + h, x0, nodes, leaves, meta, out, n)
-    return _emit(np.int64(nodes[node, 3]), k, y0 + h, x0 + h, nodes, leaves, meta, out, n)
-
-
-@kernels.export(f"int64[:, ::1](int64, {NODES}, {LEAVES}, {META_T})")
-def listing(node, nodes, leaves, meta):
-    """(y, x, value) rows of the live cells of the plane ``node``, in quadtree order."""
-    top = np.int64(PLANE_LEVEL)
-    memo = np.full(meta[N_NODES], -1, np.int64)
-    out = np.empty((count(node, top, np.int64(0), memo, nodes, leaves, meta), 3), np.int64)
-    _emit(node, top, np.int64(0), np.int64(0), nodes, leaves, meta, out, np.int64(0))
-    return out
-
-
-@kernels.kernel
 def _any_live(node, level, y0, x0, top, bottom, left, right, nodes, leaves, meta):
     """Whether ``node`` (its corner at y0, x0) has a live cell in rows top..bottom-1,
     columns left..right-1."""
@@ -155,14 +116,6 @@ def to_tree(xs: np.ndarray, ys: np.ndarray, ts: np.ndarray, store) -> int:  # a 
     order = np.argsort(keys, kind="stable")
     second = ys if low else np.ascontiguousarray(ts, np.int64)
     return int(from_cells(keys[order], xs[order], second[order], *store.tables))
-
-
-def cells(node: int, store) -> tuple[np.ndarray, np.ndarray, np.ndarray]:  # a Store
-    """(ys, xs, values) of the plane node's live cells, sorted row by row (by numpy: a
-    sort inside a kernel compiles numba's quicksort, seconds of a first run)."""
-    out = listing(np.int64(node), store.nodes, store.leaves, store.meta)
-    out = out[np.argsort(out[:, 0] * (1 << PLANE_LEVEL) + out[:, 1])]
-    return out[:, 0].copy(), out[:, 1].copy(), out[:, 2].copy()
 
 
 def near_seam(node: int, distance: int, store) -> bool:  # a Store

@@ -9,15 +9,18 @@ where jumps of powers of two would take one pass per binary digit.  The memo kee
 per node besides the full-speed result.  Nodes of the base level run the leaf kernel
 directly: ``bits.leaves`` (binary rules: four 16 x 16 bit leaves, up to 8 generations by
 bit operations) or ``cellgrid`` (any rules: the rules on a grid of life-form values).
-Which one is a branch on the store's leaf level, the only place the recursion knows the
-kind of leaf.  Every kernel returns -1 when a table is full.
+Which one is chosen by type when a kind's entry
+compiles (value leaves have no leaf table: their entry passes None for it), so a run
+compiles its own leaf kernel only (a run-time branch compiled both: 2 s more of a first
+run's compile).  Every kernel returns -1 when a table is full.
 
 Written for numba's costs as measured: compiled without numba's runtime (``_nrt=False``:
 nothing here allocates), so array arguments are not atomically reference counted per call
-(that was half the time of small jumps); one signature for both kinds of leaf (the rules
-and the scratch are uint64 for both); self-recursive only (a cached mutually recursive pair
-crashed the next process); the nine and four squares in scalars (no heap allocation per
-call); memoised results looked up before calling.
+(that was half the time of small jumps); self-recursive only (a cached mutually recursive
+pair crashed the next process); the nine and four squares in scalars (no heap allocation
+per call); memoised results looked up before calling.  The module belongs to no kernel
+group: its kernels compile only inside a kind's entry, whose leaf kernel's group announces
+the compile.
 """
 
 from __future__ import annotations
@@ -37,11 +40,12 @@ from apps.ca.hashlife.store import (
     RES,
     RESJ,
     SHIFT,
+    SLOTS,
     TABLES,
     WALL_AT,
     join,
 )
-from base.kernel_set import KernelSet
+from base.kernel_set import KernelSet, is_none
 
 kernels = KernelSet(__name__, sources=(
     "apps.ca.hashlife.bits.leaves",
@@ -58,12 +62,11 @@ def _q(nodes, n, q):
     return np.int64(nodes[n, q])
 
 
-@kernels.kernel(inline="always")
+@kernels.by_types
 def _leaf_step(node, T, nodes, slots, leaves, lslots, meta, R, G):
-    """The leaf kernel: the centre of base-level ``node`` after T generations."""
-    if meta[LEAF] == 0:
-        return cellgrid.advance(node, T, nodes, slots, leaves, lslots, meta, R, G)
-    return bitleaves.advance(node, T, nodes, slots, leaves, lslots, meta, R, G)
+    """The leaf kernel: the centre of base-level ``node`` after T generations — value
+    leaves' (they have no leaf table: ``leaves`` is None) or bit leaves'."""
+    return cellgrid.advance if is_none(leaves) else bitleaves.advance
 
 
 @kernels.kernel(inline="always")
@@ -102,8 +105,9 @@ def known(n, T, level, nodes, meta):
 
 # _nrt=False: the recursion allocates nothing, and without numba's runtime its array
 # arguments are not reference counted — perf showed those atomic counts taking half the time
-# of small jumps (gun 1.6 -> 0.7 ms, spacefiller 1.7 -> 0.8, puffer 95 -> 77).
-@kernels.export(f"int64(int64, int64, {TABLES}, {RULES}, {SCRATCH})", _nrt=False)
+# of small jumps (gun 1.6 -> 0.7 ms, spacefiller 1.7 -> 0.8, puffer 95 -> 77).  Compiled once
+# per kind of leaf, inside that kind's entry below.
+@kernels.kernel(_nrt=False)
 def step(node, T, nodes, slots, leaves, lslots, meta, R, G):
     """Centre of ``node`` after T generations (1 <= T <= 2**(level - 2 - s)); -1 if a table
     is full.  The caller has looked for a known result first (``_known``)."""
@@ -190,10 +194,26 @@ def step(node, T, nodes, slots, leaves, lslots, meta, R, G):
     return out
 
 
+@kernels.export(f"int64(int64, int64, {TABLES}, {RULES}, {SCRATCH})", _nrt=False)
+def step_bits(node, T, nodes, slots, leaves, lslots, meta, R, G):
+    """``step`` of bit leaves."""
+    return step(node, T, nodes, slots, leaves, lslots, meta, R, G)
+
+
+@kernels.export(f"int64(int64, int64, {NODES}, {SLOTS}, {META_T}, {RULES}, {SCRATCH})",
+                _nrt=False)
+def step_values(node, T, nodes, slots, meta, R, G):
+    """``step`` of value leaves (no leaf table)."""
+    return step(node, T, nodes, slots, None, None, meta, R, G)
+
+
 def advance(node: int, T: int, store, R: np.ndarray, G: np.ndarray) -> int:  # a Store
     """The centre of ``node`` after T generations (-1: a table filled up)."""
     found = int(known(np.int64(node), np.int64(T), np.int64(store.nodes[node, LEVEL]),
                       store.nodes, store.meta))
     if found != -2:
         return found
-    return int(step(np.int64(node), np.int64(T), *store.tables, R, G))
+    if store.leaf_level:
+        return int(step_bits(np.int64(node), np.int64(T), *store.tables, R, G))
+    return int(step_values(np.int64(node), np.int64(T), store.nodes, store.slots, store.meta,
+                           R, G))

@@ -2,13 +2,13 @@
 
 The completions of HashLife's kernel groups (base.kernel_notice), one per group: after the
 first cold compile of a group the rest of that group compiles, so its notice is printed
-once per install.  Three groups, for either kind of leaf (one store, one recursion: the
-same compiled kernels serve both): the jumps (with the census and the dense window's
-conversion: all a `ca run --json` of a small Life pattern needs), the cell lists (pictures,
-sparse patterns, any multi-state run) and the tables' growth and collection (runs that fill
-them).  So Life's first run compiles neither the cell lists nor the collector.  Short runs
-through the engine itself, on both edge modes.  ``compile_kernels`` (``camlab88 warm-up``)
-compiles every group.
+once per install.  The groups (apps/ca/hashlife/__init__.py): what every jump needs (store,
+census, a tree's levels), each kind of leaf with the recursion compiled for it, the cell
+lists in, the cells listed out, the tables' growth and collection.  Each completion calls
+only its own group's kernels where it can (or kernels every run of that kind has compiled
+before it), so a first run's exit compiles nothing of a group it did not touch: Life's
+first run compiles neither the value leaves nor the cell lists, a multi-state run's not the
+bit leaves.  ``compile_kernels`` (``camlab88 warm-up``) compiles every group.
 """
 
 from __future__ import annotations
@@ -16,47 +16,80 @@ from __future__ import annotations
 import numpy as np
 
 from apps.ca.engine import CENTRE, Engine
-from apps.ca.hashlife import cells
-from apps.ca.hashlife.generic import GenericRun
-from apps.ca.hashlife.store import Store
+from apps.ca.hashlife import cells, census, evolve, grid, listing
+from apps.ca.hashlife.grid import PLANE_LEVEL
+from apps.ca.hashlife.store import BIT_LEAF_LEVEL, Store
 from apps.ca.library import pattern_path, rules_path
 from apps.ca.patterns import read_pattern
 from apps.ca.rules import load_rules
 
+_STORES = ((0, 2), (BIT_LEAF_LEVEL, BIT_LEAF_LEVEL + 1))  # (leaf, base) of each kind
+
 
 def compile_kernels() -> None:
     """Every group (``camlab88 warm-up``)."""
-    compile_jumps()
+    compile_common()
+    compile_bits()
+    compile_values()
     compile_cells()
+    compile_listing()
     compile_upkeep()
 
 
-def compile_jumps() -> None:
-    """The jumps' completion: jumps, census, the dense window's conversion (Life, from the
-    pattern's grid as `ca run` places it)."""
+def compile_common() -> None:
+    """What every jump needs, on an empty plane of each kind of store: the census, the
+    levels of a tree, the tables' towers (made with the store)."""
+    for leaf, base in _STORES:
+        store = Store(leaf, base, 0, 1)
+        plane = int(store.empty[PLANE_LEVEL])
+        census.cells_of(plane, 0, store)
+        census.occupied(plane, 0, store)
+        evolve.known(np.int64(plane), np.int64(1), np.int64(PLANE_LEVEL), store.nodes,
+                     store.meta)
+        keys = ids = np.zeros(0, np.int64)
+        grid.build(keys, ids, np.int64(0), np.int64(leaf), store.nodes, store.slots,
+                   store.meta)
+
+
+def compile_bits() -> None:
+    """Bit leaves' jumps (Life, from the pattern's grid as `ca run` places it), both edges."""
     rules = load_rules(rules_path("life"))
-    grid = read_pattern(pattern_path("gosper_gun")).placed_grid(CENTRE, CENTRE, "identity")
+    placed = read_pattern(pattern_path("gosper_gun")).placed_grid(CENTRE, CENTRE, "identity")
     for edges in ("wrap", "bounded"):
         engine = Engine(rules, edges=edges, algorithm="hashlife")
-        engine.set_grid(*grid)
+        engine.set_grid(*placed)
         engine.step(300)
         engine.stats()
 
 
-def compile_cells() -> None:
-    """The cell lists' completion: cells to a tree and back for both kinds of leaf, and
-    the seam test (a multi-state run on the wrapping plane)."""
+def compile_values() -> None:
+    """Value leaves' jumps (a multi-state rule set; its cells by the cell lists, which
+    every such run compiles first), both edges."""
     rules = load_rules(rules_path("turing_primes"))
-    xs, ys, ts = read_pattern(pattern_path("primes_25")).placed(CENTRE, CENTRE, "identity")
-    engine = Engine(rules, algorithm="hashlife")
-    engine.set_cells(xs, ys, ts)
-    engine.step(2)
-    engine.cells()
-    store = GenericRun.of(rules, engine.hashlife_memory).store
-    cells.near_seam(int(store.empty[16]), 1, store)
-    bits = Store(4, 5, 0, 1)
-    xs = ys = np.array([5, 40000], np.int64)
-    cells.cells(cells.to_tree(xs, ys, np.ones(2, np.int64), bits), bits)
+    placed = read_pattern(pattern_path("primes_25")).placed(CENTRE, CENTRE, "identity")
+    for edges in ("wrap", "bounded"):
+        engine = Engine(rules, edges=edges, algorithm="hashlife")
+        engine.set_cells(*placed)
+        engine.step(64)
+        engine.stats()
+
+
+def compile_cells() -> None:
+    """The cell lists in, for both kinds of leaf, and the seam test (a multi-state run on
+    the wrapping plane)."""
+    for leaf, base in _STORES:
+        store = Store(leaf, base, 0, 1)
+        xs = ys = np.array([5, 40000], np.int64)
+        node = cells.to_tree(xs, ys, np.ones(2, np.int64), store)
+        cells.near_seam(node, 1, store)
+
+
+def compile_listing() -> None:
+    """The cells of a plane listed, for both kinds of leaf."""
+    for leaf, base in _STORES:
+        store = Store(leaf, base, 0, 1)
+        xs = ys = np.array([5, 40000], np.int64)
+        listing.cells(cells.to_tree(xs, ys, np.ones(2, np.int64), store), store)
 
 
 def compile_upkeep() -> None:

@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from apps.ca.hashlife import cells, census, evolve
+from apps.ca.hashlife import census, evolve, listing
 from apps.ca.hashlife.store import Store
 
 
@@ -32,4 +32,4 @@ class StoreRun:
         return census.occupied(node, axis, self.store)
 
     def cells(self, node: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        return cells.cells(node, self.store)
+        return listing.cells(node, self.store)

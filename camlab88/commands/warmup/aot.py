@@ -18,8 +18,10 @@ AOT_MODULES: tuple[str, ...] = (
     "apps.ca.hashlife.grid",
     "apps.ca.hashlife.upkeep",
     "apps.ca.hashlife.cells",
+    "apps.ca.hashlife.listing",
     "apps.ca.hashlife.cellgrid",
     "apps.ca.hashlife.bits.leaves",
+    "apps.ca.hashlife.bits.window",
     "apps.ca.hashlife.evolve",
 )
 

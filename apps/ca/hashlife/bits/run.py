@@ -8,9 +8,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from apps.ca.hashlife import cells, grid
+from apps.ca.hashlife import cells
 from apps.ca.hashlife.bits.leaves import PLANES
 from apps.ca.hashlife.bits.rule import BinaryRule, binary_rule
+from apps.ca.hashlife.bits.window import grid_to_tree
 from apps.ca.hashlife.run import StoreRun
 from apps.ca.hashlife.store import BIT_LEAF_LEVEL, Store
 from apps.ca.rules import RuleSet
@@ -42,7 +43,7 @@ class BitRun(StoreRun):
         """The engine's plane (all 1s) from its dense window or its cells."""
         window = engine.dense_window
         if window is not None:
-            return grid.grid_to_tree(window[0], window[1], window[2], self.store)
+            return grid_to_tree(window[0], window[1], window[2], self.store)
         return cells.to_tree(engine.xs, engine.ys, engine.ts, self.store)
 
     def next_jump(self, node: int, remaining: int, edges: str) -> int:
