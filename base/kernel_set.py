@@ -3,11 +3,12 @@
 A kernel module writes ``kernels = KernelSet(__name__)`` and decorates each kernel with
 ``@kernels.kernel`` (called only by other kernels) or ``@kernels.export("signature")``
 (called from Python; the one numba signature its Python callers use, e.g.
-``"int64(uint8[:, ::1], int64)"``); ``@kernels.by_types`` makes a kernel whose body is
-chosen from its arguments' numba types when a caller compiles (numba compiles both sides of
-a run-time branch: a choice by type compiles only the side the types need). A set may name
-``sources``: other modules whose code its kernels compile in (their kernels called from
-this module's), so an edit there counts too.
+``"int64(uint8[:, ::1], int64)"``); ``kernels.specialise(template, name, signature,
+**bindings)`` makes an export of a plain function's code with some of its globals bound to
+other kernels (one template for several kinds of argument, each export with one signature
+as numba's cache needs: two processes compiling two signatures of one kernel can swap their
+machine code). A set may name ``sources``: other modules whose code its kernels compile in
+(their kernels called from this module's), so an edit there counts too.
 
 Two ways to run, chosen when the set is made:
 
@@ -25,7 +26,7 @@ from __future__ import annotations
 
 import sys
 from collections.abc import Callable
-from types import ModuleType
+from types import FunctionType, ModuleType
 from typing import Any
 
 from base import aot_args, aot_load
@@ -43,7 +44,6 @@ class KernelSet:
         self.exports: dict[str, str] = {}       # kernel name -> numba signature
         self.kernels: dict[str, Callable[..., Any]] = {}  # name -> compiled (or plain) kernel
         self.python: dict[str, tuple[Callable[..., Any], dict[str, Any]]] = {}  # plain, options
-        self.choices: dict[str, tuple[Callable[..., Any], Callable[..., Any]]] = {}  # stub, pick
         self.aot: ModuleType | None = None
         if aot_load.enabled() and any(s.aot is None for s in SETS.values()):
             self.why_jit = _MIXED
@@ -64,8 +64,6 @@ class KernelSet:
             for old in (self.kernels[name], fn):
                 swaps[id(old)] = (old, compiled)
             self.kernels[name] = compiled
-        for stub, pick in self.choices.values():
-            _choose(stub, pick)
         self.aot, self.why_jit = None, _MIXED
         return swaps
 
@@ -89,16 +87,6 @@ class KernelSet:
         self.kernels[fn.__name__] = compiled
         return compiled
 
-    def by_types(self, pick: Callable[..., Any]) -> Callable[..., Any]:
-        """``@kernels.by_types`` on ``pick(arg, ...)``, which is given the numba types of a
-        call's arguments and returns the kernel to run (one of its arguments' names each):
-        a kernel other kernels call, compiled into them as that kernel's call only."""
-        stub = _signature_like(pick, "raise TypeError('only compiled kernels call this')")
-        self.choices[pick.__name__] = (stub, pick)
-        if self.aot is None:
-            _choose(stub, pick)
-        return stub
-
     def export(self, signature: str, **options: Any) -> Callable[[Callable[..., Any]], Any]:
         """``@kernels.export("int64(int64, int64[:, :])")``: a kernel Python code calls."""
         aot_args.parse(signature)  # a signature the ahead-of-time path cannot check fails now
@@ -119,39 +107,22 @@ class KernelSet:
             return wrapped
         return declare
 
-
-def is_none(numba_type: Any) -> bool:
-    """Whether a numba type (as ``by_types`` picks are given) is None's."""
-    return type(numba_type).__name__ in ("NoneType", "Omitted") or numba_type is None
-
-
-def _params(fn: Callable[..., Any]) -> str:
-    return ", ".join(fn.__code__.co_varnames[:fn.__code__.co_argcount])
-
-
-def _signature_like(fn: Callable[..., Any], body: str,
-                    namespace: dict[str, Any] | None = None) -> Callable[..., Any]:
-    """A new function with ``fn``'s name and parameters and the one-line ``body``."""
-    namespace = dict(namespace or {})
-    exec(f"def {fn.__name__}({_params(fn)}):\n    {body}\n", namespace)
-    made = namespace[fn.__name__]
-    made.__doc__, made.__module__ = fn.__doc__, fn.__module__
-    return made
-
-
-def _choose(stub: Callable[..., Any], pick: Callable[..., Any]) -> None:
-    """Register ``pick`` with numba: a call of ``stub`` compiles as a call of the kernel
-    ``pick`` returns for the call's types (inlined: nothing costs more than that call).
-    numba wants the typing function and the implementation with the stub's parameters."""
-    from numba.extending import overload
-
-    def implementation(*types: Any) -> Callable[..., Any]:
-        call = f"return _chosen({_params(pick)})"
-        return _signature_like(pick, call, {"_chosen": pick(*types)})
-
-    typing = _signature_like(pick, f"return _implementation({_params(pick)})",
-                             {"_implementation": implementation})
-    overload(stub, inline="always")(typing)
+    def specialise(self, template: Callable[..., Any], name: str, signature: str,
+                   options: dict[str, Any] | None = None, **bindings: Any) -> Any:
+        """An export named ``name`` compiled from ``template``'s code with the globals
+        named in ``bindings`` bound to those values, and the template's own name to the
+        export itself (a recursive template recurses into its specialisation).  Call it
+        after the template's globals are defined: the export sees them as they are then."""
+        namespace = dict(template.__globals__, **bindings)
+        fn = FunctionType(template.__code__, namespace, name, template.__defaults__,
+                          template.__closure__)
+        fn.__qualname__ = name  # numba's cache names its files by it: one index each
+        fn.__module__, fn.__doc__ = template.__module__, template.__doc__
+        namespace[template.__name__] = fn  # replaced by the kernel in the JIT path
+        exported = self.export(signature, **(options or {}))(fn)
+        if self.aot is None:
+            namespace[template.__name__] = exported
+        return exported
 
 
 # Compiled code can only call a kernel of another module that is a numba dispatcher, so the

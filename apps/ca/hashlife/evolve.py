@@ -40,12 +40,11 @@ from apps.ca.hashlife.store import (
     RES,
     RESJ,
     SHIFT,
-    SLOTS,
     TABLES,
     WALL_AT,
     join,
 )
-from base.kernel_set import KernelSet, is_none
+from base.kernel_set import KernelSet
 
 kernels = KernelSet(__name__, sources=(
     "apps.ca.hashlife.bits.leaves",
@@ -62,18 +61,10 @@ def _q(nodes, n, q):
     return np.int64(nodes[n, q])
 
 
-@kernels.by_types
-def _leaf_step(node, T, nodes, slots, leaves, lslots, meta, R, G):
-    """The leaf kernel: the centre of base-level ``node`` after T generations — value
-    leaves' (they have no leaf table: ``leaves`` is None) or bit leaves'."""
-    return cellgrid.advance if is_none(leaves) else bitleaves.advance
-
-
 @kernels.kernel(inline="always")
-def _centre(n, h, nodes, slots, leaves, lslots, meta, R, G):
-    """The centre half of ``n`` (of level h; no time passes); -1 if a table is full."""
-    if h == meta[LEAF] + 1:  # its quadrants are leaves: the leaf kernel, for 0 generations
-        return _leaf_step(n, np.int64(0), nodes, slots, leaves, lslots, meta, R, G)
+def _centre(n, h, nodes, slots, meta):
+    """The centre half of ``n`` (of level h > the leaves' + 1; no time passes); -1 if a
+    table is full."""
     return join(_q(nodes, _q(nodes, n, 0), 3), _q(nodes, _q(nodes, n, 1), 2),
                 _q(nodes, _q(nodes, n, 2), 1), _q(nodes, _q(nodes, n, 3), 0), h - 1, nodes,
                 slots, meta)
@@ -103,12 +94,19 @@ def known(n, T, level, nodes, meta):
     return _known(n, T, level, nodes, meta)
 
 
+def _leaf_step(node, T, nodes, slots, leaves, lslots, meta, R, G):
+    """The leaf kernel each specialisation of ``_recursion`` binds in its place
+    (``bits.leaves.advance`` or ``cellgrid.advance``): the centre of base-level ``node``
+    after T generations (0: its centre as it is)."""
+    raise NotImplementedError("bound per kind of leaf by kernels.specialise")
+
+
 # _nrt=False: the recursion allocates nothing, and without numba's runtime its array
 # arguments are not reference counted — perf showed those atomic counts taking half the time
-# of small jumps (gun 1.6 -> 0.7 ms, spacefiller 1.7 -> 0.8, puffer 95 -> 77).  Compiled once
-# per kind of leaf, inside that kind's entry below.
-@kernels.kernel(_nrt=False)
-def step(node, T, nodes, slots, leaves, lslots, meta, R, G):
+# of small jumps (gun 1.6 -> 0.7 ms, spacefiller 1.7 -> 0.8, puffer 95 -> 77).  A template,
+# compiled once per kind of leaf as that kind's export (below), ``_leaf_step`` bound to its
+# leaf kernel.
+def _recursion(node, T, nodes, slots, leaves, lslots, meta, R, G):
     """Centre of ``node`` after T generations (1 <= T <= 2**(level - 2 - s)); -1 if a table
     is full.  The caller has looked for a known result first (``_known``)."""
     k = np.int64(nodes[node, LEVEL])
@@ -140,9 +138,11 @@ def step(node, T, nodes, slots, leaves, lslots, meta, R, G):
             if t1 > 0:
                 v = _known(n, t1, h, nodes, meta)
                 if v == -2:
-                    v = step(n, t1, nodes, slots, leaves, lslots, meta, R, G)
+                    v = _recursion(n, t1, nodes, slots, leaves, lslots, meta, R, G)
+            elif h == meta[LEAF] + 1:  # quadrants of leaves: the leaf kernel, 0 generations
+                v = _leaf_step(n, np.int64(0), nodes, slots, leaves, lslots, meta, R, G)
             else:
-                v = _centre(n, h, nodes, slots, leaves, lslots, meta, R, G)
+                v = _centre(n, h, nodes, slots, meta)
             if v < 0:
                 return np.int64(-1)
             if i == 0:
@@ -174,7 +174,7 @@ def step(node, T, nodes, slots, leaves, lslots, meta, R, G):
                 return np.int64(-1)
             v = _known(n, t2, h, nodes, meta)
             if v == -2:
-                v = step(n, t2, nodes, slots, leaves, lslots, meta, R, G)
+                v = _recursion(n, t2, nodes, slots, leaves, lslots, meta, R, G)
             if v < 0:
                 return np.int64(-1)
             if i == 0:
@@ -194,17 +194,13 @@ def step(node, T, nodes, slots, leaves, lslots, meta, R, G):
     return out
 
 
-@kernels.export(f"int64(int64, int64, {TABLES}, {RULES}, {SCRATCH})", _nrt=False)
-def step_bits(node, T, nodes, slots, leaves, lslots, meta, R, G):
-    """``step`` of bit leaves."""
-    return step(node, T, nodes, slots, leaves, lslots, meta, R, G)
-
-
-@kernels.export(f"int64(int64, int64, {NODES}, {SLOTS}, {META_T}, {RULES}, {SCRATCH})",
-                _nrt=False)
-def step_values(node, T, nodes, slots, meta, R, G):
-    """``step`` of value leaves (no leaf table)."""
-    return step(node, T, nodes, slots, None, None, meta, R, G)
+# One export per kind of leaf, each compiled only with its own leaf kernel, each with one
+# signature (the same types: value leaves pass their store's unused leaf table).
+_SIGNATURE = f"int64(int64, int64, {TABLES}, {RULES}, {SCRATCH})"
+step_bits = kernels.specialise(_recursion, "step_bits", _SIGNATURE, {"_nrt": False},
+                               _leaf_step=bitleaves.advance)
+step_values = kernels.specialise(_recursion, "step_values", _SIGNATURE, {"_nrt": False},
+                                 _leaf_step=cellgrid.advance)
 
 
 def advance(node: int, T: int, store, R: np.ndarray, G: np.ndarray) -> int:  # a Store
@@ -213,7 +209,5 @@ def advance(node: int, T: int, store, R: np.ndarray, G: np.ndarray) -> int:  # a
                       store.nodes, store.meta))
     if found != -2:
         return found
-    if store.leaf_level:
-        return int(step_bits(np.int64(node), np.int64(T), *store.tables, R, G))
-    return int(step_values(np.int64(node), np.int64(T), store.nodes, store.slots, store.meta,
-                           R, G))
+    step = step_bits if store.leaf_level else step_values
+    return int(step(np.int64(node), np.int64(T), *store.tables, R, G))
