@@ -11,6 +11,7 @@ import sys
 
 import numba
 import pytest
+from numba.core import sigutils
 
 from apps.ca.engine import CENTRE, Engine
 from apps.ca.library import pattern_path, rules_path
@@ -34,7 +35,9 @@ def _eager_exports(monkeypatch: pytest.MonkeyPatch) -> int:
             # The lazy kernel of that signature first (from the cache): a recursive kernel's
             # eager copy calls it by name (the session's cache guard fails the run if the
             # declared signature is not the one real calls made).
-            lazy.compile(signature)
+            # By the argument types alone, as a call compiles it: a signature with its
+            # return type is another key in numba's cache index (a second "signature").
+            lazy.compile(tuple(sigutils.normalize_signature(signature)[0]))
             options = {k: v for k, v in lazy.targetoptions.items()
                        if k not in ("cache", "nopython")}
             eager[id(lazy)] = numba.njit(signature, **options)(lazy.py_func)
