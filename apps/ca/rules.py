@@ -129,8 +129,6 @@ _COMMENT = re.compile(r"//[^\n]*")
 _WORD = re.compile(r"\S+")
 _DIGITS = re.compile(r"[0-9]+")
 _SIGNED = re.compile(r"[+-]?[0-9]+")
-_HEX = re.compile(r"[0-9A-F]+")
-_BINARY = re.compile(r"[01]+")
 # the outcome of most lines: one life-form, for certain (shared, as the lines are many)
 _CERTAIN = Fraction(1)
 
@@ -152,11 +150,11 @@ def parse_number(tok: Token, text: str, source: str, what: str = "a number") -> 
                         f"number {quote(tok.text, 24)} does not fit the 32-bit message area")
     try:
         if t.startswith("#X"):
-            if not _HEX.fullmatch(t, 2):
+            if not re.fullmatch(r"[0-9A-F]+", t[2:]):
                 raise ValueError
             value = int(t[2:], 16)
         elif t.startswith("#B"):
-            if not _BINARY.fullmatch(t, 2):
+            if not re.fullmatch(r"[01]+", t[2:]):
                 raise ValueError
             value = int(t[2:], 2)
         else:

@@ -119,12 +119,17 @@ def compile_rules(rules: RuleSet) -> RuleTables:
     thresh: list[int] = []
     forms: list[int] = []
     for it in rules.interpretations:
-        acc = 0
-        for p, lf in it.outcome.choices:
-            acc += p
-            thresh.append(min(ONE, int(acc * ONE)))
-            forms.append(lf)
-        thresh[-1] = ONE
+        choices = it.outcome.choices
+        if len(choices) == 1:  # deterministic (most lines): no arithmetic on Fractions
+            thresh.append(ONE)
+            forms.append(choices[0][1])
+        else:
+            acc = 0
+            for p, lf in choices:
+                acc += p
+                thresh.append(min(ONE, int(acc * ONE)))
+                forms.append(lf)
+            thresh[-1] = ONE
         out_start.append(len(thresh))
     kind = np.array([it.kind for it in rules.interpretations], np.int64)
     a = np.array([it.a for it in rules.interpretations], np.int64)
