@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from apps.ca import algorithms, kernels
+from apps.ca import algorithms
 from apps.ca.rules import RuleSet
 from apps.ca.tables import compile_rules
 from apps.ca.universe import CellList, DenseGrid, Universe, distinct
@@ -383,6 +383,8 @@ class Engine:
         if self._try_dense(t):
             self.generation += 1
             return
+        from apps.ca import kernels  # on the direct engine's first step: a jump never loads it
+
         self._list()
         area = self.advance_area
         if area is None or area == FULL:
@@ -466,6 +468,8 @@ class Engine:
     # -- dense fast path ------------------------------------------------------------
     def _try_dense(self, t) -> bool:
         """Step as dense grid passes when the rules allow it and the population is dense."""
+        from apps.ca import kernels
+
         plan = t.dense
         if plan is None or (self.advance_area is not None and self.advance_area != FULL):
             return False
