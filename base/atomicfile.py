@@ -17,7 +17,6 @@ import contextlib
 import errno
 import os
 import stat
-import tempfile
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
@@ -71,6 +70,8 @@ def naming_user_path(path: str | os.PathLike[str], tmp: str | None = None) -> It
 def temp_beside(target: Path, suffix: str = "") -> tuple[int, str]:
     """A new temporary file beside ``target``, named ``.<name>.<pid>.<random>.tmp<suffix>``
     so that ``sweep_stale`` removes it if this writer is killed; errors name ``target``."""
+    import tempfile  # here, not at the top: a program that only reads (``ca run``) is spared
+
     sweep_stale(target)
     with naming_user_path(target):
         try:

@@ -35,7 +35,6 @@ from ahead-of-time extensions never imports numba at all.
 
 from __future__ import annotations
 
-import importlib.abc
 import os
 import signal
 import sys
@@ -93,8 +92,10 @@ def _start_listening() -> None:
             _state.listening = True
 
 
-class _NumbaWatch(importlib.abc.MetaPathFinder):
-    """Starts listening as soon as numba's own import has finished (once)."""
+class _NumbaWatch:
+    """Starts listening as soon as numba's own import has finished (once). A finder on
+    ``sys.meta_path`` needs only ``find_spec``: importing importlib.abc for its base class
+    cost ~10 ms of every start (it imports importlib.resources, tempfile and random)."""
 
     def find_spec(self, name: str, path: Any, target: Any = None) -> Any:
         if name != "numba":

@@ -3,12 +3,13 @@ subcommands, KAS and CA library names)."""
 
 from __future__ import annotations
 
-import difflib
 from collections.abc import Iterable
 
 
 def close_names(word: str, choices: Iterable[str], n: int = 3) -> list[str]:
     """The known names nearest ``word`` (difflib's ratio, at least 0.6), nearest first."""
+    import difflib  # only on a miss: not a cost of every start
+
     return difflib.get_close_matches(word, sorted(set(choices)), n=n, cutoff=0.6)
 
 

@@ -10,12 +10,23 @@ the pattern's evolution is the work. Each figure: the minimum of RUNS processes'
 system of the child), its wall time, and the child's peak resident memory (GNU time's %M),
 start-up included. bgolly is found as the tests find it (tests/ca/golly_oracle.py):
 $CAMLAB88_BGOLLY, /opt/golly/usr/bin/bgolly (.ci/run unpacks it there), PATH.
+
+``--ab BASE`` compares this tree with another checkout BASE (e.g. a ``git worktree`` of
+main) in the same minutes: for each case, PAIRS rounds of base, this tree, bgolly and the
+floor (``python -c "import numpy"``; floor1: the same with one BLAS thread, as camlab88
+sets it) one after the other, each ours as ``python -m
+camlab88`` with PYTHONPATH set to its tree and CAMLAB88_AOT_DIR to ``--aot`` /
+``--base-aot`` (each tree's own ``camlab88 warm-up``); medians and minima of CPU and wall.
+Byte code is written for both trees (PYTHONDONTWRITEBYTECODE is dropped for the children),
+as an installed program has it.
 """
 
 from __future__ import annotations
 
+import argparse
 import os
 import resource
+import statistics
 import subprocess
 import sys
 import time
@@ -49,12 +60,14 @@ def load() -> str:
     return f"load {os.getloadavg()[0]:.2f}"
 
 
-def timed(cmd: list[str]) -> tuple[float, float, float, str]:
+def timed(cmd: list[str], env: dict[str, str] | None = None,
+          cwd: Path | None = None) -> tuple[float, float, float, str]:
     """(CPU s, wall s, peak MB, stdout) of one child process."""
     timer = ["/usr/bin/time", "-f", "%M"] if Path("/usr/bin/time").exists() else []
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
-    run = subprocess.run([*timer, *cmd], capture_output=True, text=True, check=True)
+    run = subprocess.run([*timer, *cmd], capture_output=True, text=True, check=True, env=env,
+                         cwd=cwd)
     wall = time.perf_counter() - start
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime + after.ru_stime) - (before.ru_utime + before.ru_stime)
@@ -66,7 +79,67 @@ def best(cmd: list[str]) -> tuple[float, float, float, str]:
     return min((timed(cmd) for _ in range(RUNS)), key=lambda r: r[0])
 
 
+def _tree_env(tree: Path, aot: str | None) -> dict[str, str]:
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    env["PYTHONPATH"] = str(tree)
+    if aot:
+        env["CAMLAB88_AOT_DIR"] = aot
+    return env
+
+
+def _summary(name: str, runs: list[tuple[float, float, float, str]]) -> str:
+    cpu, wall = [r[0] for r in runs], [r[1] for r in runs]
+    return (f"{name} CPU {statistics.median(cpu):.3f} (min {min(cpu):.3f}) wall "
+            f"{statistics.median(wall):.3f} (min {min(wall):.3f})")
+
+
+def ab(base: Path, aot: str | None, base_aot: str | None, pairs: int, only: str) -> None:
+    """This tree against ``base``, with bgolly and the numpy floor, interleaved."""
+    exe = bgolly()
+    here = HERE.parent
+    envs = {"base": _tree_env(base, base_aot), "new": _tree_env(here, aot)}
+    trees = {"base": base, "new": here}  # ``python -m`` puts its directory first on the path
+    print(time.strftime("%Y-%m-%d %H:%M"), f"{os.cpu_count()} cores, {load()}, "
+          f"{pairs} rounds: base {base}, new {here}")
+    for label, path, rules, gens, algo in CASES:
+        if only not in f"{label} {gens}":
+            continue
+        argv = ["-m", "camlab88", "ca", "run", "--rules", rules, "--pattern", str(path),
+                "--generations", str(gens), "--engine", "hashlife"]
+        runs: dict[str, list] = {"base": [], "new": [], "bgolly": [], "floor": [],
+                                 "floor1": []}
+        for _ in range(pairs):
+            for name in ("base", "new"):
+                runs[name].append(timed([sys.executable, *argv], envs[name], trees[name]))
+            if exe is not None:
+                runs["bgolly"].append(timed([exe, "-m", str(gens), "-i", str(gens), *algo,
+                                             str(path)]))
+            runs["floor"].append(timed([sys.executable, "-c", "import numpy"], envs["new"]))
+            runs["floor1"].append(timed([sys.executable, "-c", "import numpy"],
+                                        {**envs["new"], "OPENBLAS_NUM_THREADS": "1"}))
+        pops = {runs[n][0][3].split("population")[1].split()[0] for n in ("base", "new")}
+        print(f"{label} {gens:,} gens ({load()}; populations {sorted(pops)}):")
+        for name, rs in runs.items():
+            if rs:
+                print("   ", _summary(f"{name:6}", rs))
+        if runs["bgolly"]:
+            g = statistics.median(r[0] for r in runs["bgolly"])
+            for name in ("base", "new"):
+                m = statistics.median(r[0] for r in runs[name])
+                print(f"    {name} / bgolly (CPU medians) {m / max(g, 1e-3):.1f}x")
+
+
 def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--ab", type=Path, metavar="BASE", help="compare with checkout BASE")
+    ap.add_argument("--aot", help="CAMLAB88_AOT_DIR of this tree (with --ab)")
+    ap.add_argument("--base-aot", help="CAMLAB88_AOT_DIR of BASE (with --ab)")
+    ap.add_argument("--pairs", type=int, default=7, help="rounds with --ab (default 7)")
+    ap.add_argument("--only", default="", help="cases whose 'label generations' has this")
+    args = ap.parse_args()
+    if args.ab is not None:
+        ab(args.ab, args.aot, args.base_aot, args.pairs, args.only)
+        return
     exe = bgolly()
     if exe is None:
         print("bgolly not found (see tests/ca/golly_oracle.py)")

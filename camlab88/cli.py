@@ -64,6 +64,7 @@ def build_parser(words: Sequence[str] = ()) -> argparse.ArgumentParser:
     )
     parser.add_argument("--version", action="version", version=f"camlab88 {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    sub.words = tuple(words)  # an area builds only the action the line names (areas.py)
     for module in _command_modules(words):
         module.register(sub)
     parser.set_defaults(handler=lambda args: _bare(parser))
@@ -206,10 +207,22 @@ def _state_fault(words: list[str], state: object, exc: Exception) -> int:
     return 2
 
 
+def _one_blas_thread() -> None:
+    """numpy's OpenBLAS starts a thread per core at import, and they spin: 30-60 ms of CPU
+    a process here, a third of numpy's import, and BLAS does little for us (our products
+    are rows of 3-vectors by 3 x 3 matrices). Set before numpy is imported; a user's own
+    setting wins; child processes inherit it."""
+    import os
+
+    if "numpy" not in sys.modules:
+        os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+
 def entry(argv: Sequence[str] | None = None) -> int:
     """The console script and ``python -m camlab88``: ``main``, with a command's one-line
     refusal (``SystemExit("camlab88 X: why")``, which Python would end with status 1)
     printed and ended with status 2, a usage or input error like every other."""
+    _one_blas_thread()
     try:
         return main(argv)
     except SystemExit as exc:

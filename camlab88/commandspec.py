@@ -21,7 +21,9 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import marshal
 import re
+import sys
 from collections.abc import Callable
 from functools import cache
 from pathlib import Path
@@ -67,10 +69,41 @@ _PROSE = ("help", "description", "epilog")
 @cache
 def area_spec(area: str) -> dict[str, Any]:
     """The area's commands.toml (read once a process)."""
+    return read_spec(COMMANDS / area / "commands.toml")
+
+
+def read_spec(path: Path) -> dict[str, Any]:
+    """A commands.toml, parsed; the parse is kept beside it (``__pycache__``, as marshal
+    data holding the very bytes it was parsed from, so an edited file is parsed again and a
+    damaged copy is ignored and rewritten). Importing tomllib and parsing the ca area's file
+    cost ~12 ms of every ``ca run``; loading the copy ~0.1 ms."""
+    source = path.read_bytes()
+    copy = path.parent / "__pycache__" / f"{path.name}.{sys.implementation.cache_tag}.marshal"
+    try:
+        kept = marshal.loads(copy.read_bytes())
+        if type(kept) is tuple and len(kept) == 2 and kept[0] == source:
+            return kept[1]
+    except (OSError, EOFError, ValueError, TypeError):  # none yet, or damaged: parse
+        pass
     import tomllib
 
-    with open(COMMANDS / area / "commands.toml", "rb") as f:
-        return tomllib.load(f)
+    spec = tomllib.loads(source.decode("utf-8"))
+    if not sys.dont_write_bytecode:  # the user asked Python to write nothing beside its code
+        _keep(copy, source, spec)
+    return spec
+
+
+def _keep(copy: Path, source: bytes, spec: dict[str, Any]) -> None:
+    """Write the parse's copy atomically (the .pyc files' trust: marshal data beside the
+    code); a read-only install, or a value marshal cannot hold, keeps none."""
+    from base.atomicfile import write_atomic
+
+    try:
+        data = marshal.dumps((source, spec))
+        copy.parent.mkdir(exist_ok=True)
+        write_atomic(copy, data)
+    except (OSError, ValueError):
+        pass
 
 
 def _where(module: str) -> tuple[str, str]:

@@ -17,10 +17,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from apps.ca import algorithms, kernels
+from apps.ca import algorithms
 from apps.ca.rules import RuleSet
 from apps.ca.tables import compile_rules
-from apps.ca.universe import CellList, DenseGrid, Universe
+from apps.ca.universe import CellList, DenseGrid, Universe, distinct
 
 DEFAULT_MEMORY = 512 << 20  # bytes of HashLife node table, as Golly's default "maximum memory"
 
@@ -103,7 +103,7 @@ FULL = Rect(0, 0, SIDE - 1, SIDE - 1)
 def _wrapped_interval(values: np.ndarray) -> tuple[int, int]:
     """The shortest arc of the 65536-circle holding every value: it starts after the
     largest gap between neighbouring occupied coordinates (the seam counts as a gap)."""
-    u = np.unique(values)
+    u = distinct(values)
     gaps = np.diff(u)
     wrap_gap = int(u[0]) + SIDE - int(u[-1])
     if gaps.size == 0 or wrap_gap >= int(gaps.max()):
@@ -383,6 +383,8 @@ class Engine:
         if self._try_dense(t):
             self.generation += 1
             return
+        from apps.ca import kernels  # on the direct engine's first step: a jump never loads it
+
         self._list()
         area = self.advance_area
         if area is None or area == FULL:
@@ -466,6 +468,8 @@ class Engine:
     # -- dense fast path ------------------------------------------------------------
     def _try_dense(self, t) -> bool:
         """Step as dense grid passes when the rules allow it and the population is dense."""
+        from apps.ca import kernels
+
         plan = t.dense
         if plan is None or (self.advance_area is not None and self.advance_area != FULL):
             return False

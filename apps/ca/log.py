@@ -22,9 +22,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from apps.ca import seed as seed_range
 from apps.ca.engine import EDGES, SIDE, Engine, Rect
 from apps.ca.patterns import Pattern, format_rle, parse_rle
 from apps.ca.rules import parse_rules
+from apps.ca.seed import SEED_MAX, SEED_MIN
 from base.atomicfile import write_atomic
 from base.textinput import parse_int, quote, read_text
 
@@ -37,9 +39,6 @@ class LogError(ValueError):
     """A log, script or checkpoint file is malformed (names file and line)."""
 
 
-# the engine hashes the seed as an int64 (apps/ca/kernels.py): a seed beyond it cannot be
-# the seed of any run
-SEED_MIN, SEED_MAX = -(1 << 63), (1 << 63) - 1
 # a generation, count or coordinate in a log beyond this is damage, not a session
 MAX_LOG_NUMBER = (1 << 31) - 1
 
@@ -267,9 +266,7 @@ def _parse_header(lines: list[str], source: str) -> tuple[LogSettings, int]:
 def check_seed(seed: int, name: str = "--seed") -> int:
     """A seed the engine's kernels can take (an int64); the command line's ``--seed`` should
     go through this too."""
-    if not SEED_MIN <= seed <= SEED_MAX:
-        raise LogError(f"{name}: {seed} is outside {SEED_MIN}..{SEED_MAX}")
-    return seed
+    return seed_range.check_seed(seed, name, LogError)
 
 
 def parse_log_settings(text: str, source: str = "<log>") -> LogSettings:

@@ -28,7 +28,6 @@ MAX_LEVEL = 62  # 2**62: coordinates still fit an int64
 MAX_CELLS = 1 << 22  # cells of a sparse pattern listed at most (~0.1 GB as cell arrays)
 MAX_GRID = 1 << 28  # bytes of a dense pattern's grid at most (painted, never listed)
 GRID_FILL = 16  # as rle_body.GRID_FILL: a grid from 1/16 full
-SMALL = 256  # nodes of at most this many cells are listed once and reused
 _QUAD = ((0, 0), (1, 0), (0, 1), (1, 1))  # (x, y) of quadrants nw, ne, sw, se
 
 
@@ -41,48 +40,50 @@ class McError(ValueError):
 
 
 class _Tree:
-    """The nodes read so far: level, children (or a leaf's cells), population, box."""
+    """The nodes read so far: level, quadrants (a level-1 node: its four states; an 8 x 8
+    leaf: none, its cells in ``bits``) and population, as plain Python values while reading
+    (numpy arrays of a handful of numbers cost more than the numbers); the boxes are worked
+    out afterwards, all nodes of a level at once (``boxes``)."""
 
     def __init__(self) -> None:
         # index 0 is the empty node of every level
         self.level = [0]
-        self.kids: list[tuple[int, ...]] = [()]
-        self.leaf: list[tuple[np.ndarray, np.ndarray, np.ndarray] | None] = [None]
+        self.kids: list[tuple[int, ...]] = [(0, 0, 0, 0)]
+        self.bits: list[int | None] = [None]  # an 8 x 8 leaf's cells, bit 8 y + x
         self.pop = [0]
-        self.box: list[tuple[int, int, int, int] | None] = [None]
         self.top = 0  # largest state
 
-    def add_leaf(self, level: int, xs: np.ndarray, ys: np.ndarray, ts: np.ndarray) -> None:
-        self.level.append(level)
-        self.kids.append(())
-        self.leaf.append((xs, ys, ts))
-        self.pop.append(int(xs.size))
-        self.box.append((int(xs.min()), int(ys.min()), int(xs.max()), int(ys.max()))
-                        if xs.size else None)
-        self.top = max(self.top, int(ts.max()) if ts.size else 0)
+    def add_bitmap(self, bits: int, pop: int) -> None:
+        self.level.append(3)
+        self.kids.append((0, 0, 0, 0))
+        self.bits.append(bits)
+        self.pop.append(pop)
+        if pop:
+            self.top = max(self.top, 1)
+
+    def add_states(self, states: tuple[int, ...]) -> None:
+        """A level-1 node: the states of its cells nw, ne, sw, se."""
+        self.level.append(1)
+        self.kids.append(states)
+        self.bits.append(None)
+        self.pop.append(sum(1 for t in states if t))
+        self.top = max(self.top, *states)
 
     def add_node(self, level: int, kids: tuple[int, ...]) -> None:
-        half = 1 << (level - 1)
-        boxes = [(b[0] + qx * half, b[1] + qy * half, b[2] + qx * half, b[3] + qy * half)
-                 for k, (qx, qy) in zip(kids, _QUAD) if (b := self.box[k]) is not None]
         self.level.append(level)
         self.kids.append(kids)
-        self.leaf.append(None)
-        self.pop.append(sum(self.pop[k] for k in kids))
-        self.box.append((min(b[0] for b in boxes), min(b[1] for b in boxes),
-                         max(b[2] for b in boxes), max(b[3] for b in boxes))
-                        if boxes else None)
+        self.bits.append(None)
+        pop = self.pop
+        self.pop.append(pop[kids[0]] + pop[kids[1]] + pop[kids[2]] + pop[kids[3]])
 
 
 _ROW_BITS = str.maketrans(".*", "01")
 _LEAF_ROW = re.compile(r"[.*]{0,8}")
-_UNIT = np.arange(64, dtype=np.uint64)
 
 
-def _bitmap(text: str, line: int, cache: dict
-            ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The live cells of an 8 x 8 leaf written as rows of '.' and '*' each ended by '$'
-    (identical leaves, common in a file, are decoded once)."""
+def _bitmap(text: str, line: int, cache: dict) -> tuple[int, int]:
+    """(cells as bits, population) of an 8 x 8 leaf written as rows of '.' and '*' each
+    ended by '$' (identical leaves, common in a file, are decoded once)."""
     got = cache.get(text)
     if got is not None:
         return got
@@ -98,13 +99,26 @@ def _bitmap(text: str, line: int, cache: dict
         if row:
             bits |= int(row.translate(_ROW_BITS)[::-1], 2) << (8 * y)
         col += len(row) + 1
-    live = np.flatnonzero((np.uint64(bits) >> _UNIT) & np.uint64(1)).astype(np.int64)
-    got = (live & 7, live >> 3, np.ones(live.size, np.int64))
+    got = (bits, bits.bit_count())
     cache[text] = got
     return got
 
 
+# a node line as it always is: five numbers of at most ten digits (else _node_line says why)
+_NODE = re.compile(r"([0-9]{1,10})\s+([0-9]{1,10})\s+([0-9]{1,10})\s+([0-9]{1,10})"
+                   r"\s+([0-9]{1,10})")
+
+
 def _node_line(tree: _Tree, text: str, line: int) -> None:
+    m = _NODE.fullmatch(text)
+    if m is not None:
+        level = int(m[1])
+        kids = (int(m[2]), int(m[3]), int(m[4]), int(m[5]))
+        levels = tree.level
+        if 2 <= level <= MAX_LEVEL and all(k < len(levels) and (not k or levels[k] == level - 1)
+                                           for k in kids):
+            tree.add_node(level, kids)
+            return
     parts = text.split()
     if len(parts) != 5 or not all(p.isascii() and p.isdigit() and len(p) <= 10
                                   for p in parts):
@@ -117,17 +131,15 @@ def _node_line(tree: _Tree, text: str, line: int) -> None:
         bad = [k for k in kids if k > 255]
         if bad:
             raise McError(line, 1, f"a cell state is 0..255, found {bad[0]}")
-        q = [(qx, qy, t) for (qx, qy), t in zip(_QUAD, kids) if t]
-        tree.add_leaf(1, np.array([a for a, _, _ in q], np.int64),
-                      np.array([b for _, b, _ in q], np.int64),
-                      np.array([t for _, _, t in q], np.int64))
+        tree.add_states(tuple(kids))
         return
+    levels = tree.level
     for k in kids:
-        if k >= len(tree.level):
+        if k >= len(levels):
             raise McError(line, 1, f"node {k} is not defined before this line (nodes are "
-                                   f"numbered from 1 in order; this is node {len(tree.level)})")
-        if k and tree.level[k] != level - 1:
-            raise McError(line, 1, f"node {k} has level {tree.level[k]}, a quadrant of a "
+                                   f"numbered from 1 in order; this is node {len(levels)})")
+        if k and levels[k] != level - 1:
+            raise McError(line, 1, f"node {k} has level {levels[k]}, a quadrant of a "
                                    f"level-{level} node needs level {level - 1}")
     tree.add_node(level, tuple(kids))
 
@@ -150,7 +162,7 @@ def read_tree(text: str) -> tuple[_Tree, str, list[str]]:
                 comments.append(s[2:].strip())
             continue
         if s[0] in ".*$":
-            tree.add_leaf(3, *_bitmap(s, n, leaves))
+            tree.add_bitmap(*_bitmap(s, n, leaves))
         else:
             _node_line(tree, s, n)
     if len(tree.level) == 1:
@@ -158,37 +170,120 @@ def read_tree(text: str) -> tuple[_Tree, str, list[str]]:
     return tree, rule, comments
 
 
-def _small(tree: _Tree, k: int, memo: dict) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The cells of a small node relative to its top-left corner (each node listed once)."""
-    got = memo.get(k)
-    if got is not None:
-        return got
-    if tree.leaf[k] is not None:
-        got = tree.leaf[k]
-    elif tree.pop[k] == 0:
-        got = (np.zeros(0, np.int64),) * 3
-    else:
-        half = 1 << (tree.level[k] - 1)
-        parts = [(_small(tree, c, memo), qx, qy) for c, (qx, qy) in zip(tree.kids[k], _QUAD)]
-        got = (np.concatenate([p[0] + qx * half for p, qx, _ in parts]),
-               np.concatenate([p[1] + qy * half for p, _, qy in parts]),
-               np.concatenate([p[2] for p, _, _ in parts]))
-    memo[k] = got
-    return got
+# cells listed at once while a tree is expanded (the arrays of one batch: ~10 bytes a cell)
+BATCH = 1 << 20
+_QX = np.array([0, 1, 0, 1], np.int64)
+_QY = np.array([0, 0, 1, 1], np.int64)
 
 
-def _pieces(tree: _Tree, k: int, x: int, y: int, memo: dict, emit) -> None:
-    """``emit(xs, ys, ts)`` the cells of node ``k`` placed with its top-left at (x, y), a
-    small node at a time."""
-    if tree.pop[k] == 0:
-        return
-    if tree.pop[k] <= SMALL or tree.leaf[k] is not None:
-        xs, ys, ts = _small(tree, k, memo)
-        emit(xs + x, ys + y, ts)
-        return
-    half = 1 << (tree.level[k] - 1)
-    for c, (qx, qy) in zip(tree.kids[k], _QUAD):
-        _pieces(tree, c, x + qx * half, y + qy * half, memo, emit)
+class _Nodes:
+    """The tree as numpy arrays, for expanding many placed copies of nodes at once."""
+
+    def __init__(self, tree: _Tree) -> None:
+        self.level = np.array(tree.level, np.int64)
+        self.kids = np.array(tree.kids, np.int64)  # a level-1 node's: its states
+        # (a node beyond the cells a pattern may have is never expanded whole: it is split)
+        self.pop = np.array([min(p, BATCH << 1) for p in tree.pop], np.int64)
+        # each 8 x 8 leaf's cells, one after another: leaf k's from start[k], count[k] of them
+        offsets = [[i for i in range(64) if b >> i & 1] if b is not None else []
+                   for b in tree.bits]
+        self.count = np.array([len(o) for o in offsets], np.int64)
+        self.start = np.cumsum(self.count) - self.count
+        flat = np.array([i for o in offsets for i in o], np.int64)
+        self.offx, self.offy = flat & 7, flat >> 3
+        self.is_bitmap = np.array([b is not None for b in tree.bits], np.bool_)
+
+    def box(self, root: int) -> tuple[int, int, int, int] | None:
+        """The live cells' box of node ``root`` relative to its top-left (None: empty),
+        worked out for every node, bottom-up, all nodes of a level at once (a node's
+        quadrants are one level below it)."""
+        n = self.level.size
+        far = np.int64(1) << np.int64(MAX_LEVEL)  # beyond any cell: an empty side
+        lo = np.full((n, 2), far, np.int64)  # (x, y) of the top-left live cell
+        hi = np.full((n, 2), -1, np.int64)  # (x, y) of the bottom-right one
+        leaf = np.flatnonzero(self.is_bitmap & (self.count > 0))
+        if leaf.size:
+            starts = self.start[leaf]
+            lo[leaf, 0] = np.minimum.reduceat(self.offx, starts)
+            lo[leaf, 1] = np.minimum.reduceat(self.offy, starts)
+            hi[leaf, 0] = np.maximum.reduceat(self.offx, starts)
+            hi[leaf, 1] = np.maximum.reduceat(self.offy, starts)
+        quad = np.stack([_QX, _QY], axis=1)  # (4, 2): offsets of the quadrants in halves
+        for level in range(1, int(self.level.max()) + 1):
+            ks = np.flatnonzero((self.level == level) & ~self.is_bitmap)
+            if not ks.size:
+                continue
+            kids = self.kids[ks]
+            if level == 1:  # quadrants are cells: live where the state is not 0
+                live, klo, khi = kids != 0, quad[None], quad[None]
+            else:
+                live = hi[kids, 0] >= 0
+                half = np.int64(1) << np.int64(level - 1)
+                klo, khi = lo[kids] + quad * half, hi[kids] + quad * half
+            lo[ks] = np.where(live[..., None], klo, far).min(axis=1)
+            hi[ks] = np.where(live[..., None], khi, -1).max(axis=1)
+        if hi[root, 0] < 0:
+            return None
+        return int(lo[root, 0]), int(lo[root, 1]), int(hi[root, 0]), int(hi[root, 1])
+
+    def down(self, ks: np.ndarray, xs: np.ndarray, ys: np.ndarray, level: int
+             ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The non-empty quadrants of nodes ``ks`` (of ``level``) placed at (xs, ys)."""
+        half = np.int64(1) << np.int64(level - 1)
+        kids = self.kids[ks]
+        live = kids != 0
+        return (kids[live], (xs[:, None] + _QX * half)[live],
+                (ys[:, None] + _QY * half)[live])
+
+    def cells(self, ks: np.ndarray, xs: np.ndarray, ys: np.ndarray, level: int
+              ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Every cell of nodes ``ks`` (all of ``level``) placed at (xs, ys)."""
+        out = []
+        while ks.size:
+            if level == 3:
+                leaf = self.is_bitmap[ks]
+                if leaf.any():
+                    out.append(self._bitmap_cells(ks[leaf], xs[leaf], ys[leaf]))
+                    ks, xs, ys = ks[~leaf], xs[~leaf], ys[~leaf]
+            if level == 1:
+                states = self.kids[ks]
+                live = states != 0
+                out.append(((xs[:, None] + _QX)[live], (ys[:, None] + _QY)[live],
+                            states[live]))
+                break
+            ks, xs, ys = self.down(ks, xs, ys, level)
+            level -= 1
+        if len(out) == 1:
+            return out[0]
+        return tuple(np.concatenate([o[i] for o in out]) for i in range(3))
+
+    def _bitmap_cells(self, ks: np.ndarray, xs: np.ndarray, ys: np.ndarray
+                      ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        count = self.count[ks]
+        copy = np.repeat(np.arange(ks.size), count)
+        first = np.cumsum(count) - count
+        at = self.start[ks][copy] + np.arange(copy.size) - first[copy]
+        return (xs[copy] + self.offx[at], ys[copy] + self.offy[at],
+                np.ones(copy.size, np.int64))
+
+
+def _pieces(nodes: _Nodes, root: int, x: int, y: int, emit) -> None:
+    """``emit(xs, ys, ts)`` the cells of node ``root`` placed with its top-left at (x, y),
+    at most about BATCH cells at a time."""
+    todo = [(np.array([root], np.int64), np.array([x], np.int64), np.array([y], np.int64),
+             int(nodes.level[root]))]
+    while todo:
+        ks, xs, ys, level = todo.pop()
+        pops = nodes.pop[ks]
+        total = int(pops.sum())
+        if total > BATCH and ks.size > 1:  # two batches of about half the cells each
+            cut = min(max(int(np.searchsorted(np.cumsum(pops), total // 2)), 1), ks.size - 1)
+            todo.append((ks[cut:], xs[cut:], ys[cut:], level))
+            todo.append((ks[:cut], xs[:cut], ys[:cut], level))
+        elif total > BATCH and level > 1 and not nodes.is_bitmap[ks[0]]:
+            todo.append((*nodes.down(ks, xs, ys, level), level - 1))  # one node: its quadrants
+        elif total:
+            emit(*nodes.cells(ks, xs, ys, level))
 
 
 def cells_of(tree: _Tree, last_line: int
@@ -197,7 +292,8 @@ def cells_of(tree: _Tree, last_line: int
     """The root's cells relative to its live box's top-left — as arrays, or a uint8 grid
     for a dense pattern — and Golly's origin in those coordinates."""
     root = len(tree.level) - 1
-    level, box, pop = tree.level[root], tree.box[root], tree.pop[root]
+    nodes = _Nodes(tree)
+    level, box, pop = tree.level[root], nodes.box(root), tree.pop[root]
     half = 1 << (level - 1)
     if box is None:
         empty = np.zeros(0, np.int64)
@@ -218,10 +314,10 @@ def cells_of(tree: _Tree, last_line: int
         def paint(xs: np.ndarray, ys: np.ndarray, ts: np.ndarray) -> None:
             g[ys, xs] = ts
 
-        _pieces(tree, root, -x0, -y0, {}, paint)
+        _pieces(nodes, root, -x0, -y0, paint)
         return g, origin
     pieces: list = []
-    _pieces(tree, root, -x0, -y0, {}, lambda *piece: pieces.append(piece))
+    _pieces(nodes, root, -x0, -y0, lambda *piece: pieces.append(piece))
     xs, ys, ts = (np.concatenate([p[i] for p in pieces]) for i in range(3))
     order = np.lexsort((xs, ys))
     return (xs[order], ys[order], ts[order]), origin

@@ -39,11 +39,16 @@ class RuleError(ValueError):
         self.detail = message
 
 
-@dataclass(frozen=True)
 class Token:
-    text: str
-    line: int
-    column: int
+    """A word of the rule text and where it starts (the parser's own: a plain class, since
+    a rule table has thousands of them and a frozen dataclass's __init__ is slow)."""
+
+    __slots__ = ("text", "line", "column")
+
+    def __init__(self, text: str, line: int, column: int) -> None:
+        self.text = text
+        self.line = line
+        self.column = column
 
 
 @dataclass(frozen=True)
@@ -121,13 +126,18 @@ class RuleSet:
 
 
 _COMMENT = re.compile(r"//[^\n]*")
+_WORD = re.compile(r"\S+")
+_DIGITS = re.compile(r"[0-9]+")
+_SIGNED = re.compile(r"[+-]?[0-9]+")
+# the outcome of most lines: one life-form, for certain (shared, as the lines are many)
+_CERTAIN = Fraction(1)
 
 
 def tokenize(text: str) -> list[Token]:
     tokens: list[Token] = []
     for lineno, raw in enumerate(text.splitlines(), start=1):
-        line = _COMMENT.sub("", raw)
-        for m in re.finditer(r"\S+", line):
+        line = _COMMENT.sub("", raw) if "//" in raw else raw
+        for m in _WORD.finditer(line):
             tokens.append(Token(m.group(0), lineno, m.start() + 1))
     return tokens
 
@@ -148,7 +158,7 @@ def parse_number(tok: Token, text: str, source: str, what: str = "a number") -> 
                 raise ValueError
             value = int(t[2:], 2)
         else:
-            if not re.fullmatch(r"[0-9]+", t):
+            if not _DIGITS.fullmatch(t):
                 raise ValueError
             value = int(t, 10)
     except ValueError:
@@ -190,8 +200,7 @@ class _Parser:
 
     def integer(self, expected: str, signed: bool = False) -> int:
         tok = self.take(expected)
-        pattern = r"[+-]?[0-9]+" if signed else r"[0-9]+"
-        if not re.fullmatch(pattern, tok.text):
+        if not (_SIGNED if signed else _DIGITS).fullmatch(tok.text):
             raise self.error(tok, f"expected {expected}, found '{tok.text}'")
         return int(tok.text)
 
@@ -378,7 +387,7 @@ class _Parser:
             return Outcome(tuple(choices))
         _, form = self.lifeform_or_dead("the life-form to become (or percentages such as "
                                         "'50% 3')")
-        return Outcome(((Fraction(1), form),))
+        return Outcome(((_CERTAIN, form),))
 
     def lifeform_or_dead(self, expected: str) -> tuple[Token, int]:
         tok = self.peek()

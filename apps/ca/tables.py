@@ -119,29 +119,23 @@ def compile_rules(rules: RuleSet) -> RuleTables:
     thresh: list[int] = []
     forms: list[int] = []
     for it in rules.interpretations:
-        acc = 0
-        for p, lf in it.outcome.choices:
-            acc += p
-            thresh.append(min(ONE, int(acc * ONE)))
-            forms.append(lf)
-        thresh[-1] = ONE
+        choices = it.outcome.choices
+        if len(choices) == 1:  # deterministic (most lines): no arithmetic on Fractions
+            thresh.append(ONE)
+            forms.append(choices[0][1])
+        else:
+            acc = 0
+            for p, lf in choices:
+                acc += p
+                thresh.append(min(ONE, int(acc * ONE)))
+                forms.append(lf)
+            thresh[-1] = ONE
         out_start.append(len(thresh))
     kind = np.array([it.kind for it in rules.interpretations], np.int64)
     a = np.array([it.a for it in rules.interpretations], np.int64)
     b = np.array([it.b for it in rules.interpretations], np.int64)
 
-    # Precompute the first matching line for every small value, vectorised over values.
-    values = np.arange(LOOKUP_SIZE, dtype=np.int64)
-    lookup = np.full(LOOKUP_SIZE, -1, np.int64)
-    for i in range(len(kind) - 1, -1, -1):  # reverse so earlier lines win
-        if kind[i] == MATCH_EXACT:
-            hit = values == a[i]
-        elif kind[i] == MATCH_PATTERN:
-            hit = (values & a[i]) == b[i]
-        else:
-            assert kind[i] == MATCH_RANGE
-            hit = (values >= a[i]) & (values <= b[i])
-        lookup[hit] = i
+    lookup = _lookup(rules)
     ry, rx = rules.reach
     plan = _dense_plan(rules, top, lookup, out_start, forms)
     tables = RuleTables(
@@ -168,6 +162,28 @@ def compile_rules(rules: RuleSet) -> RuleTables:
     )
     rules._tables["tables"] = tables
     return tables
+
+
+def _lookup(rules: RuleSet) -> np.ndarray:
+    """The first matching line for every value below LOOKUP_SIZE (-1: none): lines applied
+    last to first so earlier ones win; a value or a range is one store or slice (a rule
+    table of a thousand exact values, Langton's loops, takes a millisecond, not 40)."""
+    lookup = np.full(LOOKUP_SIZE, -1, np.int64)
+    values = None
+    for i in range(len(rules.interpretations) - 1, -1, -1):
+        it = rules.interpretations[i]
+        if it.kind == MATCH_EXACT:
+            if it.a < LOOKUP_SIZE:
+                lookup[it.a] = i
+        elif it.kind == MATCH_PATTERN:
+            if values is None:
+                values = np.arange(LOOKUP_SIZE, dtype=np.int64)
+            lookup[(values & it.a) == it.b] = i
+        else:
+            assert it.kind == MATCH_RANGE
+            if it.a < LOOKUP_SIZE:
+                lookup[it.a:min(it.b, LOOKUP_SIZE - 1) + 1] = i
+    return lookup
 
 
 def _dense_plan(rules: RuleSet, top: int, lookup: np.ndarray, out_start: list[int],
@@ -256,7 +272,8 @@ def _separable_plan(entries: list, dtype: type, lut: np.ndarray, bound: int) -> 
     rest = [(t, m) for t, m in entries
             if m.op != OP_ADD or (t, m.value, m.dy, m.dx) not in grouped]
     rest.sort(key=lambda e: e[1].op != OP_ADD)  # additions first (stable otherwise)
-    forms = sorted({int(f) for f in lut[:bound + 1]} - {0})
+    present = np.flatnonzero(np.bincount(lut[:bound + 1]))  # sorted distinct life-forms
+    forms = [int(f) for f in present if f != 0]
     interp = 0
     if len(forms) <= MASK_FORMS_MAX and bound < 64:
         interp = 1 if bound < 32 else 2

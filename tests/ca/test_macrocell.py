@@ -39,6 +39,40 @@ def test_macrocell_round_trip(cells, ref, two_state: bool) -> None:
     assert text.startswith("[M2]")
 
 
+@settings(max_examples=60, deadline=None)
+@given(cells_st, st.booleans(), st.integers(1, 40))
+def test_expanding_in_small_batches_lists_the_same_cells(cells, two_state: bool, batch: int,
+                                                         ) -> None:
+    # the tree is expanded a batch of about BATCH cells at a time: any split gives them all
+    from apps.ca import macrocell
+
+    if two_state:
+        cells = [(x, y, 1) for x, y, _ in cells]
+    p = Pattern.from_cells(cells, ref=(3, -2), rule="life")
+    text = format_mc(p)
+    whole = parse_mc(text)
+    saved = macrocell.BATCH
+    macrocell.BATCH = batch
+    try:
+        split = parse_mc(text)
+    finally:
+        macrocell.BATCH = saved
+    assert _placed(split) == _placed(whole) == _placed(p) and split.ref == whole.ref
+
+
+def test_a_golly_file_in_small_batches_is_the_same_pattern() -> None:
+    from apps.ca import macrocell
+
+    whole = read_pattern(GOLLY / "primes.mc")
+    saved = macrocell.BATCH
+    macrocell.BATCH = 1000
+    try:
+        split = read_pattern(GOLLY / "primes.mc")
+    finally:
+        macrocell.BATCH = saved
+    assert np.array_equal(split.grid, whole.grid) and split.ref == whole.ref
+
+
 def test_a_leaf_line_and_a_node_line_place_cells_round_golly_origin() -> None:
     # an 8 x 8 leaf holding a glider, as the north-east quadrant of a level-4 node: the
     # root's top-left is (-8, -7), so the leaf's top-left is (0, -7)

@@ -12,9 +12,9 @@ from camlab88.runopts import check_output, fail
 def _run(args: argparse.Namespace) -> int:
     from apps.ca import library
     from apps.ca.engine import CENTRE, Engine
-    from apps.ca.log import check_seed
     from apps.ca.patterns import PatternError, read_pattern
     from apps.ca.rules import RuleError, load_rules
+    from apps.ca.seed import check_seed
 
     try:
         check_seed(args.seed)  # the kernels take an int64: a 20-digit seed is an error
