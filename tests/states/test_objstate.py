@@ -182,3 +182,26 @@ def test_a_state_is_never_written_into_what_a_module_shares() -> None:
     restore(fresh, *capture(saved))
     assert EDIT_ITEMS == kept and fresh.items is not EDIT_ITEMS
     assert fresh.items == {"centre": "changed by a state"}
+
+
+def test_a_dialogue_that_cannot_be_made_again_leaves_the_program_as_it_was() -> None:
+    """The last step of a load (a dialogue made again, after the whole tree is in place)
+    fails: everything the load wrote, the dialogue's own restores included, is put back."""
+    from apps.ca.program import commands
+    from apps.ca.program.program import CAProgram, Options
+    from emulator.rainbow.session import in_process
+
+    prog = CAProgram(in_process().client, Options(pattern="glider"))
+    prog.frame()
+    prog._start(commands.alter_display(prog))
+    tree, blobs = capture(prog)
+    text = json.dumps(tree)
+    maker = '"maker", "apps.ca.program.commands:alter_display"'
+    assert maker in text
+    tree = json.loads(text.replace(maker, '"maker", "apps.ca.program.commands:nothing"'))
+    fresh = CAProgram(in_process().client, Options(pattern="gosper_gun"))
+    fresh.frame()
+    contents = capture(fresh)
+    with pytest.raises(StateError, match="dialogue 'apps.ca.program.commands:nothing'"):
+        restore(fresh, tree, blobs)
+    assert capture(fresh) == contents

@@ -38,13 +38,14 @@ class _Keep(Plugin):
     """Keeps the harness; ``at_start`` is the program's state when the run began (before a
     --load-state: this plugin starts before the state plugin)."""
 
-    def __init__(self) -> None:
+    def __init__(self, captured: bool = True) -> None:
         self.harness: Any = None
         self.at_start: Any = None
+        self.captured = captured
 
     def start(self, harness) -> None:
         self.harness = harness
-        self.at_start = snapshot(harness)
+        self.at_start = snapshot(harness) if self.captured else None
 
 
 def snapshot(harness) -> Any:
@@ -210,3 +211,43 @@ def test_any_damaged_state_is_refused_unchanged_or_loaded_never_half(program,
     if _load_into_running(harness, _damage(data, *damaged)) is not None:
         assert snapshot(harness) == running, f"{name}: a refused state changed the program"
     assert not _changed(shared, module_objects()), f"{name}: a state changed shared objects"
+
+
+# ------------------------------------------------------------------ kas view's line test
+def _period_state(data: bytes, k: Any = None, machine: bytes | None = None) -> bytes:
+    """``kas view``'s state with its period and/or its machine's state replaced."""
+    from emulator.machine.state_file import pack, unpack
+
+    head, blobs = unpack(data, "program")
+    bare = {n: v for n, v in head.items() if n not in ("blobs", "format_version", "device")}
+    period, parts = unpack(blobs["target"], "period")
+    target = pack("period", {"k": period["k"] if k is None else k},
+                  {"machine": parts["machine"] if machine is None else machine})
+    return pack("program", bare, {"target": target})
+
+
+def test_kas_view_refuses_a_damaged_state_and_runs_on_unchanged(tmp_path) -> None:
+    """The line test is the target that loads itself (a generator run again to the saved
+    period): a period past its end, or a damaged machine, is refused before the running
+    line test changes (it was run again on its own build and left there)."""
+    assert run_cli(["kas", "demo", "--out", str(tmp_path / "seq.kas")], 300.0)[0] == 0
+    state, keep = tmp_path / "v.c88state", _Keep(captured=False)  # (a generator)
+    real = plugins.standard_plugins
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(plugins, "standard_plugins", lambda o: [keep, *real(o)])
+        code, err = run_cli(["kas", "view", str(tmp_path / "seq.kas"), "--headless",
+                             "--every", "--save-state", str(state), "--at", "0.5"], 300.0)
+    assert code == 0, err
+    harness, data = keep.harness, state.read_bytes()
+    target = harness.target
+    assert _load_into_running(harness, data) is None
+    for _ in range(5):
+        assert target.tick()  # on past the state
+    before = (target.k, target.machine, target.machine.save_state(), target.result)
+    for damaged, why in ((_period_state(data, k=10**6), "ends before period 1000000"),
+                         (_period_state(data, machine=b"damaged"), "machine state")):
+        refusal = _load_into_running(harness, damaged)
+        assert refusal is not None and why in refusal, refusal
+        now = (target.k, target.machine, target.machine.save_state(), target.result)
+        assert now[0] == before[0] and now[1] is before[1] and now[2:] == before[2:]
+    assert target.tick()  # and it runs on
