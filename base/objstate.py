@@ -6,6 +6,12 @@ that are already loaded, fills their attributes, and writes into the objects, ar
 closures the fresh build made (so the references wiring them together - callbacks, views,
 ports - stay the fresh build's).
 
+A load is all or nothing: every write into an object that was there before it is noted
+first, and if anything fails (the tree does not fit, a hook refuses) the notes are played
+back, so a refused state leaves the program exactly as it was. Objects our modules hold at
+module level (a menu's item list, a table: base.shared_objects) are shared by every program
+in the process: a state is never written into them, the program gets its own copy instead.
+
 What is saved: numbers, strings, bytes, Fractions, containers, numpy arrays and scalars,
 random generators (Python's and numpy's), enums and instances of our own classes (their
 ``__dict__`` and slots), the objects behind bound methods, and our functions as *which* one
@@ -34,13 +40,16 @@ import socket
 import sys
 import threading
 import types
+from collections.abc import Callable
+from contextvars import ContextVar
 from fractions import Fraction
 from pathlib import PurePath
 from typing import Any
 
 import numpy as np
 
-OURS = ("apps.", "emulator.", "protocols.", "base.", "roms.", "camlab88.")
+from base.shared_objects import OURS, shared
+
 INLINE = 256  # bytes: smaller ones stay in the tree (base64)
 _KEEP_TYPES: tuple[type, ...] = (
     types.FunctionType, types.BuiltinFunctionType, types.ModuleType, type, PurePath,
@@ -60,7 +69,8 @@ _OWN_STATE: set[type] = set()
 
 def own_state(cls: type) -> type:
     """Mark one of our classes as saving itself: ``save_state() -> bytes`` and
-    ``load_state(bytes)`` (in place) stand for its attributes in a captured graph."""
+    ``load_state(bytes)`` (in place, all or nothing: it checks everything before it writes)
+    stand for its attributes in a captured graph."""
     _OWN_STATE.add(cls)
     return cls
 
@@ -80,17 +90,58 @@ def _qual(cls: type) -> str:
 def _attrs(obj: Any) -> dict[str, Any]:
     """An instance's own attributes: its ``__dict__`` and every slot that is set (less those
     its class names in ``_state_exclude``: rebuilt after a load, never saved)."""
-    refusal = getattr(obj, "_state_refusal", None)  # an object that knows it cannot be saved
+    refusal = _own(obj, "_state_refusal", None)  # an object that knows it cannot be saved
     if refusal:
         raise StateError(refusal)
-    out = dict(getattr(obj, "__dict__", {}))
+    out = dict(_instance_dict(obj) or {})
     for name in getattr(type(obj), "_state_exclude", ()):
         out.pop(name, None)
-    for klass in type(obj).__mro__:
-        for name in getattr(klass, "__slots__", ()):
-            if name not in ("__dict__", "__weakref__") and hasattr(obj, name):
-                out[name] = getattr(obj, name)
+    if not _plain(type(obj)):
+        for klass in type(obj).__mro__:
+            for name in getattr(klass, "__slots__", ()):
+                value = _own(obj, name) if name not in ("__dict__", "__weakref__") \
+                    else _MISSING
+                if value is not _MISSING:
+                    out[name] = value
     return out
+
+
+_MISSING = object()
+
+
+def _own(obj: Any, name: str, missing: Any = _MISSING) -> Any:
+    """The instance's own attribute ``name`` (its __dict__'s or a slot's, not its class's),
+    or ``missing``. Never through the class's ``__getattr__``: a delegating wrapper made
+    from a damaged state without its delegate would call itself for ever."""
+    d = _instance_dict(obj)
+    if d is not None and name in d:
+        return d[name]
+    if not _plain(type(obj)) and any(name in getattr(k, "__slots__", ())
+                                     for k in type(obj).__mro__):
+        try:
+            return object.__getattribute__(obj, name)
+        except AttributeError:
+            return missing
+    return missing
+
+
+def _instance_dict(obj: Any) -> dict[str, Any] | None:
+    try:
+        d = object.__getattribute__(obj, "__dict__")
+    except AttributeError:
+        return None
+    return d if isinstance(d, dict) else None
+
+
+_PLAIN: dict[type, bool] = {}
+
+
+def _plain(cls: type) -> bool:
+    """Instances of ``cls`` keep every attribute in their ``__dict__`` (no slots)."""
+    if cls not in _PLAIN:
+        _PLAIN[cls] = all(set(getattr(k, "__slots__", ())) <= {"__dict__", "__weakref__"}
+                          for k in cls.__mro__) and cls.__dictoffset__ != 0
+    return _PLAIN[cls]
 
 
 # ---------------------------------------------------------------------------- capture
@@ -225,13 +276,95 @@ def capture(root: Any) -> tuple[Any, list[bytes]]:
 
 
 # ---------------------------------------------------------------------------- restore
+# what the restore running now has written (a hook's own restores add to its journal)
+_JOURNAL: ContextVar[list[tuple[Callable[..., Any], tuple[Any, ...]]] | None] = ContextVar(
+    "camlab88_objstate_journal", default=None)
+
+
+def _put_attr(obj: Any, name: str, value: Any) -> None:
+    if value is _MISSING:
+        if _own(obj, name) is not _MISSING:
+            object.__delattr__(obj, name)
+    else:
+        object.__setattr__(obj, name, value)
+
+
+def _put_dict(d: dict[str, Any], old: dict[str, Any]) -> None:
+    d.clear()
+    d.update(old)
+
+
+def _put_items(out: Any, items: list[Any]) -> None:
+    out.clear()
+    dict.update(out, items)
+
+
+def _put_cell(cell: types.CellType, value: Any) -> None:
+    if value is _MISSING:
+        del cell.cell_contents
+    else:
+        cell.cell_contents = value
+
+
+def _put_array(out: np.ndarray, old: np.ndarray) -> None:
+    out[...] = old
+
+
+def _put_slice(out: Any, old: Any) -> None:
+    out[:] = old
+
+
+def _put_set(out: set[Any], old: set[Any]) -> None:
+    out.clear()
+    out.update(old)
+
+
+def _put_numpy_state(out: np.random.Generator, state: Any) -> None:
+    out.bit_generator.state = state
+
+
+def set_attribute(obj: Any, name: str, value: Any) -> None:
+    """``obj.name = value``, undone with the restore running now if it fails (for a
+    ``_state_restored`` hook)."""
+    journal = _JOURNAL.get()
+    if journal is not None:
+        journal.append((_put_attr, (obj, name, _own(obj, name))))
+    object.__setattr__(obj, name, value)
+
+
 class _Restore:
-    def __init__(self, blobs: list[bytes], pinned: frozenset[str] = frozenset()) -> None:
+    def __init__(self, blobs: list[bytes], pinned: frozenset[str],
+                 journal: list[tuple[Callable[..., Any], tuple[Any, ...]]]) -> None:
         self.blobs = blobs
         self.pinned = pinned
         self.memo: dict[int, Any] = {}
         self.restored: list[Any] = []  # objects told when the whole graph is in place
         self.counterpart: dict[int, Any] = {}  # tree id -> the fresh object in its place
+        self.shared = shared()  # never written into, nor stood in for (their own copies)
+        self.journal = journal  # (undo, its arguments): how to put back what was written
+        self.own_loads: list[tuple[Any, bytes]] = []  # objects that load themselves, and what
+        self.array_writes: list[tuple[np.ndarray, np.ndarray]] = []  # (fresh, its new values)
+
+    def finish(self, last: bool) -> None:
+        """Once the whole tree fits: the objects that load themselves, then the fresh
+        arrays' new values. A load_state checks all before it writes, and an array write
+        cannot fail, so only what something may still fail after is saved first to be put
+        back (``last``: nothing runs after this restore - no hook, no outer restore)."""
+        for i, (obj, data) in enumerate(self.own_loads):
+            if not (last and i == len(self.own_loads) - 1):
+                self.note(obj.load_state, obj.save_state())
+            obj.load_state(data)
+        for fresh, a in self.array_writes:
+            if not last:
+                self.note(_put_array, fresh, fresh.copy())
+            fresh[...] = a  # in place: views of it the fresh build holds stay views
+
+    def note(self, undo: Callable[..., Any], *args: Any) -> None:
+        self.journal.append((undo, args))
+
+    def own(self, fresh: Any) -> Any:
+        """The fresh object, or None if it is one our modules share."""
+        return None if id(fresh) in self.shared else fresh
 
     def data(self, node: dict[str, Any], tag: str) -> bytes:
         if tag in node:
@@ -248,7 +381,7 @@ class _Restore:
         todo = [(node, fresh)]
         while todo:
             node, fresh = todo.pop()
-            if not isinstance(node, dict) or fresh is None:
+            if not isinstance(node, dict) or fresh is None or id(fresh) in self.shared:
                 continue
             ref = node.get("R", node.get("id"))
             if ref is not None:
@@ -269,7 +402,7 @@ class _Restore:
                 raise StateError(f"{where}: reference {node['R']!r} before its object")
             return self.memo[node["R"]]
         if "id" in node:
-            return self._mutable(node, self.counterpart.get(node["id"], fresh), where)
+            return self._mutable(node, self.own(self.counterpart.get(node["id"], fresh)), where)
         return self._immutable(node, fresh, where)
 
     def _immutable(self, node: dict[str, Any], fresh: Any, where: str) -> Any:
@@ -303,7 +436,10 @@ class _Restore:
         if "L" in node:
             out = fresh if type(fresh) is list else []
             self.memo[ref] = out
-            out[:] = self._items(node["L"], out, where)
+            items = self._items(node["L"], out, where)
+            if out is fresh:
+                self.note(_put_slice, out, out[:])
+            out[:] = items
             return out
         if "D" in node:
             return self._dict(node, fresh, where)
@@ -311,12 +447,17 @@ class _Restore:
             out = fresh if type(fresh) is set else set()
             self.memo[ref] = out
             items = {self.value(v, None, where) for v in node["S"]}
+            if out is fresh:
+                self.note(_put_set, out, set(out))
             out.clear()
             out.update(items)
             return out
         if "BA" in node or "BA#" in node:
             out = fresh if type(fresh) is bytearray else bytearray()
-            out[:] = self.data(node, "BA")
+            data = self.data(node, "BA")
+            if out is fresh:
+                self.note(_put_slice, out, bytes(out))
+            out[:] = data
             self.memo[ref] = out
             return out
         if "DQ" in node:
@@ -342,13 +483,16 @@ class _Restore:
         for k, v in node["D"]:
             key = self.value(k, None, f"{where} key")
             items.append((key, self.value(v, out.get(key), f"{where}[{key!r}]")))
-        out.clear()
-        dict.update(out, items)  # (Counter.update would count the pairs)
+        if out is fresh:
+            self.note(_put_items, out, list(out.items()))
+        _put_items(out, items)  # (Counter.update would count the pairs)
         return out
 
     def _array(self, node: dict[str, Any], fresh: Any, where: str) -> np.ndarray:
         shape = tuple(int(n) for n in node["sh"])
         if "AO" in node:
+            if len(node["AO"]) != math.prod(shape) or min(shape, default=0) < 0:
+                raise StateError(f"{where}: {len(node['AO'])} objects for shape {shape}")
             a = np.empty(shape, dtype=object)
             a.ravel()[:] = [self.value(v, None, where) for v in node["AO"]] or a.ravel()
             return a
@@ -361,7 +505,7 @@ class _Restore:
             raise StateError(f"{where}: array does not fit: {exc}") from None
         if (isinstance(fresh, np.ndarray) and fresh.shape == shape and fresh.dtype == dtype
                 and fresh.flags.writeable):
-            fresh[...] = a  # in place: views of it the fresh build holds stay views
+            self.array_writes.append((fresh, a))  # written once the whole tree fits
             return fresh
         return a.copy()
 
@@ -370,7 +514,10 @@ class _Restore:
         if "PR" in node:
             out = fresh if type(fresh) is random.Random else random.Random()
             self.memo[ref] = out
-            out.setstate(_tuples(self.value(node["PR"], None, where)))
+            state = _tuples(self.value(node["PR"], None, where))
+            if out is fresh:
+                self.note(out.setstate, out.getstate())
+            out.setstate(state)
             return out
         if "NR" in node:
             return self._numpy_random(node, fresh, where)
@@ -380,14 +527,16 @@ class _Restore:
             if not isinstance(fresh, types.MethodType):
                 raise StateError(f"{where}: a bound method the fresh program lacks")
             self.memo[ref] = fresh
-            self.value(node["M"], fresh.__self__, f"{where}.__self__")
-            return fresh
+            owner = self.value(node["M"], fresh.__self__, f"{where}.__self__")
+            if owner is not fresh.__self__:  # it stood in a shared object: bound to the copy
+                self.memo[ref] = types.MethodType(fresh.__func__, owner)
+            return self.memo[ref]
         if "OS" in node:
             cls = _class(node["OS"], where)
             if cls not in _OWN_STATE or type(fresh) is not cls:
                 raise StateError(f"{where}: a {node['OS']} the fresh program lacks")
             self.memo[ref] = fresh
-            fresh.load_state(self.data(node, "SB"))
+            self.own_loads.append((fresh, self.data(node, "SB")))  # once the tree fits
             return fresh
         if "NT" in node:
             cls = _class(node["NT"], where)
@@ -405,6 +554,8 @@ class _Restore:
         out = fresh if type(fresh) is np.random.Generator and \
             type(fresh.bit_generator) is bits else np.random.Generator(bits())
         self.memo[node["id"]] = out
+        if out is fresh:
+            self.note(_put_numpy_state, out, out.bit_generator.state)
         try:
             out.bit_generator.state = self.value(node["s"], None, where)
         except (TypeError, ValueError, KeyError) as exc:
@@ -413,17 +564,28 @@ class _Restore:
 
     def _function(self, node: dict[str, Any], fresh: Any, where: str) -> Any:
         code = _code(node.get("code"), where)
-        if not (isinstance(fresh, types.FunctionType) and fresh.__code__ is code):
+        made = not (isinstance(fresh, types.FunctionType) and fresh.__code__ is code)
+        if made:
             fresh = _function(code, node["code"][0], len(node["Fn"]), where)
+        if id(fresh) in self.shared and fresh.__closure__:
+            fresh, made = _copy_function(fresh), True  # never written: shared by all programs
         cells = fresh.__closure__ or ()
         if len(cells) != len(node["Fn"]):
             raise StateError(f"{where}: a closure the fresh program lacks")
         self.memo[node["id"]] = fresh
         defaults = self.value(node.get("defaults"), fresh.__defaults__, where)
         if defaults != fresh.__defaults__:
+            if id(fresh) in self.shared:
+                fresh, made = _copy_function(fresh), True
+                self.memo[node["id"]] = fresh
+            elif not made:
+                self.note(setattr, fresh, "__defaults__", fresh.__defaults__)
             fresh.__defaults__ = defaults
         for i, (cell, sub) in enumerate(zip(cells, node["Fn"], strict=True)):
-            cell.cell_contents = self.value(sub, _contents(cell), f"{where}.<cell {i}>")
+            value = self.value(sub, _contents(cell), f"{where}.<cell {i}>")
+            if not made:
+                self.note(_put_cell, cell, _contents(cell, _MISSING))
+            cell.cell_contents = value
         return fresh
 
     def _object(self, node: dict[str, Any], fresh: Any, where: str) -> Any:
@@ -435,15 +597,20 @@ class _Restore:
         else:
             raise StateError(f"{where}: {node['O']} is not built from a state")
         self.memo[node["id"]] = out
-        if hasattr(out, "_state_restored"):
+        if hasattr(type(out), "_state_restored"):
             self.restored.append(out)
         before = _attrs(out)
         attrs = node["a"]
         if not isinstance(attrs, list) or not all(
                 isinstance(a, list) and len(a) == 2 and isinstance(a[0], str) for a in attrs):
             raise StateError(f"{where}: attributes are not a list of [name, value]")
+        plain = out is fresh and _plain(type(out))
+        if plain:  # its attributes are its __dict__: one copy puts them all back
+            self.note(_put_dict, out.__dict__, dict(out.__dict__))
         for name, sub in attrs:
             value = self.value(sub, before.get(name), f"{where}.{name}")
+            if out is fresh and not plain:
+                self.note(_put_attr, out, name, _own(out, name))
             try:
                 object.__setattr__(out, name, value)
             except (AttributeError, TypeError) as exc:
@@ -454,11 +621,22 @@ class _Restore:
 _CODES: dict[str, dict[tuple[str, int], types.CodeType]] = {}
 
 
-def _contents(cell: types.CellType) -> Any:
+def _contents(cell: types.CellType, empty: Any = None) -> Any:
     try:
         return cell.cell_contents
     except ValueError:  # an empty cell (a closure just made again)
-        return None
+        return empty
+
+
+def _copy_function(fn: types.FunctionType) -> types.FunctionType:
+    """A function of its own for one program, in place of one our modules share."""
+    cells = tuple(types.CellType(c.cell_contents) if _contents(c, _MISSING) is not _MISSING
+                  else types.CellType() for c in fn.__closure__ or ())
+    out = types.FunctionType(fn.__code__, fn.__globals__, fn.__name__, fn.__defaults__,
+                             cells or None)
+    out.__kwdefaults__ = fn.__kwdefaults__
+    out.__qualname__, out.__module__ = fn.__qualname__, fn.__module__
+    return out
 
 
 def _code(ref: Any, where: str) -> types.CodeType:
@@ -536,8 +714,9 @@ def _children(node: dict[str, Any], fresh: Any) -> list[tuple[Any, Any]]:
             out.append((v, fresh.get(key) if key is not None else None))
         return out
     if "O" in node and isinstance(node.get("a"), list):
-        return [(sub, getattr(fresh, name, None)) for name, sub in node["a"]
-                if isinstance(name, str)]
+        d = _instance_dict(fresh) if _plain(type(fresh)) else None
+        return [(sub, d.get(name) if d is not None else _own(fresh, name, None))
+                for name, sub in node["a"] if isinstance(name, str)]
     if "M" in node and isinstance(fresh, types.MethodType):
         return [(node["M"], fresh.__self__)]
     if "Fn" in node and isinstance(fresh, types.FunctionType) and fresh.__closure__:
@@ -572,22 +751,32 @@ def restore(root: Any, tree: Any, blobs: list[bytes], _hooks: bool = True,
     restored root (``root`` itself when it is one of our objects). A string of the fresh
     graph that is in ``pinned`` (the command line's words: file names the program was given)
     stays as it is, whatever the state says, so a state never chooses where a program reads
-    or writes. StateError when the tree does not fit."""
+    or writes. StateError when the tree does not fit, and then nothing has changed: every
+    object written into has been put back as it was."""
+    outer = _JOURNAL.get()
+    journal = outer if outer is not None else []  # a hook's restore: the outer one undoes
+    token = _JOURNAL.set(journal)
     limit = sys.getrecursionlimit()
     sys.setrecursionlimit(max(limit, 20000))
     try:
-        done = _Restore(blobs, pinned)
+        done = _Restore(blobs, pinned, journal)
         done.pair(tree, root)
         out = done.value(tree, root, "state")
+        done.finish(last=outer is None and not (_hooks and done.restored))
         for obj in done.restored if _hooks else ():  # (a hook's own restores run none)
             obj._state_restored()
         return out
-    except (KeyError, IndexError, TypeError, ValueError) as exc:
-        if isinstance(exc, StateError):
+    except BaseException as exc:
+        if outer is None:
+            for undo, args in reversed(journal):
+                undo(*args)
+        if isinstance(exc, StateError) or not isinstance(
+                exc, KeyError | IndexError | TypeError | ValueError):
             raise
         raise StateError(f"state does not fit this program: {exc!r}") from None
     finally:
         sys.setrecursionlimit(limit)
+        _JOURNAL.reset(token)
 
 
 # ---------------------------------------------------------------------------- dialogues
@@ -649,4 +838,5 @@ class Resumable:
                 gen.send(value)
         restore(owner, *now, _hooks=False)
         again = getattr(owner, self.attr)
-        again.gen, again.makers = gen, makers
+        set_attribute(again, "gen", gen)
+        set_attribute(again, "makers", makers)

@@ -100,10 +100,13 @@ def verdict(path: Path, code: int, err: str) -> str | None:
 def check_isolated(program: str, data: bytes, path: Path, limit: float,
                    memory_mb: float) -> str | None:
     """Load ``data`` (a state file's bytes) into ``program`` in a forked copy of this
-    process, so that what a damaged state writes into the program's objects (objstate
-    restores in place, module constants included) dies with it; None if the outcome keeps
-    the rule, else the finding (a traceback, a bad status, a refusal not naming the file,
-    no answer within ``limit`` s, or more than ``memory_mb`` MB above this process)."""
+    process; None if the outcome keeps the rule, else the finding (a traceback, a bad
+    status, a refusal not naming the file, no answer within ``limit`` s, or more than
+    ``memory_mb`` MB above this process). A load no longer leaks into the next one (a
+    refused state changes nothing, and none is written into module-level objects:
+    tests/states/test_refused_loads.py); the fork stays for what one process cannot do:
+    kill a run stuck in compiled code (the alarm cannot reach it) and bound one load's
+    memory without ending the fuzzing process."""
     from fuzz.engine import rss_now_mb
 
     base = rss_now_mb()

@@ -156,7 +156,9 @@ class PeriodTarget:
     Its state: the period reached and the machine. A generator cannot be saved, so loading
     one builds the machine and the program's generator again (``restart() -> (machine,
     periods)``) and runs them to the saved period (deterministic, on virtual time); the
-    machine then takes the saved state."""
+    machine then takes the saved state. A load is all or nothing: the machine's state is
+    checked first and the new build replaces the running one only once it is in place (a
+    target still at its start, or one that cannot restart, runs its own build on)."""
 
     keys = "Esc or close the window to stop"
 
@@ -201,11 +203,18 @@ class PeriodTarget:
         k = head.get("k")
         if type(k) is not int or k < 0 or "machine" not in blobs:
             raise MachineStateError("line test state: the period or the machine is missing")
-        if k < self.k or self.result is not None:
-            if self.restart is None:
-                raise MachineStateError("this line test cannot go back")
-            (self.machine, self.periods), self.k, self.result = self.restart(), 0, None
-        while self.k < k:  # the program's generator run to the saved period
-            if not self.tick():
-                raise MachineStateError(f"the line test ends before period {k}")
-        self.machine.load_state(blobs["machine"])
+        self.machine.check_state(blobs["machine"])  # refused here: nothing has run
+        at_start = self.k == 0 and self.result is None
+        if at_start or (self.restart is None and k >= self.k and self.result is None):
+            machine, periods, at = self.machine, self.periods, self.k
+        elif self.restart is None:
+            raise MachineStateError("this line test cannot go back")
+        else:  # a build of its own, in place of the running one once the state is in it
+            (machine, periods), at = self.restart(), 0
+        while at < k:  # the program's generator run to the saved period
+            try:
+                at = next(periods) + 1
+            except StopIteration:
+                raise MachineStateError(f"the line test ends before period {k}") from None
+        machine.load_state(blobs["machine"])
+        self.machine, self.periods, self.k, self.result = machine, periods, at, None

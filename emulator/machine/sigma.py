@@ -123,7 +123,18 @@ class SigmaMachine:
         return pack("sigma", header, {"terminal": self.terminal.save_state()})
 
     def load_state(self, data: bytes) -> None:
-        """Continue from save_state()'s bytes; MachineStateError if they do not fit."""
+        """Continue from save_state()'s bytes; MachineStateError if they do not fit (and
+        then nothing has changed)."""
+        head, blobs = self.check_state(data)
+        self.line.load_state(head["line"])
+        self.terminal.load_state(blobs["terminal"])
+        self.clock.load_state(head["clock"])
+        if self.tracer is not None:
+            self.trace(self.tracer.sink, self.tracer.strict)
+
+    def check_state(self, data: bytes) -> tuple[dict, dict[str, bytes]]:
+        """MachineStateError unless ``data`` loads into this machine (every part is tried
+        on a scratch copy; this machine is not touched); its header and parts."""
         head, blobs = unpack(data, "sigma")
         for key, mine in (("model", self.terminal.model.name),
                           ("settings", str(self.settings)), ("xonxoff", self.line.xonxoff)):
@@ -137,8 +148,4 @@ class SigmaMachine:
             SerialLine(self.settings, VirtualClock(), self.line.xonxoff).load_state(head["line"])
         except (ValueError, KeyError) as exc:
             raise MachineStateError(f"machine state: {exc}") from None
-        self.line.load_state(head["line"])
-        self.terminal.load_state(blobs["terminal"])
-        self.clock.load_state(head["clock"])
-        if self.tracer is not None:
-            self.trace(self.tracer.sink, self.tracer.strict)
+        return head, blobs

@@ -4,9 +4,12 @@ the commands themselves, then loaded back by the same commands in process after 
 damage — to the file's bytes, to its headers' and object tree's values (fuzz.states edits
 them with the parts opened, so the damage gets past zlib's checksums) and to its arrays.
 Every outcome is a clean run or one line naming the file with status 1 or 2: never a
-traceback, a hang or runaway memory. Each load runs in a forked copy of this process (a state
-restores in place, module constants included, so a damaged one must not leak into the next
-example). The long coverage-guided run is fuzz/run.py's ``cli-load-state`` target."""
+traceback, a hang or runaway memory. Each load runs in a forked copy of this process: not to
+keep a damaged state from leaking into the next example (a refused load changes nothing and
+none writes into module-level objects: tests/states/test_refused_loads.py loads them in
+process), but to kill a hang in compiled code and to bound each load's memory
+(fuzz.states.check_isolated). The long coverage-guided run is fuzz/run.py's
+``cli-load-state`` target."""
 
 from __future__ import annotations
 

@@ -136,3 +136,72 @@ def test_a_state_never_chooses_a_file_name_the_command_line_gave() -> None:
     fresh.out, fresh.message = "walk.ops", ""
     restore(fresh, _through_json(tree), blobs, pinned=frozenset({"walk.ops"}))
     assert (fresh.out, fresh.message) == ("walk.ops", "typed text")
+
+
+def test_a_delegating_wrapper_made_without_its_delegate_is_no_endless_recursion() -> None:
+    """A damaged state can make the line's tap (``__getattr__`` asks its endpoint) without
+    the endpoint: reading its attributes must not call that ``__getattr__`` (it called
+    itself until the C stack overflowed: a segfault, found by the cli-load-state test)."""
+    from emulator.harness.sigma_line import OutsideTap
+
+    assert "__getattr__" in vars(OutsideTap)
+    tree = {"O": "emulator.harness.sigma_line:OutsideTap", "id": 0,
+            "a": [["taken", {"L": [], "id": 1}], ["zz", {"R": 99}]]}
+    with pytest.raises(StateError, match=r"state.zz: reference 99 before its object"):
+        restore(None, tree, [])
+
+
+def test_a_refused_tree_leaves_every_object_it_had_written_as_it_was() -> None:
+    from emulator.harness.program_state import StateOptions as Box  # a plain class of ours
+
+    saved, fresh = Box(), Box()
+    saved.items, saved.table, saved.seen = [1, 2], {"a": 1}, {3}
+    saved.plane, saved.rng = np.ones((2, 2), np.uint8), random.Random(1)
+    fresh.items, fresh.table, fresh.seen = [9], {"b": 2}, {4}
+    fresh.plane, fresh.rng = np.zeros((2, 2), np.uint8), random.Random(2)
+    tree, blobs = capture(saved)
+    tree = _through_json(tree)
+    tree["a"].append(["broken", {"R": 10**9}])  # the last thing read: all else written
+    before = (fresh.items, fresh.table, fresh.seen, fresh.plane, fresh.rng)
+    contents = capture(fresh)
+    with pytest.raises(StateError, match="state.broken: reference"):
+        restore(fresh, tree, blobs)
+    assert (fresh.items, fresh.table, fresh.seen, fresh.plane, fresh.rng) == before  # same
+    assert capture(fresh) == contents  # and as they were
+    assert not hasattr(fresh, "broken")
+
+
+def test_a_state_is_never_written_into_what_a_module_shares() -> None:
+    from apps.ca.program.menus import EDIT_ITEMS
+    from emulator.harness.program_state import StateOptions as Box
+
+    kept = dict(EDIT_ITEMS)
+    saved, fresh = Box(), Box()
+    saved.items = {"centre": "changed by a state"}
+    fresh.items = EDIT_ITEMS  # as a menu holds its module's item list
+    restore(fresh, *capture(saved))
+    assert EDIT_ITEMS == kept and fresh.items is not EDIT_ITEMS
+    assert fresh.items == {"centre": "changed by a state"}
+
+
+def test_a_dialogue_that_cannot_be_made_again_leaves_the_program_as_it_was() -> None:
+    """The last step of a load (a dialogue made again, after the whole tree is in place)
+    fails: everything the load wrote, the dialogue's own restores included, is put back."""
+    from apps.ca.program import commands
+    from apps.ca.program.program import CAProgram, Options
+    from emulator.rainbow.session import in_process
+
+    prog = CAProgram(in_process().client, Options(pattern="glider"))
+    prog.frame()
+    prog._start(commands.alter_display(prog))
+    tree, blobs = capture(prog)
+    text = json.dumps(tree)
+    maker = '"maker", "apps.ca.program.commands:alter_display"'
+    assert maker in text
+    tree = json.loads(text.replace(maker, '"maker", "apps.ca.program.commands:nothing"'))
+    fresh = CAProgram(in_process().client, Options(pattern="gosper_gun"))
+    fresh.frame()
+    contents = capture(fresh)
+    with pytest.raises(StateError, match="dialogue 'apps.ca.program.commands:nothing'"):
+        restore(fresh, tree, blobs)
+    assert capture(fresh) == contents
