@@ -25,12 +25,13 @@ from base.kernel_notice import announce_compiles
 _WARM = "apps.ca.hashlife.kernel_warmup:compile_"  # + the group's part
 # Cold compile times (CPU) measured on the project's 2-core machine (docs/perf/startup.md).
 # Each group completes alone, so a run compiles only the groups it touches: what every jump
-# needs (the store, the census, the levels of a tree), each kind of leaf with the recursion
-# compiled for it (``evolve`` is in no group: its kernels compile only inside a kind's entry,
-# announced by that kind's leaf kernel), the cell lists in, the cells listed out, the
-# tables' growth and collection.  The rule interpreter is its own group (every run runs it:
-# the binary one to build its table).  So Life's first run compiles neither the value leaves
-# nor the cell lists, and a multi-state run's first compile not the bit leaves.
+# needs (the store, the census, the levels of a tree, compiled into the conversions), each
+# kind of leaf with the recursion compiled for it (``evolve`` is in no group: its kernels
+# compile only inside a kind's entry, announced by that kind's leaf kernel), the cell lists
+# in, the cells listed out, the tables' growth and collection.  The rule interpreter is its
+# own group (every run runs it: the binary one to build its table).  So Life's first run
+# compiles neither the value leaves nor the cell lists, and a multi-state run's first
+# compile not the bit leaves.
 announce_compiles("HashLife rule", 1.0, f"{__name__}.leaf")
 announce_compiles("HashLife", 3.0, *(f"{__name__}.{m}" for m in ("store", "census", "grid")),
                   completion=_WARM + "common")

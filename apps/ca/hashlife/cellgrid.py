@@ -23,7 +23,7 @@ kernels = KernelSet(__name__, _nrt=False, sources=(
 ))
 
 
-@kernels.kernel
+@kernels.kernel(inline="always")
 def to_grid(node, level, G, p, nodes):
     """Write the cells of ``node`` into plane ``p`` of G, splitting in place."""
     side = np.int64(1) << level
@@ -42,7 +42,7 @@ def to_grid(node, level, G, p, nodes):
         half = quarter
 
 
-@kernels.kernel
+@kernels.kernel(inline="always")
 def from_grid(G, p, y0, x0, level, nodes, slots, meta):
     """The node of the 2**level square at (y0, x0) of plane ``p``, built bottom-up in
     plane 2; -1 if the table is full."""

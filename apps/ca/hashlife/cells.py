@@ -29,36 +29,31 @@ kernels = KernelSet(__name__, sources=(
 INTS = "int64[::1]"
 
 
-@kernels.export(f"{INTS}({INTS}, {INTS}, int64)")
-def morton(xs, ys, shift):
-    """Morton keys of the leaves (of 2**shift cells square) holding the cells."""
-    keys = np.empty(xs.shape[0], np.int64)
+@kernels.export(f"void({INTS}, {INTS}, int64, {INTS})")
+def morton(xs, ys, shift, keys):
+    """Morton keys of the leaves (of 2**shift cells square) holding the cells, into keys."""
     for i in range(xs.shape[0]):
         keys[i] = tile_key(xs[i] >> shift, ys[i] >> shift, PLANE_LEVEL - shift)
-    return keys
 
 
-@kernels.export(f"int64({INTS}, {INTS}, {INTS}, {TABLES})")
-def from_cells(keys, xs, ys_or_values, nodes, slots, leaves, lslots, meta):
+# The arrays come from Python and are written over: no allocation here (numba's compiled
+# numpy allocations and slice assignments were a fifth of this kernel's first compile).
+@kernels.export(f"int64({INTS}, {INTS}, {INTS}, uint64[:, ::1], {TABLES})")
+def from_cells(keys, xs, ys_or_values, words, nodes, slots, leaves, lslots, meta):
     """The plane's node from cells sorted by leaf key (``morton``): value leaves are the
     cells' values (``ys_or_values``; keys distinct), bit leaves are made from the cells'
-    low bits (``xs``, ``ys_or_values``: columns and rows); then the levels above; -1 if a
-    table is full."""
+    low bits (``xs``, ``ys_or_values``: columns and rows; ``words``: one leaf's rows); then
+    the levels above; -1 if a table is full.  Overwrites keys and ys_or_values."""
     n = keys.shape[0]
-    lkeys = np.empty(n, np.int64)
-    ids = np.empty(n, np.int64)
     low = meta[LEAF]
     if low == 0:
-        for i in range(n):  # a loop: an array-to-array slice assignment compiles numba's
-            lkeys[i] = keys[i]  # broadcast checks, ~2 s of the first compile
-            ids[i] = ys_or_values[i]
-        return levels(lkeys, ids, n, low, nodes, slots, meta)
-    words = np.zeros((1, 8), np.uint64)
+        return levels(keys, ys_or_values, n, low, nodes, slots, meta)
     m = 0
     i = 0
-    while i < n:
+    while i < n:  # leaf m's key and id go where the cells read already were (m <= i)
         key = keys[i]
-        words[:] = 0
+        for w in range(8):
+            words[0, w] = 0
         while i < n and keys[i] == key:
             y, x = ys_or_values[i] & 15, xs[i] & 15
             words[0, y >> 2] |= np.uint64(1) << np.uint64(16 * (y & 3) + x)
@@ -66,10 +61,10 @@ def from_cells(keys, xs, ys_or_values, nodes, slots, leaves, lslots, meta):
         t = leaf(words, 0, 0, leaves, lslots, meta)
         if t < 0:
             return np.int64(-1)
-        lkeys[m] = key
-        ids[m] = t
+        keys[m] = key
+        ys_or_values[m] = t
         m += 1
-    return levels(lkeys, ids, np.int64(m), low, nodes, slots, meta)
+    return levels(keys, ys_or_values, np.int64(m), low, nodes, slots, meta)
 
 
 @kernels.kernel
@@ -112,10 +107,13 @@ def to_tree(xs: np.ndarray, ys: np.ndarray, ts: np.ndarray, store) -> int:  # a 
     xs = np.ascontiguousarray(xs, np.int64)
     ys = np.ascontiguousarray(ys, np.int64)
     low = store.leaf_level
-    keys = morton(xs, ys, np.int64(low))
+    keys = np.empty(xs.shape[0], np.int64)
+    morton(xs, ys, np.int64(low), keys)
     order = np.argsort(keys, kind="stable")
     second = ys if low else np.ascontiguousarray(ts, np.int64)
-    return int(from_cells(keys[order], xs[order], second[order], *store.tables))
+    # (fancy indexing copies: the kernel may write over keys and the second array)
+    return int(from_cells(keys[order], xs[order], second[order], np.zeros((1, 8), np.uint64),
+                          *store.tables))
 
 
 def near_seam(node: int, distance: int, store) -> bool:  # a Store

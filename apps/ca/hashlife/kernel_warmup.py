@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from apps.ca.engine import CENTRE, Engine
-from apps.ca.hashlife import cells, census, evolve, grid, listing
+from apps.ca.hashlife import cells, census, evolve, listing
 from apps.ca.hashlife.grid import PLANE_LEVEL
 from apps.ca.hashlife.store import BIT_LEAF_LEVEL, Store
 from apps.ca.library import pattern_path, rules_path
@@ -38,7 +38,8 @@ def compile_kernels() -> None:
 
 def compile_common() -> None:
     """What every jump needs, on an empty plane of each kind of store: the census, the
-    levels of a tree, the tables' towers (made with the store)."""
+    first look for a known result, the tables' towers (made with the store); a tree's
+    levels are compiled inside the conversions that build trees."""
     for leaf, base in _STORES:
         store = Store(leaf, base, 0, 1)
         plane = int(store.empty[PLANE_LEVEL])
@@ -46,9 +47,6 @@ def compile_common() -> None:
         census.occupied(plane, 0, store)
         evolve.known(np.int64(plane), np.int64(1), np.int64(PLANE_LEVEL), store.nodes,
                      store.meta)
-        keys = ids = np.zeros(0, np.int64)
-        grid.build(keys, ids, np.int64(0), np.int64(leaf), store.nodes, store.slots,
-                   store.meta)
 
 
 def compile_bits() -> None:

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from apps.ca.hashlife.grid import INTS, PLANE_LEVEL, build, tile_key
-from apps.ca.hashlife.store import BIT_LEAF_LEVEL, TABLES, leaf
+from apps.ca.hashlife.grid import INTS, PLANE_LEVEL, levels, tile_key
+from apps.ca.hashlife.store import BIT_LEAF_LEVEL, META_T, TABLES, leaf
 from base.kernel_set import KernelSet
 
 kernels = KernelSet(__name__, sources=("apps.ca.hashlife.grid", "apps.ca.hashlife.store"))
@@ -24,7 +24,8 @@ def grid_leaves(top, left, grid, nodes, slots, leaves, lslots, meta, keys, ids):
     m = 0
     for ty in range(ty0, ty1 + 1):
         for tx in range(tx0, tx1 + 1):
-            words[:] = 0
+            for i in range(8):  # (a slice assignment compiles numpy's broadcasting)
+                words[0, i] = 0
             live = False
             for y in range(16):
                 gy = (ty << BIT_LEAF_LEVEL) + y - top
@@ -47,6 +48,12 @@ def grid_leaves(top, left, grid, nodes, slots, leaves, lslots, meta, keys, ids):
             ids[m] = t
             m += 1
     return np.int64(m)
+
+
+@kernels.export(f"int64({INTS}, {INTS}, int64, int64, int32[:, ::1], int32[::1], {META_T})")
+def build(keys, ids, n, level, nodes, slots, meta):
+    """``levels`` for Python."""
+    return levels(keys, ids, n, level, nodes, slots, meta)
 
 
 def grid_to_tree(top: int, left: int, grid: np.ndarray, store) -> int:  # a Store
