@@ -13,16 +13,18 @@ One frame for both kinds of leaf: the level is part of a node's key.
 
 from __future__ import annotations
 
-import numpy as np
-
-from apps.ca.hashlife.store import frame_plane
+PLANE_LEVEL = 16
 
 
 def frame(store, plane: int, edges: str) -> int:
     """The level-17 node whose centre is the level-16 ``plane`` on a plane with ``edges``
     (``store``: the rule set's ``Store``, either kind of leaf)."""
-    node = int(frame_plane(np.int64(plane), np.int64(edges == "wrap"), store.nodes,
-                           store.slots, store.meta))
-    if node < 0:
-        raise MemoryError("node table full")
-    return node
+    nw, ne, sw, se = store.quadrants(plane)
+    k = PLANE_LEVEL
+    if edges == "wrap":
+        rolled = store.join(se, sw, ne, nw, k)
+        return store.join(rolled, rolled, rolled, rolled, k + 1)
+    store.mark_wall()
+    w = int(store.wall[k - 1])
+    return store.join(store.join(w, w, w, nw, k), store.join(w, w, ne, w, k),
+                      store.join(w, sw, w, w, k), store.join(se, w, w, w, k), k + 1)

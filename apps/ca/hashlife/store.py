@@ -119,30 +119,6 @@ def join(a, b, c, d, level, nodes, slots, meta):
     return _join(a, b, c, d, level, nodes, slots, meta)
 
 
-@kernels.export(f"int64(int64, int64, {NODES}, {SLOTS}, {META_T})", _nrt=False)
-def frame_plane(plane, wrap, nodes, slots, meta):
-    """The level-17 node whose centre is the level-16 ``plane`` (plane.py: wrapping edges,
-    the torus tiled; else the plane in the wall, and the bit kernels told to look for
-    walls); -1 if the table is full.  One call: as joins from Python it was 7 us a jump."""
-    k = np.int64(TOP_LEVEL - 1)
-    nw, ne = np.int64(nodes[plane, 0]), np.int64(nodes[plane, 1])
-    sw, se = np.int64(nodes[plane, 2]), np.int64(nodes[plane, 3])
-    if wrap:
-        rolled = _join(se, sw, ne, nw, k, nodes, slots, meta)
-        if rolled < 0:
-            return np.int64(-1)
-        return _join(rolled, rolled, rolled, rolled, k + 1, nodes, slots, meta)
-    meta[HAS_WALL] = 1
-    w = meta[WALL_AT + k - 1]
-    a = _join(w, w, w, nw, k, nodes, slots, meta)
-    b = _join(w, w, ne, w, k, nodes, slots, meta)
-    c = _join(w, sw, w, w, k, nodes, slots, meta)
-    d = _join(se, w, w, w, k, nodes, slots, meta)
-    if a < 0 or b < 0 or c < 0 or d < 0:
-        return np.int64(-1)
-    return _join(a, b, c, d, k + 1, nodes, slots, meta)
-
-
 @kernels.kernel(inline="always")
 def leaf(W, r, at, leaves, lslots, meta):
     """The id of the bit leaf with words W[r, at:at+8], made at most once; -1 if full.
@@ -282,6 +258,10 @@ class Store:
         if n < 0:
             raise MemoryError("node table full")
         return n
+
+    def mark_wall(self) -> None:
+        """A bounded plane is framed: from now on the bit kernels look for walls in leaves."""
+        self.meta[HAS_WALL] = 1
 
     def make_room(self, roots: list[int]) -> list[int]:
         """Collect garbage keeping ``roots`` (returned renumbered) and every live tree
