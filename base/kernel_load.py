@@ -61,3 +61,84 @@ def lean_cache_loads() -> bool:
 def active() -> bool:
     """True while cache hits load without the refresh."""
     return bool(_installed)
+
+
+_stamped: list[Any] = []  # the locator class once installed
+
+
+def stamps_cover_sources() -> bool:
+    """Make the on-disk cache of a KernelSet kernel stale when any module its set names in
+    ``sources`` changes, not only its own file; True if active. Idempotent. Imports numba.
+
+    numba keys a cached kernel to its own source file's content, but a kernel's machine code
+    includes the kernels it calls from other modules: after an edit or upgrade of only a
+    callee's module, a warm cache ran the old callee's code (here: an old recursion writing
+    past a scratch array that had shrunk, "double free or corruption"). The locator numba
+    would have chosen is kept (same directory, same file names); only the stamp it checks
+    also covers the set's ``sources`` (base/kernel_set.py, which the ahead-of-time build
+    checks are complete)."""
+    if _stamped:
+        return True
+    from numba.core import caching
+
+    impl = getattr(caching, "CacheImpl", None)
+    original = list(getattr(impl, "_locator_classes", ()))
+    locator_base = getattr(caching, "_CacheLocator", None)
+    hash_file = getattr(caching, "_hash_source_file", None)
+    if not original or locator_base is None or hash_file is None:
+        return False
+
+    class WithSources(locator_base):
+        def __init__(self, inner: Any, files: tuple[str, ...]) -> None:
+            self._inner, self._files = inner, files
+
+        def ensure_cache_path(self) -> None:
+            self._inner.ensure_cache_path()
+
+        def get_cache_path(self) -> str:
+            return self._inner.get_cache_path()
+
+        def get_disambiguator(self) -> str:
+            return self._inner.get_disambiguator()
+
+        def get_source_stamp(self) -> Any:
+            stamps = []
+            for path in self._files:
+                st = os.stat(path)
+                stamps.append(hash_file(path, st.st_mtime, st.st_size))
+            return self._inner.get_source_stamp(), tuple(stamps)
+
+        @classmethod
+        def from_function(cls, py_func: Any, py_file: str) -> Any:
+            files = _source_files(getattr(py_func, "__module__", ""))
+            if not files:
+                return None
+            for locator in original:
+                inner = locator.from_function(py_func, py_file)
+                if inner is not None:
+                    return cls(inner, files)
+            return None
+
+    impl._locator_classes = [WithSources, *original]
+    _stamped.append(WithSources)
+    return True
+
+
+def _source_files(module: str) -> tuple[str, ...]:
+    """The files of the modules ``module``'s KernelSet names as sources (none: not a set's)."""
+    import importlib.util
+    import sys
+
+    from base.kernel_set import SETS
+
+    kernels = SETS.get(module)
+    files = []
+    for name in kernels.sources if kernels is not None else ():
+        loaded = sys.modules.get(name)
+        path = getattr(loaded, "__file__", None)
+        if path is None:
+            spec = importlib.util.find_spec(name)
+            path = spec.origin if spec is not None else None
+        if path and os.path.exists(path):
+            files.append(path)
+    return tuple(files)

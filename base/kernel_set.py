@@ -56,8 +56,7 @@ class KernelSet:
     def _to_jit(self) -> dict[int, tuple[Any, Any]]:
         """Give up the extension: every kernel njit-compiled; {id(old): (old, new)} for the
         plain functions and checked exports replaced."""
-        from numba import njit
-
+        njit = _njit()
         swaps: dict[int, tuple[Any, Any]] = {}
         for name, (fn, options) in self.python.items():
             compiled = njit(cache=True, **options)(fn)
@@ -81,9 +80,7 @@ class KernelSet:
         if self.aot is not None:
             self.kernels[fn.__name__] = fn  # compiled into the extension's exports
             return fn
-        from numba import njit
-
-        compiled = njit(cache=True, **merged)(fn)
+        compiled = _njit()(cache=True, **merged)(fn)
         self.kernels[fn.__name__] = compiled
         return compiled
 
@@ -123,6 +120,16 @@ class KernelSet:
         if self.aot is None:
             namespace[template.__name__] = exported
         return exported
+
+
+def _njit() -> Any:
+    """numba's njit, with its cache made to notice edits of a kernel's ``sources`` too."""
+    from numba import njit
+
+    from base.kernel_load import stamps_cover_sources
+
+    stamps_cover_sources()
+    return njit
 
 
 # Compiled code can only call a kernel of another module that is a numba dispatcher, so the
