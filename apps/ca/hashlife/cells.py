@@ -67,8 +67,9 @@ def from_cells(keys, xs, ys_or_values, words, nodes, slots, leaves, lslots, meta
     return levels(keys, ys_or_values, np.int64(m), low, nodes, slots, meta)
 
 
-@kernels.kernel
-def _any_live(node, level, y0, x0, top, bottom, left, right, nodes, leaves, meta):
+@kernels.export("boolean(int64, int64, int64, int64, int64, int64, int64, int64, "
+                f"{NODES}, {LEAVES}, {META_T})")
+def any_live(node, level, y0, x0, top, bottom, left, right, nodes, leaves, meta):
     """Whether ``node`` (its corner at y0, x0) has a live cell in rows top..bottom-1,
     columns left..right-1."""
     side = np.int64(1) << level
@@ -87,18 +88,10 @@ def _any_live(node, level, y0, x0, top, bottom, left, right, nodes, leaves, meta
     h = side >> 1
     k = level - 1
     for q in range(4):
-        if _any_live(np.int64(nodes[node, q]), k, y0 + h * (q >> 1), x0 + h * (q & 1), top,
+        if any_live(np.int64(nodes[node, q]), k, y0 + h * (q >> 1), x0 + h * (q & 1), top,
                      bottom, left, right, nodes, leaves, meta):
             return True
     return False
-
-
-@kernels.export(f"boolean(int64, int64, int64, int64, int64, {NODES}, {LEAVES}, {META_T})")
-def any_live(node, top, bottom, left, right, nodes, leaves, meta):
-    """Whether the plane ``node`` has a live cell in rows top..bottom-1, columns
-    left..right-1."""
-    return _any_live(node, np.int64(PLANE_LEVEL), np.int64(0), np.int64(0), top, bottom,
-                     left, right, nodes, leaves, meta)
 
 
 def to_tree(xs: np.ndarray, ys: np.ndarray, ts: np.ndarray, store) -> int:  # a Store
@@ -123,5 +116,6 @@ def near_seam(node: int, distance: int, store) -> bool:  # a Store
     d = min(int(distance), side)
     strips = ((0, d, 0, side), (side - d, side, 0, side), (0, side, 0, d),
               (0, side, side - d, side))
-    return any(any_live(np.int64(node), *(np.int64(v) for v in strip), store.nodes,
-                        store.leaves, store.meta) for strip in strips)
+    plane, zero = np.int64(PLANE_LEVEL), np.int64(0)
+    return any(any_live(np.int64(node), plane, zero, zero, *(np.int64(v) for v in strip),
+                        store.nodes, store.leaves, store.meta) for strip in strips)

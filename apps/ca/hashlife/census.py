@@ -36,7 +36,7 @@ def _leaf_count(t, form, leaves, meta):
             + _popcount(leaves[t, 3]))
 
 
-@kernels.kernel
+@kernels.export(f"int64(int64, int64, int64, int64[::1], {NODES}, {LEAVES}, {META_T})")
 def count(node, level, form, memo, nodes, leaves, meta):
     """Cells of ``node`` holding life-form ``form`` (0: any live cell); each node counted
     once (memo -1 = not yet)."""
@@ -52,12 +52,6 @@ def count(node, level, form, memo, nodes, leaves, meta):
         total += count(np.int64(nodes[node, q]), level - 1, form, memo, nodes, leaves, meta)
     memo[node] = total
     return total
-
-
-@kernels.export(f"int64(int64, int64, int64[::1], {NODES}, {LEAVES}, {META_T})")
-def plane_count(node, form, memo, nodes, leaves, meta):
-    """``count`` of a plane node."""
-    return count(node, np.int64(PLANE_LEVEL), form, memo, nodes, leaves, meta)
 
 
 @kernels.kernel
@@ -99,8 +93,11 @@ def _mask(node, level, axis, memo, done, nodes, leaves, meta):
     return m
 
 
-@kernels.kernel
-def _occupy(node, level, y0, x0, axis, out, memo, done, nodes, leaves, meta):
+# Exported itself (no wrapper for the plane's level: each kernel Python calls is another
+# compile of everything it calls, ~0.2 s of a first run).
+@kernels.export(f"void(int64, int64, int64, int64, int64, uint64[::1], uint64[::1], uint8[::1], "
+                f"{NODES}, {LEAVES}, {META_T})")
+def occupy(node, level, y0, x0, axis, out, memo, done, nodes, leaves, meta):
     """OR the occupancy of ``node`` at (y0, x0) into ``out`` (64 rows / columns a word)."""
     if node == meta[EMPTY + level]:
         return
@@ -114,34 +111,26 @@ def _occupy(node, level, y0, x0, axis, out, memo, done, nodes, leaves, meta):
         np.int64(nodes[node, 2]), np.int64(nodes[node, 3])
     # Two equal quadrants side by side along the axis cover the same rows (columns): one
     # visit (a plane filled with a regular pattern is otherwise a million visits).
-    _occupy(nw, k, y0, x0, axis, out, memo, done, nodes, leaves, meta)
+    occupy(nw, k, y0, x0, axis, out, memo, done, nodes, leaves, meta)
     if axis == 0:
         if ne != nw:
-            _occupy(ne, k, y0, x0 + h, axis, out, memo, done, nodes, leaves, meta)
-        _occupy(sw, k, y0 + h, x0, axis, out, memo, done, nodes, leaves, meta)
+            occupy(ne, k, y0, x0 + h, axis, out, memo, done, nodes, leaves, meta)
+        occupy(sw, k, y0 + h, x0, axis, out, memo, done, nodes, leaves, meta)
         if se != sw:
-            _occupy(se, k, y0 + h, x0 + h, axis, out, memo, done, nodes, leaves, meta)
+            occupy(se, k, y0 + h, x0 + h, axis, out, memo, done, nodes, leaves, meta)
     else:
         if sw != nw:
-            _occupy(sw, k, y0 + h, x0, axis, out, memo, done, nodes, leaves, meta)
-        _occupy(ne, k, y0, x0 + h, axis, out, memo, done, nodes, leaves, meta)
+            occupy(sw, k, y0 + h, x0, axis, out, memo, done, nodes, leaves, meta)
+        occupy(ne, k, y0, x0 + h, axis, out, memo, done, nodes, leaves, meta)
         if se != ne:
-            _occupy(se, k, y0 + h, x0 + h, axis, out, memo, done, nodes, leaves, meta)
-
-
-@kernels.export(f"void(int64, int64, uint64[::1], uint64[::1], uint8[::1], {NODES}, {LEAVES}, "
-                f"{META_T})")
-def occupy(node, axis, out, memo, done, nodes, leaves, meta):
-    """``_occupy`` of a plane node."""
-    _occupy(node, np.int64(PLANE_LEVEL), np.int64(0), np.int64(0), axis, out, memo, done,
-            nodes, leaves, meta)
+            occupy(se, k, y0 + h, x0 + h, axis, out, memo, done, nodes, leaves, meta)
 
 
 def cells_of(node: int, form: int, store) -> int:  # a Store
     """Cells of the plane ``node`` holding life-form ``form`` (0: any live cell)."""
     memo = np.full(store.count, -1, np.int64)
-    return int(plane_count(np.int64(node), np.int64(form), memo, store.nodes, store.leaves,
-                           store.meta))
+    return int(count(np.int64(node), np.int64(PLANE_LEVEL), np.int64(form), memo, store.nodes,
+                     store.leaves, store.meta))
 
 
 def by_type(node: int, forms: int, store) -> dict[int, int]:
@@ -162,7 +151,7 @@ def occupied(node: int, axis: int, store) -> np.ndarray:  # a Store
     words = np.zeros(1 << (PLANE_LEVEL - MASK_LEVEL), np.uint64)
     memo = np.zeros(store.count, np.uint64)
     done = np.zeros(store.count, np.uint8)
-    occupy(np.int64(node), np.int64(axis), words, memo, done, store.nodes, store.leaves,
-           store.meta)
+    occupy(np.int64(node), np.int64(PLANE_LEVEL), np.int64(0), np.int64(0), np.int64(axis), words,
+           memo, done, store.nodes, store.leaves, store.meta)
     bits = np.unpackbits(words.view(np.uint8), bitorder="little")
     return np.flatnonzero(bits).astype(np.int64)

@@ -35,8 +35,6 @@ from apps.ca.hashlife.store import (
     FULL,
     LEAF,
     LEVEL,
-    META_T,
-    NODES,
     RES,
     RESJ,
     SHIFT,
@@ -88,12 +86,6 @@ def _known(n, T, level, nodes, meta):
     return np.int64(-2)
 
 
-@kernels.export(f"int64(int64, int64, int64, {NODES}, {META_T})", _nrt=False)
-def known(n, T, level, nodes, meta):
-    """``_known`` for Python (a jump's first look)."""
-    return _known(n, T, level, nodes, meta)
-
-
 def _leaf_step(node, T, nodes, slots, leaves, lslots, meta, R, G):
     """The leaf kernel each specialisation of ``_recursion`` binds in its place
     (``bits.leaves.advance`` or ``cellgrid.advance``): the centre of base-level ``node``
@@ -108,8 +100,11 @@ def _leaf_step(node, T, nodes, slots, leaves, lslots, meta, R, G):
 # leaf kernel.
 def _recursion(node, T, nodes, slots, leaves, lslots, meta, R, G):
     """Centre of ``node`` after T generations (1 <= T <= 2**(level - 2 - s)); -1 if a table
-    is full.  The caller has looked for a known result first (``_known``)."""
+    is full."""
     k = np.int64(nodes[node, LEVEL])
+    found = _known(node, T, k, nodes, meta)  # (the recursion's callers looked already:
+    if found != -2:  # this is for the first call, saving Python a kernel of its own)
+        return found
     if k == meta[BASE]:
         out = _leaf_step(node, T, nodes, slots, leaves, lslots, meta, R, G)
     else:
@@ -205,9 +200,5 @@ step_values = kernels.specialise(_recursion, "step_values", _SIGNATURE, {"_nrt":
 
 def advance(node: int, T: int, store, R: np.ndarray, G: np.ndarray) -> int:  # a Store
     """The centre of ``node`` after T generations (-1: a table filled up)."""
-    found = int(known(np.int64(node), np.int64(T), np.int64(store.nodes[node, LEVEL]),
-                      store.nodes, store.meta))
-    if found != -2:
-        return found
     step = step_bits if store.leaf_level else step_values
     return int(step(np.int64(node), np.int64(T), *store.tables, R, G))

@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from apps.ca.engine import CENTRE, Engine
-from apps.ca.hashlife import cells, census, evolve, listing
+from apps.ca.hashlife import cells, census, listing
 from apps.ca.hashlife.grid import PLANE_LEVEL
 from apps.ca.hashlife.store import BIT_LEAF_LEVEL, Store
 from apps.ca.library import pattern_path, rules_path
@@ -37,16 +37,14 @@ def compile_kernels() -> None:
 
 
 def compile_common() -> None:
-    """What every jump needs, on an empty plane of each kind of store: the census, the
-    first look for a known result, the tables' towers (made with the store); a tree's
-    levels are compiled inside the conversions that build trees."""
+    """What every jump needs, on an empty plane of each kind of store: the census and the
+    tables' towers (made with the store); a tree's levels are compiled inside the
+    conversions that build trees."""
     for leaf, base in _STORES:
         store = Store(leaf, base, 0, 1)
         plane = int(store.empty[PLANE_LEVEL])
         census.cells_of(plane, 0, store)
         census.occupied(plane, 0, store)
-        evolve.known(np.int64(plane), np.int64(1), np.int64(PLANE_LEVEL), store.nodes,
-                     store.meta)
 
 
 def compile_bits() -> None:
