@@ -13,6 +13,8 @@ bit leaves.  ``compile_kernels`` (``camlab88 warm-up``) compiles every group.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
 from apps.ca.engine import CENTRE, Engine
@@ -49,24 +51,24 @@ def compile_common() -> None:
 
 def compile_bits() -> None:
     """Bit leaves' jumps (Life, from the pattern's grid as `ca run` places it), both edges."""
-    rules = load_rules(rules_path("life"))
     placed = read_pattern(pattern_path("gosper_gun")).placed_grid(CENTRE, CENTRE, "identity")
-    for edges in ("wrap", "bounded"):
-        engine = Engine(rules, edges=edges, algorithm="hashlife")
-        engine.set_grid(*placed)
-        engine.step(300)
-        engine.stats()
+    _jumps("life", lambda engine: engine.set_grid(*placed), 300)
 
 
 def compile_values() -> None:
     """Value leaves' jumps (a multi-state rule set; its cells by the cell lists, which
     every such run compiles first), both edges."""
-    rules = load_rules(rules_path("turing_primes"))
     placed = read_pattern(pattern_path("primes_25")).placed(CENTRE, CENTRE, "identity")
+    _jumps("turing_primes", lambda engine: engine.set_cells(*placed), 64)
+
+
+def _jumps(rules_name: str, place: Callable[[Engine], object], generations: int) -> None:
+    """A HashLife jump and its census on each kind of edge."""
+    rules = load_rules(rules_path(rules_name))
     for edges in ("wrap", "bounded"):
         engine = Engine(rules, edges=edges, algorithm="hashlife")
-        engine.set_cells(*placed)
-        engine.step(64)
+        place(engine)
+        engine.step(generations)
         engine.stats()
 
 
