@@ -22,11 +22,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from apps.ca import seed as seed_range
 from apps.ca.engine import EDGES, SIDE, Engine, Rect
 from apps.ca.patterns import Pattern, format_rle, parse_rle
 from apps.ca.rules import parse_rules
 from apps.ca.seed import SEED_MAX, SEED_MIN
+from apps.ca.seed import check_seed as _seed_in_range
 from base.atomicfile import write_atomic
 from base.textinput import parse_int, quote, read_text
 
@@ -266,7 +266,7 @@ def _parse_header(lines: list[str], source: str) -> tuple[LogSettings, int]:
 def check_seed(seed: int, name: str = "--seed") -> int:
     """A seed the engine's kernels can take (an int64); the command line's ``--seed`` should
     go through this too."""
-    return seed_range.check_seed(seed, name, LogError)
+    return _seed_in_range(seed, name, LogError)
 
 
 def parse_log_settings(text: str, source: str = "<log>") -> LogSettings:

@@ -13,7 +13,7 @@ bit leaves.  ``compile_kernels`` (``camlab88 warm-up``) compiles every group.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 
 import numpy as np
 
@@ -75,19 +75,22 @@ def _jumps(rules_name: str, place: Callable[[Engine], object], generations: int)
 def compile_cells() -> None:
     """The cell lists in, for both kinds of leaf, and the seam test (a multi-state run on
     the wrapping plane)."""
-    for leaf, base in _STORES:
-        store = Store(leaf, base, 0, 1)
-        xs = ys = np.array([5, 40000], np.int64)
-        node = cells.to_tree(xs, ys, np.ones(2, np.int64), store)
+    for store, node in _two_cell_planes():
         cells.near_seam(node, 1, store)
 
 
 def compile_listing() -> None:
     """The cells of a plane listed, for both kinds of leaf."""
+    for store, node in _two_cell_planes():
+        listing.cells(node, store)
+
+
+def _two_cell_planes() -> Iterator[tuple[Store, int]]:
+    """A store of each kind of leaf and a plane of two cells in it (by the cell lists)."""
     for leaf, base in _STORES:
         store = Store(leaf, base, 0, 1)
         xs = ys = np.array([5, 40000], np.int64)
-        listing.cells(cells.to_tree(xs, ys, np.ones(2, np.int64), store), store)
+        yield store, cells.to_tree(xs, ys, np.ones(2, np.int64), store)
 
 
 def compile_upkeep() -> None:
