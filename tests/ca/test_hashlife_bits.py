@@ -36,7 +36,25 @@ $
 #X120 1
 """
 SKEW = parse_rules(SKEW_TEXT, source="skew")
-BINARY = {"life": LIFE, "skew": SKEW}
+# Day & Night (B3678/S34678): outer-totalistic with seven block-sum terms, so the base case
+# runs its pairs of terms after the first (Life has two: one pair).
+DAY_AND_NIGHT = parse_rules("""
+1 1 1 1 1
++1 +1 +1
++1 |#X10 +1
++1 +1 +1
+$
+#X3 1
+#X6 1
+#X7 1
+#X8 1
+#X13 1
+#X14 1
+#X16 1
+#X17 1
+#X18 1
+""", source="day_and_night")
+BINARY = {"life": LIFE, "skew": SKEW, "day_and_night": DAY_AND_NIGHT}
 GENERIC = {name: load_rules(rules_path(name)) for name in ("maze", "turing_primes", "circuits")}
 PLACES = [(30000, 30000), (SIDE - 12, SIDE - 9)]  # inside; across the corner (seam / edge)
 
@@ -96,6 +114,7 @@ def test_the_table_is_found_by_running_the_rules() -> None:
     assert life.totalistic and totalistic_terms(life.table) is not None
     skew = binary_rule(SKEW)
     assert not skew.totalistic and totalistic_terms(skew.table) is None
+    assert len(totalistic_terms(binary_rule(DAY_AND_NIGHT).table)) == 7
 
 
 def test_rules_that_do_not_qualify_say_why() -> None:

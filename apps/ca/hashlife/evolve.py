@@ -32,6 +32,8 @@ from apps.ca.hashlife.bits import leaves as bitleaves
 from apps.ca.hashlife.store import (
     BASE,
     EMPTY,
+    FRAME,
+    FRAMES,
     FULL,
     LEAF,
     LEVEL,
@@ -56,7 +58,7 @@ RULES, SCRATCH = "uint64[::1]", "uint64[:, ::1]"
 
 @kernels.kernel(inline="always")
 def _q(nodes, n, q):
-    return np.int64(nodes[n, q])
+    return np.int64(nodes[np.uint64(n), q])  # unsigned: no test for a negative index
 
 
 @kernels.kernel(inline="always")
@@ -74,15 +76,17 @@ def _known(n, T, level, nodes, meta):
     recursing — an empty or wall node's, or memoised — else -2 (-1: n is -1)."""
     if n < 0:
         return n
-    if n == meta[EMPTY + level]:
-        return meta[EMPTY + level - 1]
-    if n == meta[WALL_AT + level]:
-        return meta[WALL_AT + level - 1]
+    e, w = np.uint64(EMPTY + level), np.uint64(WALL_AT + level)  # unsigned: no tests for
+    if n == meta[e]:  # negative indices
+        return meta[e - np.uint64(1)]
+    if n == meta[w]:
+        return meta[w - np.uint64(1)]
+    u = np.uint64(n)
     if T == np.int64(1) << (level - 2 - meta[SHIFT]):
-        if nodes[n, FULL] > 0:
-            return np.int64(nodes[n, FULL])
-    elif nodes[n, RESJ] == T + 1:
-        return np.int64(nodes[n, RES])
+        if nodes[u, FULL] > 0:
+            return np.int64(nodes[u, FULL])
+    elif nodes[u, RESJ] == T + 1:
+        return np.int64(nodes[u, RES])
     return np.int64(-2)
 
 
@@ -101,7 +105,7 @@ def _leaf_step(node, T, nodes, slots, leaves, lslots, meta, R, G):
 def _recursion(node, T, nodes, slots, leaves, lslots, meta, R, G):
     """Centre of ``node`` after T generations (1 <= T <= 2**(level - 2 - s)); -1 if a table
     is full."""
-    k = np.int64(nodes[node, LEVEL])
+    k = np.int64(nodes[np.uint64(node), LEVEL])
     found = _known(node, T, k, nodes, meta)  # (the recursion's callers looked already:
     if found != -2:  # this is for the first call, saving Python a kernel of its own)
         return found
@@ -113,21 +117,27 @@ def _recursion(node, T, nodes, slots, leaves, lslots, meta, R, G):
         t1 = T - t2  # the nine's (0: their centres as they are)
         a, b, c, d = _q(nodes, node, 0), _q(nodes, node, 1), _q(nodes, node, 2), \
             _q(nodes, node, 3)
-        nine = (a, join(_q(nodes, a, 1), _q(nodes, b, 0), _q(nodes, a, 3), _q(nodes, b, 2),
-                        h, nodes, slots, meta),
-                b, join(_q(nodes, a, 2), _q(nodes, a, 3), _q(nodes, c, 0), _q(nodes, c, 1),
-                        h, nodes, slots, meta),
-                join(_q(nodes, a, 3), _q(nodes, b, 2), _q(nodes, c, 1), _q(nodes, d, 0),
-                     h, nodes, slots, meta),
-                join(_q(nodes, b, 2), _q(nodes, b, 3), _q(nodes, d, 0), _q(nodes, d, 1),
-                     h, nodes, slots, meta),
-                c, join(_q(nodes, c, 1), _q(nodes, d, 0), _q(nodes, c, 3), _q(nodes, d, 2),
-                        h, nodes, slots, meta),
-                d)
-        # the order above: r00, r01, r02, r10, r11, r12, r20, r21, r22 (row by row)
-        r00 = r01 = r02 = r10 = r11 = r12 = r20 = r21 = r22 = np.int64(-1)
+        # The nine, row by row, in this level's frame: 0..8, their results 9..17, the four
+        # 18..21, theirs 22..25.  (A tuple indexed in the loop cost two indirect jumps an
+        # iteration: LLVM does not unroll a loop around a recursive call.)
+        f = FRAMES + FRAME * k
+        fr = meta[f:f + FRAME]  # (a view: indices known >= 0, no negative-index tests)
+        fr[0] = a
+        fr[1] = join(_q(nodes, a, 1), _q(nodes, b, 0), _q(nodes, a, 3), _q(nodes, b, 2), h,
+                     nodes, slots, meta)
+        fr[2] = b
+        fr[3] = join(_q(nodes, a, 2), _q(nodes, a, 3), _q(nodes, c, 0), _q(nodes, c, 1), h,
+                     nodes, slots, meta)
+        fr[4] = join(_q(nodes, a, 3), _q(nodes, b, 2), _q(nodes, c, 1), _q(nodes, d, 0), h,
+                     nodes, slots, meta)
+        fr[5] = join(_q(nodes, b, 2), _q(nodes, b, 3), _q(nodes, d, 0), _q(nodes, d, 1), h,
+                     nodes, slots, meta)
+        fr[6] = c
+        fr[7] = join(_q(nodes, c, 1), _q(nodes, d, 0), _q(nodes, c, 3), _q(nodes, d, 2), h,
+                     nodes, slots, meta)
+        fr[8] = d
         for i in range(9):
-            n = nine[i]
+            n = fr[i]
             if n < 0:
                 return np.int64(-1)
             if t1 > 0:
@@ -140,31 +150,13 @@ def _recursion(node, T, nodes, slots, leaves, lslots, meta, R, G):
                 v = _centre(n, h, nodes, slots, meta)
             if v < 0:
                 return np.int64(-1)
-            if i == 0:
-                r00 = v
-            elif i == 1:
-                r01 = v
-            elif i == 2:
-                r02 = v
-            elif i == 3:
-                r10 = v
-            elif i == 4:
-                r11 = v
-            elif i == 5:
-                r12 = v
-            elif i == 6:
-                r20 = v
-            elif i == 7:
-                r21 = v
-            else:
-                r22 = v
-        four = (join(r00, r01, r10, r11, h, nodes, slots, meta),
-                join(r01, r02, r11, r12, h, nodes, slots, meta),
-                join(r10, r11, r20, r21, h, nodes, slots, meta),
-                join(r11, r12, r21, r22, h, nodes, slots, meta))
-        u0 = u1 = u2 = u3 = np.int64(-1)
+            fr[9 + i] = v
+        for i in range(4):  # the four: rows y, y+1 and columns x, x+1 of the nine's results
+            at = 9 + 3 * (i >> 1) + (i & 1)
+            fr[18 + i] = join(fr[at], fr[at + 1], fr[at + 3], fr[at + 4], h, nodes, slots,
+                              meta)
         for i in range(4):
-            n = four[i]
+            n = fr[18 + i]
             if n < 0:
                 return np.int64(-1)
             v = _known(n, t2, h, nodes, meta)
@@ -172,20 +164,14 @@ def _recursion(node, T, nodes, slots, leaves, lslots, meta, R, G):
                 v = _recursion(n, t2, nodes, slots, leaves, lslots, meta, R, G)
             if v < 0:
                 return np.int64(-1)
-            if i == 0:
-                u0 = v
-            elif i == 1:
-                u1 = v
-            elif i == 2:
-                u2 = v
-            else:
-                u3 = v
-        out = join(u0, u1, u2, u3, h, nodes, slots, meta)
+            fr[22 + i] = v
+        out = join(fr[22], fr[23], fr[24], fr[25], h, nodes, slots, meta)
+    u = np.uint64(node)
     if out >= 0 and T == np.int64(1) << (k - 2 - meta[SHIFT]):
-        nodes[node, FULL] = out
+        nodes[u, FULL] = out
     elif out >= 0:
-        nodes[node, RES] = out
-        nodes[node, RESJ] = T + 1
+        nodes[u, RES] = out
+        nodes[u, RESJ] = T + 1
     return out
 
 

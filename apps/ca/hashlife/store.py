@@ -45,6 +45,10 @@ N_NODES, N_LEAVES, LEAF, BASE, SHIFT, REACH, HAS_WALL = range(7)
 EMPTY = 7
 WALL_AT = EMPTY + TOP_LEVEL + 1
 META = WALL_AT + TOP_LEVEL + 1
+# Then one frame per level for the recursion's nine and four squares and their results
+# (evolve.py: a level's call only calls the level below, so one frame a level suffices).
+FRAMES, FRAME = META, 32
+META_SIZE = FRAMES + FRAME * (TOP_LEVEL + 1)
 NODE_BYTES = 4 * ROW + 2 * 4  # a row and two hash slots (load factor at most 1/2)
 LEAF_BYTES = 8 * 8 + 2 * 4
 
@@ -73,37 +77,48 @@ def _mix(h):
     return h ^ (h >> np.uint64(27))
 
 
+# Odd multipliers of the leaf hash's eight words (splitmix, xxhash, murmur constants).
+_LEAF_K = (0x9E3779B97F4A7C15, 0xC2B2AE3D27D4EB4F, 0x165667B19E3779F9, 0x85EBCA77C2B2AE63,
+           0x27D4EB2F165667C5, 0xFF51AFD7ED558CCD, 0xC4CEB9FE1A85EC53, 0xD6E8FEB86659FD93)
+
+
 @kernels.kernel(inline="always")
 def leaf_hash(W, r, at, mask):
-    h = np.uint64(0)
-    for i in range(8):
-        h = _mix(h ^ W[r, at + i] ^ np.uint64(i))
-    return np.int64(h & np.uint64(mask))
+    # eight independent multiplies, one mixing at the end: eight mixing rounds chained one
+    # after another were ~10 ns more a base case (a leaf looked up each)
+    h = (W[r, at] * np.uint64(_LEAF_K[0]) + W[r, at + 1] * np.uint64(_LEAF_K[1])
+         + W[r, at + 2] * np.uint64(_LEAF_K[2]) + W[r, at + 3] * np.uint64(_LEAF_K[3])
+         + W[r, at + 4] * np.uint64(_LEAF_K[4]) + W[r, at + 5] * np.uint64(_LEAF_K[5])
+         + W[r, at + 6] * np.uint64(_LEAF_K[6]) + W[r, at + 7] * np.uint64(_LEAF_K[7]))
+    return np.int64(_mix(h) & np.uint64(mask))
 
 
 @kernels.kernel(inline="always")
 def _join(a, b, c, d, level, nodes, slots, meta):
-    mask = slots.shape[0] - 1
-    s = node_hash(a, b, c, d, level, mask)
+    # Slots and rows indexed by unsigned values: numba adds a test for negative indices
+    # (Python's wrap-around) to every signed one, on the hash look-up's critical path.
+    mask = np.uint64(slots.shape[0] - 1)
+    s = np.uint64(node_hash(a, b, c, d, level, mask))
     while True:
-        i = slots[s]
+        i = np.uint64(np.uint32(slots[s]))
         if i == 0:
             break
         if (nodes[i, 0] == a and nodes[i, 1] == b and nodes[i, 2] == c and nodes[i, 3] == d
                 and nodes[i, LEVEL] == level):
             return np.int64(i)
-        s = (s + 1) & mask
+        s = (s + np.uint64(1)) & mask
     n = meta[N_NODES]
     if n >= nodes.shape[0]:
         return np.int64(-1)
     slots[s] = n
-    nodes[n, 0] = a
-    nodes[n, 1] = b
-    nodes[n, 2] = c
-    nodes[n, 3] = d
-    nodes[n, RESJ] = 0
-    nodes[n, LEVEL] = level
-    nodes[n, FULL] = 0
+    u = np.uint64(n)
+    nodes[u, 0] = a
+    nodes[u, 1] = b
+    nodes[u, 2] = c
+    nodes[u, 3] = d
+    nodes[u, RESJ] = 0
+    nodes[u, LEVEL] = level
+    nodes[u, FULL] = 0
     meta[N_NODES] = n + 1
     return np.int64(n)
 
@@ -124,10 +139,10 @@ def leaf(W, r, at, leaves, lslots, meta):
     """The id of the bit leaf with words W[r, at:at+8], made at most once; -1 if full.
     (Row and offset rather than a slice, and inlined: every array handed to a call is
     reference counted with atomic operations, measured at half the time of small jumps.)"""
-    mask = lslots.shape[0] - 1
-    s = leaf_hash(W, r, at, mask)
+    mask = np.uint64(lslots.shape[0] - 1)
+    s = np.uint64(leaf_hash(W, r, at, mask))  # unsigned indices, as in _join
     while True:
-        i = lslots[s]
+        i = np.uint64(np.uint32(lslots[s]))
         if i == 0:
             break
         same = True
@@ -137,13 +152,14 @@ def leaf(W, r, at, leaves, lslots, meta):
                 break
         if same:
             return np.int64(i)
-        s = (s + 1) & mask
+        s = (s + np.uint64(1)) & mask
     n = meta[N_LEAVES]
     if n >= leaves.shape[0]:
         return np.int64(-1)
     lslots[s] = n
+    u = np.uint64(n)
     for q in range(8):
-        leaves[n, q] = W[r, at + q]
+        leaves[u, q] = W[r, at + q]
     meta[N_LEAVES] = n + 1
     return np.int64(n)
 
@@ -198,7 +214,7 @@ class Store:
             raise MemoryError(f"the HashLife memory limit ({self.limit_bytes >> 20} MB) is "
                               f"below the smallest node table "
                               f"({self._bytes(cap_n, cap_l) / 2**20:.1f} MB)")
-        self.meta = np.zeros(META, np.int64)
+        self.meta = np.zeros(META_SIZE, np.int64)
         self.meta[N_NODES] = self.meta[N_LEAVES] = 1
         self.meta[LEAF], self.meta[BASE], self.meta[SHIFT], self.meta[REACH] = \
             leaf, base, shift, reach
