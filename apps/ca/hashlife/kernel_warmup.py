@@ -97,8 +97,8 @@ def compile_upkeep() -> None:
     """The tables' growth and collection (their group's completion)."""
     store = Store(4, 5, 0, 1)
     store.make_room([])
-    store.slots[:] = 0  # as grow_if_full does after doubling: every entry hashed again
+    store.slots[:] = 0  # as grow_if_full does after growing: every entry hashed again
     store.lslots[:] = 0
-    from apps.ca.hashlife.upkeep import rehash
+    from apps.ca.hashlife.upkeep import LEAF_TABLE, NODE_TABLE, rehash
 
-    rehash(*store.tables)
+    rehash(NODE_TABLE | LEAF_TABLE, *store.tables)

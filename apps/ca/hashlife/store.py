@@ -265,7 +265,7 @@ class Store:
             self.lslots.nbytes
 
     def quadrants(self, node: int) -> tuple[int, int, int, int]:
-        nw, ne, sw, se = (int(q) for q in self.nodes[node, :4])
+        nw, ne, sw, se = self.nodes[node, :4].tolist()
         return nw, ne, sw, se
 
     def join(self, a: int, b: int, c: int, d: int, level: int) -> int:
@@ -308,25 +308,34 @@ class Store:
                            f"({self.limit_bytes >> 20} MB) allows no more")
 
     def grow_if_full(self) -> bool:
-        """Double whichever table is full instead of collecting while there is room (results
-        survive growing, not collecting); False once the memory limit stops it."""
+        """Grow whichever table is full instead of collecting while there is room (results
+        survive growing, not collecting); False once the memory limit stops it.  Four
+        times over while that fits the limit, else twice: every growth enters each entry
+        anew (the puffer train's jump spent 6 of 38 ms doubling 8,192 nodes up to 131,072).
+        """
         grow_nodes, grow_leaves = self._full()
-        extra = (self.nodes.nbytes + self.slots.nbytes if grow_nodes else 0) + \
-            (self.leaves.nbytes + self.lslots.nbytes if grow_leaves else 0)
-        if not extra or self.bytes + extra > self.limit_bytes:
+        if not (grow_nodes or grow_leaves):
             return False
-        if grow_nodes:
-            self.nodes, self.slots = self._grown(self.nodes, self.count)
-        if grow_leaves:
-            self.leaves, self.lslots = self._grown(self.leaves, self.leaf_count)
-        self.slots[:] = 0
-        self.lslots[:] = 0
-        from apps.ca.hashlife.upkeep import rehash  # its own kernel group
+        for factor in (4, 2):
+            extra = (factor - 1) * ((self.nodes.nbytes + self.slots.nbytes if grow_nodes
+                                     else 0) + (self.leaves.nbytes + self.lslots.nbytes
+                                                if grow_leaves else 0))
+            if self.bytes + extra <= self.limit_bytes:
+                break
+        else:
+            return False
+        from apps.ca.hashlife.upkeep import LEAF_TABLE, NODE_TABLE, rehash  # its own group
 
-        rehash(*self.tables)
+        if grow_nodes:
+            self.nodes, self.slots = self._grown(self.nodes, self.count, factor)
+        if grow_leaves:
+            self.leaves, self.lslots = self._grown(self.leaves, self.leaf_count, factor)
+        rehash((NODE_TABLE if grow_nodes else 0) | (LEAF_TABLE if grow_leaves else 0),
+               *self.tables)
         return True
 
-    def _grown(self, table: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
-        bigger, slots = self._table(2 * table.shape[0], table.shape[1], table.dtype)
+    def _grown(self, table: np.ndarray, n: int,
+               factor: int) -> tuple[np.ndarray, np.ndarray]:
+        bigger, slots = self._table(factor * table.shape[0], table.shape[1], table.dtype)
         bigger[:n] = table[:n]
-        return bigger, slots
+        return bigger, slots  # the slots empty: rehash enters every entry

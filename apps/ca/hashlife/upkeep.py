@@ -1,4 +1,4 @@
-"""The store's upkeep: entering every entry into fresh hash indexes (after a table doubled)
+"""The store's upkeep: entering every entry into fresh hash indexes (after a table grew)
 and garbage collection (when the memory limit stops the doubling), for either kind of leaf.
 Their own module and kernel group: a run whose tables never fill (the README's Life runs)
 does not compile them, and the first run that does fill announces them (a short notice).
@@ -29,22 +29,28 @@ from base.kernel_set import KernelSet
 kernels = KernelSet(__name__, sources=("apps.ca.hashlife.store",))
 
 
-@kernels.export(f"void({TABLES})")
-def rehash(nodes, slots, leaves, lslots, meta):
-    """Enter every node and table leaf (all distinct) into empty hash indexes."""
-    mask = slots.shape[0] - 1
-    for i in range(1, meta[N_NODES]):
-        s = node_hash(nodes[i, 0], nodes[i, 1], nodes[i, 2], nodes[i, 3], nodes[i, LEVEL],
-                      mask)
-        while slots[s] != 0:
-            s = (s + 1) & mask
-        slots[s] = i
-    mask = lslots.shape[0] - 1
-    for i in range(1, meta[N_LEAVES]):
-        s = leaf_hash(leaves, i, 0, mask)
-        while lslots[s] != 0:
-            s = (s + 1) & mask
-        lslots[s] = i
+NODE_TABLE, LEAF_TABLE = 1, 2  # rehash's ``which``: bits of the tables to enter anew
+
+
+@kernels.export(f"void(int64, {TABLES})")
+def rehash(which, nodes, slots, leaves, lslots, meta):
+    """Enter every node (``which`` & NODE_TABLE) and every table leaf (& LEAF_TABLE), all
+    distinct, into their empty hash indexes."""
+    if which & NODE_TABLE:
+        mask = np.uint64(slots.shape[0] - 1)
+        for i in range(1, meta[N_NODES]):
+            s = np.uint64(node_hash(nodes[i, 0], nodes[i, 1], nodes[i, 2], nodes[i, 3],
+                                    nodes[i, LEVEL], mask))
+            while slots[s] != 0:
+                s = (s + np.uint64(1)) & mask
+            slots[s] = i
+    if which & LEAF_TABLE:
+        mask = np.uint64(lslots.shape[0] - 1)
+        for i in range(1, meta[N_LEAVES]):
+            s = np.uint64(leaf_hash(leaves, i, 0, mask))
+            while lslots[s] != 0:
+                s = (s + np.uint64(1)) & mask
+            lslots[s] = i
 
 
 @kernels.export(f"int64(int64[::1], {TABLES})")
@@ -111,7 +117,7 @@ def collect(roots, nodes, slots, leaves, lslots, meta):
     meta[N_NODES] = k
     slots[:] = 0
     lslots[:] = 0
-    rehash(nodes, slots, leaves, lslots, meta)
+    rehash(NODE_TABLE | LEAF_TABLE, nodes, slots, leaves, lslots, meta)
     for r in range(roots.shape[0]):
         roots[r] = new[roots[r]]
     for lv in range(low, TOP_LEVEL + 1):

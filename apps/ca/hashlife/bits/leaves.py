@@ -41,7 +41,8 @@ def _pair(leaves, i, w, half):
 
 @kernels.kernel(inline="always")
 def load(nw, ne, sw, se, leaves, walls, G):
-    """The 32 x 32 square of four leaves into plane 0 (live) and, if ``walls``, plane 2."""
+    """The 32 x 32 square of four leaves into plane 0 (live) and plane 2 (the wall, or none
+    if ``walls`` is False)."""
     for plane in range(2 if walls else 1):
         for h in range(8):
             w, half = 4 * plane + (h >> 1), h & 1
@@ -49,6 +50,9 @@ def load(nw, ne, sw, se, leaves, walls, G):
                 (_pair(leaves, ne, w, half) << U16)
             G[2 * plane, 9 + h] = _pair(leaves, sw, w, half) | \
                 (_pair(leaves, se, w, half) << U16)
+    if not walls:
+        for i in range(1, 17):
+            G[WALL, i] = np.uint64(0)
     G[0, 0] = G[0, 17] = G[1, 0] = G[1, 17] = np.uint64(0)
 
 
@@ -96,16 +100,13 @@ def _hit(n0, n1, n2, n3, x, v0, v1, v2, v3, keep, flip):
 
 
 @kernels.kernel(inline="always")
-def totalistic(s, d, pair, more, walls, G):
+def totalistic(s, d, pair, more, G):
     """Plane d = the next generation of plane s by a pair of terms (``_term``s, block sums:
-    rule.totalistic_terms), OR-ed into plane d if ``more`` (the pairs after the first).  One
-    pass with no loop-carried values, no tests and no stores but plane d's, which LLVM
-    vectorises (AVX-512 here): each word's rows' 3-sums and those of its two neighbours
-    (recomputed: cheaper than storing them), the block sum's four bits, the two terms.  The
-    pair is decoded once per base case, not per generation: with the passes' row sums kept
-    in planes and the terms read per generation it cost 365 against 245 ns a base case of 8
-    generations.  All 16 words are computed; later generations use only those they can
-    know."""
+    rule.totalistic_terms), OR-ed into plane d where ``more`` has bits (the pairs after the
+    first).  One pass with no loop-carried values, no tests and no stores but plane d's,
+    which LLVM vectorises (AVX-512 here): each word's rows' 3-sums and those of its two
+    neighbours (recomputed: cheaper than storing them), the block sum's four bits, the two
+    terms.  All 16 words are computed; later generations use only those they can know."""
     a0_, a1_, a2_, a3_, ak, af, b0_, b1_, b2_, b3_, bk, bf = pair
     for i in range(1, 17):
         x = G[s, i]
@@ -122,13 +123,11 @@ def totalistic(s, d, pair, more, walls, G):
         n0, n1, n2, n3 = a0 ^ m0 ^ c0, t ^ k, u ^ v, u & v
         hit = _hit(n0, n1, n2, n3, x, a0_, a1_, a2_, a3_, ak, af) | \
             _hit(n0, n1, n2, n3, x, b0_, b1_, b2_, b3_, bk, bf)
-        if more:
-            hit |= G[d, i]
-        G[d, i] = hit & ~G[WALL, i] if walls else hit
+        G[d, i] = (hit | (G[d, i] & more)) & ~G[WALL, i]
 
 
 @kernels.kernel(inline="always")
-def lookup(s, d, lo, hi, walls, R, G):
+def lookup(s, d, lo, hi, R, G):
     """Plane d words lo..hi-1 = the next generation of plane s by R's 4 x 4 -> 2 x 2 table:
     each word's two rows from the four rows around them, two columns at a time (columns 0
     and 31, which generation 1 cannot know, are left dead)."""
@@ -146,33 +145,15 @@ def lookup(s, d, lo, hi, walls, R, G):
             o = R[LUT + np.int64(index)]
             top |= (o & np.uint64(3)) << np.uint64(x)
             bottom |= ((o >> np.uint64(2)) & np.uint64(3)) << np.uint64(x)
-        out = top | (bottom << U32)
-        G[d, i] = out & ~G[WALL, i] if walls else out
-
-
-@kernels.kernel(inline="always")
-def _generations(gens, walls, R, G):
-    """Plane 0 after ``gens`` generations, in plane 0 or 1: which one."""
-    s = np.int64(0)
-    if R[0] == KIND_TOTALISTIC:
-        first = _term(R, 0) + _term(R, 1)  # Life-like rules have one or two terms
-        for _ in range(gens):
-            totalistic(s, 1 - s, first, False, walls, G)
-            for j in range(2, np.int64(R[1]), 2):
-                totalistic(s, 1 - s, _term(R, j) + _term(R, j + 1), True, walls, G)
-            s = 1 - s
-    else:
-        for g in range(1, gens + 1):
-            lo = 5 - (gens - g + 1) // 2  # the words of rows 8-(gens-g) .. 23+(gens-g)
-            lookup(s, 1 - s, lo, 18 - lo, walls, R, G)
-            s = 1 - s
-    return s
+        G[d, i] = (top | (bottom << U32)) & ~G[WALL, i]
 
 
 # A call, not IR-inlined into the recursion (where it was inlined twice): a cold first run
 # of `ca run --engine hashlife` took 29 s of CPU instead of 42 with the same jump times
 # (docs/perf/startup.md).  Without numba's runtime, like the recursion, so the call passes
 # its arrays without atomic reference counts (the reason the inlining was measured faster).
+# One copy of each kernel's pass (not one per kind of wall or of pair): a first compile's
+# time grows with every inlined copy.
 @kernels.kernel(_nrt=False)
 def advance(node, gens, nodes, slots, leaves, lslots, meta, R, G):
     """The centre leaf of level-5 ``node`` after ``gens`` (0..8) generations; -1 if the
@@ -180,8 +161,21 @@ def advance(node, gens, nodes, slots, leaves, lslots, meta, R, G):
     walls = meta[HAS_WALL] != 0  # no wall anywhere until a bounded plane was framed
     load(np.int64(nodes[node, 0]), np.int64(nodes[node, 1]), np.int64(nodes[node, 2]),
          np.int64(nodes[node, 3]), leaves, walls, G)
-    if walls:  # two copies of the loops, neither testing for walls per word
-        s = _generations(gens, True, R, G)
+    s = np.int64(0)
+    if R[0] == KIND_TOTALISTIC:
+        # The first pair decoded once a base case, not once a generation (365 against
+        # 245 ns a base case of 8 generations, with the passes' row sums kept in planes);
+        # Life-like rules have one or two terms.
+        first = _term(R, 0) + _term(R, 1)
+        pairs = max(np.int64(R[1]), 1)
+        for _ in range(gens):
+            for j in range(0, pairs, 2):
+                pair = first if j == 0 else _term(R, j) + _term(R, j + 1)
+                totalistic(s, 1 - s, pair, ONES if j > 0 else np.uint64(0), G)
+            s = 1 - s
     else:
-        s = _generations(gens, False, R, G)
+        for g in range(1, gens + 1):
+            lo = 5 - (gens - g + 1) // 2  # the words of rows 8-(gens-g) .. 23+(gens-g)
+            lookup(s, 1 - s, lo, 18 - lo, R, G)
+            s = 1 - s
     return centre(s, walls, G, leaves, lslots, meta)
