@@ -104,19 +104,23 @@ class KernelSet:
             return wrapped
         return declare
 
-    def specialise(self, template: Callable[..., Any], name: str, signature: str,
+    def specialise(self, template: Callable[..., Any], name: str, signature: str | None,
                    options: dict[str, Any] | None = None, **bindings: Any) -> Any:
         """An export named ``name`` compiled from ``template``'s code with the globals
         named in ``bindings`` bound to those values, and the template's own name to the
-        export itself (a recursive template recurses into its specialisation).  Call it
-        after the template's globals are defined: the export sees them as they are then."""
+        export itself (a recursive template recurses into its specialisation); a kernel
+        (called only by other kernels) if ``signature`` is None.  Call it after the
+        template's globals are defined: the export sees them as they are then."""
         namespace = dict(template.__globals__, **bindings)
         fn = FunctionType(template.__code__, namespace, name, template.__defaults__,
                           template.__closure__)
         fn.__qualname__ = name  # numba's cache names its files by it: one index each
         fn.__module__, fn.__doc__ = template.__module__, template.__doc__
         namespace[template.__name__] = fn  # replaced by the kernel in the JIT path
-        exported = self.export(signature, **(options or {}))(fn)
+        if signature is None:
+            exported = self.kernel(fn, **(options or {}))
+        else:
+            exported = self.export(signature, **(options or {}))(fn)
         if self.aot is None:
             namespace[template.__name__] = exported
         return exported
@@ -126,9 +130,11 @@ def _njit() -> Any:
     """numba's njit, with its cache made to notice edits of a kernel's ``sources`` too."""
     from numba import njit
 
+    from base import raw_views
     from base.kernel_load import stamps_cover_sources
 
     stamps_cover_sources()
+    raw_views.arm()  # kernels may hand arrays to each other by address
     return njit
 
 

@@ -14,12 +14,14 @@ from __future__ import annotations
 import numpy as np
 
 from apps.ca.hashlife.leaf import generation
-from apps.ca.hashlife.store import LEVEL, REACH, join
+from apps.ca.hashlife.store import LEVEL, REACH, all_tables, join
 from base.kernel_set import KernelSet
 
 kernels = KernelSet(__name__, _nrt=False, sources=(
     "apps.ca.hashlife.leaf",
     "apps.ca.hashlife.store",
+    "base.raw_views",
+    "base.raw_view_intrinsics",
 ))
 
 
@@ -67,8 +69,10 @@ def from_grid(G, p, y0, x0, level, nodes, slots, meta):
 
 
 @kernels.kernel
-def advance(node, T, nodes, slots, leaves, lslots, meta, R, G):
-    """Centre of base-level ``node`` after T generations (0: its centre as it is)."""
+def advance(node, T, at):
+    """Centre of base-level ``node`` after T generations (0: its centre as it is).  ``at``:
+    the address of the store's meta with the tables' addresses (store.publish)."""
+    nodes, slots, _, _, meta, R, G = all_tables(at)
     level = np.int64(nodes[node, LEVEL])
     n = np.int64(1) << level
     r = meta[REACH]

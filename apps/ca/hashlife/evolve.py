@@ -43,6 +43,8 @@ from apps.ca.hashlife.store import (
     TABLES,
     WALL_AT,
     join,
+    node_tables,
+    publish,
 )
 from base.kernel_set import KernelSet
 
@@ -51,6 +53,8 @@ kernels = KernelSet(__name__, sources=(
     "apps.ca.hashlife.cellgrid",
     "apps.ca.hashlife.leaf",
     "apps.ca.hashlife.store",
+    "base.raw_views",
+    "base.raw_view_intrinsics",
 ))
 
 RULES, SCRATCH = "uint64[::1]", "uint64[:, ::1]"
@@ -90,10 +94,10 @@ def _known(n, T, level, nodes, meta):
     return np.int64(-2)
 
 
-def _leaf_step(node, T, nodes, slots, leaves, lslots, meta, R, G):
+def _leaf_step(node, T, at):
     """The leaf kernel each specialisation of ``_recursion`` binds in its place
     (``bits.leaves.advance`` or ``cellgrid.advance``): the centre of base-level ``node``
-    after T generations (0: its centre as it is)."""
+    after T generations (0: its centre as it is); ``at``: the tables' addresses."""
     raise NotImplementedError("bound per kind of leaf by kernels.specialise")
 
 
@@ -102,15 +106,17 @@ def _leaf_step(node, T, nodes, slots, leaves, lslots, meta, R, G):
 # of small jumps (gun 1.6 -> 0.7 ms, spacefiller 1.7 -> 0.8, puffer 95 -> 77).  A template,
 # compiled once per kind of leaf as that kind's export (below), ``_leaf_step`` bound to its
 # leaf kernel.
-def _recursion(node, T, nodes, slots, leaves, lslots, meta, R, G):
+def _recursion(node, T, at):
     """Centre of ``node`` after T generations (1 <= T <= 2**(level - 2 - s)); -1 if a table
-    is full."""
+    is full.  ``at``: the address of the store's meta holding the tables' addresses
+    (``_entry``): three arguments a call instead of 57 (9 arrays, base/raw_views.py)."""
+    nodes, slots, meta = node_tables(at)
     k = np.int64(nodes[np.uint64(node), LEVEL])
     found = _known(node, T, k, nodes, meta)  # (the recursion's callers looked already:
     if found != -2:  # this is for the first call, saving Python a kernel of its own)
         return found
     if k == meta[BASE]:
-        out = _leaf_step(node, T, nodes, slots, leaves, lslots, meta, R, G)
+        out = _leaf_step(node, T, at)
     else:
         h = k - 1
         t2 = min(T, np.int64(1) << (k - 3 - meta[SHIFT]))  # the four's: full speed if it can
@@ -143,25 +149,24 @@ def _recursion(node, T, nodes, slots, leaves, lslots, meta, R, G):
             if t1 > 0:
                 v = _known(n, t1, h, nodes, meta)
                 if v == -2:
-                    v = _recursion(n, t1, nodes, slots, leaves, lslots, meta, R, G)
+                    v = _recursion(n, t1, at)
             elif h == meta[LEAF] + 1:  # quadrants of leaves: the leaf kernel, 0 generations
-                v = _leaf_step(n, np.int64(0), nodes, slots, leaves, lslots, meta, R, G)
+                v = _leaf_step(n, np.int64(0), at)
             else:
                 v = _centre(n, h, nodes, slots, meta)
             if v < 0:
                 return np.int64(-1)
             fr[9 + i] = v
         for i in range(4):  # the four: rows y, y+1 and columns x, x+1 of the nine's results
-            at = 9 + 3 * (i >> 1) + (i & 1)
-            fr[18 + i] = join(fr[at], fr[at + 1], fr[at + 3], fr[at + 4], h, nodes, slots,
-                              meta)
+            r = 9 + 3 * (i >> 1) + (i & 1)
+            fr[18 + i] = join(fr[r], fr[r + 1], fr[r + 3], fr[r + 4], h, nodes, slots, meta)
         for i in range(4):
             n = fr[18 + i]
             if n < 0:
                 return np.int64(-1)
             v = _known(n, t2, h, nodes, meta)
             if v == -2:
-                v = _recursion(n, t2, nodes, slots, leaves, lslots, meta, R, G)
+                v = _recursion(n, t2, at)
             if v < 0:
                 return np.int64(-1)
             fr[22 + i] = v
@@ -175,13 +180,24 @@ def _recursion(node, T, nodes, slots, leaves, lslots, meta, R, G):
     return out
 
 
-# One export per kind of leaf, each compiled only with its own leaf kernel, each with one
-# signature (the same types: value leaves pass their store's unused leaf table).
+def _entry(node, T, nodes, slots, leaves, lslots, meta, R, G):
+    """Centre of ``node`` after T generations; -1 if a table is full."""
+    return _recursion(node, T, publish(nodes, slots, leaves, lslots, meta, R, G))
+
+
+# One recursion and export per kind of leaf, each compiled only with its own leaf kernel,
+# the export with one signature (the same types: value leaves pass their store's unused
+# leaf table).
 _SIGNATURE = f"int64(int64, int64, {TABLES}, {RULES}, {SCRATCH})"
-step_bits = kernels.specialise(_recursion, "step_bits", _SIGNATURE, {"_nrt": False},
-                               _leaf_step=bitleaves.advance)
-step_values = kernels.specialise(_recursion, "step_values", _SIGNATURE, {"_nrt": False},
-                                 _leaf_step=cellgrid.advance)
+_NO_NRT = {"_nrt": False}
+step_bits = kernels.specialise(
+    _entry, "step_bits", _SIGNATURE, _NO_NRT,
+    _recursion=kernels.specialise(_recursion, "recursion_bits", None, _NO_NRT,
+                                  _leaf_step=bitleaves.advance))
+step_values = kernels.specialise(
+    _entry, "step_values", _SIGNATURE, _NO_NRT,
+    _recursion=kernels.specialise(_recursion, "recursion_values", None, _NO_NRT,
+                                  _leaf_step=cellgrid.advance))
 
 
 def advance(node: int, T: int, store, R: np.ndarray, G: np.ndarray) -> int:  # a Store

@@ -28,9 +28,10 @@ import weakref
 
 import numpy as np
 
+from base import raw_views
 from base.kernel_set import KernelSet
 
-kernels = KernelSet(__name__)
+kernels = KernelSet(__name__, sources=("base.raw_views", "base.raw_view_intrinsics"))
 
 TOP_LEVEL = 17  # the 65536-square plane is level 16; stepping frames it in a level-17 node
 RES, RESJ, LEVEL, FULL = 4, 5, 6, 7  # node row columns after the four quadrants
@@ -44,7 +45,13 @@ EMPTY_LEAF, WALL_LEAF = 1, 2  # of bit leaves
 N_NODES, N_LEAVES, LEAF, BASE, SHIFT, REACH, HAS_WALL = range(7)
 EMPTY = 7
 WALL_AT = EMPTY + TOP_LEVEL + 1
-META = WALL_AT + TOP_LEVEL + 1
+# The tables' addresses and sizes, written by the kernel Python calls for the kernels it
+# calls to find them (base/raw_views.py): nodes, slots, leaves, leaf slots, rules, scratch;
+# node and leaf rows, rule words, scratch rows and columns.
+AT = WALL_AT + TOP_LEVEL + 1
+AT_NODES, AT_SLOTS, AT_LEAVES, AT_LSLOTS, AT_RULES, AT_SCRATCH = range(AT, AT + 6)
+N_ROWS, L_ROWS, R_WORDS, G_ROWS, G_COLUMNS = range(AT + 6, AT + 11)
+META = AT + 11
 # Then one frame per level for the recursion's nine and four squares and their results
 # (evolve.py: a level's call only calls the level below, so one frame a level suffices).
 FRAMES, FRAME = META, 32
@@ -185,6 +192,38 @@ def towers(words, nodes, slots, leaves, lslots, meta):
                 return -1
             meta[base + k] = n
     return 0
+
+
+@kernels.kernel(inline="always")
+def publish(nodes, slots, leaves, lslots, meta, R, G):
+    """Write the tables' (and the rules' and scratch's) addresses and sizes into ``meta``;
+    its own address, which is what the kernels called with it take."""
+    meta[AT_NODES], meta[AT_SLOTS] = raw_views.address(nodes), raw_views.address(slots)
+    meta[AT_LEAVES], meta[AT_LSLOTS] = raw_views.address(leaves), raw_views.address(lslots)
+    meta[AT_RULES], meta[AT_SCRATCH] = raw_views.address(R), raw_views.address(G)
+    meta[N_ROWS], meta[L_ROWS], meta[R_WORDS] = nodes.shape[0], leaves.shape[0], R.shape[0]
+    meta[G_ROWS], meta[G_COLUMNS] = G.shape[0], G.shape[1]
+    return raw_views.address(meta)
+
+
+@kernels.kernel(inline="always")
+def node_tables(at):
+    """(nodes, slots, meta) from meta's address (``publish``)."""
+    meta = raw_views.vector_at(at, META_SIZE, np.int64(0))
+    n = meta[N_ROWS]
+    return (raw_views.matrix_at(meta[AT_NODES], n, ROW, np.int32(0)),
+            raw_views.vector_at(meta[AT_SLOTS], 2 * n, np.int32(0)), meta)
+
+
+@kernels.kernel(inline="always")
+def all_tables(at):
+    """(nodes, slots, leaves, lslots, meta, R, G) from meta's address (``publish``)."""
+    nodes, slots, meta = node_tables(at)
+    m = meta[L_ROWS]
+    return (nodes, slots, raw_views.matrix_at(meta[AT_LEAVES], m, 8, np.uint64(0)),
+            raw_views.vector_at(meta[AT_LSLOTS], 2 * m, np.int32(0)), meta,
+            raw_views.vector_at(meta[AT_RULES], meta[R_WORDS], np.uint64(0)),
+            raw_views.matrix_at(meta[AT_SCRATCH], meta[G_ROWS], meta[G_COLUMNS], np.uint64(0)))
 
 
 class Store:

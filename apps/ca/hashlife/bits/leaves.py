@@ -19,10 +19,11 @@ from __future__ import annotations
 import numpy as np
 
 from apps.ca.hashlife.bits.rule import KIND_TOTALISTIC, LUT, TERM, TERM_ANY, TERM_BIRTH
-from apps.ca.hashlife.store import HAS_WALL, leaf
+from apps.ca.hashlife.store import HAS_WALL, all_tables, leaf
 from base.kernel_set import KernelSet
 
-kernels = KernelSet(__name__, sources=("apps.ca.hashlife.store",))
+kernels = KernelSet(__name__, sources=("apps.ca.hashlife.store", "base.raw_views",
+                                         "base.raw_view_intrinsics"))
 
 LOW = np.uint64(0xFFFFFFFF)
 HALF = np.uint64(0xFFFF)
@@ -155,9 +156,11 @@ def lookup(s, d, lo, hi, R, G):
 # One copy of each kernel's pass (not one per kind of wall or of pair): a first compile's
 # time grows with every inlined copy.
 @kernels.kernel(_nrt=False)
-def advance(node, gens, nodes, slots, leaves, lslots, meta, R, G):
+def advance(node, gens, at):
     """The centre leaf of level-5 ``node`` after ``gens`` (0..8) generations; -1 if the
-    leaf table is full.  (The arguments are the recursion's; ``slots`` is not needed.)"""
+    leaf table is full.  ``at``: the address of the store's meta with the tables' addresses
+    (store.publish)."""
+    nodes, _, leaves, lslots, meta, R, G = all_tables(at)
     walls = meta[HAS_WALL] != 0  # no wall anywhere until a bounded plane was framed
     load(np.int64(nodes[node, 0]), np.int64(nodes[node, 1]), np.int64(nodes[node, 2]),
          np.int64(nodes[node, 3]), leaves, walls, G)
