@@ -16,11 +16,13 @@ run's compile).  Every kernel returns -1 when a table is full.
 
 Written for numba's costs as measured: compiled without numba's runtime (``_nrt=False``:
 nothing here allocates), so array arguments are not atomically reference counted per call
-(that was half the time of small jumps); self-recursive only (a cached mutually recursive
-pair crashed the next process); the nine and four squares in scalars (no heap allocation
-per call); memoised results looked up before calling.  The module belongs to no kernel
-group: its kernels compile only inside a kind's entry, whose leaf kernel's group announces
-the compile.
+(that was half the time of small jumps); the tables handed on by address, not as arrays
+(base/raw_views.py: 3 arguments a call, not 57); self-recursive only (a cached mutually
+recursive pair crashed the next process); the nine and four squares in a frame per level
+in ``meta`` (no heap allocation per call, no indexed tuple); unsigned indices where numba
+would test for negative ones; memoised results looked up before calling.  The module
+belongs to no kernel group: its kernels compile only inside a kind's entry, whose leaf
+kernel's group announces the compile.
 """
 
 from __future__ import annotations
