@@ -16,7 +16,7 @@ population after it.  On both sides the table is made and the pattern loaded int
 tree before the clock starts (lifelib's ``lt.pattern(rle)`` builds its tree; ours is built
 the same way the first jump would, then adopted by the engine); the machine may be
 shared with other work, so the load average is printed beside each.  "ratio" is ours /
-lifelib on minimum CPU time (goal: at most 2).  "path" says which of our HashLife paths
+lifelib on minimum CPU time (goal: at most 1).  "path" says which of our HashLife paths
 ran (binary: two-state rules on a plane of 1s, 16 x 16-cell bit leaves; generic: leaves of
 life-form values), then its table: bytes allocated, nodes and leaves made.  Then the whole
 process of ``camlab88 ca run --engine hashlife`` for the three patterns, start-up

@@ -355,15 +355,11 @@ class Store:
         anew (the puffer train's jump spent 6 of 38 ms doubling 8,192 nodes up to 131,072).
         """
         grow_nodes, grow_leaves = self._full()
-        if not (grow_nodes or grow_leaves):
-            return False
-        for factor in (4, 2):
-            extra = (factor - 1) * ((self.nodes.nbytes + self.slots.nbytes if grow_nodes
-                                     else 0) + (self.leaves.nbytes + self.lslots.nbytes
-                                                if grow_leaves else 0))
-            if self.bytes + extra <= self.limit_bytes:
-                break
-        else:
+        full = (self.nodes.nbytes + self.slots.nbytes if grow_nodes else 0) + \
+            (self.leaves.nbytes + self.lslots.nbytes if grow_leaves else 0)
+        factor = next((f for f in (4, 2) if self.bytes + (f - 1) * full <= self.limit_bytes),
+                      0)
+        if not full or not factor:
             return False
         from apps.ca.hashlife.upkeep import LEAF_TABLE, NODE_TABLE, rehash  # its own group
 

@@ -58,19 +58,17 @@ def load(nw, ne, sw, se, leaves, walls, G):
 
 
 @kernels.kernel(inline="always")
-def centre(p, walls, G, leaves, lslots, meta):
-    """The leaf of the centre 16 x 16 of plane ``p`` (with the wall of plane 2, if any); -1
-    if the leaf table is full."""
+def centre(p, G, leaves, lslots, meta):
+    """The leaf of the centre 16 x 16 of plane ``p`` with the wall of plane 2 (zeros if
+    there is none: ``load``); -1 if the leaf table is full."""
     for half in range(2):
         plane = p if half == 0 else WALL
         for w in range(4):
-            out = np.uint64(0)
-            if half == 0 or walls:
-                a, b = G[plane, 5 + 2 * w], G[plane, 6 + 2 * w]
-                out = ((a >> np.uint64(8)) & HALF) | (((a >> np.uint64(40)) & HALF) << U16) | \
-                    (((b >> np.uint64(8)) & HALF) << U32) | \
-                    (((b >> np.uint64(40)) & HALF) << np.uint64(48))
-            G[CENTRE, 4 * half + w] = out
+            a, b = G[plane, 5 + 2 * w], G[plane, 6 + 2 * w]
+            G[CENTRE, 4 * half + w] = \
+                ((a >> np.uint64(8)) & HALF) | (((a >> np.uint64(40)) & HALF) << U16) | \
+                (((b >> np.uint64(8)) & HALF) << U32) | \
+                (((b >> np.uint64(40)) & HALF) << np.uint64(48))
     return leaf(G, CENTRE, 0, leaves, lslots, meta)
 
 
@@ -181,4 +179,4 @@ def advance(node, gens, at):
             lo = 5 - (gens - g + 1) // 2  # the words of rows 8-(gens-g) .. 23+(gens-g)
             lookup(s, 1 - s, lo, 18 - lo, R, G)
             s = 1 - s
-    return centre(s, walls, G, leaves, lslots, meta)
+    return centre(s, G, leaves, lslots, meta)
