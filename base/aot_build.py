@@ -20,7 +20,7 @@ source too); the build refuses one that does not. Needs a C compiler (pycc compi
 numba's runtime helpers with it); without one each module reports why and commands go on
 using the JIT-compiled kernels.
 
-``python -m base.aot_build --out DIR MODULE...`` is the child's command line.
+``python -m camlab88.base.aot_build --out DIR MODULE...`` is the child's command line.
 """
 
 from __future__ import annotations
@@ -35,10 +35,10 @@ from pathlib import Path
 from types import ModuleType
 from typing import TYPE_CHECKING
 
-from base import aot_load
+from camlab88.base import aot_load
 
 if TYPE_CHECKING:
-    from base.kernel_set import KernelSet
+    from camlab88.base.kernel_set import KernelSet
 
 BUILT, UP_TO_DATE = "built", "up to date"
 
@@ -54,7 +54,7 @@ def build(modules: tuple[str, ...], where: Path | None = None,
         env["PYTHONPATH"] = os.pathsep.join(p for p in (root, env.get("PYTHONPATH")) if p)
         try:
             done = subprocess.run(
-                [sys.executable, "-m", "base.aot_build", "--out", str(where), *modules],
+                [sys.executable, "-m", "camlab88.base.aot_build", "--out", str(where), *modules],
                 capture_output=True, text=True, env=env, timeout=timeout)
         except (OSError, subprocess.TimeoutExpired) as exc:
             return {m: f"failed: {type(exc).__name__}: {exc}" for m in modules}
@@ -65,7 +65,7 @@ def build(modules: tuple[str, ...], where: Path | None = None,
 
 def build_here(module: str, where: Path) -> str:
     """Build one module's extension in this process (which must be in JIT mode)."""
-    from base.kernel_set import SETS
+    from camlab88.base.kernel_set import SETS
 
     importlib.import_module(module)
     kernels = SETS.get(module)
@@ -120,7 +120,7 @@ class NoCompiler(RuntimeError):
 def kernel_dependencies(module: str) -> set[str]:
     """The other kernel modules whose kernels ``module``'s kernels may call (its globals
     holding such a module or one of its compiled kernels), transitively."""
-    from base.kernel_set import SETS
+    from camlab88.base.kernel_set import SETS
 
     found: set[str] = set()
     todo = [module]
@@ -139,7 +139,7 @@ def kernel_dependencies(module: str) -> set[str]:
 def _entry(name: str, dispatcher: object, signature: str) -> object:
     """A plain function of the export's arity calling the module's dispatcher: what pycc
     compiles (it takes Python functions, not dispatchers)."""
-    from base.aot_args import parse
+    from camlab88.base.aot_args import parse
 
     params = ", ".join(f"a{i}" for i in range(len(parse(signature))))
     namespace = {"_kernel": dispatcher}
@@ -148,7 +148,7 @@ def _entry(name: str, dispatcher: object, signature: str) -> object:
 
 
 def main(argv: list[str] | None = None) -> int:
-    p = argparse.ArgumentParser(prog="python -m base.aot_build")
+    p = argparse.ArgumentParser(prog="python -m camlab88.base.aot_build")
     p.add_argument("--out", type=Path, required=True)
     p.add_argument("modules", nargs="+")
     args = p.parse_args(argv)

@@ -129,7 +129,7 @@ def _source_files(module: str) -> tuple[str, ...]:
     import importlib.util
     import sys
 
-    from base.kernel_set import SETS
+    from camlab88.base.kernel_set import SETS
 
     kernels = SETS.get(module)
     files = []

@@ -42,7 +42,7 @@ import threading
 from dataclasses import dataclass, field
 from typing import Any
 
-from base.kernel_load import lean_cache_loads
+from camlab88.base.kernel_load import lean_cache_loads
 
 INTERRUPTED_STATUS = 130  # the shell's status for a process ended by SIGINT
 

@@ -29,7 +29,7 @@ from collections.abc import Callable
 from types import FunctionType, ModuleType
 from typing import Any
 
-from base import aot_args, aot_load
+from camlab88.base import aot_args, aot_load
 
 SETS: dict[str, KernelSet] = {}  # module name -> its set (the build looks them up here)
 
@@ -128,10 +128,9 @@ class KernelSet:
 
 def _njit() -> Any:
     """numba's njit, with its cache made to notice edits of a kernel's ``sources`` too."""
+    from camlab88.base import raw_views
+    from camlab88.base.kernel_load import stamps_cover_sources
     from numba import njit
-
-    from base import raw_views
-    from base.kernel_load import stamps_cover_sources
 
     stamps_cover_sources()
     raw_views.arm()  # kernels may hand arrays to each other by address

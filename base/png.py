@@ -30,7 +30,7 @@ def png_bytes(frame: np.ndarray) -> bytes:
 
 def write_png(frame: np.ndarray, path: str | os.PathLike[str]) -> Path:
     """Write ``frame`` (row 0 = top) as PNG at ``path``, atomically, creating its directory."""
-    from base.atomicfile import write_atomic
+    from camlab88.base.atomicfile import write_atomic
 
     data = png_bytes(frame)
     target = Path(path)

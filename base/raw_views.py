@@ -24,7 +24,7 @@ def arm() -> None:
     """Define ``address``, ``matrix_at`` and ``vector_at`` (imports numba).  Idempotent."""
     if "address" in globals():
         return
-    from base import raw_view_intrinsics as impl
+    from camlab88.base import raw_view_intrinsics as impl
 
     globals().update(address=impl.address, matrix_at=impl.matrix_at,
                      vector_at=impl.vector_at)

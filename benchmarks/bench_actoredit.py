@@ -12,14 +12,13 @@ import statistics
 import tempfile
 
 from _bench import times
-
-from apps.actors.editor import layout as L
-from apps.actors.editor.cell_types import CellType
-from apps.actors.editor.program import PREVIEW_EVERY, ActorEditor
-from apps.actors.editor.quantise import quantise
-from apps.actors.model import read_actors
-from apps.actors.preview import turntable
-from emulator.rainbow.session import in_process
+from camlab88.apps.actors.editor import layout as L
+from camlab88.apps.actors.editor.cell_types import CellType
+from camlab88.apps.actors.editor.program import PREVIEW_EVERY, ActorEditor
+from camlab88.apps.actors.editor.quantise import quantise
+from camlab88.apps.actors.model import read_actors
+from camlab88.apps.actors.preview import turntable
+from camlab88.emulator.rainbow.session import in_process
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CHESS = os.path.join(ROOT, "examples", "ca", "chess.actors")

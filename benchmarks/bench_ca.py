@@ -20,11 +20,10 @@ import platform
 import time
 
 import numpy as np
-
-from apps.ca.engine import Engine
-from apps.ca.library import pattern_path, rules_path
-from apps.ca.patterns import read_pattern
-from apps.ca.rules import load_rules
+from camlab88.apps.ca.engine import Engine
+from camlab88.apps.ca.library import pattern_path, rules_path
+from camlab88.apps.ca.patterns import read_pattern
+from camlab88.apps.ca.rules import load_rules
 
 LIFE = load_rules(rules_path("life"))
 

@@ -20,9 +20,8 @@ import time
 from pathlib import Path
 
 from _bench import ROOT, load
-
-from apps.cafilm.build import FilmSpec, build
-from apps.cafilm.film import render_image, shoot
+from camlab88.apps.cafilm.build import FilmSpec, build
+from camlab88.apps.cafilm.film import render_image, shoot
 
 
 def main() -> int:

@@ -19,14 +19,13 @@ import time
 from pathlib import Path
 
 import numpy as np
-
-from apps.snooker.camera import ccl, motion
-from apps.snooker.camera.motion import Motion
-from apps.snooker.camera.views import View
-from apps.snooker.camera_tool.tool import CameraTool
-from apps.snooker.visualiser.program import Visualiser
-from emulator.rainbow.session import in_process
-from protocols.rainbow.events import KeyEvent
+from camlab88.apps.snooker.camera import ccl, motion
+from camlab88.apps.snooker.camera.motion import Motion
+from camlab88.apps.snooker.camera.views import View
+from camlab88.apps.snooker.camera_tool.tool import CameraTool
+from camlab88.apps.snooker.visualiser.program import Visualiser
+from camlab88.emulator.rainbow.session import in_process
+from camlab88.protocols.rainbow.events import KeyEvent
 
 DATA = Path(__file__).resolve().parents[1] / "tests" / "data" / "snooker_camera"
 SCRIPT_1000 = """A 1000-frame script, the example of the thesis and then more of everything

@@ -20,11 +20,10 @@ import time
 from pathlib import Path
 
 import numpy as np
-
-from apps.ca.engine import CENTRE, Engine
-from apps.ca.library import rules_path
-from apps.ca.patterns import read_pattern, rle_lines
-from apps.ca.rules import load_rules
+from camlab88.apps.ca.engine import CENTRE, Engine
+from camlab88.apps.ca.library import rules_path
+from camlab88.apps.ca.patterns import read_pattern, rle_lines
+from camlab88.apps.ca.rules import load_rules
 
 SIDE = 4000
 RUNS = 3

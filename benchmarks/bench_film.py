@@ -17,21 +17,20 @@ import time
 from pathlib import Path
 
 from _bench import load
-
-from apps.snooker.camera.views import View
-from apps.snooker.film.backends import DaskCluster, InProcess, LocalPool
-from apps.snooker.film.schedule import render_film
-from apps.snooker.film.task import FrameTask, render_png, scene_digest
-from apps.snooker.render.scene import Scene
-from base.atomicfile import write_atomic
+from camlab88.apps.snooker.camera.views import View
+from camlab88.apps.snooker.film.backends import DaskCluster, InProcess, LocalPool
+from camlab88.apps.snooker.film.schedule import render_film
+from camlab88.apps.snooker.film.task import FrameTask, render_png, scene_digest
+from camlab88.apps.snooker.render.scene import Scene
+from camlab88.base.atomicfile import write_atomic
 
 
 def long_break(frames: int) -> Scene:
     """The opening break simulated for ``frames`` frames by the motion program's model."""
     import math
 
-    from apps.snooker.session import Session
-    from apps.snooker.table import CUE
+    from camlab88.apps.snooker.session import Session
+    from camlab88.apps.snooker.table import CUE
 
     s = Session.new_game()
     red, cue = s.balls.pos[7], s.balls.pos[CUE]
@@ -74,7 +73,7 @@ def figures(name: str, times: list[float], frames: int, base: float | None) -> f
 def main_process_cost(scene: Scene, task: FrameTask, repeat: int = 20) -> None:
     """What the scheduling process does per frame whatever the cluster: check the PNG
     decodes at its size, write it atomically (fsync) — the ceiling on frames/s."""
-    from apps.snooker.film.pngcheck import png_size
+    from camlab88.apps.snooker.film.pngcheck import png_size
 
     data = render_png(scene, task)
     out = Path(tempfile.mkdtemp(prefix="bench-film-"))

@@ -32,7 +32,8 @@ import sys
 import time
 from pathlib import Path
 
-from apps.ca.library import pattern_path
+from camlab88.apps.ca.library import pattern_path
+
 from tests.ca.golly_oracle import DATA, bgolly
 
 HERE = Path(__file__).parent

@@ -40,13 +40,13 @@ import sys
 import time
 from pathlib import Path
 
-from apps.ca.engine import CENTRE, Engine
-from apps.ca.hashlife import tree as trees
-from apps.ca.hashlife.algorithm import HashLife
-from apps.ca.hashlife.generic import GenericRun
-from apps.ca.library import pattern_path, rules_path
-from apps.ca.patterns import read_pattern
-from apps.ca.rules import load_rules
+from camlab88.apps.ca.engine import CENTRE, Engine
+from camlab88.apps.ca.hashlife import tree as trees
+from camlab88.apps.ca.hashlife.algorithm import HashLife
+from camlab88.apps.ca.hashlife.generic import GenericRun
+from camlab88.apps.ca.library import pattern_path, rules_path
+from camlab88.apps.ca.patterns import read_pattern
+from camlab88.apps.ca.rules import load_rules
 
 HERE = Path(__file__).parent
 CASES = [("acorn", pattern_path("acorn"), 5206),

@@ -13,10 +13,10 @@ from pathlib import Path
 import numpy as np
 from _bench import times
 
-from apps.kas import files, timing
-from apps.kas.files import SamplePath
-from apps.kas.inbetween import inbetween, inbetween_keys
-from apps.kas.model import Chain, Drawing
+from camlab88.apps.kas import files, timing
+from camlab88.apps.kas.files import SamplePath
+from camlab88.apps.kas.inbetween import inbetween, inbetween_keys
+from camlab88.apps.kas.model import Chain, Drawing
 
 
 def keyframe(seed: int, chains: int, total: int) -> Drawing:
@@ -63,8 +63,9 @@ def main() -> None:
                      best(lambda: files.save_sequence(f, seq), 1)))
         rows.append(("load it back", best(lambda: files.load_sequence(f), 1)))
         size = f.stat().st_size
-    code = ("import time; t = time.perf_counter(); from apps.kas.model import Chain, Drawing; "
-            "from apps.kas.inbetween import inbetween; "
+    code = ("import time; t = time.perf_counter(); "
+            "from camlab88.apps.kas.model import Chain, Drawing; "
+            "from camlab88.apps.kas.inbetween import inbetween; "
             "d = Drawing([Chain.from_points([(0, 0), (1, 1), (2, 0)])]); inbetween(d, d, 3); "
             "print(time.perf_counter() - t)")
     first = float(subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,

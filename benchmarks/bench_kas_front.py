@@ -8,17 +8,17 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
-from apps.kas import demo
-from apps.kas.editor import Editor
-from apps.kas.program import EditorFront, LineTest, Session, parse_timed_script
-from apps.kas.program.draw import encode
-from apps.kas.program.keyboard import key_to_bytes
-from apps.kas.program.viewer import VIEW_CLIP, ViewerHost, chain_prims, frame_points_px
-from emulator.harness.sigma import SigmaSessionRun
-from emulator.harness.sigma_batch import host_periods
-from emulator.machine import SigmaMachine
-from protocols.link import LineSettings
-from protocols.sigma import Encoder
+from camlab88.apps.kas import demo
+from camlab88.apps.kas.editor import Editor
+from camlab88.apps.kas.program import EditorFront, LineTest, Session, parse_timed_script
+from camlab88.apps.kas.program.draw import encode
+from camlab88.apps.kas.program.keyboard import key_to_bytes
+from camlab88.apps.kas.program.viewer import VIEW_CLIP, ViewerHost, chain_prims, frame_points_px
+from camlab88.emulator.harness.sigma import SigmaSessionRun
+from camlab88.emulator.harness.sigma_batch import host_periods
+from camlab88.emulator.machine import SigmaMachine
+from camlab88.protocols.link import LineSettings
+from camlab88.protocols.sigma import Encoder
 
 ROOT = Path(__file__).resolve().parent.parent
 

@@ -14,7 +14,13 @@ import tempfile
 import time
 from fractions import Fraction
 
-from protocols.link import LineSettings, Recorder, SerialLine, chunks_by_period, read_recording
+from camlab88.protocols.link import (
+    LineSettings,
+    Recorder,
+    SerialLine,
+    chunks_by_period,
+    read_recording,
+)
 
 
 def timed(fn) -> float:
@@ -109,9 +115,9 @@ def bench_recording(nbytes: int = 200_000) -> str:
 def main() -> None:
     base = timed(lambda: subprocess.run([sys.executable, "-c", "pass"], check=True))
     full = timed(
-        lambda: subprocess.run([sys.executable, "-c", "import protocols.link"], check=True)
+        lambda: subprocess.run([sys.executable, "-c", "import camlab88.protocols.link"], check=True)
     )
-    print(f"import protocols.link: {1000 * (full - base):.0f} ms over a bare interpreter")
+    print(f"import camlab88.protocols.link: {1000 * (full - base):.0f} ms over a bare interpreter")
     for bench in (
         bench_big_write_read_per_frame,
         bench_small_writes,

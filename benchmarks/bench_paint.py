@@ -13,14 +13,14 @@ import os
 import statistics
 import time
 
-from apps.kas import files
-from apps.kas.inbetween import inbetween
-from apps.kas.library import LIBRARY
-from apps.kas.paint.ops import Op, OpsFile
-from apps.kas.paint.program import Line, PaintProgram
-from apps.kas.paint.replay import replay
-from apps.kas.superimpose import superimpose
-from emulator.sigma import Terminal
+from camlab88.apps.kas import files
+from camlab88.apps.kas.inbetween import inbetween
+from camlab88.apps.kas.library import LIBRARY
+from camlab88.apps.kas.paint.ops import Op, OpsFile
+from camlab88.apps.kas.paint.program import Line, PaintProgram
+from camlab88.apps.kas.paint.replay import replay
+from camlab88.apps.kas.superimpose import superimpose
+from camlab88.emulator.sigma import Terminal
 
 
 def sequence():

@@ -10,10 +10,9 @@ import statistics
 
 import numpy as np
 from _bench import rate, times
-
-from emulator.rainbow import Rainbow
-from emulator.rainbow.compiler import Compiler
-from emulator.rainbow.session import in_process
+from camlab88.emulator.rainbow import Rainbow
+from camlab88.emulator.rainbow.compiler import Compiler
+from camlab88.emulator.rainbow.session import in_process
 
 
 def scene(n: int, seed: int = 0) -> tuple[Rainbow, list[int]]:

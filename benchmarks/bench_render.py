@@ -14,13 +14,13 @@ import time
 
 import numpy as np
 from _bench import load, times
+from camlab88.apps.snooker.render.metrics import score
+from camlab88.apps.snooker.render.palette import adaptive_palette, fixed_palette
+from camlab88.apps.snooker.render.sigma_host import SigmaHost
+from camlab88.apps.snooker.render.sigma_session import SigmaSession
+from camlab88.apps.snooker.render.truecolour import RenderOptions, render_frame, render_linear
+from camlab88.emulator.harness.sigma_batch import t5688_link
 
-from apps.snooker.render.metrics import score
-from apps.snooker.render.palette import adaptive_palette, fixed_palette
-from apps.snooker.render.sigma_host import SigmaHost
-from apps.snooker.render.sigma_session import SigmaSession
-from apps.snooker.render.truecolour import RenderOptions, render_frame, render_linear
-from emulator.harness.sigma_batch import t5688_link
 from tests.snooker_render.helpers import break_scene, break_views
 
 
@@ -43,12 +43,12 @@ def bench_truecolour(repeat: int) -> None:
 def bench_numba_pays(repeat: int) -> None:
     """The compiled kernels against numpy doing the same work (docs/development.md: numba
     only where measured to pay)."""
-    from apps.snooker.render.frame import frame_geometry
-    from apps.snooker.render.gamma import encode, encode_image
-    from apps.snooker.render.materials import BALL_PHONG
-    from apps.snooker.render.painter import BallItem
-    from apps.snooker.render.shading import lights_array, phong
-    from apps.snooker.render.truecolour import draw_ball
+    from camlab88.apps.snooker.render.frame import frame_geometry
+    from camlab88.apps.snooker.render.gamma import encode, encode_image
+    from camlab88.apps.snooker.render.materials import BALL_PHONG
+    from camlab88.apps.snooker.render.painter import BallItem
+    from camlab88.apps.snooker.render.shading import lights_array, phong
+    from camlab88.apps.snooker.render.truecolour import draw_ball
 
     scene, view = break_scene(), break_views()[0]
     lin = render_linear(scene, view)

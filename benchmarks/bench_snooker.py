@@ -15,11 +15,11 @@ import platform
 import statistics
 import time
 
-import apps.snooker.physics as physics
-from apps.snooker.events import HAVE_NUMBA
-from apps.snooker.layout import break_off
-from apps.snooker.table import Table
-from apps.snooker.timeline import Timeline
+import camlab88.apps.snooker.physics as physics
+from camlab88.apps.snooker.events import HAVE_NUMBA
+from camlab88.apps.snooker.layout import break_off
+from camlab88.apps.snooker.table import Table
+from camlab88.apps.snooker.timeline import Timeline
 
 REPEATS = 15
 

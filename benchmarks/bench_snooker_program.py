@@ -13,12 +13,12 @@ import platform
 import statistics
 import time
 
-from apps.snooker.layout import break_off_direction
-from apps.snooker.program.demo import break_session
-from apps.snooker.program.program import Program
-from apps.snooker.table import CUE
-from emulator.rainbow.session import in_process
-from protocols.rainbow.events import MouseEvent
+from camlab88.apps.snooker.layout import break_off_direction
+from camlab88.apps.snooker.program.demo import break_session
+from camlab88.apps.snooker.program.program import Program
+from camlab88.apps.snooker.table import CUE
+from camlab88.emulator.rainbow.session import in_process
+from camlab88.protocols.rainbow.events import MouseEvent
 
 REPEATS = 5
 

@@ -9,10 +9,10 @@ import platform
 import time
 from pathlib import Path
 
-from protocols.tablets.events import TabletEvent
-from protocols.tablets.hid_decode import PenDecoder
-from protocols.tablets.hid_descriptor import parse_descriptor, parse_hex_text
-from protocols.tablets.registry import PROTOCOL_NAMES, make_encoder, make_parser
+from camlab88.protocols.tablets.events import TabletEvent
+from camlab88.protocols.tablets.hid_decode import PenDecoder
+from camlab88.protocols.tablets.hid_descriptor import parse_descriptor, parse_hex_text
+from camlab88.protocols.tablets.registry import PROTOCOL_NAMES, make_encoder, make_parser
 
 DATA = Path(__file__).resolve().parents[1] / "tests" / "data" / "tablets" / "digimend-tablets"
 N = 20000

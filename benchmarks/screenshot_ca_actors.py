@@ -13,9 +13,9 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from apps.cafilm.build import FilmSpec, build  # noqa: E402
-from apps.cafilm.film import render_image  # noqa: E402
-from base.png import write_png  # noqa: E402
+from camlab88.apps.cafilm.build import FilmSpec, build  # noqa: E402
+from camlab88.apps.cafilm.film import render_image  # noqa: E402
+from camlab88.base.png import write_png  # noqa: E402
 
 
 def main() -> int:

@@ -9,10 +9,11 @@ from __future__ import annotations
 
 import sys
 
-from apps.ca.program import stepping
-from apps.ca.program.menus import MainMenu, main_item_point
-from apps.ca.program.program import Options
-from base.png import write_png
+from camlab88.apps.ca.program import stepping
+from camlab88.apps.ca.program.menus import MainMenu, main_item_point
+from camlab88.apps.ca.program.program import Options
+from camlab88.base.png import write_png
+
 from tests.ca_program.driver import Driver
 
 

@@ -15,14 +15,14 @@ __all__ = ["ProtocolError", "Rainbow", "Sigma", "TraceEvent"]
 _HOMES = {
     "Sigma": "camlab88.bench.sigma",
     "Rainbow": "camlab88.bench.rainbow",
-    "ProtocolError": "emulator.protocol_trace",
-    "TraceEvent": "emulator.protocol_trace",
+    "ProtocolError": "camlab88.emulator.protocol_trace",
+    "TraceEvent": "camlab88.emulator.protocol_trace",
 }
 
 if TYPE_CHECKING:
     from camlab88.bench.rainbow import Rainbow
     from camlab88.bench.sigma import Sigma
-    from emulator.protocol_trace import ProtocolError, TraceEvent
+    from camlab88.emulator.protocol_trace import ProtocolError, TraceEvent
 
 
 def __getattr__(name: str) -> Any:

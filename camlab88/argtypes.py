@@ -1,5 +1,6 @@
 """Argument types that more than one command area parses the same way (argparse ``type=``):
-a frame size and a film file. Command areas may not import each other, so they meet here."""
+a frame size, a film file and a Dask address. Command areas may not import each other, so
+they meet here."""
 
 from __future__ import annotations
 
@@ -34,6 +35,16 @@ def film_of_kind(ext: str) -> Callable[[str], Path]:
             raise argparse.ArgumentTypeError(f"{text}: expected a {ext} file")
         return Path(text)
     return check
+
+
+def dask_address(text: str) -> str:
+    """``--dask ADDRESS|local``: Dask's ``distributed`` is an extra; without it, say which."""
+    import importlib.util
+
+    if importlib.util.find_spec("distributed") is None:
+        raise argparse.ArgumentTypeError(
+            "rendering on Dask needs the dask extra: pip install 'camlab88[dask]'")
+    return text
 
 
 mp4_file = film_of_kind(".mp4")

@@ -49,7 +49,7 @@ def _suggestion(message: str) -> str:
     if m is None:
         return ""
     choices = re.findall(r"'([^']*)'", m[2]) or [c.strip() for c in m[2].split(",")]
-    from base.suggest import did_you_mean
+    from camlab88.base.suggest import did_you_mean
 
     return did_you_mean(m[1], choices)
 
@@ -218,11 +218,28 @@ def _one_blas_thread() -> None:
         os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 
+def _user_kernel_cache() -> None:
+    """numba caches compiled kernels beside their sources by default, and for an installed
+    camlab88 that is inside site-packages, where pip never removes them. The command caches
+    them per user instead (``$XDG_CACHE_HOME/camlab88/numba``, else ``~/.cache/...``), through
+    numba's documented ``NUMBA_CACHE_DIR``; a user's own setting wins; children inherit it."""
+    import os
+
+    if "numba" in sys.modules or "NUMBA_CACHE_DIR" in os.environ:
+        return
+    if os.name == "nt":
+        home = os.environ.get("LOCALAPPDATA") or os.path.expanduser("~")
+    else:
+        home = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    os.environ["NUMBA_CACHE_DIR"] = os.path.join(home, "camlab88", "numba")
+
+
 def entry(argv: Sequence[str] | None = None) -> int:
     """The console script and ``python -m camlab88``: ``main``, with a command's one-line
     refusal (``SystemExit("camlab88 X: why")``, which Python would end with status 1)
     printed and ended with status 2, a usage or input error like every other."""
     _one_blas_thread()
+    _user_kernel_cache()
     try:
         return main(argv)
     except SystemExit as exc:

@@ -53,14 +53,15 @@ TYPES = {
     "film_path": "camlab88.argtypes:film_path",
     "mp4_file": "camlab88.argtypes:mp4_file",
     "gif_file": "camlab88.argtypes:gif_file",
+    "dask_address": "camlab88.argtypes:dask_address",
 }
 
 # sentences several commands' prose shares: {NAME} -> "module:constant"
 SNIPPETS = {
     "HEADLESS_NEEDS_EVENTS": "camlab88.scriptopts:HEADLESS_NEEDS_EVENTS",
-    # the link tools' lines, shared with `python -m protocols.link`
-    "LINK_ECHO_HELP": "protocols.link.cli_args:ECHO_HELP",
-    "LINK_STREAM_HELP": "protocols.link.cli_args:STREAM_HELP",
+    # the link tools' lines, shared with `python -m camlab88.protocols.link`
+    "LINK_ECHO_HELP": "camlab88.protocols.link.cli_args:ECHO_HELP",
+    "LINK_STREAM_HELP": "camlab88.protocols.link.cli_args:STREAM_HELP",
 }
 
 _PROSE = ("help", "description", "epilog")
@@ -96,7 +97,7 @@ def read_spec(path: Path) -> dict[str, Any]:
 def _keep(copy: Path, source: bytes, spec: dict[str, Any]) -> None:
     """Write the parse's copy atomically (the .pyc files' trust: marshal data beside the
     code); a read-only install, or a value marshal cannot hold, keeps none."""
-    from base.atomicfile import write_atomic
+    from camlab88.base.atomicfile import write_atomic
 
     try:
         data = marshal.dumps((source, spec))

@@ -14,12 +14,12 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:  # the harness (and numpy) load when a command runs, not for its --help
-    from emulator.harness.control_options import Controls
+    from camlab88.emulator.harness.control_options import Controls
 
 
 def speed(text: str) -> float:
     """``--speed X``: a number from 0.1 to 1000 (1 = the period's speed)."""
-    from emulator.harness.control_options import SPEED_MAX, SPEED_MIN
+    from camlab88.emulator.harness.control_options import SPEED_MAX, SPEED_MIN
 
     try:
         value = float(text)
@@ -32,7 +32,7 @@ def speed(text: str) -> float:
 
 
 def video(text: str) -> Path:
-    from emulator.harness.video import FORMATS
+    from camlab88.emulator.harness.video import FORMATS
 
     path = Path(text)
     if path.suffix.lower() not in FORMATS:
@@ -56,8 +56,8 @@ def add_control_options(p: argparse.ArgumentParser, speed_flag: bool = True) -> 
 
 def controls_from_args(args: argparse.Namespace, command: str, headless: bool) -> Controls:
     """Controls from the flags (absent flags: the defaults); outputs checked now."""
+    from camlab88.emulator.harness.control_options import Controls
     from camlab88.runopts import check_output
-    from emulator.harness.control_options import Controls
 
     c = Controls(speed=getattr(args, "speed", None), video=getattr(args, "video", None),
                  inspect=bool(getattr(args, "inspect", False)),

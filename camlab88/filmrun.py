@@ -16,7 +16,7 @@ def run_film(command: str, inputs: Iterable[str | Path | None], film: Callable[[
     """``film()`` once every given input exists (else ``FILE: no such file``, not a raw
     [Errno 2]); an interrupt is reported in one line and raised again (cli.main gives the
     exit status, 130 or 143); ``refusals`` become one line and exit 2."""
-    from apps.snooker.camera.errors import CclErrors
+    from camlab88.apps.snooker.camera.errors import CclErrors
 
     missing = [p for p in inputs if p is not None and not Path(p).exists()]
     if missing:

@@ -9,7 +9,7 @@ import sys
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from emulator.harness import RunOptions
+    from camlab88.emulator.harness import RunOptions
 
 SOURCE_FORMS = "hid:VID:PID, serial:PORT?protocol=P, or a pyserial URL?protocol=P"
 
@@ -26,8 +26,8 @@ def open_tablet(command: str, text: str | None, opts: RunOptions) -> Any:
     clock, so its run is paced live."""
     if not text:
         return None
-    from emulator.tablet_input.taped import TapedTablet
-    from protocols.tablets.sources import SourceError
+    from camlab88.emulator.tablet_input.taped import TapedTablet
+    from camlab88.protocols.tablets.sources import SourceError
 
     try:
         tablet = TapedTablet.open(text, opts.record is not None)
@@ -41,8 +41,8 @@ def open_tablet(command: str, text: str | None, opts: RunOptions) -> Any:
 def feed_tablet(command: str, tablet: Any, session: Any) -> None:
     """The tablet's new reports to the device's tablet input; a lost tablet is reported once
     and closed (not read again: its tape keeps what it said)."""
-    from emulator.rainbow.host_input import tablet_event
-    from protocols.tablets.sources import SourceLost
+    from camlab88.emulator.rainbow.host_input import tablet_event
+    from camlab88.protocols.tablets.sources import SourceLost
 
     try:
         for ev in tablet.read(0.0):

@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from emulator.harness import RunOptions
+    from camlab88.emulator.harness import RunOptions
 
 
 def frames_dir(text: str) -> Path:
@@ -67,7 +67,7 @@ def run_options(args: argparse.Namespace, command: str, can_headless: str | None
                 refuse_hint: str = "give --headless", argv: list[str] | None = None,
                 ) -> RunOptions:
     """RunOptions from the shared flags; the display rule decides window or headless."""
-    from emulator.harness import RunOptions, choose_headless, replay
+    from camlab88.emulator.harness import RunOptions, choose_headless, replay
 
     active = replay.active()
     if active is not None:  # the program decides as in the recorded run; the replay's own
@@ -116,7 +116,7 @@ def check_output(command: str, path: Path, doing: str = "write") -> None:
     if not parent.is_dir() or not os.access(parent, os.W_OK):
         why = "read-only" if parent.is_dir() else "missing"
         raise SystemExit(f"{command}: cannot {doing} {path}: its directory {parent} is {why}")
-    from base.atomicfile import probe
+    from camlab88.base.atomicfile import probe
 
     try:
         probe(path)  # a full disk shows now, not after the run

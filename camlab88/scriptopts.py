@@ -8,8 +8,8 @@ import argparse
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from emulator.harness import RunOptions
-    from protocols.rainbow.script import Player
+    from camlab88.emulator.harness import RunOptions
+    from camlab88.protocols.rainbow.script import Player
 
 HEADLESS_NEEDS_EVENTS = ("Headless it needs --events (the run ends with the script) or "
                          "--stop-after N.")
@@ -23,7 +23,7 @@ def add_events_option(p: argparse.ArgumentParser) -> None:
 
 def events_player(path: str | None) -> Player | None:
     """The --events script's player, or None without one (ScriptError names file:line)."""
-    from protocols.rainbow.script import Player, load
+    from camlab88.protocols.rainbow.script import Player, load
 
     return Player(load(path)) if path else None
 

@@ -64,8 +64,8 @@ def rerun(ctx: Any) -> tuple[int, str]:
     context ``ctx``; returns its exit status and the tail of what it printed. Raises
     ReplayRefused for a command line or input file a replay will not use."""
     from camlab88 import cli
+    from camlab88.emulator.harness.replay import replaying
     from camlab88.replay_policy import checked_argv
-    from emulator.harness.replay import replaying
 
     argv = checked_argv(ctx.rec.argv)
     home = Path.cwd()
@@ -87,7 +87,7 @@ def _own_library(root: Path) -> Any:
     library (kas path) changes the copy, never the user's."""
     import shutil
 
-    from apps.kas import library
+    from camlab88.apps.kas import library
 
     copy = root / "_kas_library"
     if library.user_dir().is_dir():

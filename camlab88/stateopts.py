@@ -12,7 +12,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from emulator.harness.program_state import StateOptions
+    from camlab88.emulator.harness.program_state import StateOptions
 
 
 def seconds(text: str) -> Fraction:
@@ -39,8 +39,8 @@ def add_state_options(p: argparse.ArgumentParser) -> None:
 def state_options(args: argparse.Namespace, command: str, active: Any) -> StateOptions:
     """The StateOptions of a run (always present: the window keys need them)."""
     from camlab88 import __version__
+    from camlab88.emulator.harness.program_state import StateOptions
     from camlab88.runopts import check_output
-    from emulator.harness.program_state import StateOptions
 
     save, at, load = (getattr(args, n, None) for n in ("save_state", "at", "load_state"))
     if at is not None and save is None:

@@ -25,7 +25,7 @@ class TraceRun:
     """What a command traces into: ``sink`` (None when neither option is given)."""
 
     def __init__(self, args: argparse.Namespace, command: str, source: str) -> None:
-        from emulator.protocol_trace import TraceFile
+        from camlab88.emulator.protocol_trace import TraceFile
 
         self.command, self.source = command, source
         self.strict = bool(getattr(args, "strict_protocol", False))
@@ -53,7 +53,7 @@ class TraceRun:
 def open_trace(args: argparse.Namespace, command: str, source: str) -> Iterator[TraceRun]:
     """The trace file is written (atomically) however the block ends; a ProtocolError
     (strict) becomes one line on stderr and ``failed``."""
-    from emulator.protocol_trace import ProtocolError
+    from camlab88.emulator.protocol_trace import ProtocolError
 
     run = TraceRun(args, command, source)
     try:

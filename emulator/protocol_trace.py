@@ -48,7 +48,7 @@ class TraceFile:
     def __init__(self, path: str) -> None:
         from contextlib import ExitStack
 
-        from base.atomicfile import atomic_output
+        from camlab88.base.atomicfile import atomic_output
 
         self.path = path
         self._stack = ExitStack()

@@ -13,8 +13,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-
-from emulator.host_input import HostEvent, KeyDown, KeyUp, PointerButton, PointerMove, Quit
+from camlab88.emulator.host_input import HostEvent, KeyDown, KeyUp, PointerButton, PointerMove, Quit
 
 _SPECIAL_KEYS = {
     "return": "return",
@@ -118,7 +117,7 @@ class Window:
 
     def screenshot(self, path: str | os.PathLike[str]) -> Path:
         """Save the window surface as a PNG, atomically (base.png, the one writer)."""
-        from base.png import write_png
+        from camlab88.base.png import write_png
 
         return write_png(self.pixels(), path)
 
@@ -219,11 +218,11 @@ def test_card(width: int, height: int) -> np.ndarray:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """``python -m emulator.window``: show a test card; report input events on stdout."""
+    """``python -m camlab88.emulator.window``: show a test card; report input events on stdout."""
     import argparse
 
     parser = argparse.ArgumentParser(
-        prog="python -m emulator.window",
+        prog="python -m camlab88.emulator.window",
         description="Open the camlab88 window with a test card and print the host input "
         "events it produces (device pixel coordinates). Close the window or press Escape.",
     )
@@ -236,10 +235,10 @@ def main(argv: list[str] | None = None) -> int:
         width, height = (int(v) for v in args.size.lower().split("x"))
     except ValueError:
         parser.error(f"--size must be WxH, not {args.size!r}")
-    from emulator.harness.display import display_available
+    from camlab88.emulator.harness.display import display_available
 
     if not display_available():  # the one display rule: never an invisible window
-        print("python -m emulator.window: no display for a window (set DISPLAY, or run "
+        print("python -m camlab88.emulator.window: no display for a window (set DISPLAY, or run "
               "under xvfb-run)", file=sys.stderr)
         return 2
     frame = test_card(width, height)
@@ -261,12 +260,12 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def run_module(argv: list[str] | None = None) -> int:
-    """``main`` as ``python -m emulator.window`` runs it: Ctrl-C quits as Escape does, with
+    """``main`` as ``python -m camlab88.emulator.window`` runs it: Ctrl-C quits as Escape does, with
     the shell's status for an interrupt and no traceback."""
     try:
         return main(argv)
     except KeyboardInterrupt:
-        print("python -m emulator.window: interrupted", file=sys.stderr)
+        print("python -m camlab88.emulator.window: interrupted", file=sys.stderr)
         return 130
 
 

@@ -23,10 +23,10 @@ import sys
 from collections.abc import Callable
 from pathlib import Path
 
-from base.atomicfile import write_atomic
-from protocols.sigma.drivers import PgplotGoc, RalGks
-from protocols.sigma.encoder import Encoder
-from protocols.sigma.orders import CR, GRAPHICS_FLAG, LF
+from camlab88.base.atomicfile import write_atomic
+from camlab88.protocols.sigma.drivers import PgplotGoc, RalGks
+from camlab88.protocols.sigma.encoder import Encoder
+from camlab88.protocols.sigma.orders import CR, GRAPHICS_FLAG, LF
 
 HERE = Path(__file__).resolve().parent
 
@@ -340,7 +340,7 @@ def ca_actors_session(out: Path) -> None:
 def snooker_files(out: Path) -> None:
     """A new game saved before the break (a session) and the break played out
     (a §6.2.2 checkpoint)."""
-    from apps.snooker.session import Session
+    from camlab88.apps.snooker.session import Session
 
     Session.new_game().save(out / "snooker" / "opening.json")
     _cli(["snooker", "simulate", "--break", "5", "--out", str(out / "snooker" / "break.cp")])
@@ -367,7 +367,7 @@ MADE = ["ca/session.log", "snooker/opening.json", "snooker/break.cp",
 
 
 def _actors_events() -> str:
-    from apps.actors.editor.demo import demo_events
+    from camlab88.apps.actors.editor.demo import demo_events
 
     return demo_events()
 

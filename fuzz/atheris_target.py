@@ -28,14 +28,14 @@ OURS = ("apps", "protocols", "emulator", "camlab88")  # the packages whose code 
 
 def _holds_kernels(module: Any) -> bool:
     dispatcher = getattr(sys.modules.get("numba.core.dispatcher"), "Dispatcher", None)
-    lazy = getattr(sys.modules.get("base.lazy_kernels"), "LazyKernels", None)
+    lazy = getattr(sys.modules.get("camlab88.base.lazy_kernels"), "LazyKernels", None)
     kinds = tuple(k for k in (dispatcher, lazy) if k is not None)
     return bool(kinds) and any(isinstance(v, kinds) for v in vars(module).values())
 
 
 def kernel_modules() -> set[str]:
     """Names of the loaded modules whose functions numba compiles (or may compile later)."""
-    notice = sys.modules.get("base.kernel_notice")
+    notice = sys.modules.get("camlab88.base.kernel_notice")
     names = set(notice._state.groups) if notice is not None else set()
     names |= {name for name, mod in list(sys.modules.items())
               if mod is not None and _holds_kernels(mod)}

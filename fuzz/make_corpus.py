@@ -31,8 +31,8 @@ def _copy(target: str, *paths: Path) -> None:
 
 
 def _rainbow() -> None:
-    from emulator.rainbow.session import in_process
-    from protocols.rainbow.stream import encode
+    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.protocols.rainbow.stream import encode
 
     _put("rainbow-scene", "small.json", '{"lut": [[0, "#000000"], [1, "#ff0000"]], "nodes": '
          '{"c": {"type": "cluster", "width": 64, "height": 32}, "p": {"type": "pad", "width": '
@@ -54,9 +54,9 @@ def _rainbow() -> None:
 
 
 def _link_and_sigma() -> None:
-    from emulator.sigma import Terminal, state
-    from protocols.link import LineSettings, Recorder, SerialLine
-    from protocols.sigma.demo import (
+    from camlab88.emulator.sigma import Terminal, state
+    from camlab88.protocols.link import LineSettings, Recorder, SerialLine
+    from camlab88.protocols.sigma.demo import (
         sigma_animation_stream,
         sigma_demo_stream,
         sigma_picture_stream,
@@ -81,8 +81,8 @@ def _link_and_sigma() -> None:
 
 
 def _kas() -> None:
-    from apps.kas import files
-    from apps.kas.model import AnimSequence
+    from camlab88.apps.kas import files
+    from camlab88.apps.kas.model import AnimSequence
 
     a = files.load_keyframe(KAS_LIB / "walk_a.kas")
     b = files.load_keyframe(KAS_LIB / "walk_b.kas")
@@ -95,17 +95,17 @@ def _kas() -> None:
 def _snooker() -> None:
     import json
 
-    from apps.snooker.session import Session
+    from camlab88.apps.snooker.session import Session
 
     _put("snooker-session", "new.json", json.dumps(Session.new_game().to_json()))
     _copy("snooker-checkpoint", DATA / "snooker" / "thesis_example.cp")
 
 
 def _ca() -> None:
-    from apps.ca import log
-    from apps.ca.engine import Engine
-    from apps.ca.patterns import format_mc, read_pattern
-    from apps.ca.rules import load_rules
+    from camlab88.apps.ca import log
+    from camlab88.apps.ca.engine import Engine
+    from camlab88.apps.ca.patterns import format_mc, read_pattern
+    from camlab88.apps.ca.rules import load_rules
 
     _copy("ca-rules", CA_LIB / "life.rules", CA_LIB / "maze.rules",
           DATA / "ca" / "figure_7_6.rules")
@@ -132,9 +132,9 @@ def _ca() -> None:
 
 
 def _tablets() -> None:
-    from protocols.tablets.events import TabletEvent
-    from protocols.tablets.hid_descriptor import parse_hex_text
-    from protocols.tablets.registry import make_encoder
+    from camlab88.protocols.tablets.events import TabletEvent
+    from camlab88.protocols.tablets.hid_descriptor import parse_hex_text
+    from camlab88.protocols.tablets.registry import make_encoder
 
     for name, proto in (("tablet-wacom4", "wacom4"), ("tablet-summa", "summa-mm"),
                         ("tablet-bitpad1", "bitpad1"), ("tablet-bitpad2", "bitpad2"),
@@ -161,12 +161,12 @@ def _scripts_and_views() -> None:
 def _kas_paint() -> None:
     """Operations files written by opsfile: one as the program saves it after auto-paint
     (every frame's seeds recorded), one with a frame's own touch-up operations."""
-    from apps.kas import files
-    from apps.kas.inbetween import inbetween
-    from apps.kas.paint import opsfile
-    from apps.kas.paint.ops import Op, OpsFile
-    from apps.kas.paint.palette import Palette
-    from apps.kas.paint.session import PaintSession
+    from camlab88.apps.kas import files
+    from camlab88.apps.kas.inbetween import inbetween
+    from camlab88.apps.kas.paint import opsfile
+    from camlab88.apps.kas.paint.ops import Op, OpsFile
+    from camlab88.apps.kas.paint.palette import Palette
+    from camlab88.apps.kas.paint.session import PaintSession
 
     seq = inbetween(files.load_keyframe(KAS_LIB / "walk_a.kas"),
                     files.load_keyframe(KAS_LIB / "walk_b.kas"),
@@ -187,7 +187,7 @@ def _sessions() -> None:
     protocols.session.format with every record type (input events too)."""
     from fractions import Fraction
 
-    from protocols.session.format import ScreenHash, SessionRecording, dumps
+    from camlab88.protocols.session.format import ScreenHash, SessionRecording, dumps
 
     _copy("session-recording", DATA / "sessions" / "sigma_run.session",
           DATA / "sessions" / "kas_edit.session")
@@ -203,11 +203,11 @@ def _sessions() -> None:
 
 def _states() -> None:
     """A Sigma machine with a stream half taken, and a CA program's whole state."""
-    from apps.ca.program.program import CAProgram, Options
-    from emulator.harness.program_state import object_state
-    from emulator.machine import SigmaMachine
-    from emulator.rainbow.session import in_process
-    from protocols.sigma.demo import sigma_animation_stream
+    from camlab88.apps.ca.program.program import CAProgram, Options
+    from camlab88.emulator.harness.program_state import object_state
+    from camlab88.emulator.machine import SigmaMachine
+    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.protocols.sigma.demo import sigma_animation_stream
 
     machine = SigmaMachine("t5684")
     machine.host.write(sigma_animation_stream()[:400])

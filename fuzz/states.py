@@ -149,7 +149,7 @@ def check_isolated(program: str, data: bytes, path: Path, limit: float,
 def open_state(data: bytes) -> bytes:
     """A state file as one JSON line of both headers (the target's holds the object tree),
     then the target's parts as they are in the file (deflated), each length-prefixed."""
-    from emulator.machine.state_file import MAGIC, unpack
+    from camlab88.emulator.machine.state_file import MAGIC, unpack
 
     outer, blobs = unpack(data, "program")
     inner_bytes = blobs["target"]
@@ -167,7 +167,7 @@ def close_state(opened: bytes) -> bytes:
     """The state file an opened state stands for. A header line that is no longer JSON, or
     not the two headers, is passed on as it is (the loader refuses it); parts whose lengths
     no longer add up are cut where the bytes end."""
-    from emulator.machine.state_file import MAGIC, VERSION, pack
+    from camlab88.emulator.machine.state_file import MAGIC, VERSION, pack
 
     line, _, rest = opened.partition(b"\n")
     try:

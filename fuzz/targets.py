@@ -1,7 +1,7 @@
 """One fuzz target per decoder or parser: bytes in, the format's own error or a result out.
 
 Each target feeds the bytes to the same reader the command line uses (through
-``base.textinput`` for text formats, as the file readers do). A target passes when the
+``camlab88.base.textinput`` for text formats, as the file readers do). A target passes when the
 reader returns or raises the format's documented error (a ValueError subclass naming the
 input); any other exception — a traceback for the user — is a finding. docs/reliability.md
 lists what each format promises.
@@ -39,26 +39,26 @@ class Target:
 
 
 def _text(data: bytes) -> str:
-    from base.textinput import decode_utf8
+    from camlab88.base.textinput import decode_utf8
 
     return decode_utf8(data, NAME, bom=True)
 
 
 def _scene(data: bytes) -> object:
-    from base.textinput import loads_json
-    from emulator.rainbow.scene import SceneError, build_scene
+    from camlab88.base.textinput import loads_json
+    from camlab88.emulator.rainbow.scene import SceneError, build_scene
 
     return build_scene(loads_json(_text(data), NAME, SceneError), None, NAME)
 
 
 def _rainbow_error() -> type[BaseException]:
-    from emulator.rainbow.errors import RainbowError  # the command line reports these too
+    from camlab88.emulator.rainbow.errors import RainbowError  # the command line reports these too
 
     return RainbowError
 
 
 def _rainbow_recording(data: bytes) -> object:
-    from protocols.rainbow.recording import Recording
+    from camlab88.protocols.rainbow.recording import Recording
 
     return _via_file(data, Recording.load)
 
@@ -83,7 +83,7 @@ _SCRATCH: dict[str, str] = {}
 
 
 def _link(data: bytes) -> object:
-    from protocols.link.recording import parse_recording
+    from camlab88.protocols.link.recording import parse_recording
 
     return parse_recording(_text(data), NAME)
 
@@ -100,74 +100,74 @@ _TERMINALS: list = []
 
 def _terminal():  # emulator.sigma.Terminal
     if not _TERMINALS:
-        from emulator.sigma import Terminal
+        from camlab88.emulator.sigma import Terminal
 
         _TERMINALS.append(Terminal("T5684"))
     return _TERMINALS[0]
 
 
 def _sigma_state(data: bytes) -> object:
-    from emulator.sigma import state
+    from camlab88.emulator.sigma import state
 
     return state.load(_terminal(), data)
 
 
 def _kas(kind: str) -> Callable[[bytes], object]:
     def run(data: bytes) -> object:
-        from apps.kas import files
+        from camlab88.apps.kas import files
 
         return getattr(files, f"parse_{kind}")(_text(data), NAME)
     return run
 
 
 def _snooker_session(data: bytes) -> object:
-    from apps.snooker.session import Session, SessionError
-    from base.textinput import loads_json
+    from camlab88.apps.snooker.session import Session, SessionError
+    from camlab88.base.textinput import loads_json
 
     return Session.from_json(loads_json(_text(data), NAME, SessionError))
 
 
 def _snooker_checkpoint(data: bytes) -> object:
-    from apps.snooker import checkpoint
+    from camlab88.apps.snooker import checkpoint
 
     return _via_file(data, checkpoint.read, ".cp")
 
 
 def _ca_pattern(suffix: str) -> Callable[[bytes], object]:
     def run(data: bytes) -> object:
-        from apps.ca.patterns import read_pattern
+        from camlab88.apps.ca.patterns import read_pattern
 
         return _via_file(data, read_pattern, suffix)
     return run
 
 
 def _ca_rules(data: bytes) -> object:
-    from apps.ca.rules import parse_rules
+    from camlab88.apps.ca.rules import parse_rules
 
     return parse_rules(_text(data), NAME)
 
 
 def _ca_log(data: bytes) -> object:
-    from apps.ca.log import parse_log
+    from camlab88.apps.ca.log import parse_log
 
     return parse_log(_text(data), NAME)
 
 
 def _ca_checkpoint(data: bytes) -> object:
-    from apps.ca.log import parse_checkpoint
+    from camlab88.apps.ca.log import parse_checkpoint
 
     return parse_checkpoint(_text(data), NAME)
 
 
 def _hid(data: bytes) -> object:
-    from protocols.tablets.hid_descriptor import parse_descriptor
+    from camlab88.protocols.tablets.hid_descriptor import parse_descriptor
 
     return parse_descriptor(data, NAME)
 
 
 def _tablet(protocol: str) -> Callable[[bytes], object]:
     def run(data: bytes) -> object:
-        from protocols.tablets.registry import make_parser
+        from camlab88.protocols.tablets.registry import make_parser
 
         parser = make_parser(protocol)
         return parser.feed(data) + parser.flush()
@@ -175,74 +175,74 @@ def _tablet(protocol: str) -> Callable[[bytes], object]:
 
 
 def _rainbow_stream(data: bytes) -> object:
-    from protocols.rainbow.stream import Decoder
+    from camlab88.protocols.rainbow.stream import Decoder
 
     return Decoder().feed(data)
 
 
 def _ccl(data: bytes) -> object:
-    from apps.snooker.camera.ccl import read_script
-    from apps.snooker.camera.parser import parse
+    from camlab88.apps.snooker.camera.ccl import read_script
+    from camlab88.apps.snooker.camera.parser import parse
 
     return _via_file(data, lambda path: parse(read_script(path)), ".ccl")
 
 
 def _views(data: bytes) -> object:
-    from apps.snooker.camera.views import read_views
+    from camlab88.apps.snooker.camera.views import read_views
 
     return _via_file(data, read_views, ".views")
 
 
 def _lights(data: bytes) -> object:
-    from apps.snooker.render.lights import read_lights
+    from camlab88.apps.snooker.render.lights import read_lights
 
     return _via_file(data, read_lights, ".lights")
 
 
 def _rainbow_script(data: bytes) -> object:
-    from protocols.rainbow.script import load
+    from camlab88.protocols.rainbow.script import load
 
     return _via_file(data, load, ".events")
 
 
 def _kas_script(data: bytes) -> object:
-    from apps.kas.program.script import load_timed_script
+    from camlab88.apps.kas.program.script import load_timed_script
 
     return _via_file(data, load_timed_script, ".script")
 
 
 def _kas_paint_ops() -> type[BaseException]:
-    from apps.kas.paint.opsfile import OpsFileError
+    from camlab88.apps.kas.paint.opsfile import OpsFileError
 
     return OpsFileError
 
 
 def _kas_ops(data: bytes) -> object:
-    from apps.kas.paint import opsfile
+    from camlab88.apps.kas.paint import opsfile
 
     return _via_file(data, opsfile.load, ".ops")
 
 
 def _session_error() -> type[BaseException]:
-    from protocols.session.format import SessionFileError
+    from camlab88.protocols.session.format import SessionFileError
 
     return SessionFileError
 
 
 def _session(data: bytes) -> object:
-    from protocols.session.format import read
+    from camlab88.protocols.session.format import read
 
     return _via_file(data, read, ".session")
 
 
 def _actors_error() -> type[BaseException]:
-    from apps.actors.model import ActorFileError
+    from camlab88.apps.actors.model import ActorFileError
 
     return ActorFileError
 
 
 def _actors(data: bytes) -> object:
-    from apps.actors.model import read_actors
+    from camlab88.apps.actors.model import read_actors
 
     return _via_file(data, read_actors, ".actors")
 
@@ -251,18 +251,18 @@ _PROGRAMS: list = []
 
 
 def _machine_state(data: bytes) -> object:
-    from emulator.machine import SigmaMachine
+    from camlab88.emulator.machine import SigmaMachine
 
     return SigmaMachine("t5684").load_state(data)
 
 
 def _program_state(data: bytes) -> object:
     """A whole-program state (base.objstate) loaded in place into a CA program."""
-    from emulator.harness.program_state import load_object_state
+    from camlab88.emulator.harness.program_state import load_object_state
 
     if not _PROGRAMS:
-        from apps.ca.program.program import CAProgram, Options
-        from emulator.rainbow.session import in_process
+        from camlab88.apps.ca.program.program import CAProgram, Options
+        from camlab88.emulator.rainbow.session import in_process
 
         _PROGRAMS.append(CAProgram(in_process().client, Options(pattern="glider")))
     return load_object_state(_PROGRAMS[0], data)

@@ -10,9 +10,9 @@ import sys
 from pathlib import Path
 
 import pytest
+from camlab88.protocols.session import read
 
 from camlab88.commands.figures import CAPTIONS, FIGURES_DIR
-from protocols.session import read
 
 ROOT = Path(__file__).resolve().parents[1]
 SHIPPED = sorted(FIGURES_DIR.glob("fig-*.session"))

@@ -9,9 +9,8 @@ import subprocess
 
 import numpy as np
 import pytest
+from camlab88.apps.kas import demo, plot
 from PIL import Image
-
-from apps.kas import demo, plot
 
 DPI = 20
 

@@ -14,7 +14,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 GROUP = """
 from numba import njit
-from base.kernel_notice import announce_compiles
+from camlab88.base.kernel_notice import announce_compiles
 
 announce_compiles("toy", 1.0, __name__, completion="toygroup:complete")
 
@@ -91,14 +91,15 @@ def test_the_rainbow_group_compiles_whole(tmp_path: Path) -> None:
     """A program that only compiles band structures (no frame shown) leaves the video
     processor's scan-out compiled too: the next program's frame compiles nothing."""
     env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"), PYTHONPATH=str(ROOT))
-    device = ("from emulator.rainbow import Rainbow\n"
+    device = ("from camlab88.emulator.rainbow import Rainbow\n"
               "r = Rainbow(); p = r.create_pad(20, 20, 1); r.map(r.screen, p, 5, 5)\n")
     first = subprocess.run([sys.executable, "-c", PRINT_COMPILES + device + "r.bands()\n"],
                            env=env, capture_output=True, text=True, timeout=300)
     assert first.returncode == 0, first.stderr
     notices = first.stderr.splitlines()
     assert len(notices) == 1 and notices[0].startswith("camlab88: compiling Rainbow kernels")
-    assert "compiled emulator.rainbow._kernels scanout" in first.stdout.splitlines()  # at exit
+    # at exit
+    assert "compiled camlab88.emulator.rainbow._kernels scanout" in first.stdout.splitlines()
     second = subprocess.run([sys.executable, "-c", PRINT_COMPILES + device + "r.frame()\n"],
                             env=env, capture_output=True, text=True, timeout=300)
     assert second.returncode == 0, second.stderr

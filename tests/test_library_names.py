@@ -6,10 +6,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-
-from apps.ca.library import pattern_path, rules_path
-from apps.kas import library, timing
-from base.suggest import did_you_mean
+from camlab88.apps.ca.library import pattern_path, rules_path
+from camlab88.apps.kas import library, timing
+from camlab88.base.suggest import did_you_mean
 
 
 def test_kas_names_near_a_misspelling_are_suggested() -> None:

@@ -44,7 +44,7 @@ def test_rainbow_compile_keeps_one_signature(tmp_path: Path) -> None:
     """compile_rows types its call of _sort_unique with a literal 0 first; the explicit
     signature keeps that from becoming a second cached signature."""
     _run(tmp_path, textwrap.dedent("""
-        from emulator.rainbow import Rainbow
+        from camlab88.emulator.rainbow import Rainbow
         r = Rainbow()
         r.set_lut(0, [(0, 0, 0), (255, 0, 0)])
         p = r.create_pad(50, 50, 1)

@@ -6,8 +6,8 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from apps.kas import demo
-from apps.kas.program.viewer import LineTest
+from camlab88.apps.kas import demo
+from camlab88.apps.kas.program.viewer import LineTest
 
 ROOT = Path(__file__).resolve().parents[1]
 

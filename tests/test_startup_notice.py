@@ -1,4 +1,4 @@
-"""base.kernel_notice: one line before a cold compile, silence when warm, and Ctrl-C
+"""camlab88.base.kernel_notice: one line before a cold compile, silence when warm, and Ctrl-C
 during a compile ends the process cleanly (status 130, no traceback)."""
 
 from __future__ import annotations
@@ -10,13 +10,13 @@ import sys
 import textwrap
 from pathlib import Path
 
-from base import kernel_notice
+from camlab88.base import kernel_notice
 
 ROOT = Path(__file__).resolve().parents[1]
 
 KERNEL_MODULE = """
 from numba import njit
-from base.kernel_notice import announce_compiles
+from camlab88.base.kernel_notice import announce_compiles
 
 announce_compiles("toy", 3.4, __name__)
 
@@ -73,9 +73,9 @@ def test_ctrl_c_during_a_compile_ends_the_process_cleanly(tmp_path: Path) -> Non
 
 def test_ctrl_c_while_the_snooker_kernels_compile(tmp_path: Path) -> None:
     """The issue's case: Ctrl-C during `snooker simulate`'s first compile."""
-    code = ("from apps.snooker.session import Session\n"
-            "from apps.snooker.layout import break_off_direction\n"
-            "from apps.snooker.table import CUE, Table\n"
+    code = ("from camlab88.apps.snooker.session import Session\n"
+            "from camlab88.apps.snooker.layout import break_off_direction\n"
+            "from camlab88.apps.snooker.table import CUE, Table\n"
             "t = Table(); s = Session.new_game(t)\n"
             "ux, uy = break_off_direction(t, s.balls); s.set_velocity(CUE, 5 * ux, 5 * uy)\n"
             "s.simulate_to_rest()\nprint('simulated')\n")

@@ -14,8 +14,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.actors.model import Actor, Part
+from camlab88.apps.actors.model import Actor, Part
 
 SEGMENTS = 24  # around a lathe or a sphere
 RINGS = 12  # a sphere's latitude bands

@@ -16,8 +16,8 @@ import os
 import re
 from dataclasses import dataclass, field
 
-from base.atomicfile import write_atomic
-from base.textinput import InputError, read_text
+from camlab88.base.atomicfile import write_atomic
+from camlab88.base.textinput import InputError, read_text
 
 KINDS = ("lathe", "box", "sphere", "extrude")
 CYCLE_KINDS = ("bob", "turn")

@@ -3,10 +3,9 @@
 from __future__ import annotations
 
 import numpy as np
-
-from apps.actors.mesh import actor_mesh
-from apps.actors.model import Actor, ActorSet
-from apps.actors.render import Look, Placed, Shot, Stage, canopy_over, render_frame
+from camlab88.apps.actors.mesh import actor_mesh
+from camlab88.apps.actors.model import Actor, ActorSet
+from camlab88.apps.actors.render import Look, Placed, Shot, Stage, canopy_over, render_frame
 
 FLOOR = (-2, -2, 3, 3)  # 5 x 5 cells round the actor's cell (0, 0)
 FOCAL_MM = 50.0

@@ -18,13 +18,12 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
-
-from apps.actors.mesh import actor_mesh
-from apps.actors.model import Actor, ActorSet
-from apps.snooker.render.frame import camera_params
-from apps.snooker.render.gamma import decode, encode_image
-from apps.snooker.render.lights import DEFAULT_AMBIENT, DEFAULT_INTENSITY, Lights
-from apps.snooker.render.pinhole import Pinhole
+from camlab88.apps.actors.mesh import actor_mesh
+from camlab88.apps.actors.model import Actor, ActorSet
+from camlab88.apps.snooker.render.frame import camera_params
+from camlab88.apps.snooker.render.gamma import decode, encode_image
+from camlab88.apps.snooker.render.lights import DEFAULT_AMBIENT, DEFAULT_INTENSITY, Lights
+from camlab88.apps.snooker.render.pinhole import Pinhole
 
 BACKGROUND = np.array((0.012, 0.010, 0.010))  # the dark room round the board (snooker's)
 BOARD = (np.array((0.26, 0.17, 0.085)), np.array((0.045, 0.026, 0.014)))  # maple, walnut
@@ -165,7 +164,7 @@ def _light_params(lights: Lights, verts: np.ndarray, floor: tuple[int, int, int,
 
 
 def shadow_maps(stage: Stage, verts: np.ndarray, look: Look) -> tuple[np.ndarray, np.ndarray]:
-    from apps.actors import raster
+    from camlab88.apps.actors import raster
 
     lp = _light_params(stage.lights, verts, stage.floor, look.shadow_map)
     size = look.shadow_map if look.shadows else 1
@@ -179,7 +178,7 @@ def shadow_maps(stage: Stage, verts: np.ndarray, look: Look) -> tuple[np.ndarray
 
 def render_linear(stage: Stage, shot: Shot, look: Look | None = None) -> np.ndarray:
     """(H, W, 3) float64 linear light."""
-    from apps.actors import raster
+    from camlab88.apps.actors import raster
 
     lk = look or Look()
     w, h = lk.width * lk.ss, lk.height * lk.ss

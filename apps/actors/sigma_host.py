@@ -17,11 +17,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.actors.render import BACKGROUND, BOARD, linear_colour
-from apps.snooker.render.palette import SIZE, Palette
-from apps.snooker.render.runs import RunWriter
-from protocols.sigma import Encoder
+from camlab88.apps.actors.render import BACKGROUND, BOARD, linear_colour
+from camlab88.apps.snooker.render.palette import SIZE, Palette
+from camlab88.apps.snooker.render.runs import RunWriter
+from camlab88.protocols.sigma import Encoder
 
 SCREEN_W, SCREEN_H = 768, 512
 

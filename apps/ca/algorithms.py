@@ -20,7 +20,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Protocol
 
-from apps.ca.rules import RuleSet
+from camlab88.apps.ca.rules import RuleSet
 
 CHOICES = ("auto", "direct", "hashlife")
 # "auto" uses HashLife from this many generations on (docs/perf/ca.md: below it the direct
@@ -66,7 +66,7 @@ def get_algorithm(name: str) -> Algorithm:
     """The algorithm named; HashLife's modules (and their kernels) are imported on its
     first use, so a direct run does not pay for them."""
     if name == "hashlife" and name not in ALGORITHMS:
-        from apps.ca.hashlife.algorithm import HashLife
+        from camlab88.apps.ca.hashlife.algorithm import HashLife
 
         ALGORITHMS[name] = HashLife()
     try:
@@ -85,7 +85,7 @@ def choose_engine(rules: RuleSet | None, generations: int, advance_area: object 
         raise ValueError(f"engine must be one of {CHOICES}, not {engine!r}")
     if engine == "direct":
         return engine
-    from apps.ca.hashlife.algorithm import reason_against
+    from camlab88.apps.ca.hashlife.algorithm import reason_against
 
     reason = reason_against(rules, advance_area)
     if engine == "hashlife" and reason is not None:

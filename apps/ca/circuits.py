@@ -326,7 +326,7 @@ DEMO_PAIRS = [(3, 5), (15, 1), (9, 9), (7, 8), (0, 0), (15, 15), (6, 11), (12, 3
 
 
 def adder_pattern(pairs: list[tuple[int, int]] = DEMO_PAIRS):
-    from apps.ca.patterns import Pattern
+    from camlab88.apps.ca.patterns import Pattern
 
     cells, _ = adder_layout(pairs)
     return Pattern.from_cells(cells, ref=(0, 0), name="4-bit adder",
@@ -354,6 +354,6 @@ def run_adder(engine_factory, pairs: list[tuple[int, int]], generations: int | N
 
 
 def library_files() -> dict[str, str]:
-    from apps.ca.patterns import format_native
+    from camlab88.apps.ca.patterns import format_native
 
     return {"circuits.rules": rules_text(), "adder_demo.pat": format_native(adder_pattern())}

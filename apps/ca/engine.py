@@ -16,11 +16,10 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.ca import algorithms
-from apps.ca.rules import RuleSet
-from apps.ca.tables import compile_rules
-from apps.ca.universe import CellList, DenseGrid, Universe, distinct
+from camlab88.apps.ca import algorithms
+from camlab88.apps.ca.rules import RuleSet
+from camlab88.apps.ca.tables import compile_rules
+from camlab88.apps.ca.universe import CellList, DenseGrid, Universe, distinct
 
 DEFAULT_MEMORY = 512 << 20  # bytes of HashLife node table, as Golly's default "maximum memory"
 
@@ -383,7 +382,9 @@ class Engine:
         if self._try_dense(t):
             self.generation += 1
             return
-        from apps.ca import kernels  # on the direct engine's first step: a jump never loads it
+        from camlab88.apps.ca import (
+            kernels,  # on the direct engine's first step: a jump never loads it
+        )
 
         self._list()
         area = self.advance_area
@@ -468,7 +469,7 @@ class Engine:
     # -- dense fast path ------------------------------------------------------------
     def _try_dense(self, t) -> bool:
         """Step as dense grid passes when the rules allow it and the population is dense."""
-        from apps.ca import kernels
+        from camlab88.apps.ca import kernels
 
         plan = t.dense
         if plan is None or (self.advance_area is not None and self.advance_area != FULL):

@@ -4,8 +4,7 @@
 from __future__ import annotations
 
 import numpy as np
-
-from base.kernel_set import KernelSet
+from camlab88.base.kernel_set import KernelSet
 
 kernels = KernelSet(__name__)
 

@@ -18,9 +18,8 @@ from __future__ import annotations
 import types
 
 import numpy as np
-
-from base.kernel_notice import announce_compiles
-from base.kernel_set import KernelSet
+from camlab88.base.kernel_notice import announce_compiles
+from camlab88.base.kernel_set import KernelSet
 
 # one line on stderr when a cold cache compiles (measured ~7 s), and the lean warm load
 announce_compiles("cellular automaton", 7.0, __name__)

@@ -1,6 +1,7 @@
 """Langton's loops (C. G. Langton, "Self-reproduction in cellular automata", Physica D 10,
 135-144, 1984) in the thesis's rule language: the rule file is generated from the
-transition table, so the 219 transitions are written once (python -m apps.ca.library_build).
+transition table, so the 219 transitions are written once
+(python -m camlab88.apps.ca.library_build).
 
 The table is Golly's `Rules/Langtons-Loops.rule` (Golly 3.3, Debian package `golly`),
 whose header credits the transitions to http://necsi.org/postdocs/sayama/sdsr/java/loops.java

@@ -1,4 +1,6 @@
-"""Regenerates the generated files of apps/ca/library/ (run: python -m apps.ca.library_build).
+"""Regenerates the generated files of apps/ca/library/.
+
+Run: python -m camlab88.apps.ca.library_build.
 
 The tests check that the shipped files equal what this produces, so they cannot drift.
 """
@@ -8,8 +10,8 @@ from __future__ import annotations
 import random
 from pathlib import Path
 
-from apps.ca import langtons_loops, maze, turing
-from apps.ca.patterns import Pattern, format_native, format_rle
+from camlab88.apps.ca import langtons_loops, maze, turing
+from camlab88.apps.ca.patterns import Pattern, format_native, format_rle
 
 LIBRARY = Path(__file__).resolve().parent / "library"
 
@@ -31,7 +33,7 @@ def generated() -> dict[str, str]:
     files["maze_demo.pat"] = format_native(maze.build()[0])
     files["grazing_soup.rle"] = format_rle(soup())
     try:
-        from apps.ca import circuits
+        from camlab88.apps.ca import circuits
     except ImportError:  # pragma: no cover - circuits are optional
         return files
     files.update(circuits.library_files())

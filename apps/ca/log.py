@@ -21,14 +21,13 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.ca.engine import EDGES, SIDE, Engine, Rect
-from apps.ca.patterns import Pattern, format_rle, parse_rle
-from apps.ca.rules import parse_rules
-from apps.ca.seed import SEED_MAX, SEED_MIN
-from apps.ca.seed import check_seed as _seed_in_range
-from base.atomicfile import write_atomic
-from base.textinput import parse_int, quote, read_text
+from camlab88.apps.ca.engine import EDGES, SIDE, Engine, Rect
+from camlab88.apps.ca.patterns import Pattern, format_rle, parse_rle
+from camlab88.apps.ca.rules import parse_rules
+from camlab88.apps.ca.seed import SEED_MAX, SEED_MIN
+from camlab88.apps.ca.seed import check_seed as _seed_in_range
+from camlab88.base.atomicfile import write_atomic
+from camlab88.base.textinput import parse_int, quote, read_text
 
 LOG_MAGIC = "CAMLAB88-CA-LOG 1"
 CHECKPOINT_MAGIC = "CAMLAB88-CA-CHECKPOINT 1"

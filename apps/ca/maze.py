@@ -12,7 +12,7 @@ from __future__ import annotations
 import random
 from collections import deque
 
-from apps.ca.patterns import Pattern
+from camlab88.apps.ca.patterns import Pattern
 
 WALL, HEAD, TAIL = 1, 2, 3
 

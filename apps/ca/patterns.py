@@ -12,11 +12,10 @@ import re
 from dataclasses import dataclass, field
 
 import numpy as np
-
-from apps.ca import macrocell
-from apps.ca.rle_body import decode
-from base import atomicfile
-from base.textinput import InputError, quote, read_text, where
+from camlab88.apps.ca import macrocell
+from camlab88.apps.ca.rle_body import decode
+from camlab88.base import atomicfile
+from camlab88.base.textinput import InputError, quote, read_text, where
 
 NATIVE_MAGIC = "CAMLAB88-CA-PATTERN 1"
 MAX_RLE_STATE = 255

@@ -17,7 +17,7 @@ Written as the thesis describes it, for clarity rather than speed:
   the (empty) bottom line (figure 7.12).
 
 The message areas, their combination in sender order and the interpretation are those of
-``apps.ca.rules``; broadcasts (§8.1) are applied to every cell that received a local
+``camlab88.apps.ca.rules``; broadcasts (§8.1) are applied to every cell that received a local
 message, in sender order.  Not modelled (the fast engine has them): random outcomes, the
 advance area, and rows wrapping round the plane (columns wrap; live cells must stay
 ``reach`` rows from the top and bottom edges of a wrapping plane).
@@ -27,7 +27,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
 
-from apps.ca.rules import OP_ADD, OP_AND, OP_OR, RuleSet
+from camlab88.apps.ca.rules import OP_ADD, OP_AND, OP_OR, RuleSet
 
 SIDE = 65536
 MASK32 = 0xFFFFFFFF

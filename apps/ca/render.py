@@ -11,9 +11,8 @@ from __future__ import annotations
 import colorsys
 
 import numpy as np
-
-from apps.ca.engine import SIDE, Engine, Rect
-from apps.ca.rules import RuleSet
+from camlab88.apps.ca.engine import SIDE, Engine, Rect
+from camlab88.apps.ca.rules import RuleSet
 
 # Section 7.4.1: type 1 is "green by default", type 2 "red", type 3 "blue".
 FIRST_COLOURS = [(0, 255, 0), (255, 0, 0), (0, 0, 255), (255, 255, 0), (0, 255, 255),

@@ -110,7 +110,7 @@ def decode_compiled(body: str, fail: Fail
     both relative to the live cells' top-left corner, which is returned as (x, y).  Bodies
     the compiled scanner does not take as they are (a fault, non-ASCII whitespace) go to
     the token reader, which words the error or decodes what Python's ``\\s`` allows."""
-    from apps.ca import rle_scan
+    from camlab88.apps.ca import rle_scan
 
     raw = body.encode("utf-8", "replace")
     b = np.frombuffer(raw, np.uint8)

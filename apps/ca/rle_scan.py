@@ -10,8 +10,7 @@ rle_body.py, which still words the error messages.
 from __future__ import annotations
 
 import numpy as np
-
-from base.kernel_set import KernelSet
+from camlab88.base.kernel_set import KernelSet
 
 kernels = KernelSet(__name__)
 

@@ -13,7 +13,7 @@ import re
 from dataclasses import dataclass, field
 from fractions import Fraction
 
-from base.textinput import InputError, quote, read_text, where
+from camlab88.base.textinput import InputError, quote, read_text, where
 
 MAX_LIFEFORM = 65535  # cells hold a uint16-sized type; no small hard limit (thesis had 40)
 MAX_REACH = 32767  # half the 65536-cell plane: any further and messages meet themselves

@@ -11,10 +11,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from apps.ca import log
-from apps.ca.engine import CENTRE, Engine, Rect
-from apps.ca.patterns import Pattern
-from apps.ca.rules import RuleSet, parse_rules
+from camlab88.apps.ca import log
+from camlab88.apps.ca.engine import CENTRE, Engine, Rect
+from camlab88.apps.ca.patterns import Pattern
+from camlab88.apps.ca.rules import RuleSet, parse_rules
 
 EDIT_MODES = ("step_up", "step_down", "set_value", "pick_up")
 ZOOMS = ("16", "8", "4", "2", "1", "subpixel")

@@ -5,8 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.ca.rules import MATCH_EXACT, MATCH_PATTERN, MATCH_RANGE, RuleSet
+from camlab88.apps.ca.rules import MATCH_EXACT, MATCH_PATTERN, MATCH_RANGE, RuleSet
 
 LOOKUP_SIZE = 1 << 16  # message values below this are interpreted by one table lookup
 ONE = 1 << 32  # probabilities are thresholds on a 32-bit random number
@@ -188,7 +187,7 @@ def _lookup(rules: RuleSet) -> np.ndarray:
 
 def _dense_plan(rules: RuleSet, top: int, lookup: np.ndarray, out_start: list[int],
                 forms: list[int]) -> DensePlan | None:
-    from apps.ca.rules import OP_ADD, OP_OR, OP_XOR
+    from camlab88.apps.ca.rules import OP_ADD, OP_OR, OP_XOR
 
     if top > 255 or any(f.broadcast for f in rules.forms.values()):
         return None
@@ -244,7 +243,7 @@ GROUP_COST_FACTOR = 2
 
 
 def _separable_plan(entries: list, dtype: type, lut: np.ndarray, bound: int) -> SeparablePlan:
-    from apps.ca.rules import OP_ADD
+    from camlab88.apps.ca.rules import OP_ADD
 
     groups: dict[tuple[int, int], set[tuple[int, int]]] = {}
     for t, m in entries:

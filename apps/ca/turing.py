@@ -38,7 +38,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from apps.ca.patterns import Pattern
+from camlab88.apps.ca.patterns import Pattern
 
 TAPE, MARKER = 1, 2
 FIRST_HEAD = 3

@@ -6,11 +6,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from apps.actors.model import ActorSet, read_actors
-from apps.actors.render import Look, canopy_over
-from apps.cafilm.camera import auto_views, script_views
-from apps.cafilm.film import CaFilm
-from apps.cafilm.timeline import record
+from camlab88.apps.actors.model import ActorSet, read_actors
+from camlab88.apps.actors.render import Look, canopy_over
+from camlab88.apps.cafilm.camera import auto_views, script_views
+from camlab88.apps.cafilm.film import CaFilm
+from camlab88.apps.cafilm.timeline import record
 
 MAX_GENERATIONS = 10_000
 MAX_PER_GENERATION = 250
@@ -50,10 +50,10 @@ def parse_glide(text: str) -> frozenset[int] | None:
 
 
 def _engine(spec: FilmSpec):  # -> apps.ca.engine.Engine
-    from apps.ca import library
-    from apps.ca.engine import CENTRE, Engine
-    from apps.ca.patterns import read_pattern
-    from apps.ca.rules import load_rules
+    from camlab88.apps.ca import library
+    from camlab88.apps.ca.engine import CENTRE, Engine
+    from camlab88.apps.ca.patterns import read_pattern
+    from camlab88.apps.ca.rules import load_rules
 
     rules = load_rules(library.rules_path(spec.rules))
     pattern = read_pattern(library.pattern_path(spec.pattern))
@@ -66,7 +66,7 @@ def _engine(spec: FilmSpec):  # -> apps.ca.engine.Engine
 
 def tile_colours(rules: object, states: set[int]) -> dict[int, tuple[int, int, int]]:
     """The 2-D program's colour of every state that has no actor (its tile)."""
-    from apps.ca.render import palette
+    from camlab88.apps.ca.render import palette
 
     if not states:
         return {}
@@ -86,20 +86,20 @@ def build(spec: FilmSpec) -> CaFilm:
         raise ValueError(f"{w}x{h} at {spec.samples}x{spec.samples} samples a pixel is more "
                          f"than {MAX_FRAME_SAMPLES} samples a frame: a smaller --size or "
                          "fewer --samples")
-    from apps.ca.log import check_seed
+    from camlab88.apps.ca.log import check_seed
 
     check_seed(spec.seed)
     glide = parse_glide(spec.glide)
     actors = read_actors(spec.actors) if spec.actors else ActorSet(spec.rules, {})
     camera_text = None
     if spec.camera:
-        from apps.snooker.camera.ccl import read_script
+        from camlab88.apps.snooker.camera.ccl import read_script
 
         camera_text = read_script(spec.camera)
     engine = _engine(spec)
     timeline = record(engine, spec.generations)
     if spec.lights:
-        from apps.snooker.render.lights import read_lights
+        from camlab88.apps.snooker.render.lights import read_lights
 
         lights = read_lights(spec.lights)
     else:

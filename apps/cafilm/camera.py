@@ -21,8 +21,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.actors.render import Shot
+from camlab88.apps.actors.render import Shot
 
 
 @dataclass(frozen=True, eq=False)
@@ -58,8 +57,8 @@ def auto_views(floor: tuple[int, int, int, int], generations: int,
 
 
 def _grid_motion(generations: int) -> object:
-    from apps.snooker.camera.motion import Motion
-    from apps.snooker.table import N_BALLS, Table
+    from camlab88.apps.snooker.camera.motion import Motion
+    from camlab88.apps.snooker.table import N_BALLS, Table
 
     n = max(generations, 1)
     return Motion(Table(), np.zeros((n, N_BALLS, 3)), np.zeros((n, N_BALLS), dtype=bool), ())
@@ -67,7 +66,7 @@ def _grid_motion(generations: int) -> object:
 
 def script_views(text: str, generations: int, path: str) -> GenerationViews:
     """Interpret the script (CclErrors listing every error if it has any)."""
-    from apps.snooker.camera.ccl import compile_script
+    from camlab88.apps.snooker.camera.ccl import compile_script
 
     result = compile_script(text, _grid_motion(generations), path)
     # the table frame is CCL's space with x mirrored: (-x, y, z); the board's world frame

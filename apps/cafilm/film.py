@@ -15,13 +15,12 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-
-from apps.actors.model import ActorSet, format_actors
-from apps.actors.render import Look, Shot, Stage, render_frame
-from apps.cafilm.camera import GenerationViews
-from apps.cafilm.motion import change, posed
-from apps.cafilm.timeline import Timeline
-from apps.snooker.render.lights import Lights
+from camlab88.apps.actors.model import ActorSet, format_actors
+from camlab88.apps.actors.render import Look, Shot, Stage, render_frame
+from camlab88.apps.cafilm.camera import GenerationViews
+from camlab88.apps.cafilm.motion import change, posed
+from camlab88.apps.cafilm.timeline import Timeline
+from camlab88.apps.snooker.render.lights import Lights
 
 
 @dataclass(frozen=True, eq=False)
@@ -89,7 +88,7 @@ def compile_here(film: CaFilm) -> None:
 
 def render_png(film: CaFilm, task: FilmFrame) -> bytes:
     """The backends' render function: picklable inputs -> PNG bytes, the same anywhere."""
-    from base.png import png_bytes
+    from camlab88.base.png import png_bytes
 
     return png_bytes(render_image(film, task.frame))
 
@@ -113,8 +112,8 @@ def digest(film: CaFilm) -> str:
 def shoot(film: CaFilm, out_dir: str | os.PathLike[str], dask: str | None = None,
           workers: int | None = None, progress=None):  # -> snooker's FilmReport
     """Render every frame not already on disk into ``out_dir/frame_NNNNN.png``."""
-    from apps.snooker.film.backends import open_backend
-    from apps.snooker.film.schedule import render_film
+    from camlab88.apps.snooker.film.backends import open_backend
+    from camlab88.apps.snooker.film.schedule import render_film
 
     backend = open_backend(film, dask, workers, render=render_png)
     if backend.workers > 1 or dask is not None:

@@ -27,9 +27,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from apps.actors.model import ActorSet, Cycle
-from apps.actors.render import Placed
-from apps.cafilm.timeline import Generation
+from camlab88.apps.actors.model import ActorSet, Cycle
+from camlab88.apps.actors.render import Placed
+from camlab88.apps.cafilm.timeline import Generation
 
 Cell = tuple[int, int]  # (col, row)
 

@@ -9,10 +9,9 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.actors.render import Look, render_linear
-from apps.actors.sigma_host import SCREEN_H, SCREEN_W, ActorsSigmaHost, fixed_palette
-from apps.cafilm.film import CaFilm, stage_at
+from camlab88.apps.actors.render import Look, render_linear
+from camlab88.apps.actors.sigma_host import SCREEN_H, SCREEN_W, ActorsSigmaHost, fixed_palette
+from camlab88.apps.cafilm.film import CaFilm, stage_at
 
 Send = Callable[[bytes], tuple[np.ndarray, float]]
 

@@ -7,11 +7,11 @@ and is superimposed on the walk (§3.1.2, §3.1.3).
 
 from __future__ import annotations
 
-from apps.kas import files
-from apps.kas.inbetween import inbetween
-from apps.kas.library import LIBRARY
-from apps.kas.model import AnimSequence
-from apps.kas.superimpose import superimpose
+from camlab88.apps.kas import files
+from camlab88.apps.kas.inbetween import inbetween
+from camlab88.apps.kas.library import LIBRARY
+from camlab88.apps.kas.model import AnimSequence
+from camlab88.apps.kas.superimpose import superimpose
 
 SUN_OFFSET = 8  # frames after the walk starts
 

@@ -1,6 +1,7 @@
 """The keyframe editor's model (§3.1.1, and the §2.3 "draw over the previous keyframe").
 
-A state machine fed by abstract events (``apps.kas.events``): a device front (Sigma screen +
+A state machine fed by abstract events (``camlab88.apps.kas.events``): a device front
+(Sigma screen +
 tablet) or a test script drives it; it owns the drawing, the modes, the editing cursors, the
 remembered transformations and the view, and says what should be displayed
 (``display_list``).  No device code here.  Key bindings are in ``KEYS`` and docs/kas.md.
@@ -13,10 +14,9 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
-
-from apps.kas import editor_commands as ops
-from apps.kas.events import Event, Key, MenuPick, Pointer
-from apps.kas.model import FIELD_H, FIELD_W, PENS, WORK_X, WORK_Y, Chain, Drawing
+from camlab88.apps.kas import editor_commands as ops
+from camlab88.apps.kas.events import Event, Key, MenuPick, Pointer
+from camlab88.apps.kas.model import FIELD_H, FIELD_W, PENS, WORK_X, WORK_Y, Chain, Drawing
 
 # Menu row above the twelve-field (§3.1.1: "a row of coloured boxes above the drawing area").
 MENU_ITEMS: tuple[str, ...] = (
@@ -463,7 +463,7 @@ class Editor:
         self.pending = None
 
     def _edit_keys(self) -> dict[str, Callable[[], None]]:
-        from apps.kas import editor_edit as ed
+        from camlab88.apps.kas import editor_edit as ed
 
         return ed.bindings(self)
 

@@ -17,12 +17,11 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 import numpy as np
-
-from apps.kas import editor_commands as ops
-from apps.kas.editor_commands import Transform
+from camlab88.apps.kas import editor_commands as ops
+from camlab88.apps.kas.editor_commands import Transform
 
 if TYPE_CHECKING:
-    from apps.kas.editor import Editor
+    from camlab88.apps.kas.editor import Editor
 
 
 def bindings(ed: Editor) -> dict[str, Callable[[], None]]:

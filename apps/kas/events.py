@@ -50,7 +50,7 @@ def parse_script(text: str, name: str = "<script>") -> list[Event]:
     comments.  This is the one KAS script format (apps/kas/program/script.py reads the same
     files on the Sigma, where TIME matters); the editor model takes the events in order, so
     TIME is checked and then ignored, and ``wait`` does nothing."""
-    from apps.kas.files import KasFileError
+    from camlab88.apps.kas.files import KasFileError
 
     out: list[Event] = []
     for no, raw in enumerate(text.splitlines(), start=1):

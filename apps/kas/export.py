@@ -1,6 +1,6 @@
 """PNG, GIF and MP4 export of sequences (imageio; MP4 through imageio-ffmpeg).
 
-Pictures come from the emulated Sigma (camlab88/commands/kas.py) or ``apps.kas.raster``.
+Pictures come from the emulated Sigma (camlab88/commands/kas.py) or ``camlab88.apps.kas.raster``.
 """
 
 from __future__ import annotations
@@ -10,11 +10,10 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import numpy as np
-
-from apps.kas.model import AnimSequence, Drawing
-from apps.kas.raster import render
-from base.atomicfile import AtomicBatch, atomic_path, write_atomic
-from base.png import png_bytes
+from camlab88.apps.kas.model import AnimSequence, Drawing
+from camlab88.apps.kas.raster import render
+from camlab88.base.atomicfile import AtomicBatch, atomic_path, write_atomic
+from camlab88.base.png import png_bytes
 
 Progress = Callable[[int, int], None]
 

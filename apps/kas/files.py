@@ -14,10 +14,9 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.kas.model import AnimSequence, Chain, Drawing
-from base.atomicfile import write_atomic
-from base.textinput import InputError, parse_int, quote, read_text
+from camlab88.apps.kas.model import AnimSequence, Chain, Drawing
+from camlab88.base.atomicfile import write_atomic
+from camlab88.base.textinput import InputError, parse_int, quote, read_text
 
 VERSION = 1
 KINDS = ("keyframe", "sequence", "path", "timing")

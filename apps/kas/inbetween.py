@@ -11,11 +11,10 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import numpy as np
-
-from apps.kas import correspond, kernels, pathfit, splines
-from apps.kas.files import SamplePath, Timing
-from apps.kas.model import AnimSequence, Chain, Drawing
-from apps.kas.timing import fractions
+from camlab88.apps.kas import correspond, kernels, pathfit, splines
+from camlab88.apps.kas.files import SamplePath, Timing
+from camlab88.apps.kas.model import AnimSequence, Chain, Drawing
+from camlab88.apps.kas.timing import fractions
 
 TOL = 1e-9  # relative collinearity tolerance for dropping points
 

@@ -14,8 +14,7 @@ from __future__ import annotations
 import sys
 
 import numpy as np
-
-from apps.kas.model import redundant_mask
+from camlab88.apps.kas.model import redundant_mask
 
 NUMBA_FROM_POINTS = 2_000_000  # frames x points from which numba pays for its own start-up
 NUMBA_LOADED_FROM_POINTS = 100_000  # ... once another part of the process has loaded numba
@@ -34,7 +33,7 @@ def keep_mask(points: np.ndarray, colours: np.ndarray, bounds: np.ndarray,
     """(F, n) bool, True = keep: the point is neither a repeat nor the middle of a straight,
     one-coloured run of its chain (chains split at ``bounds``)."""
     if use_numba(points):
-        from apps.kas import kernels_jit
+        from camlab88.apps.kas import kernels_jit
 
         return kernels_jit.keep_mask(points, colours, bounds, tol)
     return redundant_mask(points, colours, tol, bounds)
@@ -45,7 +44,7 @@ def compact(points: np.ndarray, colours: np.ndarray, keep: np.ndarray,
     """Kept points of all frames packed in order, and where each frame's chain j begins
     (``cut[f, j]``; ``cut[f, -1]`` is the end of frame f)."""
     if use_numba(points):
-        from apps.kas import kernels_jit
+        from camlab88.apps.kas import kernels_jit
 
         return kernels_jit.compact(points, colours, keep, bounds)
     return compact_numpy(points, colours, keep, bounds)

@@ -2,15 +2,15 @@
 
 Same rule and the same floating-point expressions as ``model.redundant_mask`` (the numpy
 reference, which the tests compare it with), in one pass over frames x points instead of a
-dozen whole-array passes. Imported only for large in-betweens (``apps.kas.kernels`` chooses).
+dozen whole-array passes. Imported only for large in-betweens
+(``camlab88.apps.kas.kernels`` chooses).
 """
 
 from __future__ import annotations
 
 import numpy as np
+from camlab88.base.kernel_notice import announce_compiles
 from numba import njit
-
-from base.kernel_notice import announce_compiles
 
 announce_compiles("KAS in-betweener", 1.0, __name__)  # cold compile time, measured
 

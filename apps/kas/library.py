@@ -19,7 +19,7 @@ import os
 import re
 from pathlib import Path
 
-from base.suggest import did_you_mean
+from camlab88.base.suggest import did_you_mean
 
 LIBRARY = Path(__file__).with_name("library")
 ENV = "CAMLAB88_KAS_LIBRARY"

@@ -14,10 +14,9 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-
-from apps.kas.events import Event, Key, Pointer
-from apps.kas.files import SamplePath, Timing
-from apps.kas.model import Drawing
+from camlab88.apps.kas.events import Event, Key, Pointer
+from camlab88.apps.kas.files import SamplePath, Timing
+from camlab88.apps.kas.model import Drawing
 
 STEP = 0.03  # inches between freehand path points
 
@@ -98,7 +97,7 @@ class PathEditor:
         return Timing("ticks", sorted(self.ticks), "hand ticks")
 
     def tick_points(self) -> np.ndarray:
-        from apps.kas.pathfit import point_at
+        from camlab88.apps.kas.pathfit import point_at
 
         sp = self.sample_path()
         if sp is None or not self.ticks:

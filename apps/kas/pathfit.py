@@ -39,8 +39,7 @@ from __future__ import annotations
 import os
 
 import numpy as np
-
-from apps.kas.files import KasFileError, SamplePath, load_path
+from camlab88.apps.kas.files import KasFileError, SamplePath, load_path
 
 FIT_MODES = ("similarity-reflect", "axis-stretch", "similarity")
 ALIASES = {"stretch": "similarity-reflect"}  # the name used before the thesis's mode existed

@@ -3,7 +3,7 @@
 A rectangle (white, first keyframe; red, second) moves left and up; the sample path (green)
 is an arch drawn from lower left to upper right.  Each picture superimposes the in-betweens
 (yellow) and the curve each corner follows (cyan) under one fit mode (figure 3.6 of the
-thesis draws the same kind of picture).  ``python -m apps.kas.pathfit_figure DIR`` writes
+thesis draws the same kind of picture).  ``python -m camlab88.apps.kas.pathfit_figure DIR`` writes
 the PNGs.
 """
 
@@ -13,12 +13,11 @@ import sys
 from pathlib import Path
 
 import numpy as np
-
-from apps.kas import pathfit, raster
-from apps.kas.files import SamplePath
-from apps.kas.inbetween import inbetween
-from apps.kas.model import Chain, Drawing
-from base.png import write_png
+from camlab88.apps.kas import pathfit, raster
+from camlab88.apps.kas.files import SamplePath
+from camlab88.apps.kas.inbetween import inbetween
+from camlab88.apps.kas.model import Chain, Drawing
+from camlab88.base.png import write_png
 
 RECT = [(0, 0), (1.2, 0), (1.2, 0.8), (0, 0.8), (0, 0)]
 PATH = SamplePath([(-5, -3.5), (-4.6, -2.3), (-3.6, -1.3), (-2.2, -1.1), (-1, -1.5)])

@@ -7,8 +7,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 
 import numpy as np
-
-from apps.kas.model import AnimSequence
+from camlab88.apps.kas.model import AnimSequence
 
 
 def pen_counts(seq: AnimSequence) -> dict[int, int]:

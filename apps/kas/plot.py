@@ -14,9 +14,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-
-from apps.kas.model import FIELD_H, FIELD_W, PALETTE, AnimSequence, Drawing
-from base.atomicfile import write_atomic
+from camlab88.apps.kas.model import FIELD_H, FIELD_W, PALETTE, AnimSequence, Drawing
+from camlab88.base.atomicfile import write_atomic
 
 # On paper the white pen (drawn on a black screen) becomes black ink.
 PAPER_RGB = {k: ((0, 0, 0) if k == 1 else rgb) for k, (_, rgb) in PALETTE.items()}

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from apps.kas.model import AnimSequence, Drawing
+from camlab88.apps.kas.model import AnimSequence, Drawing
 
 
 def frame_index(frame: int, offset: int, length: int) -> int:

@@ -3,8 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
-
-from apps.kas.files import Timing, validate_timing
+from camlab88.apps.kas.files import Timing, validate_timing
 
 
 def curve(name: str, samples: int = 33) -> Timing:

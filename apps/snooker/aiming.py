@@ -20,10 +20,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.snooker.speed_curve import curve_for
-from apps.snooker.state import BallState
-from apps.snooker.table import Table, cushion_sides
+from camlab88.apps.snooker.speed_curve import curve_for
+from camlab88.apps.snooker.state import BallState
+from camlab88.apps.snooker.table import Table, cushion_sides
 
 Point = tuple[float, float]
 

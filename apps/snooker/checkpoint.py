@@ -28,10 +28,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.snooker.table import FOOT_M, N_BALLS
-from base.atomicfile import write_atomic
-from base.textinput import InputError, quote, read_bytes
+from camlab88.apps.snooker.table import FOOT_M, N_BALLS
+from camlab88.base.atomicfile import write_atomic
+from camlab88.base.textinput import InputError, quote, read_bytes
 
 UNITS_PER_FOOT = 4096
 UNITS_PER_M = UNITS_PER_FOOT / FOOT_M

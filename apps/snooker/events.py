@@ -27,16 +27,15 @@ import numpy as np
 SNOOKER_COMPILE_S = 6.0  # a cold compile of this module's and kernels.py's kernels, measured
 
 try:  # numba is a project dependency, but the model must still work without it
+    from camlab88.base.kernel_notice import announce_compiles
     from numba import njit as _njit
-
-    from base.kernel_notice import announce_compiles
 
     # Cached, so only the first run after install compiles; every kernel here is called with
     # one set of argument types (docs/development.md, "numba's cache").
     def _jit(f):
         return _njit(cache=True, nogil=True)(f)
 
-    announce_compiles("snooker", SNOOKER_COMPILE_S, __name__, "apps.snooker.kernels")
+    announce_compiles("snooker", SNOOKER_COMPILE_S, __name__, "camlab88.apps.snooker.kernels")
 
     HAVE_NUMBA = True
 except ImportError:  # pragma: no cover - exercised only where numba is missing

@@ -13,8 +13,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-
-from apps.snooker.events import _jit, scan
+from camlab88.apps.snooker.events import _jit, scan
 
 REST, EVENT, LIMIT = 0, 1, 2
 

@@ -6,9 +6,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-
-from apps.snooker.state import BallState
-from apps.snooker.table import BROWN, COLOURS, CUE, N_BALLS, PINK, REDS, Table
+from camlab88.apps.snooker.state import BallState
+from camlab88.apps.snooker.table import BROWN, COLOURS, CUE, N_BALLS, PINK, REDS, Table
 
 PACK_GAP_M = 0.0005  # the apex red sits "as near to the pink as possible without touching"
 

@@ -22,12 +22,18 @@ from __future__ import annotations
 import math
 
 import numpy as np
-
-from apps.snooker import kernels
-from apps.snooker.events import HAVE_NUMBA, Event, EventKind, scan, scan_python, table_arrays
-from apps.snooker.speed_curve import CURVE_TABLES, curve_for
-from apps.snooker.state import BallState, Motion, effective_velocity
-from apps.snooker.table import Table
+from camlab88.apps.snooker import kernels
+from camlab88.apps.snooker.events import (
+    HAVE_NUMBA,
+    Event,
+    EventKind,
+    scan,
+    scan_python,
+    table_arrays,
+)
+from camlab88.apps.snooker.speed_curve import CURVE_TABLES, curve_for
+from camlab88.apps.snooker.state import BallState, Motion, effective_velocity
+from camlab88.apps.snooker.table import Table
 
 TOUCH_TOLERANCE_M = 1e-9  # centres within d + this count as touching
 APPROACH_TOLERANCE_M_S = 1e-12

@@ -18,10 +18,9 @@ import math
 from dataclasses import dataclass, field, replace
 
 import numpy as np
-
-from apps.snooker.events import Event, EventKind
-from apps.snooker.layout import default_cue_position
-from apps.snooker.table import (
+from camlab88.apps.snooker.events import Event, EventKind
+from camlab88.apps.snooker.layout import default_cue_position
+from camlab88.apps.snooker.table import (
     BALL_NAMES,
     BALL_VALUES,
     BLACK,

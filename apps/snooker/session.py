@@ -18,16 +18,15 @@ import os
 from dataclasses import replace
 
 import numpy as np
-
-from apps.snooker import aiming, checkpoint
-from apps.snooker.events import Event, EventKind
-from apps.snooker.layout import opening_state
-from apps.snooker.rules import GameState, Shot, infer_game, legal_to_hit, legal_to_pot
-from apps.snooker.state import BallState
-from apps.snooker.table import BALL_NAMES, Table
-from apps.snooker.timeline import Cursor, Frame, Timeline, Unit
-from base.atomicfile import write_atomic
-from base.textinput import quote, read_json
+from camlab88.apps.snooker import aiming, checkpoint
+from camlab88.apps.snooker.events import Event, EventKind
+from camlab88.apps.snooker.layout import opening_state
+from camlab88.apps.snooker.rules import GameState, Shot, infer_game, legal_to_hit, legal_to_pot
+from camlab88.apps.snooker.state import BallState
+from camlab88.apps.snooker.table import BALL_NAMES, Table
+from camlab88.apps.snooker.timeline import Cursor, Frame, Timeline, Unit
+from camlab88.base.atomicfile import write_atomic
+from camlab88.base.textinput import quote, read_json
 
 FORMAT = "camlab88-snooker-session"
 VERSION = 1

@@ -18,12 +18,11 @@ from dataclasses import dataclass, replace
 from typing import Literal
 
 import numpy as np
-
-from apps.snooker.events import Event, EventKind
-from apps.snooker.physics import Physics, SimulationError, state_moving
-from apps.snooker.rules import GameState, Shot, adjudicate, apply_outcome, record
-from apps.snooker.state import BallState
-from apps.snooker.table import Table
+from camlab88.apps.snooker.events import Event, EventKind
+from camlab88.apps.snooker.physics import Physics, SimulationError, state_moving
+from camlab88.apps.snooker.rules import GameState, Shot, adjudicate, apply_outcome, record
+from camlab88.apps.snooker.state import BallState
+from camlab88.apps.snooker.table import Table
 
 Kind = Literal["time", "event"]
 Unit = Literal["frame", "event"]

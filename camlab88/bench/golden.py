@@ -11,7 +11,7 @@ def compare_golden(screen: np.ndarray, path: Path, regen: bool) -> None:
     """AssertionError naming the first differing pixel (or the missing file)."""
     from PIL import Image
 
-    from base.png import write_png
+    from camlab88.base.png import write_png
 
     frame = np.ascontiguousarray(screen, dtype=np.uint8)
     if regen:

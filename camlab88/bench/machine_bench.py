@@ -35,7 +35,7 @@ class MachineBench:
 
     def screenshot(self, path: str | os.PathLike[str]) -> Path:
         """Write the screen as a PNG (atomically); returns the path."""
-        from base.png import write_png
+        from camlab88.base.png import write_png
 
         return write_png(self.screen, path)
 

@@ -19,7 +19,7 @@ class PtySigma:
     ``wait_idle()`` until the program has gone quiet and the line has drained."""
 
     def __init__(self, model: str = "t5684", baud: int = 9600) -> None:
-        from protocols.link.transports import PtyBridge
+        from camlab88.protocols.link.transports import PtyBridge
 
         self.sigma = Sigma(model, baud)
         self.terminal = self.sigma.machine.terminal

@@ -4,8 +4,8 @@ testing pad-library programs. Device time moves in 20 ms frames when ``run`` sho
 from __future__ import annotations
 
 from camlab88.bench.machine_bench import MachineBench
-from emulator.machine import RainbowMachine
-from protocols.rainbow import KeyEvent, MouseEvent, RainbowClient, TabletEvent
+from camlab88.emulator.machine import RainbowMachine
+from camlab88.protocols.rainbow import KeyEvent, MouseEvent, RainbowClient, TabletEvent
 
 
 class Rainbow(MachineBench):

@@ -4,8 +4,8 @@ programs. Time is virtual: nothing happens until ``run`` advances it."""
 from __future__ import annotations
 
 from camlab88.bench.machine_bench import MachineBench
-from emulator.machine import SigmaMachine
-from protocols.link import LineSettings, to_time
+from camlab88.emulator.machine import SigmaMachine
+from camlab88.protocols.link import LineSettings, to_time
 
 
 class Sigma(MachineBench):

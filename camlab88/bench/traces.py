@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Iterator
 
-from emulator.protocol_trace import TraceEvent
+from camlab88.emulator.protocol_trace import TraceEvent
 
 MAX_EVENTS = 100_000  # the most recent orders kept (a long session must not grow memory)
 MAX_PROBLEMS = 1_000  # the first warnings kept

@@ -24,11 +24,11 @@ A command builds a *target* — an object wiring one program to one emulated dev
   speed, F11 inspector, F12 screenshot, Esc quit; ``--speed X`` (emulator.harness.pace),
   ``--video FILE``, ``--inspect``, ``--inspect-out DIR`` (``RunOptions.controls``).
 
-All PNGs go through the one writer, :func:`base.png.write_png`.  See docs/harness.md.
+All PNGs go through the one writer, :func:`camlab88.base.png.write_png`.  See docs/harness.md.
 """
 
-from emulator.harness.display import DisplayRefused, choose_headless, display_available
-from emulator.harness.loop import Harness, Plugin, RunOptions, Target, run
+from camlab88.emulator.harness.display import DisplayRefused, choose_headless, display_available
+from camlab88.emulator.harness.loop import Harness, Plugin, RunOptions, Target, run
 
 __all__ = ["DisplayRefused", "Harness", "Plugin", "RunOptions", "Target", "choose_headless",
            "display_available", "run"]

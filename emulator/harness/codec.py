@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from emulator.host_input import HostEvent, KeyDown, KeyUp, PointerButton, PointerMove, Quit
+from camlab88.emulator.host_input import HostEvent, KeyDown, KeyUp, PointerButton, PointerMove, Quit
 
 
 def encode(ev: HostEvent) -> dict[str, Any]:

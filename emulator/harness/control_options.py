@@ -1,5 +1,5 @@
 """What the emulator controls were asked for on the command line (``--speed``, ``--video``,
-``--inspect``, ``--inspect-out``); one field of :class:`emulator.harness.RunOptions`."""
+``--inspect``, ``--inspect-out``); one field of :class:`camlab88.emulator.harness.RunOptions`."""
 
 from __future__ import annotations
 

@@ -16,14 +16,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-
-from base.png import write_png
-from emulator.harness.control_options import SPEED_MAX, SPEED_MIN, Controls, clamp_speed
-from emulator.harness.loop import Plugin, RunOptions
-from emulator.host_input import HostEvent, KeyDown, KeyUp, Quit
+from camlab88.base.png import write_png
+from camlab88.emulator.harness.control_options import SPEED_MAX, SPEED_MIN, Controls, clamp_speed
+from camlab88.emulator.harness.loop import Plugin, RunOptions
+from camlab88.emulator.host_input import HostEvent, KeyDown, KeyUp, Quit
 
 if TYPE_CHECKING:
-    from emulator.harness.loop import Harness
+    from camlab88.emulator.harness.loop import Harness
 
 KEYS = [("F1", "show / hide these keys"), ("F5", "pause / resume"),
         ("F6", "advance one frame (and pause)"), ("F7", "slower (half speed)"),
@@ -141,14 +140,14 @@ class ControlKeys(Plugin):
 
     def decorate(self, harness: Harness, frame: np.ndarray) -> np.ndarray:
         """The window's picture: the frame, the help overlay, the inspector panel."""
-        from emulator.harness.help import key_lines, overlay
+        from camlab88.emulator.harness.help import key_lines, overlay
 
         if self.help:
             frame = overlay(frame, key_lines(harness))
         if not self.inspect:
             return frame
         if self._panel is None:
-            from emulator.inspect import panel_for
+            from camlab88.emulator.inspect import panel_for
 
             self._panel = panel_for(harness.target) or False
         panel = self._panel(frame) if self._panel else _nothing(frame.shape[0])
@@ -161,7 +160,7 @@ def _signalled(harness: Harness) -> bool:
 
 
 def _nothing(height: int) -> np.ndarray:
-    from emulator.inspect import PANEL_WIDTH, draw
+    from camlab88.emulator.inspect import PANEL_WIDTH, draw
 
     img = draw.canvas(PANEL_WIDTH, height)
     draw.text(img, 8, 8, "nothing to inspect here")
@@ -194,11 +193,11 @@ def control_plugins(options: RunOptions) -> list[Plugin]:
     c = options.controls
     plugins: list[Plugin] = [ControlKeys(c)]
     if c.video is not None:
-        from emulator.harness.video import VideoWriter
+        from camlab88.emulator.harness.video import VideoWriter
 
         plugins.append(VideoWriter(c.video))
     if c.inspect_out is not None:
-        from emulator.harness.inspect_out import InspectOut
+        from camlab88.emulator.harness.inspect_out import InspectOut
 
         plugins.append(InspectOut(c.inspect_out))
     return plugins

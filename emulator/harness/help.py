@@ -8,11 +8,10 @@ from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
 import numpy as np
-
-from emulator.inspect import draw
+from camlab88.emulator.inspect import draw
 
 if TYPE_CHECKING:
-    from emulator.harness.loop import Harness
+    from camlab88.emulator.harness.loop import Harness
 
 KeyList = list[tuple[str, str]]
 

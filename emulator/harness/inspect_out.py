@@ -8,12 +8,11 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-
-from base.png import frame_path, write_png
-from emulator.harness.loop import Plugin
+from camlab88.base.png import frame_path, write_png
+from camlab88.emulator.harness.loop import Plugin
 
 if TYPE_CHECKING:
-    from emulator.harness.loop import Harness
+    from camlab88.emulator.harness.loop import Harness
 
 
 class InspectOut(Plugin):
@@ -23,7 +22,7 @@ class InspectOut(Plugin):
         self._panel: Any = None
 
     def start(self, harness: Harness) -> None:
-        from emulator.inspect import panel_for
+        from camlab88.emulator.inspect import panel_for
 
         self._panel = panel_for(harness.target)
         if self._panel is None:

@@ -25,8 +25,8 @@ from fractions import Fraction
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol
 
-from emulator.harness.control_options import Controls
-from emulator.host_input import HostEvent, Quit
+from camlab88.emulator.harness.control_options import Controls
+from camlab88.emulator.host_input import HostEvent, Quit
 
 if TYPE_CHECKING:
     import numpy as np
@@ -110,8 +110,8 @@ class Harness:
 
     def __init__(self, target: Target, options: RunOptions,
                  plugins: list[Plugin] | None = None) -> None:
-        from emulator.harness.controls import control_plugins
-        from emulator.harness.plugins import standard_plugins
+        from camlab88.emulator.harness.controls import control_plugins
+        from camlab88.emulator.harness.plugins import standard_plugins
 
         self.target = target
         self.options = options
@@ -132,8 +132,8 @@ class Harness:
 
     def run(self) -> Harness:
         """Tick until the target finishes, the window closes or a stop; returns self."""
-        from emulator.harness.pace import Pacer
-        from emulator.harness.signals import DeferredSignals
+        from camlab88.emulator.harness.pace import Pacer
+        from camlab88.emulator.harness.signals import DeferredSignals
 
         self._open_window()
         c = self.options.controls
@@ -166,7 +166,7 @@ class Harness:
     def _open_window(self) -> None:
         if self.options.headless:
             return
-        from emulator.window import Window
+        from camlab88.emulator.window import Window
 
         t = self.target
         self.window = Window(t.title, t.size, scale=self.options.scale)

@@ -10,12 +10,11 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
-
-from base.png import frame_path, write_png
-from emulator.harness.loop import Plugin, RunOptions
+from camlab88.base.png import frame_path, write_png
+from camlab88.emulator.harness.loop import Plugin, RunOptions
 
 if TYPE_CHECKING:
-    from emulator.harness.loop import Harness
+    from camlab88.emulator.harness.loop import Harness
 
 
 class FrameWriter(Plugin):
@@ -65,7 +64,7 @@ def _named_errors(harness: Harness, path: Path) -> Iterator[None]:
 
 def standard_plugins(options: RunOptions) -> list[Plugin]:
     """The plugins ``options`` ask for, and those of an active replay (emulator.harness.replay)."""
-    from emulator.harness import replay, session_record
+    from camlab88.emulator.harness import replay, session_record
 
     plugins: list[Plugin] = []
     active = replay.active()
@@ -75,7 +74,7 @@ def standard_plugins(options: RunOptions) -> list[Plugin]:
     elif options.record is not None:
         plugins.append(session_record.SessionRecorder(options))
     if options.state is not None:  # first: a loaded state is in place before others start
-        from emulator.harness.state_plugin import StatePlugin
+        from camlab88.emulator.harness.state_plugin import StatePlugin
 
         plugins.insert(0, StatePlugin(options.state))
     if options.frames is not None:

@@ -20,14 +20,14 @@ from fractions import Fraction
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from base.objstate import StateError, capture, own_state, restore
-from emulator.machine.state_file import MachineStateError, pack, unpack
-from emulator.sigma import Terminal
+from camlab88.base.objstate import StateError, capture, own_state, restore
+from camlab88.emulator.machine.state_file import MachineStateError, pack, unpack
+from camlab88.emulator.sigma import Terminal
 
 own_state(Terminal)  # the terminal's own versioned state (emulator/sigma/state.py)
 
 if TYPE_CHECKING:
-    from emulator.harness.loop import Harness
+    from camlab88.emulator.harness.loop import Harness
 
 # flags that change how a run is shown or recorded, never what the program does
 RUN_ONLY = {"--headless": 0, "--screenshot": 1, "--frames": 1, "--stop-after": 1,

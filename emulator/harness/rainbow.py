@@ -9,11 +9,10 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
-
-from emulator.harness.program_state import SavesState
-from emulator.host_input import HostEvent
-from emulator.rainbow.host_input import RainbowHostInput
-from protocols.rainbow.script import Player
+from camlab88.emulator.harness.program_state import SavesState
+from camlab88.emulator.host_input import HostEvent
+from camlab88.emulator.rainbow.host_input import RainbowHostInput
+from camlab88.protocols.rainbow.script import Player
 
 FPS = 50  # the Rainbow's display frames per second
 

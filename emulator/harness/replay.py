@@ -18,16 +18,15 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-
-from emulator.harness import codec
-from emulator.harness.control_options import Controls
-from emulator.harness.loop import Plugin, RunOptions
-from emulator.harness.session_record import screen_hash
-from emulator.host_input import HostEvent, Quit
-from protocols.session import ScreenHash, SessionRecording
+from camlab88.emulator.harness import codec
+from camlab88.emulator.harness.control_options import Controls
+from camlab88.emulator.harness.loop import Plugin, RunOptions
+from camlab88.emulator.harness.session_record import screen_hash
+from camlab88.emulator.host_input import HostEvent, Quit
+from camlab88.protocols.session import ScreenHash, SessionRecording
 
 if TYPE_CHECKING:
-    from emulator.harness.loop import Harness
+    from camlab88.emulator.harness.loop import Harness
 
 
 @dataclass(frozen=True)

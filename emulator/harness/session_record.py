@@ -14,14 +14,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
-
-from emulator.harness import codec
-from emulator.harness.loop import Plugin, RunOptions
-from emulator.host_input import HostEvent
-from protocols.session import ScreenHash, SessionRecording, write
+from camlab88.emulator.harness import codec
+from camlab88.emulator.harness.loop import Plugin, RunOptions
+from camlab88.emulator.host_input import HostEvent
+from camlab88.protocols.session import ScreenHash, SessionRecording, write
 
 if TYPE_CHECKING:
-    from emulator.harness.loop import Harness
+    from camlab88.emulator.harness.loop import Harness
 
 HASH_EVERY = 10
 _OPTIONS_NOT_RECORDED = {"--record"}  # value options the replay must not repeat

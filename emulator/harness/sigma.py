@@ -9,11 +9,10 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
-
-from emulator.harness.program_state import SavesState
-from emulator.host_input import HostEvent
-from emulator.machine import SigmaMachine
-from emulator.machine.state_file import MachineStateError
+from camlab88.emulator.harness.program_state import SavesState
+from camlab88.emulator.host_input import HostEvent
+from camlab88.emulator.machine import SigmaMachine
+from camlab88.emulator.machine.state_file import MachineStateError
 
 TICK = Fraction(1, 100)  # a program session's polling period: line time between polls
 
@@ -89,8 +88,8 @@ class SigmaProgramTarget(SavesState):
         self._buttons = 0
 
     def handle_events(self, events: list[HostEvent]) -> None:
-        from emulator.host_input import KeyDown, PointerButton, PointerMove
-        from protocols.tablets.input_layer import MouseSample
+        from camlab88.emulator.host_input import KeyDown, PointerButton, PointerMove
+        from camlab88.protocols.tablets.input_layer import MouseSample
 
         for ev in events:
             if isinstance(ev, KeyDown):
@@ -190,14 +189,14 @@ class PeriodTarget:
         return self.k / self._period
 
     def save_state(self) -> bytes:
-        from emulator.machine.state_file import pack
+        from camlab88.emulator.machine.state_file import pack
 
         if self.result is not None:
             raise MachineStateError("the line test has finished: nothing left to save")
         return pack("period", {"k": self.k}, {"machine": self.machine.save_state()})
 
     def load_state(self, data: bytes) -> None:
-        from emulator.machine.state_file import unpack
+        from camlab88.emulator.machine.state_file import unpack
 
         head, blobs = unpack(data, "period")
         k = head.get("k")

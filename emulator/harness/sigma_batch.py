@@ -8,10 +8,9 @@ from collections.abc import Generator, Iterator
 from typing import Any
 
 import numpy as np
-
-from emulator.machine import HostPort, SigmaMachine
-from protocols.link import LineSettings
-from protocols.link.clock import TimeLike, to_time
+from camlab88.emulator.machine import HostPort, SigmaMachine
+from camlab88.protocols.link import LineSettings
+from camlab88.protocols.link.clock import TimeLike, to_time
 
 
 def settle(machine: SigmaMachine) -> None:

@@ -15,10 +15,9 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
-
-from emulator.harness.sigma_batch import settle
-from emulator.host_input import HostEvent, KeyDown, PointerButton, PointerMove
-from emulator.machine import SigmaMachine
+from camlab88.emulator.harness.sigma_batch import settle
+from camlab88.emulator.host_input import HostEvent, KeyDown, PointerButton, PointerMove
+from camlab88.emulator.machine import SigmaMachine
 
 
 class SigmaHostTarget:

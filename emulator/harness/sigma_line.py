@@ -17,11 +17,10 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
-
-from emulator.harness.program_state import SavesState
-from emulator.host_input import HostEvent
-from emulator.machine import SigmaMachine
-from emulator.sigma.host_input import KEYS_HINT, to_terminal
+from camlab88.emulator.harness.program_state import SavesState
+from camlab88.emulator.host_input import HostEvent
+from camlab88.emulator.machine import SigmaMachine
+from camlab88.emulator.sigma.host_input import KEYS_HINT, to_terminal
 
 TICK = Fraction(1, 100)  # virtual seconds per tick
 ORDER_TIMEOUT = Fraction(10)  # s of line time a half-received order may wait for its rest

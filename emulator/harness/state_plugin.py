@@ -17,20 +17,20 @@ from fractions import Fraction
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from base.atomicfile import write_atomic
-from emulator.harness.loop import Plugin
-from emulator.harness.program_state import (
+from camlab88.base.atomicfile import write_atomic
+from camlab88.emulator.harness.loop import Plugin
+from camlab88.emulator.harness.program_state import (
     SUFFIX,
     StateOptions,
     identity,
     load_program,
     save_program,
 )
-from emulator.host_input import HostEvent, KeyDown
-from emulator.machine.state_file import MachineStateError
+from camlab88.emulator.host_input import HostEvent, KeyDown
+from camlab88.emulator.machine.state_file import MachineStateError
 
 if TYPE_CHECKING:
-    from emulator.harness.loop import Harness
+    from camlab88.emulator.harness.loop import Harness
 
 KEEP = 64  # snapshots held for F4
 

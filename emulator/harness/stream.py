@@ -9,8 +9,8 @@ from fractions import Fraction
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from emulator.harness.loop import Plugin
-from emulator.host_input import HostEvent, KeyDown
+from camlab88.emulator.harness.loop import Plugin
+from camlab88.emulator.host_input import HostEvent, KeyDown
 
 if TYPE_CHECKING:
     import numpy as np
@@ -65,7 +65,7 @@ class PngGifWriter(Plugin):
         self.count = 0
 
     def on_frame(self, harness: Any, frame: np.ndarray) -> None:
-        from base.png import write_png
+        from camlab88.base.png import write_png
 
         write_png(frame, self.out / f"{self.name}_{self.count:04d}.png")
         if self.count % GIF_EVERY == 0:
@@ -84,9 +84,8 @@ class PngGifWriter(Plugin):
 
 def write_gif(frames: list[np.ndarray], path: Path, fps: int) -> None:
     """An animated GIF of every GIF_EVERY-th frame (64 colours), written atomically."""
+    from camlab88.base.atomicfile import atomic_output
     from PIL import Image
-
-    from base.atomicfile import atomic_output
 
     images = [Image.fromarray(f).convert("P", palette=Image.Palette.ADAPTIVE, colors=64)
               for f in frames]

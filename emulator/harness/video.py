@@ -12,11 +12,10 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-
-from emulator.harness.loop import Plugin
+from camlab88.emulator.harness.loop import Plugin
 
 if TYPE_CHECKING:
-    from emulator.harness.loop import Harness
+    from camlab88.emulator.harness.loop import Harness
 
 FORMATS = (".mp4", ".gif")
 
@@ -47,8 +46,7 @@ class VideoWriter(Plugin):
         import contextlib
 
         import imageio_ffmpeg
-
-        from base.atomicfile import atomic_path
+        from camlab88.base.atomicfile import atomic_path
 
         self._stack = contextlib.ExitStack()
         self._tmp = self._stack.enter_context(atomic_path(self.path))

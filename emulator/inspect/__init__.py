@@ -3,6 +3,6 @@ planes, write mask, modes, cursor, last orders; Rainbow: pad graph, bands, video
 drawn with numpy and the ROM font.  ``panel_for(target)`` finds the device behind a harness
 target and returns a function drawing its panel (None: nothing to inspect)."""
 
-from emulator.inspect.find import PANEL_WIDTH, panel_for
+from camlab88.emulator.inspect.find import PANEL_WIDTH, panel_for
 
 __all__ = ["PANEL_WIDTH", "panel_for"]

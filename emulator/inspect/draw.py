@@ -5,8 +5,7 @@ to a window, to PNGs and to golden tests."""
 from __future__ import annotations
 
 import numpy as np
-
-from roms.rainbow_font import load_font
+from camlab88.roms.rainbow_font import load_font
 
 Colour = tuple[int, int, int]
 INK: Colour = (230, 230, 230)

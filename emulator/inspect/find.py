@@ -31,12 +31,12 @@ def panel_for(target: Any) -> Callable[[np.ndarray], np.ndarray] | None:
     behind ``target``, or None when there is no device the inspector knows."""
     term = _sigma_terminal(target)
     if term is not None:
-        from emulator.inspect.sigma import SigmaPanel
+        from camlab88.emulator.inspect.sigma import SigmaPanel
 
         return SigmaPanel(term, target.time, PANEL_WIDTH)
     device = _rainbow_device(target)
     if device is not None:
-        from emulator.inspect.rainbow import RainbowPanel
+        from camlab88.emulator.inspect.rainbow import RainbowPanel
 
         return RainbowPanel(device, PANEL_WIDTH)
     return None

@@ -7,8 +7,7 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-
-from emulator.inspect import draw
+from camlab88.emulator.inspect import draw
 
 BAND_COLOURS = [(255, 200, 60), (80, 200, 255)]
 TREE_DEPTH = 8
@@ -80,7 +79,7 @@ class RainbowPanel:
 
 
 def node_text(graph: Any, nid: int) -> str:
-    from emulator.rainbow.graph import Cluster
+    from camlab88.emulator.rainbow.graph import Cluster
 
     n = graph.nodes[nid]
     if isinstance(n, Cluster):
@@ -91,7 +90,7 @@ def node_text(graph: Any, nid: int) -> str:
 def tree_lines(graph: Any) -> list[str]:
     """The graph from the screen down: one line a node, arcs as ``+x,+y p0`` before it; a
     node met again is named, not expanded (nodes may be mapped many times)."""
-    from emulator.rainbow.graph import SCREEN, Cluster
+    from camlab88.emulator.rainbow.graph import SCREEN, Cluster
 
     lines, seen = [node_text(graph, SCREEN)], {SCREEN}
 

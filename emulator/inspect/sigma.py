@@ -11,9 +11,8 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
-
-from emulator.inspect import draw
-from emulator.protocol_trace import TraceEvent
+from camlab88.emulator.inspect import draw
+from camlab88.emulator.protocol_trace import TraceEvent
 
 ORDERS_KEPT = 14
 
@@ -40,7 +39,7 @@ class SigmaPanel:
         self._tap(term)
 
     def _tap(self, term: Any) -> None:
-        from emulator.sigma.trace import SigmaTracer
+        from camlab88.emulator.sigma.trace import SigmaTracer
 
         tracer = SigmaTracer(term, self._note)
         tracer.offset = tracer.start = term.decoder.stats.bytes_in

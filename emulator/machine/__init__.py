@@ -2,8 +2,8 @@
 saved as one. Host programs talk to a machine's ``host`` port; the public API
 (camlab88.Sigma, camlab88.Rainbow) stands on these."""
 
-from emulator.machine.rainbow import RainbowMachine
-from emulator.machine.sigma import HostPort, SigmaMachine
-from emulator.machine.state_file import MachineStateError
+from camlab88.emulator.machine.rainbow import RainbowMachine
+from camlab88.emulator.machine.sigma import HostPort, SigmaMachine
+from camlab88.emulator.machine.state_file import MachineStateError
 
 __all__ = ["HostPort", "MachineStateError", "RainbowMachine", "SigmaMachine"]

@@ -8,15 +8,14 @@ from collections.abc import Callable
 from fractions import Fraction
 
 import numpy as np
-
-from emulator.machine.state_file import MachineStateError, pack, unpack
-from emulator.protocol_trace import TraceEvent
-from emulator.rainbow.device import FRAME_MS, Rainbow
-from emulator.rainbow.executor import Executor
-from emulator.rainbow.trace import RainbowTracer
-from protocols.rainbow.client import RainbowClient
-from protocols.rainbow.events import Event
-from protocols.rainbow.transport import LoopbackTransport
+from camlab88.emulator.machine.state_file import MachineStateError, pack, unpack
+from camlab88.emulator.protocol_trace import TraceEvent
+from camlab88.emulator.rainbow.device import FRAME_MS, Rainbow
+from camlab88.emulator.rainbow.executor import Executor
+from camlab88.emulator.rainbow.trace import RainbowTracer
+from camlab88.protocols.rainbow.client import RainbowClient
+from camlab88.protocols.rainbow.events import Event
+from camlab88.protocols.rainbow.transport import LoopbackTransport
 
 
 class StreamPort:

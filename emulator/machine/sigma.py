@@ -8,15 +8,14 @@ from collections.abc import Callable
 from fractions import Fraction
 
 import numpy as np
-
-from emulator.machine.state_file import MachineStateError, pack, unpack
-from emulator.protocol_trace import TraceEvent
-from emulator.sigma import Terminal
-from emulator.sigma.trace import SigmaTracer
-from protocols.link import LineSettings, SerialLine, VirtualClock
-from protocols.link.clock import TimeLike, to_time
-from protocols.link.line import RecorderLike
-from protocols.link.port import LinePort
+from camlab88.emulator.machine.state_file import MachineStateError, pack, unpack
+from camlab88.emulator.protocol_trace import TraceEvent
+from camlab88.emulator.sigma import Terminal
+from camlab88.emulator.sigma.trace import SigmaTracer
+from camlab88.protocols.link import LineSettings, SerialLine, VirtualClock
+from camlab88.protocols.link.clock import TimeLike, to_time
+from camlab88.protocols.link.line import RecorderLike
+from camlab88.protocols.link.port import LinePort
 
 TICK = Fraction(1, 100)  # how often the terminal takes what has arrived (as `sigma run`)
 

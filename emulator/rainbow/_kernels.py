@@ -12,15 +12,14 @@ all of them.
 from __future__ import annotations
 
 import numpy as np
-
-from base.lazy_kernels import LazyKernels
+from camlab88.base.lazy_kernels import LazyKernels
 
 
 def _announce() -> None:
-    from base.kernel_notice import announce_compiles
+    from camlab88.base.kernel_notice import announce_compiles
 
     announce_compiles("Rainbow", 4.0, __name__,  # cold compile time, measured
-                      completion="emulator.rainbow.kernel_warmup:compile_kernels")
+                      completion="camlab88.emulator.rainbow.kernel_warmup:compile_kernels")
 
 
 _kernels = LazyKernels(globals(), _announce)

@@ -13,10 +13,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from emulator.rainbow._kernels import INSTANCE_COLUMNS, compile_rows
-from emulator.rainbow.bands import BandStructure
-from emulator.rainbow.graph import SCREEN_H, SCREEN_W, Instance, Pad, PadGraph
+from camlab88.emulator.rainbow._kernels import INSTANCE_COLUMNS, compile_rows
+from camlab88.emulator.rainbow.bands import BandStructure
+from camlab88.emulator.rainbow.graph import SCREEN_H, SCREEN_W, Instance, Pad, PadGraph
 
 
 @dataclass

@@ -1,23 +1,22 @@
 """The Rainbow workstation as one object: graph + memory + compiler + video processor + inputs.
 
-This is the device side of the pad library: ``protocols.rainbow`` clients reach it through
+This is the device side of the pad library: ``camlab88.protocols.rainbow`` clients reach it through
 the command stream (emulator/rainbow/executor.py), never directly.
 """
 
 from __future__ import annotations
 
 import numpy as np
-
-from emulator.rainbow.bands import BandStructure
-from emulator.rainbow.compiler import Compiler
-from emulator.rainbow.draw import Canvas
-from emulator.rainbow.errors import RainbowError
-from emulator.rainbow.graph import MAX_COORD, SCREEN, Cluster, Pad, PadGraph
-from emulator.rainbow.inputs import InputController
-from emulator.rainbow.memory import VideoMemory
-from emulator.rainbow.reference import reference_frame
-from emulator.rainbow.video import LUT_SIZE, render
-from protocols.rainbow.events import Event
+from camlab88.emulator.rainbow.bands import BandStructure
+from camlab88.emulator.rainbow.compiler import Compiler
+from camlab88.emulator.rainbow.draw import Canvas
+from camlab88.emulator.rainbow.errors import RainbowError
+from camlab88.emulator.rainbow.graph import MAX_COORD, SCREEN, Cluster, Pad, PadGraph
+from camlab88.emulator.rainbow.inputs import InputController
+from camlab88.emulator.rainbow.memory import VideoMemory
+from camlab88.emulator.rainbow.reference import reference_frame
+from camlab88.emulator.rainbow.video import LUT_SIZE, render
+from camlab88.protocols.rainbow.events import Event
 
 FRAME_MS = 20  # 50 Hz
 PAGES = LUT_SIZE // 256

@@ -8,10 +8,9 @@ in distinct planes do not disturb each other).
 from __future__ import annotations
 
 import numpy as np
-
-from emulator.rainbow.errors import RainbowError
-from emulator.rainbow.graph import Pad
-from roms.rainbow_font import load_font
+from camlab88.emulator.rainbow.errors import RainbowError
+from camlab88.emulator.rainbow.graph import Pad
+from camlab88.roms.rainbow_font import load_font
 
 MAX_POLYGON_POINTS = 4096
 MAX_TEXT = 4096

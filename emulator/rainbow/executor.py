@@ -10,14 +10,20 @@ import struct
 from collections.abc import Callable
 
 import numpy as np
-
-from emulator.rainbow.device import Rainbow
-from emulator.rainbow.errors import RainbowError
-from emulator.rainbow.graph import SCREEN_H, SCREEN_W
-from emulator.rainbow.trace import RainbowTracer
-from emulator.rainbow.video import LUT_SIZE
-from protocols.rainbow.events import encode_event
-from protocols.rainbow.stream import OK, REFUSED, Command, Decoder, StreamError, encode_reply
+from camlab88.emulator.rainbow.device import Rainbow
+from camlab88.emulator.rainbow.errors import RainbowError
+from camlab88.emulator.rainbow.graph import SCREEN_H, SCREEN_W
+from camlab88.emulator.rainbow.trace import RainbowTracer
+from camlab88.emulator.rainbow.video import LUT_SIZE
+from camlab88.protocols.rainbow.events import encode_event
+from camlab88.protocols.rainbow.stream import (
+    OK,
+    REFUSED,
+    Command,
+    Decoder,
+    StreamError,
+    encode_reply,
+)
 
 
 class Executor:

@@ -10,8 +10,8 @@ from __future__ import annotations
 import operator
 from dataclasses import dataclass, field
 
-from emulator.rainbow.errors import GraphError, RainbowError
-from emulator.rainbow.memory import Allocation
+from camlab88.emulator.rainbow.errors import GraphError, RainbowError
+from camlab88.emulator.rainbow.memory import Allocation
 
 SCREEN = 0
 SCREEN_W, SCREEN_H = 768, 576

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from emulator.host_input import HostEvent, KeyDown, KeyUp, PointerButton, PointerMove
-from protocols.rainbow.events import Event, KeyEvent, MouseEvent, TabletEvent
+from camlab88.emulator.host_input import HostEvent, KeyDown, KeyUp, PointerButton, PointerMove
+from camlab88.protocols.rainbow.events import Event, KeyEvent, MouseEvent, TabletEvent
 
 
 class RainbowHostInput:

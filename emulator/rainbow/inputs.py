@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections import deque
 from dataclasses import replace
 
-from protocols.rainbow.events import (
+from camlab88.protocols.rainbow.events import (
     Event,
     KeyEvent,
     MouseEvent,

@@ -9,7 +9,7 @@ the device's own calls have.
 
 from __future__ import annotations
 
-from emulator.rainbow.device import Rainbow
+from camlab88.emulator.rainbow.device import Rainbow
 
 
 def compile_kernels() -> None:

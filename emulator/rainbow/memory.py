@@ -12,8 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from emulator.rainbow.errors import OutOfVideoMemory, RainbowError
+from camlab88.emulator.rainbow.errors import OutOfVideoMemory, RainbowError
 
 GRANULE = 8
 PLANES = 8

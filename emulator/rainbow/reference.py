@@ -8,9 +8,8 @@ the OR of the words of the instances holding that key, and the largest LUT page 
 from __future__ import annotations
 
 import numpy as np
-
-from emulator.rainbow.errors import GraphError
-from emulator.rainbow.graph import (
+from camlab88.emulator.rainbow.errors import GraphError
+from camlab88.emulator.rainbow.graph import (
     MAX_INSTANCES,
     MAX_VISITS,
     SCREEN,

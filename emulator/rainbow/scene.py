@@ -20,12 +20,11 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-
-from base.textinput import quote, read_json
-from emulator.rainbow.colour import parse_hex
-from emulator.rainbow.device import Rainbow
-from emulator.rainbow.errors import RainbowError
-from emulator.rainbow.graph import SCREEN
+from camlab88.base.textinput import quote, read_json
+from camlab88.emulator.rainbow.colour import parse_hex
+from camlab88.emulator.rainbow.device import Rainbow
+from camlab88.emulator.rainbow.errors import RainbowError
+from camlab88.emulator.rainbow.graph import SCREEN
 
 
 class SceneError(ValueError):

@@ -21,8 +21,8 @@ import socket
 import time
 from dataclasses import dataclass, field
 
-from emulator.rainbow.executor import Executor
-from protocols.rainbow.stream import REFUSED, Decoder, StreamError, encode_reply
+from camlab88.emulator.rainbow.executor import Executor
+from camlab88.protocols.rainbow.stream import REFUSED, Decoder, StreamError, encode_reply
 
 FRAME_TIMEOUT = 10.0  # s from a frame's first byte to its last
 IDLE_TIMEOUT = 60.0  # s of silence after which a client gives way to a waiting one

@@ -6,13 +6,12 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
-
-from emulator.rainbow.device import Rainbow
-from emulator.rainbow.executor import Executor
-from protocols.rainbow.client import RainbowClient
-from protocols.rainbow.events import Event
-from protocols.rainbow.recording import Recording, RecordingTransport, ReplayResult, replay
-from protocols.rainbow.transport import LoopbackTransport
+from camlab88.emulator.rainbow.device import Rainbow
+from camlab88.emulator.rainbow.executor import Executor
+from camlab88.protocols.rainbow.client import RainbowClient
+from camlab88.protocols.rainbow.events import Event
+from camlab88.protocols.rainbow.recording import Recording, RecordingTransport, ReplayResult, replay
+from camlab88.protocols.rainbow.transport import LoopbackTransport
 
 
 @dataclass

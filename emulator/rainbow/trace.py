@@ -10,8 +10,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from emulator.protocol_trace import ProtocolError, TraceEvent
-from protocols.rainbow.stream import HEADER, OK, Command, StreamError, split_reply
+from camlab88.emulator.protocol_trace import ProtocolError, TraceEvent
+from camlab88.protocols.rainbow.stream import HEADER, OK, Command, StreamError, split_reply
 
 __all__ = ["ProtocolError", "RainbowTracer", "TraceEvent"]
 

@@ -7,10 +7,9 @@ says is what appears.
 from __future__ import annotations
 
 import numpy as np
-
-from emulator.rainbow._kernels import scanout
-from emulator.rainbow.bands import BandStructure
-from emulator.rainbow.graph import SCREEN_H, SCREEN_W
+from camlab88.emulator.rainbow._kernels import scanout
+from camlab88.emulator.rainbow.bands import BandStructure
+from camlab88.emulator.rainbow.graph import SCREEN_H, SCREEN_W
 
 LUT_SIZE = 4096
 

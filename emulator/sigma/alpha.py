@@ -7,9 +7,8 @@ them); FF clearing the alpha screen is read from PGPLOT's "erase alpha screen" (
 from __future__ import annotations
 
 import numpy as np
-
-from emulator.sigma.models import SCREEN_H, SCREEN_W
-from roms.sigma import load_font
+from camlab88.emulator.sigma.models import SCREEN_H, SCREEN_W
+from camlab88.roms.sigma import load_font
 
 CELL_W, CELL_H = 8, 16
 COLS, ROWS = SCREEN_W // CELL_W, SCREEN_H // CELL_H

@@ -12,11 +12,10 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 import numpy as np
-
-from emulator.sigma.models import SCREEN_H, SCREEN_W, Model
+from camlab88.emulator.sigma.models import SCREEN_H, SCREEN_W, Model
 
 if TYPE_CHECKING:
-    from emulator.sigma.terminal import Terminal
+    from camlab88.emulator.sigma.terminal import Terminal
 
 ALPHA_RGB = np.array((64, 255, 64), dtype=np.uint8)  # reconstructed: a green alpha screen
 SMALL_CURSOR_ARM = 8  # pixels each side of a non-full-screen cursor

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from protocols.sigma.abbreviated import scan_points
+from camlab88.protocols.sigma.abbreviated import scan_points
 
 _compiled: Any = None
 
@@ -17,9 +17,8 @@ _compiled: Any = None
 def scan_points_fast(buf: Any, start: int, state: Any, out: Any, k: int) -> tuple[int, int]:
     global _compiled
     if _compiled is None:
+        from camlab88.base.kernel_load import lean_cache_loads
         from numba import njit
-
-        from base.kernel_load import lean_cache_loads
 
         lean_cache_loads()  # this may be the process's first kernel: load it lean (faster start)
         _compiled = njit(cache=True, nogil=True)(scan_points)

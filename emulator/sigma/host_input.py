@@ -8,10 +8,10 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from emulator.host_input import HostEvent, KeyDown, PointerButton, PointerMove
+from camlab88.emulator.host_input import HostEvent, KeyDown, PointerButton, PointerMove
 
 if TYPE_CHECKING:
-    from emulator.sigma.terminal import Terminal
+    from camlab88.emulator.sigma.terminal import Terminal
 
 KEY_CHARS = {"return": "\r", "kp_enter": "\r", "backspace": "\b", "escape": "\x1b",
              "tab": "\t", "delete": "\x7f"}

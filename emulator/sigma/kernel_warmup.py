@@ -9,8 +9,8 @@ argument types are the ones the terminal's own calls have.
 
 from __future__ import annotations
 
-from emulator.sigma.terminal import Terminal
-from protocols.sigma.encoder import Encoder
+from camlab88.emulator.sigma.terminal import Terminal
+from camlab88.protocols.sigma.encoder import Encoder
 
 
 def warm_stream() -> bytes:

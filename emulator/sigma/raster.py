@@ -14,16 +14,15 @@ from __future__ import annotations
 import threading
 
 import numpy as np
-
-from base.lazy_kernels import LazyKernels
+from camlab88.base.lazy_kernels import LazyKernels
 
 
 def _announce() -> None:
-    from base.kernel_notice import announce_compiles
+    from camlab88.base.kernel_notice import announce_compiles
 
     # one line on stderr if the cache is cold; ~2 s is the measured cold compile
-    announce_compiles("Sigma raster", 2.0, __name__, "protocols.sigma.abbreviated",
-                      completion="emulator.sigma.kernel_warmup:compile_kernels")
+    announce_compiles("Sigma raster", 2.0, __name__, "camlab88.protocols.sigma.abbreviated",
+                      completion="camlab88.emulator.sigma.kernel_warmup:compile_kernels")
 
 
 # Every kernel must be called with one set of argument types only: numba's on-disk cache

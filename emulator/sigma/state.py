@@ -19,11 +19,10 @@ from dataclasses import asdict
 from typing import TYPE_CHECKING
 
 import numpy as np
-
-from protocols.sigma.decoder_state import DecoderState
+from camlab88.protocols.sigma.decoder_state import DecoderState
 
 if TYPE_CHECKING:
-    from emulator.sigma.terminal import Terminal
+    from camlab88.emulator.sigma.terminal import Terminal
 
 MAGIC = b"CAMLAB88-SIGMA-STATE\n"
 VERSION = 2
@@ -102,8 +101,8 @@ def load(t: Terminal, data: bytes) -> None:
 def _restore(t: Terminal, header: dict, version: int, planes: np.ndarray, lut: np.ndarray,
              alpha: np.ndarray) -> None:
     """Check every part's state first, then hand each part its own."""
-    from emulator.sigma.alpha import AlphaScreen
-    from emulator.sigma.terminal import Registers
+    from camlab88.emulator.sigma.alpha import AlphaScreen
+    from camlab88.emulator.sigma.terminal import Registers
 
     reg = Registers.from_json(header["registers"])
     c = header["alpha_cursor"]

@@ -11,12 +11,11 @@ from collections.abc import Callable
 from dataclasses import dataclass, fields
 
 import numpy as np
-
-from emulator.sigma import display, raster
-from emulator.sigma.alpha import AlphaScreen
-from emulator.sigma.fast import scan_points_fast
-from emulator.sigma.models import Model, get_model
-from protocols.sigma import (
+from camlab88.emulator.sigma import display, raster
+from camlab88.emulator.sigma.alpha import AlphaScreen
+from camlab88.emulator.sigma.fast import scan_points_fast
+from camlab88.emulator.sigma.models import Model, get_model
+from camlab88.protocols.sigma import (
     AgsEscape,
     AgsPoints,
     AlphaText,
@@ -29,8 +28,8 @@ from protocols.sigma import (
     Points,
     format_report,
 )
-from protocols.sigma.decoder_state import check_keys
-from roms.sigma import load_font, load_lut
+from camlab88.protocols.sigma.decoder_state import check_keys
+from camlab88.roms.sigma import load_font, load_lut
 
 TEXT_CELL_W = 8  # graphics text (BA) advance, reconstructed
 TABLET_KEY = ord("1")  # the key byte a stylus press reports (reconstructed)
@@ -428,11 +427,11 @@ class Terminal:
         self.lut = np.array(lut, dtype=np.uint8)
 
     def save_state(self, compress: bool = True) -> bytes:
-        from emulator.sigma.state import save
+        from camlab88.emulator.sigma.state import save
 
         return save(self, compress)
 
     def load_state(self, data: bytes) -> None:
-        from emulator.sigma.state import load
+        from camlab88.emulator.sigma.state import load
 
         load(self, data)

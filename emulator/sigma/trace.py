@@ -13,12 +13,12 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
-from emulator.protocol_trace import ProtocolError, TraceEvent
-from protocols.sigma import commands as sc
-from protocols.sigma.orders import BY_CODE, ORDERS, Mode
+from camlab88.emulator.protocol_trace import ProtocolError, TraceEvent
+from camlab88.protocols.sigma import commands as sc
+from camlab88.protocols.sigma.orders import BY_CODE, ORDERS, Mode
 
 if TYPE_CHECKING:
-    from emulator.sigma.terminal import Terminal
+    from camlab88.emulator.sigma.terminal import Terminal
 
 CONTEXT = 12  # bytes shown before the offending one
 __all__ = ["ProtocolError", "SigmaTracer", "TraceEvent"]

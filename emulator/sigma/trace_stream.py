@@ -8,10 +8,9 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
-
-from emulator.protocol_trace import TraceEvent
-from emulator.sigma.terminal import Terminal
-from emulator.sigma.trace import SigmaTracer
+from camlab88.emulator.protocol_trace import TraceEvent
+from camlab88.emulator.sigma.terminal import Terminal
+from camlab88.emulator.sigma.trace import SigmaTracer
 
 
 def byte_times(got: Any, char_time: Fraction) -> np.ndarray:

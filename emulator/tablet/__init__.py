@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from emulator.tablet.device import EmulatedTablet
-from emulator.tablet.drive import demo_path, pointer_to_tablet
-from emulator.tablet.view import TabletView
+from camlab88.emulator.tablet.device import EmulatedTablet
+from camlab88.emulator.tablet.drive import demo_path, pointer_to_tablet
+from camlab88.emulator.tablet.view import TabletView
 
 __all__ = ["EmulatedTablet", "TabletView", "demo_path", "pointer_to_tablet"]

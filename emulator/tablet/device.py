@@ -12,11 +12,11 @@ import time
 from collections.abc import Mapping
 from dataclasses import replace
 
-from protocols.link.pty import PtyPort
-from protocols.tablets import wacom4
-from protocols.tablets.base import ProtocolError
-from protocols.tablets.events import TabletEvent, TabletModel
-from protocols.tablets.registry import make_encoder, resolve
+from camlab88.protocols.link.pty import PtyPort
+from camlab88.protocols.tablets import wacom4
+from camlab88.protocols.tablets.base import ProtocolError
+from camlab88.protocols.tablets.events import TabletEvent, TabletModel
+from camlab88.protocols.tablets.registry import make_encoder, resolve
 
 
 class EmulatedTablet:

@@ -6,8 +6,8 @@ import math
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 
-from emulator.host_input import PointerButton, PointerMove
-from protocols.tablets.events import TabletEvent, TabletModel
+from camlab88.emulator.host_input import PointerButton, PointerMove
+from camlab88.protocols.tablets.events import TabletEvent, TabletModel
 
 # window mouse button -> tablet button bit: left = tip / button 0, right = barrel, middle = 2nd
 BUTTON_BITS = {1: 1, 3: 2, 2: 4}

@@ -9,8 +9,8 @@ import time
 from collections.abc import Callable
 from typing import Any
 
-from emulator.tablet_input.monitor import READ_TIMEOUT, refuse_without_display
-from emulator.tablet_input.program import TabletProgram
+from camlab88.emulator.tablet_input.monitor import READ_TIMEOUT, refuse_without_display
+from camlab88.emulator.tablet_input.program import TabletProgram
 
 # the scripted stroke of an emulated ?drive=demo tablet: a tap near each corner
 TAPS = ([(0.1, 0.1, 0)] * 3 + [(0.1, 0.1, 1)] * 3 + [(0.1, 0.1, 0)] * 3
@@ -30,7 +30,7 @@ class CalibrateProgram(TabletProgram):
         self.exit_status = 1  # until both corners are touched
 
     def step(self) -> bool:
-        from protocols.tablets.sources import SourceLost
+        from camlab88.protocols.tablets.sources import SourceLost
 
         if self.clock() - self.start > self.seconds:
             print(f"camlab88 tablet: {self.source.name}: calibration gave up after "
@@ -72,9 +72,9 @@ def _hint(source: Any, seen: int) -> str:
 def calibrate_tablet(command: str, source_text: str, seconds: float) -> int:
     """Prompt for the two corners, read them, save the calibration; 1 on a timeout, a lost
     tablet, a closed window or corners that make no working area."""
-    from emulator.harness import RunOptions, run
-    from emulator.tablet_input.emulated_source import open_tablet
-    from protocols.tablets.calibration import CalibrationSession, save_calibration
+    from camlab88.emulator.harness import RunOptions, run
+    from camlab88.emulator.tablet_input.emulated_source import open_tablet
+    from camlab88.protocols.tablets.calibration import CalibrationSession, save_calibration
 
     refuse_without_display(command, source_text)
     source, emu, spec = open_tablet(source_text, script=TAPS)

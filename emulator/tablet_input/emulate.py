@@ -7,7 +7,7 @@ import time
 from collections.abc import Callable
 from typing import Any
 
-from emulator.tablet_input.program import TabletProgram
+from camlab88.emulator.tablet_input.program import TabletProgram
 
 DEMO_FRAMES = 300  # a scripted stroke keeps the pty open this long (a client reads it all)
 SHOT_FRAMES = {True: 270, False: 30}  # --screenshot after so many frames (demo, mouse)
@@ -38,10 +38,10 @@ def emulate_tablet(command: str, protocol: str, demo: bool, seconds: float | Non
     closes or ``seconds`` pass (wall clock, paced: a client on the pty reads in real time)."""
     from pathlib import Path
 
-    from emulator.harness import RunOptions, choose_headless, run
-    from emulator.tablet import demo_path
-    from emulator.tablet_input.emulated_source import EmulatedSource
-    from protocols.tablets.sources import parse_source
+    from camlab88.emulator.harness import RunOptions, choose_headless, run
+    from camlab88.emulator.tablet import demo_path
+    from camlab88.emulator.tablet_input.emulated_source import EmulatedSource
+    from camlab88.protocols.tablets.sources import parse_source
 
     can = "the scripted stroke, no window" if demo and not screenshot else None
     headless = choose_headless(command, False, can, "it is driven by the mouse; try --demo")

@@ -19,10 +19,10 @@ class EmulatedSource:
     """An emulated tablet plus the serial source reading its pty, for monitor/calibrate."""
 
     def __init__(self, spec, on_raw=None, script=None, reader: bool = True) -> None:
-        from emulator.tablet import EmulatedTablet
-        from protocols.tablets.registry import make_parser
-        from protocols.tablets.serial_source import SerialSource
-        from protocols.tablets.sources import parse_source
+        from camlab88.emulator.tablet import EmulatedTablet
+        from camlab88.protocols.tablets.registry import make_parser
+        from camlab88.protocols.tablets.serial_source import SerialSource
+        from camlab88.protocols.tablets.sources import parse_source
 
         options = {k: v for k, v in spec.options.items() if k != "drive"}
         self.drive = spec.options.get("drive", "mouse")
@@ -59,15 +59,15 @@ class EmulatedSource:
 
     def with_view(self) -> None:
         """Draw what the tablet sends (for a window), and take the window's mouse."""
-        from emulator.tablet import TabletView
-        from emulator.tablet.drive import PointerState
+        from camlab88.emulator.tablet import TabletView
+        from camlab88.emulator.tablet.drive import PointerState
 
         self.view = TabletView(self.tablet.model)
         self._pointer = PointerState()
 
     def step(self) -> bool:
         """Advance the scripted stroke one tick; False once it has ended (never without one)."""
-        from emulator.tablet import pointer_to_tablet
+        from camlab88.emulator.tablet import pointer_to_tablet
 
         if self.script is None:
             return True
@@ -83,8 +83,8 @@ class EmulatedSource:
     def handle(self, events: Iterable[object]) -> None:
         """The window's events: o (out of proximity), e (eraser end), and the mouse as the
         pen unless a script draws."""
-        from emulator.host_input import KeyDown
-        from emulator.tablet import pointer_to_tablet
+        from camlab88.emulator.host_input import KeyDown
+        from camlab88.emulator.tablet import pointer_to_tablet
 
         if self.view is None:
             return
@@ -135,7 +135,12 @@ class EmulatedSource:
 def open_tablet(source_text: str, on_raw=None, script=None):
     """(source, emulated-or-None, spec) for a SOURCE string; errors become SystemExit
     messages."""
-    from protocols.tablets.sources import SourceError, SourceLost, open_source, parse_source
+    from camlab88.protocols.tablets.sources import (
+        SourceError,
+        SourceLost,
+        open_source,
+        parse_source,
+    )
 
     try:
         spec = parse_source(source_text)
@@ -151,7 +156,7 @@ def open_tablet(source_text: str, on_raw=None, script=None):
 def needs_window(source_text: str) -> bool:
     """A SOURCE that is the emulated tablet driven by the mouse (a parse error: False,
     ``open_tablet`` reports it)."""
-    from protocols.tablets.sources import SourceError, parse_source
+    from camlab88.protocols.tablets.sources import SourceError, parse_source
 
     try:
         spec = parse_source(source_text)

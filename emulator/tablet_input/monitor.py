@@ -10,7 +10,7 @@ import time
 from collections.abc import Callable
 from typing import Any
 
-from emulator.tablet_input.program import TabletProgram
+from camlab88.emulator.tablet_input.program import TabletProgram
 
 SILENT_HINT = 5.0  # s without a single report before the monitor says what to check
 READ_TIMEOUT = 0.02  # s one tick waits for the tablet
@@ -46,7 +46,7 @@ class Held:
               "(still listening)", file=sys.stderr, flush=True)
 
     def read(self, timeout: float) -> list:
-        from protocols.tablets.sources import SourceLost, open_source
+        from camlab88.protocols.tablets.sources import SourceLost, open_source
 
         if self.source is None:
             if self.clock() < self._next_try:
@@ -84,7 +84,7 @@ class MonitorProgram(TabletProgram):
         self.start = clock()
 
     def step(self) -> bool:
-        from protocols.tablets.sources import SourceLost
+        from camlab88.protocols.tablets.sources import SourceLost
 
         if self.seconds is not None and self.clock() - self.start >= self.seconds:
             return False
@@ -112,8 +112,8 @@ class MonitorProgram(TabletProgram):
 def refuse_without_display(command: str, source_text: str) -> None:
     """A mouse-driven emulated tablet needs a window: without a display refuse before its
     pty is opened and announced (a newcomer saw the pty's path, then the refusal)."""
-    from emulator.harness import choose_headless
-    from emulator.tablet_input.emulated_source import needs_window
+    from camlab88.emulator.harness import choose_headless
+    from camlab88.emulator.tablet_input.emulated_source import needs_window
 
     if needs_window(source_text):
         choose_headless(command, False, None, "use SOURCE?drive=demo, or a real tablet")
@@ -121,7 +121,7 @@ def refuse_without_display(command: str, source_text: str) -> None:
 
 def _windowed(command: str, emu: Any, screenshot: str | None) -> bool:
     """The emulated tablet's window: needed for the mouse (the one display rule)."""
-    from emulator.harness import choose_headless
+    from camlab88.emulator.harness import choose_headless
 
     if emu is None or not (emu.drive == "mouse" or screenshot):
         return False
@@ -135,9 +135,9 @@ def monitor_tablet(command: str, source_text: str, raw: bool, count: int | None,
     ``seconds``, the end of a scripted stroke, or the window closes."""
     from pathlib import Path
 
-    from emulator.harness import RunOptions, run
-    from emulator.tablet import demo_path
-    from emulator.tablet_input.emulated_source import open_tablet
+    from camlab88.emulator.harness import RunOptions, run
+    from camlab88.emulator.tablet import demo_path
+    from camlab88.emulator.tablet_input.emulated_source import open_tablet
 
     def on_raw(data: bytes) -> None:
         print("raw " + data.hex(" "), flush=True)

@@ -2,9 +2,9 @@
 adapter beside the emulated tablet; used by the KAS fronts on the Sigma).
 
 With ``record=True`` everything the tablet sent is noted on a tablet tape
-(``protocols.tablets.tape``) at the poll it was read; a session recorder takes it through
-``take_tape()``.  In a replay (``emulator.harness.replay.active()``) the tape recorded in the
-session is read instead and the ``--tablet`` device is never opened.
+(``camlab88.protocols.tablets.tape``) at the poll it was read; a session recorder takes it through
+``take_tape()``.  In a replay (``camlab88.emulator.harness.replay.active()``) the tape
+recorded in the session is read instead and the ``--tablet`` device is never opened.
 """
 
 from __future__ import annotations
@@ -16,13 +16,13 @@ class TabletInput:
     ``source`` is a SOURCE string or None (mouse only).  With ``emulated:P`` the window's mouse
     drives the emulated tablet, whose bytes come back through its pty and the protocol parser
     -- the same path a real tablet takes.  Programs call :meth:`poll` once per frame with the
-    window's mouse samples and get :class:`protocols.tablets.input_layer.PointerEvent`s in
+    window's mouse samples and get :class:`camlab88.protocols.tablets.input_layer.PointerEvent`s in
     their working coordinates.
     """
 
     def __init__(self, source: str | None, area=None, notify=None, record: bool = False) -> None:
-        from protocols.tablets.input_layer import TWELVE_FIELD, InputLayer
-        from protocols.tablets.sources import parse_source
+        from camlab88.protocols.tablets.input_layer import TWELVE_FIELD, InputLayer
+        from camlab88.protocols.tablets.sources import parse_source
 
         self._emu = None
         self.tape = None
@@ -35,7 +35,7 @@ class TabletInput:
             return
         spec = parse_source(source)
         self._emulated = spec.kind == "emulated"
-        from emulator.tablet_input.taped import recorded_tape
+        from camlab88.emulator.tablet_input.taped import recorded_tape
 
         recorded = recorded_tape()
         if recorded is not None:
@@ -45,9 +45,9 @@ class TabletInput:
         self.layer = self._live_layer(spec, source, area, notify, record)
 
     def _live_layer(self, spec, source: str, area, notify, record: bool):
-        from protocols.tablets.calibration import load_calibration
-        from protocols.tablets.input_layer import InputLayer
-        from protocols.tablets.tape import RecordingSource, TapeRecorder
+        from camlab88.protocols.tablets.calibration import load_calibration
+        from camlab88.protocols.tablets.input_layer import InputLayer
+        from camlab88.protocols.tablets.tape import RecordingSource, TapeRecorder
 
         calibration = load_calibration(spec.device_key)
         if spec.kind == "emulated":
@@ -69,9 +69,9 @@ class TabletInput:
 
     def _open_emulated(self, spec):
         """The emulated tablet on a pty, read back through its protocol parser like a real one."""
-        from emulator.tablet import EmulatedTablet
-        from protocols.tablets.serial_source import SerialSource
-        from protocols.tablets.sources import SourceLost, parse_source
+        from camlab88.emulator.tablet import EmulatedTablet
+        from camlab88.protocols.tablets.serial_source import SerialSource
+        from camlab88.protocols.tablets.sources import SourceLost, parse_source
 
         options = {k: v for k, v in spec.options.items() if k != "drive"}
         self._emu = EmulatedTablet(spec.protocol, options)
@@ -90,7 +90,7 @@ class TabletInput:
         try:
             if self._emulated and self.layer.active == "tablet":
                 if self._emu is not None:
-                    from emulator.tablet import pointer_to_tablet
+                    from camlab88.emulator.tablet import pointer_to_tablet
 
                     for m in mouse:
                         self._emu.send(pointer_to_tablet(m.x, m.y, m.view_size,
@@ -110,7 +110,7 @@ class TabletInput:
 
     def take_tape(self) -> bytes:
         """The tablet tape's entries since the last call (recording only)."""
-        from protocols.tablets.tape import TapeRecorder
+        from camlab88.protocols.tablets.tape import TapeRecorder
 
         return self.tape.take() if isinstance(self.tape, TapeRecorder) else b""
 
@@ -123,10 +123,10 @@ class TabletInput:
 def _replay_layer(tape, area, notify):
     """The input layer fed from the tape: reopened (inline, every poll) exactly at the polls
     where the recorded session got its tablet (back)."""
-    from protocols.tablets.calibration import Calibration
-    from protocols.tablets.input_layer import InputLayer
-    from protocols.tablets.sources import SourceLost
-    from protocols.tablets.tape import TapeSource, decoder_for
+    from camlab88.protocols.tablets.calibration import Calibration
+    from camlab88.protocols.tablets.input_layer import InputLayer
+    from camlab88.protocols.tablets.sources import SourceLost
+    from camlab88.protocols.tablets.tape import TapeSource, decoder_for
 
     cal = tape.calibration()
     calibration = None if cal is None else Calibration(*cal)
@@ -144,7 +144,7 @@ def _replay_layer(tape, area, notify):
 
 def _open_real(spec, source: str, notify):
     """A real tablet, or None (the mouse until it appears) when it is not there yet."""
-    from protocols.tablets.sources import SourceLost, open_source
+    from camlab88.protocols.tablets.sources import SourceLost, open_source
 
     def reopen():
         return open_source(spec)

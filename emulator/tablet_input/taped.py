@@ -9,8 +9,8 @@ from typing import Any
 
 def recorded_tape() -> Any:
     """In a replay: the session's tablet tape (``T`` wire records); else None."""
-    from emulator.harness import replay
-    from protocols.tablets.tape import Tape
+    from camlab88.emulator.harness import replay
+    from camlab88.protocols.tablets.tape import Tape
 
     active = replay.active()
     if active is None:
@@ -31,8 +31,13 @@ class TapedTablet:
 
     @classmethod
     def open(cls, text: str, record: bool) -> TapedTablet:
-        from protocols.tablets.sources import open_source
-        from protocols.tablets.tape import RecordingSource, TapeRecorder, TapeSource, decoder_for
+        from camlab88.protocols.tablets.sources import open_source
+        from camlab88.protocols.tablets.tape import (
+            RecordingSource,
+            TapeRecorder,
+            TapeSource,
+            decoder_for,
+        )
 
         tape = recorded_tape()
         if tape is not None:
@@ -46,7 +51,7 @@ class TapedTablet:
         return cls(RecordingSource(source, recorder), recorder, live=True)
 
     def read(self, timeout: float = 0.0) -> list:
-        from protocols.tablets.sources import SourceLost
+        from camlab88.protocols.tablets.sources import SourceLost
 
         try:
             if self.source is None:
@@ -57,7 +62,7 @@ class TapedTablet:
                 self.tape.poll += 1
 
     def take_tape(self) -> bytes:
-        from protocols.tablets.tape import TapeRecorder
+        from camlab88.protocols.tablets.tape import TapeRecorder
 
         return self.tape.take() if isinstance(self.tape, TapeRecorder) else b""
 

@@ -36,9 +36,9 @@ class _CA:
     menu positions that depend on the program's state are read off the running program."""
 
     def __init__(self, pattern: str, rules: str = "life") -> None:
-        from apps.ca.program import script_events
-        from apps.ca.program.program import CAProgram, Options
-        from emulator.rainbow.session import in_process
+        from camlab88.apps.ca.program import script_events
+        from camlab88.apps.ca.program.program import CAProgram, Options
+        from camlab88.emulator.rainbow.session import in_process
 
         self._se = script_events
         self.session = in_process()
@@ -53,12 +53,12 @@ class _CA:
         self.lines.append(text.rstrip("\n"))
 
     def choose(self, item: str, x: int = 300, y: int = 300) -> None:
-        from apps.ca.program.demo import choose
+        from camlab88.apps.ca.program.demo import choose
 
         self.run(choose(item, x, y))
 
     def leave_editing(self) -> None:
-        from apps.ca.program.demo import leave_editing
+        from camlab88.apps.ca.program.demo import leave_editing
 
         self.run(leave_editing())
 
@@ -71,7 +71,7 @@ class _CA:
         self.choose("Step mode")
 
     def pick(self, item: str) -> None:
-        from protocols.rainbow.ui.menu import ROW_H
+        from camlab88.protocols.rainbow.ui.menu import ROW_H
 
         menu = self.program.choice
         assert menu is not None, f"no choice menu is open for {item!r}"
@@ -297,8 +297,8 @@ def fig_3_7() -> str:
 def _pink_shot() -> dict[str, bytes]:
     """The thesis example's shot and its views (§6.3.1's script), frames 1-70: the
     visualiser ends on the last command's view, behind the pink looking at the pocket."""
-    from apps.snooker.camera import ccl, motion
-    from apps.snooker.visualiser.demo import EXAMPLE_SCRIPT, example_shot
+    from camlab88.apps.snooker.camera import ccl, motion
+    from camlab88.apps.snooker.visualiser.demo import EXAMPLE_SCRIPT, example_shot
 
     with tempfile.TemporaryDirectory() as tmp:
         cp = Path(tmp) / "pink_shot.cp"
@@ -313,8 +313,8 @@ def _pair() -> dict[str, bytes]:
     """Figure 3.6's keyframes: a flag (pole and pennant) on the right, and the same flag
     moved up and left with its pennant turned to face the other way, so each pair of
     corresponding points is a different distance and direction apart."""
-    from apps.kas import files
-    from apps.kas.model import Chain, Drawing
+    from camlab88.apps.kas import files
+    from camlab88.apps.kas.model import Chain, Drawing
 
     def flag(x: float, y: float, s: float) -> Drawing:
         return Drawing([Chain.from_points([(x, y), (x, y + 2.0)], 1),
@@ -339,7 +339,7 @@ def fig_3_6() -> str:
 def _antialias() -> dict[str, bytes]:
     """Figure 6.8: the anti-aliasing demonstration as Sigma orders, made by the renderer's
     own coverage kernel (apps/snooker/render/antialias_figure.py)."""
-    from apps.snooker.render.antialias_figure import screen
+    from camlab88.apps.snooker.render.antialias_figure import screen
 
     return {"antialias.sigma": screen()}
 
@@ -353,11 +353,11 @@ TABLE_BAUD = 115200  # the picture is the same at any speed; 9600 would be 156 s
 def _shaded_table() -> dict[str, bytes]:
     """Figure 6.9: the opening position rendered by the period renderer (§6.4) as the Sigma
     orders it sends the T5688, setup and one frame."""
-    from apps.snooker.camera.views import parse_views
-    from apps.snooker.render.palette import fixed_palette
-    from apps.snooker.render.scene import Scene
-    from apps.snooker.render.sigma_host import SigmaHost
-    from apps.snooker.session import Session
+    from camlab88.apps.snooker.camera.views import parse_views
+    from camlab88.apps.snooker.render.palette import fixed_palette
+    from camlab88.apps.snooker.render.scene import Scene
+    from camlab88.apps.snooker.render.sigma_host import SigmaHost
+    from camlab88.apps.snooker.session import Session
 
     scene = Scene.from_checkpoint(Session.new_game().checkpoint())
     host = SigmaHost(scene, fixed_palette(scene), "period")

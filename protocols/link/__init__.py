@@ -3,13 +3,20 @@ and transports (pty, TCP on loopback, any pyserial URL)."""
 
 from __future__ import annotations
 
-from protocols.link.chunks import chunks_by_period
-from protocols.link.clock import VirtualClock, to_time
-from protocols.link.line import DEVICE_TO_HOST, HOST_TO_DEVICE, XOFF, XON, Endpoint, SerialLine
-from protocols.link.recording import Recorder, Recording, RecordingError, read_recording
-from protocols.link.replay import ReplayEndpoint, replay_into
-from protocols.link.settings import LineSettings
-from protocols.link.throttle import Throttle
+from camlab88.protocols.link.chunks import chunks_by_period
+from camlab88.protocols.link.clock import VirtualClock, to_time
+from camlab88.protocols.link.line import (
+    DEVICE_TO_HOST,
+    HOST_TO_DEVICE,
+    XOFF,
+    XON,
+    Endpoint,
+    SerialLine,
+)
+from camlab88.protocols.link.recording import Recorder, Recording, RecordingError, read_recording
+from camlab88.protocols.link.replay import ReplayEndpoint, replay_into
+from camlab88.protocols.link.settings import LineSettings
+from camlab88.protocols.link.throttle import Throttle
 
 __all__ = [
     "DEVICE_TO_HOST",

@@ -1,7 +1,7 @@
-"""``python -m protocols.link dump|stream|echo ...``."""
+"""``python -m camlab88.protocols.link dump|stream|echo ...``."""
 
 from __future__ import annotations
 
-from protocols.link.cli import main
+from camlab88.protocols.link.cli import main
 
 raise SystemExit(main())

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from protocols.link.clock import TimeLike, to_time
-from protocols.link.settings import LineSettings
+from camlab88.protocols.link.clock import TimeLike, to_time
+from camlab88.protocols.link.settings import LineSettings
 
 
 def chunks_by_period(

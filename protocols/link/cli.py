@@ -1,4 +1,4 @@
-"""Command-line tools for the link: ``python -m protocols.link`` (or ``camlab88 link``).
+"""Command-line tools for the link: ``python -m camlab88.protocols.link`` (or ``camlab88 link``).
 
 * ``dump REC``: a recording in readable form.
 * ``stream REC --out FILE``: the bytes one end received, as a raw stream file.
@@ -17,17 +17,17 @@ from collections.abc import Iterator
 from fractions import Fraction
 from typing import Any
 
-from base.atomicfile import write_atomic
-from protocols.link.cli_args import (
+from camlab88.base.atomicfile import write_atomic
+from camlab88.protocols.link.cli_args import (
     ECHO_HELP,
     STREAM_HELP,
     add_echo_arguments,
     add_stream_arguments,
 )
-from protocols.link.line import SerialLine
-from protocols.link.recording import Recorder, RecordingError, read_recording
-from protocols.link.settings import LineSettings
-from protocols.link.throttle import Throttle
+from camlab88.protocols.link.line import SerialLine
+from camlab88.protocols.link.recording import Recorder, RecordingError, read_recording
+from camlab88.protocols.link.settings import LineSettings
+from camlab88.protocols.link.throttle import Throttle
 
 _PRINTABLE = {i: chr(i) for i in range(0x20, 0x7F) if chr(i) != "\\"}
 
@@ -131,7 +131,12 @@ def _sigterm_as_interrupt() -> Iterator[None]:
 def echo_command(args: argparse.Namespace) -> int:
     """The echo device with the options of :func:`add_echo_arguments`, until Ctrl-C/SIGTERM or
     ``--seconds`` of line time."""
-    from protocols.link.transports import IDLE_TIMEOUT, PtyBridge, SerialUrlBridge, TcpBridge
+    from camlab88.protocols.link.transports import (
+        IDLE_TIMEOUT,
+        PtyBridge,
+        SerialUrlBridge,
+        TcpBridge,
+    )
 
     settings = LineSettings.parse(f"{args.baud} {args.framing}")
     recorder = Recorder(args.record, settings, xonxoff=not args.no_xonxoff) if args.record else None
@@ -179,7 +184,7 @@ def add_tools(link: argparse.ArgumentParser) -> None:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(
-        prog="python -m protocols.link",
+        prog="python -m camlab88.protocols.link",
         description="Tools for the emulated serial line (see docs/link.md).",
     )
     add_tools(parser)

@@ -1,4 +1,4 @@
-"""The one parser of each link tool, shared by ``python -m protocols.link`` and ``camlab88
+"""The one parser of each link tool, shared by ``python -m camlab88.protocols.link`` and ``camlab88
 link``; argparse only, so a command registers it without loading the line."""
 
 from __future__ import annotations

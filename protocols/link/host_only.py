@@ -6,10 +6,10 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from protocols.link.clock import TimeLike, VirtualClock, to_time
-from protocols.link.line import SerialLine
-from protocols.link.port import LinePort
-from protocols.link.settings import LineSettings
+from camlab88.protocols.link.clock import TimeLike, VirtualClock, to_time
+from camlab88.protocols.link.line import SerialLine
+from camlab88.protocols.link.port import LinePort
+from camlab88.protocols.link.settings import LineSettings
 
 
 class HostOnlyLine:

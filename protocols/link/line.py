@@ -32,8 +32,8 @@ from collections.abc import Callable
 from fractions import Fraction
 from typing import Protocol
 
-from protocols.link.clock import TimeLike, VirtualClock, to_time
-from protocols.link.settings import LineSettings
+from camlab88.protocols.link.clock import TimeLike, VirtualClock, to_time
+from camlab88.protocols.link.settings import LineSettings
 
 XON = 0x11  # DC1
 XOFF = 0x13  # DC3
@@ -255,13 +255,13 @@ class SerialLine:
     def save_state(self) -> dict[str, object]:
         """Both directions' queued bytes, flow events and unread bytes (JSON-able; the clock
         and the recorder are not included)."""
-        from protocols.link.line_state import save
+        from camlab88.protocols.link.line_state import save
 
         return save(self)
 
     def load_state(self, state: object) -> None:
         """Put back save_state()'s dict (ValueError naming a bad entry, nothing changed)."""
-        from protocols.link.line_state import load
+        from camlab88.protocols.link.line_state import load
 
         load(self, state)
 

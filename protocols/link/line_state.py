@@ -11,7 +11,7 @@ from collections import deque
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from protocols.link.line import SerialLine, _Direction
+    from camlab88.protocols.link.line import SerialLine, _Direction
 
 VERSION = 1
 _INTS = ("pending_flows", "tx_free", "tail", "sent", "flow_sent")
@@ -55,7 +55,7 @@ def _int(v: object, what: str) -> int:
 
 
 def _parse_dir(d: object, name: str) -> dict[str, Any]:
-    from protocols.link.line import _Segment
+    from camlab88.protocols.link.line import _Segment
 
     if not isinstance(d, dict):
         raise ValueError(f"line state direction {name!r} is missing")

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Protocol
 import numpy as np
 
 if TYPE_CHECKING:
-    from protocols.link.line import SerialLine
+    from camlab88.protocols.link.line import SerialLine
 
 
 class HostPort(Protocol):

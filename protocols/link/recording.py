@@ -29,11 +29,11 @@ from fractions import Fraction
 from pathlib import Path
 from typing import IO
 
-from base.atomicfile import commit, naming_user_path, output_target, temp_beside
-from base.textinput import quote, read_text
-from protocols.link.clock import TimeLike, to_time
-from protocols.link.line import XOFF, XON
-from protocols.link.settings import LineSettings
+from camlab88.base.atomicfile import commit, naming_user_path, output_target, temp_beside
+from camlab88.base.textinput import quote, read_text
+from camlab88.protocols.link.clock import TimeLike, to_time
+from camlab88.protocols.link.line import XOFF, XON
+from camlab88.protocols.link.settings import LineSettings
 
 MAGIC = "camlab88-link-recording"
 VERSION = 1

@@ -8,9 +8,9 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from protocols.link.clock import TimeLike, VirtualClock, to_time
-from protocols.link.line import Endpoint
-from protocols.link.recording import Recording
+from camlab88.protocols.link.clock import TimeLike, VirtualClock, to_time
+from camlab88.protocols.link.line import Endpoint
+from camlab88.protocols.link.recording import Recording
 
 
 def replay_into(recording: Recording, endpoint: Endpoint, direction: str | None = None) -> int:

@@ -13,8 +13,8 @@ import re
 from fractions import Fraction
 from pathlib import Path
 
-from base.textinput import read_bytes
-from protocols.link.recording import MAGIC, Recording, RecordingError, read_recording
+from camlab88.base.textinput import read_bytes
+from camlab88.protocols.link.recording import MAGIC, Recording, RecordingError, read_recording
 
 # lines only a recording has: its header keys and "<time> <dir> <hex>" chunks
 _RECORDING_LINE = re.compile(

@@ -10,7 +10,7 @@ from __future__ import annotations
 import time
 from collections.abc import Callable
 
-from protocols.link.clock import TimeLike, to_time
+from camlab88.protocols.link.clock import TimeLike, to_time
 
 
 class Throttle:

@@ -32,10 +32,10 @@ from collections import deque
 from dataclasses import dataclass, field
 from typing import Any
 
-from protocols.link.line import Endpoint
-from protocols.link.pty import PtyPort
-from protocols.link.serial_port import CHUNK, open_url, read_available
-from protocols.link.settings import LineSettings
+from camlab88.protocols.link.line import Endpoint
+from camlab88.protocols.link.pty import PtyPort
+from camlab88.protocols.link.serial_port import CHUNK, open_url, read_available
+from camlab88.protocols.link.settings import LineSettings
 
 MAX_EVENTS = 100  # events kept on .events; older ones are dropped
 BUSY = b"camlab88: another client is connected to this line; try again later\r\n"
@@ -382,8 +382,8 @@ class SerialUrlBridge(Bridge):
     ``socket://h:p``, ``rfc2217://h:p``.
 
     The port is opened with the line's settings (and only options its handler supports);
-    each poll takes whatever has arrived (``protocols.link.serial_port``), so any URL keeps up
-    with the line.  If it cannot be opened or fails, that is reported and the bridge tries
+    each poll takes whatever has arrived (``camlab88.protocols.link.serial_port``), so any URL
+    keeps up with the line.  If it cannot be opened or fails, that is reported and the bridge tries
     again on a later poll.
     """
 

@@ -1,6 +1,6 @@
 """The Rainbow pad library (client side): API, command stream, transports, recording, UI."""
 
-from protocols.rainbow.client import (
+from camlab88.protocols.rainbow.client import (
     LUT_SIZE,
     SCREEN,
     SCREEN_H,
@@ -9,8 +9,8 @@ from protocols.rainbow.client import (
     RainbowRefused,
     parse_colour,
 )
-from protocols.rainbow.events import LEFT, MIDDLE, RIGHT, KeyEvent, MouseEvent, TabletEvent
-from protocols.rainbow.transport import LoopbackTransport, SocketTransport
+from camlab88.protocols.rainbow.events import LEFT, MIDDLE, RIGHT, KeyEvent, MouseEvent, TabletEvent
+from camlab88.protocols.rainbow.transport import LoopbackTransport, SocketTransport
 
 __all__ = ["LEFT", "LUT_SIZE", "MIDDLE", "RIGHT", "SCREEN", "SCREEN_H", "SCREEN_W",
            "KeyEvent", "LoopbackTransport", "MouseEvent", "RainbowClient", "RainbowRefused",

@@ -11,10 +11,9 @@ import struct
 from collections.abc import Iterable, Iterator, Sequence
 
 import numpy as np
-
-from protocols.rainbow.events import Event, decode_events
-from protocols.rainbow.stream import OK, encode, split_reply
-from protocols.rainbow.transport import Transport
+from camlab88.protocols.rainbow.events import Event, decode_events
+from camlab88.protocols.rainbow.stream import OK, encode, split_reply
+from camlab88.protocols.rainbow.transport import Transport
 
 SCREEN = 0
 SCREEN_W, SCREEN_H = 768, 576

@@ -10,10 +10,10 @@ from __future__ import annotations
 
 import math
 
-from protocols.rainbow import transparency
-from protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
-from protocols.rainbow.events import MouseEvent
-from protocols.rainbow.ui import DoubleBuffer, MessageArea, PopupMenu
+from camlab88.protocols.rainbow import transparency
+from camlab88.protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
+from camlab88.protocols.rainbow.events import MouseEvent
+from camlab88.protocols.rainbow.ui import DoubleBuffer, MessageArea, PopupMenu
 
 BG_PAGE, BALL_PAGE, MSG_PAGE = 4, 5, 6
 BALLS_W, BALLS_H = 300, 220

@@ -18,10 +18,10 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from base.atomicfile import write_atomic
-from base.textinput import quote, read_text
-from protocols.rainbow.events import Event, decode_events, encode_event
-from protocols.rainbow.transport import Transport
+from camlab88.base.atomicfile import write_atomic
+from camlab88.base.textinput import quote, read_text
+from camlab88.protocols.rainbow.events import Event, decode_events, encode_event
+from camlab88.protocols.rainbow.transport import Transport
 
 MAGIC = "# camlab88 rainbow recording v1"
 

@@ -27,7 +27,7 @@ import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from protocols.rainbow.events import KeyEvent, MouseEvent
+from camlab88.protocols.rainbow.events import KeyEvent, MouseEvent
 
 Event = MouseEvent | KeyEvent
 BUTTONS = {"left": (1, 1), "middle": (2, 2), "right": (3, 4)}  # name: (button, bit)

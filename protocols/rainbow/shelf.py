@@ -24,8 +24,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-
-from protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
+from camlab88.protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
 
 COMPONENTS = ("back", "left", "right", "shelves")          # plane pairs 0-1, 2-3, 4-5, 6-7
 PAINT_ORDER = ("back", "shelves", "left", "right")          # far to near

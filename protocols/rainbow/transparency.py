@@ -14,9 +14,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from protocols.rainbow.antialias import coverage
-from protocols.rainbow.client import SCREEN, RainbowClient
+from camlab88.protocols.rainbow.antialias import coverage
+from camlab88.protocols.rainbow.client import SCREEN, RainbowClient
 
 RED = np.array([255, 0, 0])
 SPLODGES = np.array([[0, 0, 0], [40, 90, 255], [40, 200, 60], [250, 220, 40],

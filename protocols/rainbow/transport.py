@@ -2,7 +2,7 @@
 
 ``LoopbackTransport`` calls a handler in the same process (the default: the wiring passes
 the emulator's ``Executor.handle``); ``SocketTransport`` speaks the same frames over a local
-TCP socket to ``emulator.rainbow.server``.
+TCP socket to ``camlab88.emulator.rainbow.server``.
 """
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ import socket
 from collections.abc import Callable
 from typing import Protocol
 
-from protocols.rainbow.stream import HEADER, StreamError
+from camlab88.protocols.rainbow.stream import HEADER, StreamError
 
 
 class Transport(Protocol):

@@ -125,7 +125,7 @@ def dumps(rec: SessionRecording) -> str:
 
 def write(path: str | os.PathLike[str], rec: SessionRecording) -> None:
     """Write atomically (base.atomicfile)."""
-    from base.atomicfile import write_atomic
+    from camlab88.base.atomicfile import write_atomic
 
     write_atomic(path, dumps(rec).encode("utf-8"))
 
@@ -142,6 +142,6 @@ def read(path: str | os.PathLike[str]) -> SessionRecording:
 
 
 def loads(raw: bytes, name: str = "<session>") -> SessionRecording:
-    from protocols.session.parse import parse_lines
+    from camlab88.protocols.session.parse import parse_lines
 
     return parse_lines(raw, name)

@@ -20,7 +20,7 @@ import zlib
 from fractions import Fraction
 from typing import Any
 
-from protocols.session.format import (
+from camlab88.protocols.session.format import (
     _KEYS,
     FORMAT,
     VERSION,

@@ -14,9 +14,8 @@ import re
 from collections.abc import Callable
 
 import numpy as np
-
-from protocols.sigma import abbreviated
-from protocols.sigma.commands import (
+from camlab88.protocols.sigma import abbreviated
+from camlab88.protocols.sigma.commands import (
     AgsEnd,
     AgsEscape,
     AgsPoints,
@@ -31,8 +30,8 @@ from protocols.sigma.commands import (
     Point,
     Points,
 )
-from protocols.sigma.decoder_state import DecoderState
-from protocols.sigma.orders import (
+from camlab88.protocols.sigma.decoder_state import DecoderState
+from camlab88.protocols.sigma.orders import (
     BY_CODE,
     CR,
     FF,

@@ -14,9 +14,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from protocols.sigma.abbreviated import PENDING
-from protocols.sigma.commands import DecoderStats
-from protocols.sigma.orders import BY_CODE, GRAPHICS_FLAG, Mode, OrderSpec
+from camlab88.protocols.sigma.abbreviated import PENDING
+from camlab88.protocols.sigma.commands import DecoderStats
+from camlab88.protocols.sigma.orders import BY_CODE, GRAPHICS_FLAG, Mode, OrderSpec
 
 KEYS = ("mode", "coord_digits", "gh", "line_start", "flag_k", "letter", "spec", "field_i",
         "digits_left", "value", "args", "pair", "ags", "ags_first", "esc", "text", "text_over",

@@ -13,7 +13,7 @@ import math
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from protocols.sigma import Encoder
+    from camlab88.protocols.sigma import Encoder
 
 
 def sigma_demo_stream() -> bytes:
@@ -23,7 +23,7 @@ def sigma_demo_stream() -> bytes:
 
 def sigma_picture_stream() -> bytes:
     """The still part: vectors, dash masks, text, ellipses, flood fill, solid blocks."""
-    from protocols.sigma import Encoder
+    from camlab88.protocols.sigma import Encoder
 
     e = Encoder()
     parts = (_power_on, _vectors, _dash_masks, _ellipses, _flood_fill, _blocks)
@@ -86,7 +86,7 @@ def _blocks(e: Encoder) -> bytes:
 
 
 def sigma_animation_stream() -> bytes:
-    from protocols.sigma import Encoder
+    from camlab88.protocols.sigma import Encoder
 
     e = Encoder()
     out = bytearray()

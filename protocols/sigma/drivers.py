@@ -20,9 +20,9 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from protocols.sigma.abbreviated import AgsPointEncoder
-from protocols.sigma.encoder import Encoder
-from protocols.sigma.orders import CR, GRAPHICS_FLAG, LF, US
+from camlab88.protocols.sigma.abbreviated import AgsPointEncoder
+from camlab88.protocols.sigma.encoder import Encoder
+from camlab88.protocols.sigma.orders import CR, GRAPHICS_FLAG, LF, US
 
 
 class PgplotGoc:

@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Sequence
 
-from protocols.sigma.abbreviated import AgsPointEncoder
-from protocols.sigma.orders import (
+from camlab88.protocols.sigma.abbreviated import AgsPointEncoder
+from camlab88.protocols.sigma.orders import (
     BY_CODE,
     BY_NAME,
     CR,

@@ -14,8 +14,8 @@ def read_stream_file(path: str | os.PathLike[str]) -> Any:
     """The raw bytes, or a protocols.link Recording if the file is one. A directory, an
     unreadable file, a bad recording, a recording behind a byte-order mark or one whose first
     line is damaged raises StreamFileError naming the file (never drawn as raw bytes)."""
-    from protocols.link.recording import RecordingError
-    from protocols.link.sniff import read_link_input
+    from camlab88.protocols.link.recording import RecordingError
+    from camlab88.protocols.link.sniff import read_link_input
 
     try:
         return read_link_input(path)

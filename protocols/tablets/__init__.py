@@ -6,8 +6,8 @@ Protocols: ``wacom4`` (Wacom IV), ``summa-mm`` (Summagraphics MM binary, 7-byte 
 
 from __future__ import annotations
 
-from protocols.tablets.events import DeviceReply, TabletEvent, TabletModel
-from protocols.tablets.registry import PROTOCOL_NAMES, make_encoder, make_parser
+from camlab88.protocols.tablets.events import DeviceReply, TabletEvent, TabletModel
+from camlab88.protocols.tablets.registry import PROTOCOL_NAMES, make_encoder, make_parser
 
 __all__ = [
     "PROTOCOL_NAMES",

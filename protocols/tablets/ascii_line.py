@@ -13,9 +13,9 @@ from abc import abstractmethod
 from collections.abc import Callable
 from typing import ClassVar
 
-from protocols.tablets.base import TabletParser, one_of
-from protocols.tablets.events import TabletEvent, TabletModel
-from protocols.tablets.framing import add_parity, parity_ok
+from camlab88.protocols.tablets.base import TabletParser, one_of
+from camlab88.protocols.tablets.events import TabletEvent, TabletModel
+from camlab88.protocols.tablets.framing import add_parity, parity_ok
 
 LINE_LIMIT = 64  # no report or reply is this long; longer means noise without a terminator
 

@@ -6,8 +6,8 @@ from abc import ABC, abstractmethod
 from collections.abc import Callable
 from typing import TypeVar
 
-from protocols.tablets.events import DeviceReply, TabletEvent, TabletModel
-from protocols.tablets.framing import ParmrkFilter, ParseStats, SyncFramer
+from camlab88.protocols.tablets.events import DeviceReply, TabletEvent, TabletModel
+from camlab88.protocols.tablets.framing import ParmrkFilter, ParseStats, SyncFramer
 
 T = TypeVar("T")
 

@@ -7,9 +7,9 @@ as a bitmask -- reconstruction; PERQemu indexes it by button number).
 
 from __future__ import annotations
 
-from protocols.tablets.ascii_line import AsciiReportParser, apply_parity, bit_pad_model
-from protocols.tablets.base import ProtocolError, TabletEncoder
-from protocols.tablets.events import TabletEvent, TabletModel
+from camlab88.protocols.tablets.ascii_line import AsciiReportParser, apply_parity, bit_pad_model
+from camlab88.protocols.tablets.base import ProtocolError, TabletEncoder
+from camlab88.protocols.tablets.events import TabletEvent, TabletModel
 
 NAME = "bitpad1"
 DEFAULT_MODEL = bit_pad_model("Summagraphics Bit Pad One")

@@ -8,9 +8,9 @@ cursor data) is a reconstruction: button n pressed -> digit n, none -> 0.
 
 from __future__ import annotations
 
-from protocols.tablets.ascii_line import AsciiReportParser, apply_parity, bit_pad_model
-from protocols.tablets.base import ProtocolError, TabletEncoder, clamp_check
-from protocols.tablets.events import DeviceReply, TabletEvent, TabletModel
+from camlab88.protocols.tablets.ascii_line import AsciiReportParser, apply_parity, bit_pad_model
+from camlab88.protocols.tablets.base import ProtocolError, TabletEncoder, clamp_check
+from camlab88.protocols.tablets.events import DeviceReply, TabletEvent, TabletModel
 
 NAME = "bitpad2"
 DEFAULT_MODEL = bit_pad_model("Summagraphics Bit Pad Two (MM1103)")

@@ -7,14 +7,14 @@ byte 3 bit 6; code: 0x20, set = out); ``prox_bit`` chooses, default the code's 0
 
 from __future__ import annotations
 
-from protocols.tablets.base import (
+from camlab88.protocols.tablets.base import (
     ProtocolError,
     SyncFramedParser,
     TabletEncoder,
     clamp_check,
     one_of,
 )
-from protocols.tablets.events import TabletEvent, TabletModel
+from camlab88.protocols.tablets.events import TabletEvent, TabletModel
 
 NAME = "calcomp"
 # DrawingBoard 23120: 0 .. 11999 on both axes (the captured right edge), 1000 lpi (ESC%JR1000,0).

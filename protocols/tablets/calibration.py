@@ -11,8 +11,8 @@ import os
 from dataclasses import dataclass
 from pathlib import Path
 
-from base.atomicfile import write_atomic
-from protocols.tablets.events import TabletEvent, TabletModel
+from camlab88.base.atomicfile import write_atomic
+from camlab88.protocols.tablets.events import TabletEvent, TabletModel
 
 FILE_NAME = "calibration.json"
 

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from protocols.tablets.events import TabletEvent, TabletModel
-from protocols.tablets.hid_descriptor import HidField, ReportDescriptor, canonical_usage
+from camlab88.protocols.tablets.events import TabletEvent, TabletModel
+from camlab88.protocols.tablets.hid_descriptor import HidField, ReportDescriptor, canonical_usage
 
 GD_X, GD_Y = 0x010030, 0x010031
 GD_MOUSE = 0x010002

@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from protocols.tablets.events import TabletEvent, TabletModel
+from camlab88.protocols.tablets.events import TabletEvent, TabletModel
 
 WACOM_VID = 0x056A
 MODE_SWITCH = bytes((2, 2))  # feature report ID 2 := 2 ("tablet mode")

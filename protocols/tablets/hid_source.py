@@ -1,6 +1,6 @@
-"""USB HID tablets through hidapi (``protocols.tablets.hid_backend`` picks its module:
+"""USB HID tablets through hidapi (``camlab88.protocols.tablets.hid_backend`` picks its module:
 hidraw on Linux, libusb only as a fallback); reports come through a blocking-read pump
-(``protocols.tablets.hid_pump``)."""
+(``camlab88.protocols.tablets.hid_pump``)."""
 
 from __future__ import annotations
 
@@ -8,18 +8,18 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from protocols.tablets.events import TabletEvent
-from protocols.tablets.hid_backend import (
+from camlab88.protocols.tablets.events import TabletEvent
+from camlab88.protocols.tablets.hid_backend import (
     NoBackend,
     absent_message,
     cannot_open_message,
     hid_backend,
 )
-from protocols.tablets.hid_decode import PenDecoder
-from protocols.tablets.hid_descriptor import parse_descriptor
-from protocols.tablets.hid_profiles import profile_for
-from protocols.tablets.hid_pump import ReportPump
-from protocols.tablets.sources import SourceLost, SourceSpec, TabletSource
+from camlab88.protocols.tablets.hid_decode import PenDecoder
+from camlab88.protocols.tablets.hid_descriptor import parse_descriptor
+from camlab88.protocols.tablets.hid_profiles import profile_for
+from camlab88.protocols.tablets.hid_pump import ReportPump
+from camlab88.protocols.tablets.sources import SourceLost, SourceSpec, TabletSource
 
 DIGITIZER_PAGE = 0x0D
 WACOM_PAGE = 0xFF0D  # newer Wacoms mirror the digitizer usages on this vendor page

@@ -18,9 +18,9 @@ import threading
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
-from protocols.tablets.calibration import Calibration, default_calibration
-from protocols.tablets.events import TabletEvent
-from protocols.tablets.sources import SourceLost, TabletSource
+from camlab88.protocols.tablets.calibration import Calibration, default_calibration
+from camlab88.protocols.tablets.events import TabletEvent
+from camlab88.protocols.tablets.sources import SourceLost, TabletSource
 
 
 @dataclass(frozen=True)

@@ -6,9 +6,9 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, replace
 from typing import Any
 
-from protocols.tablets import bitpad1, bitpad2, calcomp, summa, wacom4
-from protocols.tablets.base import TabletEncoder, TabletParser
-from protocols.tablets.line_setup import LineSetup, line_setup
+from camlab88.protocols.tablets import bitpad1, bitpad2, calcomp, summa, wacom4
+from camlab88.protocols.tablets.base import TabletEncoder, TabletParser
+from camlab88.protocols.tablets.line_setup import LineSetup, line_setup
 
 PROTOCOL_NAMES = ("wacom4", "summa-mm", "bitpad1", "bitpad2", "calcomp")
 ALIASES = {"summa-flair": ("summa-mm", {"flair": "1"})}

@@ -7,14 +7,13 @@ from collections.abc import Callable
 from dataclasses import replace
 
 import serial
-
-from protocols.link.serial_port import open_url, read_available
-from protocols.tablets import wacom4
-from protocols.tablets.base import TabletParser
-from protocols.tablets.events import DeviceReply, TabletEvent
-from protocols.tablets.line_setup import LineSetup
-from protocols.tablets.registry import make_parser, resolve
-from protocols.tablets.sources import SourceLost, SourceSpec, TabletSource
+from camlab88.protocols.link.serial_port import open_url, read_available
+from camlab88.protocols.tablets import wacom4
+from camlab88.protocols.tablets.base import TabletParser
+from camlab88.protocols.tablets.events import DeviceReply, TabletEvent
+from camlab88.protocols.tablets.line_setup import LineSetup
+from camlab88.protocols.tablets.registry import make_parser, resolve
+from camlab88.protocols.tablets.sources import SourceLost, SourceSpec, TabletSource
 
 REPLY_TIMEOUT = 1.0  # the kernel waits HZ for a Wacom reply (a PenPartner sends no CR)
 FLUSH_QUIET = 0.05  # s of silence that ends a flush

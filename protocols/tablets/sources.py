@@ -12,8 +12,8 @@ import re
 from dataclasses import dataclass, field
 from urllib.parse import parse_qsl, urlencode
 
-from protocols.tablets.events import TabletEvent, TabletModel
-from protocols.tablets.registry import PROTOCOL_NAMES, known_options, resolve
+from camlab88.protocols.tablets.events import TabletEvent, TabletModel
+from camlab88.protocols.tablets.registry import PROTOCOL_NAMES, known_options, resolve
 
 OUR_KEYS = ("protocol", "baud", "init")
 
@@ -138,11 +138,11 @@ def open_source(spec: SourceSpec | str, on_raw=None) -> TabletSource:
     if isinstance(spec, str):
         spec = parse_source(spec)
     if spec.kind == "hid":
-        from protocols.tablets.hid_source import HidSource
+        from camlab88.protocols.tablets.hid_source import HidSource
 
         return HidSource(spec, on_raw=on_raw)
     if spec.kind in ("serial", "url"):
-        from protocols.tablets.serial_source import SerialSource
+        from camlab88.protocols.tablets.serial_source import SerialSource
 
         return SerialSource(spec, on_raw=on_raw)
     raise SourceError(f"{spec.text!r}: emulated sources are started by `camlab88 tablet ...`")

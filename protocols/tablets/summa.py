@@ -9,14 +9,14 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from protocols.tablets.base import (
+from camlab88.protocols.tablets.base import (
     ProtocolError,
     SyncFramedParser,
     TabletEncoder,
     clamp_check,
     one_of,
 )
-from protocols.tablets.events import TabletEvent, TabletModel
+from camlab88.protocols.tablets.events import TabletEvent, TabletModel
 
 NAME = "summa-mm"
 # SummaSketch 12x12 in MM mode at the default 500 lpi letter ``h`` (facts §2.1).  The start-up

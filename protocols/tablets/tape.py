@@ -21,8 +21,8 @@ from collections.abc import Callable
 from dataclasses import asdict
 from typing import Any
 
-from protocols.tablets.events import DeviceReply, TabletEvent, TabletModel
-from protocols.tablets.sources import SourceLost, TabletSource
+from camlab88.protocols.tablets.events import DeviceReply, TabletEvent, TabletModel
+from camlab88.protocols.tablets.sources import SourceLost, TabletSource
 
 
 class TapeError(ValueError):
@@ -68,7 +68,7 @@ def decoder_for(opened: dict[str, Any]) -> Any:
     """The decoder a recorded opening used (``feed(bytes)``, ``flush()``, ``model``)."""
     try:
         if opened.get("kind") == "hid":
-            from protocols.tablets.hid_source import HidReportDecoder
+            from camlab88.protocols.tablets.hid_source import HidReportDecoder
 
             descriptor = opened.get("descriptor")
             return HidReportDecoder(int(opened["vid"]), int(opened["pid"]),
@@ -217,9 +217,9 @@ class SerialTapeDecoder:
     """The serial parser a recorded opening used, set up as the tablet's replies left it."""
 
     def __init__(self, opened: dict[str, Any]) -> None:
-        from protocols.tablets import wacom4
-        from protocols.tablets.registry import make_parser
-        from protocols.tablets.serial_source import configure_wacom
+        from camlab88.protocols.tablets import wacom4
+        from camlab88.protocols.tablets.registry import make_parser
+        from camlab88.protocols.tablets.serial_source import configure_wacom
 
         self.parser = make_parser(str(opened["protocol"]), opened.get("options") or {},
                                   parmrk=bool(opened.get("parmrk")))

@@ -10,14 +10,14 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, replace
 
-from protocols.tablets.base import (
+from camlab88.protocols.tablets.base import (
     ProtocolError,
     TabletEncoder,
     TabletParser,
     clamp_check,
     one_of,
 )
-from protocols.tablets.events import DeviceReply, TabletEvent, TabletModel
+from camlab88.protocols.tablets.events import DeviceReply, TabletEvent, TabletModel
 
 NAME = "wacom4"
 # A 12x12 inch tablet at 1270 lpi: TabletMagic's default and the ~C the emulator answers.

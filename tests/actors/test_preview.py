@@ -3,9 +3,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-
-from apps.actors.model import Actor, Material, Part, read_actors
-from apps.actors.preview import turntable
+from camlab88.apps.actors.model import Actor, Material, Part, read_actors
+from camlab88.apps.actors.preview import turntable
 
 CHESS = Path(__file__).resolve().parents[2] / "examples" / "ca" / "chess.actors"
 

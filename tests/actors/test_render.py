@@ -5,11 +5,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-
-from apps.actors.model import Actor, ActorSet, Material, Part
-from apps.actors.render import Look, Placed, Shot, Stage, render_frame, render_linear
-from apps.snooker.render.lights import Lights
-from apps.snooker.render.pinhole import Pinhole
+from camlab88.apps.actors.model import Actor, ActorSet, Material, Part
+from camlab88.apps.actors.render import Look, Placed, Shot, Stage, render_frame, render_linear
+from camlab88.apps.snooker.render.lights import Lights
+from camlab88.apps.snooker.render.pinhole import Pinhole
 
 PROFILE = ((0.2, 0.0), (0.42, 0.25), (0.3, 0.5), (0.12, 0.8), (0.33, 1.1), (0.05, 1.3))
 MATTE_RED = Material(1.0, 0.9, 0.0, 1.0)

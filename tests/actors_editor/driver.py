@@ -4,10 +4,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from apps.actors.editor.cell_types import CellType
-from apps.actors.editor.program import ActorEditor
-from emulator.rainbow.session import in_process
-from protocols.rainbow.script import Player, parse
+from camlab88.apps.actors.editor.cell_types import CellType
+from camlab88.apps.actors.editor.program import ActorEditor
+from camlab88.emulator.rainbow.session import in_process
+from camlab88.protocols.rainbow.script import Player, parse
 
 LIFE = [CellType(1, "form 1", (0, 255, 0))]
 MAZE = [CellType(1, "form 1", (200, 200, 200)), CellType(2, "form 2", (255, 0, 0)),

@@ -9,9 +9,9 @@ import shutil
 from pathlib import Path
 
 import numpy as np
+from camlab88.apps.actors.editor import layout as L
+from camlab88.apps.actors.model import Part, format_actors, read_actors
 
-from apps.actors.editor import layout as L
-from apps.actors.model import Part, format_actors, read_actors
 from tests.actors_editor.driver import MAZE, Driver, screen
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "ca"
@@ -136,7 +136,7 @@ def test_the_cell_type_menu_chooses_the_state_edited(tmp_path: Path) -> None:
 
 
 def test_a_tablet_pen_draws_points(tmp_path: Path) -> None:
-    from protocols.rainbow.events import TabletEvent
+    from camlab88.protocols.rainbow.events import TabletEvent
 
     d = Driver(tmp_path / "t.actors")
     d.editor.pen.extent = (1000, 1000)

@@ -3,8 +3,8 @@ actors file requires), hits, dragging within the neighbours' heights, deleting."
 
 from __future__ import annotations
 
-from apps.actors.editor.layout import MAX_HEIGHT, MAX_RADIUS
-from apps.actors.editor.profile import Profile, to_pixels, to_units
+from camlab88.apps.actors.editor.layout import MAX_HEIGHT, MAX_RADIUS
+from camlab88.apps.actors.editor.profile import Profile, to_pixels, to_units
 
 
 def _pad(r: float, h: float) -> tuple[int, int]:

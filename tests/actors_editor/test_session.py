@@ -5,9 +5,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from apps.actors.editor.demo import demo_events
+from camlab88.apps.actors.editor.demo import demo_events
+from camlab88.protocols.session import read
+
 from camlab88.cli import main
-from protocols.session import read
 
 SESSION = Path(__file__).resolve().parents[2] / "examples" / "ca" / "actors_edit.session"
 

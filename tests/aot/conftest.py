@@ -10,8 +10,8 @@ import tempfile
 from pathlib import Path
 
 import pytest
+from camlab88.base import aot_build
 
-from base import aot_build
 from camlab88.commands.warmup.aot import AOT_MODULES
 
 

@@ -12,13 +12,12 @@ import json
 import sys
 
 import numpy as np
-
-from apps.ca import engine as engine_mod
-from apps.ca.engine import Engine
-from apps.ca.library import pattern_path, rules_path
-from apps.ca.patterns import parse_pattern, read_pattern
-from apps.ca.rules import load_rules, parse_rules
-from apps.ca.tables import compile_rules
+from camlab88.apps.ca import engine as engine_mod
+from camlab88.apps.ca.engine import Engine
+from camlab88.apps.ca.library import pattern_path, rules_path
+from camlab88.apps.ca.patterns import parse_pattern, read_pattern
+from camlab88.apps.ca.rules import load_rules, parse_rules
+from camlab88.apps.ca.tables import compile_rules
 
 LIFE_U16 = """
 1 1 1 1 1
@@ -88,7 +87,7 @@ def main() -> None:
         out["cases"][name], out["kernels"][name] = run(rules, cells, gens, **consts)
     out["cases"]["rle grid"] = digest(soup.xs, soup.ys, soup.ts)
     out["cases"]["rle cells"] = digest(sparse.xs, sparse.ys, sparse.ts)
-    from apps.ca import grid_stats
+    from camlab88.apps.ca import grid_stats
 
     grid = np.random.default_rng(3).integers(0, 5, (300, 400)).astype(np.uint8)
     out["cases"]["census"] = sorted(grid_stats.by_type(grid).items())

@@ -1,12 +1,11 @@
-"""base.aot_args: signatures read without numba, and an ahead-of-time kernel refusing
+"""camlab88.base.aot_args: signatures read without numba, and an ahead-of-time kernel refusing
 arguments its one compiled signature would misread."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
-
-from base.aot_args import Arg, checked, parse
+from camlab88.base.aot_args import Arg, checked, parse
 
 
 def test_signatures_are_read() -> None:

@@ -12,7 +12,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 
 INNER = """
-from base.kernel_set import KernelSet
+from camlab88.base.kernel_set import KernelSet
 kernels = KernelSet(__name__)
 
 
@@ -22,7 +22,7 @@ def twice(x):
 """
 
 OUTER = """
-from base.kernel_set import KernelSet
+from camlab88.base.kernel_set import KernelSet
 from {package}.inner import twice
 kernels = KernelSet(__name__{sources})
 
@@ -34,14 +34,14 @@ def quadruple(x):
 
 REFUSED = """
 from pathlib import Path
-from base import aot_build
+from camlab88.base import aot_build
 print(sorted(aot_build.kernel_dependencies("{package}.outer")))
 print(aot_build.build_here("{package}.outer", Path("never")).split(":")[0])
 """
 
 COVERED = """
 from pathlib import Path
-from base import aot_build, aot_load
+from camlab88.base import aot_build, aot_load
 import {package}.outer as outer
 print(sorted(aot_build.kernel_dependencies("{package}.outer")))
 before = aot_load.key(outer.__name__, outer.kernels.sources)
@@ -83,7 +83,7 @@ def test_a_module_of_kernels_only_gets_a_marker(tmp_path: Path) -> None:
     env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"),
                CAMLAB88_AOT_DIR=str(tmp_path / "aot"),
                PYTHONPATH=os.pathsep.join([str(tmp_path), str(ROOT)]))
-    build = subprocess.run([sys.executable, "-m", "base.aot_build", "--out",
+    build = subprocess.run([sys.executable, "-m", "camlab88.base.aot_build", "--out",
                             str(tmp_path / "aot"), "onlykernels"], capture_output=True,
                            text=True, timeout=300, cwd=tmp_path, env=dict(env, CAMLAB88_AOT="0"))
     assert build.stdout == "onlykernels\tbuilt\n", build.stderr
@@ -111,6 +111,6 @@ def test_without_a_c_compiler_the_warm_up_step_says_so(tmp_path: Path) -> None:
     assert done.returncode == 0, done.stderr
     lines = done.stderr.splitlines()
     assert lines[0].startswith("[9/9] ahead-of-time modules ...")
-    assert "apps.ca.kernels: failed: no working C compiler" in done.stderr
+    assert "camlab88.apps.ca.kernels: failed: no working C compiler" in done.stderr
     assert all(ln.endswith("its kernels stay JIT-compiled") for ln in lines[1:] if "failed" in ln)
     assert not (tmp_path / "aot").exists() or not any((tmp_path / "aot").glob("*.so"))

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from base import aot_load
+from camlab88.base import aot_load
 from camlab88.commands.warmup.aot import AOT_MODULES
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -76,7 +76,7 @@ def test_an_edited_module_is_not_loaded(aot_dir: Path, tmp_path: Path, monkeypat
     copy with one more line does not (so its kernels would be JIT-compiled)."""
     monkeypatch.setenv(aot_load.DIR_VARIABLE, str(aot_dir))
     monkeypatch.setenv(aot_load.OFF_VARIABLE, "1")
-    name = "apps.ca.grid_stats"
+    name = "camlab88.apps.ca.grid_stats"
     copy = tmp_path / "grid_stats.py"
     copy.write_text((ROOT / "apps/ca/grid_stats.py").read_text())
     monkeypatch.setitem(sys.modules, name, types.SimpleNamespace(__file__=str(copy)))
@@ -90,9 +90,9 @@ def test_an_edited_module_is_not_loaded(aot_dir: Path, tmp_path: Path, monkeypat
 def test_an_unloadable_extension_means_the_jit_path(aot_dir: Path, tmp_path: Path) -> None:
     broken = tmp_path / "aot"
     broken.mkdir()
-    for built in aot_dir.glob("apps.ca.grid_stats-*"):
+    for built in aot_dir.glob("camlab88.apps.ca.grid_stats-*"):
         (broken / built.name).write_bytes(b"not an ELF file")
-    code = ("import numpy as np\nimport apps.ca.grid_stats as g\n"
+    code = ("import numpy as np\nimport camlab88.apps.ca.grid_stats as g\n"
             "print(g.kernels.mode, g.kernels.why_jit.split()[0], "
             "g.by_type(np.array([[0, 2], [2, 7]], np.uint8)))\n")
     done = _python(["-c", code], _env(broken, True), tmp_path)
@@ -102,7 +102,7 @@ def test_an_unloadable_extension_means_the_jit_path(aot_dir: Path, tmp_path: Pat
 
 
 def test_a_second_build_finds_everything_up_to_date(aot_dir: Path) -> None:
-    from base import aot_build
+    from camlab88.base import aot_build
 
     assert aot_build.build(AOT_MODULES, aot_dir) == {m: aot_build.UP_TO_DATE
                                                       for m in AOT_MODULES}

@@ -9,15 +9,15 @@ import subprocess
 import sys
 from pathlib import Path
 
-from base import aot_load
+from camlab88.base import aot_load
 
 ROOT = Path(__file__).resolve().parents[2]
 
 TOY = """
 import numpy as np
-from apps.ca import grid_stats
-from apps.ca.rle_scan import _KIND, _STATE, _symbol
-from base.kernel_set import KernelSet
+from camlab88.apps.ca import grid_stats
+from camlab88.apps.ca.rle_scan import _KIND, _STATE, _symbol
+from camlab88.base.kernel_set import KernelSet
 
 kernels = KernelSet(__name__)
 
@@ -34,7 +34,7 @@ def symbols_and_ones(b):
 CODE = """
 import sys
 import numpy as np
-import apps.ca.grid_stats as g, apps.ca.rle_scan as r
+import camlab88.apps.ca.grid_stats as g, camlab88.apps.ca.rle_scan as r
 grid = np.array([[0, 1], [1, 7]], np.uint8)
 before = (g.kernels.mode, r.kernels.mode, g.by_type(grid))
 import mixedtoy

@@ -1,4 +1,4 @@
-"""base.kernel_notice never imports numba itself: a group registered before numba is
+"""camlab88.base.kernel_notice never imports numba itself: a group registered before numba is
 imported is still announced on a cold compile, and a process that never imports numba
 (its kernels ahead of time) stays without it."""
 
@@ -9,12 +9,12 @@ import subprocess
 import sys
 from pathlib import Path
 
-from base import kernel_notice
+from camlab88.base import kernel_notice
 
 ROOT = Path(__file__).resolve().parents[2]
 
 EARLY = """
-from base.kernel_notice import announce_compiles
+from camlab88.base.kernel_notice import announce_compiles
 
 announce_compiles("early toy", 2.0, __name__)  # before numba, as a package __init__ may
 
@@ -40,7 +40,7 @@ def _run(tmp_path: Path, code: str) -> subprocess.CompletedProcess[str]:
 
 def test_registered_before_numba_is_still_announced(tmp_path: Path) -> None:
     (tmp_path / "earlytoy.py").write_text(EARLY)
-    code = ("import earlytoy\nfrom base import kernel_load\n"
+    code = ("import earlytoy\nfrom camlab88.base import kernel_load\n"
             "print(earlytoy.thrice(14), kernel_load.active())\n")
     cold = _run(tmp_path, code)
     assert cold.returncode == 0, cold.stderr
@@ -51,7 +51,7 @@ def test_registered_before_numba_is_still_announced(tmp_path: Path) -> None:
 
 
 def test_registering_alone_imports_no_numba(tmp_path: Path) -> None:
-    code = ("import sys\nfrom base.kernel_notice import announce_compiles\n"
+    code = ("import sys\nfrom camlab88.base.kernel_notice import announce_compiles\n"
             "announce_compiles('toy', 1.0, 'nowhere')\nprint('numba' in sys.modules)\n")
     done = _run(tmp_path, code)
     assert done.returncode == 0, done.stderr

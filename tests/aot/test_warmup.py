@@ -6,8 +6,9 @@ from __future__ import annotations
 import argparse
 import os
 
+from camlab88.base import aot_load
+
 import camlab88.commands.warmup as warmup
-from base import aot_load
 from camlab88.commands.warmup import aot
 
 

@@ -79,8 +79,8 @@ def test_rainbow_run_traces_the_command_stream(tmp_path):
 def test_link_dump_decode_shows_orders_and_replies(tmp_path, capsys):
     from fractions import Fraction
 
-    from protocols.link import LineSettings
-    from protocols.link.recording import Recorder
+    from camlab88.protocols.link import LineSettings
+    from camlab88.protocols.link.recording import Recorder
 
     rec = tmp_path / "s.rec"
     with Recorder(rec, LineSettings()) as r:
@@ -108,9 +108,8 @@ def _serve(tmp_path, *extra):
 
 def test_rainbow_serve_traces_and_strict_stops_at_the_first_refusal(tmp_path):
     import pytest
-
-    from protocols.rainbow import RainbowClient, RainbowRefused, SocketTransport
-    from protocols.rainbow.stream import StreamError
+    from camlab88.protocols.rainbow import RainbowClient, RainbowRefused, SocketTransport
+    from camlab88.protocols.rainbow.stream import StreamError
 
     trace = tmp_path / "serve.jsonl"
     proc, port = _serve(tmp_path, "--trace", str(trace), "--strict-protocol")

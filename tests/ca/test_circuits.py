@@ -6,12 +6,11 @@ from __future__ import annotations
 import random
 
 import pytest
-
-from apps.ca import circuits as C
-from apps.ca.engine import Engine
-from apps.ca.library import pattern_path, rules_path
-from apps.ca.patterns import read_pattern
-from apps.ca.rules import load_rules
+from camlab88.apps.ca import circuits as C
+from camlab88.apps.ca.engine import Engine
+from camlab88.apps.ca.library import pattern_path, rules_path
+from camlab88.apps.ca.patterns import read_pattern
+from camlab88.apps.ca.rules import load_rules
 
 RULES = load_rules(rules_path("circuits"))
 F = C.FORMS

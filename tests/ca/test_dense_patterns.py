@@ -11,9 +11,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from apps.ca.engine import CENTRE, Engine
-from apps.ca.patterns import ORIENTATIONS, GridPattern, Pattern, PatternError, parse_rle
-from apps.ca.rle_body import SMALL_BODY, decode, decode_body, decode_compiled
+from camlab88.apps.ca.engine import CENTRE, Engine
+from camlab88.apps.ca.patterns import ORIENTATIONS, GridPattern, Pattern, PatternError, parse_rle
+from camlab88.apps.ca.rle_body import SMALL_BODY, decode, decode_body, decode_compiled
 from camlab88.cli import main
 from tests.ca.helpers import LIFE
 from tests.support.processes import fresh_python
@@ -134,7 +134,11 @@ def test_ca_run_takes_a_dense_block(tmp_path: Path, capsys, engine: str) -> None
 
 
 def test_auto_keeps_a_dense_plane_on_the_direct_engine_for_longer() -> None:
-    from apps.ca.algorithms import AUTO_MIN_GENERATIONS, AUTO_MIN_GENERATIONS_DENSE, choose_engine
+    from camlab88.apps.ca.algorithms import (
+        AUTO_MIN_GENERATIONS,
+        AUTO_MIN_GENERATIONS_DENSE,
+        choose_engine,
+    )
 
     assert choose_engine(LIFE, AUTO_MIN_GENERATIONS, dense=True) == "direct"
     assert choose_engine(LIFE, AUTO_MIN_GENERATIONS_DENSE, dense=True) == "hashlife"
@@ -160,8 +164,8 @@ def test_the_small_body_reader_agrees_with_the_compiled_reader(parts: list[str])
 
 
 def test_a_short_rle_is_read_without_loading_the_compiled_scanner() -> None:
-    code = ("import sys; from apps.ca.patterns import read_pattern; "
-            "from apps.ca.library import pattern_path; "
+    code = ("import sys; from camlab88.apps.ca.patterns import read_pattern; "
+            "from camlab88.apps.ca.library import pattern_path; "
             "p = read_pattern(pattern_path('gosper_gun')); print(len(p.cell_set()), "
-            "'apps.ca.rle_scan' in sys.modules)")
+            "'camlab88.apps.ca.rle_scan' in sys.modules)")
     assert fresh_python(code).split() == ["36", "False"]

@@ -4,14 +4,14 @@ the plain dense kernel and of the hash kernel, on random commuting rule sets and
 from __future__ import annotations
 
 import numpy as np
+from camlab88.apps.ca import engine as engine_mod
+from camlab88.apps.ca import tables as tables_mod
+from camlab88.apps.ca.engine import Engine
+from camlab88.apps.ca.rules import parse_rules
+from camlab88.apps.ca.tables import compile_rules
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from apps.ca import engine as engine_mod
-from apps.ca import tables as tables_mod
-from apps.ca.engine import Engine
-from apps.ca.rules import parse_rules
-from apps.ca.tables import compile_rules
 from tests.ca.helpers import engine_constants, interpretation_lines, kernels_used
 
 
@@ -104,8 +104,8 @@ def test_groups_and_bit_sets_are_planned() -> None:
 
 def test_separable_life_soup_matches_plain_kernel(monkeypatch) -> None:
     """A soup that spreads: the dense window grows in place and stays exact."""
-    from apps.ca.library import rules_path
-    from apps.ca.rules import load_rules
+    from camlab88.apps.ca.library import rules_path
+    from camlab88.apps.ca.rules import load_rules
 
     grown = []
     real_grow = Engine._grow_dense

@@ -4,12 +4,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from camlab88.apps.ca import engine as engine_mod
+from camlab88.apps.ca.engine import Engine, Rect
+from camlab88.apps.ca.library import pattern_path
+from camlab88.apps.ca.patterns import read_pattern
+from camlab88.apps.ca.rules import parse_rules
 
-from apps.ca import engine as engine_mod
-from apps.ca.engine import Engine, Rect
-from apps.ca.library import pattern_path
-from apps.ca.patterns import read_pattern
-from apps.ca.rules import parse_rules
 from tests.ca.helpers import LIFE, cellset, kernels_used, life, shifted
 
 BLOCK = "OO\nOO"
@@ -250,9 +250,9 @@ def test_advance_area_inside_evolves_as_if_outside_did_not_exist() -> None:
 
 @pytest.mark.parametrize("rules_name", ["life", "overgrazing", "maze"])
 def test_dense_fast_path_equals_general_kernels(rules_name: str, monkeypatch) -> None:
-    from apps.ca.library import rules_path
-    from apps.ca.rules import load_rules
-    from apps.ca.tables import compile_rules
+    from camlab88.apps.ca.library import rules_path
+    from camlab88.apps.ca.rules import load_rules
+    from camlab88.apps.ca.tables import compile_rules
 
     rules = load_rules(rules_path(rules_name))
     assert compile_rules(rules).dense is not None
@@ -275,7 +275,7 @@ def test_dense_fast_path_equals_general_kernels(rules_name: str, monkeypatch) ->
 
 
 def test_dense_plan_refuses_order_sensitive_rules() -> None:
-    from apps.ca.tables import compile_rules
+    from camlab88.apps.ca.tables import compile_rules
 
     assert compile_rules(parse_rules("1 1 1 1 1 +1 +1 +1 +1 |4 +1 +1 +1 +1 $ 3 1")).dense is None
     assert compile_rules(parse_rules("1 0 0 0 0 &1 $ 0 1")).dense is None

@@ -3,11 +3,10 @@
 from __future__ import annotations
 
 import pytest
-
-from apps.ca import library
-from apps.ca.engine import Engine
-from apps.ca.patterns import read_pattern
-from apps.ca.rules import load_rules
+from camlab88.apps.ca import library
+from camlab88.apps.ca.engine import Engine
+from camlab88.apps.ca.patterns import read_pattern
+from camlab88.apps.ca.rules import load_rules
 
 
 def _cells(e: Engine) -> frozenset[tuple[int, int]]:

@@ -7,11 +7,11 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from camlab88.apps.ca import library
+from camlab88.apps.ca.engine import CENTRE, Engine
+from camlab88.apps.ca.patterns import read_pattern
+from camlab88.apps.ca.rules import load_rules
 
-from apps.ca import library
-from apps.ca.engine import CENTRE, Engine
-from apps.ca.patterns import read_pattern
-from apps.ca.rules import load_rules
 from tests.ca.golly_oracle import DATA, golly_cells, need_bgolly
 
 CASES = [  # file in tests/data/ca/golly, our rule set, generations, a Golly rule table?
@@ -66,7 +66,7 @@ def test_golly_reads_the_macrocell_files_we_write(name: str, tmp_path: Path) -> 
 
 def test_our_macrocell_nodes_are_the_ones_golly_writes(tmp_path: Path) -> None:
     """bgolly writes broken-lines.mc back out; our writer gives the same node lines."""
-    from apps.ca.patterns import format_mc
+    from camlab88.apps.ca.patterns import format_mc
 
     golly_cells(DATA / "broken-lines.mc", 0, tmp_path / "golly.mc", False)
     theirs = [s for s in (tmp_path / "golly.mc").read_text().splitlines()

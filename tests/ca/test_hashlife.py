@@ -4,14 +4,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from camlab88.apps.ca import log
+from camlab88.apps.ca.algorithms import AUTO_MIN_GENERATIONS, choose_engine
+from camlab88.apps.ca.engine import SIDE, Engine, Rect
+from camlab88.apps.ca.library import rules_path
+from camlab88.apps.ca.rules import load_rules, parse_rules
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
-from apps.ca import log
-from apps.ca.algorithms import AUTO_MIN_GENERATIONS, choose_engine
-from apps.ca.engine import SIDE, Engine, Rect
-from apps.ca.library import rules_path
-from apps.ca.rules import load_rules, parse_rules
 
 LIBRARY = {name: load_rules(rules_path(name))
            for name in ("life", "maze", "turing_primes", "circuits", "overgrazing")}
@@ -212,9 +211,9 @@ def test_a_direct_run_does_not_load_hashlife() -> None:
 
     code = ("import sys; from camlab88.cli import main; "
             "main(['ca', 'run', '--rules', 'life', '--pattern', 'glider', '--generations', "
-            "'8', '--engine', 'direct']); print('apps.ca.hashlife' in sys.modules); "
+            "'8', '--engine', 'direct']); print('camlab88.apps.ca.hashlife' in sys.modules); "
             "main(['ca', 'run', '--rules', 'life', '--pattern', 'glider', '--generations', "
-            "'4096']); print('apps.ca.hashlife.algorithm' in sys.modules)")
+            "'4096']); print('camlab88.apps.ca.hashlife.algorithm' in sys.modules)")
     env = {**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parents[2])}
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                             timeout=120, env=env)

@@ -6,18 +6,17 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from camlab88.apps.ca import log
+from camlab88.apps.ca.engine import SIDE, Engine
+from camlab88.apps.ca.hashlife.algorithm import HashLife
+from camlab88.apps.ca.hashlife.bits.rule import binary_rule, derive_table, totalistic_terms
+from camlab88.apps.ca.hashlife.bits.run import BitRun
+from camlab88.apps.ca.hashlife.generic import GenericRun
+from camlab88.apps.ca.hashlife.tree import Tree
+from camlab88.apps.ca.library import rules_path
+from camlab88.apps.ca.rules import load_rules, parse_rules
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
-from apps.ca import log
-from apps.ca.engine import SIDE, Engine
-from apps.ca.hashlife.algorithm import HashLife
-from apps.ca.hashlife.bits.rule import binary_rule, derive_table, totalistic_terms
-from apps.ca.hashlife.bits.run import BitRun
-from apps.ca.hashlife.generic import GenericRun
-from apps.ca.hashlife.tree import Tree
-from apps.ca.library import rules_path
-from apps.ca.rules import load_rules, parse_rules
 
 LIFE = load_rules(rules_path("life"))
 # Not outer-totalistic: orthogonal neighbours add 1, diagonal ones 16, the cell itself ORs

@@ -8,21 +8,23 @@ import subprocess
 import sys
 from pathlib import Path
 
-import apps.ca.hashlife  # noqa: F401 - registers its kernel groups
-from base import kernel_notice
+import camlab88.apps.ca.hashlife  # noqa: F401 - registers its kernel groups
+from camlab88.base import kernel_notice
+
+HL = "camlab88.apps.ca.hashlife."  # the package whose kernels these tests follow
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_every_hashlife_kernel_module_is_in_an_announced_group() -> None:
     package = ROOT / "apps" / "ca" / "hashlife"
-    with_kernels = {".".join(p.relative_to(ROOT).with_suffix("").parts)
+    with_kernels = {".".join(("camlab88", *p.relative_to(ROOT).with_suffix("").parts))
                     for p in package.rglob("*.py")
                     if "@njit" in p.read_text() or "@kernels." in p.read_text()}
-    assert {"apps.ca.hashlife.evolve", "apps.ca.hashlife.bits.leaves"} <= with_kernels
+    assert {HL + "evolve", HL + "bits.leaves"} <= with_kernels
     # The recursion compiles only inside a kind of leaf's entry: that kind's leaf kernel
     # announces it (the runs below see the notice).
-    inside = {"apps.ca.hashlife.evolve"}
+    inside = {HL + "evolve"}
     missing = with_kernels - set(kernel_notice._state.groups) - inside
     assert not missing, f"kernels compiled without the notice: {sorted(missing)}"
     assert not inside & set(kernel_notice._state.groups)
@@ -37,7 +39,7 @@ def test_every_hashlife_group_completion_is_a_function() -> None:
     import importlib
 
     completions = {g.completion for m, g in kernel_notice._state.groups.items()
-                   if m.startswith("apps.ca.hashlife") and g.completion}
+                   if m.startswith(HL) and g.completion}
     assert len(completions) == 6
     for completion in completions:
         module, _, function = completion.partition(":")
@@ -52,10 +54,10 @@ class Log(event.Listener):
     def on_end(self, ev):
         pass
 event.register("numba:compile", Log())
-from apps.ca.engine import CENTRE, Engine
-from apps.ca.library import pattern_path, rules_path
-from apps.ca.patterns import read_pattern
-from apps.ca.rules import load_rules
+from camlab88.apps.ca.engine import CENTRE, Engine
+from camlab88.apps.ca.library import pattern_path, rules_path
+from camlab88.apps.ca.patterns import read_pattern
+from camlab88.apps.ca.rules import load_rules
 engine = Engine(load_rules(rules_path("life")), algorithm="hashlife")
 engine.set_grid(*read_pattern(pattern_path("gosper_gun")).placed_grid(CENTRE, CENTRE))
 engine.step(300)
@@ -73,9 +75,9 @@ def test_a_first_life_run_compiles_the_binary_group_alone(tmp_path: Path) -> Non
     assert done.returncode == 0, done.stderr
     compiled = {line.split()[1] for line in done.stdout.splitlines()
                 if line.startswith("compiled ")}
-    assert {"apps.ca.hashlife.evolve", "apps.ca.hashlife.bits.leaves"} <= compiled
-    assert not compiled & {"apps.ca.hashlife.cells", "apps.ca.hashlife.upkeep",
-                           "apps.ca.hashlife.cellgrid", "apps.ca.hashlife.listing"}
+    assert {HL + "evolve", HL + "bits.leaves"} <= compiled
+    assert not compiled & {HL + "cells", HL + "upkeep",
+                           HL + "cellgrid", HL + "listing"}
     assert "cell-list" not in done.stderr and "collection" not in done.stderr
     assert "value-leaf" not in done.stderr
     assert done.stderr.count("compiling HashLife kernels") == 1
@@ -102,17 +104,17 @@ def test_each_kind_of_leaf_compiles_once_whichever_runs_first(tmp_path: Path) ->
     cache = tmp_path / "cache"
     circuits = MULTI_STATE_RUN.format(rules="circuits", pattern="adder_demo")
     compiled, notices = _compiled_run(circuits, cache)
-    assert {"apps.ca.hashlife.evolve", "apps.ca.hashlife.cellgrid"} <= compiled
-    assert not compiled & {"apps.ca.hashlife.bits.leaves", "apps.ca.hashlife.bits.window",
-                           "apps.ca.hashlife.listing", "apps.ca.hashlife.upkeep"}
+    assert {HL + "evolve", HL + "cellgrid"} <= compiled
+    assert not compiled & {HL + "bits.leaves", HL + "bits.window",
+                           HL + "listing", HL + "upkeep"}
     assert "value-leaf" in notices and "bit-leaf" not in notices
     primes = MULTI_STATE_RUN.format(rules="turing_primes", pattern="primes_25")
     compiled, notices = _compiled_run(primes, cache)
-    assert not {m for m in compiled if m.startswith("apps.ca.hashlife")}, compiled
+    assert not {m for m in compiled if m.startswith(HL)}, compiled
     assert "compiling" not in notices
     compiled, notices = _compiled_run(LIFE_RUN, cache)
-    assert {m for m in compiled if m.startswith("apps.ca.hashlife")} == {
-        "apps.ca.hashlife.evolve", "apps.ca.hashlife.bits.leaves",
-        "apps.ca.hashlife.bits.window"}
+    assert {m for m in compiled if m.startswith(HL)} == {
+        HL + "evolve", HL + "bits.leaves",
+        HL + "bits.window"}
     assert [line for line in notices.splitlines() if "compiling" in line] == [
         "camlab88: compiling HashLife bit-leaf kernels, once: ~4 s"]

@@ -4,11 +4,11 @@ and the doubling "Fast forward", on the emulated Rainbow (headless)."""
 from __future__ import annotations
 
 import numpy as np
+from camlab88.apps.ca import log
+from camlab88.apps.ca.program import stepping
+from camlab88.apps.ca.program.menus import JUMP_ITEMS, MAIN_ITEMS, MainMenu
+from camlab88.apps.ca.program.program import Options
 
-from apps.ca import log
-from apps.ca.program import stepping
-from apps.ca.program.menus import JUMP_ITEMS, MAIN_ITEMS, MainMenu
-from apps.ca.program.program import Options
 from tests.ca_program.driver import Driver
 
 
@@ -127,7 +127,7 @@ def test_a_long_go_to_generation_shows_a_progress_bar() -> None:
 
 
 def test_escape_stops_a_long_go_to_generation_and_keeps_the_shown_state() -> None:
-    from protocols.rainbow.events import KeyEvent
+    from camlab88.protocols.rainbow.events import KeyEvent
 
     d = Driver(Options(pattern="gosper_gun"))
     d.leave_editing()

@@ -11,13 +11,12 @@ import sys
 
 import numba
 import pytest
+from camlab88.apps.ca.engine import CENTRE, Engine
+from camlab88.apps.ca.library import pattern_path, rules_path
+from camlab88.apps.ca.patterns import read_pattern
+from camlab88.apps.ca.rules import load_rules
+from camlab88.base.kernel_set import KernelSet
 from numba.core import sigutils
-
-from apps.ca.engine import CENTRE, Engine
-from apps.ca.library import pattern_path, rules_path
-from apps.ca.patterns import read_pattern
-from apps.ca.rules import load_rules
-from base.kernel_set import KernelSet
 
 MODULES = ["store", "upkeep", "evolve", "cellgrid", "census", "grid", "cells", "listing",
            "leaf", "bits.leaves", "bits.window"]
@@ -27,7 +26,7 @@ def _eager_exports(monkeypatch: pytest.MonkeyPatch) -> int:
     """Compile every export from its signature, then bind it wherever the lazy one was."""
     eager = {}
     for name in MODULES:
-        module = importlib.import_module(f"apps.ca.hashlife.{name}")
+        module = importlib.import_module(f"camlab88.apps.ca.hashlife.{name}")
         kernels = module.kernels
         assert isinstance(kernels, KernelSet)
         for fn_name, signature in kernels.exports.items():
@@ -42,7 +41,7 @@ def _eager_exports(monkeypatch: pytest.MonkeyPatch) -> int:
                        if k not in ("cache", "nopython")}
             eager[id(lazy)] = numba.njit(signature, **options)(lazy.py_func)
     for name, module in list(sys.modules.items()):
-        if name.startswith("apps.ca.hashlife"):
+        if name.startswith("camlab88.apps.ca.hashlife"):
             for attr, value in list(vars(module).items()):
                 if id(value) in eager:
                     monkeypatch.setattr(module, attr, eager[id(value)])

@@ -5,12 +5,11 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-
-from apps.ca import library, maze, turing
-from apps.ca.engine import Engine
-from apps.ca.library_build import generated
-from apps.ca.patterns import read_pattern
-from apps.ca.rules import load_rules, parse_rules
+from camlab88.apps.ca import library, maze, turing
+from camlab88.apps.ca.engine import Engine
+from camlab88.apps.ca.library_build import generated
+from camlab88.apps.ca.patterns import read_pattern
+from camlab88.apps.ca.rules import load_rules, parse_rules
 
 
 def test_generated_library_files_are_up_to_date() -> None:

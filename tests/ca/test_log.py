@@ -6,11 +6,10 @@ import os
 from pathlib import Path
 
 import pytest
-
-from apps.ca import log
-from apps.ca.engine import Engine, Rect
-from apps.ca.library import pattern_path, rules_path
-from apps.ca.patterns import read_pattern
+from camlab88.apps.ca import log
+from camlab88.apps.ca.engine import Engine, Rect
+from camlab88.apps.ca.library import pattern_path, rules_path
+from camlab88.apps.ca.patterns import read_pattern
 
 GUN = read_pattern(pattern_path("gosper_gun"))
 LIFE_TEXT = Path(rules_path("life")).read_text()
@@ -139,7 +138,7 @@ def test_replay_cannot_go_backwards() -> None:
 
 
 def test_load_event_with_lifeforms_beyond_rle_states(tmp_path: Path) -> None:
-    from apps.ca.patterns import Pattern
+    from camlab88.apps.ca.patterns import Pattern
 
     p = Pattern.from_cells([(0, 0, 300), (2, 1, 7)], ref=(1, 1))
     ev = log.ev_load(4, "big", 50, 60, "rot180", p)

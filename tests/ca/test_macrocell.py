@@ -8,10 +8,17 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from camlab88.apps.ca.patterns import (
+    GridPattern,
+    Pattern,
+    PatternError,
+    format_mc,
+    parse_mc,
+    read_pattern,
+)
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from apps.ca.patterns import GridPattern, Pattern, PatternError, format_mc, parse_mc, read_pattern
 from camlab88.cli import main
 
 GOLLY = Path(__file__).resolve().parents[1] / "data" / "ca" / "golly"
@@ -44,7 +51,7 @@ def test_macrocell_round_trip(cells, ref, two_state: bool) -> None:
 def test_expanding_in_small_batches_lists_the_same_cells(cells, two_state: bool, batch: int,
                                                          ) -> None:
     # the tree is expanded a batch of about BATCH cells at a time: any split gives them all
-    from apps.ca import macrocell
+    from camlab88.apps.ca import macrocell
 
     if two_state:
         cells = [(x, y, 1) for x, y, _ in cells]
@@ -61,7 +68,7 @@ def test_expanding_in_small_batches_lists_the_same_cells(cells, two_state: bool,
 
 
 def test_a_golly_file_in_small_batches_is_the_same_pattern() -> None:
-    from apps.ca import macrocell
+    from camlab88.apps.ca import macrocell
 
     whole = read_pattern(GOLLY / "primes.mc")
     saved = macrocell.BATCH
@@ -149,7 +156,8 @@ def test_ca_convert_writes_macrocell_and_ca_run_reads_it(tmp_path: Path, capsys)
 
 
 def test_ca_program_loads_a_macrocell_pattern() -> None:
-    from apps.ca.program.program import Options
+    from camlab88.apps.ca.program.program import Options
+
     from tests.ca_program.driver import Driver
 
     d = Driver(Options(rules="wireworld", pattern=str(GOLLY / "primes.mc")))

@@ -5,14 +5,14 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from camlab88.apps.ca import library
+from camlab88.apps.ca.engine import Engine
+from camlab88.apps.ca.patterns import read_pattern
+from camlab88.apps.ca.reference_engine import ReferenceEngine
+from camlab88.apps.ca.rules import RuleSet, load_rules, parse_rules
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from apps.ca import library
-from apps.ca.engine import Engine
-from apps.ca.patterns import read_pattern
-from apps.ca.reference_engine import ReferenceEngine
-from apps.ca.rules import RuleSet, load_rules, parse_rules
 from tests.ca.test_equivalence import rule_sets
 
 
@@ -76,7 +76,7 @@ def test_figure_7_12_workspace_after_a_row_with_cells_at_55_and_56() -> None:
     ref = ReferenceEngine(load_rules(library.rules_path("life")))
     ref.set_cells([55, 56], [15, 15], [1, 1])
     row = ref.current.head
-    from apps.ca.reference_engine import Line
+    from camlab88.apps.ca.reference_engine import Line
 
     above, current, below = Line(), Line(), Line()
     ref._send_row(row, [above, current, below])

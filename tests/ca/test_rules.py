@@ -6,11 +6,8 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
-from apps.ca.library import rules_path
-from apps.ca.rules import (
+from camlab88.apps.ca.library import rules_path
+from camlab88.apps.ca.rules import (
     MATCH_EXACT,
     MATCH_PATTERN,
     MATCH_RANGE,
@@ -22,6 +19,8 @@ from apps.ca.rules import (
     load_rules,
     parse_rules,
 )
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "ca"
 

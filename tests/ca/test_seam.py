@@ -3,10 +3,11 @@ clearing, advance areas, random population, saving and centralising."""
 
 from __future__ import annotations
 
-from apps.ca import log
-from apps.ca.engine import SIDE, Engine, Rect
-from apps.ca.program.commands import rect_from
-from apps.ca.session import Session
+from camlab88.apps.ca import log
+from camlab88.apps.ca.engine import SIDE, Engine, Rect
+from camlab88.apps.ca.program.commands import rect_from
+from camlab88.apps.ca.session import Session
+
 from tests.ca.helpers import LIFE, cellset, shifted
 
 GLIDER = ".O.\n..O\nOOO"

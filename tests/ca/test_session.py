@@ -6,13 +6,12 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-
-from apps.ca import log
-from apps.ca.engine import Engine, Rect
-from apps.ca.library import pattern_path, rules_path
-from apps.ca.patterns import read_pattern
-from apps.ca.rules import RuleError
-from apps.ca.session import Session
+from camlab88.apps.ca import log
+from camlab88.apps.ca.engine import Engine, Rect
+from camlab88.apps.ca.library import pattern_path, rules_path
+from camlab88.apps.ca.patterns import read_pattern
+from camlab88.apps.ca.rules import RuleError
+from camlab88.apps.ca.session import Session
 
 MAZE = Path(rules_path("maze")).read_text()
 LIFE = Path(rules_path("life")).read_text()

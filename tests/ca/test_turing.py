@@ -6,10 +6,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-
-from apps.ca import turing
-from apps.ca.engine import Engine, Rect
-from apps.ca.rules import parse_rules
+from camlab88.apps.ca import turing
+from camlab88.apps.ca.engine import Engine, Rect
+from camlab88.apps.ca.rules import parse_rules
 
 RULES = parse_rules(turing.rules_text())
 

@@ -5,12 +5,11 @@ it into a cell list, and the other forms are never kept beside it."""
 from __future__ import annotations
 
 import numpy as np
-
-from apps.ca.engine import CENTRE, Engine
-from apps.ca.hashlife.tree import Tree
-from apps.ca.library import rules_path
-from apps.ca.rules import load_rules
-from apps.ca.universe import CellList, DenseGrid
+from camlab88.apps.ca.engine import CENTRE, Engine
+from camlab88.apps.ca.hashlife.tree import Tree
+from camlab88.apps.ca.library import rules_path
+from camlab88.apps.ca.rules import load_rules
+from camlab88.apps.ca.universe import CellList, DenseGrid
 
 LIFE = load_rules(rules_path("life"))
 MAZE = load_rules(rules_path("maze"))

@@ -4,12 +4,12 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from apps.ca.program import script_events
-from apps.ca.program.demo import choose, edit_choice, leave_editing
-from apps.ca.program.program import CAProgram, Options
-from emulator.rainbow.session import in_process
-from protocols.rainbow.stream import Decoder
-from protocols.rainbow.ui.menu import ROW_H
+from camlab88.apps.ca.program import script_events
+from camlab88.apps.ca.program.demo import choose, edit_choice, leave_editing
+from camlab88.apps.ca.program.program import CAProgram, Options
+from camlab88.emulator.rainbow.session import in_process
+from camlab88.protocols.rainbow.stream import Decoder
+from camlab88.protocols.rainbow.ui.menu import ROW_H
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "ca_program"
 

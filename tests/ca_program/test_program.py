@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from camlab88.apps.ca import library, log
+from camlab88.apps.ca.engine import CENTRE, Rect
+from camlab88.apps.ca.patterns import read_pattern
+from camlab88.apps.ca.program.colours import DEAD_GREY, GRID_WHITE
+from camlab88.apps.ca.program.menus import MAIN_ITEMS
+from camlab88.apps.ca.program.program import Options
+from camlab88.apps.ca.program.viewport import VIEW_H, VIEW_W
 
-from apps.ca import library, log
-from apps.ca.engine import CENTRE, Rect
-from apps.ca.patterns import read_pattern
-from apps.ca.program.colours import DEAD_GREY, GRID_WHITE
-from apps.ca.program.menus import MAIN_ITEMS
-from apps.ca.program.program import Options
-from apps.ca.program.viewport import VIEW_H, VIEW_W
 from tests.ca_program.driver import DATA, Driver
 from tests.support.golden import assert_matches_golden
 
@@ -460,7 +460,7 @@ def test_same_file_for_log_and_script_continues_the_history(tmp_path):
 
 
 def test_save_pattern_from_a_rectangle_across_the_seam(tmp_path):
-    from apps.ca.program import commands
+    from camlab88.apps.ca.program import commands
 
     d = Driver()
     d.program.session.engine.set_cells([65534, 65535, 0], [100, 100, 100], 1)

@@ -4,14 +4,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-
-from apps.ca.engine import CENTRE, SIDE, Engine
-from apps.ca.library import rules_path
-from apps.ca.program import raster
-from apps.ca.program.edit import cells_between
-from apps.ca.program.viewport import VIEW_H, VIEW_W, Viewport, subpixel_side
-from apps.ca.rules import load_rules
-from apps.ca.session import Session
+from camlab88.apps.ca.engine import CENTRE, SIDE, Engine
+from camlab88.apps.ca.library import rules_path
+from camlab88.apps.ca.program import raster
+from camlab88.apps.ca.program.edit import cells_between
+from camlab88.apps.ca.program.viewport import VIEW_H, VIEW_W, Viewport, subpixel_side
+from camlab88.apps.ca.rules import load_rules
+from camlab88.apps.ca.session import Session
 
 
 def test_start_view_and_cell_mapping():

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from apps.cafilm.build import FilmSpec, build
-from apps.cafilm.film import CaFilm
+from camlab88.apps.cafilm.build import FilmSpec, build
+from camlab88.apps.cafilm.film import CaFilm
 
 ROOT = Path(__file__).resolve().parents[2]
 CHESS = str(ROOT / "examples" / "ca" / "chess.actors")

@@ -7,11 +7,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from camlab88.apps.cafilm.film import digest, render_png, stage_at, tasks
+from camlab88.apps.cafilm.period import host_for, period_frames
+from camlab88.apps.snooker.film.backends import DaskCluster, InProcess, LocalPool
+from camlab88.apps.snooker.film.schedule import frame_file, render_film
 
-from apps.cafilm.film import digest, render_png, stage_at, tasks
-from apps.cafilm.period import host_for, period_frames
-from apps.snooker.film.backends import DaskCluster, InProcess, LocalPool
-from apps.snooker.film.schedule import frame_file, render_film
 from tests.cafilm.helpers import glider_film
 
 
@@ -64,8 +64,8 @@ def test_a_resumed_film_renders_only_what_is_missing_or_changed(film, reference,
 
 
 def test_the_period_mode_talks_only_sigma_orders_and_shows_what_the_host_meant(film) -> None:
-    from emulator.machine.sigma import SigmaMachine
-    from protocols.link import LineSettings
+    from camlab88.emulator.machine.sigma import SigmaMachine
+    from camlab88.protocols.link import LineSettings
 
     machine = SigmaMachine("t5688", LineSettings(baud=9600))
     orders: list[object] = []

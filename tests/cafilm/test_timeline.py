@@ -4,8 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-
-from apps.cafilm.timeline import MARGIN, TimelineError, record
+from camlab88.apps.cafilm.timeline import MARGIN, TimelineError, record
 
 
 class _Engine:

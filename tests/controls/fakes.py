@@ -51,8 +51,8 @@ class FakeWindow:
 
 def harness_with(target, window: FakeWindow | None, clock: FakeClock, **controls):
     """A Harness whose window is ``window`` (the run is headless otherwise), on ``clock``."""
-    from emulator.harness import Harness, RunOptions
-    from emulator.harness.control_options import Controls
+    from camlab88.emulator.harness import Harness, RunOptions
+    from camlab88.emulator.harness.control_options import Controls
 
     c = Controls(monotonic=clock.monotonic, sleep=clock.sleep, **controls)
     h = Harness(target, RunOptions(controls=c))

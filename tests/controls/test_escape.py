@@ -4,7 +4,8 @@ those programs leave on Esc too, asking y/n/Esc where there is unsaved work."""
 
 from __future__ import annotations
 
-from emulator.host_input import KeyDown, KeyUp, Quit
+from camlab88.emulator.host_input import KeyDown, KeyUp, Quit
+
 from tests.controls.fakes import FakeClock, FakeWindow, harness_with
 from tests.support.targets import Counter
 
@@ -39,9 +40,9 @@ def test_escape_goes_to_a_program_that_reads_it() -> None:
 
 
 def test_the_targets_that_read_escape_say_so() -> None:
-    from emulator.harness.rainbow import RainbowTarget
-    from emulator.harness.sigma import PeriodTarget, SigmaProgramTarget
-    from emulator.harness.sigma_line import SigmaLineTarget
+    from camlab88.emulator.harness.rainbow import RainbowTarget
+    from camlab88.emulator.harness.sigma import PeriodTarget, SigmaProgramTarget
+    from camlab88.emulator.harness.sigma_line import SigmaLineTarget
 
     assert SigmaProgramTarget.escape_is_a_key  # KAS: Esc cancels, or asks before leaving
     assert SigmaLineTarget.escape_is_a_key     # a terminal key the host program reads
@@ -50,8 +51,9 @@ def test_the_targets_that_read_escape_say_so() -> None:
 
 
 def test_snooker_escape_asks_y_n_escape_before_leaving() -> None:
-    from apps.snooker.program.program import Program
-    from emulator.rainbow.session import in_process
+    from camlab88.apps.snooker.program.program import Program
+    from camlab88.emulator.rainbow.session import in_process
+
     from tests.snooker_program.helpers import feed
 
     rainbow = in_process()
@@ -80,7 +82,7 @@ def test_ca_escape_closes_a_question_first_then_leaves() -> None:
 
 
 def test_the_help_says_what_esc_does_for_each_kind_of_program() -> None:
-    from emulator.harness.help import key_lines
+    from camlab88.emulator.harness.help import key_lines
 
     for own, want in ((False, ("Esc, close", "quit (asks first where there is unsaved work)")),
                       (True, ("Esc", "the program's own key"))):

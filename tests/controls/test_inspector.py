@@ -20,7 +20,7 @@ ROOT_EXAMPLES = DATA.parents[1] / "examples" / "sigma"
 
 def lut_animation() -> bytes:
     """Six colour bars drawn once, then the LUT rotated a step at a time (12 steps)."""
-    from protocols.sigma.encoder import Encoder
+    from camlab88.protocols.sigma.encoder import Encoder
 
     e = Encoder()
     out = bytearray(e.flag() + e.reset())
@@ -77,9 +77,9 @@ def test_rainbow_scene_panel_is_golden(tmp_path) -> None:
 
 
 def test_pad_graph_tree_names_every_arc_with_its_offset() -> None:
-    from emulator.inspect.rainbow import tree_lines
-    from emulator.rainbow import Rainbow
-    from emulator.rainbow.scene import load_scene
+    from camlab88.emulator.inspect.rainbow import tree_lines
+    from camlab88.emulator.rainbow import Rainbow
+    from camlab88.emulator.rainbow.scene import load_scene
 
     device = load_scene(str(SCENE), Rainbow())
     lines = tree_lines(device.graph)
@@ -90,7 +90,7 @@ def test_pad_graph_tree_names_every_arc_with_its_offset() -> None:
 
 
 def test_a_program_without_a_known_device_is_told_so() -> None:
-    from emulator.inspect import panel_for
+    from camlab88.emulator.inspect import panel_for
 
     assert panel_for(object()) is None
 

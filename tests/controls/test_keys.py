@@ -7,10 +7,10 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
+from camlab88.emulator.harness import Plugin
+from camlab88.emulator.host_input import KeyDown, KeyUp, Quit
 from PIL import Image
 
-from emulator.harness import Plugin
-from emulator.host_input import KeyDown, KeyUp, Quit
 from tests.controls.fakes import FakeClock, FakeWindow, harness_with
 from tests.support.targets import Counter
 
@@ -95,7 +95,7 @@ def test_screenshot_key_writes_a_new_png_each_time_and_names_it(tmp_path, capsys
 
 
 def test_help_overlay_lists_the_controls_and_the_programs_keys() -> None:
-    from emulator.harness.help import key_lines
+    from camlab88.emulator.harness.help import key_lines
 
     window = FakeWindow({2: key("f1")})
     h = harness_with(Counter(8, size=(768, 512)), window, FakeClock())
@@ -109,7 +109,7 @@ def test_help_overlay_lists_the_controls_and_the_programs_keys() -> None:
 
 
 def test_a_plugins_keys_are_in_the_help() -> None:
-    from emulator.harness.help import key_lines
+    from camlab88.emulator.harness.help import key_lines
 
     class States(Plugin):
         keys = [("F2", "save a state")]
@@ -135,7 +135,7 @@ def test_every_window_shows_frame_time_and_keys_in_its_title() -> None:
 
 
 def test_a_signal_while_paused_ends_the_run_after_one_tick(monkeypatch) -> None:
-    from emulator.harness.signals import DeferredSignals
+    from camlab88.emulator.harness.signals import DeferredSignals
 
     delivered = []
     monkeypatch.setattr(DeferredSignals, "deliver", lambda self: delivered.append(self.caught))

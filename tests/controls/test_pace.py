@@ -4,8 +4,8 @@ clock: no real sleeping)."""
 from __future__ import annotations
 
 import pytest
+from camlab88.emulator.harness.pace import Pacer
 
-from emulator.harness.pace import Pacer
 from tests.controls.fakes import FakeClock, harness_with
 from tests.support.targets import Counter
 
@@ -55,9 +55,9 @@ def test_speed_must_be_positive() -> None:
 
 
 def test_a_replay_takes_its_own_controls_and_period_is_speed_one() -> None:
-    from emulator.harness import RunOptions
-    from emulator.harness.control_options import Controls
-    from emulator.harness.replay import Replay
+    from camlab88.emulator.harness import RunOptions
+    from camlab88.emulator.harness.control_options import Controls
+    from camlab88.emulator.harness.replay import Replay
 
     recorded = RunOptions(controls=Controls(speed=50.0))  # what the recorded command asked
     Replay(rec=None, period=True).adjust(recorded)

@@ -17,8 +17,8 @@ def _png(path: Path) -> np.ndarray:
 
 
 def test_kas_act_is_the_kas_session_played_over_the_line(tmp_path: Path) -> None:
-    from apps.kas.program import demo_session
-    from emulator.sigma import Terminal
+    from camlab88.apps.kas.program import demo_session
+    from camlab88.emulator.sigma import Terminal
 
     assert main(["demo", "--headless", "--only", "kas", "--out", str(tmp_path)]) == 0
     pngs = sorted(tmp_path.glob("kas_*.png"))

@@ -22,7 +22,7 @@ CODE = textwrap.dedent("""
     target.check(target.seeds()[0])  # imports the terminal; the fill kernel not yet compiled
     kept = atheris_target.instrument_python_layer()  # (atheris.instrument_all(): it fails)
     assert kept > 0, kept
-    from protocols.sigma import Encoder
+    from camlab88.protocols.sigma import Encoder
     e = Encoder()
     target.check(e.flag() + e.move(100, 100) + e.fill(1))  # compiles _boundary_fill now
     print("ok")

@@ -39,8 +39,8 @@ def _walk4(scratch: Path) -> str:
     """A 4-frame walk sequence (what the kas-paint-ops seeds were painted on)."""
     path = scratch / "walk4.kas"
     if not path.exists():
-        from apps.kas import files
-        from apps.kas.inbetween import inbetween
+        from camlab88.apps.kas import files
+        from camlab88.apps.kas.inbetween import inbetween
 
         lib = ROOT / "apps" / "kas" / "library"
         files.save_sequence(path, inbetween(files.load_keyframe(WALK_A), files.load_keyframe(

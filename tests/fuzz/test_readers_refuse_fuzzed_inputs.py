@@ -9,12 +9,12 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
+from camlab88.apps.kas.paint import opsfile
+from camlab88.protocols.session import SessionFileError
+from camlab88.protocols.session.format import loads
 
-from apps.kas.paint import opsfile
 from fuzz.engine import run_one
 from fuzz.targets import CORPUS, TARGETS
-from protocols.session import SessionFileError
-from protocols.session.format import loads
 
 SESSION = (CORPUS / "session-recording" / "every_record.session").read_bytes()
 OPS = (CORPUS / "kas-paint-ops" / "touch_up.ops").read_text()
@@ -63,9 +63,9 @@ def test_ops_file_errors_quote_a_long_word_shortened() -> None:
                                   "+1e99999999999 move 0 0"])
 def test_kas_script_time_with_a_huge_exponent_is_refused(line: str) -> None:
     # the long fuzz (kas-script, seed 7): Fraction('1e99999...') ran past the 20 s alarm
-    from apps.kas.events import parse_script
-    from apps.kas.files import KasFileError
-    from apps.kas.program.script import parse_timed_script
+    from camlab88.apps.kas.events import parse_script
+    from camlab88.apps.kas.files import KasFileError
+    from camlab88.apps.kas.program.script import parse_timed_script
 
     data = (line + "\n").encode()
     assert run_one(TARGETS["kas-script"], data, 5.0) is None
@@ -75,7 +75,7 @@ def test_kas_script_time_with_a_huge_exponent_is_refused(line: str) -> None:
 
 
 def test_kas_script_times_in_the_documented_shapes_still_read() -> None:
-    from apps.kas.program.script import parse_timed_script
+    from camlab88.apps.kas.program.script import parse_timed_script
 
     events = parse_timed_script("2.5 wait\n+0.1 wait\n3 wait\n.5e1 wait\n1e2 wait\n", "s.txt")
     assert [e.t for e in events] == [Fraction(5, 2), Fraction(13, 5), 3, 5, 100]
@@ -88,7 +88,7 @@ def test_snooker_session_table_too_large_for_its_pockets_is_refused(key: str,
     # zero width in floats, and Table.pockets divided by it (ZeroDivisionError)
     import json
 
-    from apps.snooker.session import SessionError
+    from camlab88.apps.snooker.session import SessionError
 
     session = json.loads((CORPUS / "snooker-session" / "new.json").read_text())
     session["table"][key] = value

@@ -11,11 +11,10 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
-
-from emulator.harness import RunOptions, run
-from emulator.harness.sigma_line import TICK, SigmaLineTarget
-from emulator.machine import SigmaMachine
-from protocols.session import read
+from camlab88.emulator.harness import RunOptions, run
+from camlab88.emulator.harness.sigma_line import TICK, SigmaLineTarget
+from camlab88.emulator.machine import SigmaMachine
+from camlab88.protocols.session import read
 
 
 class _InterruptedMidTick(SigmaLineTarget):

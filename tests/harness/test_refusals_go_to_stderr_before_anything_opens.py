@@ -4,8 +4,7 @@
 from __future__ import annotations
 
 import pytest
-
-from emulator.harness.display import DisplayRefused
+from camlab88.emulator.harness.display import DisplayRefused
 
 
 def _no_display(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -16,7 +15,7 @@ def _no_display(monkeypatch: pytest.MonkeyPatch) -> None:
 
 def test_the_window_test_card_refuses_on_stderr(monkeypatch: pytest.MonkeyPatch,
                                                 capsys: pytest.CaptureFixture[str]) -> None:
-    from emulator import window
+    from camlab88.emulator import window
 
     _no_display(monkeypatch)
     assert window.main([]) == 2
@@ -26,8 +25,9 @@ def test_the_window_test_card_refuses_on_stderr(monkeypatch: pytest.MonkeyPatch,
 
 def test_a_mouse_driven_emulated_tablet_refuses_before_opening_its_pty(
         monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]) -> None:
+    from camlab88.emulator.tablet_input import emulated_source
+
     from camlab88.cli import main
-    from emulator.tablet_input import emulated_source
 
     _no_display(monkeypatch)
     opened = []

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from apps.kas.events import Key, Pointer
+from camlab88.apps.kas.events import Key, Pointer
 
 
 def tap(x: float, y: float) -> list:

@@ -5,10 +5,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-
-from apps.kas.editor import MENU_ITEMS, Editor, menu_layout
-from apps.kas.events import Key, MenuPick, Pointer
-from apps.kas.model import Chain, Drawing
+from camlab88.apps.kas.editor import MENU_ITEMS, Editor, menu_layout
+from camlab88.apps.kas.events import Key, MenuPick, Pointer
+from camlab88.apps.kas.model import Chain, Drawing
 
 from .helpers import keys, pts, tap, typed
 
@@ -155,8 +154,8 @@ def test_unknown_menu_item_is_a_message_not_a_crash():
 
 
 def test_failed_save_is_shown_and_quit_warns_while_dirty():
-    from apps.kas.editor import Editor
-    from apps.kas.events import Key, Pointer
+    from camlab88.apps.kas.editor import Editor
+    from camlab88.apps.kas.events import Key, Pointer
 
     ed = Editor()
     ed.run([Pointer(0, 0, True), Pointer(0, 0, False), Pointer(1, 1, True),

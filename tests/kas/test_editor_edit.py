@@ -4,10 +4,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-
-from apps.kas.editor import Editor
-from apps.kas.events import Key, MenuPick
-from apps.kas.model import Chain, Drawing
+from camlab88.apps.kas.editor import Editor
+from camlab88.apps.kas.events import Key, MenuPick
+from camlab88.apps.kas.model import Chain, Drawing
 
 from .helpers import keys, pts, tap, typed
 
@@ -205,7 +204,7 @@ def test_move_back_unwinds_repeats_too():
 
 
 def test_composite_replayed_elsewhere_with_the_remembered_parameters():
-    from apps.kas import editor_commands as ops
+    from camlab88.apps.kas import editor_commands as ops
 
     ed = _enlarged_twice_then_turned_twice((0, 3), "30")
     ed.run(keys("m") + tap(0, 0) + tap(0.5, -0.25))

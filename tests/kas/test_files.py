@@ -6,12 +6,12 @@ import os
 
 import numpy as np
 import pytest
+from camlab88.apps.kas import files
+from camlab88.apps.kas.files import KasFileError, SamplePath, Timing
+from camlab88.apps.kas.model import AnimSequence, Chain, Drawing
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from apps.kas import files
-from apps.kas.files import KasFileError, SamplePath, Timing
-from apps.kas.model import AnimSequence, Chain, Drawing
 from tests.support.refusals import refusal_of
 
 coord = st.floats(-1e4, 1e4, allow_nan=False, allow_infinity=False)
@@ -106,7 +106,7 @@ def test_bad_ticks_refused(ticks, msg):
         files.parse_timing(text, "t.kas")
     assert "t.kas" in str(err.value)
     with pytest.raises(ValueError, match="tick"):
-        from apps.kas.timing import fractions
+        from camlab88.apps.kas.timing import fractions
         fractions(Timing("ticks", [float(x) for x in ticks.split()]), None)
 
 

@@ -4,13 +4,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from camlab88.apps.kas import correspond, pathfit, splines, timing
+from camlab88.apps.kas.files import SamplePath, Timing
+from camlab88.apps.kas.inbetween import inbetween, inbetween_keys
+from camlab88.apps.kas.model import Chain, Drawing, drop_collinear
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
-from apps.kas import correspond, pathfit, splines, timing
-from apps.kas.files import SamplePath, Timing
-from apps.kas.inbetween import inbetween, inbetween_keys
-from apps.kas.model import Chain, Drawing, drop_collinear
 
 
 def chain(pts, colour=1, section=0):
@@ -273,8 +272,8 @@ def test_frame_drop_equals_per_chain_drop(chains_pts, colour):
 
 
 def test_numba_mask_equals_numpy_reference():
-    from apps.kas import kernels
-    from apps.kas.model import redundant_mask
+    from camlab88.apps.kas import kernels
+    from camlab88.apps.kas.model import redundant_mask
 
     rng = np.random.default_rng(3)
     pos = rng.integers(-2, 3, size=(20, 60, 2)).astype(float)  # many collinear runs/repeats

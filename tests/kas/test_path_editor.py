@@ -3,11 +3,10 @@
 from __future__ import annotations
 
 import numpy as np
-
-from apps.kas.events import Pointer
-from apps.kas.inbetween import inbetween
-from apps.kas.model import Chain, Drawing
-from apps.kas.path_editor import PathEditor
+from camlab88.apps.kas.events import Pointer
+from camlab88.apps.kas.inbetween import inbetween
+from camlab88.apps.kas.model import Chain, Drawing
+from camlab88.apps.kas.path_editor import PathEditor
 
 from .helpers import keys, tap
 

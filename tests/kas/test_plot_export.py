@@ -7,11 +7,10 @@ import xml.etree.ElementTree as ET
 
 import imageio.v3 as iio
 import numpy as np
-
-from apps.kas import plot
-from apps.kas.export import export
-from apps.kas.model import AnimSequence, Chain, Drawing
-from apps.kas.raster import render
+from camlab88.apps.kas import plot
+from camlab88.apps.kas.export import export
+from camlab88.apps.kas.model import AnimSequence, Chain, Drawing
+from camlab88.apps.kas.raster import render
 
 
 def frame() -> Drawing:

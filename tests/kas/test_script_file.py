@@ -5,9 +5,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-
-from apps.kas.editor import Editor
-from apps.kas.events import parse_script
+from camlab88.apps.kas.editor import Editor
+from camlab88.apps.kas.events import parse_script
 
 SCRIPT = Path(__file__).resolve().parents[1] / "data" / "kas" / "walk_edit_script.txt"
 

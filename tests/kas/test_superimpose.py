@@ -3,9 +3,8 @@
 from __future__ import annotations
 
 import pytest
-
-from apps.kas.model import AnimSequence, Chain, Drawing
-from apps.kas.superimpose import multiple_image, superimpose
+from camlab88.apps.kas.model import AnimSequence, Chain, Drawing
+from camlab88.apps.kas.superimpose import multiple_image, superimpose
 
 
 def numbered(n: int, y: float, colour: int = 1) -> AnimSequence:

@@ -3,8 +3,7 @@
 from __future__ import annotations
 
 import pytest
-
-from apps.kas import viewer_schedule as vs
+from camlab88.apps.kas import viewer_schedule as vs
 
 
 @pytest.mark.claim("§3.1.4: the viewer keeps track of the elapsed time since the first frame "

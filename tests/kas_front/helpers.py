@@ -4,12 +4,12 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from apps.kas.editor import Editor
-from apps.kas.events import Key, Pointer
-from apps.kas.program import EditorFront, Session, parse_timed_script
-from apps.kas.program.keyboard import key_to_bytes
-from emulator.harness.sigma import SigmaSessionRun
-from emulator.machine import SigmaMachine
+from camlab88.apps.kas.editor import Editor
+from camlab88.apps.kas.events import Key, Pointer
+from camlab88.apps.kas.program import EditorFront, Session, parse_timed_script
+from camlab88.apps.kas.program.keyboard import key_to_bytes
+from camlab88.emulator.harness.sigma import SigmaSessionRun
+from camlab88.emulator.machine import SigmaMachine
 
 DATA = Path(__file__).parent.parent / "data" / "kas_front"
 GOLDEN = DATA / "golden"

@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 import numpy as np
+from camlab88.apps.kas import files
 from PIL import Image
 
-from apps.kas import files
 from camlab88.cli import main
 from tests.kas_front.helpers import DATA, model_only
 
@@ -67,7 +67,7 @@ def test_view_headless_counts_and_frames(tmp_path, capsys) -> None:
     n_fast = int(fast.split(": ")[1].split()[0])
     assert n_slow < n_fast
     # the characters reported are those really sent: dropped frames never go down the line
-    from apps.kas.program.viewer import LineTest
+    from camlab88.apps.kas.program.viewer import LineTest
 
     test = LineTest(files.load_sequence(seq))
     rep = test.run("realtime", 9600)
@@ -165,8 +165,8 @@ def test_user_library_and_the_previous_pairs_path(tmp_path, capsys, monkeypatch)
 
 
 def test_closing_the_window_with_unsaved_edits_warns_once(tmp_path, capsys, monkeypatch) -> None:
-    from emulator.host_input import Quit
-    from emulator.window import Window
+    from camlab88.emulator.host_input import Quit
+    from camlab88.emulator.window import Window
 
     polls: list[int] = []
     quits: list[int] = []

@@ -5,12 +5,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from camlab88.apps.kas.editor import Editor
+from camlab88.apps.kas.files import KasFileError
+from camlab88.apps.kas.program import EditorFront, parse_timed_script
+from camlab88.apps.kas.program.keyboard import KEY_BYTES, bytes_to_keys, key_to_bytes
+from camlab88.emulator.sigma import Terminal
 
-from apps.kas.editor import Editor
-from apps.kas.files import KasFileError
-from apps.kas.program import EditorFront, parse_timed_script
-from apps.kas.program.keyboard import KEY_BYTES, bytes_to_keys, key_to_bytes
-from emulator.sigma import Terminal
 from tests.kas_front.helpers import DATA, GOLDEN, drive, model_only, run_editor
 from tests.support.golden import assert_matches_golden
 

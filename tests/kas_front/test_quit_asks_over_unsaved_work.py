@@ -9,13 +9,13 @@ import subprocess
 import sys
 from pathlib import Path
 
-from apps.kas.editor import Editor
-from apps.kas.events import Key, Pointer
-from apps.kas.files import load_keyframe
-from apps.kas.model import Drawing
-from apps.kas.path_editor import PathEditor
-from apps.kas.program import EditorFront, PathFront
-from apps.kas.program.base import QUIT_QUESTION
+from camlab88.apps.kas.editor import Editor
+from camlab88.apps.kas.events import Key, Pointer
+from camlab88.apps.kas.files import load_keyframe
+from camlab88.apps.kas.model import Drawing
+from camlab88.apps.kas.path_editor import PathEditor
+from camlab88.apps.kas.program import EditorFront, PathFront
+from camlab88.apps.kas.program.base import QUIT_QUESTION
 
 ROOT = Path(__file__).resolve().parents[2]
 ESC = b"\x1b"
@@ -136,8 +136,8 @@ def test_ctrl_c_keeps_unsaved_edits_in_a_recovery_file(tmp_path: Path, capsys) -
 def _window_keys(monkeypatch, keys: list[tuple[str, str]]) -> list[int]:
     """The window's poll: nothing for 20 polls (the script's drawing arrives), then one key
     each poll from ``keys``; returns the list of polls made."""
-    from emulator.host_input import KeyDown
-    from emulator.window import Window
+    from camlab88.emulator.host_input import KeyDown
+    from camlab88.emulator.window import Window
 
     polls: list[int] = []
 

@@ -3,19 +3,19 @@
 from __future__ import annotations
 
 import numpy as np
+from camlab88.apps.kas import files
+from camlab88.apps.kas.editor import Editor
+from camlab88.apps.kas.files import KasFileError
+from camlab88.apps.kas.library import LIBRARY
+from camlab88.apps.kas.program import EditorFront, parse_timed_script
+from camlab88.apps.kas.program import layout as L
+from camlab88.apps.kas.program.draw import Painter, chain_prims, clip_polyline, encode
+from camlab88.apps.kas.program.keyboard import bytes_to_keys
+from camlab88.emulator.sigma import Terminal
+from camlab88.protocols.sigma import Decoder, Encoder
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from apps.kas import files
-from apps.kas.editor import Editor
-from apps.kas.files import KasFileError
-from apps.kas.library import LIBRARY
-from apps.kas.program import EditorFront, parse_timed_script
-from apps.kas.program import layout as L
-from apps.kas.program.draw import Painter, chain_prims, clip_polyline, encode
-from apps.kas.program.keyboard import bytes_to_keys
-from emulator.sigma import Terminal
-from protocols.sigma import Decoder, Encoder
 from tests.kas_front.helpers import drive
 
 WORDS = st.sampled_from(["move", "down", "up", "key", "menu", "type", "wait", "fly", "+0.1",
@@ -98,9 +98,8 @@ def test_guide_keyframe_highlighted_on_screen() -> None:
 def test_a_script_file_with_a_bad_byte_a_directory_or_no_file_is_named(tmp_path) -> None:
     """A non-UTF-8 KAS script is named by file, line and column, not by Python's codec."""
     import pytest
-
-    from apps.kas.files import KasFileError
-    from apps.kas.program.script import load_timed_script
+    from camlab88.apps.kas.files import KasFileError
+    from camlab88.apps.kas.program.script import load_timed_script
 
     bad = tmp_path / "bad.script"
     bad.write_bytes(b"wait 1\nkey a\n\xff\xfe bad\n")

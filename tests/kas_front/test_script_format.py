@@ -5,8 +5,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from apps.kas import files
-from apps.kas.events import parse_script
+from camlab88.apps.kas import files
+from camlab88.apps.kas.events import parse_script
+
 from camlab88.cli import main
 from tests.kas_front.helpers import DATA
 

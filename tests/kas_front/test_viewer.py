@@ -4,14 +4,20 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-
-from apps.kas import demo
-from apps.kas import viewer_schedule as vs
-from apps.kas.program.viewer import LineTest, ViewerHost, draw_frame, four_colours, setup, swap
-from emulator.harness.sigma_batch import host_periods
-from emulator.machine import SigmaMachine
-from emulator.sigma import Terminal
-from protocols.link import LineSettings
+from camlab88.apps.kas import demo
+from camlab88.apps.kas import viewer_schedule as vs
+from camlab88.apps.kas.program.viewer import (
+    LineTest,
+    ViewerHost,
+    draw_frame,
+    four_colours,
+    setup,
+    swap,
+)
+from camlab88.emulator.harness.sigma_batch import host_periods
+from camlab88.emulator.machine import SigmaMachine
+from camlab88.emulator.sigma import Terminal
+from camlab88.protocols.link import LineSettings
 
 
 @pytest.fixture(scope="module")
@@ -116,8 +122,8 @@ def test_four_colours_keep_the_most_used_pens(seq) -> None:
 def test_pens_beyond_the_three_most_used_borrow_the_nearest_colour(seq) -> None:
     import copy
 
-    from apps.kas.paint import outlines
-    from apps.kas.pens import pen_counts, pen_slots
+    from camlab88.apps.kas.paint import outlines
+    from camlab88.apps.kas.pens import pen_counts, pen_slots
 
     more = copy.deepcopy(seq)
     more.frames[0].chains[0].colours[:] = 7  # a fourth pen, used least

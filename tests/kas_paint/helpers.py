@@ -3,15 +3,14 @@
 from __future__ import annotations
 
 import numpy as np
-
-from apps.kas import files
-from apps.kas.inbetween import inbetween
-from apps.kas.library import LIBRARY
-from apps.kas.model import AnimSequence, Chain, Drawing
-from apps.kas.paint.ops import Op, OpsFile
-from apps.kas.paint.program import Line, PaintProgram
-from emulator.harness.sigma_batch import link
-from emulator.sigma import Terminal
+from camlab88.apps.kas import files
+from camlab88.apps.kas.inbetween import inbetween
+from camlab88.apps.kas.library import LIBRARY
+from camlab88.apps.kas.model import AnimSequence, Chain, Drawing
+from camlab88.apps.kas.paint.ops import Op, OpsFile
+from camlab88.apps.kas.paint.program import Line, PaintProgram
+from camlab88.emulator.harness.sigma_batch import link
+from camlab88.emulator.sigma import Terminal
 
 # the walk's body (line-chain 2) filled in colour 3, its head (line-chain 1) in colour 5
 WALK_FILLS = (Op("fill", 3, chains=(2,)), Op("fill", 5, chains=(1,)))

@@ -4,10 +4,10 @@ file, then the whole sequence painted from it into frame_NNNNN.png (from 1) and 
 from __future__ import annotations
 
 import numpy as np
+from camlab88.apps.kas import files
+from camlab88.apps.kas.paint import opsfile
 from PIL import Image
 
-from apps.kas import files
-from apps.kas.paint import opsfile
 from camlab88.cli import main
 from tests.kas_paint.helpers import walk
 
@@ -59,13 +59,13 @@ def test_paint_errors(tmp_path, capsys) -> None:
 def test_window_input_selects_fills_and_picks() -> None:
     """The window's mouse and keys drive the same session: click near a chain, f to fill;
     in the preview a click on a swatch picks it and r steps its red."""
-    from apps.kas.paint import areas, mixing
-    from apps.kas.paint.host import PaintHost
-    from apps.kas.paint.ops import OpsFile
-    from apps.kas.paint.session import PaintSession
-    from emulator.harness.sigma_host import SigmaHostTarget
-    from emulator.host_input import KeyDown, PointerButton
-    from emulator.machine import SigmaMachine
+    from camlab88.apps.kas.paint import areas, mixing
+    from camlab88.apps.kas.paint.host import PaintHost
+    from camlab88.apps.kas.paint.ops import OpsFile
+    from camlab88.apps.kas.paint.session import PaintSession
+    from camlab88.emulator.harness.sigma_host import SigmaHostTarget
+    from camlab88.emulator.host_input import KeyDown, PointerButton
+    from camlab88.emulator.machine import SigmaMachine
 
     seq = walk(4)
     s = PaintSession(seq, OpsFile(painted=2))

@@ -5,10 +5,10 @@ closed by a tolerance instead of the colour leaking."""
 from __future__ import annotations
 
 import numpy as np
+from camlab88.apps.kas.model import AnimSequence, Chain, Drawing
+from camlab88.apps.kas.paint import areas
+from camlab88.apps.kas.paint.ops import Op, OpsFile
 
-from apps.kas.model import AnimSequence, Chain, Drawing
-from apps.kas.paint import areas
-from apps.kas.paint.ops import Op, OpsFile
 from tests.kas_paint.oracle import seg_distance
 from tests.kas_paint.test_autopaint import _paint
 
@@ -68,7 +68,7 @@ def test_gap_tolerance_closes_a_near_miss() -> None:
 
 
 def test_gap_segment_is_where_the_near_miss_is() -> None:
-    from apps.kas.paint import shape
+    from camlab88.apps.kas.paint import shape
 
     d = Drawing([_square_with_gap(0.06)])
     (seg,) = shape.gap_segments(d, 0.1)

@@ -5,13 +5,13 @@ them fills every enclosed piece and nothing outside (checked against a geometric
 from __future__ import annotations
 
 import numpy as np
+from camlab88.apps.kas.paint import areas, orders, seeds
+from camlab88.apps.kas.paint.autopaint import Step
+from camlab88.apps.kas.paint.ops import Op, OpsFile
+from camlab88.apps.kas.paint.program import PaintProgram
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
-from apps.kas.paint import areas, orders, seeds
-from apps.kas.paint.autopaint import Step
-from apps.kas.paint.ops import Op, OpsFile
-from apps.kas.paint.program import PaintProgram
 from tests.kas_paint import oracle
 from tests.kas_paint.helpers import one_frame, terminal_for
 
@@ -136,7 +136,7 @@ def test_figure_eight_has_two_seeds() -> None:
 def test_two_chains_crossing_each_other(a: list[tuple[int, int]], b: list[tuple[int, int]]
                                         ) -> None:
     # select of two chains: their end points joined into one closed shape
-    from apps.kas.paint import shape
+    from camlab88.apps.kas.paint import shape
 
     seq = one_frame(np.array(a, dtype=float), np.array(b, dtype=float))
     poly = areas.dedup(shape.closed_shape(seq.frames[0], (1, 2)).astype(np.int64))

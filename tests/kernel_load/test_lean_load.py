@@ -1,4 +1,4 @@
-"""base.kernel_load: a cached kernel loads without numba's context refresh, and gives
+"""camlab88.base.kernel_load: a cached kernel loads without numba's context refresh, and gives
 what numba's own load gives; a later real compile, a failing lean load and the switch-off
 variable all fall back to numba's behaviour."""
 
@@ -10,7 +10,7 @@ import sys
 import textwrap
 from pathlib import Path
 
-from base.kernel_load import OFF_VARIABLE
+from camlab88.base.kernel_load import OFF_VARIABLE
 
 ROOT = Path(__file__).resolve().parents[2]
 # imported by the refresh only, never by a plain cache load
@@ -20,7 +20,7 @@ KERNELS = """
 import math
 import numpy as np
 from numba import njit
-from base.kernel_notice import announce_compiles
+from camlab88.base.kernel_notice import announce_compiles
 
 announce_compiles("lean toy", 1.0, __name__)
 
@@ -109,7 +109,7 @@ def test_a_failing_lean_load_falls_back_to_numbas_own(tmp_path: Path) -> None:
 
 
 def test_the_variable_turns_it_off(tmp_path: Path) -> None:
-    code = ("from base import kernel_load\n"
+    code = ("from camlab88.base import kernel_load\n"
             "print(kernel_load.lean_cache_loads(), kernel_load.active())\n")
     assert _run(tmp_path, code, **{OFF_VARIABLE: "1"}) == ["False", "False"]
     assert _run(tmp_path, code, **{OFF_VARIABLE: "0"}) == ["True", "True"]

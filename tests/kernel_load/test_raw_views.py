@@ -4,9 +4,8 @@ same memory, with their shapes and element types, writable, for each dtype HashL
 from __future__ import annotations
 
 import numpy as np
+from camlab88.base import raw_views
 from numba import njit
-
-from base import raw_views
 
 raw_views.arm()
 

@@ -12,7 +12,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 
 CALLEE = """
-from base.kernel_set import KernelSet
+from camlab88.base.kernel_set import KernelSet
 
 kernels = KernelSet(__name__)
 
@@ -22,7 +22,7 @@ def offset(x):
 """
 
 CALLER = """
-from base.kernel_set import KernelSet
+from camlab88.base.kernel_set import KernelSet
 from stampcallee import offset
 
 kernels = KernelSet(__name__, sources=("stampcallee",))
@@ -64,6 +64,6 @@ def test_an_edit_of_a_callee_module_recompiles_its_callers(tmp_path: Path) -> No
 def test_the_stamps_are_active_with_the_numba_we_install() -> None:
     """A numba whose cache internals differ would leave numba's own stamps (returns False):
     this test says so rather than the stale-cache test passing by luck."""
-    from base.kernel_load import stamps_cover_sources
+    from camlab88.base.kernel_load import stamps_cover_sources
 
     assert stamps_cover_sources()

@@ -3,10 +3,10 @@ from __future__ import annotations
 from fractions import Fraction
 
 import pytest
+from camlab88.protocols.link import LineSettings, SerialLine, VirtualClock
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from protocols.link import LineSettings, SerialLine, VirtualClock
 from tests.link.naive import simulate
 
 CT = Fraction(1, 960)
@@ -252,7 +252,7 @@ def test_pacing_to_the_wall_clock_never_changes_what_arrives() -> None:
     what the same session run flat out receives."""
     import random
 
-    from protocols.link import Throttle
+    from camlab88.protocols.link import Throttle
 
     def session(throttle: Throttle) -> list[tuple[Fraction, bytes]]:
         line = SerialLine()

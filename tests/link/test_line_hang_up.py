@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from protocols.link import XOFF, LineSettings, SerialLine
+from camlab88.protocols.link import XOFF, LineSettings, SerialLine
 
 
 def test_hang_up_drops_both_queues_and_what_arrived_unread() -> None:

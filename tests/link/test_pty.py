@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 import serial
+from camlab88.protocols.link import SerialLine
+from camlab88.protocols.link.pty import PtyPort
 
-from protocols.link import SerialLine
-from protocols.link.pty import PtyPort
 from tests.link.exactly import read_exactly
 
 
@@ -49,7 +49,7 @@ def test_read_times_out_with_nothing() -> None:
 
 
 def test_pty_bridge_end_to_end_with_pyserial() -> None:
-    from protocols.link.transports import PtyBridge
+    from camlab88.protocols.link.transports import PtyBridge
 
     line = SerialLine()
     with PtyBridge(line.host) as bridge:  # an outside program plays the host

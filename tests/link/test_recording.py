@@ -5,10 +5,7 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
-from protocols.link import (
+from camlab88.protocols.link import (
     LineSettings,
     Recorder,
     Recording,
@@ -18,7 +15,10 @@ from protocols.link import (
     read_recording,
     replay_into,
 )
-from protocols.link.recording import format_time, parse_recording, parse_time
+from camlab88.protocols.link.recording import format_time, parse_recording, parse_time
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from tests.support.refusals import refusal_of
 
 CT = Fraction(1, 960)

@@ -15,9 +15,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from camlab88.protocols.link import serial_port
 from PIL import Image
 
-from protocols.link import serial_port
 from tests.support.serial_servers import Rfc2217Server, StreamServer, null_modem
 
 STREAM = Path(__file__).parents[1] / "data" / "link" / "pgplot_goctest.goc"
@@ -141,7 +141,7 @@ def test_loop_url_reads_whole_chunks() -> None:
 
 
 def test_spy_url_on_a_pty_reads_whole_chunks(capsys: pytest.CaptureFixture[str]) -> None:
-    from protocols.link.pty import PtyPort
+    from camlab88.protocols.link.pty import PtyPort
 
     pty = PtyPort()
     port = serial_port.open_url(f"spy://{pty.slave_path}", write_timeout=2)  # logs to stderr
@@ -162,9 +162,9 @@ def test_spy_url_on_a_pty_reads_whole_chunks(capsys: pytest.CaptureFixture[str])
 def test_a_serial_tablet_over_socket_url_reads_whole_bursts() -> None:
     """The tablet path shares the rule: a burst of Bit Pad One reports over socket:// is
     decoded in a few reads, not one byte a read."""
-    from protocols.tablets.events import TabletEvent
-    from protocols.tablets.registry import make_encoder
-    from protocols.tablets.sources import open_source
+    from camlab88.protocols.tablets.events import TabletEvent
+    from camlab88.protocols.tablets.registry import make_encoder
+    from camlab88.protocols.tablets.sources import open_source
 
     encode = make_encoder("bitpad1").encode
     burst = b"".join(encode(TabletEvent(100 + k, 200, True, 1)) for k in range(200))

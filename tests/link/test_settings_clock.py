@@ -3,8 +3,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 import pytest
-
-from protocols.link import LineSettings, Throttle, VirtualClock, to_time
+from camlab88.protocols.link import LineSettings, Throttle, VirtualClock, to_time
 
 
 def test_default_is_9600_8n1_960_chars_per_second() -> None:

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import socket
 
-from protocols.link import SerialLine
-from protocols.link.transports import BUSY, SerialUrlBridge, TcpBridge
+from camlab88.protocols.link import SerialLine
+from camlab88.protocols.link.transports import BUSY, SerialUrlBridge, TcpBridge
+
 from tests.link.exactly import read_exactly
 
 

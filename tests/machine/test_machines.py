@@ -7,11 +7,11 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
+from camlab88.emulator.machine import MachineStateError, RainbowMachine, SigmaMachine
+from camlab88.emulator.machine.state_file import MAGIC
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from emulator.machine import MachineStateError, RainbowMachine, SigmaMachine
-from emulator.machine.state_file import MAGIC
 from tests.support.processes import fresh_python
 
 PICTURE = (b"\r+-*/HI2GI200200GJ600200600400200400200200BHtext\r\n+-*/JH 6s0\x1fGIKQ1"
@@ -110,7 +110,7 @@ def test_a_rainbow_state_saved_between_calls_continues_bit_identically(save_at):
 
 CONTINUE = """
 import hashlib, sys
-from emulator.machine import SigmaMachine
+from camlab88.emulator.machine import SigmaMachine
 m = SigmaMachine()
 m.load_state(open(sys.argv[1], "rb").read())
 m.host.write(b"GI100100GJ700500BH")

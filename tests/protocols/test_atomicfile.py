@@ -1,4 +1,4 @@
-"""base.atomicfile: the old file survives any failure; the new one lands whole."""
+"""camlab88.base.atomicfile: the old file survives any failure; the new one lands whole."""
 
 from __future__ import annotations
 
@@ -6,8 +6,7 @@ import os
 from pathlib import Path
 
 import pytest
-
-from base.atomicfile import atomic_output, write_atomic
+from camlab88.base.atomicfile import atomic_output, write_atomic
 
 
 def test_write_replaces_whole_and_leaves_no_temporary(tmp_path: Path) -> None:

@@ -4,8 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-
-from emulator.rainbow import Rainbow
+from camlab88.emulator.rainbow import Rainbow
 
 
 def random_lut(seed: int = 7) -> np.ndarray:

@@ -4,10 +4,9 @@ moved independently, stays correctly blended with no pixel redrawn."""
 from __future__ import annotations
 
 import numpy as np
-
-from emulator.rainbow.session import in_process
-from protocols.rainbow import transparency as tx
-from protocols.rainbow.antialias import coverage
+from camlab88.emulator.rainbow.session import in_process
+from camlab88.protocols.rainbow import transparency as tx
+from camlab88.protocols.rainbow.antialias import coverage
 
 
 def expected(poly_at, spl_at) -> np.ndarray:

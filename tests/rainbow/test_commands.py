@@ -66,9 +66,9 @@ def test_run_headless_screenshot(tmp_path) -> None:
 
 
 def test_tablet_reports_become_rainbow_tablet_events() -> None:
-    from emulator.rainbow.host_input import tablet_event
-    from protocols.rainbow.events import TabletEvent
-    from protocols.tablets.events import TabletEvent as Report
+    from camlab88.emulator.rainbow.host_input import tablet_event
+    from camlab88.protocols.rainbow.events import TabletEvent
+    from camlab88.protocols.tablets.events import TabletEvent as Report
 
     assert tablet_event(Report(1500, 900, True, 1, 2000)) == TabletEvent(0, 1500, 900, 1023, 1,
                                                                         True)
@@ -83,10 +83,10 @@ def test_bad_tablet_source_is_a_clear_error(capsys) -> None:
 
 
 def test_demo_menu_by_mouse() -> None:
-    from emulator.rainbow.session import in_process
-    from protocols.rainbow.demo import MENU_ITEMS, Demo
-    from protocols.rainbow.events import MIDDLE, MouseEvent
-    from protocols.rainbow.ui.menu import ROW_H
+    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.protocols.rainbow.demo import MENU_ITEMS, Demo
+    from camlab88.protocols.rainbow.events import MIDDLE, MouseEvent
+    from camlab88.protocols.rainbow.ui.menu import ROW_H
 
     s = in_process()
     demo = Demo(s.client)
@@ -119,7 +119,7 @@ def test_serve_command_runs_a_program_over_a_socket(tmp_path) -> None:
     import subprocess
     import sys
 
-    from protocols.rainbow import RainbowClient, SocketTransport
+    from camlab88.protocols.rainbow import RainbowClient, SocketTransport
 
     proc = subprocess.Popen(
         [sys.executable, "-m", "camlab88", "rainbow", "serve", "--headless", "--port", "0",
@@ -157,9 +157,9 @@ def test_run_record_then_replay_reproduces_the_frame(tmp_path, capsys) -> None:
 
 
 def test_host_input_becomes_rainbow_events() -> None:
-    from emulator.host_input import KeyDown, PointerButton, PointerMove, Quit
-    from emulator.rainbow.host_input import host_to_rainbow_event as convert
-    from protocols.rainbow.events import KeyEvent, MouseEvent
+    from camlab88.emulator.host_input import KeyDown, PointerButton, PointerMove, Quit
+    from camlab88.emulator.rainbow.host_input import host_to_rainbow_event as convert
+    from camlab88.protocols.rainbow.events import KeyEvent, MouseEvent
 
     held = [0]
     assert convert(PointerButton(3, 4, 2, True), held) == MouseEvent(0, 3, 4, 2, 2, True)

@@ -4,8 +4,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-
-from emulator.rainbow import GraphError, OutOfVideoMemory, Rainbow, RainbowError, VideoMemory
+from camlab88.emulator.rainbow import (
+    GraphError,
+    OutOfVideoMemory,
+    Rainbow,
+    RainbowError,
+    VideoMemory,
+)
 
 
 def test_strict_memory_is_64k_16bit_words_and_runs_out_clearly() -> None:

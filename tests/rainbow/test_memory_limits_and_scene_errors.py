@@ -9,12 +9,12 @@ import json
 
 import numpy as np
 import pytest
+from camlab88.emulator.rainbow import GraphError, OutOfVideoMemory, Rainbow, RainbowError
+from camlab88.emulator.rainbow.graph import MAX_COORD
+from camlab88.emulator.rainbow.reference import reference_frame
+from camlab88.emulator.rainbow.scene import SceneError, build_scene
 
 from camlab88.cli import main
-from emulator.rainbow import GraphError, OutOfVideoMemory, Rainbow, RainbowError
-from emulator.rainbow.graph import MAX_COORD
-from emulator.rainbow.reference import reference_frame
-from emulator.rainbow.scene import SceneError, build_scene
 
 
 # -- 1. virtual pads are limited by the coordinate range, not by video memory --------------
@@ -161,7 +161,7 @@ def test_virtual_pads_page_counts_in_a_tie() -> None:
 
 # -- 8. last_frame is one reused buffer; frame_copy() is a snapshot ------------------------
 def test_frame_copy_survives_later_frames() -> None:
-    from emulator.rainbow.session import in_process
+    from camlab88.emulator.rainbow.session import in_process
 
     s = in_process()
     c = s.client

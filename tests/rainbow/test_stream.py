@@ -7,16 +7,16 @@ import struct
 
 import numpy as np
 import pytest
+from camlab88.emulator.rainbow import Rainbow, VideoMemory
+from camlab88.emulator.rainbow.executor import Executor
+from camlab88.emulator.rainbow.session import in_process, replay_on
+from camlab88.protocols.rainbow import MouseEvent, RainbowClient, RainbowRefused, SocketTransport
+from camlab88.protocols.rainbow.events import KeyEvent, TabletEvent, decode_events, encode_event
+from camlab88.protocols.rainbow.recording import Recording
+from camlab88.protocols.rainbow.stream import OPS_LIST, Decoder, StreamError, encode
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from emulator.rainbow import Rainbow, VideoMemory
-from emulator.rainbow.executor import Executor
-from emulator.rainbow.session import in_process, replay_on
-from protocols.rainbow import MouseEvent, RainbowClient, RainbowRefused, SocketTransport
-from protocols.rainbow.events import KeyEvent, TabletEvent, decode_events, encode_event
-from protocols.rainbow.recording import Recording
-from protocols.rainbow.stream import OPS_LIST, Decoder, StreamError, encode
 from tests.support.rainbow_server import serving
 
 
@@ -190,7 +190,7 @@ def test_socket_garbage_gets_a_reason_then_the_next_client_is_served() -> None:
             data = b""
             while chunk := raw.recv(4096):
                 data += chunk
-        from protocols.rainbow.stream import split_reply
+        from camlab88.protocols.rainbow.stream import split_reply
 
         status, _, rest = split_reply(data)
         assert status == 0

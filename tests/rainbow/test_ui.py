@@ -4,11 +4,10 @@ pop-up menu, a cross-shaped menu, message areas and the four-times-mapped pannin
 from __future__ import annotations
 
 import numpy as np
-
-from emulator.rainbow.session import in_process
-from protocols.rainbow import SCREEN
-from protocols.rainbow.ui import CrossMenu, DoubleBuffer, MessageArea, PopupMenu, SuperPad
-from protocols.rainbow.ui.menu import ROW_H
+from camlab88.emulator.rainbow.session import in_process
+from camlab88.protocols.rainbow import SCREEN
+from camlab88.protocols.rainbow.ui import CrossMenu, DoubleBuffer, MessageArea, PopupMenu, SuperPad
+from camlab88.protocols.rainbow.ui.menu import ROW_H
 
 
 def _rgb(hexs: str) -> list[int]:

@@ -11,17 +11,16 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-
-from apps.ca.log import LogError, read_log_settings
-from apps.ca.patterns import PatternError, read_pattern
-from apps.ca.rules import RuleError, load_rules
-from apps.kas.files import KasFileError, load_keyframe
-from apps.snooker import checkpoint
-from apps.snooker.session import Session, SessionError
-from emulator.rainbow.scene import SceneError, load_scene
-from protocols.link.recording import RecordingError, read_recording
-from protocols.rainbow.recording import Recording
-from protocols.rainbow.recording import RecordingError as RainbowRecordingError
+from camlab88.apps.ca.log import LogError, read_log_settings
+from camlab88.apps.ca.patterns import PatternError, read_pattern
+from camlab88.apps.ca.rules import RuleError, load_rules
+from camlab88.apps.kas.files import KasFileError, load_keyframe
+from camlab88.apps.snooker import checkpoint
+from camlab88.apps.snooker.session import Session, SessionError
+from camlab88.emulator.rainbow.scene import SceneError, load_scene
+from camlab88.protocols.link.recording import RecordingError, read_recording
+from camlab88.protocols.rainbow.recording import Recording
+from camlab88.protocols.rainbow.recording import RecordingError as RainbowRecordingError
 
 DATA = Path(__file__).parents[1] / "data"
 LINK_OK = "camlab88-link-recording 1\nline 9600 8N1\nxonxoff on\n{t} > 2b2d2a2f48\nend 1\n"
@@ -124,7 +123,7 @@ def test_ca_log_seed_of_20_digits(tmp_path) -> None:
 
 # -- work bounded by what the input can ask for ------------------------------------------
 def test_a_render_of_a_recording_ending_at_10_to_the_8_s_is_refused() -> None:
-    from protocols.link.sniff import frame_count
+    from camlab88.protocols.link.sniff import frame_count
 
     with pytest.raises(ValueError, match="2500000001 frames, more than 100000"):
         frame_count(Fraction(10**8), 25, name="r.rec")
@@ -152,21 +151,21 @@ def test_a_4000_square_rle_and_a_3000_square_cells_load(tmp_path) -> None:
 
 # -- a damaged link recording is not drawn as raw Sigma bytes ----------------------------
 def test_a_recording_with_a_bom(tmp_path) -> None:
-    from protocols.link.sniff import read_link_input
+    from camlab88.protocols.link.sniff import read_link_input
 
     p = _write(tmp_path, "r.rec", b"\xef\xbb\xbf" + LINK_OK.format(t="0.1").encode())
     assert "byte-order mark" in _raises(RecordingError, p, read_link_input, ":1:1:")
 
 
 def test_a_recording_with_a_damaged_first_line(tmp_path) -> None:
-    from protocols.link.sniff import read_link_input
+    from camlab88.protocols.link.sniff import read_link_input
 
     p = _write(tmp_path, "r.rec", LINK_OK.format(t="0.1").replace("recording", "recordin"))
     assert "first line is damaged" in _raises(RecordingError, p, read_link_input, ":1:")
 
 
 def test_raw_sigma_bytes_are_still_raw(tmp_path) -> None:
-    from protocols.link.sniff import read_link_input
+    from camlab88.protocols.link.sniff import read_link_input
 
     p = _write(tmp_path, "s.sig", b"+-*/BH\r\nAA100200\r\n")
     assert read_link_input(p) == b"+-*/BH\r\nAA100200\r\n"
@@ -190,7 +189,7 @@ def test_a_pattern_wider_than_the_plane(tmp_path) -> None:
 def test_an_error_quoting_a_1_mb_line_is_short(tmp_path) -> None:
     p = _write(tmp_path, "l.log", "CAMLAB88-CA-LOG 1\n" + "x" * 1_000_000 + "\n")
     assert "1000000 characters" in _raises(LogError, p, lambda q: __import__(
-        "apps.ca.log", fromlist=["read_log"]).read_log(q), ":2:")
+        "camlab88.apps.ca.log", fromlist=["read_log"]).read_log(q), ":2:")
 
 
 def test_snooker_session_errors_are_not_python_exception_text(tmp_path) -> None:
@@ -205,7 +204,7 @@ def test_snooker_session_errors_are_not_python_exception_text(tmp_path) -> None:
 def test_potted_balls_stay_in_the_16_bit_packing() -> None:
     """Potted balls are parked inside 0..65535 (never at negative coordinates), still off
     the playing area (§6.2.2)."""
-    from apps.snooker.table import Table
+    from camlab88.apps.snooker.table import Table
 
     table = Table()
     pos = np.full((22, 2), 0.5)

@@ -10,11 +10,11 @@ import socket
 from pathlib import Path
 
 import pytest
+from camlab88.protocols.session import read, write
 
 from camlab88 import cli
 from camlab88.cli import main
 from camlab88.replay_policy import PROGRAMS, ReplayRefused, checked_argv
-from protocols.session import read, write
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "sessions"
 

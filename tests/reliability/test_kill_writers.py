@@ -19,8 +19,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-
-from base.atomicfile import sweep_stale, write_atomic
+from camlab88.base.atomicfile import sweep_stale, write_atomic
 
 ROOT = Path(__file__).resolve().parents[2]
 SEED = 2027
@@ -30,13 +29,13 @@ SIZE = 1 << 20  # each new version: 1 MiB, so a kill often lands mid-write
 
 _CHILD = {
     "write_atomic": """
-from base.atomicfile import write_atomic
+from camlab88.base.atomicfile import write_atomic
 print("ready", flush=True)
 for k in range(10**6):
     write_atomic(TARGET, (b"%08d" % k) * (SIZE // 8))
 """,
     "batch": """
-from base.atomicfile import AtomicBatch
+from camlab88.base.atomicfile import AtomicBatch
 print("ready", flush=True)
 for k in range(10**6):
     with AtomicBatch() as batch:
@@ -45,8 +44,8 @@ for k in range(10**6):
 """,
     "line recorder": """
 from fractions import Fraction
-from protocols.link import LineSettings
-from protocols.link.recording import Recorder
+from camlab88.protocols.link import LineSettings
+from camlab88.protocols.link.recording import Recorder
 print("ready", flush=True)
 for k in range(10**6):
     r = Recorder(TARGET, LineSettings(baud=9600))
@@ -63,7 +62,7 @@ def _version(data: bytes, size: int) -> bool:
 
 
 def _line_recording(data: bytes) -> bool:
-    from protocols.link.recording import parse_recording
+    from camlab88.protocols.link.recording import parse_recording
 
     parse_recording(data.decode("ascii"))  # raises on a torn file
     return data.endswith(b"end 500\n")
@@ -123,7 +122,7 @@ def test_ca_run_png_killed_at_random_leaves_the_old_picture_or_the_new_one(
         proc.wait(timeout=30)
         data = png.read_bytes()
         if data != OLD:
-            from apps.snooker.film.pngcheck import png_size
+            from camlab88.apps.snooker.film.pngcheck import png_size
 
             assert png_size(data) is not None, "a torn PNG"
         seen.add(data == OLD)

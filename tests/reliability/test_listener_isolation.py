@@ -10,9 +10,10 @@ from __future__ import annotations
 import socket
 from fractions import Fraction
 
-from emulator.harness.sigma_line import SigmaLineTarget
-from emulator.machine import SigmaMachine
-from protocols.link.transports import TcpBridge
+from camlab88.emulator.harness.sigma_line import SigmaLineTarget
+from camlab88.emulator.machine import SigmaMachine
+from camlab88.protocols.link.transports import TcpBridge
+
 from tests.support.listeners import EchoLine, drain
 
 A_BYTES = bytes(range(0x41, 0x5B)) * 1200  # 31,200 bytes of A-Z: 32 s of line time

@@ -9,11 +9,12 @@ import socket
 import time
 from fractions import Fraction
 
-from emulator.harness.sigma_line import SigmaLineTarget
-from emulator.machine import SigmaMachine
-from protocols.link import LineSettings, SerialLine
-from protocols.link.transports import TcpBridge
-from protocols.rainbow.stream import encode
+from camlab88.emulator.harness.sigma_line import SigmaLineTarget
+from camlab88.emulator.machine import SigmaMachine
+from camlab88.protocols.link import LineSettings, SerialLine
+from camlab88.protocols.link.transports import TcpBridge
+from camlab88.protocols.rainbow.stream import encode
+
 from tests.support.listeners import port_of, start, stop
 from tests.support.rainbow_server import serving
 
@@ -51,7 +52,7 @@ def test_a_rainbow_frame_sent_a_byte_at_a_time_times_out_by_its_age() -> None:
 
 
 def test_each_rainbow_client_gets_a_fresh_pad_library_session() -> None:
-    from protocols.rainbow import RainbowClient, SocketTransport
+    from camlab88.protocols.rainbow import RainbowClient, SocketTransport
 
     proc, first = start(["rainbow", "serve", "--headless", "--port", "0", "--connections",
                          "2"])

@@ -6,16 +6,15 @@ from __future__ import annotations
 import re
 
 import pytest
-
-from apps.ca.library import rules_path
-from apps.ca.log import latest_checkpoint
-from apps.ca.patterns import PatternError, parse_rle
-from apps.ca.rules import RuleError, parse_rules
-from apps.kas import files
-from apps.kas.files import KasFileError
-from apps.kas.model import Chain, Drawing
-from apps.snooker.table import ball_index
-from protocols.link.recording import RecordingError, parse_recording
+from camlab88.apps.ca.library import rules_path
+from camlab88.apps.ca.log import latest_checkpoint
+from camlab88.apps.ca.patterns import PatternError, parse_rle
+from camlab88.apps.ca.rules import RuleError, parse_rules
+from camlab88.apps.kas import files
+from camlab88.apps.kas.files import KasFileError
+from camlab88.apps.kas.model import Chain, Drawing
+from camlab88.apps.snooker.table import ball_index
+from camlab88.protocols.link.recording import RecordingError, parse_recording
 
 
 def test_link_recording_end_count() -> None:

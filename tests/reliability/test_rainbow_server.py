@@ -8,9 +8,10 @@ import socket
 import struct
 import threading
 
-from emulator.rainbow.server import BUSY, ServerStats
-from protocols.rainbow import RainbowClient, SocketTransport
-from protocols.rainbow.stream import HEADER, REFUSED, encode
+from camlab88.emulator.rainbow.server import BUSY, ServerStats
+from camlab88.protocols.rainbow import RainbowClient, SocketTransport
+from camlab88.protocols.rainbow.stream import HEADER, REFUSED, encode
+
 from tests.support.rainbow_server import serving
 
 

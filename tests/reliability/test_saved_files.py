@@ -8,8 +8,7 @@ import subprocess
 import sys
 
 import pytest
-
-from base.atomicfile import AtomicBatch, atomic_path, write_atomic
+from camlab88.base.atomicfile import AtomicBatch, atomic_path, write_atomic
 
 
 def _dead_pid() -> int:
@@ -53,9 +52,9 @@ def test_a_failed_batch_leaves_every_old_file(tmp_path) -> None:
 
 
 def test_a_png_sequence_export_replaces_the_whole_old_sequence(tmp_path) -> None:
-    from apps.kas import files
-    from apps.kas.export import export
-    from apps.kas.model import AnimSequence
+    from camlab88.apps.kas import files
+    from camlab88.apps.kas.export import export
+    from camlab88.apps.kas.model import AnimSequence
 
     lib = os.path.join(os.path.dirname(files.__file__), "library")
     a = files.load_keyframe(os.path.join(lib, "walk_a.kas"))

@@ -5,10 +5,9 @@ from __future__ import annotations
 
 import pytest
 import serial
-
-from protocols.tablets import serial_source
-from protocols.tablets.hid_descriptor import HidDescriptorError, parse_descriptor
-from protocols.tablets.sources import SourceLost, parse_source
+from camlab88.protocols.tablets import serial_source
+from camlab88.protocols.tablets.hid_descriptor import HidDescriptorError, parse_descriptor
+from camlab88.protocols.tablets.sources import SourceLost, parse_source
 
 # Usage Page (Digitizer), Usage (Pen), Collection (Application), Usage (Tip Pressure),
 # Report Size 8, Report Count 0x7fffffff, Input (Data, Var, Abs), End Collection

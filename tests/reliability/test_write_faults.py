@@ -69,8 +69,8 @@ def test_a_write_fault_is_one_line_naming_the_users_path(tmp_path: Path, capsys,
 
 
 def test_a_failed_headless_save_exits_non_zero_saying_why(tmp_path: Path, capsys) -> None:
-    from apps.kas import files
-    from apps.kas.editor import Editor
+    from camlab88.apps.kas import files
+    from camlab88.apps.kas.editor import Editor
 
     files.save_keyframe(tmp_path / "k.kas", Editor(None, None, 1).drawing)
     old = (tmp_path / "k.kas").read_bytes()
@@ -84,13 +84,13 @@ def test_a_failed_headless_save_exits_non_zero_saying_why(tmp_path: Path, capsys
 
 def test_a_write_failing_at_the_end_of_a_run_is_one_line(tmp_path: Path, capsys,
                                                          monkeypatch) -> None:
-    import protocols.session.format as session_format
+    import camlab88.protocols.session.format as session_format
 
     def full(path, rec) -> None:
         raise OSError(errno.ENOSPC, "No space left on device", str(path))
 
     monkeypatch.setattr(session_format, "write", full)
-    monkeypatch.setattr("emulator.harness.session_record.write", full)
+    monkeypatch.setattr("camlab88.emulator.harness.session_record.write", full)
     rec = tmp_path / "r.session"
     code, err = _run(["sigma", "run", "--headless", "--seconds", "0.2", "--record", str(rec)],
                      capsys)

@@ -17,7 +17,7 @@ from pathlib import Path
 
 import pytest
 
-from base.atomicfile import AtomicBatch, atomic_path, sweep_stale, write_atomic
+from camlab88.base.atomicfile import AtomicBatch, atomic_path, sweep_stale, write_atomic
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -90,8 +90,8 @@ def test_a_missing_directory_is_reported_naming_the_users_path(tmp_path: Path) -
 def test_a_killed_line_recorder_leaves_a_temporary_the_sweep_removes(tmp_path: Path) -> None:
     path = tmp_path / "line.rec"
     code = ("import os, signal\n"
-            "from protocols.link import LineSettings\n"
-            "from protocols.link.recording import Recorder\n"
+            "from camlab88.protocols.link import LineSettings\n"
+            "from camlab88.protocols.link.recording import Recorder\n"
             f"r = Recorder({str(path)!r}, LineSettings(baud=9600))\n"
             "r.record(1, '>', b'abc')\n"
             "os.kill(os.getpid(), signal.SIGKILL)\n")

@@ -8,9 +8,9 @@ import re
 from pathlib import Path
 
 import pytest
+from camlab88.protocols.session import read
 
 from camlab88.cli import main
-from protocols.session import read
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "sessions"
 SHIPPED = sorted(p.name for p in DATA.glob("*.session"))
@@ -31,7 +31,7 @@ def test_shipped_recording_replays_with_check(name: str, capsys) -> None:
 
 def test_a_changed_program_fails_naming_the_first_differing_frame(monkeypatch,
                                                                    capsys) -> None:
-    from apps.ca.program.program import CAProgram
+    from camlab88.apps.ca.program.program import CAProgram
 
     idle = CAProgram._idle
     calls = [0]
@@ -52,8 +52,8 @@ def test_a_changed_program_fails_naming_the_first_differing_frame(monkeypatch,
 
 def test_window_input_is_recorded_and_replayed(tmp_path: Path, monkeypatch,
                                                capsys) -> None:
-    from emulator.host_input import PointerButton, PointerMove, Quit
-    from emulator.window import Window
+    from camlab88.emulator.host_input import PointerButton, PointerMove, Quit
+    from camlab88.emulator.window import Window
 
     script = {5: [PointerMove(300, 300, frozenset())],
               8: [PointerButton(300, 300, 2, True)],

@@ -5,9 +5,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-
-from emulator.sigma import Terminal
-from protocols.sigma import Encoder
+from camlab88.emulator.sigma import Terminal
+from camlab88.protocols.sigma import Encoder
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "sigma"
 FLAG = b"+-*/"

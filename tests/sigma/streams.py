@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 
-from protocols.sigma.drivers import PgplotGoc, RalGks
+from camlab88.protocols.sigma.drivers import PgplotGoc, RalGks
 
 
 def pgplot_session() -> tuple[bytes, bytes, bytes]:

@@ -9,14 +9,14 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from camlab88.emulator.sigma import Terminal
+from camlab88.protocols.link import LineSettings, SerialLine, VirtualClock
+from camlab88.protocols.link.recording import Recorder, read_recording
+from camlab88.protocols.link.replay import ReplayEndpoint
+from camlab88.protocols.sigma import Encoder
 from PIL import Image
 
 from camlab88.cli import main
-from emulator.sigma import Terminal
-from protocols.link import LineSettings, SerialLine, VirtualClock
-from protocols.link.recording import Recorder, read_recording
-from protocols.link.replay import ReplayEndpoint
-from protocols.sigma import Encoder
 from tests.sigma.streams import gks_plot, pgplot_plot
 
 
@@ -131,7 +131,7 @@ def test_pty_end_to_end_with_pyserial(tmp_path: Path) -> None:
 
 
 def test_demo_headless_writes_frames_and_gif(tmp_path: Path) -> None:
-    from protocols.sigma.demo import sigma_demo_stream
+    from camlab88.protocols.sigma.demo import sigma_demo_stream
 
     stream = sigma_demo_stream()
     t = Terminal("t5684")

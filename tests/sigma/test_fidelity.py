@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from protocols.sigma import ORDERS
+from camlab88.protocols.sigma import ORDERS
 
 LEDGER = Path(__file__).resolve().parents[2] / "docs" / "fidelity" / "sigma.md"
 

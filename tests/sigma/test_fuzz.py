@@ -3,11 +3,11 @@
 from __future__ import annotations
 
 import numpy as np
+from camlab88.emulator.sigma import Terminal
+from camlab88.protocols.sigma import Decoder
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from emulator.sigma import Terminal
-from protocols.sigma import Decoder
 from tests.sigma.streams import gks_plot, pgplot_plot
 
 PGPLOT = pgplot_plot()
@@ -89,7 +89,7 @@ def test_split_anywhere_gives_the_same_picture(base: bytes, cuts: list[int]) -> 
 @given(st.lists(st.sampled_from(list(range(0x18, 0x80)) + [0x1F, 0x1B, 0x0D, 0x00, 0xC1]),
                 max_size=400).map(bytes))
 def test_compiled_ags_scanner_matches_the_protocol_definition(body: bytes) -> None:
-    from emulator.sigma.fast import scan_points_fast
+    from camlab88.emulator.sigma.fast import scan_points_fast
 
     data = b"+-*/JH" + body
     plain, fast = Decoder(), Decoder(ags_scanner=scan_points_fast)

@@ -1,11 +1,10 @@
-"""protocols.sigma: the one order table drives encoder and decoder; framing and formats."""
+"""camlab88.protocols.sigma: the one order table drives encoder and decoder; framing and formats."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
-
-from protocols.sigma import (
+from camlab88.protocols.sigma import (
     ORDERS,
     AgsEnd,
     AgsEscape,
@@ -22,8 +21,8 @@ from protocols.sigma import (
     format_report,
     parse_report,
 )
-from protocols.sigma.abbreviated import AgsPointEncoder, encode_points
-from protocols.sigma.orders import Kind
+from camlab88.protocols.sigma.abbreviated import AgsPointEncoder, encode_points
+from camlab88.protocols.sigma.orders import Kind
 
 
 def _sample_args(spec) -> tuple[int, ...]:
@@ -177,7 +176,7 @@ def test_field_kinds_are_dec_or_hex() -> None:
 
 
 def test_a_full_colour_opening_leaves_a_t5688_with_all_planes_and_the_given_lut() -> None:
-    from emulator.sigma import Terminal
+    from camlab88.emulator.sigma import Terminal
 
     e = Encoder(high_res=True)
     lut = [(1, 2, 3), (250, 128, 7), (0, 255, 64)]

@@ -5,10 +5,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-
-from roms.sigma import load_font, load_lut
-from roms.sigma.chargen import RomError, parse_font
-from roms.sigma.lut import parse_lut
+from camlab88.roms.sigma import load_font, load_lut
+from camlab88.roms.sigma.chargen import RomError, parse_font
+from camlab88.roms.sigma.lut import parse_lut
 
 
 def test_font_has_every_printable_ascii_glyph() -> None:

@@ -3,9 +3,8 @@
 from __future__ import annotations
 
 import numpy as np
-
-from apps.snooker.state import BallState
-from apps.snooker.table import N_BALLS, Table
+from camlab88.apps.snooker.state import BallState
+from camlab88.apps.snooker.table import N_BALLS, Table
 
 
 def state_with(table: Table, balls: dict[int, tuple[float, float]],

@@ -5,10 +5,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-
-from apps.snooker.events import Event, EventKind
-from apps.snooker.layout import opening_state
-from apps.snooker.rules import (
+from camlab88.apps.snooker.events import Event, EventKind
+from camlab88.apps.snooker.layout import opening_state
+from camlab88.apps.snooker.rules import (
     ON_COLOUR,
     ON_RED,
     GameState,
@@ -20,8 +19,8 @@ from apps.snooker.rules import (
     record,
     spot_position,
 )
-from apps.snooker.session import Session
-from apps.snooker.table import (
+from camlab88.apps.snooker.session import Session
+from camlab88.apps.snooker.table import (
     BLACK,
     BLUE,
     BROWN,
@@ -34,6 +33,7 @@ from apps.snooker.table import (
     YELLOW,
     Table,
 )
+
 from tests.snooker.helpers import state_with
 
 T = Table()

@@ -6,12 +6,11 @@ from __future__ import annotations
 import json
 
 import pytest
-
-from apps.snooker.events import EventKind
-from apps.snooker.layout import break_off_direction
-from apps.snooker.session import Session, SessionError
-from apps.snooker.table import CUE, Table
-from apps.snooker.timeline import Cursor
+from camlab88.apps.snooker.events import EventKind
+from camlab88.apps.snooker.layout import break_off_direction
+from camlab88.apps.snooker.session import Session, SessionError
+from camlab88.apps.snooker.table import CUE, Table
+from camlab88.apps.snooker.timeline import Cursor
 
 T = Table()
 
@@ -140,7 +139,7 @@ def test_speeds_over_the_table_limit_are_refused() -> None:
     s = Session.new_game(T)
     with pytest.raises(SessionError, match="max_speed_m_s"):
         s.set_velocity(CUE, 40.0, 0.0)
-    from apps.snooker.aiming import AimError
+    from camlab88.apps.snooker.aiming import AimError
 
     slow = Session.new_game(T.with_changes(max_speed_m_s=0.5))
     with pytest.raises(AimError, match="max_speed_m_s"):

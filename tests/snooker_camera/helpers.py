@@ -3,9 +3,8 @@
 from __future__ import annotations
 
 import numpy as np
-
-from apps.snooker.camera.motion import Motion
-from apps.snooker.table import Table
+from camlab88.apps.snooker.camera.motion import Motion
+from camlab88.apps.snooker.table import Table
 
 T = Table()
 R = T.radius

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from apps.snooker.visualiser.demo import example_shot as make
+from camlab88.apps.snooker.visualiser.demo import example_shot as make
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_camera"
 CHECKPOINT = DATA / "pink_shot.checkpoint"

@@ -7,9 +7,9 @@ import shutil
 from pathlib import Path
 
 import numpy as np
+from camlab88.apps.snooker.camera.views import read_views
 from PIL import Image
 
-from apps.snooker.camera.views import read_views
 from camlab88.cli import main
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_camera"
@@ -81,10 +81,11 @@ def test_a_recorded_session_replays_the_script_saved_from_outside(tmp_path: Path
                                                                   monkeypatch) -> None:
     import argparse
 
-    from apps.snooker.camera import motion
+    from camlab88.apps.snooker.camera import motion
+    from camlab88.emulator.harness.loop import Plugin
+
     from camlab88.commands.snooker import camera as command
     from camlab88.runopts import run_options
-    from emulator.harness.loop import Plugin
 
     monkeypatch.chdir(tmp_path)
     shutil.copy(DATA / "thesis_example.ccl", "cam.ccl")

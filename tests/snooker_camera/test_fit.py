@@ -7,10 +7,10 @@ from __future__ import annotations
 import shutil
 from pathlib import Path
 
-from apps.snooker.camera import motion
-from apps.snooker.camera_tool import fit, layout
-from apps.snooker.camera_tool.tool import CameraTool
-from emulator.rainbow.session import in_process
+from camlab88.apps.snooker.camera import motion
+from camlab88.apps.snooker.camera_tool import fit, layout
+from camlab88.apps.snooker.camera_tool.tool import CameraTool
+from camlab88.emulator.rainbow.session import in_process
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_camera"
 

@@ -6,8 +6,7 @@ import math
 
 import numpy as np
 import pytest
-
-from apps.snooker.camera.projection import (
+from camlab88.apps.snooker.camera.projection import (
     Camera,
     CameraError,
     camera_basis,

@@ -3,10 +3,9 @@
 from __future__ import annotations
 
 import numpy as np
-
-from apps.snooker.camera import space
-from apps.snooker.checkpoint import Checkpoint
-from apps.snooker.table import FOOT_M, INCH_M, Table
+from camlab88.apps.snooker.camera import space
+from camlab88.apps.snooker.checkpoint import Checkpoint
+from camlab88.apps.snooker.table import FOOT_M, INCH_M, Table
 
 
 def test_checkpoint_units_to_default_space() -> None:

@@ -8,9 +8,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from camlab88.apps.snooker.camera import ccl, motion
+from camlab88.apps.snooker.checkpoint import read
 
-from apps.snooker.camera import ccl, motion
-from apps.snooker.checkpoint import read
 from tests.snooker_camera import pink_shot
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_camera"
@@ -89,7 +89,7 @@ def _angle_deg(a: np.ndarray, b: np.ndarray) -> float:
     verdict="agrees (CCL's +x runs towards the baulk cushion, decided by this command: "
             "docs/fidelity/snooker.md)")
 def test_last_command_keeps_the_pink_in_frame_from_behind(result: ccl.Interpretation) -> None:
-    from apps.snooker.camera.projection import Camera, project
+    from camlab88.apps.snooker.camera.projection import Camera, project
 
     m = motion.load(DATA / "pink_shot.checkpoint")
     pocket = result.viewpoint[70]
@@ -107,7 +107,7 @@ def test_last_command_keeps_the_pink_in_frame_from_behind(result: ccl.Interpreta
 
 def test_pictures_are_not_mirrored() -> None:
     """Seen from the baulk end (camera 1) the left centre pocket is on the left."""
-    from apps.snooker.camera.projection import Camera, project
+    from camlab88.apps.snooker.camera.projection import Camera, project
 
     text = ": observer at camera 1; viewpoint at (0,0,0) :"
     r = ccl.compile_script(text, motion.load(DATA / "pink_shot.checkpoint"))
@@ -130,8 +130,8 @@ def test_periods_and_the_session_file_give_the_same(result: ccl.Interpretation) 
              "shows its 75 frames in order",
     verdict="agrees")
 def test_the_demo_plays_the_example_as_printed() -> None:
-    from apps.snooker.visualiser.demo import EXAMPLE_SCRIPT, play_example
-    from emulator.rainbow.session import in_process
+    from camlab88.apps.snooker.visualiser.demo import EXAMPLE_SCRIPT, play_example
+    from camlab88.emulator.rainbow.session import in_process
 
     assert EXAMPLE_SCRIPT == (DATA / "thesis_example.ccl").read_text()
     rb = in_process()

@@ -5,10 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
-from apps.snooker.camera.views import (
+from camlab88.apps.snooker.camera.views import (
     View,
     ViewFileError,
     parse_views,
@@ -16,6 +13,9 @@ from apps.snooker.camera.views import (
     views_text,
     write_views,
 )
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from tests.support.refusals import refusal_of
 
 

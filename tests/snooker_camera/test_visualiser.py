@@ -9,13 +9,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from camlab88.apps.snooker.camera import ccl, motion
+from camlab88.apps.snooker.camera.views import View
+from camlab88.apps.snooker.visualiser import display as vdisplay
+from camlab88.apps.snooker.visualiser.program import FILM_TOP, MASK, ViewsError, Visualiser
+from camlab88.emulator.rainbow.session import in_process
+from camlab88.protocols.rainbow.client import parse_colour
 
-from apps.snooker.camera import ccl, motion
-from apps.snooker.camera.views import View
-from apps.snooker.visualiser import display as vdisplay
-from apps.snooker.visualiser.program import FILM_TOP, MASK, ViewsError, Visualiser
-from emulator.rainbow.session import in_process
-from protocols.rainbow.client import parse_colour
 from tests.snooker_camera.helpers import R, make, still
 from tests.support.golden import assert_matches_golden
 
@@ -187,7 +187,7 @@ def test_clipped_at_the_observer_nothing_behind_it_drawn() -> None:
              "absent",
     verdict="agrees")
 def test_visualiser_shows_exactly_the_film_frame() -> None:
-    from apps.snooker.render.pinhole import Pinhole
+    from camlab88.apps.snooker.render.pinhole import Pinhole
 
     c = still(1)
     c[0, :] = (9.0, 9.0, R)

@@ -5,11 +5,11 @@ from __future__ import annotations
 import socket
 from pathlib import Path
 
-from apps.snooker.camera import ccl, motion
-from apps.snooker.camera.views import View
-from apps.snooker.film.schedule import frame_file
-from apps.snooker.film.task import FrameTask
-from apps.snooker.render.scene import Scene, load_scene
+from camlab88.apps.snooker.camera import ccl, motion
+from camlab88.apps.snooker.camera.views import View
+from camlab88.apps.snooker.film.schedule import frame_file
+from camlab88.apps.snooker.film.task import FrameTask
+from camlab88.apps.snooker.render.scene import Scene, load_scene
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_film"
 BREAK = DATA / "break.checkpoint"

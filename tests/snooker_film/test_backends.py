@@ -12,10 +12,10 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
+from camlab88.apps.snooker.film.backends import DaskCluster, LocalPool
+from camlab88.apps.snooker.film.schedule import render_film
+from camlab88.apps.snooker.film.task import scene_digest
 
-from apps.snooker.film.backends import DaskCluster, LocalPool
-from apps.snooker.film.schedule import render_film
-from apps.snooker.film.task import scene_digest
 from tests.snooker_film.helpers import break_scene, frame_bytes, free_port, small_tasks
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -64,7 +64,7 @@ def test_local_pool_survives_a_killed_worker(tmp_path: Path) -> None:
 
 
 def _in_process(tasks: list, out: Path) -> dict[int, bytes]:
-    from apps.snooker.film.backends import InProcess
+    from camlab88.apps.snooker.film.backends import InProcess
 
     scene = break_scene()
     render_film(tasks, out, InProcess(scene), scene_digest(scene))
@@ -129,8 +129,8 @@ def test_real_cluster_matches_and_loses_no_frame_to_a_killed_worker(
 def test_film_frames_are_the_renderers_frames(reference: dict[int, bytes],
                                               tmp_path: Path) -> None:
     """The same bytes `snooker render --mode truecolour` writes (render_frame + write_png)."""
-    from apps.snooker.render.truecolour import RenderOptions, render_frame
-    from base.png import write_png
+    from camlab88.apps.snooker.render.truecolour import RenderOptions, render_frame
+    from camlab88.base.png import write_png
 
     t = small_tasks()[3]
     write_png(render_frame(break_scene(), t.view, RenderOptions(t.width, t.height)),

@@ -7,7 +7,7 @@ from __future__ import annotations
 import socket
 import warnings
 
-from apps.snooker.film.backends import DaskCluster
+from camlab88.apps.snooker.film.backends import DaskCluster
 
 
 def test_a_local_cluster_does_not_need_port_8787() -> None:

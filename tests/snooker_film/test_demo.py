@@ -4,8 +4,7 @@ rendered frames — deterministic, and the balls move."""
 from __future__ import annotations
 
 import numpy as np
-
-from apps.snooker.film.demo import film_frames
+from camlab88.apps.snooker.film.demo import film_frames
 
 
 def test_the_demo_act_films_a_break() -> None:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import io
 
-from apps.snooker.film.progress import ProgressBar, progress_bar
+from camlab88.apps.snooker.film.progress import ProgressBar, progress_bar
 
 
 def test_the_bar_shows_done_rate_and_time_left() -> None:

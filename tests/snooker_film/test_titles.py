@@ -6,10 +6,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-
-from apps.snooker.film.letterballs import INK, render_title
-from apps.snooker.film.titles import WORD, slots, title_scene, title_session
-from apps.snooker.render.gamma import encode
+from camlab88.apps.snooker.film.letterballs import INK, render_title
+from camlab88.apps.snooker.film.titles import WORD, slots, title_scene, title_session
+from camlab88.apps.snooker.render.gamma import encode
 
 
 @pytest.fixture(scope="module")
@@ -54,7 +53,7 @@ def test_the_word_is_spelt_and_the_table_is_invisible(title: tuple) -> None:
 
 
 def _project(scene, view, w, h):
-    from apps.snooker.render.pinhole import Pinhole
+    from camlab88.apps.snooker.render.pinhole import Pinhole
 
     pin = Pinhole.of(np.asarray(view.observer), np.asarray(view.viewpoint), view.focal_mm,
                      w, h)

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from apps.snooker.program import script_events
-from apps.snooker.program.program import Program
-from apps.snooker.session import Session
-from apps.snooker.table import CUE
+from camlab88.apps.snooker.program import script_events
+from camlab88.apps.snooker.program.program import Program
+from camlab88.apps.snooker.session import Session
+from camlab88.apps.snooker.table import CUE
 
 
 def feed(rb, program: Program, text: str) -> None:

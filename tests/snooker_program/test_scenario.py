@@ -9,17 +9,17 @@ import math
 
 import numpy as np
 import pytest
+from camlab88.apps.snooker.program import menus, script_events
+from camlab88.apps.snooker.program.program import Program
+from camlab88.apps.snooker.table import CUE
 
-from apps.snooker.program import menus, script_events
-from apps.snooker.program.program import Program
-from apps.snooker.table import CUE
 from tests.snooker_program.conftest import DATA
 from tests.support.golden import assert_matches_golden
 
 
 @pytest.fixture(scope="module")
 def run():
-    from emulator.rainbow.session import in_process
+    from camlab88.emulator.rainbow.session import in_process
 
     rb = in_process()
     program = Program(rb.client)

@@ -6,12 +6,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from camlab88.apps.snooker.events import EventKind
+from camlab88.apps.snooker.program import constants
+from camlab88.apps.snooker.program.program import Program
+from camlab88.apps.snooker.session import Session, SessionError
+from camlab88.apps.snooker.table import CUE, Table
 
-from apps.snooker.events import EventKind
-from apps.snooker.program import constants
-from apps.snooker.program.program import Program
-from apps.snooker.session import Session, SessionError
-from apps.snooker.table import CUE, Table
 from tests.snooker_program.conftest import DATA
 from tests.snooker_program.helpers import feed, hex_rgb, screen_colour
 from tests.support.golden import assert_matches_golden
@@ -32,7 +32,7 @@ EXIT = "move 300 430\nwait 1\npress middle\nglide 300 412 6\nwait 1\nrelease mid
 
 @pytest.fixture(scope="module")
 def played(tmp_path_factory):
-    from emulator.rainbow.session import in_process
+    from camlab88.emulator.rainbow.session import in_process
 
     rb = in_process()
     save = tmp_path_factory.mktemp("tc") / "game.json"

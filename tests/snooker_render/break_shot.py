@@ -8,8 +8,8 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-from apps.snooker.session import Session
-from apps.snooker.table import CUE
+from camlab88.apps.snooker.session import Session
+from camlab88.apps.snooker.table import CUE
 
 OUT = Path(__file__).resolve().parents[1] / "data" / "snooker_render" / "break.checkpoint"
 FRAMES = 40
@@ -27,7 +27,7 @@ def make() -> str:
 
 
 if __name__ == "__main__":
-    from base.atomicfile import write_atomic
+    from camlab88.base.atomicfile import write_atomic
 
     write_atomic(OUT, make(), encoding="ascii")
     print(f"wrote {OUT}")

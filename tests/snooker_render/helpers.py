@@ -5,9 +5,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-
-from apps.snooker.camera.views import View, read_views
-from apps.snooker.render.scene import Scene, load_scene
+from camlab88.apps.snooker.camera.views import View, read_views
+from camlab88.apps.snooker.render.scene import Scene, load_scene
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_render"
 BREAK = DATA / "break.checkpoint"

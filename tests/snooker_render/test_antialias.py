@@ -5,8 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-
-from apps.snooker.render import kernels as K
+from camlab88.apps.snooker.render import kernels as K
 
 SUB = 64  # supersamples per pixel side for the exact reference
 
@@ -21,8 +20,8 @@ def _exact(inside, h: int, w: int) -> np.ndarray:
 
 def _disc_coverage(cx: float, cy: float, r: float, size: int) -> np.ndarray:
     """The ball kernel's coverage: draw a white ball over black and over white."""
-    from apps.snooker.render.balls import ball_params
-    from apps.snooker.render.lights import Lights
+    from camlab88.apps.snooker.render.balls import ball_params
+    from camlab88.apps.snooker.render.lights import Lights
 
     dark = Lights(np.zeros((1, 3)) + 5.0, np.zeros((1, 3)), np.full(3, 1.0))
     b = ball_params(np.array([cx, cy]), r, np.zeros(3), 0.02, np.ones(3), np.eye(3), dark,

@@ -10,9 +10,9 @@ from pathlib import Path
 
 import numpy as np
 
-from apps.snooker.render.palette import fixed_palette
-from apps.snooker.render.sigma_host import SigmaHost
-from apps.snooker.render.truecolour import RenderOptions, render_frame
+from camlab88.apps.snooker.render.palette import fixed_palette
+from camlab88.apps.snooker.render.sigma_host import SigmaHost
+from camlab88.apps.snooker.render.truecolour import RenderOptions, render_frame
 from tests.snooker_render.helpers import break_scene, break_views
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -25,7 +25,7 @@ def test_truecolour_frames_are_bit_identical_across_processes(tmp_path: Path) ->
     assert np.array_equal(here, render_frame(scene, view, OPTS))
     blob = tmp_path / "job.pickle"
     blob.write_bytes(pickle.dumps((scene, view, OPTS)))
-    code = ("import pickle, sys, hashlib; from apps.snooker.render.truecolour import "
+    code = ("import pickle, sys, hashlib; from camlab88.apps.snooker.render.truecolour import "
             "render_frame; s, v, o = pickle.load(open(sys.argv[1], 'rb')); "
             "print(hashlib.sha256(render_frame(s, v, o).tobytes()).hexdigest())")
     out = subprocess.run([sys.executable, "-c", code, str(blob)], cwd=ROOT, check=True,

@@ -4,10 +4,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from camlab88.apps.snooker.render.lights import LightsError, canopy, parse_lights, read_lights
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
-from apps.snooker.render.lights import LightsError, canopy, parse_lights, read_lights
 
 
 def _highlights(lum: np.ndarray) -> list[tuple[float, float]]:
@@ -34,8 +33,9 @@ def _highlights(lum: np.ndarray) -> list[tuple[float, float]]:
 
 
 def _ball_from_above(lights: object) -> np.ndarray:
-    from apps.snooker.camera.views import View
-    from apps.snooker.render.truecolour import RenderOptions, render_frame
+    from camlab88.apps.snooker.camera.views import View
+    from camlab88.apps.snooker.render.truecolour import RenderOptions, render_frame
+
     from tests.snooker_render.helpers import one_ball_scene
 
     s = one_ball_scene(0.0, 0.0, lights)
@@ -52,8 +52,8 @@ def _ball_from_above(lights: object) -> np.ndarray:
              "them gone with one bulb taken away)",
     verdict="agrees (the bulbs' positions and brightness are ours: docs/fidelity/snooker.md)")
 def test_canopy_is_four_bulbs_above_the_table() -> None:
-    from apps.snooker.render.lights import Lights
-    from apps.snooker.table import Table
+    from camlab88.apps.snooker.render.lights import Lights
+    from camlab88.apps.snooker.table import Table
 
     c = canopy()
     t = Table()

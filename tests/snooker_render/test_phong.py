@@ -7,14 +7,13 @@ import math
 
 import numpy as np
 import pytest
-
-from apps.snooker.render import kernels as K
-from apps.snooker.render.balls import ball_params
-from apps.snooker.render.frame import camera_params
-from apps.snooker.render.lights import Lights
-from apps.snooker.render.materials import Phong
-from apps.snooker.render.pinhole import Pinhole
-from apps.snooker.render.shading import lights_array, phong
+from camlab88.apps.snooker.render import kernels as K
+from camlab88.apps.snooker.render.balls import ball_params
+from camlab88.apps.snooker.render.frame import camera_params
+from camlab88.apps.snooker.render.lights import Lights
+from camlab88.apps.snooker.render.materials import Phong
+from camlab88.apps.snooker.render.pinhole import Pinhole
+from camlab88.apps.snooker.render.shading import lights_array, phong
 
 R = 0.0262
 CENTRE = np.array([0.3, -0.2, R])

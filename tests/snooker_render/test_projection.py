@@ -5,14 +5,14 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from camlab88.apps.snooker.camera.projection import project
+from camlab88.apps.snooker.render.frame import frame_geometry
+from camlab88.apps.snooker.render.painter import BallItem
+from camlab88.apps.snooker.render.pinhole import Pinhole
+from camlab88.apps.snooker.render.shading import lights_array
+from camlab88.apps.snooker.render.truecolour import draw_ball
+from camlab88.apps.snooker.visualiser.scene import ball_discs
 
-from apps.snooker.camera.projection import project
-from apps.snooker.render.frame import frame_geometry
-from apps.snooker.render.painter import BallItem
-from apps.snooker.render.pinhole import Pinhole
-from apps.snooker.render.shading import lights_array
-from apps.snooker.render.truecolour import draw_ball
-from apps.snooker.visualiser.scene import ball_discs
 from tests.snooker_render.helpers import break_scene, break_views
 
 W, H = 768, 512

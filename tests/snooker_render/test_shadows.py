@@ -8,12 +8,12 @@ import math
 
 import numpy as np
 import pytest
+from camlab88.apps.snooker.render.frame import frame_geometry
+from camlab88.apps.snooker.render.lights import Lights
+from camlab88.apps.snooker.render.painter import ShadowItem
+from camlab88.apps.snooker.render.shadow_pass import shadow_occlusion
+from camlab88.apps.snooker.render.shadows import ball_shadow_ellipses, cushion_shadow_polygons
 
-from apps.snooker.render.frame import frame_geometry
-from apps.snooker.render.lights import Lights
-from apps.snooker.render.painter import ShadowItem
-from apps.snooker.render.shadow_pass import shadow_occlusion
-from apps.snooker.render.shadows import ball_shadow_ellipses, cushion_shadow_polygons
 from tests.snooker_render.helpers import one_ball_scene, overhead
 
 R = 0.0262
@@ -86,7 +86,7 @@ def _nose_shadow(light: np.ndarray, nose: np.ndarray) -> np.ndarray:
 @pytest.mark.parametrize("light", [(2.5, 0.0, 1.0), (-2.3, 0.4, 1.2), (0.5, 1.4, 0.9),
                                    (-0.9, -0.4, 1.0), (0.9, 0.4, 1.0)])
 def test_cushion_shadow_strips_are_where_rays_over_the_noses_land(light: tuple) -> None:
-    from apps.snooker.render.tablemodel import CUSHION_H_M
+    from camlab88.apps.snooker.render.tablemodel import CUSHION_H_M
 
     hl, hw = 1.8, 0.9
     lp = np.array(light)

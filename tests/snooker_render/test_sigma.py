@@ -8,12 +8,12 @@ from collections import Counter
 
 import numpy as np
 import pytest
+from camlab88.apps.snooker.render.palette import fixed_palette
+from camlab88.apps.snooker.render.sigma_host import SigmaHost
+from camlab88.apps.snooker.render.sigma_session import SigmaSession
+from camlab88.emulator.harness.sigma_batch import t5688_link
+from camlab88.protocols.sigma import AlphaText, Decoder, GraphicsFlag, Order, Point, Points
 
-from apps.snooker.render.palette import fixed_palette
-from apps.snooker.render.sigma_host import SigmaHost
-from apps.snooker.render.sigma_session import SigmaSession
-from emulator.harness.sigma_batch import t5688_link
-from protocols.sigma import AlphaText, Decoder, GraphicsFlag, Order, Point, Points
 from tests.snooker_render.helpers import break_scene, break_views
 
 
@@ -112,8 +112,8 @@ def test_adapted_anti_aliases_the_firmware_lines_no_leaks_at_period_cost(sent) -
 
 
 def test_the_host_knows_the_firmware_line() -> None:
-    from apps.snooker.render.outline import firmware_line
-    from emulator.sigma.raster import firmware_line_points
+    from camlab88.apps.snooker.render.outline import firmware_line
+    from camlab88.emulator.sigma.raster import firmware_line_points
 
     rng = np.random.default_rng(5)
     for _ in range(200):

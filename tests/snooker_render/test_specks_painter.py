@@ -6,9 +6,9 @@ import math
 
 import numpy as np
 import pytest
+from camlab88.apps.snooker.render.painter import BallItem, PolygonItem, ShadowItem, plan
+from camlab88.apps.snooker.render.specks import orientations, rolling_rotations
 
-from apps.snooker.render.painter import BallItem, PolygonItem, ShadowItem, plan
-from apps.snooker.render.specks import orientations, rolling_rotations
 from tests.snooker_render.helpers import break_scene
 
 R = 0.0262
@@ -90,8 +90,9 @@ def test_painters_order_from_behind_baulk_draws_the_baulk_side_last() -> None:
 
 def _ball_close_up(side_deg: float, specks: bool, x: float = 0.3) -> np.ndarray:
     """The cue ball at (x, 0.1) seen from 28 cm away, from `side_deg` round it."""
-    from apps.snooker.camera.views import View
-    from apps.snooker.render.truecolour import RenderOptions, render_frame
+    from camlab88.apps.snooker.camera.views import View
+    from camlab88.apps.snooker.render.truecolour import RenderOptions, render_frame
+
     from tests.snooker_render.helpers import one_ball_scene
 
     s = one_ball_scene(x, 0.1)

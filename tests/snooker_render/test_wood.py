@@ -5,15 +5,23 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from camlab88.apps.snooker.render import kernels as K
+from camlab88.apps.snooker.render.frame import camera_params
+from camlab88.apps.snooker.render.lights import Lights
+from camlab88.apps.snooker.render.pinhole import Pinhole
+from camlab88.apps.snooker.render.tablemodel import table_faces
+from camlab88.apps.snooker.render.truecolour import RenderOptions, render_linear
+from camlab88.apps.snooker.render.wood import (
+    W_ALBEDO,
+    W_CONTRAST,
+    W_KA,
+    W_KD,
+    W_KS,
+    W_N,
+    wood_params,
+)
+from camlab88.apps.snooker.table import Table
 
-from apps.snooker.render import kernels as K
-from apps.snooker.render.frame import camera_params
-from apps.snooker.render.lights import Lights
-from apps.snooker.render.pinhole import Pinhole
-from apps.snooker.render.tablemodel import table_faces
-from apps.snooker.render.truecolour import RenderOptions, render_linear
-from apps.snooker.render.wood import W_ALBEDO, W_CONTRAST, W_KA, W_KD, W_KS, W_N, wood_params
-from apps.snooker.table import Table
 from tests.snooker_render.helpers import break_scene, break_views
 
 LIGHTS = Lights(np.array([[0.9, 0.4, 1.0], [-0.9, -0.4, 1.0]]),

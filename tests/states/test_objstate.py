@@ -1,4 +1,4 @@
-"""base.objstate: a graph captured as data and restored in place; what it refuses."""
+"""camlab88.base.objstate: a graph captured as data and restored in place; what it refuses."""
 
 from __future__ import annotations
 
@@ -10,8 +10,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-
-from base.objstate import Resumable, StateError, capture, restore
+from camlab88.base.objstate import Resumable, StateError, capture, restore
 
 
 def _through_json(tree):
@@ -19,7 +18,7 @@ def _through_json(tree):
 
 
 def test_values_round_trip_and_arrays_are_written_in_place() -> None:
-    from emulator.harness.program_state import StateOptions as Box  # a plain class of ours
+    from camlab88.emulator.harness.program_state import StateOptions as Box  # a plain class of ours
 
     a = Box()
     plane = np.arange(12, dtype=np.uint8).reshape(3, 4)
@@ -45,8 +44,8 @@ def test_values_round_trip_and_arrays_are_written_in_place() -> None:
 
 
 def test_a_callback_made_while_running_is_made_again_from_its_code() -> None:
-    from apps.kas.editor import Editor
-    from apps.kas.editor_edit import bindings
+    from camlab88.apps.kas.editor import Editor
+    from camlab88.apps.kas.editor_edit import bindings
 
     ed = Editor(None, None, 0)
     bindings(ed)["m"]()  # "move points": waits for two points, then calls back
@@ -72,7 +71,7 @@ def test_a_running_generator_is_named_not_saved() -> None:
 
 
 @pytest.mark.parametrize("name", ["os:system", "subprocess:Popen", "tests.x:Y",
-                                  "emulator.nothing_loaded_here:X"])
+                                  "camlab88.emulator.nothing_loaded_here:X"])
 def test_a_state_never_names_code(name: str) -> None:
     with pytest.raises(StateError, match="not one of this program's"):
         restore(None, {"O": name, "id": 0, "a": []}, [])
@@ -86,11 +85,11 @@ def test_a_damaged_tree_is_a_state_error() -> None:
 
 
 def test_a_dialogue_in_progress_is_made_again_with_its_answers() -> None:
-    from apps.ca.program.program import CAProgram, Options
-    from emulator.rainbow.session import in_process
+    from camlab88.apps.ca.program.program import CAProgram, Options
+    from camlab88.emulator.rainbow.session import in_process
 
     prog = CAProgram(in_process().client, Options(pattern="glider"))
-    from apps.ca.program import commands
+    from camlab88.apps.ca.program import commands
 
     prog.frame()
     prog._start(commands.alter_display(prog))
@@ -111,9 +110,9 @@ class _Foreign:
 
 def test_a_dialogue_begun_while_the_program_holds_the_unsaveable_runs_and_refuses_a_save(
 ) -> None:
-    from apps.ca.program import commands
-    from apps.ca.program.program import CAProgram, Options
-    from emulator.rainbow.session import in_process
+    from camlab88.apps.ca.program import commands
+    from camlab88.apps.ca.program.program import CAProgram, Options
+    from camlab88.emulator.rainbow.session import in_process
 
     prog = CAProgram(in_process().client, Options(pattern="glider"))
     prog.frame()
@@ -127,7 +126,7 @@ def test_a_dialogue_begun_while_the_program_holds_the_unsaveable_runs_and_refuse
 
 
 def test_a_state_never_chooses_a_file_name_the_command_line_gave() -> None:
-    from emulator.harness.program_state import StateOptions as Box  # a plain class of ours
+    from camlab88.emulator.harness.program_state import StateOptions as Box  # a plain class of ours
 
     saved = Box()
     saved.out, saved.message = "/etc/passwd", "typed text"
@@ -142,17 +141,17 @@ def test_a_delegating_wrapper_made_without_its_delegate_is_no_endless_recursion(
     """A damaged state can make the line's tap (``__getattr__`` asks its endpoint) without
     the endpoint: reading its attributes must not call that ``__getattr__`` (it called
     itself until the C stack overflowed: a segfault, found by the cli-load-state test)."""
-    from emulator.harness.sigma_line import OutsideTap
+    from camlab88.emulator.harness.sigma_line import OutsideTap
 
     assert "__getattr__" in vars(OutsideTap)
-    tree = {"O": "emulator.harness.sigma_line:OutsideTap", "id": 0,
+    tree = {"O": "camlab88.emulator.harness.sigma_line:OutsideTap", "id": 0,
             "a": [["taken", {"L": [], "id": 1}], ["zz", {"R": 99}]]}
     with pytest.raises(StateError, match=r"state.zz: reference 99 before its object"):
         restore(None, tree, [])
 
 
 def test_a_refused_tree_leaves_every_object_it_had_written_as_it_was() -> None:
-    from emulator.harness.program_state import StateOptions as Box  # a plain class of ours
+    from camlab88.emulator.harness.program_state import StateOptions as Box  # a plain class of ours
 
     saved, fresh = Box(), Box()
     saved.items, saved.table, saved.seen = [1, 2], {"a": 1}, {3}
@@ -172,8 +171,8 @@ def test_a_refused_tree_leaves_every_object_it_had_written_as_it_was() -> None:
 
 
 def test_a_state_is_never_written_into_what_a_module_shares() -> None:
-    from apps.ca.program.menus import EDIT_ITEMS
-    from emulator.harness.program_state import StateOptions as Box
+    from camlab88.apps.ca.program.menus import EDIT_ITEMS
+    from camlab88.emulator.harness.program_state import StateOptions as Box
 
     kept = dict(EDIT_ITEMS)
     saved, fresh = Box(), Box()
@@ -187,21 +186,21 @@ def test_a_state_is_never_written_into_what_a_module_shares() -> None:
 def test_a_dialogue_that_cannot_be_made_again_leaves_the_program_as_it_was() -> None:
     """The last step of a load (a dialogue made again, after the whole tree is in place)
     fails: everything the load wrote, the dialogue's own restores included, is put back."""
-    from apps.ca.program import commands
-    from apps.ca.program.program import CAProgram, Options
-    from emulator.rainbow.session import in_process
+    from camlab88.apps.ca.program import commands
+    from camlab88.apps.ca.program.program import CAProgram, Options
+    from camlab88.emulator.rainbow.session import in_process
 
     prog = CAProgram(in_process().client, Options(pattern="glider"))
     prog.frame()
     prog._start(commands.alter_display(prog))
     tree, blobs = capture(prog)
     text = json.dumps(tree)
-    maker = '"maker", "apps.ca.program.commands:alter_display"'
+    maker = '"maker", "camlab88.apps.ca.program.commands:alter_display"'
     assert maker in text
-    tree = json.loads(text.replace(maker, '"maker", "apps.ca.program.commands:nothing"'))
+    tree = json.loads(text.replace(maker, '"maker", "camlab88.apps.ca.program.commands:nothing"'))
     fresh = CAProgram(in_process().client, Options(pattern="gosper_gun"))
     fresh.frame()
     contents = capture(fresh)
-    with pytest.raises(StateError, match="dialogue 'apps.ca.program.commands:nothing'"):
+    with pytest.raises(StateError, match="dialogue 'camlab88.apps.ca.program.commands:nothing'"):
         restore(fresh, tree, blobs)
     assert capture(fresh) == contents

@@ -14,22 +14,23 @@ from typing import Any
 
 import numpy as np
 import pytest
+from camlab88.base.objstate import OURS, StateError, capture
+from camlab88.emulator.harness import plugins
+from camlab88.emulator.harness.loop import Plugin
+from camlab88.emulator.harness.program_state import identity, load_program, save_program
+from camlab88.emulator.machine.state_file import MachineStateError
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from base.objstate import OURS, StateError, capture
 from camlab88 import __version__
-from emulator.harness import plugins
-from emulator.harness.loop import Plugin
-from emulator.harness.program_state import identity, load_program, save_program
-from emulator.machine.state_file import MachineStateError
 from fuzz.mutate import mutate
 from fuzz.states import ODD_VALUES, PROGRAMS, close_state, edit_tree, open_state, run_cli
 
 AT = ["--at", "0.1"]  # s of virtual time: inside each run below
 LONGER = {"ca-program": ["--stop-after", "12"], "snooker-play": ["--stop-after", "12"],
           "sigma-run": []}  # (frames: 0.24 s; sigma run's 0.3 s)
-LOADER = ("base.objstate", "base.shared_objects")  # (their caches fill as states load)
+# (their caches fill as states load)
+LOADER = ("camlab88.base.objstate", "camlab88.base.shared_objects")
 # a value the program's state holds in one of our modules' shared objects (by program)
 SHARED_TEXT = {"ca-program": "Leave editing", "snooker-play": "Alter a different frame"}
 
@@ -217,7 +218,7 @@ def test_any_damaged_state_is_refused_unchanged_or_loaded_never_half(program,
 # ------------------------------------------------------------------ kas view's line test
 def _period_state(data: bytes, k: Any = None, machine: bytes | None = None) -> bytes:
     """``kas view``'s state with its period and/or its machine's state replaced."""
-    from emulator.machine.state_file import pack, unpack
+    from camlab88.emulator.machine.state_file import pack, unpack
 
     head, blobs = unpack(data, "program")
     bare = {n: v for n, v in head.items() if n not in ("blobs", "format_version", "device")}

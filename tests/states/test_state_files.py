@@ -12,14 +12,14 @@ import sys
 from pathlib import Path
 
 import pytest
+from camlab88.emulator.harness.loop import Harness, RunOptions
+from camlab88.emulator.harness.program_state import StateOptions
+from camlab88.emulator.harness.rainbow import RainbowTarget
+from camlab88.emulator.harness.state_plugin import StatePlugin
+from camlab88.emulator.host_input import KeyDown
+from camlab88.emulator.machine.state_file import MAGIC, pack, unpack
 
 from camlab88.cli import main
-from emulator.harness.loop import Harness, RunOptions
-from emulator.harness.program_state import StateOptions
-from emulator.harness.rainbow import RainbowTarget
-from emulator.harness.state_plugin import StatePlugin
-from emulator.host_input import KeyDown
-from emulator.machine.state_file import MAGIC, pack, unpack
 from tests.states.support import ROOT, inputs_of
 
 RAINBOW = ["rainbow", "run", "--headless", "--stop-after", "12"]
@@ -115,8 +115,8 @@ def test_a_missing_state_file_is_named(tmp_path: Path, capsys) -> None:
 
 # --------------------------------------------------------------------------- the keys
 def _demo_harness(tmp_path: Path) -> Harness:
-    from emulator.rainbow.session import in_process
-    from protocols.rainbow.demo import Demo
+    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.protocols.rainbow.demo import Demo
 
     session = in_process()
     demo = Demo(session.client)

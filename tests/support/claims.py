@@ -209,7 +209,7 @@ def updated(doc: str, body: str) -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
-    from base.atomicfile import write_atomic
+    from camlab88.base.atomicfile import write_atomic
 
     argv = sys.argv[1:] if argv is None else argv
     doc = DOC.read_text(encoding="utf-8")

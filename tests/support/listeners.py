@@ -12,8 +12,8 @@ import sys
 import time
 from fractions import Fraction
 
-from protocols.link import LineSettings, SerialLine
-from protocols.link.transports import TcpBridge
+from camlab88.protocols.link import LineSettings, SerialLine
+from camlab88.protocols.link.transports import TcpBridge
 
 STEP = Fraction(1, 100)
 

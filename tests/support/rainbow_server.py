@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import threading
 
-from emulator.rainbow import Rainbow
-from emulator.rainbow.executor import Executor
-from emulator.rainbow.server import ServerStats, listen, serve
+from camlab88.emulator.rainbow import Rainbow
+from camlab88.emulator.rainbow.executor import Executor
+from camlab88.emulator.rainbow.server import ServerStats, listen, serve
 
 
 def serving(connections: int, device: Rainbow | None = None,

@@ -6,11 +6,14 @@ import time
 from pathlib import Path
 
 import serial
-
-from protocols.link.pty import PtyPort
-from protocols.tablets.base import TabletParser
-from protocols.tablets.events import TabletEvent
-from protocols.tablets.hid_descriptor import ReportDescriptor, parse_descriptor, parse_hex_text
+from camlab88.protocols.link.pty import PtyPort
+from camlab88.protocols.tablets.base import TabletParser
+from camlab88.protocols.tablets.events import TabletEvent
+from camlab88.protocols.tablets.hid_descriptor import (
+    ReportDescriptor,
+    parse_descriptor,
+    parse_hex_text,
+)
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "tablets"
 DIGIMEND = DATA / "digimend-tablets"

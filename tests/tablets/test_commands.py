@@ -71,8 +71,8 @@ def test_tablet_input_emulated_goes_through_the_protocol(tmp_path, monkeypatch) 
     import time
 
     monkeypatch.setenv("CAMLAB88_CONFIG_DIR", str(tmp_path))  # no stray user calibration
-    from emulator.tablet_input.pointer import TabletInput
-    from protocols.tablets.input_layer import MouseSample
+    from camlab88.emulator.tablet_input.pointer import TabletInput
+    from camlab88.protocols.tablets.input_layer import MouseSample
 
     notes: list[str] = []
     tin = TabletInput("emulated:summa-mm", notify=notes.append)
@@ -95,8 +95,8 @@ def test_tablet_input_emulated_goes_through_the_protocol(tmp_path, monkeypatch) 
 
 def test_tablet_input_without_device_uses_mouse(tmp_path, monkeypatch) -> None:
     monkeypatch.setenv("CAMLAB88_CONFIG_DIR", str(tmp_path))
-    from emulator.tablet_input.pointer import TabletInput
-    from protocols.tablets.input_layer import MouseSample
+    from camlab88.emulator.tablet_input.pointer import TabletInput
+    from camlab88.protocols.tablets.input_layer import MouseSample
 
     notes: list[str] = []
     tin = TabletInput("serial:/dev/nonexistent?protocol=wacom4", notify=notes.append)
@@ -110,8 +110,8 @@ def test_tablet_input_passes_protocol_options_through(source, tmp_path, monkeypa
     import time
 
     monkeypatch.setenv("CAMLAB88_CONFIG_DIR", str(tmp_path))
-    from emulator.tablet_input.pointer import TabletInput
-    from protocols.tablets.input_layer import MouseSample
+    from camlab88.emulator.tablet_input.pointer import TabletInput
+    from camlab88.protocols.tablets.input_layer import MouseSample
 
     tin = TabletInput(source)
     try:
@@ -138,8 +138,9 @@ def test_monitor_count_must_be_positive(capsys) -> None:
 
 def test_the_source_help_lists_every_protocol_a_tablet_can_speak() -> None:
     """`tablet emulate` accepts summa-flair (an alias): `tablet monitor --help` says so."""
+    from camlab88.protocols.tablets.registry import ALIASES, PROTOCOL_NAMES
+
     from camlab88.commands.tablet import SOURCE_HELP
-    from protocols.tablets.registry import ALIASES, PROTOCOL_NAMES
 
     listed = SOURCE_HELP.split("P = ")[1].split(", ")
     assert sorted(listed) == sorted([*PROTOCOL_NAMES, *ALIASES])

@@ -8,15 +8,15 @@ from dataclasses import replace
 import numpy as np
 import pytest
 import serial
+from camlab88.emulator.host_input import PointerButton, PointerMove
+from camlab88.emulator.tablet import EmulatedTablet, TabletView, demo_path, pointer_to_tablet
+from camlab88.emulator.tablet.drive import PointerState
+from camlab88.protocols.tablets import wacom4
+from camlab88.protocols.tablets.events import TabletEvent
+from camlab88.protocols.tablets.registry import PROTOCOL_NAMES, make_parser
+from camlab88.protocols.tablets.summa import DEFAULT_MODEL as SUMMA_MODEL
+from camlab88.protocols.tablets.wacom4 import DEFAULT_MODEL as WACOM_MODEL
 
-from emulator.host_input import PointerButton, PointerMove
-from emulator.tablet import EmulatedTablet, TabletView, demo_path, pointer_to_tablet
-from emulator.tablet.drive import PointerState
-from protocols.tablets import wacom4
-from protocols.tablets.events import TabletEvent
-from protocols.tablets.registry import PROTOCOL_NAMES, make_parser
-from protocols.tablets.summa import DEFAULT_MODEL as SUMMA_MODEL
-from protocols.tablets.wacom4 import DEFAULT_MODEL as WACOM_MODEL
 from tests.tablets.helpers import HANG_GUARD
 
 
@@ -156,7 +156,8 @@ def test_view_golden_after_demo_through_the_protocol() -> None:
     """The demo stroke, encoded as Summagraphics bytes and decoded again, drawn on the view."""
     from pathlib import Path
 
-    from protocols.tablets.registry import make_encoder
+    from camlab88.protocols.tablets.registry import make_encoder
+
     from tests.support.golden import assert_matches_golden
 
     enc, parser = make_encoder("summa-mm"), make_parser("summa-mm")
@@ -181,7 +182,7 @@ def test_chords_and_impossible_events_never_crash_the_device(host_for) -> None:
 
 
 def test_summa_tablet_honours_the_origin_command_the_host_sends(host_for) -> None:
-    from protocols.tablets.line_setup import line_setup
+    from camlab88.protocols.tablets.line_setup import line_setup
 
     init = b"".join(step.data for step in line_setup("summa-mm").init)
     assert b"b" in init  # our start-up asks for the origin upper-left ...

@@ -10,8 +10,7 @@ from __future__ import annotations
 import struct
 
 import pytest
-
-from protocols.tablets.hid_decode import (
+from camlab88.protocols.tablets.hid_decode import (
     DG_TIP_PRESSURE,
     GD_X,
     GD_Y,
@@ -20,7 +19,8 @@ from protocols.tablets.hid_decode import (
     ReportDecoder,
     encode_report,
 )
-from protocols.tablets.hid_descriptor import HidDescriptorError, parse_descriptor
+from camlab88.protocols.tablets.hid_descriptor import HidDescriptorError, parse_descriptor
+
 from tests.tablets.helpers import DIGIMEND, SELFTESTS, load_descriptor, load_dump
 
 # --- descriptors ---------------------------------------------------------------------------

@@ -5,9 +5,9 @@ from __future__ import annotations
 import sys
 import types
 
-from protocols.tablets import hid_source
-from protocols.tablets.events import TabletEvent
-from protocols.tablets.hid_profiles import (
+from camlab88.protocols.tablets import hid_source
+from camlab88.protocols.tablets.events import TabletEvent
+from camlab88.protocols.tablets.hid_profiles import (
     MODE_SWITCH,
     encode_bamboo_pen,
     encode_graphire,

@@ -8,9 +8,9 @@ import time
 import types
 
 import pytest
+from camlab88.protocols.tablets.input_layer import InputLayer, MouseSample
+from camlab88.protocols.tablets.sources import SourceLost, open_source
 
-from protocols.tablets.input_layer import InputLayer, MouseSample
-from protocols.tablets.sources import SourceLost, open_source
 from tests.tablets.helpers import DIGIMEND, SELFTESTS, load_descriptor, load_dump
 
 
@@ -190,8 +190,8 @@ def _pth660_rows() -> list[dict]:
 
 
 def test_newer_wacom_on_the_vendor_page_is_listed_and_its_pen_interface_found(monkeypatch):
-    from protocols.tablets.hid_decode import DG_TIP_PRESSURE, GD_X, GD_Y, encode_report
-    from protocols.tablets.hid_source import list_digitizers
+    from camlab88.protocols.tablets.hid_decode import DG_TIP_PRESSURE, GD_X, GD_Y, encode_report
+    from camlab88.protocols.tablets.hid_source import list_digitizers
 
     pth660 = load_descriptor(SELFTESTS / "wacom_pth660_v145.hex")
     no_pen = load_descriptor(DIGIMEND / "Huion_H610/rd/original2.txt")  # an interface without
@@ -222,7 +222,7 @@ def test_no_interface_with_a_pen_says_which_were_tried(monkeypatch) -> None:
 
 
 def test_intuos_1_and_2_pid_table_is_complete() -> None:
-    from protocols.tablets.hid_profiles import profile_for
+    from camlab88.protocols.tablets.hid_profiles import profile_for
 
     for pids in ((0x20, 0x21, 0x22, 0x23, 0x24), (0x41, 0x42, 0x43, 0x44, 0x45)):
         sizes = [(profile_for(0x56A, p).max_x, profile_for(0x56A, p).max_y) for p in pids]
@@ -234,7 +234,7 @@ def test_intuos_1_and_2_pid_table_is_complete() -> None:
 def test_permission_denied_names_the_node_and_the_udev_rule(monkeypatch) -> None:
     """A hidraw node the user may not open (tests run as root, which may open anything, so
     the node's access check is stood in for)."""
-    from protocols.tablets import hid_backend
+    from camlab88.protocols.tablets import hid_backend
 
     class Refusing(FakeDevice):
         def open_path(self, path: bytes) -> None:

@@ -3,13 +3,13 @@
 from __future__ import annotations
 
 import pytest
+from camlab88.protocols.tablets.events import TabletEvent
+from camlab88.protocols.tablets.hid_decode import HidReportError, PenDecoder
+from camlab88.protocols.tablets.hid_descriptor import HidDescriptorError, parse_descriptor
+from camlab88.protocols.tablets.registry import PROTOCOL_NAMES, make_encoder, make_parser
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from protocols.tablets.events import TabletEvent
-from protocols.tablets.hid_decode import HidReportError, PenDecoder
-from protocols.tablets.hid_descriptor import HidDescriptorError, parse_descriptor
-from protocols.tablets.registry import PROTOCOL_NAMES, make_encoder, make_parser
 from tests.tablets.helpers import DIGIMEND, load_descriptor
 
 H610 = load_descriptor(DIGIMEND / "Huion_H610/rd/original0.txt")
@@ -86,7 +86,7 @@ def test_random_reports_fail_cleanly(report) -> None:
 
 
 def test_bitpad2_configuration_reply_is_a_reply_not_a_bad_report() -> None:
-    from protocols.tablets.ascii_line import apply_parity
+    from camlab88.protocols.tablets.ascii_line import apply_parity
 
     parser = make_parser("bitpad2")
     reply = apply_parity(b"MM1103 BIT PAD II by Summagraphics Version 2.1\r\n", "E")

@@ -7,9 +7,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-
-from protocols.tablets.serial_source import SerialSource
-from protocols.tablets.sources import SourceLost, parse_source
+from camlab88.protocols.tablets.serial_source import SerialSource
+from camlab88.protocols.tablets.sources import SourceLost, parse_source
 
 
 def test_a_missing_port_is_one_plain_line(tmp_path: Path) -> None:

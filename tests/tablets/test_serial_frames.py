@@ -4,12 +4,11 @@ split packets, garbage between packets, wrong parity."""
 from __future__ import annotations
 
 import pytest
-
-from protocols.tablets import wacom4
-from protocols.tablets.base import ProtocolError
-from protocols.tablets.events import TabletEvent
-from protocols.tablets.framing import add_parity
-from protocols.tablets.registry import make_encoder, make_parser
+from camlab88.protocols.tablets import wacom4
+from camlab88.protocols.tablets.base import ProtocolError
+from camlab88.protocols.tablets.events import TabletEvent
+from camlab88.protocols.tablets.framing import add_parity
+from camlab88.protocols.tablets.registry import make_encoder, make_parser
 
 # --- CalComp: the real captured DrawingBoard 23120 frame (hansake README) -------------------
 
@@ -244,7 +243,7 @@ def test_out_of_range_event_is_refused() -> None:
 
 
 def test_line_setups() -> None:
-    from protocols.tablets.line_setup import line_setup
+    from camlab88.protocols.tablets.line_setup import line_setup
 
     wacom = line_setup("wacom4")
     assert (wacom.baud, wacom.wire, wacom.rtscts) == (9600, (8, "N", 1), True)

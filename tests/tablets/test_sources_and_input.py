@@ -10,26 +10,26 @@ from contextlib import contextmanager
 from typing import Any
 
 import pytest
-
-from emulator.tablet import EmulatedTablet
-from protocols.tablets import summa
-from protocols.tablets.calibration import (
+from camlab88.emulator.tablet import EmulatedTablet
+from camlab88.protocols.tablets import summa
+from camlab88.protocols.tablets.calibration import (
     Calibration,
     CalibrationError,
     CalibrationSession,
     load_calibration,
     save_calibration,
 )
-from protocols.tablets.events import TabletEvent
-from protocols.tablets.input_layer import TWELVE_FIELD, InputLayer, MouseSample
-from protocols.tablets.serial_source import SerialSource
-from protocols.tablets.sources import (
+from camlab88.protocols.tablets.events import TabletEvent
+from camlab88.protocols.tablets.input_layer import TWELVE_FIELD, InputLayer, MouseSample
+from camlab88.protocols.tablets.serial_source import SerialSource
+from camlab88.protocols.tablets.sources import (
     SourceError,
     SourceLost,
     TabletSource,
     open_source,
     parse_source,
 )
+
 from tests.tablets.helpers import HANG_GUARD
 
 # --- SOURCE strings ---------------------------------------------------------------------------
@@ -180,8 +180,8 @@ def test_implausible_size_reply_keeps_the_default_and_says_why() -> None:
 
 
 def test_calcomp_start_up_sets_resolution_and_reads_the_size() -> None:
-    from protocols.tablets.calcomp import CalcompEncoder
-    from protocols.tablets.events import TabletModel
+    from camlab88.protocols.tablets.calcomp import CalcompEncoder
+    from camlab88.protocols.tablets.events import TabletModel
 
     encoder = CalcompEncoder(TabletModel("DrawingBoard II 12x18", 18000, 12000, 1000.0))
     with _hosted("calcomp", encoder=encoder, early=TabletEvent(50, 60, True, 1)) as (

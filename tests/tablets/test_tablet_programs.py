@@ -8,11 +8,10 @@ import ast
 from pathlib import Path
 
 import pytest
-
-from emulator.harness import Plugin, RunOptions, run
-from emulator.host_input import KeyDown, PointerButton, PointerMove
-from protocols.tablets.events import TabletEvent, TabletModel
-from protocols.tablets.sources import SourceLost
+from camlab88.emulator.harness import Plugin, RunOptions, run
+from camlab88.emulator.host_input import KeyDown, PointerButton, PointerMove
+from camlab88.protocols.tablets.events import TabletEvent, TabletModel
+from camlab88.protocols.tablets.sources import SourceLost
 
 COMMANDS = Path(__file__).resolve().parents[2] / "camlab88" / "commands" / "tablet"
 CLOCKS = {"monotonic", "sleep", "time", "perf_counter", "wait_frame"}
@@ -97,14 +96,14 @@ def _events(n: int) -> list[TabletEvent]:
 
 
 def _held(source: FakeSource, clock: Clock):
-    from emulator.tablet_input.monitor import Held
-    from protocols.tablets.sources import parse_source
+    from camlab88.emulator.tablet_input.monitor import Held
+    from camlab88.protocols.tablets.sources import parse_source
 
     return Held(source, parse_source("loop://?protocol=bitpad1"), None, clock=clock)
 
 
 def test_monitor_stops_at_exactly_count_reports(capsys) -> None:
-    from emulator.tablet_input.monitor import MonitorProgram
+    from camlab88.emulator.tablet_input.monitor import MonitorProgram
 
     clock = Clock(0.001)
     program = MonitorProgram(_held(FakeSource([_events(3), _events(4)]), clock), None, 5,
@@ -115,7 +114,7 @@ def test_monitor_stops_at_exactly_count_reports(capsys) -> None:
 
 
 def test_monitor_stops_after_seconds_on_the_wall_clock(capsys) -> None:
-    from emulator.tablet_input.monitor import MonitorProgram
+    from camlab88.emulator.tablet_input.monitor import MonitorProgram
 
     clock = Clock(0.25)  # the program reads it once at the start and once a tick
     program = MonitorProgram(_held(FakeSource([]), Clock(0.0)), None, None, 1.0, clock=clock)
@@ -125,8 +124,8 @@ def test_monitor_stops_after_seconds_on_the_wall_clock(capsys) -> None:
 
 
 def test_monitor_reopens_a_lost_tablet_and_goes_on(monkeypatch, capsys) -> None:
-    from emulator.tablet_input.monitor import MonitorProgram
-    from protocols.tablets import sources
+    from camlab88.emulator.tablet_input.monitor import MonitorProgram
+    from camlab88.protocols.tablets import sources
 
     first = FakeSource([_events(1)], lose=True)
     again = FakeSource([_events(2)])
@@ -142,8 +141,8 @@ def test_monitor_reopens_a_lost_tablet_and_goes_on(monkeypatch, capsys) -> None:
 
 
 def test_calibrate_gives_up_after_its_seconds_with_a_hint(capsys) -> None:
-    from emulator.tablet_input.calibrate import CalibrateProgram
-    from protocols.tablets.calibration import CalibrationSession
+    from camlab88.emulator.tablet_input.calibrate import CalibrateProgram
+    from camlab88.protocols.tablets.calibration import CalibrationSession
 
     clock = Clock(1.0)
     program = CalibrateProgram(CalibrationSession("fake"), FakeSource([]), None, 2.5,
@@ -165,9 +164,9 @@ class Hand(Plugin):
 
 
 def test_the_window_mouse_and_keys_drive_the_tablet_through_its_protocol() -> None:
-    from emulator.tablet_input.emulate import EmulateProgram
-    from emulator.tablet_input.emulated_source import EmulatedSource
-    from protocols.tablets.sources import parse_source
+    from camlab88.emulator.tablet_input.emulate import EmulateProgram
+    from camlab88.emulator.tablet_input.emulated_source import EmulatedSource
+    from camlab88.protocols.tablets.sources import parse_source
 
     emu = EmulatedSource(parse_source("emulated:wacom4"), reader=False)
     try:

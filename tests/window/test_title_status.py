@@ -6,8 +6,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from camlab88.apps.kas import files
 
-from apps.kas import files
 from camlab88.cli import main
 from tests.kas_paint.helpers import walk
 
@@ -16,7 +16,7 @@ DATA = Path(__file__).resolve().parents[1] / "data"
 
 @pytest.fixture()
 def captions(monkeypatch: pytest.MonkeyPatch) -> list[str]:
-    from emulator import window
+    from camlab88.emulator import window
 
     seen: list[str] = []
     real = window.Window.set_caption

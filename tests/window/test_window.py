@@ -9,13 +9,13 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from emulator.host_input import KeyDown, KeyUp, PointerButton, PointerMove, Quit
+from camlab88.emulator.host_input import KeyDown, KeyUp, PointerButton, PointerMove, Quit
 from tests.support.processes import fresh_python
 
 
 @pytest.fixture()
 def window() -> Iterator[object]:
-    from emulator.window import Window
+    from camlab88.emulator.window import Window
 
     w = Window("test", (16, 10), scale=3)
     yield w
@@ -24,7 +24,7 @@ def window() -> Iterator[object]:
 
 def test_importing_the_emulator_does_not_import_pygame() -> None:
     code = (
-        "import sys, emulator, emulator.window, emulator.host_input\n"
+        "import sys, camlab88.emulator.window, camlab88.emulator.host_input\n"
         "print('pygame' in sys.modules)"
     )
     assert fresh_python(code).strip() == "False"
@@ -75,7 +75,7 @@ def test_pygame_events_become_host_input_in_device_pixels(window) -> None:
 
 
 def test_bad_scale_is_rejected() -> None:
-    from emulator.window import Window
+    from camlab88.emulator.window import Window
 
     with pytest.raises(ValueError):
         Window("x", (4, 4), scale=0)

@@ -1,14 +1,13 @@
-"""``python -m emulator.window``: Ctrl-C quits like Escape, status 130, no traceback."""
+"""``python -m camlab88.emulator.window``: Ctrl-C quits like Escape, status 130, no traceback."""
 
 from __future__ import annotations
 
 import pytest
-
-from emulator import window as window_module
+from camlab88.emulator import window as window_module
 
 
 def test_ctrl_c_in_the_test_card_quits_cleanly(monkeypatch, capsys) -> None:
-    monkeypatch.setattr("emulator.harness.display.display_available", lambda: True)
+    monkeypatch.setattr("camlab88.emulator.harness.display.display_available", lambda: True)
 
     def interrupted(self):
         raise KeyboardInterrupt
@@ -19,7 +18,7 @@ def test_ctrl_c_in_the_test_card_quits_cleanly(monkeypatch, capsys) -> None:
 
 
 def test_main_itself_still_raises_for_its_callers(monkeypatch) -> None:
-    monkeypatch.setattr("emulator.harness.display.display_available", lambda: True)
+    monkeypatch.setattr("camlab88.emulator.harness.display.display_available", lambda: True)
     monkeypatch.setattr(window_module.Window, "poll",
                         lambda self: (_ for _ in ()).throw(KeyboardInterrupt))
     with pytest.raises(KeyboardInterrupt):

@@ -9,7 +9,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from apps.actors.model import DEFAULT_MATERIAL, Actor, Part
+from camlab88.apps.actors.model import DEFAULT_MATERIAL, Actor, Part
 
 TILE = Part("box", size=(0.9, 0.9, 0.04))  # how a state without an actor is shown
 

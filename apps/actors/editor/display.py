@@ -5,13 +5,12 @@ new picture is uploaded), the status line, the message pad and the key help."""
 from __future__ import annotations
 
 import numpy as np
-
-from apps.actors.editor import layout as L
-from apps.actors.editor.profile import Point, to_pixels
-from apps.actors.editor.quantise import quantise
-from apps.actors.editor.sliders import SliderPad
-from protocols.rainbow.client import SCREEN, RainbowClient
-from protocols.rainbow.ui import MessageArea
+from camlab88.apps.actors.editor import layout as L
+from camlab88.apps.actors.editor.profile import Point, to_pixels
+from camlab88.apps.actors.editor.quantise import quantise
+from camlab88.apps.actors.editor.sliders import SliderPad
+from camlab88.protocols.rainbow.client import SCREEN, RainbowClient
+from camlab88.protocols.rainbow.ui import MessageArea
 
 BG, GRID, AXIS, LINE, POINT, PICKED, LABEL = range(7)
 PROFILE_COLOURS = ["#101828", "#27324a", "#8090b0", "#f8c890", "#ffffff", "#ff6060",

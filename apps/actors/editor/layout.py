@@ -7,7 +7,7 @@ the floor its bottom edge (height 0); one cell unit is ``UNIT`` pixels, and poin
 
 from __future__ import annotations
 
-from apps.actors.model import MAX_POINTS  # the file's limit on a lathe profile
+from camlab88.apps.actors.model import MAX_POINTS  # the file's limit on a lathe profile
 
 STATUS = (16, 8, 736, 24)        # x, y, w, h: cell type, file, unsaved mark
 PROFILE = (16, 40, 352, 448)

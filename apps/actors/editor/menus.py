@@ -5,10 +5,10 @@ button selects and Esc (or the middle button) leaves it."""
 
 from __future__ import annotations
 
-from apps.actors.editor import layout as L
-from apps.actors.editor.cell_types import CellType
-from protocols.rainbow.client import RainbowClient
-from protocols.rainbow.ui import PopupMenu
+from camlab88.apps.actors.editor import layout as L
+from camlab88.apps.actors.editor.cell_types import CellType
+from camlab88.protocols.rainbow.client import RainbowClient
+from camlab88.protocols.rainbow.ui import PopupMenu
 
 MAIN = ["Do nothing", "Cell type", "Name", "Clear profile", "Remove actor", "Save", "Finish"]
 MAX_TYPES = 30  # a pop-up menu's items (a 5-bit pad)

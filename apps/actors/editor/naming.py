@@ -4,7 +4,7 @@ Backspace rubs out; only the actors file's name characters are taken (letters, d
 
 from __future__ import annotations
 
-from apps.actors.model import NAME
+from camlab88.apps.actors.model import NAME
 
 ALLOWED = set("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.+-")
 MAX_LEN = 64

@@ -11,7 +11,7 @@ from __future__ import annotations
 import bisect
 import math
 
-from apps.actors.editor.layout import (
+from camlab88.apps.actors.editor.layout import (
     AXIS_X,
     FLOOR_Y,
     HIT,

@@ -16,9 +16,9 @@ from __future__ import annotations
 import os
 from dataclasses import replace
 
-from apps.actors.editor import layout as L
-from apps.actors.editor import sliders as S
-from apps.actors.editor.cell_types import (
+from camlab88.apps.actors.editor import layout as L
+from camlab88.apps.actors.editor import sliders as S
+from camlab88.apps.actors.editor.cell_types import (
     CellType,
     first_lathe,
     new_actor,
@@ -26,16 +26,23 @@ from apps.actors.editor.cell_types import (
     tile,
     with_profile,
 )
-from apps.actors.editor.display import Display
-from apps.actors.editor.menus import Menus
-from apps.actors.editor.naming import NameEntry
-from apps.actors.editor.profile import Profile
-from apps.actors.editor.tablet import TabletPen
-from apps.actors.model import Actor, ActorFileError, ActorSet, Material, read_actors, write_actors
-from apps.actors.preview import turntable
-from apps.quitting import QUIT_QUESTION, AsksBeforeQuitting
-from protocols.rainbow.client import RainbowClient
-from protocols.rainbow.events import KeyEvent, MouseEvent, TabletEvent
+from camlab88.apps.actors.editor.display import Display
+from camlab88.apps.actors.editor.menus import Menus
+from camlab88.apps.actors.editor.naming import NameEntry
+from camlab88.apps.actors.editor.profile import Profile
+from camlab88.apps.actors.editor.tablet import TabletPen
+from camlab88.apps.actors.model import (
+    Actor,
+    ActorFileError,
+    ActorSet,
+    Material,
+    read_actors,
+    write_actors,
+)
+from camlab88.apps.actors.preview import turntable
+from camlab88.apps.quitting import QUIT_QUESTION, AsksBeforeQuitting
+from camlab88.protocols.rainbow.client import RainbowClient
+from camlab88.protocols.rainbow.events import KeyEvent, MouseEvent, TabletEvent
 
 ERROR, INFO, PROMPT = "#ffb0b0", "#c8e8ff", "#fff0a0"
 # A new turntable picture every PREVIEW_EVERY frames (12.5 a second), turned 6 degrees

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from protocols.rainbow.client import RainbowClient
+from camlab88.protocols.rainbow.client import RainbowClient
 
 
 @dataclass(frozen=True)

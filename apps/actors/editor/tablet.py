@@ -4,8 +4,8 @@ pressure) is the left button held, leaving proximity lets go."""
 
 from __future__ import annotations
 
-from apps.actors.editor import layout as L
-from protocols.rainbow.events import LEFT, MouseEvent, TabletEvent
+from camlab88.apps.actors.editor import layout as L
+from camlab88.protocols.rainbow.events import LEFT, MouseEvent, TabletEvent
 
 DEFAULT_EXTENT = (2200, 1700)  # tablet units when the command knows no model's range
 

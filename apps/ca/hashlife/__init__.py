@@ -20,9 +20,9 @@ per run, and only the leaf kernel depends on it:
   bit operations (``bits.leaves``), the same answers with far fewer, cheaper nodes.
 """
 
-from base.kernel_notice import announce_compiles
+from camlab88.base.kernel_notice import announce_compiles
 
-_WARM = "apps.ca.hashlife.kernel_warmup:compile_"  # + the group's part
+_WARM = "camlab88.apps.ca.hashlife.kernel_warmup:compile_"  # + the group's part
 # Cold compile times (CPU) measured on the project's 2-core machine (docs/perf/startup.md).
 # Each group completes alone, so a run compiles only the groups it touches: what every jump
 # needs (the store, the census, the levels of a tree, compiled into the conversions), each

@@ -14,11 +14,11 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from apps.ca.hashlife import tree as trees
-from apps.ca.hashlife.bits.run import BitRun
-from apps.ca.hashlife.generic import GenericRun
-from apps.ca.hashlife.leaf import deterministic_reason
-from apps.ca.rules import RuleSet
+from camlab88.apps.ca.hashlife import tree as trees
+from camlab88.apps.ca.hashlife.bits.run import BitRun
+from camlab88.apps.ca.hashlife.generic import GenericRun
+from camlab88.apps.ca.hashlife.leaf import deterministic_reason
+from camlab88.apps.ca.rules import RuleSet
 
 # Generations the direct engine takes at a time while order-dependent rules have live cells
 # at the wrapping plane's seam (the generic strategy's next jump is 0 there).

@@ -12,16 +12,15 @@ leaf) and are read as int64.
 from __future__ import annotations
 
 import numpy as np
-
-from apps.ca.hashlife.leaf import generation
-from apps.ca.hashlife.store import LEVEL, REACH, all_tables, join
-from base.kernel_set import KernelSet
+from camlab88.apps.ca.hashlife.leaf import generation
+from camlab88.apps.ca.hashlife.store import LEVEL, REACH, all_tables, join
+from camlab88.base.kernel_set import KernelSet
 
 kernels = KernelSet(__name__, _nrt=False, sources=(
-    "apps.ca.hashlife.leaf",
-    "apps.ca.hashlife.store",
-    "base.raw_views",
-    "base.raw_view_intrinsics",
+    "camlab88.apps.ca.hashlife.leaf",
+    "camlab88.apps.ca.hashlife.store",
+    "camlab88.base.raw_views",
+    "camlab88.base.raw_view_intrinsics",
 ))
 
 

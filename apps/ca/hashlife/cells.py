@@ -7,9 +7,8 @@ The way back, a plane's cells listed, is ``listing``."""
 from __future__ import annotations
 
 import numpy as np
-
-from apps.ca.hashlife.grid import PLANE_LEVEL, levels, tile_key
-from apps.ca.hashlife.store import (
+from camlab88.apps.ca.hashlife.grid import PLANE_LEVEL, levels, tile_key
+from camlab88.apps.ca.hashlife.store import (
     EMPTY,
     LEAF,
     LEAVES,
@@ -19,11 +18,11 @@ from apps.ca.hashlife.store import (
     WALL,
     leaf,
 )
-from base.kernel_set import KernelSet
+from camlab88.base.kernel_set import KernelSet
 
 kernels = KernelSet(__name__, sources=(
-    "apps.ca.hashlife.grid",
-    "apps.ca.hashlife.store",
+    "camlab88.apps.ca.hashlife.grid",
+    "camlab88.apps.ca.hashlife.store",
 ))
 
 INTS = "int64[::1]"

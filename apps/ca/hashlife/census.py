@@ -5,9 +5,8 @@ leaf (the leaf level in the store's meta says which: 0, a value; else a bit leaf
 from __future__ import annotations
 
 import numpy as np
-
-from apps.ca.hashlife.store import EMPTY, LEAF, LEAVES, META_T, NODES, WALL
-from base.kernel_set import KernelSet
+from camlab88.apps.ca.hashlife.store import EMPTY, LEAF, LEAVES, META_T, NODES, WALL
+from camlab88.base.kernel_set import KernelSet
 
 kernels = KernelSet(__name__)
 

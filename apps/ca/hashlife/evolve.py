@@ -28,10 +28,9 @@ kernel's group announces the compile.
 from __future__ import annotations
 
 import numpy as np
-
-from apps.ca.hashlife import cellgrid
-from apps.ca.hashlife.bits import leaves as bitleaves
-from apps.ca.hashlife.store import (
+from camlab88.apps.ca.hashlife import cellgrid
+from camlab88.apps.ca.hashlife.bits import leaves as bitleaves
+from camlab88.apps.ca.hashlife.store import (
     BASE,
     EMPTY,
     FRAME,
@@ -48,15 +47,15 @@ from apps.ca.hashlife.store import (
     node_tables,
     publish,
 )
-from base.kernel_set import KernelSet
+from camlab88.base.kernel_set import KernelSet
 
 kernels = KernelSet(__name__, sources=(
-    "apps.ca.hashlife.bits.leaves",
-    "apps.ca.hashlife.cellgrid",
-    "apps.ca.hashlife.leaf",
-    "apps.ca.hashlife.store",
-    "base.raw_views",
-    "base.raw_view_intrinsics",
+    "camlab88.apps.ca.hashlife.bits.leaves",
+    "camlab88.apps.ca.hashlife.cellgrid",
+    "camlab88.apps.ca.hashlife.leaf",
+    "camlab88.apps.ca.hashlife.store",
+    "camlab88.base.raw_views",
+    "camlab88.base.raw_view_intrinsics",
 ))
 
 RULES, SCRATCH = "uint64[::1]", "uint64[:, ::1]"

@@ -12,12 +12,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.ca.hashlife import cells
-from apps.ca.hashlife.leaf import order_matters, pack
-from apps.ca.hashlife.run import StoreRun
-from apps.ca.hashlife.store import SHIFT, TOP_LEVEL, Store
-from apps.ca.rules import RuleSet
+from camlab88.apps.ca.hashlife import cells
+from camlab88.apps.ca.hashlife.leaf import order_matters, pack
+from camlab88.apps.ca.hashlife.run import StoreRun
+from camlab88.apps.ca.hashlife.store import SHIFT, TOP_LEVEL, Store
+from camlab88.apps.ca.rules import RuleSet
 
 # Leaves are this many levels above the smallest possible (2**(s+2) cells square, one
 # generation): bigger leaves run more generations directly per memoised result.

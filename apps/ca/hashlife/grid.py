@@ -3,11 +3,10 @@
 from __future__ import annotations
 
 import numpy as np
+from camlab88.apps.ca.hashlife.store import EMPTY, join
+from camlab88.base.kernel_set import KernelSet
 
-from apps.ca.hashlife.store import EMPTY, join
-from base.kernel_set import KernelSet
-
-kernels = KernelSet(__name__, sources=("apps.ca.hashlife.store",))
+kernels = KernelSet(__name__, sources=("camlab88.apps.ca.hashlife.store",))
 
 PLANE_LEVEL = 16
 INTS = "int64[::1]"

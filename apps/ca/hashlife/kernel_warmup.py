@@ -16,14 +16,13 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 
 import numpy as np
-
-from apps.ca.engine import CENTRE, Engine
-from apps.ca.hashlife import cells, census, listing
-from apps.ca.hashlife.grid import PLANE_LEVEL
-from apps.ca.hashlife.store import BIT_LEAF_LEVEL, Store
-from apps.ca.library import pattern_path, rules_path
-from apps.ca.patterns import read_pattern
-from apps.ca.rules import load_rules
+from camlab88.apps.ca.engine import CENTRE, Engine
+from camlab88.apps.ca.hashlife import cells, census, listing
+from camlab88.apps.ca.hashlife.grid import PLANE_LEVEL
+from camlab88.apps.ca.hashlife.store import BIT_LEAF_LEVEL, Store
+from camlab88.apps.ca.library import pattern_path, rules_path
+from camlab88.apps.ca.patterns import read_pattern
+from camlab88.apps.ca.rules import load_rules
 
 _STORES = ((0, 2), (BIT_LEAF_LEVEL, BIT_LEAF_LEVEL + 1))  # (leaf, base) of each kind
 
@@ -99,6 +98,6 @@ def compile_upkeep() -> None:
     store.make_room([])
     store.slots[:] = 0  # as grow_if_full does after growing: every entry hashed again
     store.lslots[:] = 0
-    from apps.ca.hashlife.upkeep import LEAF_TABLE, NODE_TABLE, rehash
+    from camlab88.apps.ca.hashlife.upkeep import LEAF_TABLE, NODE_TABLE, rehash
 
     rehash(NODE_TABLE | LEAF_TABLE, *store.tables)

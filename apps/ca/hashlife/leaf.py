@@ -10,11 +10,10 @@ sends nothing and never changes.  The rules travel as one packed int64 array (``
 from __future__ import annotations
 
 import numpy as np
-
-from apps.ca.hashlife.store import WALL
-from apps.ca.rules import OP_ADD, OP_AND, OP_OR, OP_XOR, RuleSet
-from apps.ca.tables import LOOKUP_SIZE, compile_rules
-from base.kernel_set import KernelSet
+from camlab88.apps.ca.hashlife.store import WALL
+from camlab88.apps.ca.rules import OP_ADD, OP_AND, OP_OR, OP_XOR, RuleSet
+from camlab88.apps.ca.tables import LOOKUP_SIZE, compile_rules
+from camlab88.base.kernel_set import KernelSet
 
 kernels = KernelSet(__name__)
 

@@ -5,13 +5,13 @@ compiles it."""
 from __future__ import annotations
 
 import numpy as np
+from camlab88.apps.ca.hashlife.census import count
+from camlab88.apps.ca.hashlife.grid import PLANE_LEVEL
+from camlab88.apps.ca.hashlife.store import EMPTY, LEAF, LEAVES, META_T, N_NODES, NODES, WALL
+from camlab88.base.kernel_set import KernelSet
 
-from apps.ca.hashlife.census import count
-from apps.ca.hashlife.grid import PLANE_LEVEL
-from apps.ca.hashlife.store import EMPTY, LEAF, LEAVES, META_T, N_NODES, NODES, WALL
-from base.kernel_set import KernelSet
-
-kernels = KernelSet(__name__, sources=("apps.ca.hashlife.census", "apps.ca.hashlife.store"))
+kernels = KernelSet(__name__, sources=("camlab88.apps.ca.hashlife.census",
+                                        "camlab88.apps.ca.hashlife.store"))
 
 
 @kernels.kernel

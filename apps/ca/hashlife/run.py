@@ -7,9 +7,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.ca.hashlife import census, evolve, listing
-from apps.ca.hashlife.store import Store
+from camlab88.apps.ca.hashlife import census, evolve, listing
+from camlab88.apps.ca.hashlife.store import Store
 
 
 @dataclass(eq=False)

@@ -29,11 +29,11 @@ from __future__ import annotations
 import weakref
 
 import numpy as np
+from camlab88.base import raw_views
+from camlab88.base.kernel_set import KernelSet
 
-from base import raw_views
-from base.kernel_set import KernelSet
-
-kernels = KernelSet(__name__, sources=("base.raw_views", "base.raw_view_intrinsics"))
+kernels = KernelSet(__name__, sources=("camlab88.base.raw_views",
+                                        "camlab88.base.raw_view_intrinsics"))
 
 TOP_LEVEL = 17  # the 65536-square plane is level 16; stepping frames it in a level-17 node
 RES, RESJ, LEVEL, FULL = 4, 5, 6, 7  # node row columns after the four quadrants
@@ -325,7 +325,7 @@ class Store:
         (renumbered in place); see ``crowded``."""
         live = [t for t in self.trees if t.epoch == self.epoch]
         keep = np.array([*roots, *(t.node for t in live)], np.int64)
-        from apps.ca.hashlife.upkeep import collect  # its own kernel group
+        from camlab88.apps.ca.hashlife.upkeep import collect  # its own kernel group
 
         collect(keep, *self.tables)
         self.epoch += 1
@@ -361,7 +361,7 @@ class Store:
                       0)
         if not full or not factor:
             return False
-        from apps.ca.hashlife.upkeep import LEAF_TABLE, NODE_TABLE, rehash  # its own group
+        from camlab88.apps.ca.hashlife.upkeep import LEAF_TABLE, NODE_TABLE, rehash  # its own group
 
         if grow_nodes:
             self.nodes, self.slots = self._grown(self.nodes, self.count, factor)

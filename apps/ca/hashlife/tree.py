@@ -15,8 +15,7 @@ from dataclasses import dataclass, field
 from typing import Protocol
 
 import numpy as np
-
-from apps.ca.hashlife.plane import frame
+from camlab88.apps.ca.hashlife.plane import frame
 
 
 class Run(Protocol):

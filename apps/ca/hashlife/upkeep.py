@@ -7,8 +7,7 @@ does not compile them, and the first run that does fill announces them (a short 
 from __future__ import annotations
 
 import numpy as np
-
-from apps.ca.hashlife.store import (
+from camlab88.apps.ca.hashlife.store import (
     EMPTY,
     EMPTY_LEAF,
     FULL,
@@ -24,9 +23,9 @@ from apps.ca.hashlife.store import (
     leaf_hash,
     node_hash,
 )
-from base.kernel_set import KernelSet
+from camlab88.base.kernel_set import KernelSet
 
-kernels = KernelSet(__name__, sources=("apps.ca.hashlife.store",))
+kernels = KernelSet(__name__, sources=("camlab88.apps.ca.hashlife.store",))
 
 
 NODE_TABLE, LEAF_TABLE = 1, 2  # rehash's ``which``: bits of the tables to enter anew

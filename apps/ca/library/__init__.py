@@ -5,7 +5,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from base.suggest import did_you_mean
+from camlab88.base.suggest import did_you_mean
 
 LIBRARY = Path(__file__).resolve().parent
 PATTERN_SUFFIXES = (".pat", ".rle", ".cells", ".mc")

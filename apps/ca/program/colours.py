@@ -6,9 +6,9 @@ Switching between them is one ``set_page`` per pad, so changing the display mode
 
 from __future__ import annotations
 
-from apps.ca.program.raster import FORMS
-from apps.ca.render import default_colour
-from apps.ca.rules import RuleSet
+from camlab88.apps.ca.program.raster import FORMS
+from camlab88.apps.ca.render import default_colour
+from camlab88.apps.ca.rules import RuleSet
 
 PAGE_COLOUR, PAGE_MONO, PAGE_EDIT, PAGE_DENSITY = 1, 2, 3, 4
 GRID_WHITE = (255, 255, 255)

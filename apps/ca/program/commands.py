@@ -13,14 +13,20 @@ from collections.abc import Generator
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from apps.ca import library
-from apps.ca.engine import SIDE, Rect
-from apps.ca.patterns import ORIENTATIONS, Pattern, PatternError, read_pattern, write_pattern
-from apps.ca.program.viewport import subpixel_side
-from apps.ca.rules import RuleError
+from camlab88.apps.ca import library
+from camlab88.apps.ca.engine import SIDE, Rect
+from camlab88.apps.ca.patterns import (
+    ORIENTATIONS,
+    Pattern,
+    PatternError,
+    read_pattern,
+    write_pattern,
+)
+from camlab88.apps.ca.program.viewport import subpixel_side
+from camlab88.apps.ca.rules import RuleError
 
 if TYPE_CHECKING:
-    from apps.ca.program.program import CAProgram
+    from camlab88.apps.ca.program.program import CAProgram
 
 
 @dataclass(frozen=True)

@@ -7,7 +7,7 @@ input (``script_events``) so it runs through exactly the code a person's mouse d
 
 from __future__ import annotations
 
-from apps.ca.program.menus import CrossMenu, main_item_point
+from camlab88.apps.ca.program.menus import CrossMenu, main_item_point
 
 
 def choose(item: str, x: int = 300, y: int = 300) -> str:

@@ -12,12 +12,12 @@
 
 from __future__ import annotations
 
-from apps.ca.engine import Engine
-from apps.ca.program import colours, raster
-from apps.ca.program.viewport import BAND_W, VIEW_H, VIEW_W, Viewport
-from protocols.rainbow.client import SCREEN, RainbowClient
-from protocols.rainbow.ui import MessageArea, SuperPad
-from protocols.rainbow.ui.double_buffer import Flip
+from camlab88.apps.ca.engine import Engine
+from camlab88.apps.ca.program import colours, raster
+from camlab88.apps.ca.program.viewport import BAND_W, VIEW_H, VIEW_W, Viewport
+from camlab88.protocols.rainbow.client import SCREEN, RainbowClient
+from camlab88.protocols.rainbow.ui import MessageArea, SuperPad
+from camlab88.protocols.rainbow.ui.double_buffer import Flip
 
 PAD_W, PAD_H = VIEW_W + BAND_W, VIEW_H + BAND_W  # the super pad: the view plus a margin
 BAND_PAGE, CURSOR_PAGE, RUBBER_PAGE, AREA_PAGE = 5, 6, 7, 8

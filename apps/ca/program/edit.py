@@ -5,7 +5,7 @@ no holes)."""
 
 from __future__ import annotations
 
-from apps.ca.session import Session
+from camlab88.apps.ca.session import Session
 
 
 def cells_between(a: tuple[int, int], b: tuple[int, int]) -> list[tuple[int, int]]:

@@ -15,10 +15,10 @@ import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
-from protocols.rainbow.events import KeyEvent
+from camlab88.protocols.rainbow.events import KeyEvent
 
 if TYPE_CHECKING:
-    from apps.ca.program.program import CAProgram
+    from camlab88.apps.ca.program.program import CAProgram
 
 SHOW_AFTER = 1.0  # seconds before the bar first appears
 EVERY = 0.25  # seconds between redraws

@@ -9,9 +9,9 @@
 
 from __future__ import annotations
 
-from protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
-from protocols.rainbow.ui import CrossMenu, PopupMenu
-from protocols.rainbow.ui.menu import ItemMenu, pastel
+from camlab88.protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
+from camlab88.protocols.rainbow.ui import CrossMenu, PopupMenu
+from camlab88.protocols.rainbow.ui.menu import ItemMenu, pastel
 
 MAIN_LEFT = ["Advance area", "Alter display", "Change rules", "Clear area", "Statistics",
              "Do nothing", "Save pattern", "Load pattern", "Randomly populate", "Edit cells"]

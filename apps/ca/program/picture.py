@@ -6,8 +6,7 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-
-from apps.ca.engine import SIDE, Rect
+from camlab88.apps.ca.engine import SIDE, Rect
 
 MARGIN = 2  # cells round the population
 
@@ -25,6 +24,6 @@ def picture_rect(engine: Any, pad: int = MARGIN) -> Rect:
 
 def picture(engine: Any, zoom: int, monochrome: bool) -> np.ndarray:
     """The population as an (h, w, 3) picture, ``zoom`` pixels a cell."""
-    from apps.ca.render import render
+    from camlab88.apps.ca.render import render
 
     return render(engine, picture_rect(engine), max(1, zoom), monochrome)

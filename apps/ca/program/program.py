@@ -13,19 +13,19 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from apps.ca import library, log
-from apps.ca.engine import Engine
-from apps.ca.patterns import read_pattern
-from apps.ca.program import commands, stepping
-from apps.ca.program.commands import ERROR, Ask, Dialogue
-from apps.ca.program.drawing import Display
-from apps.ca.program.edit import Editor
-from apps.ca.program.menus import EDIT_MODES, MainMenu, choice_menu, edit_menu
-from apps.ca.program.viewport import VIEW_H, VIEW_W, Viewport
-from apps.ca.session import Session
-from base.objstate import Resumable
-from protocols.rainbow.client import RainbowClient
-from protocols.rainbow.events import LEFT, RIGHT, KeyEvent, MouseEvent
+from camlab88.apps.ca import library, log
+from camlab88.apps.ca.engine import Engine
+from camlab88.apps.ca.patterns import read_pattern
+from camlab88.apps.ca.program import commands, stepping
+from camlab88.apps.ca.program.commands import ERROR, Ask, Dialogue
+from camlab88.apps.ca.program.drawing import Display
+from camlab88.apps.ca.program.edit import Editor
+from camlab88.apps.ca.program.menus import EDIT_MODES, MainMenu, choice_menu, edit_menu
+from camlab88.apps.ca.program.viewport import VIEW_H, VIEW_W, Viewport
+from camlab88.apps.ca.session import Session
+from camlab88.base.objstate import Resumable
+from camlab88.protocols.rainbow.client import RainbowClient
+from camlab88.protocols.rainbow.events import LEFT, RIGHT, KeyEvent, MouseEvent
 
 ZOOM_ITEMS = {"Zoom 16": 16, "Zoom 8": 8, "Zoom 4": 4, "Zoom 2": 2, "Zoom 1": 1}
 PROMPT = "#fff0a0"

@@ -9,9 +9,9 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from protocols.rainbow.events import KeyEvent, MouseEvent
-from protocols.rainbow.script import MouseState, ScriptError, load
-from protocols.rainbow.script import parse as parse_script
+from camlab88.protocols.rainbow.events import KeyEvent, MouseEvent
+from camlab88.protocols.rainbow.script import MouseState, ScriptError, load
+from camlab88.protocols.rainbow.script import parse as parse_script
 
 Step = MouseEvent | KeyEvent | int
 __all__ = ["MouseState", "ScriptError", "Step", "parse", "play", "read"]

@@ -17,14 +17,14 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
-from apps.ca import log
-from apps.ca.engine import Engine
-from apps.ca.program.commands import ERROR, Ask, Dialogue
-from apps.ca.program.jump_bar import JumpBar, JumpStopped
-from apps.ca.session import Session
+from camlab88.apps.ca import log
+from camlab88.apps.ca.engine import Engine
+from camlab88.apps.ca.program.commands import ERROR, Ask, Dialogue
+from camlab88.apps.ca.program.jump_bar import JumpBar, JumpStopped
+from camlab88.apps.ca.session import Session
 
 if TYPE_CHECKING:
-    from apps.ca.program.program import CAProgram
+    from camlab88.apps.ca.program.program import CAProgram
 
 FAST_FORWARD_MAX = 1 << 24  # generations per shown frame at most while fast-forwarding
 

@@ -12,8 +12,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from apps.ca.engine import CENTRE, SIDE
-from apps.ca.session import MAX_CELLS_PER_PIXEL, subpixel_side  # noqa: F401 (re-exported)
+from camlab88.apps.ca.engine import CENTRE, SIDE
+from camlab88.apps.ca.session import MAX_CELLS_PER_PIXEL, subpixel_side  # noqa: F401 (re-exported)
 
 SCREEN_W, SCREEN_H = 768, 576
 BAND_W = 16

@@ -7,8 +7,8 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from apps.kas.paint.replay import ReplayHost
-from protocols.link.port import HostPort
+from camlab88.apps.kas.paint.replay import ReplayHost
+from camlab88.protocols.link.port import HostPort
 
 KEYS = ("click: select chain / pick swatch; f fill, l colour lines, r region, t touch at the "
         "pointer, c clear; r/g/b (+shift) RGB steps; w painting, m mixing, p preview; , . "
@@ -80,7 +80,7 @@ class PaintHost:
 
     # ------------------------------------------------------------ the harness's ticks
     def step(self) -> bool:
-        from apps.kas.paint import script
+        from camlab88.apps.kas.paint import script
 
         if self.port.drained() and self.commands:
             cmd = self.commands.pop(0)

@@ -105,9 +105,8 @@ def _deepest(wall, labels, dist, best, depth):  # numba kernel
 
 
 def _compile() -> None:
+    from camlab88.base.kernel_notice import announce_compiles
     from numba import njit
-
-    from base.kernel_notice import announce_compiles
 
     # one line on stderr if the cache is cold: measured 8 s at load 7 on the 2-core machine
     announce_compiles("KAS painting", 4.0, __name__)

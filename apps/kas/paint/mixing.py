@@ -10,10 +10,16 @@ Layout reconstructed (the figure is not reproduced in the text).
 
 from __future__ import annotations
 
-from apps.kas.paint.areas import MIXING
-from apps.kas.paint.palette import Palette
-from apps.kas.paint.planes import ALL_PLANES, FILL_MASK, HIGHLIGHT, OUTLINE_MASK, OUTLINE_SHIFT
-from protocols.sigma import Encoder
+from camlab88.apps.kas.paint.areas import MIXING
+from camlab88.apps.kas.paint.palette import Palette
+from camlab88.apps.kas.paint.planes import (
+    ALL_PLANES,
+    FILL_MASK,
+    HIGHLIGHT,
+    OUTLINE_MASK,
+    OUTLINE_SHIFT,
+)
+from camlab88.protocols.sigma import Encoder
 
 SW, SH, GAP = 80, 60, 12        # swatch size and spacing, pixels
 COLS = 8

@@ -21,9 +21,8 @@ from __future__ import annotations
 from functools import cached_property
 
 import numpy as np
-
-from apps.kas.paint import seeds, vector
-from apps.kas.paint.autopaint import Step
+from camlab88.apps.kas.paint import seeds, vector
+from camlab88.apps.kas.paint.autopaint import Step
 
 
 class Cover:

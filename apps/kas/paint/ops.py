@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from apps.kas.paint.palette import Palette
+from camlab88.apps.kas.paint.palette import Palette
 
 KINDS = ("fill", "line", "region", "touch")
 Point = tuple[float, float]

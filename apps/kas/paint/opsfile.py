@@ -27,10 +27,10 @@ import os
 import re
 from pathlib import Path
 
-from apps.kas.model import AnimSequence
-from apps.kas.paint.ops import Op, OpsFile, Seeds, op_key
-from apps.kas.paint.palette import Palette
-from base.atomicfile import write_atomic
+from camlab88.apps.kas.model import AnimSequence
+from camlab88.apps.kas.paint.ops import Op, OpsFile, Seeds, op_key
+from camlab88.apps.kas.paint.palette import Palette
+from camlab88.base.atomicfile import write_atomic
 
 MAGIC = "KAS paint 1"
 _TOKEN = re.compile(r"\S+")

@@ -13,12 +13,17 @@ plane cleared (``KW80 DA``).
 from __future__ import annotations
 
 import numpy as np
-
-from apps.kas.paint import occlusion
-from apps.kas.paint.autopaint import FramePlan, Step
-from apps.kas.paint.outlines import Run
-from apps.kas.paint.planes import ALL_PLANES, FILL_MASK, HIGHLIGHT, OUTLINE_MASK, OUTLINE_SHIFT
-from protocols.sigma import Encoder
+from camlab88.apps.kas.paint import occlusion
+from camlab88.apps.kas.paint.autopaint import FramePlan, Step
+from camlab88.apps.kas.paint.outlines import Run
+from camlab88.apps.kas.paint.planes import (
+    ALL_PLANES,
+    FILL_MASK,
+    HIGHLIGHT,
+    OUTLINE_MASK,
+    OUTLINE_SHIFT,
+)
+from camlab88.protocols.sigma import Encoder
 
 
 def poly(enc: Encoder, px: np.ndarray, origin: tuple[int, int]) -> bytes:

@@ -10,11 +10,10 @@ from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
-
-from apps.kas.model import PALETTE, AnimSequence, Drawing
-from apps.kas.paint import areas
-from apps.kas.paint.planes import RGB
-from apps.kas.pens import pen_slots
+from camlab88.apps.kas.model import PALETTE, AnimSequence, Drawing
+from camlab88.apps.kas.paint import areas
+from camlab88.apps.kas.paint.planes import RGB
+from camlab88.apps.kas.pens import pen_slots
 
 
 @dataclass(frozen=True)

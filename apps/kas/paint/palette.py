@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from apps.kas.paint.planes import MAX_FILL_COLOURS, RGB
+from camlab88.apps.kas.paint.planes import MAX_FILL_COLOURS, RGB
 
 # Reconstructed: the thesis gives no default palette.  Entry 0 is the unpainted paper
 # (black, like KAS's drawing background); then flat cartoon colours, light and dark pairs.

@@ -11,13 +11,12 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-
-from apps.kas.model import AnimSequence
-from apps.kas.paint import areas, mixing, orders, outlines, planes
-from apps.kas.paint.autopaint import AutoPainter, FramePlan
-from apps.kas.paint.ops import OpsFile
-from protocols.link.port import BatchLink
-from protocols.sigma import Encoder
+from camlab88.apps.kas.model import AnimSequence
+from camlab88.apps.kas.paint import areas, mixing, orders, outlines, planes
+from camlab88.apps.kas.paint.autopaint import AutoPainter, FramePlan
+from camlab88.apps.kas.paint.ops import OpsFile
+from camlab88.protocols.link.port import BatchLink
+from camlab88.protocols.sigma import Encoder
 
 HIGHLIGHT_RGB = (255, 0, 255)  # reconstructed: any colour unlike the pens; magenta
 

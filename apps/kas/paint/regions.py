@@ -18,9 +18,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.kas.model import Drawing
-from apps.kas.paint import areas, seeds, shape, vector
+from camlab88.apps.kas.model import Drawing
+from camlab88.apps.kas.paint import areas, seeds, shape, vector
 
 BINS = 32          # stretches per chain in a signature
 AGREE = 0.3        # least Jaccard agreement of signatures to accept a face

@@ -16,12 +16,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
-
-from apps.kas.paint.areas import BUFFERS
-from apps.kas.paint.autopaint import Failure
-from apps.kas.paint.program import Line, PaintProgram
-from base.atomicfile import write_atomic
-from protocols.link.port import HostPort
+from camlab88.apps.kas.paint.areas import BUFFERS
+from camlab88.apps.kas.paint.autopaint import Failure
+from camlab88.apps.kas.paint.program import Line, PaintProgram
+from camlab88.base.atomicfile import write_atomic
+from camlab88.protocols.link.port import HostPort
 
 
 @dataclass
@@ -77,8 +76,8 @@ def write_frames(images: list[np.ndarray], out_dir: str | os.PathLike[str]) -> l
 
 def write_movie(images: list[np.ndarray], out: str | os.PathLike[str], fps: float) -> Path:
     """A GIF or MP4 of the frames (MP4 through imageio-ffmpeg), written atomically."""
-    from apps.kas.export import export
-    from apps.kas.model import AnimSequence, Drawing
+    from camlab88.apps.kas.export import export
+    from camlab88.apps.kas.model import AnimSequence, Drawing
 
     frames = [Drawing() for _ in images]
     by_id = {id(f): img for f, img in zip(frames, images, strict=True)}

@@ -13,8 +13,8 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from apps.kas.paint.palette import GUNS
-from apps.kas.paint.session import VIEWS, PaintSession
+from camlab88.apps.kas.paint.palette import GUNS
+from camlab88.apps.kas.paint.session import VIEWS, PaintSession
 
 ARGS = {"colour": "i", "select": "ff", "fill": "", "line": "", "clear": "", "region": "ff",
         "touch": "ff", "rgb": "gi", "mix": "m", "show": "v", "frame": "i", "autopaint": ""}

@@ -18,8 +18,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.kas.paint import kernels, vector
+from camlab88.apps.kas.paint import kernels, vector
 
 DEEP = 6  # chamfer units (3 a pixel): two pixels from the wall is a real face, not a pocket
 

@@ -12,11 +12,11 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from apps.kas.model import AnimSequence
-from apps.kas.paint import areas, mixing, orders, outlines
-from apps.kas.paint.autopaint import Failure, Step
-from apps.kas.paint.ops import Op, OpsFile
-from apps.kas.paint.program import PaintProgram, nearest_chain
+from camlab88.apps.kas.model import AnimSequence
+from camlab88.apps.kas.paint import areas, mixing, orders, outlines
+from camlab88.apps.kas.paint.autopaint import Failure, Step
+from camlab88.apps.kas.paint.ops import Op, OpsFile
+from camlab88.apps.kas.paint.program import PaintProgram, nearest_chain
 
 VIEWS = {"painting": areas.PAINTING.view, "mixing": areas.MIXING.view,
          "preview": areas.PREVIEW}

@@ -8,12 +8,12 @@ to date (the caller sends them when the line has drained, so updates coalesce).
 
 from __future__ import annotations
 
-from apps.kas.program import layout as L
-from apps.kas.program.draw import Painter, Prim
-from apps.kas.program.keyboard import bytes_to_keys
-from apps.quitting import QUIT_QUESTION, AsksBeforeQuitting
-from protocols.sigma import Encoder
-from protocols.tablets.input_layer import PointerEvent
+from camlab88.apps.kas.program import layout as L
+from camlab88.apps.kas.program.draw import Painter, Prim
+from camlab88.apps.kas.program.keyboard import bytes_to_keys
+from camlab88.apps.quitting import QUIT_QUESTION, AsksBeforeQuitting
+from camlab88.protocols.sigma import Encoder
+from camlab88.protocols.tablets.input_layer import PointerEvent
 
 
 def setup_bytes(enc: Encoder, lut: list[tuple[int, int, int]], cursor: bool = True) -> bytes:

@@ -14,15 +14,15 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from fractions import Fraction
 
-from apps.kas import demo as kas_demo
-from apps.kas import files
-from apps.kas.editor import Editor
-from apps.kas.library import LIBRARY
-from apps.kas.program.editor_front import EditorFront
-from apps.kas.program.script import Session, parse_timed_script
-from apps.kas.program.viewer import LineTest, ViewerReport
-from protocols.link import LineSettings
-from protocols.link.host_only import HostOnlyLine
+from camlab88.apps.kas import demo as kas_demo
+from camlab88.apps.kas import files
+from camlab88.apps.kas.editor import Editor
+from camlab88.apps.kas.library import LIBRARY
+from camlab88.apps.kas.program.editor_front import EditorFront
+from camlab88.apps.kas.program.script import Session, parse_timed_script
+from camlab88.apps.kas.program.viewer import LineTest, ViewerReport
+from camlab88.protocols.link import LineSettings
+from camlab88.protocols.link.host_only import HostOnlyLine
 
 PAUSE = Fraction(2)  # seconds of line time between the editor and the viewer
 TICK = Fraction(1, 100)  # the editor session's polling period

@@ -16,9 +16,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
-
-from apps.kas.program.layout import BG, CHAR_H, CHAR_W, SCREEN_H, SCREEN_W
-from protocols.sigma import Encoder
+from camlab88.apps.kas.program.layout import BG, CHAR_H, CHAR_W, SCREEN_H, SCREEN_W
+from camlab88.protocols.sigma import Encoder
 
 Box = tuple[int, int, int, int]  # x0, y0, x1, y1 inclusive
 

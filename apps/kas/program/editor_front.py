@@ -1,4 +1,4 @@
-"""The keyframe editor on the Sigma (§3.1.1): ``apps.kas.editor.Editor`` behind a screen.
+"""The keyframe editor on the Sigma (§3.1.1): ``camlab88.apps.kas.editor.Editor`` behind a screen.
 
 Stylus events become ``Pointer`` events in screen field inches (a touch in the menu row picks
 a menu item, as the model already knows); keyboard bytes become ``Key`` events; F2 saves
@@ -9,13 +9,13 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from apps.kas.editor import Editor
-from apps.kas.events import Key, Pointer
-from apps.kas.model import Drawing
-from apps.kas.program import layout as L
-from apps.kas.program.base import Front
-from apps.kas.program.draw import Prim
-from apps.kas.program.screen import dim_pens, editor_prims
+from camlab88.apps.kas.editor import Editor
+from camlab88.apps.kas.events import Key, Pointer
+from camlab88.apps.kas.model import Drawing
+from camlab88.apps.kas.program import layout as L
+from camlab88.apps.kas.program.base import Front
+from camlab88.apps.kas.program.draw import Prim
+from camlab88.apps.kas.program.screen import dim_pens, editor_prims
 
 
 class EditorFront(Front):

@@ -3,7 +3,7 @@ parsing it whole: for saving a file into the user library."""
 
 from __future__ import annotations
 
-from apps.kas import files
+from camlab88.apps.kas import files
 
 KINDS = {"keyframe": files.parse_keyframe, "sequence": files.parse_sequence,
          "path": files.parse_path, "timing": files.parse_timing}

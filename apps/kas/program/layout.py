@@ -8,8 +8,8 @@ screen (16" x 10.67" at the same scale), so the menu is "at the top of the table
 
 from __future__ import annotations
 
-from apps.kas.model import FIELD_H, FIELD_W, PALETTE
-from protocols.tablets.input_layer import WorkingArea
+from camlab88.apps.kas.model import FIELD_H, FIELD_W, PALETTE
+from camlab88.protocols.tablets.input_layer import WorkingArea
 
 SCREEN_W, SCREEN_H = 768, 512
 SCALE = 48.0                      # pixels per inch of the twelve-field

@@ -2,7 +2,7 @@
 
 Both keyframes superimposed in different colours (first cyan, second magenta), the previous
 pair's path in blue (for continuity), the path being drawn in yellow and the tick marks as
-small white crosses.  ``apps.kas.path_editor.PathEditor`` is the model; F2 saves through
+small white crosses.  ``camlab88.apps.kas.path_editor.PathEditor`` is the model; F2 saves through
 ``on_save(path, timing)``.
 """
 
@@ -11,14 +11,13 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import numpy as np
-
-from apps.kas.events import Key, Pointer
-from apps.kas.files import SamplePath, Timing
-from apps.kas.path_editor import PathEditor
-from apps.kas.program import layout as L
-from apps.kas.program.base import Front
-from apps.kas.program.draw import Prim, chain_prims, poly, text
-from apps.kas.program.screen import FIELD_CLIP, field_marks
+from camlab88.apps.kas.events import Key, Pointer
+from camlab88.apps.kas.files import SamplePath, Timing
+from camlab88.apps.kas.path_editor import PathEditor
+from camlab88.apps.kas.program import layout as L
+from camlab88.apps.kas.program.base import Front
+from camlab88.apps.kas.program.draw import Prim, chain_prims, poly, text
+from camlab88.apps.kas.program.screen import FIELD_CLIP, field_marks
 
 ROLE_COLOUR = {"first": 6, "second": 7, "previous-path": 4, "path": 5, "tick": 1}
 LEGEND = ["SAMPLE PATH", "cyan  first key", "mgnta second key", "blue  previous path",

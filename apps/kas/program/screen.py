@@ -12,11 +12,10 @@ touches the picture in the planes.
 from __future__ import annotations
 
 import numpy as np
-
-from apps.kas.editor import KEYS, Editor, menu_layout
-from apps.kas.model import FIELD_H, FIELD_W, NINE_H, NINE_W, PENS
-from apps.kas.program import layout as L
-from apps.kas.program.draw import Prim, chain_prims, poly, rect, text
+from camlab88.apps.kas.editor import KEYS, Editor, menu_layout
+from camlab88.apps.kas.model import FIELD_H, FIELD_W, NINE_H, NINE_W, PENS
+from camlab88.apps.kas.program import layout as L
+from camlab88.apps.kas.program.draw import Prim, chain_prims, poly, rect, text
 
 FIELD_CLIP = (L.FIELD_X0, L.FIELD_Y0, L.FIELD_X1, L.FIELD_Y1)
 MENU_LABELS = {"undo": "UND", "undo-chain": "UCH", "undo-section": "USC", "edit": "EDT",

@@ -31,13 +31,13 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any, Protocol
 
-from apps.kas.events import TIME_WORD
-from apps.kas.files import KasFileError
-from apps.kas.program import layout as L
-from apps.kas.program.base import Front
-from apps.kas.program.keyboard import key_to_bytes
-from protocols.link.port import HostPort
-from protocols.tablets.input_layer import InputLayer, MouseSample
+from camlab88.apps.kas.events import TIME_WORD
+from camlab88.apps.kas.files import KasFileError
+from camlab88.apps.kas.program import layout as L
+from camlab88.apps.kas.program.base import Front
+from camlab88.apps.kas.program.keyboard import key_to_bytes
+from camlab88.protocols.link.port import HostPort
+from camlab88.protocols.tablets.input_layer import InputLayer, MouseSample
 
 DEFAULT_STEP = Fraction(1, 50)
 MAX_TIME = 10**6  # seconds: a script time beyond this is a typing error
@@ -65,7 +65,7 @@ def _time(tok: str, prev: Fraction) -> Fraction:
 
 def parse_timed_script(text: str, name: str = "<script>") -> list[TimedEvent]:
     """Events of a script (format above); a bad line raises KasFileError naming the line."""
-    from apps.kas.editor import menu_layout
+    from camlab88.apps.kas.editor import menu_layout
 
     boxes = {item: ((x0 + x1) / 2, (y0 + y1) / 2) for item, x0, y0, x1, y1 in menu_layout()}
     out: list[TimedEvent] = []
@@ -201,7 +201,7 @@ class Session:
 
 def load_timed_script(path: Any) -> list[TimedEvent]:
     """Read and parse a script file; an unreadable or non-UTF-8 file names the file."""
-    from base.textinput import InputError, read_text
+    from camlab88.base.textinput import InputError, read_text
 
     try:  # a directory, an unreadable file or a bad byte: named with its line and column
         text = read_text(path)

@@ -12,13 +12,12 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 
 import numpy as np
-
-from apps.kas.model import AnimSequence
-from apps.kas.program import layout as L
-from apps.kas.program.base import Front
-from apps.kas.program.draw import Prim, chain_prims, text
-from apps.kas.program.screen import FIELD_CLIP, field_marks
-from apps.kas.superimpose import superimpose
+from camlab88.apps.kas.model import AnimSequence
+from camlab88.apps.kas.program import layout as L
+from camlab88.apps.kas.program.base import Front
+from camlab88.apps.kas.program.draw import Prim, chain_prims, text
+from camlab88.apps.kas.program.screen import FIELD_CLIP, field_marks
+from camlab88.apps.kas.superimpose import superimpose
 
 
 class SuperimposeFront(Front):

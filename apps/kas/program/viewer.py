@@ -21,7 +21,7 @@ Real time: the program keeps period-line time from the moment it starts sending 
 frame.  When a frame has been drawn it sends the swap so that it arrives no earlier than the
 frame's due time, then sends the frame due *now* (or the next one if that is already shown);
 frames passed over are dropped.  All on the line's virtual clock, so the counts are exactly
-``apps.kas.viewer_schedule.realtime`` of the frame sizes.
+``camlab88.apps.kas.viewer_schedule.realtime`` of the frame sizes.
 """
 
 from __future__ import annotations
@@ -32,15 +32,14 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
-
-from apps.kas.model import FIELD_H, PALETTE, AnimSequence, Drawing
-from apps.kas.pens import pen_slots
-from apps.kas.program.base import setup_bytes
-from apps.kas.program.draw import chain_prims, encode
-from protocols.link import LineSettings
-from protocols.link.host_only import HostOnlyLine
-from protocols.link.port import HostPort
-from protocols.sigma import Encoder
+from camlab88.apps.kas.model import FIELD_H, PALETTE, AnimSequence, Drawing
+from camlab88.apps.kas.pens import pen_slots
+from camlab88.apps.kas.program.base import setup_bytes
+from camlab88.apps.kas.program.draw import chain_prims, encode
+from camlab88.protocols.link import LineSettings
+from camlab88.protocols.link.host_only import HostOnlyLine
+from camlab88.protocols.link.port import HostPort
+from camlab88.protocols.sigma import Encoder
 
 VIEW_SCALE = 512 / FIELD_H          # the twelve-field fills the screen's height
 VIEW_CLIP = (0, 0, 767, 511)
@@ -276,7 +275,7 @@ def run_line_test(seq: AnimSequence, mode: str = "realtime", baud: int = 9600,
 
 def still_bytes(frame: Drawing, background: str = "black") -> bytes:
     """One frame in full colour (all 4 planes, the editor's LUT): for exports and stills."""
-    from apps.kas.program.layout import lut_plan
+    from camlab88.apps.kas.program.layout import lut_plan
 
     enc = Encoder()
     out = bytearray(setup_bytes(enc, lut_plan(background), cursor=False) + enc.erase())

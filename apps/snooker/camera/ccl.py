@@ -6,10 +6,10 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from apps.snooker.camera.errors import CclError, CclErrors
-from apps.snooker.camera.interpreter import Interpretation, interpret
-from apps.snooker.camera.motion import Motion
-from apps.snooker.camera.parser import parse
+from camlab88.apps.snooker.camera.errors import CclError, CclErrors
+from camlab88.apps.snooker.camera.interpreter import Interpretation, interpret
+from camlab88.apps.snooker.camera.motion import Motion
+from camlab88.apps.snooker.camera.parser import parse
 
 
 def run(text: str, motion: Motion) -> Interpretation:

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import math
 
-from apps.snooker.camera.errors import CclError, did_you_mean
-from apps.snooker.camera.lexer import Token
+from camlab88.apps.snooker.camera.errors import CclError, did_you_mean
+from camlab88.apps.snooker.camera.lexer import Token
 
 COLOUR_WORDS = ("YELLOW", "GREEN", "BROWN", "BLUE", "PINK", "BLACK")
 SUBCOMMANDS = ("FROM", "UNTIL", "OBSERVER", "VIEWPOINT", "FOCAL", "CAMERA", "COORDS")

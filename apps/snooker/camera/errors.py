@@ -7,7 +7,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
-from base.suggest import close_names
+from camlab88.base.suggest import close_names
 
 
 @dataclass(frozen=True, order=True)

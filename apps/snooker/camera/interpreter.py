@@ -22,13 +22,12 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-
-from apps.snooker.camera import names, space
-from apps.snooker.camera.errors import CclError
-from apps.snooker.camera.motion import Motion
-from apps.snooker.camera.names import Unresolved, World
-from apps.snooker.camera.syntax import Command, Coord, CoordsDef, Focal, Name, Place, Time
-from apps.snooker.camera.views import View
+from camlab88.apps.snooker.camera import names, space
+from camlab88.apps.snooker.camera.errors import CclError
+from camlab88.apps.snooker.camera.motion import Motion
+from camlab88.apps.snooker.camera.names import Unresolved, World
+from camlab88.apps.snooker.camera.syntax import Command, Coord, CoordsDef, Focal, Name, Place, Time
+from camlab88.apps.snooker.camera.views import View
 
 
 @dataclass

@@ -9,7 +9,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from apps.snooker.camera.errors import CclError
+from camlab88.apps.snooker.camera.errors import CclError
 
 _TOKEN = re.compile(
     r"(?P<space>[ \t\r\n\f\v]+)"

@@ -27,11 +27,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-
-from apps.snooker import checkpoint as cpfile
-from apps.snooker.camera import space
-from apps.snooker.events import EventKind
-from apps.snooker.table import CUE, Table
+from camlab88.apps.snooker import checkpoint as cpfile
+from camlab88.apps.snooker.camera import space
+from camlab88.apps.snooker.events import EventKind
+from camlab88.apps.snooker.table import CUE, Table
 
 KICK_M = 1e-3  # a change of displacement per frame above this (0.025 m/s at 25/s) is a push
 CONTACT_SLACK = 0.25
@@ -123,7 +122,7 @@ def load(path: str | os.PathLike[str]) -> Motion:
     """A checkpoint file or a session file (JSON), told apart by the first character."""
     head = Path(path).read_bytes()[:256].lstrip() if Path(path).is_file() else b""
     if head.startswith(b"{"):
-        from apps.snooker.session import Session
+        from camlab88.apps.snooker.session import Session
 
         return from_session(Session.load(path))
     return from_checkpoint(cpfile.read(path))

@@ -5,12 +5,11 @@ the events a script can wait for.  Frames are numbered from 1 (motion.py)."""
 from __future__ import annotations
 
 import numpy as np
-
-from apps.snooker.camera import space
-from apps.snooker.camera.errors import CclError
-from apps.snooker.camera.motion import Motion
-from apps.snooker.camera.syntax import BallRef, Event, Simple
-from apps.snooker.table import CUE, REDS
+from camlab88.apps.snooker.camera import space
+from camlab88.apps.snooker.camera.errors import CclError
+from camlab88.apps.snooker.camera.motion import Motion
+from camlab88.apps.snooker.camera.syntax import BallRef, Event, Simple
+from camlab88.apps.snooker.table import CUE, REDS
 
 # Cameras at the start of day, in CCL's default space (+x towards the baulk cushion:
 # space.py).  Reconstructed: the thesis names "the default position of camera 1" as "a

@@ -8,17 +8,17 @@ BALL`` for CUEBALL, ``HIT BALL`` for HITBALL, ``START``/``STOP``/``STRIKE`` for
 
 from __future__ import annotations
 
-from apps.snooker.camera.cursor import (
+from camlab88.apps.snooker.camera.cursor import (
     COLOUR_WORDS,
     PLURAL,
     SUBCOMMANDS,
     Cursor,
     Fail,
 )
-from apps.snooker.camera.errors import CclError
-from apps.snooker.camera.lexer import Token, tokenize
-from apps.snooker.camera.projection import FOCAL_MAX_MM, FOCAL_MIN_MM
-from apps.snooker.camera.syntax import (
+from camlab88.apps.snooker.camera.errors import CclError
+from camlab88.apps.snooker.camera.lexer import Token, tokenize
+from camlab88.apps.snooker.camera.projection import FOCAL_MAX_MM, FOCAL_MIN_MM
+from camlab88.apps.snooker.camera.syntax import (
     BallRef,
     CameraDef,
     Command,

@@ -26,9 +26,8 @@ checkpoint parks potted balls behind their pocket) and is not drawn.
 from __future__ import annotations
 
 import numpy as np
-
-from apps.snooker.checkpoint import Checkpoint, to_metres
-from apps.snooker.table import BLACK, BLUE, BROWN, GREEN, PINK, YELLOW, Table
+from camlab88.apps.snooker.checkpoint import Checkpoint, to_metres
+from camlab88.apps.snooker.table import BLACK, BLUE, BROWN, GREEN, PINK, YELLOW, Table
 
 # CCL's colour names -> ball index (table.py order); CUEBALL is ball 0.
 COLOUR_BALLS: dict[str, int] = {

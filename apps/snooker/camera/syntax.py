@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from apps.snooker.camera.lexer import Token
+from camlab88.apps.snooker.camera.lexer import Token
 
 Vec = tuple[float, float, float]
 

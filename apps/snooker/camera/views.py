@@ -22,8 +22,8 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from apps.snooker.camera.projection import FOCAL_MAX_MM, FOCAL_MIN_MM, Camera
-from base.atomicfile import write_atomic
+from camlab88.apps.snooker.camera.projection import FOCAL_MAX_MM, FOCAL_MIN_MM, Camera
+from camlab88.base.atomicfile import write_atomic
 
 Vec3 = tuple[float, float, float]
 _TOKEN = re.compile(r"\S+")

@@ -6,10 +6,10 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from apps.snooker.camera.errors import CclError
-from apps.snooker.camera_tool import fit, layout
-from apps.snooker.camera_tool.editor import TextBuffer
-from protocols.rainbow.client import SCREEN, RainbowClient
+from camlab88.apps.snooker.camera.errors import CclError
+from camlab88.apps.snooker.camera_tool import fit, layout
+from camlab88.apps.snooker.camera_tool.editor import TextBuffer
+from camlab88.protocols.rainbow.client import SCREEN, RainbowClient
 
 SCRIPT_PAGE, INFO_PAGE, TIMELINE_PAGE, MARKER_PAGE = 2, 3, 4, 5
 SCRIPT_COLOURS = ["#101418", "#d8d8d0", "#601818", "#f0c000"]  # bg, text, error line, cursor

@@ -15,20 +15,20 @@ import os
 import textwrap
 from pathlib import Path
 
-from apps.snooker.camera import ccl
-from apps.snooker.camera.interpreter import Interpretation
-from apps.snooker.camera.motion import Motion, timeline_events
-from apps.snooker.camera.projection import Camera, CameraError
-from apps.snooker.camera.space import table_to_ccl
-from apps.snooker.camera_tool import layout
-from apps.snooker.camera_tool.editor import TextBuffer
-from apps.snooker.camera_tool.panes import InfoPane, ScriptPane, Timeline
-from apps.snooker.camera_tool.watch import FileWatch
-from apps.snooker.table import BALL_NAMES
-from apps.snooker.visualiser.display import ViewDisplay
-from base.atomicfile import write_atomic
-from protocols.rainbow.client import SCREEN, RainbowClient
-from protocols.rainbow.events import LEFT, KeyEvent, MouseEvent
+from camlab88.apps.snooker.camera import ccl
+from camlab88.apps.snooker.camera.interpreter import Interpretation
+from camlab88.apps.snooker.camera.motion import Motion, timeline_events
+from camlab88.apps.snooker.camera.projection import Camera, CameraError
+from camlab88.apps.snooker.camera.space import table_to_ccl
+from camlab88.apps.snooker.camera_tool import layout
+from camlab88.apps.snooker.camera_tool.editor import TextBuffer
+from camlab88.apps.snooker.camera_tool.panes import InfoPane, ScriptPane, Timeline
+from camlab88.apps.snooker.camera_tool.watch import FileWatch
+from camlab88.apps.snooker.table import BALL_NAMES
+from camlab88.apps.snooker.visualiser.display import ViewDisplay
+from camlab88.base.atomicfile import write_atomic
+from camlab88.protocols.rainbow.client import SCREEN, RainbowClient
+from camlab88.protocols.rainbow.events import LEFT, KeyEvent, MouseEvent
 
 VIEW_PAGE = 1
 DEVICE_FRAMES_PER_FRAME = 2  # 25 frames/s

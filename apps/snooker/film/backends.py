@@ -19,8 +19,8 @@ from collections.abc import Callable
 from concurrent.futures import Future, ProcessPoolExecutor
 from typing import Any, Protocol
 
-from apps.snooker.film.task import FrameTask, render_png
-from apps.snooker.render.scene import Scene
+from camlab88.apps.snooker.film.task import FrameTask, render_png
+from camlab88.apps.snooker.render.scene import Scene
 
 Render = Callable[[Scene, FrameTask], bytes]
 _WORKER_SCENE: Scene | None = None
@@ -121,7 +121,7 @@ class DaskCluster:
             # its workers ignore Ctrl-C (quiet_worker): the command answers it, in one line
             self._cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
                                          dashboard_address="127.0.0.1:0", host="127.0.0.1",
-                                         preload=["apps.snooker.film.quiet_worker"])
+                                         preload=["camlab88.apps.snooker.film.quiet_worker"])
             self._client = Client(self._cluster, timeout=timeout_s)
         else:
             self._client = Client(address, timeout=timeout_s)

@@ -8,12 +8,11 @@ import math
 from collections.abc import Iterator
 
 import numpy as np
-
-from apps.snooker.camera import ccl, motion
-from apps.snooker.film.task import FrameTask, render_image
-from apps.snooker.render.scene import Scene
-from apps.snooker.session import Session
-from apps.snooker.table import CUE
+from camlab88.apps.snooker.camera import ccl, motion
+from camlab88.apps.snooker.film.task import FrameTask, render_image
+from camlab88.apps.snooker.render.scene import Scene
+from camlab88.apps.snooker.session import Session
+from camlab88.apps.snooker.table import CUE
 
 SCRIPT = """:
 from frame 1 until cueball strikes;

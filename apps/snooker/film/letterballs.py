@@ -9,11 +9,10 @@ from __future__ import annotations
 from functools import lru_cache
 
 import numpy as np
-
-from apps.snooker.film.titles import TitleScene
-from apps.snooker.render.gamma import encode_image
-from apps.snooker.render.materials import BALL_PHONG
-from apps.snooker.render.pinhole import Pinhole
+from camlab88.apps.snooker.film.titles import TitleScene
+from camlab88.apps.snooker.render.gamma import encode_image
+from camlab88.apps.snooker.render.materials import BALL_PHONG
+from camlab88.apps.snooker.render.pinhole import Pinhole
 
 SUB = 3
 IVORY = np.array((0.78, 0.70, 0.52))
@@ -25,7 +24,7 @@ LETTER_HALF = 0.66  # the glyph's half height on the ball, in radii (seen face o
 @lru_cache(maxsize=64)
 def glyph(ch: str) -> np.ndarray:
     """(7, 5) bool: the character generator's glyph without its descender rows."""
-    from roms.sigma.chargen import load_font
+    from camlab88.roms.sigma.chargen import load_font
 
     return np.ascontiguousarray(load_font().glyph(ord(ch))[:7])
 

@@ -8,7 +8,7 @@ import os
 from collections.abc import Sequence
 from pathlib import Path
 
-from base.atomicfile import atomic_path
+from camlab88.base.atomicfile import atomic_path
 
 FPS = 25
 

@@ -8,13 +8,19 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from apps.snooker.camera import ccl, motion
-from apps.snooker.camera.views import View, write_views
-from apps.snooker.film.backends import Render, open_backend
-from apps.snooker.film.schedule import MANIFEST, FilmReport, Progress, frame_file, render_film
-from apps.snooker.film.task import FrameTask, render_png, scene_digest
-from apps.snooker.render.lights import Lights
-from apps.snooker.render.scene import Scene
+from camlab88.apps.snooker.camera import ccl, motion
+from camlab88.apps.snooker.camera.views import View, write_views
+from camlab88.apps.snooker.film.backends import Render, open_backend
+from camlab88.apps.snooker.film.schedule import (
+    MANIFEST,
+    FilmReport,
+    Progress,
+    frame_file,
+    render_film,
+)
+from camlab88.apps.snooker.film.task import FrameTask, render_png, scene_digest
+from camlab88.apps.snooker.render.lights import Lights
+from camlab88.apps.snooker.render.scene import Scene
 
 
 @dataclass(frozen=True)
@@ -83,14 +89,14 @@ def frame_files(frames_dir: Path, views: Sequence[View]) -> list[Path]:
 
 
 def scene_of(motion_path: str | os.PathLike[str], lights: Lights | None = None) -> Scene:
-    from apps.snooker.render.scene import load_scene
+    from camlab88.apps.snooker.render.scene import load_scene
 
     return load_scene(motion_path, lights)
 
 
 def title_film(word: str) -> tuple[Scene, list[View]]:
     """The §6.5 title shot spelling ``word`` and its (fixed) camera's views."""
-    from apps.snooker.film.titles import title_scene, title_views
+    from camlab88.apps.snooker.film.titles import title_scene, title_views
 
     scene, view = title_scene(word)
     return scene, title_views(scene, view)

@@ -22,10 +22,10 @@ from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from apps.snooker.film.backends import Backend
-from apps.snooker.film.pngcheck import png_size
-from apps.snooker.film.task import FrameTask, task_key
-from base.atomicfile import write_atomic
+from camlab88.apps.snooker.film.backends import Backend
+from camlab88.apps.snooker.film.pngcheck import png_size
+from camlab88.apps.snooker.film.task import FrameTask, task_key
+from camlab88.base.atomicfile import write_atomic
 
 
 class Manifest:

@@ -15,9 +15,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-
-from apps.snooker.render.scene import Scene
-from apps.snooker.render.specks import rolling_rotations
+from camlab88.apps.snooker.render.scene import Scene
+from camlab88.apps.snooker.render.specks import rolling_rotations
 
 RATE = 25.0  # the motion program's frames a second, and the film camera's (thesis 6.4)
 SHUTTER_S = 1.0 / 50.0

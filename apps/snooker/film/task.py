@@ -8,12 +8,11 @@ import hashlib
 from dataclasses import dataclass, fields
 
 import numpy as np
-
-from apps.snooker.film.shutter import SHUTTER_S, at_times, sample_offsets
-from apps.snooker.render.gamma import encode_image
-from apps.snooker.render.scene import Scene
-from apps.snooker.render.truecolour import RenderOptions, render_linear
-from base.png import png_bytes
+from camlab88.apps.snooker.film.shutter import SHUTTER_S, at_times, sample_offsets
+from camlab88.apps.snooker.render.gamma import encode_image
+from camlab88.apps.snooker.render.scene import Scene
+from camlab88.apps.snooker.render.truecolour import RenderOptions, render_linear
+from camlab88.base.png import png_bytes
 
 
 @dataclass(frozen=True)
@@ -33,10 +32,10 @@ class FrameTask:
 
 def render_image(scene: Scene, task: FrameTask) -> np.ndarray:
     """(H, W, 3) uint8, row 0 = top."""
-    from apps.snooker.film.titles import TitleScene
+    from camlab88.apps.snooker.film.titles import TitleScene
 
     if isinstance(scene, TitleScene):  # §6.5: the table invisible, letters on the balls
-        from apps.snooker.film.letterballs import render_title
+        from camlab88.apps.snooker.film.letterballs import render_title
 
         return render_title(scene, task.view, task.frame, task.width, task.height)
     opts = RenderOptions(task.width, task.height, task.specks, task.shadows, task.wood)

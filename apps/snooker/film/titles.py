@@ -18,11 +18,10 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-
-from apps.snooker.camera.views import View
-from apps.snooker.render.scene import Scene
-from apps.snooker.session import Session
-from apps.snooker.table import Table
+from camlab88.apps.snooker.camera.views import View
+from camlab88.apps.snooker.render.scene import Scene
+from camlab88.apps.snooker.session import Session
+from camlab88.apps.snooker.table import Table
 
 WORD = "CAMLAB88"
 BALL_DIAMETER_M = 0.30  # "larger than usual": about six times a snooker ball
@@ -84,7 +83,7 @@ def title_scene(word: str = WORD, view: View | None = None) -> tuple[TitleScene,
 
 def _faces(scene: Scene, view: View) -> np.ndarray:
     """Letters placed so that, in the last frame, each faces the observer upright."""
-    from apps.snooker.render.pinhole import Pinhole
+    from camlab88.apps.snooker.render.pinhole import Pinhole
 
     pin = Pinhole.of(np.asarray(view.observer), np.asarray(view.viewpoint), view.focal_mm,
                      640, 480)

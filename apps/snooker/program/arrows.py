@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from apps.snooker.program.layout import TableView
+from camlab88.apps.snooker.program.layout import TableView
 
 PX_PER_M_S = 40.0  # a 5 m/s break-off is a 200-pixel arrow
 SPIN_PX_PER_M_S = 60.0

@@ -12,9 +12,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from apps.snooker.table import Table
-from protocols.rainbow.client import RainbowClient
-from protocols.rainbow.ui import PopupMenu
+from camlab88.apps.snooker.table import Table
+from camlab88.protocols.rainbow.client import RainbowClient
+from camlab88.protocols.rainbow.ui import PopupMenu
 
 KEY = "t"
 BALL_SIZE = "Ball size"

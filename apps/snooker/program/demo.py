@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-from apps.snooker.layout import break_off_direction
-from apps.snooker.program.program import Program
-from apps.snooker.session import Session
-from apps.snooker.table import CUE
-from protocols.rainbow.client import RainbowClient
+from camlab88.apps.snooker.layout import break_off_direction
+from camlab88.apps.snooker.program.program import Program
+from camlab88.apps.snooker.session import Session
+from camlab88.apps.snooker.table import CUE
+from camlab88.protocols.rainbow.client import RainbowClient
 
 
 def break_session(speed_m_s: float = 7.0) -> Session:

@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from apps.snooker.table import Table
+from camlab88.apps.snooker.table import Table
 
 SCREEN_W, SCREEN_H = 768, 576
 

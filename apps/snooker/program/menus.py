@@ -10,8 +10,8 @@ The item texts are the thesis's own, unabridged; the menu is as wide as its long
 
 from __future__ import annotations
 
-from protocols.rainbow.client import RainbowClient
-from protocols.rainbow.ui import PopupMenu
+from camlab88.protocols.rainbow.client import RainbowClient
+from camlab88.protocols.rainbow.ui import PopupMenu
 
 ALTER_FRAME = "Alter a different frame"
 EXIT = "Exit from the program"

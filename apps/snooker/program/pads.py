@@ -14,12 +14,11 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-
-from apps.snooker.program import layout
-from apps.snooker.program.layout import TableView
-from apps.snooker.table import BROWN, N_BALLS, is_red
-from protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
-from protocols.rainbow.ui import DoubleBuffer, MessageArea
+from camlab88.apps.snooker.program import layout
+from camlab88.apps.snooker.program.layout import TableView
+from camlab88.apps.snooker.table import BROWN, N_BALLS, is_red
+from camlab88.protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
+from camlab88.protocols.rainbow.ui import DoubleBuffer, MessageArea
 
 PAGE = 1
 # table pad values

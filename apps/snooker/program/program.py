@@ -19,12 +19,11 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
-
-from apps.snooker import aiming
-from apps.snooker.events import EventKind
-from apps.snooker.program import arrows, constants, layout, menus
-from apps.snooker.program.layout import TableView
-from apps.snooker.program.pads import (
+from camlab88.apps.snooker import aiming
+from camlab88.apps.snooker.events import EventKind
+from camlab88.apps.snooker.program import arrows, constants, layout, menus
+from camlab88.apps.snooker.program.layout import TableView
+from camlab88.apps.snooker.program.pads import (
     DOTS,
     MAGENTA,
     MOVING,
@@ -33,12 +32,12 @@ from apps.snooker.program.pads import (
     Display,
     Overlay,
 )
-from apps.snooker.rules import describe_on
-from apps.snooker.session import Session, SessionError
-from apps.snooker.state import effective_velocity
-from apps.snooker.table import BALL_NAMES, CUE, cushion_sides
-from protocols.rainbow.client import RainbowClient
-from protocols.rainbow.events import LEFT, MIDDLE, Event, KeyEvent, MouseEvent
+from camlab88.apps.snooker.rules import describe_on
+from camlab88.apps.snooker.session import Session, SessionError
+from camlab88.apps.snooker.state import effective_velocity
+from camlab88.apps.snooker.table import BALL_NAMES, CUE, cushion_sides
+from camlab88.protocols.rainbow.client import RainbowClient
+from camlab88.protocols.rainbow.events import LEFT, MIDDLE, Event, KeyEvent, MouseEvent
 
 MAGNIFY = 4  # left button: mouse movement x4 (§6.2.1)
 REPEAT_DELAY, REPEAT_EVERY = 12, 2  # auto-repeat in display frames

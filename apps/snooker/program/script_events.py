@@ -4,6 +4,6 @@ protocols.rainbow.script (``move``, ``glide``, ``press``, ``release``, ``click``
 
 from __future__ import annotations
 
-from protocols.rainbow.script import Player, Script, ScriptError, load, parse
+from camlab88.protocols.rainbow.script import Player, Script, ScriptError, load, parse
 
 __all__ = ["Player", "Script", "ScriptError", "load", "parse"]

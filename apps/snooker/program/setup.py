@@ -7,8 +7,8 @@ import dataclasses
 import os
 from pathlib import Path
 
-from apps.snooker.session import Session, check_table
-from apps.snooker.table import Table
+from camlab88.apps.snooker.session import Session, check_table
+from camlab88.apps.snooker.table import Table
 
 
 def table_with(changes: list[tuple[str, str]]) -> Table:

@@ -12,8 +12,7 @@ the figure's numbers copied. The layout, colours and captions are ours.
 from __future__ import annotations
 
 import numpy as np
-
-from protocols.sigma import Encoder
+from camlab88.protocols.sigma import Encoder
 
 EDGE = ((0.0, 4.2), (4.0, 1.0))  # figure units: pixel (col, row), row 0 at the top
 CELL = 48                        # screen pixels a figure pixel
@@ -32,7 +31,7 @@ def edge_y(x: np.ndarray | float) -> np.ndarray | float:
 def grids() -> tuple[np.ndarray, np.ndarray]:
     """(binary, grey) 4 x 4, row 0 at the top: the polygon above the edge (white), sampled
     at pixel centres, and its coverage by the renderer's kernel in 16 levels."""
-    from apps.snooker.render import kernels as K
+    from camlab88.apps.snooker.render import kernels as K
 
     verts = np.array([[-10.0, -10.0], [14.0, -10.0], [14.0, edge_y(14.0)],
                       [-10.0, edge_y(-10.0)]])

@@ -3,11 +3,10 @@
 from __future__ import annotations
 
 import numpy as np
-
-from apps.snooker.render import kernels as K
-from apps.snooker.render.lights import Lights
-from apps.snooker.render.materials import BALL_PHONG, SPECK_ALBEDO, Phong
-from apps.snooker.render.specks import SPECK_RADIUS_RAD
+from camlab88.apps.snooker.render import kernels as K
+from camlab88.apps.snooker.render.lights import Lights
+from camlab88.apps.snooker.render.materials import BALL_PHONG, SPECK_ALBEDO, Phong
+from camlab88.apps.snooker.render.specks import SPECK_RADIUS_RAD
 
 SPECK_MIX = 0.15
 

@@ -6,10 +6,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.snooker.render.painter import Item, plan
-from apps.snooker.render.pinhole import Pinhole
-from apps.snooker.render.scene import Scene
+from camlab88.apps.snooker.render.painter import Item, plan
+from camlab88.apps.snooker.render.pinhole import Pinhole
+from camlab88.apps.snooker.render.scene import Scene
 
 NEAR_CLIP_M = 0.01  # faces are cut at 1 cm in front of the observer (nothing behind it shows)
 

@@ -21,7 +21,7 @@ def encode(linear: np.ndarray) -> np.ndarray:
 def encode_image(linear: np.ndarray) -> np.ndarray:
     """encode() for a whole (H, W, 3) float64 picture, in one compiled pass (measured:
     about a sixth of the numpy version's time at 768 x 512, docs/perf/render.md)."""
-    from apps.snooker.render.kernels import encode as kernel
+    from camlab88.apps.snooker.render.kernels import encode as kernel
 
     out = np.empty(linear.shape, dtype=np.uint8)
     kernel(out, np.ascontiguousarray(linear, dtype=np.float64), _TABLE)

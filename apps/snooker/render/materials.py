@@ -9,8 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.snooker.table import N_BALLS
+from camlab88.apps.snooker.table import N_BALLS
 
 
 @dataclass(frozen=True)

@@ -12,10 +12,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.snooker.render.colour import delta_e, lab
-from apps.snooker.render.gamma import decode, encode
-from apps.snooker.render.palette import Palette
+from camlab88.apps.snooker.render.colour import delta_e, lab
+from camlab88.apps.snooker.render.gamma import decode, encode
+from camlab88.apps.snooker.render.palette import Palette
 
 
 @dataclass(frozen=True)

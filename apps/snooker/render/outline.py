@@ -5,8 +5,7 @@ coverage of each edge pixel by the polygon."""
 from __future__ import annotations
 
 import numpy as np
-
-from apps.snooker.render import kernels as K
+from camlab88.apps.snooker.render import kernels as K
 
 
 def clip_to_screen(xy: np.ndarray, width: int, height: int) -> np.ndarray:

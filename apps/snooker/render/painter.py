@@ -15,13 +15,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.snooker.render.lights import Lights
-from apps.snooker.render.materials import BALL_ALBEDO, SURFACES
-from apps.snooker.render.scene import Scene
-from apps.snooker.render.shading import constant_colour, light_terms
-from apps.snooker.render.shadows import ball_shadow_ellipses, cushion_shadow_polygons
-from apps.snooker.render.tablemodel import OUTWARD, SIDES, Face, table_faces
+from camlab88.apps.snooker.render.lights import Lights
+from camlab88.apps.snooker.render.materials import BALL_ALBEDO, SURFACES
+from camlab88.apps.snooker.render.scene import Scene
+from camlab88.apps.snooker.render.shading import constant_colour, light_terms
+from camlab88.apps.snooker.render.shadows import ball_shadow_ellipses, cushion_shadow_polygons
+from camlab88.apps.snooker.render.tablemodel import OUTWARD, SIDES, Face, table_faces
 
 
 @dataclass(frozen=True, eq=False)

@@ -16,13 +16,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.snooker.render.colour import lab, lab_to_linear
-from apps.snooker.render.gamma import encode
-from apps.snooker.render.materials import BACKGROUND, BALL_ALBEDO, SURFACES
-from apps.snooker.render.scene import Scene
-from apps.snooker.render.shading import constant_colour, light_terms
-from apps.snooker.render.tablemodel import SIDES, table_faces
+from camlab88.apps.snooker.render.colour import lab, lab_to_linear
+from camlab88.apps.snooker.render.gamma import encode
+from camlab88.apps.snooker.render.materials import BACKGROUND, BALL_ALBEDO, SURFACES
+from camlab88.apps.snooker.render.scene import Scene
+from camlab88.apps.snooker.render.shading import constant_colour, light_terms
+from camlab88.apps.snooker.render.tablemodel import SIDES, table_faces
 
 SIZE = 256
 _CHUNK = 8192

@@ -1,11 +1,12 @@
 """The perspective the renderer draws with: the camera's projection, as a pinhole.
 
 Rendering needs the inverse too (a ray through every pixel, for shadows on the baize and the
-light and eye directions across a surface), so the camera of ``apps.snooker.camera.projection``
-is turned into its basis, focal length in pixels and picture centre. Projecting through the
-``Pinhole`` gives the same pixels as ``project`` (tests/snooker_render/test_pinhole.py), so
-ball centres land where the visualiser puts them (thesis 6.4: "the view produced should agree
-exactly with the view predicted as part of the camera definition stage").
+light and eye directions across a surface), so the camera of
+``camlab88.apps.snooker.camera.projection`` is turned into its basis, focal length in pixels
+and picture centre. Projecting through the ``Pinhole`` gives the same pixels as ``project``
+(tests/snooker_render/test_pinhole.py), so ball centres land where the visualiser puts them
+(thesis 6.4: "the view produced should agree exactly with the view predicted as part of the
+camera definition stage").
 """
 
 from __future__ import annotations
@@ -13,8 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.snooker.camera.projection import (
+from camlab88.apps.snooker.camera.projection import (
     NEAR_M,
     Camera,
     camera_basis,

@@ -12,13 +12,12 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 import numpy as np
-
-from apps.snooker import checkpoint as ckpt
-from apps.snooker.camera import motion
-from apps.snooker.camera.space import checkpoint_centres
-from apps.snooker.render.lights import Lights, canopy
-from apps.snooker.render.specks import orientations
-from apps.snooker.table import Table
+from camlab88.apps.snooker import checkpoint as ckpt
+from camlab88.apps.snooker.camera import motion
+from camlab88.apps.snooker.camera.space import checkpoint_centres
+from camlab88.apps.snooker.render.lights import Lights, canopy
+from camlab88.apps.snooker.render.specks import orientations
+from camlab88.apps.snooker.table import Table
 
 
 @dataclass(frozen=True, eq=False)

@@ -13,13 +13,12 @@ from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.snooker.render.palette import Palette, adaptive_palette, fixed_palette
-from apps.snooker.render.scene import Scene
-from apps.snooker.render.sigma_host import SCREEN_H, SCREEN_W, SigmaHost
-from apps.snooker.render.sigma_session import SigmaSession
-from apps.snooker.render.truecolour import RenderOptions, render_frame, render_linear
-from protocols.link.port import BatchLink
+from camlab88.apps.snooker.render.palette import Palette, adaptive_palette, fixed_palette
+from camlab88.apps.snooker.render.scene import Scene
+from camlab88.apps.snooker.render.sigma_host import SCREEN_H, SCREEN_W, SigmaHost
+from camlab88.apps.snooker.render.sigma_session import SigmaSession
+from camlab88.apps.snooker.render.truecolour import RenderOptions, render_frame, render_linear
+from camlab88.protocols.link.port import BatchLink
 
 MODES = ("period", "fixed", "adapted", "truecolour")
 PALETTES = ("fixed", "adaptive")

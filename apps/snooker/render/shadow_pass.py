@@ -4,10 +4,14 @@ and the Sigma host (thesis 6.4.1: per light, ball ellipses and the cushions' sha
 from __future__ import annotations
 
 import numpy as np
-
-from apps.snooker.render import kernels as K
-from apps.snooker.render.frame import FrameGeometry, camera_params, clip_project, shadow_boxes
-from apps.snooker.render.painter import ShadowItem
+from camlab88.apps.snooker.render import kernels as K
+from camlab88.apps.snooker.render.frame import (
+    FrameGeometry,
+    camera_params,
+    clip_project,
+    shadow_boxes,
+)
+from camlab88.apps.snooker.render.painter import ShadowItem
 
 
 def shadow_occlusion(g: FrameGeometry, item: ShadowItem, height: int, width: int

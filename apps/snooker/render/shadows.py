@@ -12,9 +12,8 @@ the light above the horizontal, seen from the ball's centre).
 from __future__ import annotations
 
 import numpy as np
-
-from apps.snooker.render.clip import clip_box
-from apps.snooker.render.tablemodel import CUSHION_H_M, OUTWARD, SIDES
+from camlab88.apps.snooker.render.clip import clip_box
+from camlab88.apps.snooker.render.tablemodel import CUSHION_H_M, OUTWARD, SIDES
 
 
 def ball_shadow_ellipses(centres: np.ndarray, radius: float,

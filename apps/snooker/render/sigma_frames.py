@@ -14,8 +14,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
-
-from protocols.link.port import BatchLink
+from camlab88.protocols.link.port import BatchLink
 
 LinkFactory = Callable[[], BatchLink]
 
@@ -35,8 +34,8 @@ class SigmaFrames:
     link: LinkFactory | None = field(default=None, repr=False, compare=False)
 
     def __call__(self, scene, task) -> bytes:
-        from apps.snooker.render.sequence import render_sequence
-        from base.png import png_bytes
+        from camlab88.apps.snooker.render.sequence import render_sequence
+        from camlab88.base.png import png_bytes
 
         f = next(render_sequence(scene, [task.view], self.mode, (768, 512), self.palette,
                                  self.link, self.specks))
@@ -62,8 +61,8 @@ def render_staged(scene, views: Sequence, out: Path, mode: str, size: tuple[int,
                   show: Callable[[int, int], None] | None = None) -> LineTotals:
     """Every view on one T5688, frame after frame; each PNG goes to a staging directory in
     ``out`` first and all are moved into place at the end (nothing half-written)."""
-    from apps.snooker.render.sequence import render_sequence
-    from base.png import frame_path, write_png
+    from camlab88.apps.snooker.render.sequence import render_sequence
+    from camlab88.base.png import frame_path, write_png
 
     out.mkdir(parents=True, exist_ok=True)
     stage = Path(tempfile.mkdtemp(prefix=".render-", dir=out))
@@ -87,9 +86,9 @@ def render_staged(scene, views: Sequence, out: Path, mode: str, size: tuple[int,
 def record(scene, views: Sequence, out: Path, render: SigmaFrames, name: str) -> None:
     """The frames just drawn, in the resume record ``out/name`` (a parallel rerun skips
     them)."""
-    from apps.snooker.film.pipeline import FilmLook, film_digest
-    from apps.snooker.film.schedule import Manifest, frame_file
-    from apps.snooker.film.task import task_key
+    from camlab88.apps.snooker.film.pipeline import FilmLook, film_digest
+    from camlab88.apps.snooker.film.schedule import Manifest, frame_file
+    from camlab88.apps.snooker.film.task import task_key
 
     look = FilmLook(specks=render.specks)
     manifest, digest = Manifest(out / name), film_digest(scene, render)

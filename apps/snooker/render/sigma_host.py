@@ -31,14 +31,18 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-
-from apps.snooker.render import host_kernels as HK
-from apps.snooker.render import kernels as K
-from apps.snooker.render.balls import ball_params
-from apps.snooker.render.frame import FrameGeometry, camera_params, clip_project, frame_geometry
-from apps.snooker.render.materials import BACKGROUND
-from apps.snooker.render.modes import SIGMA_MODES as MODES
-from apps.snooker.render.outline import (
+from camlab88.apps.snooker.render import host_kernels as HK
+from camlab88.apps.snooker.render import kernels as K
+from camlab88.apps.snooker.render.balls import ball_params
+from camlab88.apps.snooker.render.frame import (
+    FrameGeometry,
+    camera_params,
+    clip_project,
+    frame_geometry,
+)
+from camlab88.apps.snooker.render.materials import BACKGROUND
+from camlab88.apps.snooker.render.modes import SIGMA_MODES as MODES
+from camlab88.apps.snooker.render.outline import (
     clip_to_screen,
     coverage,
     firmware_outline,
@@ -46,14 +50,14 @@ from apps.snooker.render.outline import (
     pixel_vertices,
     signed_area,
 )
-from apps.snooker.render.painter import BallItem, PolygonItem, ShadowItem
-from apps.snooker.render.palette import Palette
-from apps.snooker.render.runs import RunWriter
-from apps.snooker.render.scene import Scene
-from apps.snooker.render.shading import lights_array
-from apps.snooker.render.shadow_pass import shadow_occlusion
-from apps.snooker.render.specks import speck_directions
-from protocols.sigma import Encoder
+from camlab88.apps.snooker.render.painter import BallItem, PolygonItem, ShadowItem
+from camlab88.apps.snooker.render.palette import Palette
+from camlab88.apps.snooker.render.runs import RunWriter
+from camlab88.apps.snooker.render.scene import Scene
+from camlab88.apps.snooker.render.shading import lights_array
+from camlab88.apps.snooker.render.shadow_pass import shadow_occlusion
+from camlab88.apps.snooker.render.specks import speck_directions
+from camlab88.protocols.sigma import Encoder
 
 SCREEN_W, SCREEN_H = 768, 512  # the T5688's screen: the drawing area's first quadrant
 

@@ -11,10 +11,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.snooker.render.leaks import classify
-from apps.snooker.render.sigma_host import SigmaFrame, SigmaHost
-from protocols.link.port import BatchLink
+from camlab88.apps.snooker.render.leaks import classify
+from camlab88.apps.snooker.render.sigma_host import SigmaFrame, SigmaHost
+from camlab88.protocols.link.port import BatchLink
 
 
 @dataclass(frozen=True)

@@ -14,9 +14,8 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
-
-from apps.snooker.render.clip import clip_box
-from apps.snooker.table import Table
+from camlab88.apps.snooker.render.clip import clip_box
+from camlab88.apps.snooker.table import Table
 
 CUSHION_W_M = 0.05
 CUSHION_H_M = 0.0365  # nose height, about 0.7 of a ball diameter

@@ -10,18 +10,22 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.snooker.render import kernels as K
-from apps.snooker.render.balls import ball_params
-from apps.snooker.render.frame import FrameGeometry, camera_params, clip_project, frame_geometry
-from apps.snooker.render.gamma import encode_image
-from apps.snooker.render.materials import BACKGROUND
-from apps.snooker.render.painter import BallItem, PolygonItem, ShadowItem
-from apps.snooker.render.scene import Scene
-from apps.snooker.render.shading import lights_array
-from apps.snooker.render.shadow_pass import apply_shadows
-from apps.snooker.render.specks import speck_directions
-from apps.snooker.render.wood import is_wood, wood_params
+from camlab88.apps.snooker.render import kernels as K
+from camlab88.apps.snooker.render.balls import ball_params
+from camlab88.apps.snooker.render.frame import (
+    FrameGeometry,
+    camera_params,
+    clip_project,
+    frame_geometry,
+)
+from camlab88.apps.snooker.render.gamma import encode_image
+from camlab88.apps.snooker.render.materials import BACKGROUND
+from camlab88.apps.snooker.render.painter import BallItem, PolygonItem, ShadowItem
+from camlab88.apps.snooker.render.scene import Scene
+from camlab88.apps.snooker.render.shading import lights_array
+from camlab88.apps.snooker.render.shadow_pass import apply_shadows
+from camlab88.apps.snooker.render.specks import speck_directions
+from camlab88.apps.snooker.render.wood import is_wood, wood_params
 
 
 @dataclass(frozen=True)

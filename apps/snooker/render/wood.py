@@ -13,9 +13,8 @@ clamping the texture's frequencies, not by sampling).
 from __future__ import annotations
 
 import numpy as np
-
-from apps.snooker.render.materials import SURFACES, WOOD_PHONG
-from apps.snooker.render.tablemodel import OUTWARD, Face
+from camlab88.apps.snooker.render.materials import SURFACES, WOOD_PHONG
+from camlab88.apps.snooker.render.tablemodel import OUTWARD, Face
 
 GRAIN_PER_M = 90.0  # stripes per metre across the plank
 GRAIN_CONTRAST = 0.35

@@ -14,13 +14,12 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import numpy as np
-
-from apps.snooker.camera import ccl
-from apps.snooker.camera.motion import from_session
-from apps.snooker.session import Session
-from apps.snooker.table import BLACK, CUE, N_BALLS, PINK, Table
-from apps.snooker.visualiser.program import Visualiser
-from protocols.rainbow.client import RainbowClient
+from camlab88.apps.snooker.camera import ccl
+from camlab88.apps.snooker.camera.motion import from_session
+from camlab88.apps.snooker.session import Session
+from camlab88.apps.snooker.table import BLACK, CUE, N_BALLS, PINK, Table
+from camlab88.apps.snooker.visualiser.program import Visualiser
+from camlab88.protocols.rainbow.client import RainbowClient
 
 EXAMPLE_SCRIPT = """\
 :

@@ -13,12 +13,11 @@ word with a ball value to the ball's colour, else a table value to the table's c
 from __future__ import annotations
 
 import numpy as np
-
-from apps.snooker.camera.projection import Camera
-from apps.snooker.table import Table
-from apps.snooker.visualiser import scene
-from protocols.rainbow.client import RainbowClient
-from protocols.rainbow.ui import DoubleBuffer
+from camlab88.apps.snooker.camera.projection import Camera
+from camlab88.apps.snooker.table import Table
+from camlab88.apps.snooker.visualiser import scene
+from camlab88.protocols.rainbow.client import RainbowClient
+from camlab88.protocols.rainbow.ui import DoubleBuffer
 
 BACKGROUND = "#1a1e26"
 TABLE_COLOURS = ("#000000", "#1f7a3a", "#2a9048", "#145a2a", "#7a4a24", "#52301a", "#202020",

@@ -14,12 +14,12 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 
-from apps.snooker.camera.motion import Motion
-from apps.snooker.camera.projection import FILM_H, FILM_W
-from apps.snooker.camera.views import View
-from apps.snooker.visualiser.display import ViewDisplay
-from protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
-from protocols.rainbow.events import LEFT, KeyEvent, MouseEvent
+from camlab88.apps.snooker.camera.motion import Motion
+from camlab88.apps.snooker.camera.projection import FILM_H, FILM_W
+from camlab88.apps.snooker.camera.views import View
+from camlab88.apps.snooker.visualiser.display import ViewDisplay
+from camlab88.protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
+from camlab88.protocols.rainbow.events import LEFT, KeyEvent, MouseEvent
 
 LUT_PAGE = 1
 DEVICE_FRAMES_PER_FRAME = 2  # 25 frames/s on the 50 Hz display

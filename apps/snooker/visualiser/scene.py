@@ -13,10 +13,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-
-from apps.snooker.camera.projection import Camera, pixels_per_metre_at, project
-from apps.snooker.table import N_BALLS, Table, is_red
-from apps.snooker.visualiser import raster, table_model
+from camlab88.apps.snooker.camera.projection import Camera, pixels_per_metre_at, project
+from camlab88.apps.snooker.table import N_BALLS, Table, is_red
+from camlab88.apps.snooker.visualiser import raster, table_model
 
 RED_VALUE = 8
 

@@ -46,9 +46,8 @@ def fill_convex(img: np.ndarray, xy: np.ndarray, value: int) -> None:
     """Fill the pixels of ``img`` (C-contiguous uint8) whose centres lie inside the convex
     polygon ``xy`` ((k, 2) screen pixels)."""
     if not _K:
+        from camlab88.base.kernel_notice import announce_compiles
         from numba import njit
-
-        from base.kernel_notice import announce_compiles
 
         announce_compiles("snooker visualiser", 1.0, __name__)
         _K["fill"] = njit(_SIG, cache=True, nogil=True)(_fill)

@@ -14,8 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.snooker.table import Table
+from camlab88.apps.snooker.table import Table
 
 CUSHION_W_M = 0.05  # cushion face to rail (2 in)
 CUSHION_H_M = 0.037  # cushion top above the cloth (~0.7 of a ball's diameter)

@@ -13,12 +13,12 @@ KEYS = keys_of(__name__)
 
 
 def actors(args: argparse.Namespace) -> int:
-    from apps.ca.rules import RuleError
-    from base.atomicfile import probe
+    from camlab88.apps.ca.rules import RuleError
+    from camlab88.base.atomicfile import probe
+    from camlab88.protocols.rainbow.script import ScriptError
     from camlab88.rainbow_tablet import open_tablet
     from camlab88.runopts import fail
     from camlab88.scriptopts import events_player, scripted_run_options
-    from protocols.rainbow.script import ScriptError
 
     try:
         rules_name = args.rules or _rules_of(args.file)
@@ -41,7 +41,7 @@ def actors(args: argparse.Namespace) -> int:
 def _rules_of(path: str) -> str:
     """The rule set an existing actors file names; life for a new or unreadable one (the
     editor reports why it did not load)."""
-    from apps.actors.model import ActorFileError, read_actors
+    from camlab88.apps.actors.model import ActorFileError, read_actors
 
     try:
         return read_actors(path).rules
@@ -51,11 +51,11 @@ def _rules_of(path: str) -> str:
 
 def _cell_types(rules: str) -> list:
     """The rule set's states as the editor's cell types: number, name, colour."""
-    from apps.actors.editor.cell_types import CellType
-    from apps.actors.model import MAX_STATE
-    from apps.ca import library
-    from apps.ca.render import default_colour
-    from apps.ca.rules import parse_rules
+    from camlab88.apps.actors.editor.cell_types import CellType
+    from camlab88.apps.actors.model import MAX_STATE
+    from camlab88.apps.ca import library
+    from camlab88.apps.ca.render import default_colour
+    from camlab88.apps.ca.rules import parse_rules
 
     path = library.rules_path(rules)
     with open(path, encoding="utf-8") as f:
@@ -69,11 +69,11 @@ def _cell_types(rules: str) -> list:
 
 
 def _run(path: str, types: list, rules: str, player, opts, tablet):
-    from apps.actors.editor.program import ActorEditor
+    from camlab88.apps.actors.editor.program import ActorEditor
+    from camlab88.emulator.harness import run
+    from camlab88.emulator.harness.rainbow import RainbowTarget
+    from camlab88.emulator.rainbow.session import in_process
     from camlab88.runopts import unattended
-    from emulator.harness import run
-    from emulator.harness.rainbow import RainbowTarget
-    from emulator.rainbow.session import in_process
 
     session = in_process(record=opts.record is not None)
     editor = ActorEditor(session.client, path, types, rules,

@@ -8,8 +8,8 @@ import sys
 
 
 def _convert(args: argparse.Namespace) -> int:
-    from apps.ca import library
-    from apps.ca.patterns import PatternError, read_pattern, write_pattern
+    from camlab88.apps.ca import library
+    from camlab88.apps.ca.patterns import PatternError, read_pattern, write_pattern
 
     try:
         pattern = read_pattern(library.pattern_path(args.source))

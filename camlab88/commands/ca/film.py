@@ -15,7 +15,7 @@ COMMAND = "camlab88 ca film"
 
 
 def film(args: argparse.Namespace) -> int:
-    from apps.snooker.film.schedule import FilmError
+    from camlab88.apps.snooker.film.schedule import FilmError
     from camlab88.filmrun import run_film
 
     if args.mode == "t5688" and (args.size != (768, 512) or args.dask or args.workers):
@@ -26,10 +26,10 @@ def film(args: argparse.Namespace) -> int:
 
 
 def _film(args: argparse.Namespace) -> int:
-    from apps.cafilm.build import FilmSpec, build, rules_note
-    from apps.snooker.film.movie import write_movie
-    from apps.snooker.film.pipeline import FilmPaths
-    from apps.snooker.film.schedule import frame_file
+    from camlab88.apps.cafilm.build import FilmSpec, build, rules_note
+    from camlab88.apps.snooker.film.movie import write_movie
+    from camlab88.apps.snooker.film.pipeline import FilmPaths
+    from camlab88.apps.snooker.film.schedule import frame_file
 
     for out in (args.out, args.gif):  # before any work: a bad place fails now
         if out is not None:
@@ -57,8 +57,8 @@ def _film(args: argparse.Namespace) -> int:
 
 
 def _truecolour(args: argparse.Namespace, movie, frames: Path) -> str:
-    from apps.cafilm.film import shoot
-    from apps.snooker.film.progress import progress_bar
+    from camlab88.apps.cafilm.film import shoot
+    from camlab88.apps.snooker.film.progress import progress_bar
 
     report = shoot(movie, frames, args.dask, args.workers, progress_bar(COMMAND))
     return (f"{len(report.rendered)} rendered, {len(report.skipped)} already there"
@@ -66,11 +66,11 @@ def _truecolour(args: argparse.Namespace, movie, frames: Path) -> str:
 
 
 def _period(movie, frames: Path) -> str:
-    from apps.cafilm.period import period_frames
-    from apps.snooker.film.schedule import frame_file
-    from base.atomicfile import write_atomic
-    from base.png import png_bytes
-    from emulator.harness.sigma_batch import t5688_link
+    from camlab88.apps.cafilm.period import period_frames
+    from camlab88.apps.snooker.film.schedule import frame_file
+    from camlab88.base.atomicfile import write_atomic
+    from camlab88.base.png import png_bytes
+    from camlab88.emulator.harness.sigma_batch import t5688_link
 
     link = t5688_link()  # a T5688 on its 9600-baud line; the film is a host on its port
 

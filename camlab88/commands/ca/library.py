@@ -6,7 +6,7 @@ import argparse
 
 
 def _library(args: argparse.Namespace) -> int:
-    from apps.ca import library
+    from camlab88.apps.ca import library
 
     for kind, items in library.names().items():
         print(f"{kind}: {' '.join(items)}")

@@ -18,10 +18,10 @@ TRIPOS_DEST = {"Log": "log", "RecordPansAndZooms": "record_pans", "Checkpoint": 
 
 
 def program(args: argparse.Namespace) -> int:
-    from apps.ca.log import LogError
-    from apps.ca.patterns import PatternError
-    from apps.ca.rules import RuleError
-    from protocols.rainbow.script import ScriptError
+    from camlab88.apps.ca.log import LogError
+    from camlab88.apps.ca.patterns import PatternError
+    from camlab88.apps.ca.rules import RuleError
+    from camlab88.protocols.rainbow.script import ScriptError
 
     try:
         _apply_tripos(args)
@@ -74,7 +74,7 @@ def _checkpoint(text: str) -> int:
 def _options(args: argparse.Namespace, preview: bool):
     """The program's options; a screenshot (preview) run keeps no log and no checkpoints,
     so it never rewrites the user's files."""
-    from apps.ca.program.program import Options
+    from camlab88.apps.ca.program.program import Options
 
     return Options(rules=args.rules, pattern=args.pattern,
                    log=None if preview else args.log, record_pans=args.record_pans,
@@ -84,10 +84,10 @@ def _options(args: argparse.Namespace, preview: bool):
 
 
 def _run(options, player, opts) -> dict:
-    from apps.ca.program.program import CAProgram
-    from emulator.harness import run
-    from emulator.harness.rainbow import RainbowTarget
-    from emulator.rainbow.session import in_process
+    from camlab88.apps.ca.program.program import CAProgram
+    from camlab88.emulator.harness import run
+    from camlab88.emulator.harness.rainbow import RainbowTarget
+    from camlab88.emulator.rainbow.session import in_process
 
     session = in_process(record=opts.record is not None)
     prog = CAProgram(session.client, options)
@@ -103,6 +103,6 @@ def _run(options, player, opts) -> dict:
 
 
 def _print_stats(stats: dict, as_json: bool) -> None:
-    from apps.ca.stats_text import stats_text
+    from camlab88.apps.ca.stats_text import stats_text
 
     print(stats_text(stats, as_json))

@@ -7,15 +7,15 @@ import sys
 
 
 def _replay(args: argparse.Namespace) -> int:
-    from apps.ca.engine import Engine
-    from apps.ca.log import (
+    from camlab88.apps.ca.engine import Engine
+    from camlab88.apps.ca.log import (
         LogError,
         check_seed,
         read_log_settings,
         resolve_settings,
         start_from_script,
     )
-    from apps.ca.rules import RuleError
+    from camlab88.apps.ca.rules import RuleError
 
     try:
         edges, seed, warnings = resolve_settings(read_log_settings(args.script), args.edges,
@@ -33,6 +33,6 @@ def _replay(args: argparse.Namespace) -> int:
 
 
 def _print_stats(stats: dict, as_json: bool) -> None:
-    from apps.ca.stats_text import stats_text
+    from camlab88.apps.ca.stats_text import stats_text
 
     print(stats_text(stats, as_json))

@@ -10,11 +10,11 @@ from camlab88.runopts import check_output, fail
 
 
 def _run(args: argparse.Namespace) -> int:
-    from apps.ca import library
-    from apps.ca.engine import CENTRE, Engine
-    from apps.ca.patterns import PatternError, read_pattern
-    from apps.ca.rules import RuleError, load_rules
-    from apps.ca.seed import check_seed
+    from camlab88.apps.ca import library
+    from camlab88.apps.ca.engine import CENTRE, Engine
+    from camlab88.apps.ca.patterns import PatternError, read_pattern
+    from camlab88.apps.ca.rules import RuleError, load_rules
+    from camlab88.apps.ca.seed import check_seed
 
     try:
         check_seed(args.seed)  # the kernels take an int64: a 20-digit seed is an error
@@ -30,7 +30,7 @@ def _run(args: argparse.Namespace) -> int:
         return 2
     if args.png:  # a directory or read-only place is refused before the generations run
         check_output("camlab88 ca run", Path(args.png), "write the picture to")
-    from apps.ca.jump_progress import ProgressLine
+    from camlab88.apps.ca.jump_progress import ProgressLine
 
     engine = Engine(rules, edges=args.edges, seed=args.seed, algorithm=args.engine)
     engine.hashlife_memory = args.memory << 20
@@ -49,8 +49,8 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def _write_png(engine, args: argparse.Namespace) -> bool:
-    from apps.ca.program.picture import picture
-    from base.png import write_png
+    from camlab88.apps.ca.program.picture import picture
+    from camlab88.base.png import write_png
 
     try:
         write_png(picture(engine, args.zoom, args.monochrome), args.png)
@@ -75,6 +75,6 @@ def _advance(engine, args: argparse.Namespace, progress) -> None:
 
 
 def _print_stats(stats: dict, as_json: bool) -> None:
-    from apps.ca.stats_text import stats_text
+    from camlab88.apps.ca.stats_text import stats_text
 
     print(stats_text(stats, as_json))

@@ -31,8 +31,8 @@ def demo(args: argparse.Namespace) -> int:
 
 def play_acts(acts: list[Act], args: argparse.Namespace) -> int:
     """Each act on the harness: a window per act, or headless into PNGs and a GIF."""
-    from emulator.harness import Plugin, RunOptions, choose_headless, run
-    from emulator.harness.stream import FrameStream, PngGifWriter
+    from camlab88.emulator.harness import Plugin, RunOptions, choose_headless, run
+    from camlab88.emulator.harness.stream import FrameStream, PngGifWriter
 
     headless = choose_headless(COMMAND, args.headless,
                                f"writing every frame as PNG and a GIF per act into {args.out}")

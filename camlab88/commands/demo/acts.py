@@ -42,10 +42,10 @@ def sigma_frames() -> Iterator[Any]:
     """The Sigma showcase: the screen after each 1/25 s of line time at 9600 baud."""
     from fractions import Fraction  # imported here: every command builds the demo's parser
 
-    from emulator.harness.sigma_batch import periods
-    from emulator.machine import SigmaMachine
-    from protocols.link import LineSettings
-    from protocols.sigma.demo import sigma_demo_stream
+    from camlab88.emulator.harness.sigma_batch import periods
+    from camlab88.emulator.machine import SigmaMachine
+    from camlab88.protocols.link import LineSettings
+    from camlab88.protocols.sigma.demo import sigma_demo_stream
 
     machine = SigmaMachine("t5684", LineSettings(baud=9600), xonxoff=False)
     machine.host.write(sigma_demo_stream())
@@ -57,10 +57,10 @@ def kas_frames() -> Iterator[Any]:
     """KAS on the T5684: the host's chunks written to a 9600-baud line at their times."""
     from fractions import Fraction
 
-    from apps.kas.program import demo_session
-    from emulator.harness.sigma_batch import periods
-    from emulator.machine import SigmaMachine
-    from protocols.link import LineSettings
+    from camlab88.apps.kas.program import demo_session
+    from camlab88.emulator.harness.sigma_batch import periods
+    from camlab88.emulator.machine import SigmaMachine
+    from camlab88.protocols.link import LineSettings
 
     machine = SigmaMachine("t5684", LineSettings(baud=9600))
     for t, data in demo_session().chunks:  # the host's writes, each at its line time
@@ -72,8 +72,8 @@ def kas_frames() -> Iterator[Any]:
 def snooker_frames() -> Iterator[Any]:
     """The snooker program's replay on the Rainbow: a break simulated and shown (ball pads
     double-buffered over the table pad by LUT transparency)."""
-    from apps.snooker.program.demo import play_break
-    from emulator.rainbow.session import in_process
+    from camlab88.apps.snooker.program.demo import play_break
+    from camlab88.emulator.rainbow.session import in_process
 
     frames: list[Any] = []
     play_break(in_process(on_frame=lambda f: frames.append(f.copy())).client, 4.0)
@@ -83,10 +83,10 @@ def snooker_frames() -> Iterator[Any]:
 def ca_frames() -> Iterator[Any]:
     """The cellular automaton on the Rainbow: the Gosper gun in auto mode, panned and zoomed,
     driven by the program's own scripted mouse events."""
-    from apps.ca.program.demo import demo_events
-    from apps.ca.program.program import CAProgram, Options
-    from apps.ca.program.script_events import parse, play
-    from emulator.rainbow.session import in_process
+    from camlab88.apps.ca.program.demo import demo_events
+    from camlab88.apps.ca.program.program import CAProgram, Options
+    from camlab88.apps.ca.program.script_events import parse, play
+    from camlab88.emulator.rainbow.session import in_process
 
     session = in_process()
     program = CAProgram(session.client, Options(rules="life", pattern="gosper_gun"))
@@ -102,8 +102,8 @@ def ca_frames() -> Iterator[Any]:
 
 def shelf_frames() -> Iterator[Any]:
     """Appendix I's shelf unit: four pads slide apart and back (4 s); only arcs move."""
-    from emulator.rainbow.session import in_process
-    from protocols.rainbow.shelf import ShelfDemo
+    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.protocols.rainbow.shelf import ShelfDemo
 
     session = in_process()
     demo = ShelfDemo(session.client)
@@ -119,13 +119,13 @@ def paint_frames() -> Iterator[Any]:
     baud; one picture per 1/25 s of line time."""
     from fractions import Fraction
 
-    from apps.kas import demo
-    from apps.kas.paint.ops import Op, OpsFile
-    from apps.kas.paint.program import PaintProgram
-    from apps.kas.paint.replay import ReplayHost
-    from emulator.harness.sigma_batch import periods
-    from emulator.machine import SigmaMachine
-    from protocols.link import LineSettings
+    from camlab88.apps.kas import demo
+    from camlab88.apps.kas.paint.ops import Op, OpsFile
+    from camlab88.apps.kas.paint.program import PaintProgram
+    from camlab88.apps.kas.paint.replay import ReplayHost
+    from camlab88.emulator.harness.sigma_batch import periods
+    from camlab88.emulator.machine import SigmaMachine
+    from camlab88.protocols.link import LineSettings
 
     seq = demo.build()
     mid = len(seq.frames) // 2
@@ -141,8 +141,8 @@ def paint_frames() -> Iterator[Any]:
 
 def snooker_camera_frames() -> Iterator[Any]:
     """The thesis's example camera script over its shot, in the visualiser on the Rainbow."""
-    from apps.snooker.visualiser.demo import play_example
-    from emulator.rainbow.session import in_process
+    from camlab88.apps.snooker.visualiser.demo import play_example
+    from camlab88.emulator.rainbow.session import in_process
 
     session = in_process()
     frames: list[Any] = []
@@ -152,6 +152,6 @@ def snooker_camera_frames() -> Iterator[Any]:
 
 def film_frames() -> Iterator[Any]:
     """A break from the motion program through a camera script to rendered frames."""
-    from apps.snooker.film.demo import film_frames as frames
+    from camlab88.apps.snooker.film.demo import film_frames as frames
 
     yield from frames()

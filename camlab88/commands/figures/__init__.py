@@ -69,10 +69,10 @@ def _list() -> int:
 
 
 def _replay(args: argparse.Namespace, path: Path) -> int:
+    from camlab88.emulator.harness import choose_headless
+    from camlab88.emulator.harness.replay import Replay
+    from camlab88.protocols.session import SessionFileError, read
     from camlab88.session_replay import rerun
-    from emulator.harness import choose_headless
-    from emulator.harness.replay import Replay
-    from protocols.session import SessionFileError, read
 
     try:
         rec = read(path)

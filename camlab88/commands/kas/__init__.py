@@ -23,7 +23,7 @@ def prepare_front(args: argparse.Namespace, command: str):
     """Everything that can refuse a KAS program's run, before anything is written: the
     script read, the display rule applied.
     Returns what ``run_front`` needs."""
-    from apps.kas.program.script import load_timed_script
+    from camlab88.apps.kas.program.script import load_timed_script
     from camlab88.runopts import run_options
 
     if args.headless and args.script is None:
@@ -39,15 +39,15 @@ def run_front(front, args: argparse.Namespace, command: str, keys: str,
               prepared=None):
     """Run a KAS program on an emulated T5684 over the line, on the harness: from a script
     and/or a window.  Returns the run (the session and its machine)."""
-    from apps.kas.program.keyboard import KEY_BYTES, key_to_bytes
-    from apps.kas.program.layout import TABLET_AREA
-    from apps.kas.program.script import Session
+    from camlab88.apps.kas.program.keyboard import KEY_BYTES, key_to_bytes
+    from camlab88.apps.kas.program.layout import TABLET_AREA
+    from camlab88.apps.kas.program.script import Session
+    from camlab88.emulator.harness import run
+    from camlab88.emulator.harness.sigma import SigmaProgramTarget, SigmaSessionRun
+    from camlab88.emulator.machine import SigmaMachine
+    from camlab88.emulator.tablet_input.pointer import TabletInput
+    from camlab88.protocols.link import LineSettings
     from camlab88.runopts import unattended
-    from emulator.harness import run
-    from emulator.harness.sigma import SigmaProgramTarget, SigmaSessionRun
-    from emulator.machine import SigmaMachine
-    from emulator.tablet_input.pointer import TabletInput
-    from protocols.link import LineSettings
 
     events, opts = prepared or prepare_front(args, command)
     notices: list[str] = []

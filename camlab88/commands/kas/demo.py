@@ -8,7 +8,7 @@ from camlab88.runopts import fail
 
 
 def _demo(args: argparse.Namespace) -> int:
-    from apps.kas import demo, files
+    from camlab88.apps.kas import demo, files
 
     try:
         seq = demo.build()

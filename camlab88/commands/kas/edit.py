@@ -14,9 +14,9 @@ KEYS = keys_of(__name__)
 
 
 def edit(args: argparse.Namespace) -> int:
-    from apps.kas import files, library
-    from apps.kas.editor import Editor
-    from apps.kas.program import EditorFront
+    from camlab88.apps.kas import files, library
+    from camlab88.apps.kas.editor import Editor
+    from camlab88.apps.kas.program import EditorFront
     from camlab88.commands.kas import prepare_front
 
     target = Path(args.file)
@@ -59,7 +59,7 @@ def recovery_file(target: Path) -> Path:
 
 def _interrupted(front, target: Path, preview: bool) -> int:
     """Ctrl-C: unsaved edits go to a recovery file, named; FILE keeps its last save."""
-    from apps.kas import files
+    from camlab88.apps.kas import files
 
     if front is None or preview or not front.editor.dirty:
         print(f"{COMMAND}: interrupted; nothing unsaved was lost", file=sys.stderr)
@@ -78,7 +78,7 @@ def _interrupted(front, target: Path, preview: bool) -> int:
 
 def _create(target: Path, empty) -> None:
     """``kas edit FILE`` makes FILE (an empty keyframe) if it is missing."""
-    from apps.kas import files
+    from camlab88.apps.kas import files
 
     try:
         files.save_keyframe(target, empty)

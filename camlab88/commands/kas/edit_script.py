@@ -8,10 +8,10 @@ from camlab88.runopts import fail
 
 
 def _edit_script(args: argparse.Namespace) -> int:
-    from apps.kas import files, library
-    from apps.kas.editor import Editor
-    from apps.kas.events import parse_script
-    from base.textinput import read_text  # a missing file named, not [Errno 2]
+    from camlab88.apps.kas import files, library
+    from camlab88.apps.kas.editor import Editor
+    from camlab88.apps.kas.events import parse_script
+    from camlab88.base.textinput import read_text  # a missing file named, not [Errno 2]
 
     try:
         start = files.load_keyframe(library.resolve(args.start)) if args.start else None

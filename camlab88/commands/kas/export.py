@@ -12,8 +12,8 @@ COMMAND = "camlab88 kas export"
 
 
 def export(args: argparse.Namespace) -> int:
-    from apps.kas import files, library
-    from apps.kas.export import export as write
+    from camlab88.apps.kas import files, library
+    from camlab88.apps.kas.export import export as write
 
     check_output(COMMAND, Path(args.out), "export to")  # a full disk shows before rendering
     try:
@@ -42,8 +42,8 @@ def _written(out: Path, n: int) -> str:
 
 def _on_sigma(background: str):
     """Each frame drawn on a fresh emulated T5684 (16 colours, the terminal's own vectors)."""
-    from apps.kas.program.viewer import still_bytes
-    from emulator.harness.sigma_batch import still
+    from camlab88.apps.kas.program.viewer import still_bytes
+    from camlab88.emulator.harness.sigma_batch import still
 
     def on_sigma(frame):
         return still(still_bytes(frame, background), "t5684").frame()

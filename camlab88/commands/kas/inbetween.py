@@ -8,7 +8,7 @@ from camlab88.runopts import fail
 
 
 def _timing(name: str | None):
-    from apps.kas import files, library, timing
+    from camlab88.apps.kas import files, library, timing
 
     if name is None:
         return None
@@ -19,8 +19,8 @@ def _timing(name: str | None):
 
 
 def _inbetween(args: argparse.Namespace) -> int:
-    from apps.kas import files, library, pathfit
-    from apps.kas.inbetween import inbetween, inbetween_keys
+    from camlab88.apps.kas import files, library, pathfit
+    from camlab88.apps.kas.inbetween import inbetween, inbetween_keys
 
     try:
         keys = [files.load_drawing_or_frame(library.resolve(k)) for k in args.keys]

@@ -9,7 +9,7 @@ from camlab88.runopts import fail
 
 
 def _library(args: argparse.Namespace) -> int:
-    from apps.kas import library
+    from camlab88.apps.kas import library
 
     if args.save:
         return _save(*args.save, force=args.force)
@@ -22,9 +22,9 @@ def _library(args: argparse.Namespace) -> int:
 def _save(src: str, name: str, force: bool = False) -> int:
     """``--save FILE NAME``: FILE checked, then copied into the user library as NAME (an
     existing NAME is kept unless ``force``)."""
-    from apps.kas import library
-    from apps.kas.program.file_kind import kind_of
-    from base.atomicfile import write_atomic
+    from camlab88.apps.kas import library
+    from camlab88.apps.kas.program.file_kind import kind_of
+    from camlab88.base.atomicfile import write_atomic
 
     try:
         if not Path(src).is_file():

@@ -14,9 +14,9 @@ FLAT_OUT = "flat out, not at the line's speed"  # headless time is virtual: noth
 
 
 def paint(args: argparse.Namespace) -> int:
-    from apps.kas import files, library
-    from apps.kas.paint import opsfile
-    from apps.kas.paint.ops import OpsFile
+    from camlab88.apps.kas import files, library
+    from camlab88.apps.kas.paint import opsfile
+    from camlab88.apps.kas.paint.ops import OpsFile
 
     try:
         seq = files.load_sequence(library.resolve(args.seq))
@@ -31,17 +31,17 @@ def paint(args: argparse.Namespace) -> int:
 
 def _machine(baud: int):
     """The T5688 on its line (no XON/XOFF: the painting orders are binary)."""
-    from emulator.machine import SigmaMachine
-    from protocols.link import LineSettings
+    from camlab88.emulator.machine import SigmaMachine
+    from camlab88.protocols.link import LineSettings
 
     return SigmaMachine("t5688", LineSettings(baud=baud), xonxoff=False)
 
 
 def _replay(seq: Any, ops: Any, args: argparse.Namespace) -> int:
-    from apps.kas.paint.host import ReplayFrames
-    from apps.kas.paint.program import PaintProgram
-    from emulator.harness import run
-    from emulator.harness.sigma_host import SigmaHostTarget
+    from camlab88.apps.kas.paint.host import ReplayFrames
+    from camlab88.apps.kas.paint.program import PaintProgram
+    from camlab88.emulator.harness import run
+    from camlab88.emulator.harness.sigma_host import SigmaHostTarget
 
     opts = run_options(args, COMMAND, f"painting every frame {FLAT_OUT}; a window plays at it",
                        argv=getattr(args, "_argv", None))
@@ -63,7 +63,7 @@ def _replay(seq: Any, ops: Any, args: argparse.Namespace) -> int:
 
 def _replay_report(args: argparse.Namespace, seq: Any, ops: Any, host: Any, shown: list,
                    line_time: float, wall: float | None) -> None:
-    from apps.kas.paint.replay import write_frames, write_movie
+    from camlab88.apps.kas.paint.replay import write_frames, write_movie
 
     if args.frames:
         write_frames(shown, args.frames)
@@ -79,7 +79,7 @@ def _replay_report(args: argparse.Namespace, seq: Any, ops: Any, host: Any, show
     for f in host.failures:
         print(f"  {f}")
     if args.save is not None:
-        from apps.kas.paint import opsfile
+        from camlab88.apps.kas.paint import opsfile
 
         host.program.painter.record(host.plans)
         opsfile.save(args.save, ops)
@@ -87,11 +87,11 @@ def _replay_report(args: argparse.Namespace, seq: Any, ops: Any, host: Any, show
 
 
 def _interactive(seq: Any, ops: Any, args: argparse.Namespace) -> int:
-    from apps.kas.paint import opsfile, script
-    from apps.kas.paint.host import KEYS, PaintHost
-    from apps.kas.paint.session import PaintSession
-    from emulator.harness import run
-    from emulator.harness.sigma_host import SigmaHostTarget
+    from camlab88.apps.kas.paint import opsfile, script
+    from camlab88.apps.kas.paint.host import KEYS, PaintHost
+    from camlab88.apps.kas.paint.session import PaintSession
+    from camlab88.emulator.harness import run
+    from camlab88.emulator.harness.sigma_host import SigmaHostTarget
 
     if args.headless and args.script is None:
         raise ValueError("--headless needs --script (or --replay)")

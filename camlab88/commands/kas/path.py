@@ -13,9 +13,9 @@ KEYS = keys_of(__name__)
 
 
 def path(args: argparse.Namespace) -> int:
-    from apps.kas import files, library
-    from apps.kas.path_editor import PathEditor
-    from apps.kas.program import PathFront
+    from camlab88.apps.kas import files, library
+    from camlab88.apps.kas.path_editor import PathEditor
+    from camlab88.apps.kas.program import PathFront
     from camlab88.commands.kas import run_front
 
     out = Path(args.out)
@@ -48,7 +48,7 @@ def _interrupted(front, out: Path) -> int:
     """Ctrl-C: an unsaved path goes to a recovery file, named; --out keeps its last save."""
     import sys
 
-    from apps.kas import files
+    from camlab88.apps.kas import files
 
     sample = front.model.sample_path()
     if not front.unsaved() or sample is None:
@@ -67,7 +67,7 @@ def _interrupted(front, out: Path) -> int:
 
 
 def _previous(args: argparse.Namespace):
-    from apps.kas import files, library
+    from camlab88.apps.kas import files, library
 
     prev_file = library.resolve(args.previous) if args.previous else None
     if prev_file is None and not args.no_library:
@@ -78,7 +78,7 @@ def _previous(args: argparse.Namespace):
 
 
 def _saver(args: argparse.Namespace, out: Path, ticks: Path):
-    from apps.kas import files, library
+    from camlab88.apps.kas import files, library
 
     def save(sample, timing) -> None:
         if args.screenshot is not None:  # a screenshot run never touches the user's files

@@ -8,10 +8,10 @@ from camlab88.runopts import fail
 
 
 def _path_script(args: argparse.Namespace) -> int:
-    from apps.kas import files, library
-    from apps.kas.events import parse_script
-    from apps.kas.path_editor import PathEditor
-    from base.textinput import read_text  # a missing file named, not [Errno 2]
+    from camlab88.apps.kas import files, library
+    from camlab88.apps.kas.events import parse_script
+    from camlab88.apps.kas.path_editor import PathEditor
+    from camlab88.base.textinput import read_text  # a missing file named, not [Errno 2]
 
     try:
         pe = PathEditor(files.load_drawing_or_frame(library.resolve(args.first)),

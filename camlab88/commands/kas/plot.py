@@ -8,7 +8,7 @@ from camlab88.runopts import fail, progress
 
 
 def _plot(args: argparse.Namespace) -> int:
-    from apps.kas import files, library, plot
+    from camlab88.apps.kas import files, library, plot
 
     targets = [(f, d) for f, d in (("hpgl", args.hpgl), ("svg", args.svg), ("pdf", args.pdf))
                if d]

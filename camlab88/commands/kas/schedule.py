@@ -9,7 +9,7 @@ from camlab88.runopts import fail
 
 
 def _schedule(args: argparse.Namespace) -> int:
-    from apps.kas import viewer_schedule as vs
+    from camlab88.apps.kas import viewer_schedule as vs
 
     try:
         text = args.sizes

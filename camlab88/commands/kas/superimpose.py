@@ -14,8 +14,8 @@ KEYS = keys_of(__name__)
 
 
 def _superimpose(args: argparse.Namespace) -> int:
-    from apps.kas import files
-    from apps.kas.superimpose import superimpose
+    from camlab88.apps.kas import files
+    from camlab88.apps.kas.superimpose import superimpose
 
     try:
         parts = _parts(args.seqs)
@@ -33,7 +33,7 @@ def _superimpose(args: argparse.Namespace) -> int:
 
 
 def _parts(specs: list[str]) -> list:
-    from apps.kas import files, library
+    from camlab88.apps.kas import files, library
 
     parts = []
     cache: dict[str, object] = {}
@@ -51,8 +51,8 @@ def _parts(specs: list[str]) -> list:
 def _prompted(args: argparse.Namespace, parts: list):
     """The superimposer on the Sigma; the composite, saved, or None if not every start was
     answered (an error when a headless script leaves some unanswered)."""
-    from apps.kas import files
-    from apps.kas.program.superimpose_front import SuperimposeFront
+    from camlab88.apps.kas import files
+    from camlab88.apps.kas.program.superimpose_front import SuperimposeFront
     from camlab88.commands.kas import run_front
 
     def save(seq, _starts) -> None:

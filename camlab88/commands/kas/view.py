@@ -10,13 +10,13 @@ COMMAND = "camlab88 kas view"
 
 
 def view(args: argparse.Namespace) -> int:
-    from apps.kas import files, library
-    from apps.kas.program.viewer import LineTest, ViewerHost
-    from emulator.harness import run
-    from emulator.harness.sigma import PeriodTarget
-    from emulator.harness.sigma_batch import host_periods
-    from emulator.machine import SigmaMachine
-    from protocols.link import LineSettings
+    from camlab88.apps.kas import files, library
+    from camlab88.apps.kas.program.viewer import LineTest, ViewerHost
+    from camlab88.emulator.harness import run
+    from camlab88.emulator.harness.sigma import PeriodTarget
+    from camlab88.emulator.harness.sigma_batch import host_periods
+    from camlab88.emulator.machine import SigmaMachine
+    from camlab88.protocols.link import LineSettings
 
     opts = run_options(args, COMMAND, "playing the line test to its end",
                        argv=getattr(args, "_argv", None))

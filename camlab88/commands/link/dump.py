@@ -11,7 +11,7 @@ SESSION_NOTE = ("is a session recording, not a link recording: `sigma run --reco
 
 
 def dump(args: argparse.Namespace) -> int:
-    from protocols.link.cli import dump as dump_recording
+    from camlab88.protocols.link.cli import dump as dump_recording
 
     if _is_session_recording(args.recording):
         print(f"error: {args.recording} {SESSION_NOTE}", file=sys.stderr)
@@ -25,9 +25,9 @@ def _decode(args: argparse.Namespace) -> int:
     """Every order at its arrival time, replies (``<``) interleaved by time."""
     import json
 
-    from emulator.sigma import Terminal
-    from emulator.sigma.trace_stream import StreamTracer
-    from protocols.link.recording import RecordingError, read_recording
+    from camlab88.emulator.sigma import Terminal
+    from camlab88.emulator.sigma.trace_stream import StreamTracer
+    from camlab88.protocols.link.recording import RecordingError, read_recording
 
     try:
         rec = read_recording(args.recording)
@@ -56,7 +56,7 @@ def _is_session_recording(path: str) -> bool:
     """True when the file's first line is a session recording's header (protocols.session)."""
     import json
 
-    from protocols.session import FORMAT
+    from camlab88.protocols.session import FORMAT
 
     try:
         with open(path, "rb") as f:

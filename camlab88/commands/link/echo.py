@@ -6,6 +6,6 @@ import argparse
 
 
 def echo(args: argparse.Namespace) -> int:
-    from protocols.link.cli import echo_command
+    from camlab88.protocols.link.cli import echo_command
 
     return echo_command(args)

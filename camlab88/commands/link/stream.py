@@ -6,6 +6,6 @@ import argparse
 
 
 def stream(args: argparse.Namespace) -> int:
-    from protocols.link.cli import write_stream
+    from camlab88.protocols.link.cli import write_stream
 
     return write_stream(args.recording, args.out, args.direction)

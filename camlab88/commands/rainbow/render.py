@@ -10,9 +10,9 @@ COMMAND = "camlab88 rainbow render"
 
 
 def render(args: argparse.Namespace) -> int:
-    from emulator.rainbow import Rainbow
-    from emulator.rainbow.errors import RainbowError
-    from emulator.rainbow.scene import SceneError, load_scene
+    from camlab88.emulator.rainbow import Rainbow
+    from camlab88.emulator.rainbow.errors import RainbowError
+    from camlab88.emulator.rainbow.scene import SceneError, load_scene
 
     try:
         device = load_scene(args.scene, Rainbow(strict=args.strict))
@@ -30,9 +30,9 @@ def render(args: argparse.Namespace) -> int:
 
 
 def _inspect(args: argparse.Namespace, device, frame) -> int:
-    from base.png import frame_path, write_png
-    from emulator.inspect import PANEL_WIDTH
-    from emulator.inspect.rainbow import RainbowPanel
+    from camlab88.base.png import frame_path, write_png
+    from camlab88.emulator.inspect import PANEL_WIDTH
+    from camlab88.emulator.inspect.rainbow import RainbowPanel
 
     path = frame_path(args.inspect_out, 0)
     try:
@@ -44,8 +44,8 @@ def _inspect(args: argparse.Namespace, device, frame) -> int:
 
 
 def _write(args: argparse.Namespace, frame, text: str | None) -> int:
-    from base.atomicfile import write_atomic
-    from base.png import write_png
+    from camlab88.base.atomicfile import write_atomic
+    from camlab88.base.png import write_png
 
     try:
         write_png(frame, args.out)

@@ -12,11 +12,11 @@ COMMAND = "camlab88 rainbow replay"
 
 
 def replay(args: argparse.Namespace) -> int:
-    from base.png import write_png
-    from emulator.rainbow.device import Rainbow
-    from emulator.rainbow.executor import Executor
-    from protocols.rainbow.recording import Recording, RecordingError
-    from protocols.rainbow.recording import replay as replay_on
+    from camlab88.base.png import write_png
+    from camlab88.emulator.rainbow.device import Rainbow
+    from camlab88.emulator.rainbow.executor import Executor
+    from camlab88.protocols.rainbow.recording import Recording, RecordingError
+    from camlab88.protocols.rainbow.recording import replay as replay_on
 
     if _is_session(args.recording):
         return _session(args)
@@ -53,11 +53,11 @@ def _session(args: argparse.Namespace) -> int:
     checked, as ``camlab88 replay FILE --check`` does."""
     from pathlib import Path
 
+    from camlab88.emulator.harness import choose_headless
+    from camlab88.emulator.harness.replay import Replay
+    from camlab88.protocols.session import SessionFileError, read
     from camlab88.replay_policy import ReplayRefused
     from camlab88.session_replay import rerun
-    from emulator.harness import choose_headless
-    from emulator.harness.replay import Replay
-    from protocols.session import SessionFileError, read
 
     try:
         rec = read(args.recording)
@@ -79,11 +79,11 @@ def _session(args: argparse.Namespace) -> int:
 
 
 def _window(args: argparse.Namespace):
-    from emulator.harness import choose_headless
+    from camlab88.emulator.harness import choose_headless
 
     if choose_headless(COMMAND, args.headless, "checking the replies"):
         return None
-    from emulator.window import Window
+    from camlab88.emulator.window import Window
 
     return Window("camlab88 Rainbow (replay)", (768, 576), scale=args.scale)
 

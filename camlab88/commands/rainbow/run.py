@@ -15,7 +15,7 @@ HEADLESS_FRAMES = 250
 
 
 def run(args: argparse.Namespace) -> int:
-    from emulator.harness import run as run_target
+    from camlab88.emulator.harness import run as run_target
 
     opts = run_options(args, COMMAND, f"{HEADLESS_FRAMES} frames unless --stop-after N",
                        argv=getattr(args, "_argv", None))
@@ -50,19 +50,19 @@ def _finish(args: argparse.Namespace, target, tablet) -> None:
 
 
 def _target(args: argparse.Namespace, opts, tablet, trace):
-    from emulator.harness.rainbow import RainbowTarget
-    from emulator.rainbow import Rainbow
-    from emulator.rainbow.session import in_process
-    from protocols.rainbow.demo import Demo
+    from camlab88.emulator.harness.rainbow import RainbowTarget
+    from camlab88.emulator.rainbow import Rainbow
+    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.protocols.rainbow.demo import Demo
 
     record = bool(args.record_stream) or opts.record is not None
     session = in_process(Rainbow(strict=args.strict), record=record)
     if trace.sink is not None:  # from the first call the demo makes
-        from emulator.rainbow.trace import RainbowTracer
+        from camlab88.emulator.rainbow.trace import RainbowTracer
 
         session.executor.tracer = RainbowTracer(trace.sink, trace.strict)
     if getattr(args, "demo", "pads") == "shelf":
-        from protocols.rainbow.shelf import ShelfDemo
+        from camlab88.protocols.rainbow.shelf import ShelfDemo
 
         demo = ShelfDemo(session.client)
     else:

@@ -20,11 +20,11 @@ def _seconds(text: str) -> float:
 
 
 def serve(args: argparse.Namespace) -> int:
-    from emulator.harness import choose_headless
-    from emulator.rainbow import Rainbow
-    from emulator.rainbow.executor import Executor
-    from emulator.rainbow.server import listen
-    from emulator.rainbow.server import serve as serve_on
+    from camlab88.emulator.harness import choose_headless
+    from camlab88.emulator.rainbow import Rainbow
+    from camlab88.emulator.rainbow.executor import Executor
+    from camlab88.emulator.rainbow.server import listen
+    from camlab88.emulator.rainbow.server import serve as serve_on
 
     device = Rainbow(strict=args.strict)
     headless = choose_headless(COMMAND, args.headless, "serving without showing the frames")
@@ -38,7 +38,7 @@ def serve(args: argparse.Namespace) -> int:
     try:
         with open_trace(args, COMMAND, "the command stream") as trace:
             if trace.sink is not None:
-                from emulator.rainbow.trace import RainbowTracer
+                from camlab88.emulator.rainbow.trace import RainbowTracer
 
                 executor.tracer = RainbowTracer(trace.sink, trace.strict)
             serve_on(executor, sock, args.connections, frame_timeout=args.frame_timeout,
@@ -53,7 +53,7 @@ def serve(args: argparse.Namespace) -> int:
 def _window(scale: int):
     import sys
 
-    from emulator.window import Window
+    from camlab88.emulator.window import Window
 
     print(f"{COMMAND}: window open; close it to stop serving", file=sys.stderr)
     return Window("camlab88 Rainbow (serving)", (768, 576), scale=scale)
@@ -61,8 +61,8 @@ def _window(scale: int):
 
 def _on_frame(window, device):
     """Each frame the served program makes: shown, and window input sent to the device."""
-    from emulator.host_input import Quit
-    from emulator.rainbow.host_input import RainbowHostInput
+    from camlab88.emulator.host_input import Quit
+    from camlab88.emulator.rainbow.host_input import RainbowHostInput
 
     host = RainbowHostInput()
 

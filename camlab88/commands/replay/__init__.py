@@ -24,11 +24,11 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 
 
 def replay(args: argparse.Namespace) -> int:
+    from camlab88.emulator.harness import choose_headless
+    from camlab88.emulator.harness.replay import Replay
+    from camlab88.protocols.session import SessionFileError, read
     from camlab88.replay_policy import ReplayRefused
     from camlab88.session_replay import rerun
-    from emulator.harness import choose_headless
-    from emulator.harness.replay import Replay
-    from protocols.session import SessionFileError, read
 
     try:
         rec = read(args.recording)
@@ -63,8 +63,8 @@ def _controls(args: argparse.Namespace, headless: bool):
 def _state(args: argparse.Namespace):
     """The replay's own StateOptions (paths made absolute: the replay runs elsewhere)."""
     from camlab88 import __version__
+    from camlab88.emulator.harness.program_state import StateOptions
     from camlab88.runopts import check_output
-    from emulator.harness.program_state import StateOptions
 
     if args.at is not None and args.save_state is None:
         raise SystemExit(f"{COMMAND}: --at needs --save-state FILE")
@@ -82,8 +82,8 @@ def _seek(args: argparse.Namespace, rec, ctx) -> int | None:
     Returns an exit status when the seek cannot go on."""
     from dataclasses import replace
 
+    from camlab88.emulator.harness.replay import Replay
     from camlab88.session_replay import rerun
-    from emulator.harness.replay import Replay
 
     first = replace(ctx.state, seek_to=args.seek, snapshots=[],
                     snapshot_every=Fraction(SNAPSHOT_EVERY), save=None, at=None)

@@ -17,8 +17,8 @@ def _die(message: str) -> SystemExit:
 
 
 def render(args: argparse.Namespace) -> int:
-    from emulator.harness.sigma_batch import settle
-    from protocols.sigma.stream_file import StreamFileError, host_bytes, read_stream_file
+    from camlab88.emulator.harness.sigma_batch import settle
+    from camlab88.protocols.sigma.stream_file import StreamFileError, host_bytes, read_stream_file
 
     if args.out is None and args.frames is None and args.video is None \
             and args.inspect_out is None:
@@ -54,7 +54,7 @@ def _machine(model: str, got, settings):
     """A terminal on a line with the stream on its way: raw bytes back to back from t = 0,
     or a recording's host-to-terminal runs each sent so that it arrives when recorded (a
     recording keeps its own line settings)."""
-    from emulator.machine import SigmaMachine
+    from camlab88.emulator.machine import SigmaMachine
 
     if isinstance(got, bytes):
         machine = SigmaMachine(model, settings, xonxoff=False)
@@ -68,7 +68,7 @@ def _machine(model: str, got, settings):
 
 
 def _settings(baud: int):
-    from protocols.link import LineSettings
+    from camlab88.protocols.link import LineSettings
 
     try:
         return LineSettings(baud=baud)
@@ -77,7 +77,7 @@ def _settings(baud: int):
 
 
 def _png(frame, path: Path) -> None:
-    from base.png import write_png
+    from camlab88.base.png import write_png
 
     try:
         write_png(frame, path)
@@ -86,9 +86,9 @@ def _png(frame, path: Path) -> None:
 
 
 def _write_frames(machine, got, settings, period: Fraction, directory: Path) -> int:
-    from base.png import frame_path
-    from emulator.harness.sigma_batch import periods
-    from protocols.link.sniff import frame_count
+    from camlab88.base.png import frame_path
+    from camlab88.emulator.harness.sigma_batch import periods
+    from camlab88.protocols.link.sniff import frame_count
 
     try:  # a damaged recording time must not mean hours of PNGs
         frame_count(_duration(got, settings), int(1 / period), name=str(directory))
@@ -105,10 +105,10 @@ def _play(args: argparse.Namespace, machine, got, settings) -> None:
     """The frame periods through the harness, headless and flat out unless --speed: the
     emulator controls' --video and --inspect-out, and --frames too."""
     from camlab88.control_flags import controls_from_args
-    from emulator.harness import RunOptions, run
-    from emulator.harness.sigma import PeriodTarget
-    from emulator.harness.sigma_batch import periods
-    from protocols.link.sniff import frame_count
+    from camlab88.emulator.harness import RunOptions, run
+    from camlab88.emulator.harness.sigma import PeriodTarget
+    from camlab88.emulator.harness.sigma_batch import periods
+    from camlab88.protocols.link.sniff import frame_count
 
     try:  # a damaged recording time must not mean hours of frames
         frame_count(_duration(got, settings), args.fps, name=str(args.stream))
@@ -129,7 +129,7 @@ def _duration(got, settings) -> Fraction:
 
 
 def _say_skipped(term, stream: Path, data: bytes) -> None:
-    from protocols.sigma.orders import GRAPHICS_FLAG
+    from camlab88.protocols.sigma.orders import GRAPHICS_FLAG
 
     s = term.stats
     if s["unknown"] or s["malformed"] or s["errors"]:

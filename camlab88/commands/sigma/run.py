@@ -31,8 +31,8 @@ def _die(message: str) -> SystemExit:
 
 
 def run(args: argparse.Namespace) -> int:
-    from emulator.harness import replay
-    from emulator.harness import run as run_target
+    from camlab88.emulator.harness import replay
+    from camlab88.emulator.harness import run as run_target
 
     got, settings = _stream_and_settings(args)
     ends = args.seconds is not None or args.screenshot is not None
@@ -69,8 +69,8 @@ def _finish(target, line, recorder, args: argparse.Namespace) -> None:
 
 
 def _stream_and_settings(args: argparse.Namespace):
-    from protocols.link import LineSettings
-    from protocols.sigma.stream_file import StreamFileError, read_stream_file
+    from camlab88.protocols.link import LineSettings
+    from camlab88.protocols.sigma.stream_file import StreamFileError, read_stream_file
 
     try:
         got = read_stream_file(args.stream) if args.stream is not None else b""
@@ -87,12 +87,12 @@ def _stream_and_settings(args: argparse.Namespace):
 
 
 def _machine(args: argparse.Namespace, settings):
-    from emulator.machine import SigmaMachine
+    from camlab88.emulator.machine import SigmaMachine
 
     recorder = None
     if args.record_line is not None:
+        from camlab88.protocols.link.recording import Recorder
         from camlab88.runopts import check_output
-        from protocols.link.recording import Recorder
 
         check_output(COMMAND, args.record_line, "record to")
         try:
@@ -103,8 +103,8 @@ def _machine(args: argparse.Namespace, settings):
 
 
 def _target(args: argparse.Namespace, machine, got):
-    from emulator.harness.sigma_line import SigmaLineTarget
-    from protocols.link.replay import replay_into
+    from camlab88.emulator.harness.sigma_line import SigmaLineTarget
+    from camlab88.protocols.link.replay import replay_into
 
     line = machine.line
     if isinstance(got, bytes):
@@ -125,7 +125,7 @@ def _report(kind: str, detail: str) -> None:
 
 def _open_bridge(args: argparse.Namespace, settings, endpoint):
     """The line's outside end; an unusable port or URL is a one-line error (exit 1)."""
-    from protocols.link import transports as tr
+    from camlab88.protocols.link import transports as tr
 
     if args.listen is not None:
         try:
@@ -147,7 +147,7 @@ def _open_bridge(args: argparse.Namespace, settings, endpoint):
 
 
 def _serial_bridge(args: argparse.Namespace, settings, endpoint):
-    from protocols.link import transports as tr
+    from camlab88.protocols.link import transports as tr
 
     bridge = tr.SerialUrlBridge(args.serial, settings, endpoint=endpoint)
     if not bridge.connected:

@@ -15,10 +15,10 @@ KEYS = keys_of(__name__)
 
 
 def camera(args: argparse.Namespace) -> int:
-    from apps.snooker.camera import motion
-    from apps.snooker.checkpoint import CheckpointError
-    from apps.snooker.session import SessionError
-    from protocols.rainbow.script import ScriptError
+    from camlab88.apps.snooker.camera import motion
+    from camlab88.apps.snooker.checkpoint import CheckpointError
+    from camlab88.apps.snooker.session import SessionError
+    from camlab88.protocols.rainbow.script import ScriptError
 
     try:
         shot = motion.load(args.motion)
@@ -36,10 +36,10 @@ def camera(args: argparse.Namespace) -> int:
 
 
 def _run(shot, script, player, opts, plugins=()):
-    from apps.snooker.camera_tool.tool import CameraTool
-    from emulator.harness import run
-    from emulator.harness.rainbow import RainbowTarget
-    from emulator.rainbow.session import in_process
+    from camlab88.apps.snooker.camera_tool.tool import CameraTool
+    from camlab88.emulator.harness import run
+    from camlab88.emulator.harness.rainbow import RainbowTarget
+    from camlab88.emulator.rainbow.session import in_process
 
     class Target(RainbowTarget):
         """The script as read from disk during the run is outside input: recorded, and fed

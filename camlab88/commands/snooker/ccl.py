@@ -12,12 +12,12 @@ COMMAND = "camlab88 snooker ccl"
 
 
 def ccl(args: argparse.Namespace) -> int:
-    from apps.snooker.camera import ccl as language
-    from apps.snooker.camera import motion
-    from apps.snooker.camera.errors import CclErrors
-    from apps.snooker.camera.views import write_views
-    from apps.snooker.checkpoint import CheckpointError
-    from apps.snooker.session import SessionError
+    from camlab88.apps.snooker.camera import ccl as language
+    from camlab88.apps.snooker.camera import motion
+    from camlab88.apps.snooker.camera.errors import CclErrors
+    from camlab88.apps.snooker.camera.views import write_views
+    from camlab88.apps.snooker.checkpoint import CheckpointError
+    from camlab88.apps.snooker.session import SessionError
 
     try:
         text = language.read_script(args.script)

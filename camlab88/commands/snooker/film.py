@@ -22,10 +22,10 @@ def _word(text: str) -> str:
 
 
 def film(args: argparse.Namespace) -> int:
-    from apps.snooker.checkpoint import CheckpointError
-    from apps.snooker.film.schedule import FilmError
-    from apps.snooker.render.lights import LightsError
-    from apps.snooker.session import SessionError
+    from camlab88.apps.snooker.checkpoint import CheckpointError
+    from camlab88.apps.snooker.film.schedule import FilmError
+    from camlab88.apps.snooker.render.lights import LightsError
+    from camlab88.apps.snooker.session import SessionError
     from camlab88.filmrun import run_film
 
     if (args.titles is None) == (args.motion is None or args.script is None):
@@ -40,11 +40,11 @@ def film(args: argparse.Namespace) -> int:
 
 
 def _film(args: argparse.Namespace) -> int:
-    from apps.snooker.camera.views import write_views
-    from apps.snooker.film import pipeline as P
-    from apps.snooker.film.movie import write_movie
-    from apps.snooker.film.progress import progress_bar
-    from apps.snooker.render.lights import read_lights
+    from camlab88.apps.snooker.camera.views import write_views
+    from camlab88.apps.snooker.film import pipeline as P
+    from camlab88.apps.snooker.film.movie import write_movie
+    from camlab88.apps.snooker.film.progress import progress_bar
+    from camlab88.apps.snooker.render.lights import read_lights
 
     paths = P.FilmPaths.beside(args.out)
     paths.movie.parent.mkdir(parents=True, exist_ok=True)
@@ -79,11 +79,11 @@ def summary(out: Path, gif: Path | None, n: int, note: str, views: Path, frames:
 
 
 def _sigma_frames(args: argparse.Namespace, scene, views, frames: Path) -> str:
-    from apps.snooker.film.schedule import frame_file
-    from apps.snooker.render.sequence import choose_palette, render_sequence
-    from base.atomicfile import write_atomic
-    from base.png import png_bytes
-    from emulator.harness.sigma_batch import t5688_link
+    from camlab88.apps.snooker.film.schedule import frame_file
+    from camlab88.apps.snooker.render.sequence import choose_palette, render_sequence
+    from camlab88.base.atomicfile import write_atomic
+    from camlab88.base.png import png_bytes
+    from camlab88.emulator.harness.sigma_batch import t5688_link
 
     palette = choose_palette(scene, views, "fixed")
     frames.mkdir(parents=True, exist_ok=True)

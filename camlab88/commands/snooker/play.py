@@ -13,8 +13,8 @@ KEYS = keys_of(__name__)
 
 
 def play(args: argparse.Namespace) -> int:
-    from apps.snooker.session import Session, SessionError
-    from protocols.rainbow.script import ScriptError
+    from camlab88.apps.snooker.session import Session, SessionError
+    from camlab88.protocols.rainbow.script import ScriptError
 
     try:
         restore = Session.load(args.session) if _exists(args.session) else None
@@ -37,10 +37,10 @@ def _exists(path: str | None) -> bool:
 
 
 def _run(args: argparse.Namespace, opts, restore, player):
-    from apps.snooker.program.program import Program
-    from emulator.harness import run
-    from emulator.harness.rainbow import RainbowTarget
-    from emulator.rainbow.session import in_process
+    from camlab88.apps.snooker.program.program import Program
+    from camlab88.emulator.harness import run
+    from camlab88.emulator.harness.rainbow import RainbowTarget
+    from camlab88.emulator.rainbow.session import in_process
 
     rb = in_process(record=opts.record is not None)
     program = Program(rb.client, restore=restore, save_to=args.save or args.session,

@@ -18,13 +18,13 @@ RECORD = ".camlab88-render.json"  # the resume record, hidden among the frames
 
 
 def render(args: argparse.Namespace) -> int:
-    from apps.snooker.camera.views import ViewFileError, read_views
-    from apps.snooker.checkpoint import CheckpointError
-    from apps.snooker.film.schedule import FilmError
-    from apps.snooker.render.lights import LightsError, read_lights
-    from apps.snooker.render.scene import load_scene
-    from apps.snooker.render.sequence import SequenceError, select_views
-    from apps.snooker.session import SessionError
+    from camlab88.apps.snooker.camera.views import ViewFileError, read_views
+    from camlab88.apps.snooker.checkpoint import CheckpointError
+    from camlab88.apps.snooker.film.schedule import FilmError
+    from camlab88.apps.snooker.render.lights import LightsError, read_lights
+    from camlab88.apps.snooker.render.scene import load_scene
+    from camlab88.apps.snooker.render.sequence import SequenceError, select_views
+    from camlab88.apps.snooker.session import SessionError
 
     if args.mode == "truecolour" and args.palette != "fixed":
         return fail(COMMAND, "--palette is for the 256-colour Sigma modes (period, fixed)")
@@ -47,8 +47,8 @@ def render(args: argparse.Namespace) -> int:
 
 
 def _render(args: argparse.Namespace, scene, views) -> int:
-    from apps.snooker.film.movie import write_movie
-    from apps.snooker.film.pipeline import frame_files
+    from camlab88.apps.snooker.film.movie import write_movie
+    from camlab88.apps.snooker.film.pipeline import frame_files
 
     out = Path(args.frames)
     if args.mode == "truecolour":
@@ -65,8 +65,8 @@ def _render(args: argparse.Namespace, scene, views) -> int:
 
 
 def _truecolour(args: argparse.Namespace, scene, views, out: Path) -> str:
-    from apps.snooker.film.pipeline import FilmLook, shoot
-    from apps.snooker.film.progress import progress_bar
+    from camlab88.apps.snooker.film.pipeline import FilmLook, shoot
+    from camlab88.apps.snooker.film.progress import progress_bar
 
     look = FilmLook(args.size[0], args.size[1], not args.no_specks, True, 1, not args.no_wood)
     r = shoot(scene, views, out, look, args.dask, args.workers, progress_bar(COMMAND),
@@ -76,8 +76,8 @@ def _truecolour(args: argparse.Namespace, scene, views, out: Path) -> str:
 
 
 def _sigma_parallel(args: argparse.Namespace, scene, views, out: Path, render) -> str:
-    from apps.snooker.film.pipeline import FilmLook, shoot
-    from apps.snooker.film.progress import progress_bar
+    from camlab88.apps.snooker.film.pipeline import FilmLook, shoot
+    from camlab88.apps.snooker.film.progress import progress_bar
 
     r = shoot(scene, views, out, FilmLook(specks=render.specks), args.dask, args.workers,
               progress_bar(COMMAND), manifest=RECORD, render=render)
@@ -87,9 +87,9 @@ def _sigma_parallel(args: argparse.Namespace, scene, views, out: Path, render) -
 
 
 def _sigma(args: argparse.Namespace, scene, views, out: Path) -> str:
-    from apps.snooker.render.sequence import choose_palette
-    from apps.snooker.render.sigma_frames import record, render_staged, sigma_frames
-    from emulator.harness.sigma_batch import t5688_link
+    from camlab88.apps.snooker.render.sequence import choose_palette
+    from camlab88.apps.snooker.render.sigma_frames import record, render_staged, sigma_frames
+    from camlab88.emulator.harness.sigma_batch import t5688_link
 
     palette = choose_palette(scene, views, args.palette,
                              progress(f"{COMMAND}: choosing 256 colours"))

@@ -11,8 +11,8 @@ OUTPUT_HINT = "give --frames DIR or --screenshot PNG to write what it plays"
 
 
 def replay(args: argparse.Namespace) -> int:
-    from apps.snooker.checkpoint import CheckpointError, read, to_metres
-    from apps.snooker.table import Table
+    from camlab88.apps.snooker.checkpoint import CheckpointError, read, to_metres
+    from camlab88.apps.snooker.table import Table
 
     try:
         cp = read(args.checkpoint)
@@ -36,10 +36,10 @@ def replay(args: argparse.Namespace) -> int:
 
 
 def _run(pos, on, opts):
-    from apps.snooker.program.program import Program
-    from emulator.harness import run
-    from emulator.harness.rainbow import RainbowTarget
-    from emulator.rainbow.session import in_process
+    from camlab88.apps.snooker.program.program import Program
+    from camlab88.emulator.harness import run
+    from camlab88.emulator.harness.rainbow import RainbowTarget
+    from camlab88.emulator.rainbow.session import in_process
 
     rb = in_process(record=opts.record is not None)
     steps = Program(rb.client).position_steps(pos, on)

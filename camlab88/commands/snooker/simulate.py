@@ -17,9 +17,9 @@ def _table_option(value: str) -> tuple[str, str]:
 
 
 def simulate(args: argparse.Namespace) -> int:
-    from apps.snooker.checkpoint import CheckpointError
-    from apps.snooker.physics import SimulationError
-    from apps.snooker.session import SessionError
+    from camlab88.apps.snooker.checkpoint import CheckpointError
+    from camlab88.apps.snooker.physics import SimulationError
+    from camlab88.apps.snooker.session import SessionError
 
     try:
         session = _start(args)
@@ -37,10 +37,10 @@ def simulate(args: argparse.Namespace) -> int:
 
 
 def _start(args: argparse.Namespace):  # a Session, or a message (str)
-    from apps.snooker.layout import break_off_direction
-    from apps.snooker.program.setup import start_from, table_with
-    from apps.snooker.session import Session
-    from apps.snooker.table import CUE, ball_index
+    from camlab88.apps.snooker.layout import break_off_direction
+    from camlab88.apps.snooker.program.setup import start_from, table_with
+    from camlab88.apps.snooker.session import Session
+    from camlab88.apps.snooker.table import CUE, ball_index
 
     table = table_with(args.table)
     if args.break_speed is not None:
@@ -67,7 +67,7 @@ def _start(args: argparse.Namespace):  # a Session, or a message (str)
 
 
 def _report(session, cp, args: argparse.Namespace) -> None:
-    from apps.snooker.table import BALL_NAMES
+    from camlab88.apps.snooker.table import BALL_NAMES
 
     st = session.status()
     tl = session.timeline

@@ -15,11 +15,11 @@ KEYS = keys_of(__name__)
 
 
 def visualise(args: argparse.Namespace) -> int:
-    from apps.snooker.camera import motion
-    from apps.snooker.camera.views import ViewFileError, read_views
-    from apps.snooker.checkpoint import CheckpointError
-    from apps.snooker.session import SessionError
-    from apps.snooker.visualiser.program import ViewsError
+    from camlab88.apps.snooker.camera import motion
+    from camlab88.apps.snooker.camera.views import ViewFileError, read_views
+    from camlab88.apps.snooker.checkpoint import CheckpointError
+    from camlab88.apps.snooker.session import SessionError
+    from camlab88.apps.snooker.visualiser.program import ViewsError
 
     try:
         shot = motion.load(args.motion)
@@ -46,12 +46,12 @@ def status(vis, target) -> str:
 
 
 def _run(shot, views, opts, frames_dir):
-    from apps.snooker.visualiser.program import Visualiser
-    from base.png import frame_path, write_png
-    from emulator.harness import run
-    from emulator.harness.loop import Plugin
-    from emulator.harness.rainbow import RainbowTarget
-    from emulator.rainbow.session import in_process
+    from camlab88.apps.snooker.visualiser.program import Visualiser
+    from camlab88.base.png import frame_path, write_png
+    from camlab88.emulator.harness import run
+    from camlab88.emulator.harness.loop import Plugin
+    from camlab88.emulator.harness.rainbow import RainbowTarget
+    from camlab88.emulator.rainbow.session import in_process
 
     rb = in_process(record=opts.record is not None)
     vis = Visualiser(rb.client, shot, views)

@@ -8,6 +8,6 @@ COMMAND = "camlab88 tablet calibrate"
 
 
 def calibrate(args: argparse.Namespace) -> int:
-    from emulator.tablet_input.calibrate import calibrate_tablet
+    from camlab88.emulator.tablet_input.calibrate import calibrate_tablet
 
     return calibrate_tablet(COMMAND, args.source, args.seconds)

@@ -8,6 +8,6 @@ COMMAND = "camlab88 tablet emulate"
 
 
 def emulate(args: argparse.Namespace) -> int:
-    from emulator.tablet_input.emulate import emulate_tablet
+    from camlab88.emulator.tablet_input.emulate import emulate_tablet
 
     return emulate_tablet(COMMAND, args.protocol, args.demo, args.seconds, args.screenshot)

@@ -6,7 +6,7 @@ import argparse
 
 
 def cmd_list(args: argparse.Namespace) -> int:
-    from protocols.tablets.hid_source import backend_name, list_digitizers
+    from camlab88.protocols.tablets.hid_source import backend_name, list_digitizers
 
     devices, note = list_digitizers()
     print(f"HID digitizers (backend: {backend_name()}):")

@@ -8,7 +8,7 @@ COMMAND = "camlab88 tablet monitor"
 
 
 def monitor(args: argparse.Namespace) -> int:
-    from emulator.tablet_input.monitor import monitor_tablet
+    from camlab88.emulator.tablet_input.monitor import monitor_tablet
 
     return monitor_tablet(COMMAND, args.source, args.raw, args.count, args.seconds,
                           args.screenshot)

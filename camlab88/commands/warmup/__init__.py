@@ -23,15 +23,15 @@ COMMAND = "camlab88 warm-up"
 STEPS: tuple[tuple[str, str | tuple[str, ...]], ...] = (
     ("KAS in-betweener", ("kas", "inbetween", "walk_a", "walk_b", "--path", "walk_path",
                           "--timing", "walk_ticks", "--out", "w.kas")),
-    ("Sigma raster", "emulator.sigma.kernel_warmup:compile_kernels"),
+    ("Sigma raster", "camlab88.emulator.sigma.kernel_warmup:compile_kernels"),
     ("snooker", ("snooker", "simulate", "--break", "5", "--out", "b.cp")),
-    ("Rainbow", "emulator.rainbow.kernel_warmup:compile_kernels"),
+    ("Rainbow", "camlab88.emulator.rainbow.kernel_warmup:compile_kernels"),
     ("KAS painting", ("demo", "--headless", "--only", "paint", "--out", "demo")),
     ("snooker visualiser and renderer",
      ("demo", "--headless", "--only", "snooker_camera", "--only", "film", "--out", "demo")),
     ("cellular automaton", ("ca", "run", "--rules", "life", "--pattern", "glider",
                             "--generations", "4", "--engine", "direct")),
-    ("HashLife", "apps.ca.hashlife.kernel_warmup:compile_kernels"),
+    ("HashLife", "camlab88.apps.ca.hashlife.kernel_warmup:compile_kernels"),
 )
 
 
@@ -43,7 +43,7 @@ def _run(args: argparse.Namespace) -> int:
     import os
     import time
 
-    from base import aot_load
+    from camlab88.base import aot_load
     from camlab88.commands.warmup.aot import build_step
 
     start = time.perf_counter()
@@ -73,7 +73,7 @@ def _jit_steps(total: int) -> int:
     import tempfile
     import time
 
-    from base.kernel_notice import complete_pending, run_completion
+    from camlab88.base.kernel_notice import complete_pending, run_completion
 
     with tempfile.TemporaryDirectory(prefix="camlab88-warm-up-") as scratch:
         for i, (what, step) in enumerate(STEPS, 1):

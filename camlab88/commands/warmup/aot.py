@@ -9,20 +9,20 @@ import time
 
 # what a `ca run` loads: the direct engine, the pattern readers' scanner, HashLife
 AOT_MODULES: tuple[str, ...] = (
-    "apps.ca.grid_stats",
-    "apps.ca.rle_scan",
-    "apps.ca.kernels",
-    "apps.ca.hashlife.store",
-    "apps.ca.hashlife.leaf",
-    "apps.ca.hashlife.census",
-    "apps.ca.hashlife.grid",
-    "apps.ca.hashlife.upkeep",
-    "apps.ca.hashlife.cells",
-    "apps.ca.hashlife.listing",
-    "apps.ca.hashlife.cellgrid",
-    "apps.ca.hashlife.bits.leaves",
-    "apps.ca.hashlife.bits.window",
-    "apps.ca.hashlife.evolve",
+    "camlab88.apps.ca.grid_stats",
+    "camlab88.apps.ca.rle_scan",
+    "camlab88.apps.ca.kernels",
+    "camlab88.apps.ca.hashlife.store",
+    "camlab88.apps.ca.hashlife.leaf",
+    "camlab88.apps.ca.hashlife.census",
+    "camlab88.apps.ca.hashlife.grid",
+    "camlab88.apps.ca.hashlife.upkeep",
+    "camlab88.apps.ca.hashlife.cells",
+    "camlab88.apps.ca.hashlife.listing",
+    "camlab88.apps.ca.hashlife.cellgrid",
+    "camlab88.apps.ca.hashlife.bits.leaves",
+    "camlab88.apps.ca.hashlife.bits.window",
+    "camlab88.apps.ca.hashlife.evolve",
 )
 
 STEP = "ahead-of-time modules"
@@ -31,7 +31,7 @@ STEP = "ahead-of-time modules"
 def build_step(index: int, total: int) -> None:
     """Build the listed modules' extensions, one line each; a failure (no C compiler, say)
     is reported and leaves those modules on the JIT path."""
-    from base import aot_build, aot_load
+    from camlab88.base import aot_build, aot_load
 
     print(f"[{index}/{total}] {STEP} ...", end="", file=sys.stderr, flush=True)
     if not aot_load.enabled():

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import Generic, TypeVar
 
-from protocols.rainbow.client import RainbowClient
+from camlab88.protocols.rainbow.client import RainbowClient
 
 T = TypeVar("T")
 

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import colorsys
 
-from protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
+from camlab88.protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
 
 BORDER, INK = 0, 1  # pixel values; item i's background is 2 + i
 ROW_H = 18

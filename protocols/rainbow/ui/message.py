@@ -6,7 +6,7 @@ changed per message through the LUT, not by redrawing), 1 black writing, 2 a whi
 
 from __future__ import annotations
 
-from protocols.rainbow.client import RainbowClient
+from camlab88.protocols.rainbow.client import RainbowClient
 
 PAPER, INK, BORDER = 0, 1, 2
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from protocols.rainbow.client import RainbowClient
+from camlab88.protocols.rainbow.client import RainbowClient
 
 # draw(world_x, world_y, w, h, pad_x, pad_y): fill that pad rectangle with that world area.
 DrawStrip = Callable[[int, int, int, int, int, int], None]

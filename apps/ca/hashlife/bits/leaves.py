@@ -17,13 +17,12 @@ no live cells, it sends nothing; a plane with no wall yet (no bounded plane fram
 from __future__ import annotations
 
 import numpy as np
+from camlab88.apps.ca.hashlife.bits.rule import KIND_TOTALISTIC, LUT, TERM, TERM_ANY, TERM_BIRTH
+from camlab88.apps.ca.hashlife.store import HAS_WALL, all_tables, leaf
+from camlab88.base.kernel_set import KernelSet
 
-from apps.ca.hashlife.bits.rule import KIND_TOTALISTIC, LUT, TERM, TERM_ANY, TERM_BIRTH
-from apps.ca.hashlife.store import HAS_WALL, all_tables, leaf
-from base.kernel_set import KernelSet
-
-kernels = KernelSet(__name__, sources=("apps.ca.hashlife.store", "base.raw_views",
-                                         "base.raw_view_intrinsics"))
+kernels = KernelSet(__name__, sources=("camlab88.apps.ca.hashlife.store", "camlab88.base.raw_views",
+                                         "camlab88.base.raw_view_intrinsics"))
 
 LOW = np.uint64(0xFFFFFFFF)
 HALF = np.uint64(0xFFFF)

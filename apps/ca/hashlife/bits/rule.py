@@ -15,9 +15,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.ca.hashlife.leaf import deterministic_reason, generation, order_matters, pack
-from apps.ca.rules import RuleSet
+from camlab88.apps.ca.hashlife.leaf import deterministic_reason, generation, order_matters, pack
+from camlab88.apps.ca.rules import RuleSet
 
 CENTRE = 4
 # The kernels' table (uint64): kind, number of terms, each term (kind, then the four bits of

@@ -7,14 +7,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from apps.ca.hashlife import cells
-from apps.ca.hashlife.bits.leaves import PLANES
-from apps.ca.hashlife.bits.rule import BinaryRule, binary_rule
-from apps.ca.hashlife.bits.window import grid_to_tree
-from apps.ca.hashlife.run import StoreRun
-from apps.ca.hashlife.store import BIT_LEAF_LEVEL, Store
-from apps.ca.rules import RuleSet
+from camlab88.apps.ca.hashlife import cells
+from camlab88.apps.ca.hashlife.bits.leaves import PLANES
+from camlab88.apps.ca.hashlife.bits.rule import BinaryRule, binary_rule
+from camlab88.apps.ca.hashlife.bits.window import grid_to_tree
+from camlab88.apps.ca.hashlife.run import StoreRun
+from camlab88.apps.ca.hashlife.store import BIT_LEAF_LEVEL, Store
+from camlab88.apps.ca.rules import RuleSet
 
 MAX_JUMP = 1 << 15  # generations: the level-17 frame's centre after at most 2**15
 

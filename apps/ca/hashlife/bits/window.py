@@ -4,12 +4,12 @@ small Life pattern needs: the pattern is placed as a grid), without a cell list.
 from __future__ import annotations
 
 import numpy as np
+from camlab88.apps.ca.hashlife.grid import INTS, PLANE_LEVEL, levels, tile_key
+from camlab88.apps.ca.hashlife.store import BIT_LEAF_LEVEL, META_T, TABLES, leaf
+from camlab88.base.kernel_set import KernelSet
 
-from apps.ca.hashlife.grid import INTS, PLANE_LEVEL, levels, tile_key
-from apps.ca.hashlife.store import BIT_LEAF_LEVEL, META_T, TABLES, leaf
-from base.kernel_set import KernelSet
-
-kernels = KernelSet(__name__, sources=("apps.ca.hashlife.grid", "apps.ca.hashlife.store"))
+kernels = KernelSet(__name__, sources=("camlab88.apps.ca.hashlife.grid",
+                                        "camlab88.apps.ca.hashlife.store"))
 
 
 @kernels.export(f"int64(int64, int64, uint8[:, ::1], {TABLES}, {INTS}, {INTS})")
