@@ -4,6 +4,12 @@
 as 8N1, so it is opened 8N1 and the parity bit (bit 7) is checked in software: that works
 identically on a real UART, a pty and a socket.  An 8-bit line with parity (Summagraphics 8O1)
 is opened with that parity and, on a POSIX port, PARMRK so errors reach the parser.
+
+Flow control is per direction.  Every protocol here sends binary reports whose data bytes
+may be 0x11 or 0x13, so software flow control on what the tablet sends (IXON) is never on:
+the tty driver would swallow those bytes as XON/XOFF.  ``xoff_to_tablet`` says the tablet
+obeys XOFF/XON from the host (IXOFF: the driver sends XOFF when its input buffer fills);
+only the Summagraphics line uses it ("FlowControl Xoff", facts §2.1).
 """
 
 from __future__ import annotations
@@ -28,7 +34,7 @@ class LineSetup:
     data_bits: int
     parity: str  # "N", "E", "O"
     stop_bits: int
-    xonxoff: bool
+    xoff_to_tablet: bool  # IXOFF: the host may pause the tablet; IXON is never set
     rtscts: bool
     init: tuple[InitStep, ...]
     source: str  # where these settings come from
@@ -45,7 +51,8 @@ class LineSetup:
         return self.data_bits, self.parity, self.stop_bits
 
     def describe(self) -> str:
-        flow = "RTS/CTS" if self.rtscts else "XON/XOFF" if self.xonxoff else "none"
+        flow = ("RTS/CTS" if self.rtscts else "XOFF to the tablet" if self.xoff_to_tablet
+                else "none")
         return f"{self.baud} {self.data_bits}{self.parity}{self.stop_bits}, flow {flow}"
 
 

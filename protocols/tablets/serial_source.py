@@ -7,7 +7,7 @@ from collections.abc import Callable
 from dataclasses import replace
 
 import serial
-from camlab88.protocols.link.serial_port import open_url, read_available
+from camlab88.protocols.link.serial_port import descriptor, open_url, read_available
 from camlab88.protocols.tablets import wacom4
 from camlab88.protocols.tablets.base import TabletParser
 from camlab88.protocols.tablets.events import DeviceReply, TabletEvent
@@ -43,6 +43,27 @@ def _enable_parmrk(port: serial.Serial) -> bool:
         return True
     except (OSError, AttributeError, ValueError, termios.error):
         return False
+
+
+def _set_software_flow(port: serial.Serial, xoff_to_tablet: bool) -> None:
+    """IXON off (0x11/0x13 from the tablet are data), IXOFF as the protocol says.
+
+    pyserial's ``xonxoff`` sets both directions at once, so the port is opened without it
+    and IXOFF is set here on a POSIX tty; a socket or loopback URL has no tty to set."""
+    try:
+        import termios
+    except ImportError:  # Windows: pyserial's xonxoff=False already leaves both off
+        return
+    fd = descriptor(port)
+    if fd is None:
+        return  # not a file descriptor (rfc2217://, loop://)
+    try:
+        attrs = termios.tcgetattr(fd)
+    except termios.error:
+        return  # not a tty (socket://)
+    attrs[0] &= ~(termios.IXON | termios.IXANY)
+    attrs[0] = attrs[0] | termios.IXOFF if xoff_to_tablet else attrs[0] & ~termios.IXOFF
+    termios.tcsetattr(fd, termios.TCSANOW, attrs)
 
 
 def _why(exc: BaseException) -> str:
@@ -99,9 +120,10 @@ class SerialSource(TabletSource):
         try:
             self.port = open_url(
                 spec.target, baudrate=baud, bytesize=bytesize, parity=_PARITY[parity],
-                stopbits=stopbits, xonxoff=self.line.xonxoff, rtscts=self.line.rtscts,
+                stopbits=stopbits, xonxoff=False, rtscts=self.line.rtscts,
                 write_timeout=WRITE_TIMEOUT,
             )
+            _set_software_flow(self.port, self.line.xoff_to_tablet)
         except (serial.SerialException, OSError, ValueError) as exc:
             raise SourceLost(f"{spec.text}: cannot open {spec.target}: {_why(exc)}") from exc
         parmrk = spec.kind == "serial" and parity != "N" and _enable_parmrk(self.port)
@@ -130,6 +152,8 @@ class SerialSource(TabletSource):
                     self.port.baudrate = step.baud
                 except (serial.SerialException, OSError, ValueError):
                     pass  # sockets and loopbacks have no baud rate to set
+                # pyserial rewrites the whole termios on a speed change
+                _set_software_flow(self.port, self.line.xoff_to_tablet)
             self._write(step.data)
             if step.size_reply:
                 self._await_size(step.wait, step.data)

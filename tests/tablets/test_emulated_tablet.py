@@ -79,7 +79,7 @@ def test_pointer_events_arrive_as_protocol_bytes(host_for, protocol: str) -> Non
 def test_default_emulated_tablet_is_summagraphics(host_for) -> None:
     tablet, _ = host_for("summa-mm")
     assert EmulatedTablet.__init__.__defaults__[0] == "summa-mm"
-    assert tablet.line.describe() == "9600 8O1, flow XON/XOFF"
+    assert tablet.line.describe() == "9600 8O1, flow XOFF to the tablet"
 
 
 def test_wacom_identification_queries(host_for) -> None:

@@ -250,12 +250,12 @@ def test_line_setups() -> None:
     assert [s.baud for s in wacom.init if s.baud] == [38400, 19200, 9600]
     assert wacom.init[0].data == b"\r$" and wacom.init[1].data == b"\r#"
     summa = line_setup("summa-mm")
-    assert (summa.wire, summa.xonxoff, summa.software_parity) == ((8, "O", 1), True, "N")
+    assert (summa.wire, summa.xoff_to_tablet, summa.software_parity) == ((8, "O", 1), True, "N")
     assert summa.init[0].data == b" " * 10 + b"\x00" and summa.init[0].wait == 0.4
     bp2 = line_setup("bitpad2")  # 7E1 is opened as 8N1 with parity checked in software
     assert (bp2.data_bits, bp2.parity, bp2.wire, bp2.software_parity) == (7, "E", (8, "N", 1),
                                                                           "E")
     cal = line_setup("calcomp")
-    assert (cal.wire, cal.xonxoff, cal.rtscts) == ((8, "N", 1), False, False)
+    assert (cal.wire, cal.xoff_to_tablet, cal.rtscts) == ((8, "N", 1), False, False)
     with pytest.raises(ValueError, match="unknown tablet protocol"):
         line_setup("mouse")
