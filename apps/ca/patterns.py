@@ -1,4 +1,5 @@
-"""Patterns: the native format, RLE (as Golly and the LifeWiki write it) and plaintext .cells.
+"""Patterns: the native format, RLE (as Golly and the LifeWiki write it), plaintext .cells,
+Golly's macrocell and Life 1.05/1.06 (read only).
 
 A :class:`Pattern` is a set of (x, y, life-form) cells relative to its own top-left corner
 plus the reference point the thesis's "save pattern" asks for (section 7.3.2).  It can be
@@ -12,7 +13,7 @@ import re
 from dataclasses import dataclass, field
 
 import numpy as np
-from camlab88.apps.ca import macrocell
+from camlab88.apps.ca import life_pc, macrocell
 from camlab88.apps.ca.rle_body import decode
 from camlab88.base import atomicfile
 from camlab88.base.textinput import InputError, quote, read_text, where
@@ -182,6 +183,8 @@ def format_of(path: str) -> str:
         return "cells"
     if low.endswith(".mc"):
         return "mc"
+    if low.endswith((".lif", ".life")):
+        return "life"
     return "native"
 
 
@@ -203,12 +206,17 @@ def parse_pattern(text: str, fmt: str, source: str = "<pattern>") -> Pattern:
         return parse_cells(text, source)
     if fmt == "mc":
         return parse_mc(text, source)
+    if fmt == "life":
+        return parse_life(text, source)
     return parse_native(text, source)
 
 
 def write_pattern(path: str | os.PathLike, pattern: Pattern) -> None:
     path = os.fspath(path)
     fmt = format_of(path)
+    if fmt == "life":
+        raise ValueError(f"{path}: Life 1.05/1.06 is read, not written; save as .rle, "
+                         ".cells, .mc or native")
     text = {"rle": format_rle, "cells": format_cells, "native": format_native,
             "mc": format_mc}[fmt](pattern)
     atomicfile.write_atomic(path, text)
@@ -512,6 +520,20 @@ def format_mc(p: Pattern) -> str:
     comments = list(p.comments) + ([f"camlab88 rules: {p.rule}"] if p.rule and not golly
                                    else [])
     return macrocell.format_mc(p.xs, p.ys, p.ts, p.ref, golly or "", comments)
+
+
+# -- Life 1.05 / 1.06 (.lif, .life) ----------------------------------------------------------
+
+def parse_life(text: str, source: str = "<lif>") -> Pattern:
+    """Golly's reading (apps/ca/life_pc.py); Golly's origin becomes the reference point."""
+    try:
+        cells, rule, comments = life_pc.parse_life_pc(text)
+    except life_pc.LifeTextError as exc:
+        raise PatternError(source, exc.line, exc.column, exc.message) from None
+    pattern = Pattern.from_cells([(x, y, 1) for x, y in cells], rule=rule, comments=comments)
+    if pattern.width > 65536 or pattern.height > 65536:
+        raise PatternError(source, 0, 0, "pattern is wider or taller than the 65536-cell plane")
+    return pattern
 
 
 # -- plaintext .cells --------------------------------------------------------------------------

@@ -24,6 +24,10 @@ CASES = [  # file in tests/data/ca/golly, our rule set, generations, a Golly rul
     ("broken-lines.mc", "life", (0, 1000), False),  # HashLife (a macrocell file)
     ("primes.mc", "wireworld", (0, 1, 120), True),  # WireWorld
     ("Langtons-Loops.rle", "langtons_loops", (0, 1, 151, 400), True),  # Loops
+    ("acorn.lif", "life", (0, 1, 500), False),  # Life/Methuselahs, Life 1.05 ('#P' alone)
+    ("rabbits.lif", "life", (0, 300), False),  # Life/Methuselahs, Life 1.05
+    ("breeder.lif", "life", (0, 120), False),  # Life/Breeders, Life 1.05, 258 '#P' blocks
+    ("acorn_106.life", "life", (0, 500), False),  # acorn written as Life 1.06 (SOURCES.md)
 ]
 
 
@@ -74,3 +78,12 @@ def test_our_macrocell_nodes_are_the_ones_golly_writes(tmp_path: Path) -> None:
     ours = [s for s in format_mc(read_pattern(DATA / "broken-lines.mc")).splitlines()
             if not s.startswith(("[", "#"))]
     assert ours == theirs
+
+
+def test_golly_reads_persian_rugs_lif_as_we_do(tmp_path: Path) -> None:
+    """Life-Like/persian-rugs.lif ('#R B234', a rule we hold no rule set for): the cells
+    bgolly loads (generation 0) are the ones we read, and we keep its rule."""
+    p = read_pattern(DATA / "persian-rugs.lif")
+    assert p.rule == "B234"
+    ours = {(int(x) - p.ref[0], int(y) - p.ref[1], int(t)) for x, y, t in zip(p.xs, p.ys, p.ts)}
+    assert golly_cells(DATA / "persian-rugs.lif", 0, tmp_path / "rugs.mc", False) == ours
