@@ -108,18 +108,26 @@ class Terminated(KeyboardInterrupt):
     file finished and written, temporaries removed) runs for both."""
 
 
+class HungUp(Terminated):
+    """SIGHUP (the terminal or the ssh session closed): the same clean-up as SIGTERM."""
+
+
 def _terminate(signum: int, frame: object) -> None:
-    raise Terminated
+    import signal
+
+    raise HungUp if signum == getattr(signal, "SIGHUP", None) else Terminated
 
 
-def _catch_sigterm() -> object:
-    """Install the SIGTERM handler (main thread only); returns the handler it replaced."""
+def _catch_sigterm() -> dict[int, object]:
+    """Install the SIGTERM and SIGHUP handlers (main thread only); returns the handlers
+    they replaced."""
     import signal
     import threading
 
     if threading.current_thread() is not threading.main_thread():
-        return None
-    return signal.signal(signal.SIGTERM, _terminate)
+        return {}
+    sigs = [signal.SIGTERM] + ([signal.SIGHUP] if hasattr(signal, "SIGHUP") else [])
+    return {sig: signal.signal(sig, _terminate) for sig in sigs}
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -161,6 +169,8 @@ def _main(argv: Sequence[str] | None) -> int:
     previous = _catch_sigterm()
     try:
         result = args.handler(args)
+    except HungUp:
+        return 129  # 128 + SIGHUP
     except Terminated:
         return 143  # 128 + SIGTERM, as the shell reports a process it ended
     except KeyboardInterrupt:
@@ -174,10 +184,11 @@ def _main(argv: Sequence[str] | None) -> int:
             raise
         return _state_fault(words, args.load_state, exc)
     finally:
-        if previous is not None:
+        if previous:
             import signal
 
-            signal.signal(signal.SIGTERM, previous)
+            for sig, handler in previous.items():
+                signal.signal(sig, handler)
     return int(result or 0)
 
 

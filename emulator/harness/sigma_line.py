@@ -83,6 +83,7 @@ class SigmaLineTarget(SavesState):
         self._replayed: list[tuple[str, bytes]] = []  # a replay's outside traffic, this tick
         self._order_since: Fraction | None = None  # when the unfinished order began
         self._commands = 0
+        self._client_left = False  # a client went; its bytes may still be on the line
         self.tap = OutsideTap(self.line.host, self._line_hung_up)  # the bridge's endpoint
         self._machine_up = self.term.on_output
         self.term.on_output = self._up
@@ -107,6 +108,7 @@ class SigmaLineTarget(SavesState):
         if self._received:
             self._frame = None
         self._watch_order(self.machine.now - TICK)
+        self._left_half_order()
         return self.until is None or self.machine.now < self.until
 
     def _outside(self) -> None:
@@ -126,8 +128,20 @@ class SigmaLineTarget(SavesState):
                 disconnect(f"half an order unfinished for {float(self.order_timeout):g} s "
                            "of line time")
         for ev in self.bridge.poll(timeout=0.0).events:
-            if ev.kind in ("error", "disconnected", "refused"):
+            if ev.kind in ("error", "disconnected", "refused") or (
+                    ev.kind == "connected" and ev.detail.endswith(" is back")):
                 self.report(ev.kind, ev.detail)
+            if ev.kind in ("connected", "disconnected"):
+                self._client_left = ev.kind == "disconnected"
+
+    def _left_half_order(self) -> None:
+        """A client that left half an order: once its last bytes have arrived, the line
+        hangs up (recorded, so a replay does the same), which reports the half order."""
+        if not self._client_left or self.line.host.in_flight():
+            return
+        self._client_left = False
+        if self.term.decoder.mid_order:
+            self.tap.hang_up()
 
     def _watch_order(self, now: Fraction) -> None:
         """Note when the order now unfinished at the terminal began (``now``, this tick's
@@ -144,9 +158,18 @@ class SigmaLineTarget(SavesState):
         return since is not None and self.line.clock.exact - since >= self.order_timeout
 
     def _line_hung_up(self) -> None:
-        """A client's half order leaves with it: the next client starts on an order boundary."""
-        self.term.decoder.drop_partial()
-        self._order_since = None
+        """A client's half order leaves with it: the next client starts on an order boundary.
+        It is counted and reported as malformed, as the bytes of a next client cutting it
+        short would be over a pty (and ``--strict`` stops on it)."""
+        decoder, tracer = self.term.decoder, self.machine.tracer
+        try:
+            if decoder.mid_order:
+                decoder.stats.malformed += 1
+                if tracer is not None:
+                    tracer.cut_short(float(self.line.clock.exact), "the client hanging up")
+        finally:
+            decoder.drop_partial()
+            self._order_since = None
 
     def frame(self) -> np.ndarray:
         """The terminal's picture; composed again only after bytes or input changed it (the

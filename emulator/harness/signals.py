@@ -1,4 +1,4 @@
-"""Ctrl-C and SIGTERM while a harness runs take effect between two ticks, never inside one.
+"""Ctrl-C, SIGTERM and SIGHUP while a harness runs take effect between two ticks, never inside one.
 
 A tick is the unit a session recording counts and a replay repeats: a stop in the middle of
 one (say after the tick's time advanced, before its frame was shown) recorded an end that no
@@ -16,7 +16,8 @@ import threading
 from collections.abc import Callable
 from typing import Any
 
-_SIGNALS = (signal.SIGINT, signal.SIGTERM)
+_SIGNALS = (signal.SIGINT, signal.SIGTERM,
+            *([signal.SIGHUP] if hasattr(signal, "SIGHUP") else []))  # not on Windows
 
 
 class DeferredSignals:

@@ -93,6 +93,19 @@ class SigmaTracer:
             first, self._first = self._first, None  # and the line stay consistent
             raise ProtocolError(first)
 
+    def cut_short(self, t: float, why: str) -> None:
+        """The order under way will never be finished (``why``: its sender hung up): one
+        malformed event, worded as when a byte cuts an order short; strict raises it."""
+        dec = self.term.decoder
+        expected = (_after_letter(chr(dec._letter)) if dec._spec is None and dec._letter >= 0
+                    else self._expected(dec._spec, list(dec._pair), dec._flag_k, dec.mode))
+        ev = TraceEvent(self.start, t, "malformed", {}, f"{why} cuts an order short",
+                        "malformed", expected, bytes(self.recent))
+        self._emit(ev)
+        self.start = self.offset
+        if self.strict:
+            raise ProtocolError(ev)
+
     def _emit(self, ev: TraceEvent) -> None:
         self.sink(ev)
         if ev.warning is not None:

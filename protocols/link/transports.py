@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import contextlib
 import errno
+import os
 import select
 import socket
 import time
@@ -55,6 +56,12 @@ def _close_quietly(handle: Any) -> None:
     of it, so an error closing it changes nothing."""
     with contextlib.suppress(Exception):
         handle.close()
+
+
+def _reason(exc: BaseException) -> str:
+    """The OS's reason once (pyserial's message repeats the port and nests the OS error)."""
+    code = getattr(exc, "errno", None)
+    return os.strerror(code) if isinstance(code, int) and code > 0 else str(exc)
 
 
 @dataclass(frozen=True)
@@ -384,7 +391,8 @@ class SerialUrlBridge(Bridge):
     The port is opened with the line's settings (and only options its handler supports);
     each poll takes whatever has arrived (``camlab88.protocols.link.serial_port``), so any URL
     keeps up with the line.  If it cannot be opened or fails, that is reported and the bridge tries
-    again on a later poll.
+    again on a later poll; a retry that fails the same way again is not reported again, and
+    the port coming back is (``connected``, "... is back").
     """
 
     RETRY_POLLS = 25  # polls between reopen attempts after a failure
@@ -403,6 +411,7 @@ class SerialUrlBridge(Bridge):
         self.xonxoff = xonxoff  # host-OS flow control on the real port (off: the line does it)
         self._port: Any = None
         self._retry_in = 0
+        self._trouble: str | None = None  # the failure last reported, until the port is back
         self._open()
 
     @property
@@ -418,15 +427,20 @@ class SerialUrlBridge(Bridge):
         except (serial.SerialException, OSError, ValueError) as exc:
             self._port = None
             self._retry_in = self.RETRY_POLLS
-            self._event("error", f"cannot open {self.url}: {exc}")
+            why = f"cannot open {self.url}: {_reason(exc)}"
+            if why != self._trouble:  # the same failure again is not news
+                self._trouble = why
+                self._event("error", why + " (retrying)" if self.events else why)
             return
-        self._event("connected", self.url)
+        back, self._trouble = self._trouble is not None, None
+        self._event("connected", f"{self.url} is back" if back else self.url)
 
     def _fail(self, exc: Exception) -> None:
         _close_quietly(self._port)
         self._port = None
         self._retry_in = self.RETRY_POLLS
-        self._event("disconnected", f"{self.url}: {exc}")
+        self._trouble = f"{self.url}: {exc}"
+        self._event("disconnected", f"{self.url}: {exc} (retrying)")
 
     def _read_outside(self, timeout: float) -> bytes:
         import serial

@@ -7,7 +7,10 @@ import os
 import signal
 import subprocess
 import sys
+import time
 from pathlib import Path
+
+import pytest
 
 
 def test_sigma_run_headless_writes_the_line_recording_on_sigterm(tmp_path: Path) -> None:
@@ -29,4 +32,32 @@ def test_sigma_run_headless_writes_the_line_recording_on_sigterm(tmp_path: Path)
     assert "until Ctrl-C" in err  # the headless run says how it ends
     assert f"recorded the line to {rec}" in out, (out, err)
     assert rec.read_text(encoding="utf-8").startswith("camlab88-link-recording 1\n")
+    assert "Traceback" not in err
+
+
+@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGHUP], ids=["SIGTERM", "SIGHUP"])
+def test_sigma_run_writes_trace_recording_and_screenshot_on_sigterm_and_sighup(
+        tmp_path: Path, sig: int) -> None:
+    """SIGHUP (the terminal closed) writes what SIGTERM writes; 129 and 143 as the shell says."""
+    rec, trace, shot = tmp_path / "s.rec", tmp_path / "s.jsonl", tmp_path / "s.png"
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "camlab88", "sigma", "run", "--headless", "--seconds", "600",
+         "--record-line", str(rec), "--trace", str(trace), "--screenshot", str(shot)],
+        cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        first = proc.stdout.readline()
+        assert "on pty" in first, first
+        with open(first.split()[-1], "wb", buffering=0) as host:
+            host.write(b"\r\n+-*/")  # something for the trace to hold
+            time.sleep(1.0)  # wall time for the run loop to start and take the bytes
+        proc.send_signal(sig)
+        out, err = proc.communicate(timeout=60)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    assert proc.returncode == (129 if sig == signal.SIGHUP else 143), err
+    assert rec.read_text(encoding="utf-8").startswith("camlab88-link-recording 1\n")
+    assert shot.exists() and f"screenshot {shot}" in err, (out, err)
+    assert "traced 2 orders" in err, err  # CR LF as alpha text, then the graphics flag
     assert "Traceback" not in err
