@@ -2,7 +2,8 @@
 
 A real PGPLOT stream (tests/data/link/pgplot_goctest.goc, 7,670 bytes = 7.99 s at 960
 characters a second) arrives over ``socket://`` from a TCP server, over ``rfc2217://`` from
-pyserial's own RFC 2217 server, and over a socat null modem; ``sigma run`` (paced: its line
+pyserial's own RFC 2217 server side (``PortManager`` in front of ``loop://``: it cannot serve
+a pty, docs/link.md), and over a socat null modem; ``sigma run`` (paced: its line
 time follows the wall clock the bytes arrive on) must show the whole picture by the line time
 the stream needs, identical to ``sigma render`` of the same bytes.
 """
