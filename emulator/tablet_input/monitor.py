@@ -153,6 +153,8 @@ def monitor_tablet(command: str, source_text: str, raw: bool, count: int | None,
             print(f"camlab88 tablet: {note}", file=sys.stderr)
         print(f"# {source.name}: {source.model.name}, 0..{source.model.max_x} x "
               f"0..{source.model.max_y}, {source.model.lines_per_inch:g} lpi", flush=True)
+        for note in getattr(source, "header_notes", ()):
+            print(f"# {note}", flush=True)
         program = MonitorProgram(held, emu, count, seconds)
         shot = screenshot is not None and windowed
         run(program, RunOptions(headless=not windowed, command=command,

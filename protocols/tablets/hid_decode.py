@@ -10,6 +10,9 @@ from camlab88.protocols.tablets.hid_descriptor import HidField, ReportDescriptor
 GD_X, GD_Y = 0x010030, 0x010031
 GD_MOUSE = 0x010002
 DG_PEN, DG_DIGITIZER, DG_PUCK = 0x0D0002, 0x0D0001, 0x0D0021
+DG_TOUCH_SCREEN, DG_TOUCH_PAD, DG_STYLUS, DG_FINGER = 0x0D0004, 0x0D0005, 0x0D0020, 0x0D0022
+PEN_COLLECTIONS = {DG_DIGITIZER, DG_PEN, DG_STYLUS, DG_PUCK}
+TOUCH_COLLECTIONS = {DG_TOUCH_SCREEN, DG_TOUCH_PAD, DG_FINGER}
 DG_TIP_PRESSURE, DG_IN_RANGE, DG_DATA_VALID = 0x0D0030, 0x0D0032, 0x0D0037
 DG_INVERT, DG_TILT_X, DG_TILT_Y = 0x0D003C, 0x0D003D, 0x0D003E
 DG_TIP, DG_TIP2, DG_BARREL, DG_ERASER = 0x0D0042, 0x0D0043, 0x0D0044, 0x0D0045
@@ -102,7 +105,13 @@ def _has(fields: list[HidField], usage: int) -> HidField | None:
 
 
 class PenDecoder:
-    """Finds the pen reports in a descriptor (X, Y and a digitizer usage) and decodes them.
+    """Finds the pen reports in a descriptor and decodes them.
+
+    A pen report has absolute X and Y in a Digitizer, Pen, Stylus or Puck collection; a report
+    whose X is in a Finger collection or a Touch Screen / Touch Pad application is a touch report
+    (``touch_reports``), never a pen: a finger must not draw (issue 42: N-Trig, Atmel and
+    Goodix pen+touch screens).  A report outside any digitizer collection that still carries
+    digitizer usages (Huion H610's report 9, a pen described as a mouse) is a pen too.
 
     Buttons follow Linux hid-input's pen mapping: bit 0 contact (Tip Switch, Eraser under
     Invert, or Button 1 on pens that describe themselves as a mouse), bit 1 Barrel Switch
@@ -115,20 +124,26 @@ class PenDecoder:
         self.descriptor = descriptor
         self.decoder = ReportDecoder(descriptor)
         self.pen_reports: dict[int, TabletModel] = {}
+        self.touch_reports: list[int] = []
         for rid in descriptor.report_ids("input"):
             fields = descriptor.fields_for(rid)
             fx, fy = _has(fields, GD_X), _has(fields, GD_Y)
             if fx is None or fy is None or fx.flags & 0x04:  # relative X = a mouse
                 continue
+            within = {canonical_usage(c) for c in fx.collections}
+            if within & TOUCH_COLLECTIONS:
+                self.touch_reports.append(rid)
+                continue
             digitizer = any(
                 canonical_usage(u) >> 16 == 0x0D for f in fields for u in f.usages
             )
-            if not digitizer:
+            in_digitizer = any(c >> 16 == 0x0D for c in within)
+            if not (within & PEN_COLLECTIONS or (digitizer and not in_digitizer)):
                 continue
             pressure = _has(fields, DG_TIP_PRESSURE)
             res = fx.resolution_per_mm()
             self.pen_reports[rid] = TabletModel(
-                f"HID report {rid:#04x}", fx.logical_max, fy.logical_max,
+                f"HID pen report {rid:#04x}", fx.logical_max, fy.logical_max,
                 res * 25.4 if res else 0.0, pressure.logical_max if pressure else None,
                 None,
             )

@@ -4,6 +4,7 @@ hidraw on Linux, libusb only as a fallback); reports come through a blocking-rea
 
 from __future__ import annotations
 
+import sys
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -90,6 +91,13 @@ def list_digitizers() -> tuple[list[HidDeviceInfo], str | None]:
     return out, None
 
 
+def mode_switch_failed(name: str, why: str) -> str:
+    """One line: the tablet stays in mouse mode, so no pen reports will come; what to try."""
+    return (f"camlab88 tablet: {name}: could not switch the tablet to tablet mode ({why}); "
+            "it may send no pen reports. Try: unplug it and plug it in again; check you may "
+            "write to its /dev/hidraw node (a udev rule or the plugdev group, docs/tablets.md)")
+
+
 class HidReportDecoder:
     """Pen reports -> events: a vendor profile's fixed layout, else the report descriptor's
     (a tablet with two pen reports, Huion's 7 and 9, switches ``model`` with the report)."""
@@ -107,6 +115,16 @@ class HidReportDecoder:
             if not self.pen.pen_reports:
                 raise ValueError(f"{where}: no pen report")
             self.model = next(iter(self.pen.pen_reports.values()))
+
+    @property
+    def header_notes(self) -> list[str]:
+        """What the monitor says after its header: touch reports are left alone."""
+        touch = self.pen.touch_reports if self.pen is not None else []
+        if not touch:
+            return []
+        ids = ", ".join(f"{r:#04x}" for r in touch)
+        return [f"touch report{'s' if len(touch) > 1 else ''} {ids} (fingers on a touch "
+                "screen or pad): not pen input, ignored"]
 
     def decode(self, report: bytes, now: float) -> TabletEvent | None:
         if self._profile_decode is not None:
@@ -150,10 +168,9 @@ class HidSource(TabletSource):
             pen_pages = (DIGITIZER_PAGE, WACOM_PAGE)
             paths = [d["path"] for d in rows if int(d.get("usage_page", 0)) in pen_pages]
             self.device = self._open(hid, spec, paths[:1], vid, pid)
-            try:  # legacy Wacoms start in mouse mode: switch to tablet reports
-                self.device.send_feature_report(list(self.profile.init_feature_report))
-            except (OSError, ValueError):
-                pass
+            failed = self._switch_mode(list(self.profile.init_feature_report))
+            if failed is not None:  # the user must learn why no pen reports come
+                print(mode_switch_failed(spec.text, failed), file=sys.stderr, flush=True)
         else:
             self._open_pen_interface(hid, spec, rows, vid, pid)
         self.decoder = HidReportDecoder(vid, pid, self.descriptor, spec.text)
@@ -162,6 +179,24 @@ class HidSource(TabletSource):
     @property
     def model(self):  # TabletModel
         return self.decoder.model
+
+    @property
+    def header_notes(self) -> list[str]:
+        return self.decoder.header_notes
+
+    def _switch_mode(self, report: list[int]) -> str | None:
+        """Legacy Wacoms start in mouse mode: the feature report switches them to tablet
+        reports.  Why it failed, or None.  hidapi raises on some backends and returns -1 on
+        others (hidraw), so both are failures."""
+        try:
+            sent = self.device.send_feature_report(report)
+        except (OSError, ValueError) as exc:
+            return str(exc) or type(exc).__name__
+        if isinstance(sent, int) and sent < 0:
+            error = getattr(self.device, "error", None)
+            why = error() if callable(error) else None
+            return str(why) if why else "the device refused the feature report"
+        return None
 
     @staticmethod
     def _enumerate(hid, spec: SourceSpec, vid: int, pid: int) -> list[dict]:
