@@ -36,14 +36,23 @@ def rainbow() -> Any:
 
 
 @pytest.fixture
-def sigma_pty() -> Iterator[Any]:
+def sigma_pty(request: pytest.FixtureRequest) -> Iterator[Any]:
     """A running Sigma on a pseudo-terminal: ``.path`` to open, ``.terminal``, ``.sigma``,
-    ``.screen()``, ``.wait_idle()``. Skips where there are no pseudo-terminals."""
+    ``.screen()``, ``.wait_idle()``. Skips where there are no pseudo-terminals.  Options by
+    indirect parametrisation, ``@pytest.mark.parametrize("sigma_pty", [{"strict": True}],
+    indirect=True)``: ``model``, ``baud``, ``strict`` (the first unknown, malformed or
+    out-of-range order raises ``camlab88.ProtocolError`` from ``wait_idle``/``wait_for``,
+    or at the test's end), ``trace`` (False: no trace kept, faster)."""
     if os.name != "posix":
         pytest.skip("sigma_pty needs POSIX pseudo-terminals")
     from camlab88.bench.pty_sigma import PtySigma
 
-    bench = PtySigma()
+    options = dict(getattr(request, "param", None) or {})
+    unknown = set(options) - {"model", "baud", "strict", "trace"}
+    if unknown:
+        raise pytest.UsageError(f"sigma_pty: unknown option(s) {', '.join(sorted(unknown))} "
+                                "(model, baud, strict, trace)")
+    bench = PtySigma(**options)
     try:
         yield bench
     finally:

@@ -127,7 +127,10 @@ class ControlKeys(Plugin):
         return path
 
     # ------------------------------------------------------------------ window
-    def on_frame(self, harness: Harness, frame: np.ndarray) -> None:
+    def wants_frame(self, harness: Harness) -> bool:
+        return False  # only that a frame was shown matters here
+
+    def on_frame(self, harness: Harness, frame: np.ndarray | None) -> None:
         self.stepping = False  # one frame advanced: paused again from the next tick
         if harness.window is not None:
             harness.window.set_caption(caption(harness, self))

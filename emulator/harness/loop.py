@@ -75,8 +75,15 @@ class Plugin:
     def handle_events(self, harness: Harness, events: list[HostEvent]) -> list[HostEvent]:
         return events
 
-    def on_frame(self, harness: Harness, frame: np.ndarray) -> None:
-        """Called with every frame shown (window or not)."""
+    def wants_frame(self, harness: Harness) -> bool:
+        """Whether ``on_frame`` will look at the frame being shown (``harness.frames_shown``
+        counts it already): the harness composes a frame only when a window or a plugin
+        wants it, so a headless run nobody watches draws no pictures.  By default: if the
+        plugin has an ``on_frame`` of its own."""
+        return type(self).on_frame is not Plugin.on_frame
+
+    def on_frame(self, harness: Harness, frame: np.ndarray | None) -> None:
+        """Called with every frame shown (window or not); None when nothing wanted it."""
 
     def post_tick(self, harness: Harness) -> None:
         """Called after every tick."""
@@ -144,11 +151,22 @@ class Harness:
                 for p in self.plugins:
                     p.start(self)
                 while self._tick_once() and signals.caught is None:
-                    self.pacer.pace(self.target.time())
+                    if self._running_ahead():
+                        self.pacer.release()
+                    else:
+                        self.pacer.pace(self.target.time())
             finally:
                 self._finish()
         signals.deliver()  # after the plugins finished (a recording is written)
         return self
+
+    def _running_ahead(self) -> bool:
+        """A live line without ``--speed`` runs as fast as its outside end writes: while bytes
+        are on their way (``target.busy()``) no tick waits for the wall clock; once the line
+        is idle, line time follows the wall clock again (timeouts, ``--seconds``)."""
+        busy = getattr(self.target, "busy", None)
+        return (self.options.live and self.options.controls.speed is None
+                and callable(busy) and bool(busy()))
 
     def _speed(self) -> float | None:
         """``--speed`` if given, else period speed when paced (below), else flat out."""
@@ -191,9 +209,10 @@ class Harness:
         return alive and not self._stop and (limit is None or self.frames_shown < limit)
 
     def _show(self) -> None:
-        frame = self.target.frame()
-        self.last_frame = frame
         self.frames_shown += 1
+        wanted = self.window is not None or any(p.wants_frame(self) for p in self.plugins)
+        frame = self.target.frame() if wanted else None
+        self.last_frame = frame  # None: not composed (harness.screen() composes one)
         self._shown_at = self.target.time()
         self._next_show = self.target.time() + Fraction(1) / Fraction(self.target.fps)
         if self.window is not None:

@@ -36,6 +36,12 @@ class Pacer:
             self._sleep(wait)
             self.slept += wait
 
+    def release(self) -> None:
+        """Virtual time ran ahead with nothing to wait for (a live line busy with bytes):
+        the wall clock is not owed that time; pacing starts again from wherever ``pace`` is
+        next called."""
+        self._anchor = None
+
     def rebase(self, t: Fraction | float) -> None:
         """Virtual time ``t`` is due now (after a pause or a change of speed)."""
         now = self._monotonic()

@@ -141,9 +141,13 @@ class HashCheck(Plugin):
         self.replay = replay
         self.expected = {h.frame: h for h in replay.rec.hashes}
 
-    def on_frame(self, harness: Harness, frame: np.ndarray) -> None:
+    def wants_frame(self, harness: Harness) -> bool:
+        return self.replay.check and harness.frames_shown in self.expected
+
+    def on_frame(self, harness: Harness, frame: np.ndarray | None) -> None:
         want = self.expected.get(harness.frames_shown)
-        if self.replay.check and want is not None and self.replay.mismatch is None:
+        if (self.replay.check and want is not None and self.replay.mismatch is None
+                and frame is not None):
             self._compare(harness, want, frame)
 
     def _compare(self, harness: Harness, want: ScreenHash, frame: np.ndarray) -> None:

@@ -93,9 +93,12 @@ class SessionRecorder(Plugin):
                 self.rec.wire.append((tick, d, bytes(data)))
         self._pending = {}
 
-    def on_frame(self, harness: Harness, frame: np.ndarray) -> None:
+    def wants_frame(self, harness: Harness) -> bool:
+        return harness.frames_shown % HASH_EVERY == 0
+
+    def on_frame(self, harness: Harness, frame: np.ndarray | None) -> None:
         n = harness.frames_shown
-        if n % HASH_EVERY == 0:
+        if n % HASH_EVERY == 0 and frame is not None:
             self._flush_wire(harness.ticks)
             self.rec.hashes.append(ScreenHash(n, harness.ticks, harness.target.time(),
                                               screen_hash(frame)))

@@ -69,7 +69,8 @@ class SigmaLineTarget(SavesState):
 
     def __init__(self, machine: SigmaMachine, bridge: Any, title: str,
                  until: Fraction | None = None, report: Any = None,
-                 order_timeout: Fraction = ORDER_TIMEOUT) -> None:
+                 order_timeout: Fraction = ORDER_TIMEOUT,
+                 until_idle: Fraction | None = None, script: list[Any] | None = None) -> None:
         self.machine, self.bridge = machine, bridge
         self.term, self.line = machine.terminal, machine.line
         self.title, self.keys = title, KEYS_HINT
@@ -77,6 +78,10 @@ class SigmaLineTarget(SavesState):
         self.until = until
         self.report = report or (lambda kind, detail: None)
         self.order_timeout = order_timeout
+        self.until_idle = until_idle  # end once nothing came from outside for this long
+        self.script = list(script or [])  # --events (protocols.sigma.input_script)
+        self._script_at = 0  # the next script event
+        self._heard_at = Fraction(0)  # line time outside bytes last came (or the line moved)
         self._sent = bytearray()
         self._received = b""
         self._frame: np.ndarray | None = None  # the picture, until the terminal changes
@@ -102,6 +107,7 @@ class SigmaLineTarget(SavesState):
             to_terminal(ev, self.term)
 
     def tick(self) -> bool:
+        self._play_script()
         self._outside()
         # the terminal takes what has arrived by the tick's start, then the line moves on
         self._received = self.machine.tick(TICK, take_first=True)
@@ -109,13 +115,47 @@ class SigmaLineTarget(SavesState):
             self._frame = None
         self._watch_order(self.machine.now - TICK)
         self._left_half_order()
-        return self.until is None or self.machine.now < self.until
+        return self._going()
+
+    def _play_script(self) -> None:
+        """The --events script's user acts: each event at its moment, in file order."""
+        while self._script_at < len(self.script):
+            ev = self.script[self._script_at]
+            if ev.when == "at" and self.machine.now < Fraction(ev.at):
+                return
+            if ev.when == "reply" and not (self.term.reg.cursor_report
+                                            and not self.line.host.has_in_flight()):
+                return
+            self._script_at += 1
+            self._frame = None
+            if ev.action == "key":
+                for char in ev.text:
+                    self.term.key(char)
+            elif ev.action == "cursor":
+                reg = self.term.reg
+                self.term.cursor_keys(ev.x - reg.cursor_x, ev.y - reg.cursor_y)
+            else:
+                self.term.tablet(ev.x, ev.y, ev.down)
+
+    def script_done(self) -> bool:
+        return self._script_at >= len(self.script)
+
+    def _going(self) -> bool:
+        now = self.machine.now
+        if self.until is not None and now >= self.until:
+            return False
+        if any(d == "+" for d, _ in self.tap.taken) or self._received or self.busy():
+            self._heard_at = now
+        if not self.script_done():  # a script still to play keeps the run going
+            return True
+        return self.until_idle is None or now - self._heard_at < self.until_idle
 
     def _outside(self) -> None:
         """The outside end's turn: the bridge polled, or a replay's recorded traffic."""
         for d, data in self._replayed:
             if d == "+":
                 self.line.host.write(data)
+                self._heard_at = self.machine.now
             else:
                 self.line.host.hang_up()
                 self._line_hung_up()
@@ -137,7 +177,7 @@ class SigmaLineTarget(SavesState):
     def _left_half_order(self) -> None:
         """A client that left half an order: once its last bytes have arrived, the line
         hangs up (recorded, so a replay does the same), which reports the half order."""
-        if not self._client_left or self.line.host.in_flight():
+        if not self._client_left or self.line.host.has_in_flight():
             return
         self._client_left = False
         if self.term.decoder.mid_order:
@@ -170,6 +210,11 @@ class SigmaLineTarget(SavesState):
         finally:
             decoder.drop_partial()
             self._order_since = None
+
+    def busy(self) -> bool:
+        """Bytes are on their way along the line, either direction (the harness does not
+        pace a live line then: it runs as fast as the outside end writes)."""
+        return self.line.host.has_in_flight() or self.line.device.has_in_flight()
 
     def frame(self) -> np.ndarray:
         """The terminal's picture; composed again only after bytes or input changed it (the

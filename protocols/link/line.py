@@ -172,6 +172,12 @@ class Endpoint:
         already started complete at the far end. Returns how many bytes were dropped."""
         return self._line._hang_up(self._tx, self._rx)
 
+    def has_in_flight(self) -> bool:
+        """Whether any byte written from this end has not yet been read at the far end
+        (``in_flight() > 0``, without counting them all)."""
+        return (any(len(seg.data) > seg.pos for seg in self._tx.pending)
+                or any(len(data) > off for _, data, off in self._tx.delivered))
+
     def in_flight(self) -> int:
         """Bytes written from this end that have not yet been read at the far end."""
         queued = sum(len(seg.data) - seg.pos for seg in self._tx.pending)

@@ -42,6 +42,9 @@ MAX_EVENTS = 100  # events kept on .events; older ones are dropped
 BUSY = b"camlab88: another client is connected to this line; try again later\r\n"
 SETTLE_POLLS = 1000  # at most this many polls between clients spent waiting for an idle line
 MAX_QUEUED = 4096  # bytes from outside waiting to go down the line (a tty driver's buffer)
+# taken again once no more than this many wait: a writer flat out is read in big gulps, not
+# a few bytes every poll (the line never runs dry: 2048 bytes are 2 s at 9600 baud)
+REFILL_AT = MAX_QUEUED // 2
 _RDHUP = getattr(select, "POLLRDHUP", 0)  # Linux: the peer shut its sending side
 IDLE_TIMEOUT = 60.0  # s of line time a silent client keeps the line from a newcomer (commands)
 PROBE_MS = 50  # how long a newcomer's arrival waits for a probed client's reset
@@ -140,7 +143,10 @@ class Bridge:
         assert self.endpoint is not None
         if self._settle:
             return 0
-        return max(0, MAX_QUEUED - self.endpoint.queued())
+        queued = self.endpoint.queued()
+        if queued > REFILL_AT:  # seconds of line time still waiting: no read (a syscall)
+            return 0
+        return max(0, MAX_QUEUED - queued)
 
     def _settling(self) -> bool:
         """Still waiting for the line to go idle after a client left (counts one poll)."""

@@ -35,13 +35,15 @@ def run(args: argparse.Namespace) -> int:
     from camlab88.emulator.harness import run as run_target
 
     got, settings = _stream_and_settings(args)
-    ends = args.seconds is not None or args.screenshot is not None
+    ends = (args.seconds is not None or args.screenshot is not None
+            or args.until_idle is not None)
+    script = _script(args)
     opts = run_options(args, COMMAND, "serving the line without a window"
                        + ("" if ends else " until Ctrl-C"), argv=getattr(args, "_argv", None))
     if replay.active() is None and opts.screenshot is None:
         opts.realtime = True  # an outside program's line runs at its baud rate, idle asleep
     machine, recorder = _machine(args, settings)
-    target = _target(args, machine, got)
+    target = _target(args, machine, got, script)
     line = machine.line
     # Ctrl-C, or SIGTERM (cli.main delivers it as Ctrl-C): the recording is still written
     with open_trace(args, COMMAND, "the line") as trace, contextlib.ExitStack() as done:
@@ -102,7 +104,19 @@ def _machine(args: argparse.Namespace, settings):
     return SigmaMachine(args.model, settings, recorder=recorder), recorder
 
 
-def _target(args: argparse.Namespace, machine, got):
+def _script(args: argparse.Namespace) -> list:
+    """The --events script (a bad line: one error naming file:line:col, exit 2)."""
+    from camlab88.protocols.sigma.input_script import InputScriptError, load
+
+    if args.events is None:
+        return []
+    try:
+        return load(args.events)
+    except InputScriptError as exc:
+        raise _die(str(exc)) from None
+
+
+def _target(args: argparse.Namespace, machine, got, script: list):
     from camlab88.emulator.harness.sigma_line import SigmaLineTarget
     from camlab88.protocols.link.replay import replay_into
 
@@ -113,10 +127,11 @@ def _target(args: argparse.Namespace, machine, got):
     else:
         replay_into(got, line.host, ">")
     until = None if args.seconds is None else Fraction(args.seconds)
-    if until is None and args.screenshot is not None:  # once the --in stream has arrived
+    if until is None and args.screenshot is not None and args.until_idle is None:
+        # once the --in stream has arrived
         until = Fraction(line.host.drain_time()) + FRAME
     return SigmaLineTarget(machine, None, f"camlab88 Sigma {args.model.upper()}", until,
-                           _report, args.order_timeout)
+                           _report, args.order_timeout, args.until_idle, script)
 
 
 def _report(kind: str, detail: str) -> None:
