@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import shutil
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -97,3 +98,42 @@ def test_a_compiled_c_program_reads_the_cursor_through_the_pty(sigma_pty, tmp_pa
             prog.kill()
     assert prog.returncode == 0
     assert out == b"A468,356\r"
+
+
+def _write_to(path: str, data: bytes) -> None:
+    """A host in another process writing ``data`` flat out, then closing the pty."""
+    writer = ("import os, sys\nfd = os.open(sys.argv[1], os.O_WRONLY | os.O_NOCTTY)\n"
+              "v = memoryview(bytes.fromhex(sys.argv[2]))\n"
+              "while v:\n    v = v[os.write(fd, v):]\n")
+    subprocess.run([sys.executable, "-c", writer, path, data.hex()], check=True, timeout=60)
+
+
+def test_sigma_pty_virtual_time_is_line_time_only(sigma_pty):
+    """The program's writes pace the line: after a burst of N bytes the clock reads about
+    N / 960 s (the line's time for them), and it stands still while the program is idle."""
+    box = b"\r+-*/HI3GI200200GJ500200500400200400200200BH"
+    data = box * 100  # 4400 bytes: 4.58 s of line time
+    _write_to(sigma_pty.path, data)
+    sigma_pty.wait_idle()
+    took = sigma_pty.sigma.now
+    assert len(data) / 960 <= took <= len(data) / 960 + 0.05
+    sigma_pty.wait_idle(quiet=0.3)  # wall time passes with nothing written
+    assert sigma_pty.sigma.now == took
+    assert sigma_pty.sigma.stats["bytes"] == len(data)
+
+
+@pytest.mark.parametrize("sigma_pty", [{"strict": True}], indirect=True)
+def test_sigma_pty_strict_raises_the_first_protocol_error(sigma_pty):
+    from camlab88 import ProtocolError
+
+    _write_to(sigma_pty.path, b"\r+-*/GI200200QQ")  # Q starts no order
+    with pytest.raises(ProtocolError, match="byte 13 .*unknown byte 0x51"):
+        sigma_pty.wait_idle()
+
+
+@pytest.mark.parametrize("sigma_pty", [{"trace": False, "model": "t5688"}], indirect=True)
+def test_sigma_pty_options_model_and_no_trace(sigma_pty):
+    assert sigma_pty.terminal.model.name.lower().endswith("5688")
+    _write_to(sigma_pty.path, b"\r+-*/HI3GI200200GJ500200BH")
+    sigma_pty.wait_idle()
+    assert sigma_pty.sigma.trace.orders() == [] and sigma_pty.sigma.stats["bytes"] == 26
