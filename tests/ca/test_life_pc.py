@@ -8,6 +8,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from camlab88.apps.ca.patterns import PatternError, parse_life, read_pattern, write_pattern
 
 
@@ -65,3 +67,14 @@ def test_ca_convert_reads_a_lif(tmp_path: Path) -> None:
     out = tmp_path / "acorn.rle"
     assert main(["ca", "convert", str(data / "acorn.lif"), str(out)]) == 0
     assert read_pattern(out).cell_set() == read_pattern(data / "acorn.lif").cell_set()
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.text(alphabet="#LifeP.*NR0123456789- \n\r\tD", max_size=300))
+def test_any_text_reads_or_fails_with_a_located_error(body: str) -> None:
+    try:
+        p = parse_life("#Life 1.05\n" + body)
+    except PatternError as exc:
+        assert str(exc).startswith("<lif>:")
+    else:
+        assert p.width <= 65536 and p.height <= 65536

@@ -67,8 +67,10 @@ def test_a_session_fed_through_the_pty_replays_with_check(tmp_path: Path, seed: 
 
 def test_a_listen_session_with_a_client_leaving_replays_with_check(tmp_path: Path) -> None:
     session = tmp_path / "l.session"
-    proc, first = start(["sigma", "run", "--listen", "0", "--headless", "--record",
-                         str(session)], cwd=str(tmp_path))
+    # --speed 1: the line paced even while busy, so A's 2.5 s of bytes are still queued when
+    # B comes (unpaced, a busy line runs as fast as A writes and has nothing left to drop)
+    proc, first = start(["sigma", "run", "--listen", "0", "--headless", "--speed", "1",
+                         "--record", str(session)], cwd=str(tmp_path))
     rng = random.Random(3)
     try:
         port = port_of(first)

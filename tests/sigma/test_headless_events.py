@@ -8,12 +8,15 @@ it read and ends, and ``--until-idle`` ends the run.  Also the script language's
 
 from __future__ import annotations
 
+import re
 import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from camlab88.protocols.sigma.input_script import InputScriptError, parse
 
 PROGRAM = Path(__file__).parent / "programs" / "pgcurs.c"
@@ -84,3 +87,14 @@ def test_a_bad_script_is_refused_before_the_run(tmp_path: Path) -> None:
                           timeout=60)
     assert done.returncode == 2
     assert f"{script}:1:7: expected cursor X Y" in done.stderr
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.text(alphabet="0123456789. keytypcursorablnxdwp#\n AZ", max_size=200))
+def test_any_script_text_parses_or_fails_with_a_located_error(text: str) -> None:
+    try:
+        events = parse(text, "f")
+    except InputScriptError as exc:
+        assert re.match(r"f:\d+:\d+: ", str(exc)), str(exc)
+    else:
+        assert all(e.when in ("at", "reply", "next") for e in events)
