@@ -27,10 +27,10 @@ the outermost compile runs, SIGINT instead ends the process at once with status 
 line on stderr. Nothing is lost that would have been kept: numba writes its cache files by
 rename, and the project writes user files atomically (base.atomicfile).
 
-It lives in base/ because apps, emulator and the command line may all import it. It never
-imports numba itself: a group registered before numba is imported starts the listening
-(and the lean cache loads) as numba's import finishes, so a process whose kernels all come
-from ahead-of-time extensions never imports numba at all.
+A group names its kernels by module (every kernel of ``package.module``) or one by one
+(``package.module:function``), as HashLife's kernels share one module but compile in groups.
+It lives in base/ because apps, emulator and the command line may all import it; a kernel
+module registers its group as it is imported (numba is imported by then).
 """
 
 from __future__ import annotations
@@ -41,8 +41,6 @@ import sys
 import threading
 from dataclasses import dataclass, field
 from typing import Any
-
-from camlab88.base.kernel_load import lean_cache_loads
 
 INTERRUPTED_STATUS = 130  # the shell's status for a process ended by SIGINT
 
@@ -69,71 +67,19 @@ _state = _State()
 _lock = threading.Lock()
 
 
-def announce_compiles(label: str, seconds: float, *modules: str,
+def announce_compiles(label: str, seconds: float, *kernels: str,
                       completion: str | None = None) -> None:
-    """Register the kernels defined in `modules` as one group named `label` whose cold
-    compile takes about `seconds` (measured on the project's 2-core machine); `completion`
+    """Register the kernels named in ``kernels`` (a module: all of its kernels;
+    "module:function": that one) as one group named ``label`` whose cold compile takes
+    about ``seconds`` (measured on the project's 2-core machine); ``completion``
     ("module:function") compiles the rest of the group after its first cold compile."""
     group = _Group(label, seconds, completion)
     with _lock:
-        for name in modules:
+        for name in kernels:
             _state.groups.setdefault(name, group)
-    if "numba" in sys.modules:
-        _start_listening()
-    else:  # nothing can compile before numba is imported; a process that never does
-        _watch_for_numba()  # (ahead-of-time kernels, base/kernel_set.py) pays nothing
-
-
-def _start_listening() -> None:
-    with _lock:
         if not _state.listening:
             _listen()
-            lean_cache_loads()  # a warm run's first kernel call: ~0.2 s less
             _state.listening = True
-
-
-class _NumbaWatch:
-    """Starts listening as soon as numba's own import has finished (once). A finder on
-    ``sys.meta_path`` needs only ``find_spec``: importing importlib.abc for its base class
-    cost ~10 ms of every start (it imports importlib.resources, tempfile and random)."""
-
-    def find_spec(self, name: str, path: Any, target: Any = None) -> Any:
-        if name != "numba":
-            return None
-        for finder in list(sys.meta_path):  # the spec the other finders give
-            found = getattr(finder, "find_spec", None)
-            spec = found(name, path, target) if finder is not self and found else None
-            if spec is not None:
-                break
-        else:
-            return None
-        loader = getattr(spec, "loader", None)
-        if loader is None or not hasattr(loader, "exec_module"):
-            return spec
-        original = loader.exec_module
-
-        def exec_module(module: Any) -> None:  # (a spec only looked up is never executed)
-            original(module)
-            _unwatch()
-            _start_listening()
-
-        loader.exec_module = exec_module
-        return spec
-
-
-_watch = _NumbaWatch()
-
-
-def _watch_for_numba() -> None:
-    with _lock:
-        if _watch not in sys.meta_path and not _state.listening:
-            sys.meta_path.insert(0, _watch)
-
-
-def _unwatch() -> None:
-    with _lock:
-        if _watch in sys.meta_path:
-            sys.meta_path.remove(_watch)
 
 
 def notice_line(label: str, seconds: float) -> str:
@@ -154,16 +100,19 @@ def _listen() -> None:
     event.register("numba:compile", CompileListener())
 
 
-def _kernel_module(data: Any) -> str:
+def _group_of(data: Any) -> _Group | None:
+    """The group of the kernel a ``numba:compile`` event is about (by its own name first)."""
     py_func = getattr(data.get("dispatcher"), "py_func", None) if isinstance(data, dict) else None
-    return getattr(py_func, "__module__", "") or ""
+    module = getattr(py_func, "__module__", "") or ""
+    found = _state.groups.get(f"{module}:{getattr(py_func, '__qualname__', '')}")
+    return found if found is not None else _state.groups.get(module)
 
 
 def _compile_started(data: Any) -> None:
     with _lock:
         _state.depth += 1
         outermost = _state.depth == 1
-        group = _state.groups.get(_kernel_module(data))
+        group = _group_of(data)
         announce = group is not None and not group.announced
         if announce:
             group.announced = True

@@ -15,8 +15,8 @@ $CAMLAB88_BGOLLY, /opt/golly/usr/bin/bgolly (.ci/run unpacks it there), PATH.
 main) in the same minutes: for each case, PAIRS rounds of base, this tree, bgolly and the
 floor (``python -c "import numpy"``; floor1: the same with one BLAS thread, as camlab88
 sets it) one after the other, each ours as ``python -m
-camlab88`` with PYTHONPATH set to its tree and CAMLAB88_AOT_DIR to ``--aot`` /
-``--base-aot`` (each tree's own ``camlab88 warm-up``); medians and minima of CPU and wall.
+camlab88`` with PYTHONPATH set to its tree (and BASE's with ``--base-env NAME=VALUE``
+settings, e.g. an older tree's own options); medians and minima of CPU and wall.
 Byte code is written for both trees (PYTHONDONTWRITEBYTECODE is dropped for the children),
 as an installed program has it.
 """
@@ -80,11 +80,10 @@ def best(cmd: list[str]) -> tuple[float, float, float, str]:
     return min((timed(cmd) for _ in range(RUNS)), key=lambda r: r[0])
 
 
-def _tree_env(tree: Path, aot: str | None) -> dict[str, str]:
+def _tree_env(tree: Path, settings: list[str]) -> dict[str, str]:
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
     env["PYTHONPATH"] = str(tree)
-    if aot:
-        env["CAMLAB88_AOT_DIR"] = aot
+    env.update(s.split("=", 1) for s in settings)
     return env
 
 
@@ -94,11 +93,11 @@ def _summary(name: str, runs: list[tuple[float, float, float, str]]) -> str:
             f"{statistics.median(wall):.3f} (min {min(wall):.3f})")
 
 
-def ab(base: Path, aot: str | None, base_aot: str | None, pairs: int, only: str) -> None:
+def ab(base: Path, base_env: list[str], pairs: int, only: str) -> None:
     """This tree against ``base``, with bgolly and the numpy floor, interleaved."""
     exe = bgolly()
     here = HERE.parent
-    envs = {"base": _tree_env(base, base_aot), "new": _tree_env(here, aot)}
+    envs = {"base": _tree_env(base, base_env), "new": _tree_env(here, [])}
     trees = {"base": base, "new": here}  # ``python -m`` puts its directory first on the path
     print(time.strftime("%Y-%m-%d %H:%M"), f"{os.cpu_count()} cores, {load()}, "
           f"{pairs} rounds: base {base}, new {here}")
@@ -133,13 +132,13 @@ def ab(base: Path, aot: str | None, base_aot: str | None, pairs: int, only: str)
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--ab", type=Path, metavar="BASE", help="compare with checkout BASE")
-    ap.add_argument("--aot", help="CAMLAB88_AOT_DIR of this tree (with --ab)")
-    ap.add_argument("--base-aot", help="CAMLAB88_AOT_DIR of BASE (with --ab)")
+    ap.add_argument("--base-env", action="append", default=[], metavar="NAME=VALUE",
+                    help="an environment setting for BASE's runs (with --ab; repeatable)")
     ap.add_argument("--pairs", type=int, default=7, help="rounds with --ab (default 7)")
     ap.add_argument("--only", default="", help="cases whose 'label generations' has this")
     args = ap.parse_args()
     if args.ab is not None:
-        ab(args.ab, args.aot, args.base_aot, args.pairs, args.only)
+        ab(args.ab, args.base_env, args.pairs, args.only)
         return
     exe = bgolly()
     if exe is None:

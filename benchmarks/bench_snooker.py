@@ -16,7 +16,6 @@ import statistics
 import time
 
 import camlab88.apps.snooker.physics as physics
-from camlab88.apps.snooker.events import HAVE_NUMBA
 from camlab88.apps.snooker.layout import break_off
 from camlab88.apps.snooker.table import Table
 from camlab88.apps.snooker.timeline import Timeline
@@ -35,7 +34,7 @@ def _median_ms(fn) -> float:
 
 def main() -> None:
     table = Table()
-    print(f"python {platform.python_version()}, numba available: {HAVE_NUMBA}")
+    print(f"python {platform.python_version()}")
     t0 = time.perf_counter()
     physics.simulate_to_rest(table, break_off(table, 5.0))
     print(f"first call (includes numba compile): {(time.perf_counter() - t0) * 1000:.0f} ms")

@@ -3,7 +3,7 @@
     python benchmarks/bench_startup.py                 # every command, 5 warm runs each
     python benchmarks/bench_startup.py --runs 7 --cold-runs 2 --only snooker
     python benchmarks/bench_startup.py --demo          # also `camlab88 demo --headless`
-    python benchmarks/bench_startup.py --compare       # warm: lean cache loads vs numba's own
+    python benchmarks/bench_startup.py --ab ../main     # warm README commands, this tree vs another
     python benchmarks/bench_startup.py --readme [--demo]   # a newcomer's first-ever runs
 
 Each command runs as its own process, as a user types it, in a scratch directory with the
@@ -12,13 +12,15 @@ kernel the command needs is compiled, as on the first run after install; *warm* 
 one cache filled by an uncounted first run. Wall time per run (perf_counter around the
 process) and its CPU time, min / median; the load average is printed before and after,
 because on a shared 2-core machine the figures move with it (docs/perf/startup.md).
-``--compare`` times each warm command alternately with numba's own cache load (its full
-context refresh, ``CAMLAB88_NUMBA_FULL_REFRESH=1``) and with base.kernel_load's lean
-one, so both see the same load. ``--readme`` is a newcomer's first hour: every command of
-README.md's "First ten minutes" (read from the README, as tests/test_readme_walkthrough.py
-does) and the cellular automaton's example runs, in order, in one scratch directory, all
-sharing one cache that starts empty (the first run after install), each run once; it prints
-the "compiling" notices each command gave, so a group compiled twice shows.
+``--ab TREE`` runs every README command warm, alternately with this tree and with TREE (its
+own ``.venv``), and a bare ``python -c "import numpy, numba"`` beside them, so all see the
+same load: each tree's cache is filled first by its own ``camlab88 warm-up``; it prints each
+command's medians and its margin over the bare import. ``--readme`` is a newcomer's first
+hour: every command of README.md's "First ten minutes" (read from the README, as
+tests/test_readme_walkthrough.py does) and the cellular automaton's example runs, in
+order, in one scratch directory, all sharing one cache that starts empty (the first run
+after install), each run once; it prints the "compiling" notices each command gave, so a
+group compiled twice shows.
 """
 
 from __future__ import annotations
@@ -85,16 +87,16 @@ def load() -> str:
     return " ".join(f"{x:.2f}" for x in os.getloadavg())
 
 
-def run_once(argv: list[str], cwd: Path, cache: Path,
+def run_once(argv: list[str], cwd: Path, cache: Path, script: list[str] | None = None,
              **extra: str) -> tuple[float, float]:
     """(wall, cpu) seconds of one process; CPU time (user + sys) moves less with the load."""
-    took, cpu, _ = run_logged(argv, cwd, cache, **extra)
+    took, cpu, _ = run_logged(argv, cwd, cache, script, **extra)
     return took, cpu
 
 
-def run_logged(argv: list[str], cwd: Path, cache: Path,
+def run_logged(argv: list[str], cwd: Path, cache: Path, script: list[str] | None = None,
                **extra: str) -> tuple[float, float, str]:
-    """run_once, and the process's stderr."""
+    """run_once, and the process's stderr (``script``: the command, else this tree's)."""
     env = dict(os.environ, NUMBA_CACHE_DIR=str(cache), SDL_VIDEODRIVER="dummy", **extra)
     env.pop("DISPLAY", None)
     # as on a user's machine: Python keeps compiled modules (this sandbox sets
@@ -102,11 +104,12 @@ def run_logged(argv: list[str], cwd: Path, cache: Path,
     env.pop("PYTHONDONTWRITEBYTECODE", None)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
-    done = subprocess.run(camlab88() + argv, cwd=cwd, env=env, capture_output=True)
+    done = subprocess.run((script or camlab88()) + argv, cwd=cwd, env=env, capture_output=True)
     took = time.perf_counter() - t0
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if done.returncode != 0:
-        raise SystemExit(f"camlab88 {' '.join(argv)} failed:\n{done.stderr.decode()[-2000:]}")
+        raise SystemExit(f"{' '.join(script or camlab88())} {' '.join(argv)} failed:\n"
+                         f"{done.stderr.decode()[-2000:]}")
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     return took, cpu, done.stderr.decode(errors="replace")
 
@@ -148,20 +151,41 @@ def measure(argv: list[str], work: Path, runs: int,
     return cold, warm
 
 
-def compare(commands: dict[str, list[str]], work: Path, runs: int) -> None:
-    """Warm runs, alternately numba's full refresh and the lean load (same load for both)."""
-    print("| command | full refresh: wall s | CPU s | lean load: wall s | CPU s | load |")
+BARE = ["-c", "import numpy, numba"]
+
+
+def ab(base: Path, work: Path, runs: int) -> None:
+    """Warm README commands, this tree and ``base`` alternately, beside a bare numba import."""
+    sys.path.insert(0, str(ROOT))
+    from tests.test_readme_walkthrough import walkthrough_commands, walkthrough_directories
+
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    for d in walkthrough_directories(text):
+        (work / d).mkdir(parents=True, exist_ok=True)
+    commands = [argv[1:] for argv in walkthrough_commands(text)] + README_MORE + more_sections()
+    trees = {"new": camlab88(), "base": [str(base / ".venv" / "bin" / "camlab88")]}
+    extra = {"CAMLAB88_KAS_LIBRARY": str(work / "library"), "XDG_DATA_HOME": str(work / "data")}
+    for name, script in trees.items():  # each tree fills its own cache, uncounted
+        run_logged(["warm-up"], work, work / f"cache-{name}", script=script, **extra)
+        for argv in commands:  # and makes the files later commands read
+            run_logged(argv, work, work / f"cache-{name}", script=script, **extra)
+    print(f"load before: {load()}")
+    print("| command | new wall s (min / median) | base wall s | new - bare import s "
+          "| base - bare | load |")
     print("|---|---|---|---|---|---|")
-    for name, cmd in commands.items():
-        cache = work / "warm-cache"
-        run_once(cmd, work, cache)  # fills the cache; not counted
+    for argv in commands:
         before = load()
-        full, lean = [], []
+        times: dict[str, list[tuple[float, float]]] = {"new": [], "base": [], "bare": []}
         for _ in range(runs):
-            full.append(run_once(cmd, work, cache, CAMLAB88_NUMBA_FULL_REFRESH="1"))
-            lean.append(run_once(cmd, work, cache))
-        print(f"| `{name}` | {fmt(full, 0)} | {fmt(full, 1)} | {fmt(lean, 0)} "
-              f"| {fmt(lean, 1)} | {before} -> {load()} |", flush=True)
+            for name, script in trees.items():
+                times[name].append(run_once(argv, work, work / f"cache-{name}", script=script,
+                                            **extra))
+            times["bare"].append(run_once(BARE, work, work / "cache-new",
+                                          script=[sys.executable]))
+        med = {k: statistics.median(w for w, _ in v) for k, v in times.items()}
+        print(f"| `{' '.join(argv)}` | {fmt(times['new'], 0)} | {fmt(times['base'], 0)} "
+              f"| {med['new'] - med['bare']:+.2f} | {med['base'] - med['bare']:+.2f} "
+              f"| {before} -> {load()} |", flush=True)
 
 
 def fmt(runs: list[tuple[float, float]], which: int) -> str:
@@ -177,8 +201,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--demo", action="store_true", help="also time `demo --headless`")
     ap.add_argument("--readme", action="store_true",
                     help="README's commands in order, first runs from an empty cache")
-    ap.add_argument("--compare", action="store_true",
-                    help="warm only: numba's full refresh against the lean cache load")
+    ap.add_argument("--ab", type=Path, metavar="TREE",
+                    help="warm README commands: this tree against TREE (with its .venv)")
     args = ap.parse_args(argv)
     commands = {**COMMANDS, **(DEMO if args.demo else {})}
     if args.only:
@@ -188,8 +212,8 @@ def main(argv: list[str] | None = None) -> int:
     with tempfile.TemporaryDirectory(prefix="camlab88-startup-") as tmp:
         work = Path(tmp)
         shutil.copytree(ROOT / "examples", work / "examples")
-        if args.compare:
-            compare(commands, work, args.runs)
+        if args.ab:
+            ab(args.ab.resolve(), work, args.runs)
             return 0
         if args.readme:
             readme(work, args.demo)

@@ -6,10 +6,10 @@ Only our Python layer is instrumented. atheris rewrites the bytecode of every lo
 function to call its tracer; numba compiles a kernel from its function's bytecode, and a
 kernel compiled after that fails with "Unknown attribute '_trace_branch' of type
 Module(atheris)" (a false crash). So every function of a module that holds numba kernels
-(a dispatcher, a base.lazy_kernels registry, or a module registered with
-base.kernel_notice) keeps its original bytecode: the kernels run compiled and
-uninstrumented, and their Python callers are still covered. So does everything outside our
-packages (numba's compiler above all: instrumented, a kernel's first compile took minutes).
+(a dispatcher, or a module registered with base.kernel_notice) keeps its original bytecode:
+the kernels run compiled and uninstrumented, and their Python callers are still covered.
+So does everything outside our packages (numba's compiler above all: instrumented, a
+kernel's first compile took minutes).
 """
 
 from __future__ import annotations
@@ -28,15 +28,13 @@ OURS = ("apps", "protocols", "emulator", "camlab88")  # the packages whose code 
 
 def _holds_kernels(module: Any) -> bool:
     dispatcher = getattr(sys.modules.get("numba.core.dispatcher"), "Dispatcher", None)
-    lazy = getattr(sys.modules.get("camlab88.base.lazy_kernels"), "LazyKernels", None)
-    kinds = tuple(k for k in (dispatcher, lazy) if k is not None)
-    return bool(kinds) and any(isinstance(v, kinds) for v in vars(module).values())
+    return dispatcher is not None and any(isinstance(v, dispatcher) for v in vars(module).values())
 
 
 def kernel_modules() -> set[str]:
     """Names of the loaded modules whose functions numba compiles (or may compile later)."""
     notice = sys.modules.get("camlab88.base.kernel_notice")
-    names = set(notice._state.groups) if notice is not None else set()
+    names = {n.split(":")[0] for n in notice._state.groups} if notice is not None else set()
     names |= {name for name, mod in list(sys.modules.items())
               if mod is not None and _holds_kernels(mod)}
     return names

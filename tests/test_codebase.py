@@ -91,7 +91,7 @@ _CALLED_BY_NAME = re.compile(r"^(_op_\w+|pytest_\w+|dask_setup)$")
 _BY_NAME_MODULES = {"protocols/rainbow/script.py", "protocols/session/parse.py"}
 # In files other branches were rewriting during this clean-up; they go when those merge.
 _DEAD_LEFT_FOR_LATER = {("apps/ca/engine.py", "from_corners"),
-                        ("apps/ca/hashlife/bits/leaves.py", "_sum3")}
+                        ("apps/ca/hashlife/kernels.py", "_sum3")}
 
 
 def test_every_definition_in_the_product_is_used_somewhere() -> None:

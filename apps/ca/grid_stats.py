@@ -4,12 +4,10 @@
 from __future__ import annotations
 
 import numpy as np
-from camlab88.base.kernel_set import KernelSet
-
-kernels = KernelSet(__name__)
+from numba import njit
 
 
-@kernels.export("int64[:](uint8[::1])")
+@njit(cache=True)
 def _histogram(flat):
     counts = np.zeros(256, np.int64)
     for i in range(flat.shape[0]):

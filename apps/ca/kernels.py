@@ -19,11 +19,10 @@ import types
 
 import numpy as np
 from camlab88.base.kernel_notice import announce_compiles
-from camlab88.base.kernel_set import KernelSet
+from numba import njit
 
-# one line on stderr when a cold cache compiles (measured ~7 s), and the lean warm load
+# one line on stderr when a cold cache compiles (measured ~7 s)
 announce_compiles("cellular automaton", 7.0, __name__)
-kernels = KernelSet(__name__)
 
 SIDE = 65536
 MASK = 0xFFFF
@@ -31,7 +30,7 @@ LOOKUP_SIZE = 1 << 16
 M32 = 0xFFFFFFFF
 
 
-@kernels.kernel(inline="always")
+@njit(cache=True, inline="always")
 def _apply(cur: int, op: int, val: int) -> int:
     if op == 1:
         return (cur + val) & M32
@@ -42,14 +41,14 @@ def _apply(cur: int, op: int, val: int) -> int:
     return cur ^ val
 
 
-@kernels.kernel(inline="always")
+@njit(cache=True, inline="always")
 def _mix64(z: np.uint64) -> np.uint64:
     z = (z ^ (z >> np.uint64(30))) * np.uint64(0xBF58476D1CE4E5B9)
     z = (z ^ (z >> np.uint64(27))) * np.uint64(0x94D049BB133111EB)
     return z ^ (z >> np.uint64(31))
 
 
-@kernels.kernel
+@njit(cache=True)
 def rand32(seed: int, x: int, y: int, gen: int) -> int:
     """Reproducible 32-bit random number from seed, cell position and generation."""
     z = _mix64(np.uint64(seed) + np.uint64(0x9E3779B97F4A7C15))
@@ -58,7 +57,7 @@ def rand32(seed: int, x: int, y: int, gen: int) -> int:
     return int(z >> np.uint64(32))
 
 
-@kernels.kernel
+@njit(cache=True)
 def _slow_match(v, kind, a, b) -> int:
     """First matching interpretation line for a value beyond the lookup table."""
     for j in range(kind.shape[0]):
@@ -73,7 +72,7 @@ def _slow_match(v, kind, a, b) -> int:
     return -1
 
 
-@kernels.kernel
+@njit(cache=True)
 def _choose(i, x, y, gen, seed, out_start, thresh, forms) -> int:
     """Life-form of outcome ``i`` (random choice if it has several)."""
     s = out_start[i]
@@ -85,7 +84,7 @@ def _choose(i, x, y, gen, seed, out_start, thresh, forms) -> int:
     return forms[e - 1]
 
 
-@kernels.export("UniTuple(int64[:], 2)(int64[:], int64[::1], int64[::1])")
+@njit(cache=True)
 def broadcasts(ts, bcast_op, bcast_val):
     """The broadcast operations of this generation, in sender order, runs of one op merged."""
     ops = np.empty(ts.shape[0], np.int64)
@@ -108,15 +107,7 @@ def broadcasts(ts, bcast_op, bcast_val):
     return ops[:n], vals[:n]
 
 
-# the rule tables and broadcasts both sparse steps take, in order (apps/ca/tables.py): send
-# start, dy, dx, op, value; broadcast ops and values; lookup, interpretation kind, a, b;
-# outcome start, thresholds, forms
-_TABLES = ", ".join(["int64[::1]"] * 5 + ["int64[:]"] * 2 + ["int64[::1]"] * 7)
-
-
-@kernels.export(
-    "UniTuple(int64[:], 3)(int64[:], int64[:], int64[:], int64, int64, int64, int64, "
-    + _TABLES + ", int64, int64, int64)")
+@njit(cache=True)
 def step_window(ys, xs, ts, wy0, wx0, h, w, start, sdy, sdx, sop, sval, bops, bvals,
                 lookup, kind, a, b, out_start, thresh, forms, gen, seed, cap):
     """One generation with a dense workspace over rows wy0..wy0+h-1, columns wx0..wx0+w-1.
@@ -167,9 +158,7 @@ def step_window(ys, xs, ts, wy0, wx0, h, w, start, sdy, sdx, sop, sval, bops, bv
     return oy[:n], ox[:n], ot[:n]
 
 
-@kernels.export(
-    "UniTuple(int64[:], 3)(int64[:], int64[:], int64[:], boolean, int64, int64, int64, int64, "
-    + _TABLES + ", int64, int64, int64[:, ::1], int64[::1])")
+@njit(cache=True)
 def step_hash(ys, xs, ts, wrap, cy0, cy1, cx0, cx1, start, sdy, sdx, sop, sval, bops, bvals,
               lookup, kind, a, b, out_start, thresh, forms, gen, seed, table, order):
     """One generation with a hash-table workspace; messages outside [cy0..cy1]x[cx0..cx1]
@@ -473,18 +462,6 @@ def _dense_step_separable(T, out, gtype, gval, gy0, gy1, gx0, gx1, xg, xdy, xdx,
     return n
 
 
-# The families' kernels Python calls, with their signatures ({m}: the message dtype).
-_DENSE_EXPORTS = {
-    "_dense_step": "int64(uint8[:, ::1], uint8[:, ::1], int64[::1], int64[::1], int64[::1], "
-                   "int64[::1], {m}[::1], uint8[::1], {m}[::1])",
-    "_dense_step_separable": (
-        "int64(uint8[:, ::1], uint8[:, ::1], int64[::1], {m}[::1], int64[::1], int64[::1], "
-        "int64[::1], int64[::1], int64[::1], int64[::1], int64[::1], int64[::1], int64[::1], "
-        "int64[::1], int64[::1], {m}[::1], int64, uint8[::1], uint32[::1], uint64[::1], "
-        "uint8[::1], {m}[::1], {m}[:, :, ::1], {m}[:, :, ::1], {m}[:, ::1])"),
-}
-
-
 def _family(suffix: str, message: str) -> dict[str, object]:
     """The dense kernels compiled under names ending in ``suffix``, calling each other, for
     message workspaces of dtype ``message``."""
@@ -496,9 +473,7 @@ def _family(suffix: str, message: str) -> dict[str, object]:
         f.__qualname__ = f"{fn.__qualname__}_{suffix}"  # numba names its cache files by it
         f.__module__ = fn.__module__
         f.__doc__ = fn.__doc__
-        signature = _DENSE_EXPORTS.get(name)
-        declare = kernels.export(signature.format(m=message)) if signature else kernels.kernel
-        family[name] = namespace[name] = declare(f)
+        family[name] = namespace[name] = njit(cache=True)(f)
     return family
 
 

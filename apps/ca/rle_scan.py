@@ -10,9 +10,7 @@ rle_body.py, which still words the error messages.
 from __future__ import annotations
 
 import numpy as np
-from camlab88.base.kernel_set import KernelSet
-
-kernels = KernelSet(__name__)
+from numba import njit
 
 PLANE = 65536
 MAX_STATE = 255
@@ -40,7 +38,7 @@ def _tables() -> tuple[np.ndarray, np.ndarray]:
 _KIND, _STATE = _tables()
 
 
-@kernels.kernel(inline="always")
+@njit(cache=True, inline="always")
 def _symbol(b, i, kind, state):
     """(state, length) of the symbol at byte i; length 0 if there is none."""
     k = kind[b[i]]
@@ -51,7 +49,7 @@ def _symbol(b, i, kind, state):
     return np.int64(0), np.int64(0)
 
 
-@kernels.export("int64[:](uint8[::1], int32[::1], int32[::1], int32[::1], uint8[::1])")
+@njit(cache=True)
 def scan(b, ry, rx, rn, rs):
     """The one pass over the body bytes ``b`` (uint8): the _FIELDS figures above, and the
     live runs' rows, columns, lengths and states in ``ry``, ``rx``, ``rn``, ``rs`` (room for
@@ -123,8 +121,7 @@ def scan(b, ry, rx, rn, rs):
     return res
 
 
-@kernels.export("none(int32[::1], int32[::1], int32[::1], uint8[::1], int64, uint8[:, ::1], "
-                "int64, int64)")
+@njit(cache=True)
 def to_grid(ry, rx, rn, rs, runs, grid, top, left):
     """The first ``runs`` runs written into ``grid`` (rows from ``top``, columns from
     ``left``)."""
@@ -134,8 +131,7 @@ def to_grid(ry, rx, rn, rs, runs, grid, top, left):
             grid[y, x] = rs[k]
 
 
-@kernels.export("none(int32[::1], int32[::1], int32[::1], uint8[::1], int64, int64[::1], "
-                "int64[::1], int64[::1], int64, int64)")
+@njit(cache=True)
 def to_cells(ry, rx, rn, rs, runs, cx, cy, ct, top, left):
     """The first ``runs`` runs as cell arrays, relative to (left, top)."""
     i = 0

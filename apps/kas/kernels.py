@@ -4,27 +4,22 @@ Both paths give identical results (the same rule and floating-point expressions 
 ``model.redundant_mask``; tests/test_startup_paths.py compares them). numba is 4-6x faster
 on a million points and more, but importing it and loading its cached kernels costs about
 0.45 s of a process's start-up, more than numpy needs for a million points (0.08 s) -- so a
-small in-between (every KAS command a user types) never imports numba, and a large one, or
-one in a process that has numba loaded already, uses the compiled kernels
-(docs/perf/startup.md).
+small in-between (every KAS command a user types) never imports numba and a large one uses
+the compiled kernels: the choice is by size alone, never by what the process imported
+before, so a result's path does not depend on what ran earlier (docs/perf/startup.md).
 """
 
 from __future__ import annotations
-
-import sys
 
 import numpy as np
 from camlab88.apps.kas.model import redundant_mask
 
 NUMBA_FROM_POINTS = 2_000_000  # frames x points from which numba pays for its own start-up
-NUMBA_LOADED_FROM_POINTS = 100_000  # ... once another part of the process has loaded numba
 
 
 def use_numba(points: np.ndarray) -> bool:
     """Whether the compiled kernels pay for an array of (frames, points, 2)."""
     size = points.shape[0] * points.shape[1]
-    if "numba" in sys.modules:
-        return size >= NUMBA_LOADED_FROM_POINTS
     return size >= NUMBA_FROM_POINTS
 
 

@@ -12,8 +12,9 @@ Within a frame every ball moves at constant velocity (§6.2), so every event tim
 * pocket: the ball's centre crosses the mouth line between the two jaws.
 
 The earliest event always comes next; ties go to the first found in a fixed scan order, so
-the order is deterministic.  The scan is a plain loop compiled with numba when it is installed (the
-benchmark shows it pays); the same Python function is the fallback.
+the order is deterministic.  The scan is a plain loop compiled with numba (the benchmark
+shows it pays), in kernels.py with the frame loop that calls it; the same Python function
+is physics' path for tables without a tabulated speed curve.
 """
 
 from __future__ import annotations
@@ -23,26 +24,11 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-
-SNOOKER_COMPILE_S = 6.0  # a cold compile of this module's and kernels.py's kernels, measured
-
-try:  # numba is a project dependency, but the model must still work without it
-    from camlab88.base.kernel_notice import announce_compiles
-    from numba import njit as _njit
-
-    # Cached, so only the first run after install compiles; every kernel here is called with
-    # one set of argument types (docs/development.md, "numba's cache").
-    def _jit(f):
-        return _njit(cache=True, nogil=True)(f)
-
-    announce_compiles("snooker", SNOOKER_COMPILE_S, __name__, "camlab88.apps.snooker.kernels")
-
-    HAVE_NUMBA = True
-except ImportError:  # pragma: no cover - exercised only where numba is missing
-    HAVE_NUMBA = False
-
-    def _jit(f):
-        return f
+from camlab88.apps.snooker.kernels import (  # noqa: F401 - the scan, named here too
+    NO_EVENT,
+    scan,
+    scan_python,
+)
 
 
 class EventKind(enum.IntEnum):
@@ -68,115 +54,8 @@ class Event:
     note: str = ""
 
 
-NO_EVENT = -1
 
 
-def _scan(pos, vel, active, moving, r, seg, jaws, mouths, horizon):
-    """Earliest event within `horizon` seconds: (dt, kind, a, b) or (horizon, -1, -1, -1).
-
-    seg rows: ax ay tx ty nx ny length; jaws rows: x y; mouths rows: ax ay tx ty ox oy width.
-    """
-    best = horizon
-    kind = -1
-    ea = -1
-    eb = -1
-    n = pos.shape[0]
-    d2 = 4.0 * r * r
-    for i in range(n):
-        if not active[i]:
-            continue
-        px = pos[i, 0]
-        py = pos[i, 1]
-        vx = vel[i, 0]
-        vy = vel[i, 1]
-        if moving[i]:
-            for k in range(seg.shape[0]):
-                vn = vx * seg[k, 4] + vy * seg[k, 5]
-                if vn >= 0.0:
-                    continue
-                s = (px - seg[k, 0]) * seg[k, 4] + (py - seg[k, 1]) * seg[k, 5] - r
-                if s < -r:  # centre already behind the face: not this cushion's business
-                    continue
-                lam = -s / vn
-                if lam < 0.0:
-                    lam = 0.0
-                if lam >= best:
-                    continue
-                u = (px + vx * lam - seg[k, 0]) * seg[k, 2] + (
-                    py + vy * lam - seg[k, 1]
-                ) * seg[k, 3]
-                if u < 0.0 or u > seg[k, 6]:
-                    continue
-                best = lam
-                kind = 1
-                ea = i
-                eb = k
-            k1 = vx * vx + vy * vy
-            for k in range(jaws.shape[0]):
-                dx = px - jaws[k, 0]
-                dy = py - jaws[k, 1]
-                k2 = dx * vx + dy * vy
-                if k2 >= 0.0:
-                    continue
-                k3 = dx * dx + dy * dy - r * r
-                disc = k2 * k2 - k1 * k3
-                if disc < 0.0:
-                    continue
-                lam = k3 / (-k2 + math.sqrt(disc)) if k3 > 0.0 else 0.0
-                if lam < best:
-                    best = lam
-                    kind = 2
-                    ea = i
-                    eb = k
-            for k in range(mouths.shape[0]):
-                vo = vx * mouths[k, 4] + vy * mouths[k, 5]
-                if vo <= 0.0:
-                    continue
-                s = (px - mouths[k, 0]) * mouths[k, 4] + (py - mouths[k, 1]) * mouths[k, 5]
-                lam = -s / vo
-                if lam < 0.0:
-                    lam = 0.0
-                if lam >= best:
-                    continue
-                u = (px + vx * lam - mouths[k, 0]) * mouths[k, 2] + (
-                    py + vy * lam - mouths[k, 1]
-                ) * mouths[k, 3]
-                if u < -r or u > mouths[k, 6] + r:
-                    continue
-                best = lam
-                kind = 3
-                ea = i
-                eb = k
-        for j in range(i + 1, n):
-            if not active[j]:
-                continue
-            if not (moving[i] or moving[j]):
-                continue
-            wx = vel[j, 0] - vx
-            wy = vel[j, 1] - vy
-            x = pos[j, 0] - px
-            y = pos[j, 1] - py
-            k2 = x * wx + y * wy
-            # Not approaching (or slower than physics.APPROACH_TOLERANCE_M_S, which the
-            # resolution also ignores): no collision.
-            if k2 >= -1e-12 * 2.0 * r:
-                continue
-            k1 = wx * wx + wy * wy
-            k3 = x * x + y * y - d2
-            disc = k2 * k2 - k1 * k3
-            if disc < 0.0:  # complex roots: they miss
-                continue
-            lam = k3 / (-k2 + math.sqrt(disc)) if k3 > 0.0 else 0.0
-            if lam < best:
-                best = lam
-                kind = 0
-                ea = i
-                eb = j
-    return best, kind, ea, eb
-
-
-scan_python = _scan
-scan = _jit(_scan)
 
 
 def table_arrays(table) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

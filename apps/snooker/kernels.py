@@ -1,4 +1,6 @@
-"""The event-free stretch of the frame loop, compiled with numba.
+"""The snooker simulation's compiled kernels: the event finder (``scan``: WHEN the next
+thing happens, see events.py) and the event-free stretch of the frame loop, which calls it
+(one file: numba's cache checks a kernel against its own file only).
 
 Between events nothing but arithmetic happens: move every ball at its held velocity to the
 next frame boundary, step its speed (and spin) down the speed curve, record the frame.
@@ -13,9 +15,125 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from camlab88.apps.snooker.events import _jit, scan
+from camlab88.base.kernel_notice import announce_compiles
+from numba import njit
+
+# Cached, so only the first run after install compiles; every kernel here is called with
+# one set of argument types (docs/development.md, "numba's cache").
+announce_compiles("snooker", 6.0, __name__)  # a cold compile, measured
 
 REST, EVENT, LIMIT = 0, 1, 2
+NO_EVENT = -1
+
+
+def _scan(pos, vel, active, moving, r, seg, jaws, mouths, horizon):
+    """Earliest event within `horizon` seconds: (dt, kind, a, b) or (horizon, -1, -1, -1).
+
+    seg rows: ax ay tx ty nx ny length; jaws rows: x y; mouths rows: ax ay tx ty ox oy width.
+    """
+    best = horizon
+    kind = -1
+    ea = -1
+    eb = -1
+    n = pos.shape[0]
+    d2 = 4.0 * r * r
+    for i in range(n):
+        if not active[i]:
+            continue
+        px = pos[i, 0]
+        py = pos[i, 1]
+        vx = vel[i, 0]
+        vy = vel[i, 1]
+        if moving[i]:
+            for k in range(seg.shape[0]):
+                vn = vx * seg[k, 4] + vy * seg[k, 5]
+                if vn >= 0.0:
+                    continue
+                s = (px - seg[k, 0]) * seg[k, 4] + (py - seg[k, 1]) * seg[k, 5] - r
+                if s < -r:  # centre already behind the face: not this cushion's business
+                    continue
+                lam = -s / vn
+                if lam < 0.0:
+                    lam = 0.0
+                if lam >= best:
+                    continue
+                u = (px + vx * lam - seg[k, 0]) * seg[k, 2] + (
+                    py + vy * lam - seg[k, 1]
+                ) * seg[k, 3]
+                if u < 0.0 or u > seg[k, 6]:
+                    continue
+                best = lam
+                kind = 1
+                ea = i
+                eb = k
+            k1 = vx * vx + vy * vy
+            for k in range(jaws.shape[0]):
+                dx = px - jaws[k, 0]
+                dy = py - jaws[k, 1]
+                k2 = dx * vx + dy * vy
+                if k2 >= 0.0:
+                    continue
+                k3 = dx * dx + dy * dy - r * r
+                disc = k2 * k2 - k1 * k3
+                if disc < 0.0:
+                    continue
+                lam = k3 / (-k2 + math.sqrt(disc)) if k3 > 0.0 else 0.0
+                if lam < best:
+                    best = lam
+                    kind = 2
+                    ea = i
+                    eb = k
+            for k in range(mouths.shape[0]):
+                vo = vx * mouths[k, 4] + vy * mouths[k, 5]
+                if vo <= 0.0:
+                    continue
+                s = (px - mouths[k, 0]) * mouths[k, 4] + (py - mouths[k, 1]) * mouths[k, 5]
+                lam = -s / vo
+                if lam < 0.0:
+                    lam = 0.0
+                if lam >= best:
+                    continue
+                u = (px + vx * lam - mouths[k, 0]) * mouths[k, 2] + (
+                    py + vy * lam - mouths[k, 1]
+                ) * mouths[k, 3]
+                if u < -r or u > mouths[k, 6] + r:
+                    continue
+                best = lam
+                kind = 3
+                ea = i
+                eb = k
+        for j in range(i + 1, n):
+            if not active[j]:
+                continue
+            if not (moving[i] or moving[j]):
+                continue
+            wx = vel[j, 0] - vx
+            wy = vel[j, 1] - vy
+            x = pos[j, 0] - px
+            y = pos[j, 1] - py
+            k2 = x * wx + y * wy
+            # Not approaching (or slower than physics.APPROACH_TOLERANCE_M_S, which the
+            # resolution also ignores): no collision.
+            if k2 >= -1e-12 * 2.0 * r:
+                continue
+            k1 = wx * wx + wy * wy
+            k3 = x * x + y * y - d2
+            disc = k2 * k2 - k1 * k3
+            if disc < 0.0:  # complex roots: they miss
+                continue
+            lam = k3 / (-k2 + math.sqrt(disc)) if k3 > 0.0 else 0.0
+            if lam < best:
+                best = lam
+                kind = 0
+                ea = i
+                eb = j
+    return best, kind, ea, eb
+
+
+# the event finder: compiled, and as Python (physics' path for tables without a tabulated
+# speed curve, and the tests' reference)
+scan_python = _scan
+scan = njit(cache=True, nogil=True)(_scan)
 
 
 def _interp(u, U, G):
@@ -32,7 +150,7 @@ def _interp(u, U, G):
     return slope * (u - U[j]) + G[j]
 
 
-interp = _jit(_interp)
+interp = njit(cache=True, nogil=True)(_interp)
 
 
 def _run_frames(pos, vel, spin, cv0, ct0, spin0, spin_t0, on, t, n_next, fr, r, seg, jaws,
@@ -106,4 +224,4 @@ def _run_frames(pos, vel, spin, cv0, ct0, spin0, spin_t0, on, t, n_next, fr, r, 
     return k, t, LIMIT, -1, -1, -1
 
 
-run_frames = _jit(_run_frames)
+run_frames = njit(cache=True, nogil=True)(_run_frames)

@@ -24,7 +24,6 @@ import math
 import numpy as np
 from camlab88.apps.snooker import kernels
 from camlab88.apps.snooker.events import (
-    HAVE_NUMBA,
     Event,
     EventKind,
     scan,
@@ -51,7 +50,6 @@ class Physics:
     def __init__(self, table: Table, use_numba: bool = True) -> None:
         """`use_numba=False` runs the same algorithm as plain Python (for comparison)."""
         self.table = table
-        use_numba = use_numba and HAVE_NUMBA
         self.scan = scan if use_numba else scan_python
         self.curve = curve_for(table)
         self.seg, self.jaws, self.mouths = table_arrays(table)

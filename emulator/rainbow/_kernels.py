@@ -3,28 +3,19 @@
 Kept apart from the Python-level logic so the rules they implement can be read in
 compiler.py / video.py and the per-pixel reference without wading through loops.
 
-Compiled lazily, like emulator.sigma.raster: importing this module (so emulator.rainbow, so
-any command module that names a Rainbow type) does not import numba, about 0.15-0.2 s, nor
-load a kernel from the cache (another 0.2 s); the first call of any kernel does both, for
-all of them.
+Imported where a kernel is first called (compiler.py, video.py), not at their import: so
+importing emulator.rainbow (any command module that names a Rainbow type) does not import
+numba, about 0.15-0.2 s, nor load a kernel from the cache (another 0.2 s).
 """
 
 from __future__ import annotations
 
 import numpy as np
-from camlab88.base.lazy_kernels import LazyKernels
+from camlab88.base.kernel_notice import announce_compiles
+from numba import njit
 
-
-def _announce() -> None:
-    from camlab88.base.kernel_notice import announce_compiles
-
-    announce_compiles("Rainbow", 4.0, __name__,  # cold compile time, measured
-                      completion="camlab88.emulator.rainbow.kernel_warmup:compile_kernels")
-
-
-_kernels = LazyKernels(globals(), _announce)
-_kernel = _kernels.kernel
-_signed = _kernels.signed
+announce_compiles("Rainbow", 4.0, __name__,  # cold compile time, measured
+                  completion="camlab88.emulator.rainbow.kernel_warmup:compile_kernels")
 
 
 # Columns of the instance table handed to the compiler kernel.
@@ -36,7 +27,7 @@ INSTANCE_COLUMNS = 13
 # the loops below stand in for numpy calls numba compiles slowly. A slice assignment
 # (``b[:n] = a``) drags in its broadcast check's error-message formatting, ~3.5 s of
 # compile; np.unique drags in numba's generic quicksort, ~1.5 s (docs/perf/startup.md).
-@_kernel
+@njit(cache=True)
 def _grow(a, need):
     if need <= a.shape[0]:
         return a
@@ -47,7 +38,7 @@ def _grow(a, need):
     return b
 
 
-@_kernel
+@njit(cache=True)
 def _unique(a):
     """np.unique of a 1-D array (sorted distinct values), sorting ``a`` in place (heapsort)."""
     n = a.shape[0]
@@ -82,7 +73,7 @@ def _unique(a):
     return a[:m]
 
 
-@_kernel
+@njit(cache=True)
 def _less(a, i, j):
     for c in range(a.shape[1]):
         if a[i, c] != a[j, c]:
@@ -93,7 +84,7 @@ def _less(a, i, j):
 # An explicit signature: compile_rows first types ``nc`` as the literal 0, and a second
 # (literal) signature in the on-disk cache can be mixed up with this one by two processes
 # compiling at once (docs/development.md, "numba's cache").
-@_signed("int64(int64[:, ::1], int64)")
+@njit("int64(int64[:, ::1], int64)", cache=True)
 def _sort_unique(cand, nc):
     """Sort the first nc rows lexicographically and drop repeats: a canonical tie order."""
     for p in range(1, nc):
@@ -114,7 +105,7 @@ def _sort_unique(cand, nc):
     return m
 
 
-@_kernel
+@njit(cache=True)
 def compile_rows(ya, yb, width, inst):
     """Band structure for screen rows ya..yb-1 from the instance table (see bands.py)."""
     n = inst.shape[0]
@@ -262,7 +253,7 @@ def compile_rows(ya, yb, width, inst):
     return bands[:nb].copy(), spans[:nsp].copy(), srcs[:nsr].copy()
 
 
-@_kernel
+@njit(cache=True)
 def scanout(bands, spans, srcs, words, lut, out):
     """Fill ``out`` (h, w, 3) from the band structure, memory words and the 4096-entry LUT."""
     for b in range(bands.shape[0]):

@@ -13,7 +13,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from camlab88.emulator.rainbow._kernels import INSTANCE_COLUMNS, compile_rows
 from camlab88.emulator.rainbow.bands import BandStructure
 from camlab88.emulator.rainbow.graph import SCREEN_H, SCREEN_W, Instance, Pad, PadGraph
 
@@ -40,6 +39,8 @@ def _instance_rows(graph: PadGraph, insts: list[Instance]) -> dict[tuple[int, ..
 def _table(rows: dict[tuple[int, ...], tuple]) -> np.ndarray:
     keys = sorted({r[6] for r in rows.values()})
     rank = {k: n for n, k in enumerate(keys)}
+    from camlab88.emulator.rainbow._kernels import INSTANCE_COLUMNS  # numba: on first use
+
     t = np.empty((len(rows), INSTANCE_COLUMNS), np.int64)
     for n, r in enumerate(rows.values()):
         t[n] = (*r[:6], rank[r[6]], *r[7:])
@@ -58,9 +59,11 @@ class Compiler:
         self._rows = rows
         self.stats.compiles += 1
         table = _table(rows)
+        from camlab88.emulator.rainbow import _kernels  # (numba: imported on first use)
+
         if old is None or full or len(self.structure) == 0:
             self.stats.full += 1
-            self.structure = BandStructure(*compile_rows(0, SCREEN_H, SCREEN_W, table))
+            self.structure = BandStructure(*_kernels.compile_rows(0, SCREEN_H, SCREEN_W, table))
             self.stats.last_rows = SCREEN_H
             self.stats.rows_rebuilt += SCREEN_H
             return self.structure
@@ -84,6 +87,8 @@ class Compiler:
         i = max(int(np.searchsorted(y1s, lo, side="right")) - 1, 0)  # band before the first hit
         j = min(int(np.searchsorted(y0s, hi, side="left")), len(s.bands) - 1)  # band after
         ya, yb = int(y0s[i]), int(y1s[j])
+        from camlab88.emulator.rainbow._kernels import compile_rows
+
         nb, ns, nr = compile_rows(ya, yb, SCREEN_W, table)
         self.stats.last_rows = yb - ya
         self.stats.rows_rebuilt += yb - ya

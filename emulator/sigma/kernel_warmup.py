@@ -23,7 +23,7 @@ def warm_stream() -> bytes:
         e.abbreviated_polyline([(70, 70), (90, 80), (120, 70)]),           # AGS scan_points
         e.move(5, 100), e.dots([1, 2, 3]),                                 # dot_run
         e.move(200, 200), e.block(220, 220),                               # fill_rect
-        e.move(300, 300), e.fill(1),                                       # _boundary_fill
+        e.move(300, 300), e.fill(1),                                       # boundary_fill
     ))
 
 

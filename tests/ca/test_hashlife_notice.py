@@ -1,5 +1,6 @@
-"""Every HashLife module with numba kernels is announced (issue 18's repeat trial: a first
-`ca run` spent 8–20 s compiling HashLife's kernels without a word)."""
+"""Every HashLife kernel Python calls is announced (issue 18's repeat trial: a first
+`ca run` spent 8–20 s compiling HashLife's kernels without a word), and a run compiles only
+the groups it needs."""
 
 from __future__ import annotations
 
@@ -9,26 +10,29 @@ import sys
 from pathlib import Path
 
 import camlab88.apps.ca.hashlife  # noqa: F401 - registers its kernel groups
+from camlab88.apps.ca.hashlife import kernels
 from camlab88.base import kernel_notice
+from numba.core.registry import CPUDispatcher
 
-HL = "camlab88.apps.ca.hashlife."  # the package whose kernels these tests follow
+HL = "camlab88.apps.ca.hashlife.kernels:"  # + a kernel's name
 
 ROOT = Path(__file__).resolve().parents[2]
 
+# The recursion compiles only inside a kind of leaf's entry: that kind's leaf kernel
+# announces it (the runs below see the notice); inlined kernels never compile alone.
+INSIDE = {"step_bits", "step_values", "recursion_bits", "recursion_values"}
 
-def test_every_hashlife_kernel_module_is_in_an_announced_group() -> None:
-    package = ROOT / "apps" / "ca" / "hashlife"
-    with_kernels = {".".join(("camlab88", *p.relative_to(ROOT).with_suffix("").parts))
-                    for p in package.rglob("*.py")
-                    if "@njit" in p.read_text() or "@kernels." in p.read_text()}
-    assert {HL + "evolve", HL + "bits.leaves"} <= with_kernels
-    # The recursion compiles only inside a kind of leaf's entry: that kind's leaf kernel
-    # announces it (the runs below see the notice).
-    inside = {HL + "evolve"}
-    missing = with_kernels - set(kernel_notice._state.groups) - inside
+
+def test_every_hashlife_kernel_is_in_an_announced_group() -> None:
+    compiled_alone = {name for name, value in vars(kernels).items()
+                      if isinstance(value, CPUDispatcher)
+                      and value.targetoptions.get("inline", "never") != "always"}
+    assert {"step_bits", "advance_bits", "join"} <= compiled_alone
+    groups = kernel_notice._state.groups
+    missing = {n for n in compiled_alone - INSIDE if HL + n not in groups}
     assert not missing, f"kernels compiled without the notice: {sorted(missing)}"
-    assert not inside & set(kernel_notice._state.groups)
-    labels = {kernel_notice._state.groups[m].label for m in with_kernels - inside}
+    assert not {n for n in INSIDE if HL + n in groups}
+    labels = {groups[HL + n].label for n in compiled_alone - INSIDE}
     assert labels == {"HashLife rule", "HashLife", "HashLife bit-leaf", "HashLife value-leaf",
                       "HashLife cell-list", "HashLife cell listing",
                       "HashLife growth and collection"}
@@ -50,7 +54,8 @@ LIFE_RUN = """
 from numba.core import event
 class Log(event.Listener):
     def on_start(self, ev):
-        print("compiled", ev.data["dispatcher"].py_func.__module__, flush=True)
+        f = ev.data["dispatcher"].py_func
+        print("compiled", f.__module__ + ":" + f.__qualname__, flush=True)
     def on_end(self, ev):
         pass
 event.register("numba:compile", Log())
@@ -75,9 +80,9 @@ def test_a_first_life_run_compiles_the_binary_group_alone(tmp_path: Path) -> Non
     assert done.returncode == 0, done.stderr
     compiled = {line.split()[1] for line in done.stdout.splitlines()
                 if line.startswith("compiled ")}
-    assert {HL + "evolve", HL + "bits.leaves"} <= compiled
-    assert not compiled & {HL + "cells", HL + "upkeep",
-                           HL + "cellgrid", HL + "listing"}
+    assert {HL + "step_bits", HL + "advance_bits"} <= compiled
+    assert not compiled & {HL + n for n in ("morton", "from_cells", "any_live", "rehash",
+                                            "collect", "advance_values", "listing")}
     assert "cell-list" not in done.stderr and "collection" not in done.stderr
     assert "value-leaf" not in done.stderr
     assert done.stderr.count("compiling HashLife kernels") == 1
@@ -104,17 +109,18 @@ def test_each_kind_of_leaf_compiles_once_whichever_runs_first(tmp_path: Path) ->
     cache = tmp_path / "cache"
     circuits = MULTI_STATE_RUN.format(rules="circuits", pattern="adder_demo")
     compiled, notices = _compiled_run(circuits, cache)
-    assert {HL + "evolve", HL + "cellgrid"} <= compiled
-    assert not compiled & {HL + "bits.leaves", HL + "bits.window",
-                           HL + "listing", HL + "upkeep"}
+    assert {HL + "step_values", HL + "advance_values"} <= compiled
+    assert not compiled & {HL + n for n in ("advance_bits", "grid_leaves", "build", "listing",
+                                            "rehash", "collect")}
     assert "value-leaf" in notices and "bit-leaf" not in notices
     primes = MULTI_STATE_RUN.format(rules="turing_primes", pattern="primes_25")
     compiled, notices = _compiled_run(primes, cache)
     assert not {m for m in compiled if m.startswith(HL)}, compiled
     assert "compiling" not in notices
     compiled, notices = _compiled_run(LIFE_RUN, cache)
-    assert {m for m in compiled if m.startswith(HL)} == {
-        HL + "evolve", HL + "bits.leaves",
-        HL + "bits.window"}
+    assert {m for m in compiled if m.startswith(HL)} >= {
+        HL + "step_bits", HL + "recursion_bits", HL + "advance_bits", HL + "grid_leaves"}
+    assert not {m for m in compiled if m.startswith(HL)} & {
+        HL + n for n in ("join", "towers", "count", "occupy", "levels", "advance_values")}
     assert [line for line in notices.splitlines() if "compiling" in line] == [
         "camlab88: compiling HashLife bit-leaf kernels, once: ~4 s"]

@@ -18,8 +18,14 @@ from collections.abc import Callable, Iterator
 import numpy as np
 from camlab88.apps.ca.engine import CENTRE, Engine
 from camlab88.apps.ca.hashlife import cells, census, listing
-from camlab88.apps.ca.hashlife.grid import PLANE_LEVEL
-from camlab88.apps.ca.hashlife.store import BIT_LEAF_LEVEL, Store
+from camlab88.apps.ca.hashlife.kernels import (
+    BIT_LEAF_LEVEL,
+    LEAF_TABLE,
+    NODE_TABLE,
+    PLANE_LEVEL,
+    rehash,
+)
+from camlab88.apps.ca.hashlife.store import Store
 from camlab88.apps.ca.library import pattern_path, rules_path
 from camlab88.apps.ca.patterns import read_pattern
 from camlab88.apps.ca.rules import load_rules
@@ -98,6 +104,4 @@ def compile_upkeep() -> None:
     store.make_room([])
     store.slots[:] = 0  # as grow_if_full does after growing: every entry hashed again
     store.lslots[:] = 0
-    from camlab88.apps.ca.hashlife.upkeep import LEAF_TABLE, NODE_TABLE, rehash
-
     rehash(NODE_TABLE | LEAF_TABLE, *store.tables)

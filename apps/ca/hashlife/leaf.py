@@ -10,18 +10,17 @@ sends nothing and never changes.  The rules travel as one packed int64 array (``
 from __future__ import annotations
 
 import numpy as np
-from camlab88.apps.ca.hashlife.store import WALL
+from camlab88.apps.ca.hashlife.kernels import (
+    H_FORM,
+    H_LINES,
+    H_RX,
+    H_RY,
+    H_START,
+    H_TYPES,
+    HEADER,
+)
 from camlab88.apps.ca.rules import OP_ADD, OP_AND, OP_OR, OP_XOR, RuleSet
-from camlab88.apps.ca.tables import LOOKUP_SIZE, compile_rules
-from camlab88.base.kernel_set import KernelSet
-
-kernels = KernelSet(__name__)
-
-M32 = 0xFFFFFFFF
-# Header of the packed rules: counts, then where each table starts in the array.
-H_TYPES, H_LINES, H_RY, H_RX, H_START, H_DY, H_DX, H_OP, H_VAL, H_LOOKUP, H_KIND, H_A, H_B, \
-    H_FORM = range(14)
-HEADER = 16
+from camlab88.apps.ca.tables import compile_rules
 
 
 class NotDeterministic(ValueError):
@@ -91,70 +90,3 @@ def pack(rules: RuleSet) -> np.ndarray:
     return np.concatenate([head, *(np.asarray(p, np.int64) for p in parts)])
 
 
-@kernels.kernel(inline="always")
-def _apply(cur, op, val):
-    if op == 1:
-        return (cur + val) & M32
-    if op == 2:
-        return cur | val
-    if op == 3:
-        return cur & val
-    return cur ^ val
-
-
-@kernels.kernel
-def _interpret(v, R):
-    """The life-form a cell with message value ``v`` becomes (0: dies)."""
-    if v < LOOKUP_SIZE:
-        i = R[R[H_LOOKUP] + v]
-    else:
-        i = -1
-        kind, a, b = R[H_KIND], R[H_A], R[H_B]
-        for j in range(R[H_LINES]):
-            k = R[kind + j]
-            if k == 0:
-                hit = v == R[a + j]
-            elif k == 1:
-                hit = (v & R[a + j]) == R[b + j]
-            else:
-                hit = R[a + j] <= v <= R[b + j]
-            if hit:
-                i = j
-                break
-    return np.int64(0) if i < 0 else R[R[H_FORM] + i]
-
-
-@kernels.export("void(int64[:, ::1], int64, int64, int64, int64, int64[::1])")
-def generation(G, s, d, lo, hi, R):
-    """Plane d = the next values of plane s for lo <= y, x < hi (the caller keeps the reach
-    of every such cell inside the grid); plane 3 is the message scratch.  G holds four
-    square planes one above the other (plane p, row y: G[p * side + y]; planes of one
-    array, not views: numba reference-counts every view)."""
-    n = G.shape[1]
-    S, D, M = s * n, d * n, 3 * n
-    ntypes, ry, rx = R[H_TYPES], R[H_RY], R[H_RX]
-    start, sdy, sdx, sop, sval = R[H_START], R[H_DY], R[H_DX], R[H_OP], R[H_VAL]
-    for y in range(lo, hi):
-        for x in range(lo, hi):
-            G[M + y, x] = -1  # -1: received nothing (message values are 32-bit, >= 0)
-    for y in range(lo - ry, hi + ry):
-        for x in range(lo - rx, hi + rx):
-            t = G[S + y, x]
-            if t <= 0 or t >= ntypes:
-                continue
-            for k in range(R[start + t], R[start + t + 1]):
-                ty = y + R[sdy + k]
-                tx = x + R[sdx + k]
-                if lo <= ty < hi and lo <= tx < hi:
-                    cur = G[M + ty, tx]
-                    G[M + ty, tx] = _apply(cur if cur >= 0 else np.int64(0), R[sop + k],
-                                          R[sval + k])
-    for y in range(lo, hi):
-        for x in range(lo, hi):
-            v = G[M + y, x]
-            if G[S + y, x] == WALL:
-                G[D + y, x] = WALL
-            elif v < 0:
-                G[D + y, x] = 0
-            else:
-                G[D + y, x] = _interpret(v, R)

@@ -29,203 +29,34 @@ from __future__ import annotations
 import weakref
 
 import numpy as np
-from camlab88.base import raw_views
-from camlab88.base.kernel_set import KernelSet
-
-kernels = KernelSet(__name__, sources=("camlab88.base.raw_views",
-                                        "camlab88.base.raw_view_intrinsics"))
-
-TOP_LEVEL = 17  # the 65536-square plane is level 16; stepping frames it in a level-17 node
-RES, RESJ, LEVEL, FULL = 4, 5, 6, 7  # node row columns after the four quadrants
-ROW = 8
-WALL = 65536  # the wall cell of value leaves: never changes, sends nothing
-BIT_LEAF_LEVEL = 4
-EMPTY_LEAF, WALL_LEAF = 1, 2  # of bit leaves
-# meta: node and leaf counts; the leaf level, the base case's level, s (2**s >= the rules'
-# reach) and the reach; whether any leaf has a wall yet (a bounded plane was framed; until
-# then the bit kernels skip it); the ids of the empty and the wall node of each level.
-N_NODES, N_LEAVES, LEAF, BASE, SHIFT, REACH, HAS_WALL = range(7)
-EMPTY = 7
-WALL_AT = EMPTY + TOP_LEVEL + 1
-# The tables' addresses and sizes, written by the kernel Python calls for the kernels it
-# calls to find them (base/raw_views.py): nodes, slots, leaves, leaf slots, rules, scratch;
-# node and leaf rows, rule words, scratch rows and columns.
-AT = WALL_AT + TOP_LEVEL + 1
-AT_NODES, AT_SLOTS, AT_LEAVES, AT_LSLOTS, AT_RULES, AT_SCRATCH = range(AT, AT + 6)
-N_ROWS, L_ROWS, R_WORDS, G_ROWS, G_COLUMNS = range(AT + 6, AT + 11)
-META = AT + 11
-# Then one frame per level for the recursion's nine and four squares and their results
-# (evolve.py: a level's call only calls the level below, so one frame a level suffices).
-FRAMES, FRAME = META, 32
-META_SIZE = FRAMES + FRAME * (TOP_LEVEL + 1)
-NODE_BYTES = 4 * ROW + 2 * 4  # a row and two hash slots (load factor at most 1/2)
-LEAF_BYTES = 8 * 8 + 2 * 4
-
-# The types Python passes (the exports' signatures).
-NODES, SLOTS, LEAVES, META_T = "int32[:, ::1]", "int32[::1]", "uint64[:, ::1]", "int64[::1]"
-TABLES = f"{NODES}, {SLOTS}, {LEAVES}, {SLOTS}, {META_T}"  # nodes, slots, leaves, lslots, meta
-
-
-@kernels.kernel(inline="always")
-def _hash4(a, b, c, d, mask):
-    h = (np.uint64(a) * np.uint64(0x9E3779B97F4A7C15)
-         ^ np.uint64(b) * np.uint64(0xC2B2AE3D27D4EB4F)
-         ^ np.uint64(c) * np.uint64(0x165667B19E3779F9)
-         ^ np.uint64(d) * np.uint64(0x85EBCA77C2B2AE63))
-    return np.int64((h ^ (h >> np.uint64(29))) & np.uint64(mask))
-
-
-@kernels.kernel(inline="always")
-def node_hash(a, b, c, d, level, mask):
-    return _hash4(a, b, c, np.int64(d) ^ (np.int64(level) << 27), mask)
-
-
-@kernels.kernel(inline="always")
-def _mix(h):
-    h = (h ^ (h >> np.uint64(31))) * np.uint64(0x7FB5D329728EA185)
-    return h ^ (h >> np.uint64(27))
-
+from camlab88.apps.ca.hashlife.kernels import (
+    BASE,
+    EMPTY,
+    HAS_WALL,
+    LEAF,
+    LEAF_TABLE,
+    META_SIZE,
+    N_LEAVES,
+    N_NODES,
+    NODE_TABLE,
+    REACH,
+    ROW,
+    SHIFT,
+    TOP_LEVEL,
+    WALL_AT,
+    collect,
+    join,
+    rehash,
+    towers,
+)
 
 # Odd multipliers of the leaf hash's eight words (splitmix, xxhash, murmur constants).
 _LEAF_K = (0x9E3779B97F4A7C15, 0xC2B2AE3D27D4EB4F, 0x165667B19E3779F9, 0x85EBCA77C2B2AE63,
            0x27D4EB2F165667C5, 0xFF51AFD7ED558CCD, 0xC4CEB9FE1A85EC53, 0xD6E8FEB86659FD93)
 
 
-@kernels.kernel(inline="always")
-def leaf_hash(W, r, at, mask):
-    # eight independent multiplies, one mixing at the end: eight mixing rounds chained one
-    # after another were ~10 ns more a base case (a leaf looked up each)
-    h = (W[r, at] * np.uint64(_LEAF_K[0]) + W[r, at + 1] * np.uint64(_LEAF_K[1])
-         + W[r, at + 2] * np.uint64(_LEAF_K[2]) + W[r, at + 3] * np.uint64(_LEAF_K[3])
-         + W[r, at + 4] * np.uint64(_LEAF_K[4]) + W[r, at + 5] * np.uint64(_LEAF_K[5])
-         + W[r, at + 6] * np.uint64(_LEAF_K[6]) + W[r, at + 7] * np.uint64(_LEAF_K[7]))
-    return np.int64(_mix(h) & np.uint64(mask))
-
-
-@kernels.kernel(inline="always")
-def _join(a, b, c, d, level, nodes, slots, meta):
-    # Slots and rows indexed by unsigned values: numba adds a test for negative indices
-    # (Python's wrap-around) to every signed one, on the hash look-up's critical path.
-    mask = np.uint64(slots.shape[0] - 1)
-    s = np.uint64(node_hash(a, b, c, d, level, mask))
-    while True:
-        i = np.uint64(np.uint32(slots[s]))
-        if i == 0:
-            break
-        if (nodes[i, 0] == a and nodes[i, 1] == b and nodes[i, 2] == c and nodes[i, 3] == d
-                and nodes[i, LEVEL] == level):
-            return np.int64(i)
-        s = (s + np.uint64(1)) & mask
-    n = meta[N_NODES]
-    if n >= nodes.shape[0]:
-        return np.int64(-1)
-    slots[s] = n
-    u = np.uint64(n)
-    nodes[u, 0] = a
-    nodes[u, 1] = b
-    nodes[u, 2] = c
-    nodes[u, 3] = d
-    nodes[u, RESJ] = 0
-    nodes[u, LEVEL] = level
-    nodes[u, FULL] = 0
-    meta[N_NODES] = n + 1
-    return np.int64(n)
-
-
-# A call, not IR-inlined at each of the recursion's ten-odd sites: the first compile of the
-# recursion took 18 s of CPU instead of 29, with the same jump times in an A/B
-# (docs/perf/startup.md).  Without numba's runtime, as the recursion.
-@kernels.export(f"int64(int64, int64, int64, int64, int64, {NODES}, {SLOTS}, {META_T})",
-                _nrt=False)
-def join(a, b, c, d, level, nodes, slots, meta):
-    """The node of ``level`` with quadrants a, b, c, d (nw, ne, sw, se), made at most
-    once; -1 if the table is full."""
-    return _join(a, b, c, d, level, nodes, slots, meta)
-
-
-@kernels.kernel(inline="always")
-def leaf(W, r, at, leaves, lslots, meta):
-    """The id of the bit leaf with words W[r, at:at+8], made at most once; -1 if full.
-    (Row and offset rather than a slice, and inlined: every array handed to a call is
-    reference counted with atomic operations, measured at half the time of small jumps.)"""
-    mask = np.uint64(lslots.shape[0] - 1)
-    s = np.uint64(leaf_hash(W, r, at, mask))  # unsigned indices, as in _join
-    while True:
-        i = np.uint64(np.uint32(lslots[s]))
-        if i == 0:
-            break
-        same = True
-        for q in range(8):
-            if leaves[i, q] != W[r, at + q]:
-                same = False
-                break
-        if same:
-            return np.int64(i)
-        s = (s + np.uint64(1)) & mask
-    n = meta[N_LEAVES]
-    if n >= leaves.shape[0]:
-        return np.int64(-1)
-    lslots[s] = n
-    u = np.uint64(n)
-    for q in range(8):
-        leaves[u, q] = W[r, at + q]
-    meta[N_LEAVES] = n + 1
-    return np.int64(n)
-
-
-@kernels.export(f"int64(uint64[:, ::1], {TABLES})")
-def towers(words, nodes, slots, leaves, lslots, meta):
-    """The empty and the all-wall leaf (values 0 and WALL; or bit leaves 1 and 2, the rows
-    of ``words``) and the uniform nodes of every level above them, into meta (one call: 26
-    calls from Python cost 0.1 ms a store)."""
-    low = meta[LEAF]
-    for which in range(2):
-        base = EMPTY if which == 0 else WALL_AT
-        if low == 0:
-            meta[base] = 0 if which == 0 else WALL
-        else:
-            if leaf(words, which, 0, leaves, lslots, meta) != EMPTY_LEAF + which:
-                return -1
-            meta[base + low] = EMPTY_LEAF + which
-        for k in range(low + 1, TOP_LEVEL + 1):
-            q = meta[base + k - 1]
-            n = _join(q, q, q, q, np.int64(k), nodes, slots, meta)
-            if n < 0:
-                return -1
-            meta[base + k] = n
-    return 0
-
-
-@kernels.kernel(inline="always")
-def publish(nodes, slots, leaves, lslots, meta, R, G):
-    """Write the tables' (and the rules' and scratch's) addresses and sizes into ``meta``;
-    its own address, which is what the kernels called with it take."""
-    meta[AT_NODES], meta[AT_SLOTS] = raw_views.address(nodes), raw_views.address(slots)
-    meta[AT_LEAVES], meta[AT_LSLOTS] = raw_views.address(leaves), raw_views.address(lslots)
-    meta[AT_RULES], meta[AT_SCRATCH] = raw_views.address(R), raw_views.address(G)
-    meta[N_ROWS], meta[L_ROWS], meta[R_WORDS] = nodes.shape[0], leaves.shape[0], R.shape[0]
-    meta[G_ROWS], meta[G_COLUMNS] = G.shape[0], G.shape[1]
-    return raw_views.address(meta)
-
-
-@kernels.kernel(inline="always")
-def node_tables(at):
-    """(nodes, slots, meta) from meta's address (``publish``)."""
-    meta = raw_views.vector_at(at, META_SIZE, np.int64(0))
-    n = meta[N_ROWS]
-    return (raw_views.matrix_at(meta[AT_NODES], n, ROW, np.int32(0)),
-            raw_views.vector_at(meta[AT_SLOTS], 2 * n, np.int32(0)), meta)
-
-
-@kernels.kernel(inline="always")
-def all_tables(at):
-    """(nodes, slots, leaves, lslots, meta, R, G) from meta's address (``publish``)."""
-    nodes, slots, meta = node_tables(at)
-    m = meta[L_ROWS]
-    return (nodes, slots, raw_views.matrix_at(meta[AT_LEAVES], m, 8, np.uint64(0)),
-            raw_views.vector_at(meta[AT_LSLOTS], 2 * m, np.int32(0)), meta,
-            raw_views.vector_at(meta[AT_RULES], meta[R_WORDS], np.uint64(0)),
-            raw_views.matrix_at(meta[AT_SCRATCH], meta[G_ROWS], meta[G_COLUMNS], np.uint64(0)))
+NODE_BYTES = 4 * ROW + 2 * 4  # a row and two hash slots (load factor at most 1/2)
+LEAF_BYTES = 8 * 8 + 2 * 4
 
 
 class Store:
@@ -325,7 +156,6 @@ class Store:
         (renumbered in place); see ``crowded``."""
         live = [t for t in self.trees if t.epoch == self.epoch]
         keep = np.array([*roots, *(t.node for t in live)], np.int64)
-        from camlab88.apps.ca.hashlife.upkeep import collect  # its own kernel group
 
         collect(keep, *self.tables)
         self.epoch += 1
@@ -361,7 +191,6 @@ class Store:
                       0)
         if not full or not factor:
             return False
-        from camlab88.apps.ca.hashlife.upkeep import LEAF_TABLE, NODE_TABLE, rehash  # its own group
 
         if grow_nodes:
             self.nodes, self.slots = self._grown(self.nodes, self.count, factor)

@@ -3,21 +3,25 @@ free (the way the firmware's flood filler spreads), and each component's deepest
 
 Measured to pay: a pure-Python scan of a 768x512 painting area takes ~0.4 s, these take
 about a millisecond.  Each kernel has one explicit signature (docs/development.md).
+Imported where seeds are first found (seeds.py), so a command that paints nothing never
+imports numba.
 """
 
 from __future__ import annotations
 
-from typing import Any
-
 import numpy as np
+from camlab88.base.kernel_notice import announce_compiles
+from numba import njit
 
-_K: dict[str, Any] = {}
+# one line on stderr if the cache is cold: measured 8 s at load 7 on the 2-core machine
+announce_compiles("KAS painting", 4.0, __name__)
 
 _SIG_LABEL = "int64(uint8[:, ::1], int32[:, ::1], int32[::1])"
 _SIG_DEEP = "void(uint8[:, ::1], int32[:, ::1], int32[:, ::1], int64[::1], int32[::1])"
 
 
-def _label(wall, labels, stack):  # numba kernel
+@njit(_SIG_LABEL, cache=True, nogil=True)
+def _label(wall, labels, stack):
     """labels: 0 on the wall, 1..n for the free components (scan-line fill). Returns n."""
     h, w = wall.shape
     for y in range(h):
@@ -58,7 +62,8 @@ def _label(wall, labels, stack):  # numba kernel
     return n
 
 
-def _deepest(wall, labels, dist, best, depth):  # numba kernel
+@njit(_SIG_DEEP, cache=True, nogil=True)
+def _deepest(wall, labels, dist, best, depth):
     """3-4 chamfer distance to the wall; best[k] = y*w+x of component k's deepest pixel
     (first in scan order on ties), depth[k] its distance (3 = one pixel)."""
     h, w = wall.shape
@@ -104,28 +109,15 @@ def _deepest(wall, labels, dist, best, depth):  # numba kernel
                 best[k] = y * w + x
 
 
-def _compile() -> None:
-    from camlab88.base.kernel_notice import announce_compiles
-    from numba import njit
-
-    # one line on stderr if the cache is cold: measured 8 s at load 7 on the 2-core machine
-    announce_compiles("KAS painting", 4.0, __name__)
-
-    _K["label"] = njit(_SIG_LABEL, cache=True, nogil=True)(_label)
-    _K["deepest"] = njit(_SIG_DEEP, cache=True, nogil=True)(_deepest)
-
-
 def components(wall: np.ndarray) -> tuple[np.ndarray, int, np.ndarray, np.ndarray]:
     """(labels, n, best, depth) for a uint8 wall map: see _label and _deepest."""
-    if not _K:
-        _compile()
     wall = np.ascontiguousarray(wall, dtype=np.uint8)
     h, w = wall.shape
     labels = np.empty((h, w), dtype=np.int32)
     stack = np.empty(2 * h * w + 16, dtype=np.int32)
-    n = int(_K["label"](wall, labels, stack))
+    n = int(_label(wall, labels, stack))
     dist = np.empty((h, w), dtype=np.int32)
     best = np.zeros(n + 1, dtype=np.int64)
     depth = np.empty(n + 1, dtype=np.int32)
-    _K["deepest"](wall, labels, dist, best, depth)
+    _deepest(wall, labels, dist, best, depth)
     return labels, n, best, depth

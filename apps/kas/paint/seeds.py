@@ -18,7 +18,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from camlab88.apps.kas.paint import kernels, vector
+from camlab88.apps.kas.paint import vector
 
 DEEP = 6  # chamfer units (3 a pixel): two pixels from the wall is a real face, not a pocket
 
@@ -60,6 +60,8 @@ def window(polys: list[np.ndarray]) -> tuple[np.ndarray, tuple[int, int]]:
 
 def faces(polys: list[np.ndarray]) -> Faces:
     wall, origin = window(polys)
+    from camlab88.apps.kas.paint import kernels  # numba: imported on first use
+
     labels, n, best, depth = kernels.components(wall)
     edge = np.unique(np.concatenate([labels[0], labels[-1], labels[:, 0], labels[:, -1]]))
     bounded = np.ones(n + 1, dtype=bool)

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import numpy as np
 from camlab88.apps.snooker.camera.projection import Camera, camera_basis, scale_px
-from camlab88.apps.snooker.visualiser import spans
 
 NEAR_CLIP_M = 1e-2  # table faces are clipped 1 cm in front of the observer
 
@@ -45,6 +44,8 @@ def fill_convex(img: np.ndarray, xy: np.ndarray, value: int) -> None:
     """Fill the pixels whose centres lie inside the convex polygon `xy` (screen pixels): one
     kernel, since per-face numpy arrays and per-row slices from Python were the host's
     largest cost with the view moving (docs/perf/camera.md)."""
+    from camlab88.apps.snooker.visualiser import spans  # numba: imported on first use
+
     spans.fill_convex(img, xy, value)
 
 

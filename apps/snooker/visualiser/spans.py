@@ -3,20 +3,22 @@ drawing, on the host side).  Measured: with the view moving, the numpy version's
 arrays and its ~9,000 row slices a frame from Python were ~11 ms a frame at load 7, the
 host's largest share; the kernel does a frame's 22 faces in well under a millisecond
 (docs/perf/camera.md).  The arithmetic is the numpy version's, operation for operation, so
-the pixels are the same.  One explicit signature (docs/development.md, numba's cache)."""
+the pixels are the same.  One explicit signature (docs/development.md, numba's cache).
+Imported where a face is first filled (raster.py), so a run that draws nothing never
+imports numba."""
 
 from __future__ import annotations
 
 import math
-from typing import Any
-
 import numpy as np
+from camlab88.base.kernel_notice import announce_compiles
+from numba import njit
 
-_K: dict[str, Any] = {}
-_SIG = "void(uint8[:, ::1], float64[:, ::1], uint8)"
+announce_compiles("snooker visualiser", 1.0, __name__)
 
 
-def _fill(img, xy, value):  # numba kernel
+@njit("void(uint8[:, ::1], float64[:, ::1], uint8)", cache=True, nogil=True)
+def _fill(img, xy, value):
     h, w = img.shape
     k = xy.shape[0]
     lo, hi = xy[0, 1], xy[0, 1]
@@ -45,10 +47,4 @@ def _fill(img, xy, value):  # numba kernel
 def fill_convex(img: np.ndarray, xy: np.ndarray, value: int) -> None:
     """Fill the pixels of ``img`` (C-contiguous uint8) whose centres lie inside the convex
     polygon ``xy`` ((k, 2) screen pixels)."""
-    if not _K:
-        from camlab88.base.kernel_notice import announce_compiles
-        from numba import njit
-
-        announce_compiles("snooker visualiser", 1.0, __name__)
-        _K["fill"] = njit(_SIG, cache=True, nogil=True)(_fill)
-    _K["fill"](img, np.ascontiguousarray(xy, dtype=np.float64), np.uint8(value))
+    _fill(img, np.ascontiguousarray(xy, dtype=np.float64), np.uint8(value))

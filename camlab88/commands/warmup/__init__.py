@@ -5,9 +5,8 @@ base.kernel_notice). ``warm-up`` does all of it at once instead — useful befor
 to an audience, or in CI so every test process loads the kernels from one cache. Each step
 is a group's own completion (every kernel of the group called once) or, for groups without
 one, a small command run in a scratch directory, in this process, so the kernels land in the
-same cache every later command reads. The last step builds the ahead-of-time extensions of
-the modules listed in ``aot.py`` (a command that loads only those never imports numba);
-without a C compiler it says so and the JIT-compiled kernels are used.
+same cache every later command reads (numba's own, ``cache=True``: ``NUMBA_CACHE_DIR``, which
+the command sets per user).
 """
 
 from __future__ import annotations
@@ -40,34 +39,18 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 
 
 def _run(args: argparse.Namespace) -> int:
-    import os
     import time
 
-    from camlab88.base import aot_load
-    from camlab88.commands.warmup.aot import build_step
-
     start = time.perf_counter()
-    total = len(STEPS) + 1
-    # The JIT steps fill numba's cache even where extensions exist: a process in which some
-    # kernel set is JIT-compiled runs them all so (base/kernel_set.py).
-    saved = os.environ.get(aot_load.OFF_VARIABLE)
-    os.environ[aot_load.OFF_VARIABLE] = "0"
-    try:
-        status = _jit_steps(total)
-    finally:
-        if saved is None:
-            os.environ.pop(aot_load.OFF_VARIABLE, None)
-        else:
-            os.environ[aot_load.OFF_VARIABLE] = saved
+    status = _steps(len(STEPS))
     if status:
         return status
-    build_step(total, total)
     print(f"camlab88 warm-up: every kernel compiled in {time.perf_counter() - start:.0f} s",
           file=sys.stderr)
     return 0
 
 
-def _jit_steps(total: int) -> int:
+def _steps(total: int) -> int:
     import contextlib
     import io
     import tempfile

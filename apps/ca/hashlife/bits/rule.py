@@ -15,16 +15,20 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from camlab88.apps.ca.hashlife.leaf import deterministic_reason, generation, order_matters, pack
+from camlab88.apps.ca.hashlife.kernels import (
+    KIND_LOOKUP,
+    KIND_TOTALISTIC,
+    LUT,
+    TERM,
+    TERM_ANY,
+    TERM_BIRTH,
+    TERM_SURVIVAL,
+    generation,
+)
+from camlab88.apps.ca.hashlife.leaf import deterministic_reason, order_matters, pack
 from camlab88.apps.ca.rules import RuleSet
 
 CENTRE = 4
-# The kernels' table (uint64): kind, number of terms, each term (kind, then the four bits of
-# its block sum as all-0 or all-1 masks, so the kernel compares by XOR), then the lookup.
-KIND_TOTALISTIC, KIND_LOOKUP = 0, 1
-TERM_ANY, TERM_BIRTH, TERM_SURVIVAL = 0, 1, 2
-TERM = 5  # words per term
-LUT = 64
 
 
 @dataclass(frozen=True)

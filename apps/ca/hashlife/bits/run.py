@@ -8,11 +8,11 @@ from dataclasses import dataclass
 
 import numpy as np
 from camlab88.apps.ca.hashlife import cells
-from camlab88.apps.ca.hashlife.bits.leaves import PLANES
 from camlab88.apps.ca.hashlife.bits.rule import BinaryRule, binary_rule
 from camlab88.apps.ca.hashlife.bits.window import grid_to_tree
+from camlab88.apps.ca.hashlife.kernels import BIT_LEAF_LEVEL, PLANES
 from camlab88.apps.ca.hashlife.run import StoreRun
-from camlab88.apps.ca.hashlife.store import BIT_LEAF_LEVEL, Store
+from camlab88.apps.ca.hashlife.store import Store
 from camlab88.apps.ca.rules import RuleSet
 
 MAX_JUMP = 1 << 15  # generations: the level-17 frame's centre after at most 2**15
