@@ -20,7 +20,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 # The recursion compiles only inside a kind of leaf's entry: that kind's leaf kernel
 # announces it (the runs below see the notice); inlined kernels never compile alone.
-INSIDE = {"step_bits", "step_values", "recursion_bits", "recursion_values"}
+INSIDE = {"step_bits", "step_values"}
 
 
 def test_every_hashlife_kernel_is_in_an_announced_group() -> None:
@@ -119,7 +119,7 @@ def test_each_kind_of_leaf_compiles_once_whichever_runs_first(tmp_path: Path) ->
     assert "compiling" not in notices
     compiled, notices = _compiled_run(LIFE_RUN, cache)
     assert {m for m in compiled if m.startswith(HL)} >= {
-        HL + "step_bits", HL + "recursion_bits", HL + "advance_bits", HL + "grid_leaves"}
+        HL + "step_bits", HL + "advance_bits", HL + "grid_leaves"}
     assert not {m for m in compiled if m.startswith(HL)} & {
         HL + n for n in ("join", "towers", "count", "occupy", "levels", "advance_values")}
     assert [line for line in notices.splitlines() if "compiling" in line] == [

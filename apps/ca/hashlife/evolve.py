@@ -10,15 +10,16 @@ per node besides the full-speed result.  Nodes of the base level run the leaf ke
 directly: ``advance_bits`` (binary rules: four 16 x 16 bit leaves, up to 8 generations by
 bit operations) or ``advance_values`` (any rules: the rules on a grid of life-form values).
 The recursion is compiled once per kind of leaf, each copy calling its own leaf kernel
-(``recursion_bits``, ``recursion_values``, entered by ``step_bits``, ``step_values``), so a
+(``step_bits``, ``step_values``), so a
 run compiles its own leaf kernel only (a run-time branch compiled both: 2 s more of a first
 run's compile).  Every kernel returns -1 when a table is full.  The kernels are in
 ``kernels`` (apps/ca/hashlife/kernels.py), with every other HashLife kernel.
 
 Written for numba's costs as measured: compiled without numba's runtime (``_nrt=False``:
 nothing here allocates), so array arguments are not atomically reference counted per call
-(that was half the time of small jumps); the tables handed on by address, not as arrays
-(``publish``: 3 arguments a call, not 57); self-recursive only (a cached mutually
+(that was half the time of small jumps); the tables passed as arrays (nine; their
+addresses in one array took 3 arguments, not 57, and were 5-10 % faster, but built arrays
+owning nothing inside the kernels: docs/perf/ca.md); self-recursive only (a cached mutually
 recursive pair crashed the next process); the nine and four squares in a frame per level
 in ``meta`` (no heap allocation per call, no indexed tuple); unsigned indices where numba
 would test for negative ones; memoised results looked up before calling.  The module

@@ -17,9 +17,7 @@ from types import FunctionType
 from typing import Any
 
 import numpy as np
-from numba import njit, types
-from numba.core import cgutils
-from numba.extending import intrinsic
+from numba import njit
 
 # ---- the store's layout (store.py) ----
 TOP_LEVEL = 17  # the 65536-square plane is level 16; stepping frames it in a level-17 node
@@ -35,13 +33,7 @@ EMPTY_LEAF, WALL_LEAF = 1, 2  # of bit leaves
 N_NODES, N_LEAVES, LEAF, BASE, SHIFT, REACH, HAS_WALL = range(7)
 EMPTY = 7
 WALL_AT = EMPTY + TOP_LEVEL + 1
-# The tables' addresses and sizes, written by the kernel Python calls (``publish``) for the
-# kernels it calls to find them: nodes, slots, leaves, leaf slots, rules, scratch; node and
-# leaf rows, rule words, scratch rows and columns.
-AT = WALL_AT + TOP_LEVEL + 1
-AT_NODES, AT_SLOTS, AT_LEAVES, AT_LSLOTS, AT_RULES, AT_SCRATCH = range(AT, AT + 6)
-N_ROWS, L_ROWS, R_WORDS, G_ROWS, G_COLUMNS = range(AT + 6, AT + 11)
-META = AT + 11
+META = WALL_AT + TOP_LEVEL + 1
 # Then one frame per level for the recursion's nine and four squares and their results
 # (a level's call only calls the level below, so one frame a level suffices).
 FRAMES, FRAME = META, 32
@@ -74,75 +66,6 @@ NODE_TABLE, LEAF_TABLE = 1, 2  # rehash's ``which``: bits of the tables to enter
 # Odd multipliers of the leaf hash's eight words (splitmix, xxhash, murmur constants).
 _LEAF_K = (0x9E3779B97F4A7C15, 0xC2B2AE3D27D4EB4F, 0x165667B19E3779F9, 0x85EBCA77C2B2AE63,
            0x27D4EB2F165667C5, 0xFF51AFD7ED558CCD, 0xC4CEB9FE1A85EC53, 0xD6E8FEB86659FD93)
-
-
-# ---- tables by address ----
-# numba passes each array argument of a compiled call as its struct's 7 to 9 fields, and a
-# call of the recursion took 9 arrays: 57 arguments, most of them pushed on the stack every
-# call (13 ns a call with 7 arrays against 2 with two addresses, measured).  So the kernel
-# Python calls writes its arrays' addresses and sizes into meta (``publish``) and the kernels
-# it calls rebuild them from meta's address (``node_tables``, ``all_tables``) as arrays that
-# own nothing: valid only while that first call runs, which keeps the real arrays alive.
-# tests/kernel_load/test_raw_views.py: no kernel hands one back to Python.
-
-
-@intrinsic
-def address(typingctx: Any, array: types.Type) -> Any:
-    """The address of a C-ordered array's data, as an int64."""
-    if not isinstance(array, types.Array) or array.layout != "C":
-        return None
-
-    def codegen(context, builder, signature, args):
-        data = context.make_array(signature.args[0])(context, builder, args[0]).data
-        return builder.ptrtoint(data, cgutils.intp_t)
-
-    return types.int64(array), codegen
-
-
-def _array_at(context, builder, array_type, at, dims):
-    """A numba array of ``array_type`` (C order) at address ``at``, owning nothing."""
-    item = context.get_data_type(array_type.dtype)
-    size = context.get_abi_sizeof(item)
-    data = builder.inttoptr(at, item.as_pointer())
-    strides, stride = [], context.get_constant(types.intp, size)
-    for dim in reversed(dims[1:]):
-        strides.insert(0, stride)
-        stride = builder.mul(stride, dim)
-    strides.insert(0, stride)
-    array = context.make_array(array_type)(context, builder)
-    context.populate_array(array, data=data, shape=cgutils.pack_array(builder, dims),
-                           strides=cgutils.pack_array(builder, strides),
-                           itemsize=context.get_constant(types.intp, size), meminfo=None)
-    return array._getvalue()
-
-
-@intrinsic
-def matrix_at(typingctx: Any, at: types.Type, rows: types.Type, columns: types.Type,
-              like: types.Type) -> Any:
-    """The C-ordered ``rows`` x ``columns`` array of ``like``'s type at address ``at``."""
-    if not all(isinstance(t, types.Integer) for t in (at, rows, columns, like)):
-        return None
-    array_type = types.Array(like, 2, "C")
-
-    def codegen(context, builder, signature, args):
-        dims = [context.cast(builder, args[i], signature.args[i], types.intp) for i in (1, 2)]
-        return _array_at(context, builder, array_type, args[0], dims)
-
-    return array_type(at, rows, columns, like), codegen
-
-
-@intrinsic
-def vector_at(typingctx: Any, at: types.Type, n: types.Type, like: types.Type) -> Any:
-    """The array of ``n`` values of ``like``'s type at address ``at``."""
-    if not all(isinstance(t, types.Integer) for t in (at, n, like)):
-        return None
-    array_type = types.Array(like, 1, "C")
-
-    def codegen(context, builder, signature, args):
-        dims = [context.cast(builder, args[1], signature.args[1], types.intp)]
-        return _array_at(context, builder, array_type, args[0], dims)
-
-    return array_type(at, n, like), codegen
 
 
 # ---- the kernels: the store's, the rules', the bit leaves', the value leaves', the tree's
@@ -274,36 +197,10 @@ def towers(words, nodes, slots, leaves, lslots, meta):
     return 0
 
 
-@njit(cache=True, inline="always")
-def publish(nodes, slots, leaves, lslots, meta, R, G):
-    """Write the tables' (and the rules' and scratch's) addresses and sizes into ``meta``;
-    its own address, which is what the kernels called with it take."""
-    meta[AT_NODES], meta[AT_SLOTS] = address(nodes), address(slots)
-    meta[AT_LEAVES], meta[AT_LSLOTS] = address(leaves), address(lslots)
-    meta[AT_RULES], meta[AT_SCRATCH] = address(R), address(G)
-    meta[N_ROWS], meta[L_ROWS], meta[R_WORDS] = nodes.shape[0], leaves.shape[0], R.shape[0]
-    meta[G_ROWS], meta[G_COLUMNS] = G.shape[0], G.shape[1]
-    return address(meta)
 
 
-@njit(cache=True, inline="always")
-def node_tables(at):
-    """(nodes, slots, meta) from meta's address (``publish``)."""
-    meta = vector_at(at, META_SIZE, np.int64(0))
-    n = meta[N_ROWS]
-    return (matrix_at(meta[AT_NODES], n, ROW, np.int32(0)),
-            vector_at(meta[AT_SLOTS], 2 * n, np.int32(0)), meta)
 
 
-@njit(cache=True, inline="always")
-def all_tables(at):
-    """(nodes, slots, leaves, lslots, meta, R, G) from meta's address (``publish``)."""
-    nodes, slots, meta = node_tables(at)
-    m = meta[L_ROWS]
-    return (nodes, slots, matrix_at(meta[AT_LEAVES], m, 8, np.uint64(0)),
-            vector_at(meta[AT_LSLOTS], 2 * m, np.int32(0)), meta,
-            vector_at(meta[AT_RULES], meta[R_WORDS], np.uint64(0)),
-            matrix_at(meta[AT_SCRATCH], meta[G_ROWS], meta[G_COLUMNS], np.uint64(0)))
 
 
 M32 = 0xFFFFFFFF
@@ -526,11 +423,9 @@ def lookup(s, d, lo, hi, R, G):
 # One copy of each kernel's pass (not one per kind of wall or of pair): a first compile's
 # time grows with every inlined copy.
 @njit(cache=True, _nrt=False)
-def advance_bits(node, gens, at):
+def advance_bits(node, gens, nodes, slots, leaves, lslots, meta, R, G):
     """The centre leaf of level-5 ``node`` after ``gens`` (0..8) generations; -1 if the
-    leaf table is full.  ``at``: the address of the store's meta with the tables' addresses
-    (``publish``)."""
-    nodes, _, leaves, lslots, meta, R, G = all_tables(at)
+    leaf table is full.  (The arguments are the recursion's; ``slots`` is not needed.)"""
     walls = meta[HAS_WALL] != 0  # no wall anywhere until a bounded plane was framed
     load_bits(np.int64(nodes[node, 0]), np.int64(nodes[node, 1]), np.int64(nodes[node, 2]),
          np.int64(nodes[node, 3]), leaves, walls, G)
@@ -608,10 +503,8 @@ def from_grid(G, p, y0, x0, level, nodes, slots, meta):
 
 
 @njit(cache=True, _nrt=False)
-def advance_values(node, T, at):
-    """Centre of base-level ``node`` after T generations (0: its centre as it is).  ``at``:
-    the address of the store's meta with the tables' addresses (``publish``)."""
-    nodes, slots, _, _, meta, R, G = all_tables(at)
+def advance_values(node, T, nodes, slots, leaves, lslots, meta, R, G):
+    """Centre of base-level ``node`` after T generations (0: its centre as it is)."""
     level = np.int64(nodes[node, LEVEL])
     n = np.int64(1) << level
     r = meta[REACH]
@@ -1066,10 +959,10 @@ def _known(n, T, level, nodes, meta):
     return np.int64(-2)
 
 
-def _leaf_step(node, T, at):
+def _leaf_step(node, T, nodes, slots, leaves, lslots, meta, R, G):
     """The leaf kernel each copy of ``_recursion`` calls in its place (``advance_bits`` or
     ``advance_values``): the centre of base-level ``node`` after T generations (0: its
-    centre as it is); ``at``: the tables' addresses."""
+    centre as it is)."""
     raise NotImplementedError("bound per kind of leaf by _one_kind")
 
 
@@ -1077,17 +970,17 @@ def _leaf_step(node, T, at):
 # arguments are not reference counted — perf showed those atomic counts taking half the time
 # of small jumps (gun 1.6 -> 0.7 ms, spacefiller 1.7 -> 0.8, puffer 95 -> 77).  A template,
 # compiled once per kind of leaf (below), ``_leaf_step`` bound to its leaf kernel.
-def _recursion(node, T, at):
+def _recursion(node, T, nodes, slots, leaves, lslots, meta, R, G):
     """Centre of ``node`` after T generations (1 <= T <= 2**(level - 2 - s)); -1 if a table
-    is full.  ``at``: the address of the store's meta holding the tables' addresses
-    (``_entry``): three arguments a call instead of 57 (9 arrays)."""
-    nodes, slots, meta = node_tables(at)
+    is full.  The tables are arrays, nine arguments (numba passes each as its struct's 7 to
+    9 fields): an int64 array of their addresses, rebuilt inside as arrays owning nothing,
+    took 3 arguments and was 5-10 % faster, but an ownerless array must never escape."""
     k = np.int64(nodes[np.uint64(node), LEVEL])
     found = _known(node, T, k, nodes, meta)  # (the recursion's callers looked already:
     if found != -2:  # this is for the first call, saving Python a kernel of its own)
         return found
     if k == meta[BASE]:
-        out = _leaf_step(node, T, at)
+        out = _leaf_step(node, T, nodes, slots, leaves, lslots, meta, R, G)
     else:
         h = k - 1
         t2 = min(T, np.int64(1) << (k - 3 - meta[SHIFT]))  # the four's: full speed if it can
@@ -1120,9 +1013,9 @@ def _recursion(node, T, at):
             if t1 > 0:
                 v = _known(n, t1, h, nodes, meta)
                 if v == -2:
-                    v = _recursion(n, t1, at)
+                    v = _recursion(n, t1, nodes, slots, leaves, lslots, meta, R, G)
             elif h == meta[LEAF] + 1:  # quadrants of leaves: the leaf kernel, 0 generations
-                v = _leaf_step(n, np.int64(0), at)
+                v = _leaf_step(n, np.int64(0), nodes, slots, leaves, lslots, meta, R, G)
             else:
                 v = _centre(n, h, nodes, slots, meta)
             if v < 0:
@@ -1137,7 +1030,7 @@ def _recursion(node, T, at):
                 return np.int64(-1)
             v = _known(n, t2, h, nodes, meta)
             if v == -2:
-                v = _recursion(n, t2, at)
+                v = _recursion(n, t2, nodes, slots, leaves, lslots, meta, R, G)
             if v < 0:
                 return np.int64(-1)
             fr[22 + i] = v
@@ -1149,11 +1042,6 @@ def _recursion(node, T, at):
         nodes[u, RES] = out
         nodes[u, RESJ] = T + 1
     return out
-
-
-def _entry(node, T, nodes, slots, leaves, lslots, meta, R, G):
-    """Centre of ``node`` after T generations; -1 if a table is full."""
-    return _recursion(node, T, publish(nodes, slots, leaves, lslots, meta, R, G))
 
 
 def _one_kind(template: Any, name: str, **bindings: Any) -> Any:
@@ -1170,7 +1058,5 @@ def _one_kind(template: Any, name: str, **bindings: Any) -> Any:
     return kernel
 
 
-recursion_bits = _one_kind(_recursion, "recursion_bits", _leaf_step=advance_bits)
-recursion_values = _one_kind(_recursion, "recursion_values", _leaf_step=advance_values)
-step_bits = _one_kind(_entry, "step_bits", _recursion=recursion_bits)
-step_values = _one_kind(_entry, "step_values", _recursion=recursion_values)
+step_bits = _one_kind(_recursion, "step_bits", _leaf_step=advance_bits)
+step_values = _one_kind(_recursion, "step_values", _leaf_step=advance_values)

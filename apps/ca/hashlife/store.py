@@ -18,9 +18,9 @@ The quadrants of the lowest nodes (level ``leaf + 1``) are leaf ids, by kind of 
 
 Id 0 of either table is never a node or table leaf (0 marks an empty hash slot).  ``meta``
 packs the counts, the leaf geometry, the empty and wall towers and a flag, so kernels take
-one array for them (numba reference-counts every array argument of every call); then the
-tables' addresses and sizes (``publish``: kernels the recursion calls find the tables from
-meta's address alone) and a frame per level for the recursion (evolve.py).  Kernels
+one array for them (numba reference-counts every array argument of every call); then a
+frame per level for the recursion (evolve.py).  The layout's constants and every kernel
+are in kernels.py.  Kernels
 return -1 when a table is full; the caller grows it or collects garbage and retries.
 """
 
