@@ -10,9 +10,12 @@ import sys
 from pathlib import Path
 
 import pytest
+
+from camlab88.commands.figures import FIGURES_DIR
+from camlab88.figure_catalogue import CatalogueError, by_number, markdown_table, parse
 from camlab88.protocols.session import read
 
-from camlab88.commands.figures import CAPTIONS, FIGURES_DIR
+CAPTIONS = by_number()
 
 ROOT = Path(__file__).resolve().parents[1]
 SHIPPED = sorted(FIGURES_DIR.glob("fig-*.session"))
@@ -73,3 +76,29 @@ def test_figures_lists_and_writes_a_png_headless(tmp_path: Path) -> None:
     assert "no display; running headless" in r.stderr
     r = _cli("figures", "9.9", cwd=tmp_path)
     assert r.returncode == 2 and "no screen figure '9.9'" in r.stderr
+
+
+def test_docs_table_is_the_catalogues() -> None:
+    """docs/figures.md's table is made from camlab88/figure_catalogue.toml (make_figures.py
+    --docs): the one place the figures' captions, sections and differences live."""
+    doc = (ROOT / "docs" / "figures.md").read_text(encoding="utf-8")
+    assert markdown_table() in doc, "run: python examples/figures/make_figures.py --docs"
+
+
+def test_catalogue_entries_are_whole() -> None:
+    for fig in CAPTIONS.values():
+        assert fig.caption and fig.section and fig.shows, fig.number
+        assert (fig.verdict == "agrees") == (fig.differs == ""), fig.number
+
+
+@pytest.mark.parametrize(("text", "says"), [
+    ("version = 2\n", "version 2"),
+    ("version = 1\n[[figure]]\nnumber = \"1.1\"\n", "figure entry 1"),
+    ("version = 1\n[[figure]]\nnumber = \"1.1\"\nsection = \"1\"\ncaption = \"c\"\n"
+     "short = \"s\"\nverdict = \"agrees\"\nshows = \"x\"\ndiffers = \"but\"\n",
+     "figure 1.1: say what differs"),
+    ("version = [", "cat.toml:"),
+])
+def test_damaged_catalogue_is_named(text: str, says: str) -> None:
+    with pytest.raises(CatalogueError, match=says.replace(".", r"\.")):
+        parse(text, "cat.toml")

@@ -9,6 +9,8 @@ holds plain file names and its inputs by content.
 
     python examples/figures/make_figures.py            # every figure
     python examples/figures/make_figures.py 7.2 6.5    # some
+    python examples/figures/make_figures.py --docs     # docs/figures.md's table, from
+                                                       # camlab88/figure_catalogue.toml
 
 ``camlab88 figures`` lists them, ``camlab88 figures 7.2`` replays one; tests/test_figures.py
 replays every one with ``--check``.
@@ -436,7 +438,26 @@ def make(number: str) -> Path:
     return out
 
 
+DOCS = ROOT / "docs" / "figures.md"
+TABLE_START, TABLE_END = "<!-- table: make_figures.py --docs -->", "<!-- end of table -->"
+
+
+def write_docs() -> None:
+    """Put the catalogue's table between docs/figures.md's markers."""
+    from camlab88.base.atomicfile import write_atomic
+    from camlab88.figure_catalogue import markdown_table
+
+    text = DOCS.read_text(encoding="utf-8")
+    head, rest = text.split(TABLE_START, 1)
+    tail = rest.split(TABLE_END, 1)[1]
+    write_atomic(DOCS, f"{head}{TABLE_START}\n{markdown_table()}{TABLE_END}{tail}")
+
+
 def main(argv: list[str]) -> int:
+    if argv == ["--docs"]:
+        write_docs()
+        print(f"{DOCS.relative_to(ROOT)}: the table written from the catalogue")
+        return 0
     wanted = argv or list(FIGURES)
     unknown = [n for n in wanted if n not in FIGURES]
     if unknown:

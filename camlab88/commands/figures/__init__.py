@@ -4,7 +4,8 @@ Without a number: the list, each with the thesis's caption (shortened) and wheth
 recording ships. With one (``camlab88 figures 6.5``): the recording ``examples/figures/
 fig-6.5.session`` replayed, in a window, or headless (``--headless``, or no display) to its
 last screen written as a PNG (``fig-6.5.png``, or ``--screenshot PNG``). The recordings are
-made by ``examples/figures/make_figures.py``; docs/figures.md is the gallery.
+made by ``examples/figures/make_figures.py``; the figures' captions, sections and what
+differs live in camlab88/figure_catalogue.toml; docs/figures.md is the gallery.
 """
 
 from __future__ import annotations
@@ -13,31 +14,13 @@ import argparse
 from pathlib import Path
 
 from camlab88.commandspec import add_command
+from camlab88.figure_catalogue import by_number
+from camlab88.figure_catalogue import figures as catalogue
 from camlab88.runopts import fail
 
 COMMAND = "camlab88 figures"
 FIGURES_DIR = Path(__file__).resolve().parents[3] / "examples" / "figures"
 
-# The thesis's screen figures and their captions (shortened where long).
-CAPTIONS: dict[str, str] = {
-    "3.1": "KAS screen layout",
-    "3.2": "KAS in edit mode: dull lines unaltered, bright ones moved, purple ones where they were",
-    "3.6": "a sample path stretched and reflected to fit between each pair of points",
-    "3.7": "the four working areas used during image painting, at quarter size",
-    "3.8": "a simple example of painting an outline image",
-    "6.1": "the situation ready for the start of a game of snooker",
-    "6.5": "screen layout as the snooker program is running: the orange menu",
-    "6.6": "setting the velocity of a ball",
-    "6.7": "images produced during camera definition",
-    "6.8": "demonstration of anti-aliasing",
-    "6.9": "shaded image of a snooker table: multiple highlights and shadows under the balls",
-    "7.1": "examples of patterns from the Game of Life",
-    "7.2": "the evolution of a glider over five generations",
-    "7.3": "screen layout during editing, with the menu of editing methods",
-    "7.4": "Gosper glider guns from the Game of Life",
-    "7.5": "cellular automaton screen images at zoom 16 (with grid) and zoom 8 (without)",
-    "7.9": "a cellular automaton simulating a Turing machine recognising primes (testing 25)",
-}
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -51,9 +34,10 @@ def recording(number: str) -> Path:
 def figures(args: argparse.Namespace) -> int:
     if args.number is None:
         return _list()
-    if args.number not in CAPTIONS:
+    known = by_number()
+    if args.number not in known:
         return fail(COMMAND, f"no screen figure {args.number!r} (figures: "
-                             f"{', '.join(CAPTIONS)})")
+                             f"{', '.join(known)})")
     path = recording(args.number)
     if not path.is_file():
         return fail(COMMAND, f"figure {args.number} has no recording yet ({path} is missing)")
@@ -61,9 +45,10 @@ def figures(args: argparse.Namespace) -> int:
 
 
 def _list() -> int:
-    for number, caption in CAPTIONS.items():
-        mark = "" if recording(number).is_file() else "   (not recorded yet)"
-        print(f"fig {number:<4} {caption}{mark}")
+    for fig in catalogue():
+        mark = "" if recording(fig.number).is_file() else "   (not recorded yet)"
+        differs = "" if fig.verdict == "agrees" else f"   [{fig.verdict}]"
+        print(f"fig {fig.number:<4} {fig.section_label:<11} {fig.short}{differs}{mark}")
     print(f"\n`{COMMAND} N` replays one (recordings in {FIGURES_DIR})")
     return 0
 
@@ -87,5 +72,5 @@ def _replay(args: argparse.Namespace, path: Path) -> int:
         return fail(COMMAND, f"{path}: the replay ended with exit status {status}: "
                     f"{said.strip()}", 1)
     if shot is not None:
-        print(f"{COMMAND}: figure {args.number} ({CAPTIONS[args.number]}) -> {shot}")
+        print(f"{COMMAND}: figure {args.number} ({by_number()[args.number].short}) -> {shot}")
     return 0
