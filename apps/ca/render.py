@@ -33,6 +33,8 @@ def palette(rules: RuleSet | None, count: int) -> np.ndarray:
     out = np.zeros((count + 1, 3), np.uint8)
     for t in range(1, count + 1):
         form = rules.forms.get(t) if rules is not None else None
+        if form is not None and form.invisible:
+            continue  # drawn as a dead cell (section 7.4.2's invisible cells)
         out[t] = form.colour if form is not None and form.colour else default_colour(t)
     return out
 
@@ -60,7 +62,7 @@ def render(engine: Engine, rect: Rect, zoom: int = 4, monochrome: bool = False,
     top = int(ts.max()) if ts.size else 0
     pal = palette(engine.rules, max(top, 1))
     if monochrome:
-        pal[1:] = 255
+        pal[1:][pal[1:].any(axis=1)] = 255  # white, but invisible forms stay dead-black
     cells = np.zeros((rect.height, rect.width, 3), np.uint8)
     cells[(ys - rect.y0) % SIDE, (xs - rect.x0) % SIDE] = pal[ts]  # rect may cross the seam
     img = np.repeat(np.repeat(cells, zoom, axis=0), zoom, axis=1)

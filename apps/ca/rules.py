@@ -1,10 +1,12 @@
 """The rule language of thesis figures 7.6 and 7.8, parsed into a :class:`RuleSet`.
 
 A rule file has two parts separated by ``$``.  The message part gives, for each life-form,
-its number, its message extents, an optional ``COLOUR rr gg bb``, an optional (reconstructed,
-section 8.1) ``BROADCAST op`` and the message grid; the interpretation part maps the value in
-a cell's 32-bit message area to the life-form it holds next generation.  The format is free:
-tokens may be split over lines at will; ``//`` starts a comment.  See docs/ca.md.
+its number, its message extents, an optional ``COLOUR rr gg bb`` or ``INVISIBLE`` (drawn as a
+dead cell outside editing: section 7.4.2's "invisible cells", reconstructed), an optional
+(reconstructed, section 8.1) ``BROADCAST op`` and the message grid; the interpretation part
+maps the value in a cell's 32-bit message area to the life-form it holds next generation.
+The format is free: tokens may be split over lines at will; ``//`` starts a comment. See
+docs/ca.md.
 """
 
 from __future__ import annotations
@@ -69,6 +71,7 @@ class LifeForm:
     messages: tuple[Message, ...]
     colour: tuple[int, int, int] | None = None
     broadcast: tuple[int, int] | None = None  # (op, value) sent to all receiving cells
+    invisible: bool = False  # drawn as a dead cell (but in editing, where it must be seen)
 
 
 @dataclass(frozen=True)
@@ -250,10 +253,16 @@ class _Parser:
                              signed=True) for _ in range(4)]
         colour = None
         broadcast = None
+        invisible = False
         while (tok := self.peek()) is not None and tok.text.upper() in ("COLOUR", "COLOR",
-                                                                         "BROADCAST"):
+                                                                         "BROADCAST", "INVISIBLE"):
             self.pos += 1
-            if tok.text.upper() == "BROADCAST":
+            if tok.text.upper() == "INVISIBLE":
+                if invisible or colour is not None:
+                    raise self.error(tok, "INVISIBLE given twice, or with COLOUR, for one "
+                                          "life-form")
+                invisible = True
+            elif tok.text.upper() == "BROADCAST":
                 if broadcast is not None:
                     raise self.error(tok, "BROADCAST given twice for one life-form")
                 op_tok = self.take("a broadcast message such as '|#X100'")
@@ -262,8 +271,9 @@ class _Parser:
                                              f"'^n', found '{op_tok.text}'")
                 broadcast = self.entry(op_tok)
             else:
-                if colour is not None:
-                    raise self.error(tok, "COLOUR given twice for one life-form")
+                if colour is not None or invisible:
+                    raise self.error(tok, "COLOUR given twice, or with INVISIBLE, for one "
+                                          "life-form")
                 colour = tuple(self.hex_byte() for _ in range(3))
         grid_start = self.peek()
         entries: list[tuple[int, int] | None] = []
@@ -280,7 +290,8 @@ class _Parser:
         for i, e in enumerate(entries):
             if e is not None:
                 messages.append(Message(top + i // cols, left + i % cols, e[0], e[1]))
-        return LifeForm(number, top, left, rows, cols, tuple(messages), colour, broadcast)
+        return LifeForm(number, top, left, rows, cols, tuple(messages), colour, broadcast,
+                        invisible)
 
     def hex_byte(self) -> int:
         tok = self.take("three two-digit hexadecimal colour components (e.g. 'COLOUR 00 FF 00')")

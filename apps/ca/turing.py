@@ -234,7 +234,7 @@ def rules_text() -> str:
            "2 0 3 0 0 COLOUR 40 80 FF  // end marker (top row only)",
            f"|#X{MARK_SURVIVE:X}", ".", ".", f"|{READ_MARK}", ""]
     cross = FIRST_HEAD + len(actions)
-    out += [f"{cross} 0 0 0 0 COLOUR 00 00 00  // the failure cross, invisible",
+    out += [f"{cross} 0 0 0 0 INVISIBLE  // the failure cross, hidden until 'not prime'",
             f"|#X{CROSS_HIDDEN:X}", "",
             f"{cross + 1} 1 1 1 1 COLOUR FF 00 00  // the failure cross, shown",
             f". |#X{CROSS_SPREAD:X} .",

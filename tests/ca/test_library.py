@@ -119,6 +119,36 @@ def test_failure_cross_is_hidden_until_the_head_runs_into_it() -> None:
     assert e.by_type()[shown] == 9 and hidden not in e.by_type()
 
 
+@pytest.mark.claim("§7.4.2: the failing head runs into \"an area of invisible cells in the "
+                   "form of a cross, which then became visible\"", measured="the cross's nine "
+                   "cells drawn in the dead colour (colour and monochrome pages, headless "
+                   "render) until the machine finds 9 not prime, then red",
+                   verdict="agrees")
+def test_failure_cross_is_drawn_dead_until_shown() -> None:
+    from camlab88.apps.ca import render
+    from camlab88.apps.ca.engine import Rect
+    from camlab88.apps.ca.program import colours
+
+    rules = parse_rules(turing.rules_text())
+    hidden, shown = turing.cross_forms()
+    for kind in ("colour", "mono"):
+        page = colours.page(kind, rules, grid=True)
+        assert page[1 + hidden] == page[1], kind  # index 1 is a dead cell
+        assert page[1 + shown] != page[1], kind
+    e = Engine(rules)
+    xs, ys, ts = turing.pattern(9).placed(500, 500)
+    e.set_cells(xs, ys, ts)
+    cross = Rect(492, 501, 496, 505)  # the cross, left of the machine on the head's row
+    for mono in (False, True):
+        assert not render.render(e, cross, zoom=4, monochrome=mono).any()
+    while shown not in e.by_type():
+        e.step()
+    e.step(4)
+    for mono in (False, True):
+        img = render.render(e, cross, zoom=4, monochrome=mono)
+        assert img.reshape(-1, 3).any(axis=1).sum() == 9 * 9  # nine cells of 3 x 3 pixels
+
+
 def test_turing_demo_patterns_25_and_23() -> None:
     forms = {t: v for v, t in turing.verdict_forms().items()}
     for name, want in (("primes_25", "NO"), ("primes_23", "YES")):

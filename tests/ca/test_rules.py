@@ -116,7 +116,9 @@ ERRORS = [
     ("1 0 0 0 0 +4294967296", 1, 11, "does not fit the 32-bit message area"),
     ("1 0 0 0 0 COLOUR 00 GG 00 +1", 1, 21, "hexadecimal colour component"),
     ("1 0 0 0 0 COLOUR 00 FF", 1, 23, "colour components"),
-    ("1 0 0 0 0 COLOUR 00 FF 00 COLOUR 00 FF 00 +1", 1, 27, "COLOUR given twice"),
+    ("1 0 0 0 0 COLOUR 00 FF 00 COLOUR 00 FF 00 +1", 1, 27, "COLOUR given twice, or with"),
+    ("1 0 0 0 0 COLOUR 00 FF 00 INVISIBLE +1", 1, 27, "INVISIBLE given twice, or with COLOUR"),
+    ("1 0 0 0 0 INVISIBLE COLOUR 00 FF 00 +1", 1, 21, "COLOUR given twice, or with INVISIBLE"),
     ("1 0 0 0 0 BROADCAST 5 +1", 1, 21, "expected a broadcast message"),
     ("1 0 0 0 0 BROADCAST", 1, 20, "expected a broadcast message"),
     ("1 0 0 0 0 BROADCAST |1 BROADCAST |2 +1", 1, 24, "BROADCAST given twice"),
@@ -161,3 +163,9 @@ def test_any_text_parses_or_raises_rule_error(text: str) -> None:
         parse_rules(text)
     except RuleError as err:
         assert err.line >= 1 and err.column >= 1
+
+
+def test_invisible_lifeform_parses() -> None:
+    rules = parse_rules("1 0 0 0 0 invisible |1\n2 0 0 0 0 |1\n$\n1 1\n")
+    assert rules.forms[1].invisible and rules.forms[1].colour is None
+    assert not rules.forms[2].invisible

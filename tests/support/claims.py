@@ -191,7 +191,9 @@ def collect() -> list[Claim]:
     """The marked tests' claims plus OTHERS; fails if a cited test no longer exists."""
     plugin = _Collector()
     files = sorted(set(marked_files()) | {n.split("::")[0] for n in cited_nodes()})
-    code = pytest.main(["--collect-only", "-q", "-p", "no:cacheprovider", *files],
+    # camlab88 is imported already (this module uses it), so pytest cannot rewrite its plugin
+    code = pytest.main(["--collect-only", "-q", "-p", "no:cacheprovider",
+                        "-W", "ignore::pytest.PytestAssertRewriteWarning", *files],
                        plugins=[plugin])
     if code not in (0, 5):
         raise SystemExit(f"collecting the marked tests failed (pytest exit {code})")

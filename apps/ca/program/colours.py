@@ -36,7 +36,9 @@ def page(kind: str, rules: RuleSet | None, grid: bool) -> list[str]:
     forms: list[tuple[int, int, int]] = []
     for t in range(1, FORMS + 1):
         form = rules.forms.get(t) if rules is not None else None
-        if kind == "mono":
+        if form is not None and form.invisible and kind in ("colour", "mono"):
+            forms.append(dead)  # section 7.4.2's invisible cells: only editing shows them
+        elif kind == "mono":
             forms.append((255, 255, 255))
         elif kind == "colour" and form is not None and form.colour is not None:
             forms.append(tuple(form.colour))
