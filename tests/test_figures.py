@@ -22,7 +22,8 @@ SHIPPED = sorted(FIGURES_DIR.glob("fig-*.session"))
 ALLOWED = {"--headless", "--events", "--record", "--pattern", "--rules", "--script",
            "--background", "--ops", "--baud", "--seed",
            "--out", "--no-library",  # kas path's --out: a replay writes it to its scratch
-           "--model", "--in", "--seconds"}  # sigma run fed a stream the maker computed
+           "--model", "--in", "--seconds",  # sigma run fed a stream the maker computed
+           "--inspect"}  # Appendix I fig. 2: the pad graph beside the screen
 
 
 def _cli(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
@@ -102,3 +103,15 @@ def test_catalogue_entries_are_whole() -> None:
 def test_damaged_catalogue_is_named(text: str, says: str) -> None:
     with pytest.raises(CatalogueError, match=says.replace(".", r"\.")):
         parse(text, "cat.toml")
+
+
+def test_appendix_i_figure_shows_the_pad_graph_beside_the_screen(tmp_path: Path) -> None:
+    """Appendix I fig. 2 is the screen and its pad structure: the figure's PNG is the
+    Rainbow's 768-pixel screen with the inspector's panel (the pad graph) to its right."""
+    from camlab88.emulator.inspect import PANEL_WIDTH
+    from PIL import Image
+
+    r = _cli("figures", "I.2", "--headless", "--screenshot", "i2.png", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    with Image.open(tmp_path / "i2.png") as img:
+        assert img.size == (768 + PANEL_WIDTH, 576)

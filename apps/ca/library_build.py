@@ -31,6 +31,7 @@ def generated() -> dict[str, str]:
     for n in (25, 23):
         files[f"primes_{n}.pat"] = format_native(turing.pattern(n))
     files["maze_demo.pat"] = format_native(maze.build()[0])
+    files["maze_corner.pat"] = format_native(maze.corner())
     files["grazing_soup.rle"] = format_rle(soup())
     try:
         from camlab88.apps.ca import circuits

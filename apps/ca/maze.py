@@ -67,3 +67,14 @@ def build(cols: int = 12, rows: int = 8, seed: int = 1987) -> tuple[Pattern, tup
     p = Pattern.from_cells(cells, ref=(0, 0), name=f"maze {cols}x{rows} seed {seed}",
                            rule="maze")
     return p, exit_cell, dist[exit_cell]
+
+
+def corner() -> Pattern:
+    """A runner beside a wall that turns a corner: figure 7.7's "movement of a maze runner
+    over four generations" (the runner's head reaches the corner at generation 2 and turns
+    down it at 3). The wall's top-left cell is the reference point."""
+    cells = [(x, 0, WALL) for x in range(7)] + [(6, y, WALL) for y in range(1, 7)]
+    cells += [(2, 1, TAIL), (3, 1, HEAD)]
+    return Pattern.from_cells(cells, ref=(0, 0), name="maze runner at a corner", rule="maze",
+                              comments=["figure 7.7: a runner (head red, tail blue) along a "
+                                        "wall (green) that turns a corner"])

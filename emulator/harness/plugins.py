@@ -37,7 +37,8 @@ class FrameWriter(Plugin):
 
 class Screenshot(Plugin):
     """``--screenshot PNG``: the screen when the run ends (the window's pixels if there is a
-    window, else the device frame), named on stderr."""
+    window, else the device frame, with the inspector's panel beside it when ``--inspect``
+    is on, as a window shows it), named on stderr."""
 
     def __init__(self, path: Path) -> None:
         self.path = Path(path)
@@ -48,8 +49,18 @@ class Screenshot(Plugin):
                 harness.window.show(harness.screen())
                 harness.window.screenshot(self.path)
             else:
-                write_png(harness.screen(), self.path)
+                write_png(_with_panel(harness, harness.screen()), self.path)
         print(f"{harness.options.command}: screenshot {self.path}", file=sys.stderr)
+
+
+def _with_panel(harness: Harness, frame: np.ndarray) -> np.ndarray:
+    """The frame with the inspector's panel on its right when --inspect asks for it."""
+    if not harness.options.controls.inspect:
+        return frame
+    from camlab88.emulator.inspect import panel_for
+
+    panel = panel_for(harness.target)
+    return frame if panel is None else np.concatenate([frame, panel(frame)], axis=1)
 
 
 @contextmanager

@@ -117,13 +117,54 @@ def fig_7_1() -> str:
                      "pattern.")
 
 
+def _side_by_side(pattern: str, rules: str, copies: int, apart: int,
+                  size: tuple[int, int]) -> _CA:
+    """``copies`` of ``pattern`` in a row, ``apart`` cells between reference points, each
+    advanced one generation more than the one on its left by "Advance area" (section 7.3.2:
+    the rules apply only inside a rectangle, the way the thesis puts two guns out of phase):
+    generations 0, 1, ... from left to right on one screen. ``size``: the pattern's cells."""
+    ca = _CA(pattern, rules)  # loaded with its reference point at the view's centre cell
+    ca.leave_editing()  # single step mode: nothing moves until the right button is clicked
+    (gx, gy), = {(x, y) for (_, x, y) in ca.program.session._loaded}
+    xs = [gx + apart * (k - copies // 2) for k in range(copies)]
+    ca.choose("Load pattern")
+    ca.type(pattern)
+    first = True
+    for x in xs:
+        if x == gx:
+            continue
+        ca.click_cell(x, gy)
+        if first:
+            ca.pick("identity")  # the orientation is asked once, for the first copy
+            first = False
+    ca.run("key escape\nframes 1")
+    w, h = size
+    for k in range(1, copies):  # copies k.. one generation on
+        ca.choose("Advance area")
+        ca.pick("Advance a rectangle")
+        ca.click_cell(xs[k] - 2, gy - 2)
+        ca.click_cell(xs[-1] + w + 1, gy + h + 1)
+        ca.run("click right 600 500\nframes 2")
+    ca.choose("Advance area")
+    ca.pick("Advance everywhere")
+    ca.run("frames 2")
+    return ca
+
+
 def fig_7_2() -> str:
-    ca = _CA("glider")
-    ca.leave_editing()
-    for _ in range(4):  # single step mode: the right button, one generation a click
-        ca.run("click right 600 500\nframes 3")
-    return ca.script("Figure 7.2: a glider over five generations (0 to 4), one right-button "
-                     "click a generation;\nit ends one cell on diagonally, in its first shape.")
+    ca = _side_by_side("glider", "life", 5, 8, (3, 3))
+    return ca.script("Figure 7.2: a glider over five generations side by side: five gliders "
+                     "loaded in a row, then\nAdvance area steps the 2nd to 5th one generation, "
+                     "the 3rd to 5th another, ...: generations\n0 to 4 from left to right, the "
+                     "fifth the first moved one cell diagonally.")
+
+
+def fig_7_7() -> str:
+    ca = _side_by_side("maze_corner", "maze", 4, 10, (7, 7))
+    return ca.script("Figure 7.7: the 'movement' of a maze runner over four generations, side "
+                     "by side: four copies\nof a runner (head red, tail blue) beside a wall "
+                     "(green) that turns a corner, the 2nd to 4th\nadvanced one generation, "
+                     "the 3rd and 4th another, the 4th a third: generations 0 to 3.")
 
 
 def fig_7_3() -> str:
@@ -142,8 +183,31 @@ def _after_auto(caption: str, frames: int, *pattern_and_rules: str) -> str:
 
 
 def fig_7_4() -> str:
-    return _after_auto("Figure 7.4: Gosper's glider gun in auto mode, a generation a frame, "
-                       "until four gliders are on their way.", 120, "gosper_gun")
+    """Section 7.3.2: "a monochrome display depicting two Gosper glider guns": a second gun
+    loaded below and left of the first (out of its gliders' way), zoom 8, Alter display's
+    Monochrome, then auto mode until each gun has sent several gliders on their way."""
+    ca = _CA("gosper_gun")
+    ca.leave_editing()
+    ca.choose("Zoom 8")
+    (gx, gy), = {(x, y) for (_, x, y) in ca.program.session._loaded}
+    ca.choose("Load pattern")
+    ca.type("gosper_gun")
+    ca.click_cell(gx - GUN_APART[0], gy + GUN_APART[1])
+    ca.pick("identity")
+    ca.run("key escape\nframes 1")
+    ca.choose("Centralise viewport")  # the two guns in the middle, room for their gliders
+    ca.choose("Alter display")
+    ca.pick("Monochrome")
+    ca.choose("Auto mode")
+    ca.run("frames 150")
+    ca.choose("Step mode")
+    ca.run("frames 2")
+    return ca.script("Figure 7.4: two Gosper glider guns on a monochrome display: a second gun "
+                     "loaded below and left\nof the first, zoom 8, Centralise viewport, Alter "
+                     "display: Monochrome, then auto mode,\na generation a frame.")
+
+
+GUN_APART = (24, 22)  # cells: the second gun clear of the first gun's stream of gliders
 
 
 def fig_7_5() -> str:
@@ -157,10 +221,20 @@ def fig_7_5() -> str:
                      "and zoom 8.")
 
 
+FIG_7_9_GENERATION = 12  # the copy on the third row, the divisor 3, the head at the left end
+
+
 def fig_7_9() -> str:
-    return _after_auto("Figure 7.9: the three-tape Turing machine testing 25: number, "
-                       "divisor, remainder and the head\nbelow, in auto mode, early on while "
-                       "the divisor is 3.", 16, "primes_25", "turing_primes")
+    """Section 7.4.2's moment: the number copied to the third row, 3 written between the
+    copies, the head back at the left end "ready to begin the main part" (generation 12)."""
+    ca = _CA("primes_25", "turing_primes")
+    ca.auto_then_step(FIG_7_9_GENERATION - 1)  # the click into step mode shows one more
+    ca.run("frames 2")
+    assert ca.program.session.generation == FIG_7_9_GENERATION, ca.program.session.generation
+    return ca.script("Figure 7.9: the three-tape Turing machine testing 25, at the figure's "
+                     "moment: the number on the\ntop row, its copy on the third, the divisor "
+                     "3 between them and the head back at the left\nend (generation 12); the "
+                     "failure cross on the head's row, left of the machine, is invisible.")
 
 
 # -- the snooker motion program: fixed scripts on its screen's coordinates ------------------
@@ -179,6 +253,14 @@ def fig_6_6() -> str:
             "frames 5\nmove 175 325\nwait 2\npress middle\nwait 2\nglide 175 400 25\nwait 2\n"
             "release middle\nwait 2\npress middle\nmove 250 318\nwait 1\nmove 330 310\n"
             "wait 1\nmove 440 300\nwait 3\n")
+
+
+def fig_I_2() -> str:
+    return ("# Appendix I, figure 2: a sample screen and its pad structure: the snooker program's "
+            "screen\n# (table pad, double-buffered ball pads, cursor pad, message areas) with "
+            "the green menu\n# open, and the inspector's pad graph from the screen down "
+            "beside it (--inspect).\n"
+            "frames 5\nmove 600 200\nwait 2\npress middle\nwait 4\n")
 
 
 # -- KAS on the Sigma: the editor's script language (screen inches, centre origin, y up) ----
@@ -397,11 +479,13 @@ FIGURES: dict[str, tuple[list[str], Callable[[], str] | None]] = {
     "6.1": (SNOOKER, fig_6_1),
     "6.5": (SNOOKER, fig_6_5),
     "6.6": (SNOOKER, fig_6_6),
+    "I.2": ([*SNOOKER, "--inspect"], fig_I_2),
     "7.1": ([*CA, "--pattern", "boat"], fig_7_1),
     "7.2": ([*CA, "--pattern", "glider"], fig_7_2),
     "7.3": ([*CA, "--pattern", "glider"], fig_7_3),
     "7.4": ([*CA, "--pattern", "gosper_gun"], fig_7_4),
     "7.5": ([*CA, "--pattern", "gosper_gun"], fig_7_5),
+    "7.7": ([*CA, "--rules", "maze", "--pattern", "maze_corner"], fig_7_7),
     "7.9": ([*CA, "--rules", "turing_primes", "--pattern", "primes_25"], fig_7_9),
 }
 
@@ -435,10 +519,15 @@ def make(number: str) -> Path:
                "--record", out.name]
         subprocess.run(cmd, cwd=tmp, env=env, check=True)
         shutil.copy(tmp / out.name, out)
+        # the gallery's picture: the recording's last screen, as `camlab88 figures N` shows it
+        subprocess.run([sys.executable, "-m", "camlab88", "figures", number, "--headless",
+                        "--screenshot", str(IMAGES / f"fig-{number}.png")], cwd=tmp, env=env,
+                       check=True)
     return out
 
 
 DOCS = ROOT / "docs" / "figures.md"
+IMAGES = ROOT / "docs" / "images" / "figures"
 TABLE_START, TABLE_END = "<!-- table: make_figures.py --docs -->", "<!-- end of table -->"
 
 

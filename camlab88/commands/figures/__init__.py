@@ -55,6 +55,7 @@ def _list() -> int:
 
 def _replay(args: argparse.Namespace, path: Path) -> int:
     from camlab88.emulator.harness import choose_headless
+    from camlab88.emulator.harness.control_options import Controls
     from camlab88.emulator.harness.replay import Replay
     from camlab88.protocols.session import SessionFileError, read
     from camlab88.session_replay import rerun
@@ -65,8 +66,11 @@ def _replay(args: argparse.Namespace, path: Path) -> int:
         return fail(COMMAND, exc)
     headless = choose_headless(COMMAND, args.headless, "writing the figure's last screen")
     shot = args.screenshot or (Path(f"fig-{args.number}.png") if headless else None)
+    # A figure recorded with --inspect (Appendix I's pad structure) is shown with the
+    # inspector's panel beside the screen: a replay otherwise takes only its own controls.
+    controls = Controls(inspect=True) if "--inspect" in rec.argv else None
     ctx = Replay(rec, headless=headless, period=False, check=False, frames=None,
-                 screenshot=None if shot is None else shot.resolve())
+                 screenshot=None if shot is None else shot.resolve(), controls=controls)
     status, said = rerun(ctx)
     if ctx.runs == 0 or status != 0:
         return fail(COMMAND, f"{path}: the replay ended with exit status {status}: "
