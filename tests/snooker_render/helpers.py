@@ -27,7 +27,7 @@ def overhead(frame: int = 1, focal: float = 24.0) -> View:
 
 
 def one_ball_scene(x: float, y: float, lights: object = None) -> Scene:
-    """The break's table with only the cue ball, at (x, y) in the default space."""
+    """The break's table with only the cue ball, at (x, y) in the table frame."""
     s = break_scene()
     centres = s.centres[:1].copy()
     on = np.zeros_like(s.on_table[:1])

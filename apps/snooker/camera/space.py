@@ -55,7 +55,7 @@ table_to_ccl = ccl_to_table
 
 
 def origin_shift(table: Table) -> np.ndarray:
-    """Table-coordinate position (metres) of the default space's origin."""
+    """Table-coordinate position (metres) of the table frame's origin (the table's centre)."""
     return np.array([table.length_m / 2.0, table.width_m / 2.0])
 
 
@@ -66,7 +66,7 @@ def on_table(table: Table, xy_m: np.ndarray) -> np.ndarray:
 
 
 def ball_centres_m(table: Table, xy_m: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(..., 22, 2) table-coordinate metres -> ((..., 22, 3) default-space centres, (..., 22)
+    """(..., 22, 2) table-coordinate metres -> ((..., 22, 3) table-frame centres, (..., 22)
     on-table mask).  Potted balls get centres too (outside the table) but mask False."""
     xy = np.asarray(xy_m, dtype=np.float64)
     out = np.empty((*xy.shape[:-1], 3), dtype=np.float64)
@@ -77,13 +77,13 @@ def ball_centres_m(table: Table, xy_m: np.ndarray) -> tuple[np.ndarray, np.ndarr
 
 def checkpoint_centres(checkpoint: Checkpoint,
                        table: Table | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Every frame of a checkpoint -> ((frames, 22, 3) default-space ball centres, (frames,
+    """Every frame of a checkpoint -> ((frames, 22, 3) table-frame ball centres, (frames,
     22) on-table mask).  Index 0 is the checkpoint's frame 1 (its initial positions)."""
     return ball_centres_m(table or Table(), to_metres(checkpoint.positions))
 
 
 def spots(table: Table) -> dict[str, np.ndarray]:
-    """Colour name -> its spot in the default space (on the cloth, z = 0)."""
+    """Colour name -> its spot in the table frame (on the cloth, z = 0)."""
     shift = origin_shift(table)
     out = {}
     for name, ball in COLOUR_BALLS.items():
@@ -93,7 +93,7 @@ def spots(table: Table) -> dict[str, np.ndarray]:
 
 
 def pockets(table: Table) -> dict[str, np.ndarray]:
-    """CCL pocket name ('top left', ...) -> its point in the default space (z = 0)."""
+    """CCL pocket name ('top left', ...) -> its point in the table frame (z = 0)."""
     hx, hy = table.length_m / 2.0, table.width_m / 2.0
     return {
         "bottom left": np.array([-hx, hy, 0.0]), "bottom right": np.array([-hx, -hy, 0.0]),

@@ -118,7 +118,7 @@ def read_views(path: str | os.PathLike[str]) -> list[View]:
 
 def views_text(views: Sequence[View], comments: Iterable[str] = ()) -> str:
     head = [f"# {' '.join(c.split())}" for c in comments]  # one line each
-    head.append("# " + " ".join(_FIELDS) + "  (metres in the default space; focal in mm)")
+    head.append("# " + " ".join(_FIELDS) + "  (metres in the table frame; focal in mm)")
     return "\n".join([*head, *(v.to_line() for v in views)]) + "\n"
 
 

@@ -1,7 +1,7 @@
 """Point lights close to the table (thesis 6.4.1: "four light bulbs in a canopy above it",
 no lights at infinity), and the lights file.
 
-Lights file (UTF-8 text; ``#`` starts a comment; one light a line, default-space metres)::
+Lights file (UTF-8 text; ``#`` starts a comment; one light a line, table-frame metres)::
 
     x y z [intensity | r g b]     # e.g.  0.9 0.4 1.0 0.3
 
@@ -31,7 +31,7 @@ class LightsError(ValueError):
 
 @dataclass(frozen=True, eq=False)
 class Lights:
-    """Positions (n, 3) in default space, colours (n, 3) linear, ambient (3,)."""
+    """Positions (n, 3) in the table frame, colours (n, 3) linear, ambient (3,)."""
 
     positions: np.ndarray
     colours: np.ndarray

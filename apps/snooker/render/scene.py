@@ -22,7 +22,7 @@ from camlab88.apps.snooker.table import Table
 
 @dataclass(frozen=True, eq=False)
 class Scene:
-    """centres (frames, 22, 3) default-space metres, on_table (frames, 22); index 0 is the
+    """centres (frames, 22, 3) table-frame metres, on_table (frames, 22); index 0 is the
     checkpoint's frame 1."""
 
     table: Table

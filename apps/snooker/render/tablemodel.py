@@ -1,10 +1,10 @@
-"""The billiard table as flat polygons in the camera's default space (thesis 6.4.1).
+"""The billiard table as flat polygons in the table frame (thesis 6.4.1).
 
-Default space: metres, origin the centre of the playing surface, +x towards the top cushion,
-+y towards the left cushion seen from baulk, +z up; the baize is z = 0. The playing surface,
-the pockets on it, the cushions (front face and top), the wooden surround (rail top and the
-apron below it: the "table edges") and six legs. Cushion and rail sizes are reconstructed
-(the thesis gives none; docs/fidelity/snooker.md).
+Table frame (camera/space.py): metres, origin the centre of the playing surface, +x towards
+the top cushion, +y towards the left cushion seen from baulk, +z up; the baize is z = 0. The
+playing surface, the pockets on it, the cushions (front face and top), the wooden surround
+(rail top and the apron below it: the "table edges") and six legs. Cushion and rail sizes
+are reconstructed (the thesis gives none; docs/fidelity/snooker.md).
 """
 
 from __future__ import annotations
