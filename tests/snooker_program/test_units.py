@@ -154,9 +154,29 @@ def test_menus_fit_on_the_screen_unabridged(rainbow):
         assert menu.width >= max(len(s) for s in menu.items) * 6
 
 
-def test_highlights_are_distinct_pastels():
-    cols = [menus.HIGHLIGHT[i] for i in dict.fromkeys(menus.GREEN_ITEMS + menus.ORANGE_ITEMS)]
-    assert len(set(cols)) == len(cols)
+def _rgb(c: str) -> list[int]:
+    return [int(c[k:k + 2], 16) for k in (1, 3, 5)]
+
+
+def test_highlights_are_distinct_pastels_but_the_velocity_green():
+    velocity = {menus.VELOCITY_MOUSE, menus.CUE_VELOCITY}  # the same command, two menus
+    items = [i for i in dict.fromkeys(menus.GREEN_ITEMS + menus.ORANGE_ITEMS)
+             if i not in velocity]
+    cols = [menus.HIGHLIGHT[i] for i in items]
+    assert len(set(cols)) == len(cols) and menus.DEEP_GREEN not in cols
     for c in cols + [menus.GREEN, menus.ORANGE]:
         rgb = [int(c[k:k + 2], 16) for k in (1, 3, 5)]
         assert min(rgb) >= 0x80  # pastel: light, little saturation
+
+
+@pytest.mark.claim("§6.2.1: a mistaken position choice shows \"a pink message ... rather than "
+                   "a deep green one\" (the velocity message)", measured="the message colours "
+                   "of the mouse position and velocity items: pink (red highest, light) and a "
+                   "deep green (green highest, red and blue under half of it, not pastel)",
+                   verdict="agrees (the other highlights are pastel, as §6.2.1 says)")
+def test_velocity_message_is_deep_green_position_pink():
+    r, g, b = _rgb(menus.HIGHLIGHT[menus.VELOCITY_MOUSE])
+    assert g > 0x80 and r < g // 2 and b < g // 2 and min(r, g, b) < 0x80
+    assert menus.HIGHLIGHT[menus.CUE_VELOCITY] == menus.HIGHLIGHT[menus.VELOCITY_MOUSE]
+    r, g, b = _rgb(menus.HIGHLIGHT[menus.POSITION_MOUSE])
+    assert r > g and r > b and min(r, g, b) >= 0x80

@@ -36,19 +36,23 @@ GREEN = "#c8e4c0"  # "a light, de-saturated shade of green"
 ORANGE = "#f8c890"  # "an attractive pastel orange"
 ORANGE_VISIBLE_ROWS = 5  # the orange menu is larger than its window, so it scrolls
 
+# §6.2.1: selecting a ball's position by mistake shows "a pink message ... rather than a deep
+# green one": the velocity-by-mouse items are deep green (black writing still reads on it);
+# the thesis calls the other highlights pastel.
+DEEP_GREEN = "#30a048"
 HIGHLIGHT = {
     ALTER_FRAME: "#b0d0f8",
     EXIT: "#e0e0e0",
     DO_NOTHING: "#fff8b0",
     REPLAY: "#d8c0f8",
-    CUE_VELOCITY: "#98e0a0",
+    CUE_VELOCITY: DEEP_GREEN,
     POSITION_KEYS: "#f8c0d8",
     VELOCITY_KEYS: "#a8e8c8",
     STOP_ALL: "#f8a8a8",
     AIM_NEXT: "#a8e0f0",
     AIM_POT: "#f0d8a8",
     POSITION_MOUSE: "#f8b0c8",
-    VELOCITY_MOUSE: "#90d890",
+    VELOCITY_MOUSE: DEEP_GREEN,
 }
 
 
