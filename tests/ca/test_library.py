@@ -66,6 +66,41 @@ def test_maze_runner_solves_the_demo_maze_by_the_shortest_path() -> None:
     assert e.by_type()[1] == walls  # walls are static
 
 
+def _maze(text: list[str]) -> Engine:
+    e = Engine(load_rules(library.rules_path("maze")))
+    for y, row in enumerate(text):
+        for x, ch in enumerate(row):
+            if ch in "#Ht":
+                e.set(x, y, {"#": 1, "H": 2, "t": 3}[ch])
+    return e
+
+
+def _runners(e: Engine) -> list[tuple[int, int, int]]:
+    return sorted((int(x), int(y), int(t)) for x, y, t in zip(e.xs, e.ys, e.ts) if t > 1)
+
+
+@pytest.mark.claim("§7.4.1: where more than one cell will do the runner splits and continues "
+                   "in both directions; runners which meet annihilate each other",
+                   measured="a runner at a T junction becomes two heads the next generation; "
+                   "two runners meeting head on in a corridor (an odd and an even gap "
+                   "between them) leave no head or tail two generations after they meet",
+                   verdict="agrees")
+def test_maze_runners_split_and_meeting_runners_annihilate() -> None:
+    e = _maze(["#######", "#tH...#", "###.###", "  #.#", "  ###"])
+    e.step(2)
+    assert [c for c in _runners(e) if c[2] == 2] == [(3, 2, 2), (4, 1, 2)]  # split in two
+    for row in ("#tH......Ht#", "#tH.......Ht#"):
+        e = _maze(["#" * len(row), row, "#" * len(row)])
+        walls = e.by_type()[1]
+        met = None
+        for _ in range(12):
+            heads = [x for x, _, t in _runners(e) if t == 2]
+            if met is None and len(heads) == 2 and heads[1] - heads[0] <= 2:
+                met = e.generation
+            e.step()
+        assert met is not None and _runners(e) == [] and e.by_type()[1] == walls
+
+
 def test_maze_runner_dies_in_a_dead_end() -> None:
     text = ["#####", "#...#", "#####"]
     e = Engine(load_rules(library.rules_path("maze")))

@@ -140,3 +140,18 @@ def test_any_path_file_loads_fits_or_names_its_line(tmp_path_factory, pts, n) ->
     pos = pathfit.fit(np.zeros((1, 2)), np.ones((1, 2)), np.linspace(0, 1, 5), path,
                       "axis-stretch")
     assert np.isfinite(pos).all()
+
+
+@pytest.mark.parametrize("k", [0.5, 0.25, 0.8])
+def test_axis_scales_blend_weight_is_the_square_of_the_chords_share(k: float) -> None:
+    """docs/fidelity/kas.md: on an almost level or upright chord the per-axis ratio is
+    blended towards the uniform scale with weight (c_axis / (|chord|/4))², worked by hand:
+    c_y = k·|c|/4 gives weight k², scale_y = k²·δy/c_y + (1 - k²)·|δ|/|c|."""
+    floor = pathfit.DEGENERATE                      # |c| = 1
+    cy = k * floor
+    chord = np.array([np.sqrt(1 - cy * cy), cy])
+    delta = np.array([[2.0, 3.0]])
+    uniform = np.hypot(2.0, 3.0)
+    s = pathfit.axis_scales(chord, delta)
+    assert s[0, 1] == pytest.approx(k * k * 3.0 / cy + (1 - k * k) * uniform, rel=1e-12)
+    assert s[0, 0] == pytest.approx(2.0 / chord[0], rel=1e-12)  # the long axis: literal

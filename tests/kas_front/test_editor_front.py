@@ -139,3 +139,36 @@ def test_screen_at_points_of_the_edit_session(line: int, name: str, has: dict) -
     fresh.feed(EditorFront(front.editor).start())
     assert np.array_equal(fresh.indices(), idx)
     assert_matches_golden(term.frame(), GOLDEN / f"edit_all_{line:03d}_{name}.png")
+
+
+# docs/fidelity/kas.md, "Key codes of cursor keys and F2 (^P ^N ^B ^F, ^W)": written out here,
+# not read from the program's table, so a changed code fails.
+LEDGER_KEY_CODES = {"up": 0x10, "down": 0x0E, "left": 0x02, "right": 0x06, "f2": 0x17}
+
+
+@pytest.mark.parametrize(("key", "code"), LEDGER_KEY_CODES.items())
+def test_the_terminal_sends_the_ledgers_key_codes(key: str, code: int) -> None:
+    """The key struck on the emulated T5684's keyboard, as the kas commands wire it: the
+    byte that arrives at the host's end of the line, and KAS hears that byte as the key."""
+    from camlab88.emulator.harness.sigma import SigmaSessionRun
+    from camlab88.emulator.machine import SigmaMachine
+
+    class Tap:  # a host session that only listens
+        got = b""
+
+        def begin(self) -> None: ...
+
+        def step(self, mouse: object) -> None:
+            self.got += machine.host.read()
+
+        def busy(self) -> bool:
+            return False
+
+    machine = SigmaMachine("t5684")
+    tap = Tap()
+    run = SigmaSessionRun(machine, tap, key_to_bytes)
+    run.step(keys=[key])
+    for _ in range(10):  # a byte is about a millisecond of line at 9600 baud
+        run.step()
+    assert tap.got == bytes([code])
+    assert bytes_to_keys(tap.got) == [key]
