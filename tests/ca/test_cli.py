@@ -111,3 +111,43 @@ def test_replay_uses_the_logged_edges_and_warns_about_disagreeing_flags(tmp_path
     assert "recorded with edges bounded" in out.err
     # the glider broke up on the bounded edge instead of wrapping round
     assert bounded["population"] != 5 or bounded["bbox"][0] < 65000
+
+
+COIN_RULES = """1 1 1 1 1 +1 +1 +1 +1 |16 +1 +1 +1 +1 $
+#X12 1  #X13 1  3 50% 1 50% 0  #X11 50% 1 50% 0
+"""
+STEPS = "press middle 300 300\nrelease middle 300 300\nframes 1\n" + \
+    "click right 600 500\nframes 2\n" * 12
+
+
+@pytest.mark.claim("§8.1: the animator decides whether the random numbers are repeatable; "
+                   "truly random ones give different runs, which contradicts replaying a "
+                   "sequence from the log file", measured="ca program --random: two runs "
+                   "draw different seeds from the operating system; each run's log header "
+                   "and its recording carry the seed, and the recording replays with "
+                   "--check; --seed stays the repeatable choice",
+                   verdict="agrees (the seed written down is ours: it lets a truly random "
+                   "run be replayed after all)")
+def test_truly_random_program_runs_differ_and_replay(tmp_path: Path, capsys,
+                                                      monkeypatch) -> None:
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "coin.rules").write_text(COIN_RULES)
+    (tmp_path / "steps.events").write_text(STEPS)
+    seeds = []
+    for k in (1, 2):
+        assert main(["ca", "program", "--rules", "coin.rules", "--pattern", "r_pentomino",
+                     "--random", "--headless", "--events", "steps.events", "--log",
+                     f"s{k}.log", "--record", f"r{k}.session"]) == 0
+        out = capsys.readouterr().out
+        seed = int(out.split("truly random outcomes: seed ")[1].split()[0])
+        assert f"seed {seed}" in (tmp_path / f"s{k}.log").read_text().splitlines()[:3]
+        from camlab88.protocols.session import read
+
+        argv = read(tmp_path / f"r{k}.session").argv
+        assert "--random" not in argv and argv[argv.index("--seed") + 1] == str(seed)
+        seeds.append(seed)
+    assert seeds[0] != seeds[1]  # 30 bits from the OS: equal once in 10**9
+    assert main(["replay", "r1.session", "--headless", "--check"]) == 0
+    assert "screen hashes agree" in capsys.readouterr().out
+    assert main(["ca", "program", "--random", "--seed", "3", "--headless"]) == 2
+    assert "--random or --seed, not both" in capsys.readouterr().err

@@ -25,6 +25,7 @@ def program(args: argparse.Namespace) -> int:
 
     try:
         _apply_tripos(args)
+        _truly_random(args)
         player = events_player(args.events)
         opts = scripted_run_options(args, COMMAND, player)
         options = _options(args, preview=opts.screenshot is not None)
@@ -35,6 +36,26 @@ def program(args: argparse.Namespace) -> int:
     _print_stats(stats, args.json)
     _report_files(options)
     return 0
+
+
+def _truly_random(args: argparse.Namespace) -> None:
+    """--random (§8.1's "truly random" choice): the seed comes from the operating system.
+    It is printed, the Log's header records it (so a Script replays the run), and the
+    recording's command line carries it as --seed N, so a replay repeats it too."""
+    if not args.random:
+        return
+    if args.seed is not None:
+        raise ValueError("give --random or --seed, not both")
+    import secrets
+
+    from camlab88.replay_policy import MAX_NUMBER
+
+    args.seed = secrets.randbelow(MAX_NUMBER + 1)  # 30 bits: what a replay accepts
+    argv = list(getattr(args, "_argv", None) or sys.argv[1:])
+    argv[argv.index("--random"):argv.index("--random") + 1] = ["--seed", str(args.seed)]
+    args._argv = argv
+    print(f"{COMMAND}: truly random outcomes: seed {args.seed} (from the operating system; "
+          "the log and a recording keep it)", flush=True)
 
 
 def _report_files(options) -> None:
