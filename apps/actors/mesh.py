@@ -206,4 +206,33 @@ def part_mesh(p: Part) -> Mesh:
 
 
 def actor_mesh(actor: Actor) -> Mesh:
+    """The actor at rest (its swinging parts at angle 0)."""
     return Mesh.join([part_mesh(p) for p in actor.parts])
+
+
+def articulated(actor: Actor) -> bool:
+    return any(p.swing is not None for p in actor.parts)
+
+
+def swing_angle(p: Part, clock: float) -> float:
+    """Degrees a swinging part is turned at the actor's own frame ``clock``."""
+    if p.swing is None:
+        return 0.0
+    _, amplitude, period, phase = p.swing
+    return amplitude * math.sin(2.0 * math.pi * (clock / period + phase))
+
+
+def posed_actor_mesh(actor: Actor, clock: float) -> Mesh:
+    """The actor with each swinging part turned about the x axis through (its offset x and
+    y, its pivot height) by ``swing_angle`` (a limb swinging forward and back)."""
+    meshes = []
+    for p in actor.parts:
+        m = part_mesh(p)
+        if p.swing is not None and len(m.verts):
+            a = math.radians(swing_angle(p, clock))
+            rot = np.array([[1.0, 0.0, 0.0], [0.0, math.cos(a), -math.sin(a)],
+                            [0.0, math.sin(a), math.cos(a)]])
+            pivot = np.array([0.0, p.offset[1], p.swing[0]])
+            m = Mesh((m.verts - pivot) @ rot.T + pivot, m.normals @ rot.T)
+        meshes.append(m)
+    return Mesh.join(meshes)

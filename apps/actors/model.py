@@ -21,6 +21,7 @@ from camlab88.base.textinput import InputError, read_text
 
 KINDS = ("lathe", "box", "sphere", "extrude")
 CYCLE_KINDS = ("bob", "turn")
+PHASES = ("together", "individual")
 MAX_STATE = 255
 MAX_ACTORS = 256
 MAX_PARTS = 64
@@ -70,6 +71,10 @@ class Part:
     profile: tuple[tuple[float, float], ...] = ()
     size: tuple[float, float, float] = (1, 1, 1)
     offset: tuple[float, float, float] = (0, 0, 0)
+    # An articulated part (a limb): it swings about the horizontal x axis through
+    # (offset x, offset y, pivot z) by amplitude·sin(2π(n/period + phase)) degrees at the
+    # actor's frame n: (pivot z, amplitude degrees, period frames, phase 0..1).
+    swing: tuple[float, float, float, float] | None = None
 
 
 @dataclass(frozen=True)
@@ -90,6 +95,9 @@ class Actor:
     material: Material
     parts: tuple[Part, ...]
     cycles: tuple[Cycle, ...] = ()
+    # "together": every actor of the state moves in step (one clock, the film's);
+    # "individual": each actor its own phase, from the cell and generation it was born in
+    phase: str = "together"
 
 
 @dataclass(frozen=True)
@@ -127,6 +135,8 @@ def _part_line(p: Part) -> str:
             out += f" size {_nums(size)}"
     if at != (0, 0, 0):
         out += f" at {_nums(at)}"
+    if p.swing is not None:
+        out += f" swing {_nums(p.swing[:2])} {int(p.swing[2])} {_num(p.swing[3])}"
     return out
 
 
@@ -138,6 +148,8 @@ def _actor_lines(a: Actor) -> list[str]:
              f"specular {_num(m.specular)} shininess {_num(m.shininess)}"]
     lines += [f"  {_part_line(p)}" for p in a.parts]
     lines += [f"  {c.kind} {_num(c.amount)} {c.period}" for c in a.cycles]
+    if a.phase != "together":
+        lines.append(f"  phase {a.phase}")
     return lines + ["end"]
 
 
@@ -274,8 +286,15 @@ def _part(ln: _Line, kind: str) -> Part:
     if ln.peek() == "at":
         ln.word("at")
         offset = _triple(ln, "at", -MAX_COORD, MAX_COORD)
+    swing = None
+    if ln.peek() == "swing":
+        ln.word("swing")
+        swing = (ln.number("swing pivot height", -MAX_COORD, MAX_COORD),
+                 ln.number("swing amplitude (degrees)", -180.0, 180.0),
+                 float(ln.integer("swing period (frames)", 1, MAX_PERIOD)),
+                 ln.number("swing phase (0..1)", 0.0, 1.0))
     ln.done()
-    return Part(kind, pts, size, offset)
+    return Part(kind, pts, size, offset, swing)
 
 
 def _material(ln: _Line) -> Material:
@@ -305,6 +324,7 @@ class _Draft:
     material: Material | None = None
     parts: list[Part] = field(default_factory=list)
     cycles: list[Cycle] = field(default_factory=list)
+    phase: str = "together"
 
     def finish(self, ln: _Line) -> Actor:
         if self.colour is None:
@@ -313,7 +333,7 @@ class _Draft:
             raise ln.error(f"actor {self.state} {self.name!r} has no parts "
                            f"({', '.join(KINDS)})", ln.key_col)
         return Actor(self.state, self.name, self.colour, self.material or DEFAULT_MATERIAL,
-                     tuple(self.parts), tuple(self.cycles))
+                     tuple(self.parts), tuple(self.cycles), self.phase)
 
 
 def _actor_line(d: _Draft, ln: _Line, key: str) -> None:
@@ -332,9 +352,15 @@ def _actor_line(d: _Draft, ln: _Line, key: str) -> None:
         d.cycles.append(Cycle(key, ln.number(f"{key} amount", -lim, lim),
                               ln.integer(f"{key} period (frames)", 1, MAX_PERIOD)))
         ln.done()
+    elif key == "phase":
+        d.phase = ln.word("'together' or 'individual'")
+        if d.phase not in PHASES:
+            raise ln.error(f"phase {d.phase[:40]!r}: expected {' or '.join(PHASES)}")
+        ln.done()
     else:
         raise ln.error(f"unknown keyword {key[:40]!r} in an actor (expected colour, material, "
-                       f"{', '.join(KINDS)}, {', '.join(CYCLE_KINDS)} or end)", ln.key_col)
+                       f"{', '.join(KINDS)}, {', '.join(CYCLE_KINDS)}, phase or end)",
+                       ln.key_col)
 
 
 def _header(ln: _Line, actors: dict[int, Actor]) -> _Draft:

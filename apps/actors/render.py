@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
-from camlab88.apps.actors.mesh import actor_mesh
+from camlab88.apps.actors.mesh import actor_mesh, articulated, posed_actor_mesh
 from camlab88.apps.actors.model import Actor, ActorSet
 from camlab88.apps.snooker.render.frame import camera_params
 from camlab88.apps.snooker.render.gamma import decode, encode_image
@@ -42,6 +42,7 @@ class Placed:
     scale: float = 1.0
     turn: float = 0.0
     lift: float = 0.0
+    clock: float = 0.0  # the actor's own frame: where its swinging parts are
 
 
 @dataclass(frozen=True, eq=False)
@@ -104,7 +105,11 @@ def world_triangles(stage: Stage) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         actor = stage.actors.actors.get(p.state)
         if actor is None or p.scale <= 0.0:
             continue
-        v, n = _mesh(actor)
+        if articulated(actor):
+            m = posed_actor_mesh(actor, p.clock)
+            v, n = m.verts, m.normals
+        else:
+            v, n = _mesh(actor)
         if len(v) == 0:
             continue
         a = np.radians(p.turn)

@@ -18,7 +18,7 @@ import numpy as np
 from camlab88.apps.actors.model import ActorSet, format_actors
 from camlab88.apps.actors.render import Look, Shot, Stage, render_frame
 from camlab88.apps.cafilm.camera import GenerationViews
-from camlab88.apps.cafilm.motion import change, posed
+from camlab88.apps.cafilm.motion import change, lineage, posed
 from camlab88.apps.cafilm.timeline import Timeline
 from camlab88.apps.snooker.render.lights import Lights
 
@@ -64,7 +64,9 @@ def stage_at(film: CaFilm, frame: int) -> tuple[Stage, Shot]:
     g, u = phase(film, frame)
     gens = film.timeline.generations
     ch = change(gens[g], gens[min(g + 1, len(gens) - 1)], film.glide)
-    placed, cells = posed(ch, u, film.actors, frame - 1)
+    individual = any(a.phase == "individual" for a in film.actors.actors.values())
+    born = lineage(list(gens), g, film.glide) if individual else None
+    placed, cells = posed(ch, u, film.actors, frame - 1, born, g)
     grey = (128, 128, 128)
     tiles = tuple((c, r, film.tile_colours.get(s, grey)) for c, r, s in cells)
     stage = Stage(film.actors, film.timeline.floor, film.lights, placed, tiles)

@@ -16,7 +16,12 @@ Growth, shrinking and gliding follow smoothstep(u) = 3u^2 - 2u^3 of the phase u 
 
 Level two, the actor: each actor's own ``Cycle`` s, by film frame number n: ``bob A P``
 lifts it A * (1 - cos(2 pi n / P)) / 2 (0..A, never into the floor), ``turn D P`` turns it
-D * n / P degrees. Every actor of a state moves in step (one clock, the film's).
+D * n / P degrees; a part that ``swing`` s (a limb) turns about its pivot by
+A sin(2 pi (n / P + phase)). An actor whose ``phase`` is ``together`` moves in step with every
+actor of its state (one clock, the film's frame n); ``individual`` gives each actor its own
+clock, n + a shift from the cell and generation it was born in (``lineage``: an actor
+gliding on keeps its birth, so its clock never jumps), so a crowd of walkers does not march
+in step (thesis 8.1: "each actor undergoing its own independent motion").
 
 A state without an actor is a tile on the board, shown as the earlier generation's until
 the phase reaches one half, then as the later's.
@@ -79,7 +84,35 @@ def change(a: Generation, b: Generation, glide: frozenset[int] | None = None) ->
                   tuple(sorted(glides)))
 
 
-def cycle_pose(cycles: tuple[Cycle, ...], frame: int) -> tuple[float, float]:
+Birth = tuple[Cell, int]  # (the cell an actor was born in, the generation)
+SHIFT_FRAMES = 997  # an individual clock's shift is under this many frames
+
+
+def lineage(gens: list[Generation], g: int, glide: frozenset[int] | None = None
+            ) -> dict[Cell, Birth]:
+    """Each living cell of generation ``g``: where and when its actor was born (a glide
+    carries the birth on; generation 0's cells are born there at 0)."""
+    born = {c: (c, 0) for c in gens[0].as_dict()}
+    for k in range(min(g, len(gens) - 1)):
+        ch = change(gens[k], gens[k + 1], glide)
+        nxt = {c: born.get(c, (c, k)) for c, _ in ch.stays}
+        for c0, c1, _ in ch.glides:
+            nxt[c1] = born.get(c0, (c0, k))
+        for c, _ in ch.births:
+            nxt[c] = (c, k + 1)
+        born = nxt
+    return born
+
+
+def clock_shift(birth: Birth) -> int:
+    """An individual actor's clock shift in frames, from its birth (a fixed hash: the
+    same film renders the same in any process)."""
+    (col, row), gen = birth
+    h = (col * 73856093) ^ (row * 19349663) ^ (gen * 83492791)
+    return (h & 0x7FFFFFFF) % SHIFT_FRAMES
+
+
+def cycle_pose(cycles: tuple[Cycle, ...], frame: float) -> tuple[float, float]:
     """(turn degrees, lift cells) of an actor's own motion at film frame ``frame``."""
     turn = lift = 0.0
     for c in cycles:
@@ -90,35 +123,47 @@ def cycle_pose(cycles: tuple[Cycle, ...], frame: int) -> tuple[float, float]:
     return turn, lift
 
 
-def posed(ch: Change, u: float, actors: ActorSet, frame: int
+def posed(ch: Change, u: float, actors: ActorSet, frame: int,
+          born: dict[Cell, Birth] | None = None, g: int = 0,
           ) -> tuple[tuple[Placed, ...], tuple[tuple[int, int, int], ...]]:
-    """(actors placed, tile cells (col, row, state)) at phase ``u`` of the change."""
+    """(actors placed, tile cells (col, row, state)) at phase ``u`` of the change from
+    generation ``g``; ``born``: ``lineage`` of generation g (needed only by actors whose
+    phase is individual; without it each is born where it stands at g)."""
     e = smoothstep(u)
     have = actors.actors
+    born = born or {}
     placed: list[Placed] = []
     tiles: list[tuple[int, int, int]] = []
 
-    def put(state: int, col: float, row: float, scale: float) -> None:
-        turn, lift = cycle_pose(have[state].cycles, frame)
-        placed.append(Placed(state, col, row, scale, turn, lift))
+    def put(state: int, col: float, row: float, scale: float, birth: Birth) -> None:
+        a = have[state]
+        clock = frame + (clock_shift(birth) if a.phase == "individual" else 0)
+        turn, lift = cycle_pose(a.cycles, clock)
+        placed.append(Placed(state, col, row, scale, turn, lift, clock))
+
+    def was(cell: Cell) -> Birth:
+        return born.get(cell, (cell, g))
 
     for (col, row), s in ch.stays:
-        put(s, col, row, 1.0) if s in have else tiles.append((col, row, s))
+        if s in have:
+            put(s, col, row, 1.0, was((col, row)))
+        else:
+            tiles.append((col, row, s))
     for (col, row), s in ch.deaths:
         if s in have:
             if e < 1.0:
-                put(s, col, row, 1.0 - e)
+                put(s, col, row, 1.0 - e, was((col, row)))
         elif u < 0.5:
             tiles.append((col, row, s))
     for (col, row), s in ch.births:
         if s in have:
             if e > 0.0:
-                put(s, col, row, e)
+                put(s, col, row, e, ((col, row), g + 1))
         elif u >= 0.5:
             tiles.append((col, row, s))
     for (c0, r0), (c1, r1), s in ch.glides:
         if s in have:
-            put(s, c0 + (c1 - c0) * e, r0 + (r1 - r0) * e, 1.0)
+            put(s, c0 + (c1 - c0) * e, r0 + (r1 - r0) * e, 1.0, was((c0, r0)))
         else:
             tiles.append((c0, r0, s) if u < 0.5 else (c1, r1, s))
     return tuple(placed), tuple(tiles)

@@ -56,7 +56,7 @@ def with_profile(actor: Actor, profile: tuple[tuple[float, float], ...]) -> Acto
     i = first_lathe(actor)
     if len(profile) >= 2:
         new = Part("lathe", profile) if i is None else Part(
-            "lathe", profile, parts[i].size, parts[i].offset)
+            "lathe", profile, parts[i].size, parts[i].offset, parts[i].swing)
         if i is None:
             parts.insert(0, new)
         else:
@@ -64,4 +64,4 @@ def with_profile(actor: Actor, profile: tuple[tuple[float, float], ...]) -> Acto
     elif i is not None:
         del parts[i]
     return Actor(actor.state, actor.name, actor.colour, actor.material, tuple(parts),
-                 actor.cycles)
+                 actor.cycles, actor.phase)

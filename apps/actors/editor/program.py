@@ -167,7 +167,7 @@ class ActorEditor(AsksBeforeQuitting):
         a = self._editable()
         colour = (int(values[0]), int(values[1]), int(values[2]))
         self.actors[a.state] = Actor(a.state, a.name, colour, Material(*values[3:]), a.parts,
-                                     a.cycles)
+                                     a.cycles, a.phase)
         self.display.sliders.show(values)
         self.show_status()
 
