@@ -30,6 +30,10 @@ def test_axis_stretch_is_the_literal_per_axis_stretch() -> None:
     pos = _one((0, 0), (6, -3), [0, 0.5, 1], path, "axis-stretch")
     # x stretched by 6/3 = 2, y by -3/1 = -3 (reflected): (1, 2) -> (2, -6)
     assert np.allclose(pos, [[0, 0], [2, -6], [6, -3]])
+    # drawn right to left, chord (-3, 1): x by 6/-3 = -2 (reflected): (-1, 2) -> (2, -6)
+    back = SamplePath([(0, 0), (-1, 2), (-3, 1)])
+    assert np.allclose(_one((0, 0), (6, -3), [0, 0.5, 1], back, "axis-stretch"),
+                       [[0, 0], [2, -6], [6, -3]])
 
 
 def test_axis_stretch_reflects_each_axis_by_its_own_sign() -> None:

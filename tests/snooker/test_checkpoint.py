@@ -30,6 +30,9 @@ def test_thesis_example_reads() -> None:
     # And writing it back gives the same text (the thesis's own line format).
     text = (DATA / "thesis_example.cp").read_text()
     assert cp.to_text() == text
+    # §6.2.2: 4096 units to the foot (a foot is 0.3048 m): the example's cue ball in metres
+    assert np.allclose(checkpoint.to_metres(cp.positions[0, 0]),
+                       np.array([5000, 6003]) / 4096 * 0.3048)
 
 
 def test_simulated_break_round_trips_exactly(tmp_path) -> None:
