@@ -75,6 +75,8 @@ def test_figures_lists_and_writes_a_png_headless(tmp_path: Path) -> None:
     png = tmp_path / f"fig-{number}.png"
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert "no display; running headless" in r.stderr
+    fig = CAPTIONS[number]
+    assert f"thesis {fig.section_label}, figure {number}: {fig.caption}" in r.stdout
     r = _cli("figures", "9.9", cwd=tmp_path)
     assert r.returncode == 2 and "no screen figure '9.9'" in r.stderr
 
@@ -115,3 +117,4 @@ def test_appendix_i_figure_shows_the_pad_graph_beside_the_screen(tmp_path: Path)
     assert r.returncode == 0, r.stderr
     with Image.open(tmp_path / "i2.png") as img:
         assert img.size == (768 + PANEL_WIDTH, 576)
+    assert "differs: Kathy Carter's sample screen" in r.stdout  # where and why it differs

@@ -1,9 +1,10 @@
 """``camlab88 figures [N]``: the thesis's screen figures as shipped session recordings.
 
-Without a number: the list, each with the thesis's caption (shortened) and whether its
-recording ships. With one (``camlab88 figures 6.5``): the recording ``examples/figures/
-fig-6.5.session`` replayed, in a window, or headless (``--headless``, or no display) to its
-last screen written as a PNG (``fig-6.5.png``, or ``--screenshot PNG``). The recordings are
+Without a number: the list, each with its section, the thesis's caption (shortened), its
+verdict and whether its recording ships. With one (``camlab88 figures 6.5``): the recording
+``examples/figures/fig-6.5.session`` replayed, in a window, or headless (``--headless``, or no
+display) to its last screen written as a PNG (``fig-6.5.png``, or ``--screenshot PNG``), then
+the thesis's section and whole caption, and where and why ours differs. The recordings are
 made by ``examples/figures/make_figures.py``; the figures' captions, sections and what
 differs live in camlab88/figure_catalogue.toml; docs/figures.md is the gallery.
 """
@@ -75,6 +76,10 @@ def _replay(args: argparse.Namespace, path: Path) -> int:
     if ctx.runs == 0 or status != 0:
         return fail(COMMAND, f"{path}: the replay ended with exit status {status}: "
                     f"{said.strip()}", 1)
+    fig = by_number()[args.number]
     if shot is not None:
-        print(f"{COMMAND}: figure {args.number} ({by_number()[args.number].short}) -> {shot}")
+        print(f"{COMMAND}: figure {args.number} ({fig.short}) -> {shot}")
+    print(f"thesis {fig.section_label}, figure {fig.number}: {fig.caption}")
+    if fig.differs:
+        print(f"{fig.verdict}: {fig.differs}")
     return 0
