@@ -103,8 +103,9 @@ def _pytest(copy: Path, tests: tuple[str, ...]) -> tuple[int, str]:
                            timeout=TIMEOUT)
     except subprocess.TimeoutExpired:
         return -1, "timed out"
-    tail = [ln for ln in r.stdout.splitlines() if ln.startswith(("FAILED", "ERROR"))]
-    return r.returncode, (tail[0] if tail else r.stdout.strip().splitlines()[-1:] or [""])[0]
+    failed = [ln for ln in r.stdout.splitlines() if ln.startswith(("FAILED", "ERROR"))]
+    last = r.stdout.strip().splitlines()[-1:] or [""]
+    return r.returncode, (failed or last)[0]
 
 
 def run(mutations: list[Mutation]) -> list[tuple[Mutation, str, str]]:
