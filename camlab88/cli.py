@@ -63,6 +63,11 @@ def build_parser(words: Sequence[str] = ()) -> argparse.ArgumentParser:
         "Rainbow workstation, and the 1987 animation programs that ran on them.",
     )
     parser.add_argument("--version", action="version", version=f"camlab88 {__version__}")
+    parser.add_argument("--budget", metavar="SIZE",
+                        help="the memory budget every reader and renderer checks an input "
+                        "against before the work (1500M, 4G; default 1G, or the environment's "
+                        "CAMLAB88_BUDGET): an input that would need more is refused in one "
+                        "line (docs/reliability.md)")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     sub.words = tuple(words)  # an area builds only the action the line names (areas.py)
     for module in _command_modules(words):
@@ -162,8 +167,32 @@ def _exit_now(status: int) -> None:
     os._exit(status)
 
 
+def _take_budget(words: list[str]) -> list[str]:
+    """``--budget SIZE`` before the command sets ``CAMLAB88_BUDGET`` for this process and
+    its children (so an area's own parser never sees it, and a Dask worker or a replayed
+    program checks against the same budget)."""
+    import os
+
+    from camlab88.base import budget
+
+    while words and (words[0] == "--budget" or words[0].startswith("--budget=")):
+        if words[0] == "--budget":
+            if len(words) < 2:
+                raise SystemExit("camlab88: --budget needs a SIZE (1500M, 4G)")
+            value, words = words[1], words[2:]
+        else:
+            value, words = words[0].partition("=")[2], words[1:]
+        try:
+            budget.parse_size(value)
+        except ValueError as exc:
+            raise SystemExit(f"camlab88: --budget: {exc}") from None
+        os.environ[budget.ENV] = value
+    return words
+
+
 def _main(argv: Sequence[str] | None) -> int:
-    words = normalise_argv(sys.argv[1:] if argv is None else argv)
+    words = _take_budget(list(sys.argv[1:] if argv is None else argv))
+    words = normalise_argv(words)
     args = build_parser(words).parse_args(words)
     args._argv = words  # what a --record recording stores and a replay re-runs
     previous = _catch_sigterm()
@@ -177,9 +206,20 @@ def _main(argv: Sequence[str] | None) -> int:
         return 130
     except BrokenPipeError:
         return OK
+    except MemoryError:  # a cost no budget check foresaw: still one line, no traceback
+        command = _command(words)
+        print(f"{command}: out of memory; the input needs more than this machine has "
+              "(docs/reliability.md, \"Budget\")", file=sys.stderr)
+        return FAILED
     except OSError as exc:
         return _write_fault(words, exc)
     except Exception as exc:
+        from camlab88.base.budget import OverBudget
+
+        if isinstance(exc, OverBudget):  # refused before the work: one line, status 2
+            command = _command(words)
+            print(f"{command}: {exc}", file=sys.stderr)
+            return USAGE
         if getattr(args, "load_state", None) is None:
             raise
         return _state_fault(words, args.load_state, exc)
@@ -192,6 +232,15 @@ def _main(argv: Sequence[str] | None) -> int:
     return int(result or 0)
 
 
+def _command(words: list[str]) -> str:
+    """``camlab88 AREA ACTION`` as the line named it (``camlab88 replay``, not ``camlab88
+    replay rec.session``: an action is a word, never a file name)."""
+    named = [w for w in words[:2] if not w.startswith("-")]
+    if len(named) == 2 and not named[1].replace("-", "").isalnum():
+        named = named[:1]
+    return " ".join(["camlab88", *named])
+
+
 # what a full disk, a read-only mount or a directory in the way does to a writer
 _WRITE_FAULTS = {errno.ENOSPC, errno.EDQUOT, errno.EROFS, errno.EISDIR, errno.ENOTDIR,
                  errno.EACCES, errno.EPERM, errno.EFBIG, errno.EIO}
@@ -202,7 +251,7 @@ def _write_fault(words: list[str], exc: OSError) -> int:
     the old file as it was and name the user's path, never their temporary file)."""
     if exc.filename is None or exc.errno not in _WRITE_FAULTS:
         raise exc
-    command = " ".join(["camlab88", *[w for w in words[:2] if not w.startswith("-")]])
+    command = _command(words)
     print(f"{command}: {exc.filename}: {exc.strerror}", file=sys.stderr)
     return 1
 
@@ -212,7 +261,7 @@ def _state_fault(words: list[str], state: object, exc: Exception) -> int:
     names this program, version and inputs and its tree fits the program's objects, but its
     values are the program's own, unchecked — a damaged or hand-edited file can hold ones
     the program never makes. One line naming the file, status 2 (an input it was given)."""
-    command = " ".join(["camlab88", *[w for w in words[:2] if not w.startswith("-")]])
+    command = _command(words)
     print(f"{command}: {state}: the program failed on this state ({type(exc).__name__}: "
           f"{exc}); is the file damaged or edited?", file=sys.stderr)
     return 2

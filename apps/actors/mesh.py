@@ -205,6 +205,22 @@ def part_mesh(p: Part) -> Mesh:
     return Mesh(m.verts * scale + np.asarray(p.offset, dtype=np.float64), normals)
 
 
+def triangle_count(actor: Actor) -> int:
+    """The triangles :func:`actor_mesh` makes of ``actor`` at most, counted without making
+    them (a renderer checks its memory budget with it first)."""
+    n = 0
+    for p in actor.parts:
+        if p.kind == "box":
+            n += 12
+        elif p.kind == "sphere":
+            n += 2 * RINGS * SEGMENTS
+        elif p.kind == "lathe":
+            n += 2 * SEGMENTS * max(len(p.profile) - 1, 0) + 2 * SEGMENTS
+        elif p.kind == "extrude":
+            n += 4 * len(p.profile)
+    return n
+
+
 def actor_mesh(actor: Actor) -> Mesh:
     """The actor at rest (its swinging parts at angle 0)."""
     return Mesh.join([part_mesh(p) for p in actor.parts])

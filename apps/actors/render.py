@@ -18,7 +18,8 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
-from camlab88.apps.actors.mesh import actor_mesh, articulated, posed_actor_mesh
+
+from camlab88.apps.actors.mesh import actor_mesh, articulated, posed_actor_mesh, triangle_count
 from camlab88.apps.actors.model import Actor, ActorSet
 from camlab88.apps.snooker.render.frame import camera_params
 from camlab88.apps.snooker.render.gamma import decode, encode_image
@@ -88,6 +89,26 @@ def canopy_over(floor: tuple[int, int, int, int], n: int = 4) -> Lights:
 
 def linear_colour(rgb: tuple[int, int, int]) -> np.ndarray:
     return decode(np.array(rgb, dtype=np.float64))
+
+
+# What a frame costs: a placed triangle ~800 bytes (its corners and normals, their world and
+# camera copies, depths and screen positions, the mesh's temporaries), a sample ~48 (depth,
+# triangle id, two barycentrics, the linear image), a light its shadow map of float64
+TRIANGLE_BYTES = 800
+SAMPLE_BYTES = 48
+
+
+def frame_need(actors: ActorSet, placed: dict[int, int], lights: int, look: Look
+               ) -> tuple[int, str]:
+    """(bytes, what) a frame of ``look`` needs with ``placed[state]`` actors of each state
+    and ``lights`` lights, worked out before anything is made (base.budget)."""
+    tris = sum(triangle_count(actors.actors[s]) * k for s, k in placed.items()
+               if s in actors.actors)
+    samples = look.width * look.height * look.ss * look.ss
+    shadow = look.shadow_map ** 2 * 8 if look.shadows else 8
+    need = tris * TRIANGLE_BYTES + samples * SAMPLE_BYTES + lights * shadow
+    return need, (f"a {look.width}x{look.height} frame of {tris:,} triangles and {lights:,} "
+                  f"lights")
 
 
 @lru_cache(maxsize=64)

@@ -24,11 +24,20 @@ import re
 
 import numpy as np
 
+from camlab88.base import budget
+
 MAX_LEVEL = 62  # 2**62: coordinates still fit an int64
 MAX_CELLS = 1 << 22  # cells of a sparse pattern listed at most (~0.1 GB as cell arrays)
 MAX_GRID = 1 << 28  # bytes of a dense pattern's grid at most (painted, never listed)
 GRID_FILL = 16  # as rle_body.GRID_FILL: a grid from 1/16 full
 _QUAD = ((0, 0), (1, 0), (0, 1), (1, 1))  # (x, y) of quadrants nw, ne, sw, se
+# What reading costs, measured (1e6 node lines, 3e5 leaves of 16 cells): a line ~260 bytes
+# (its string, the node's Python values, then its row in the numpy arrays), a leaf's live
+# cell ~24 (its offsets, listed once); a listed cell 24 bytes, three times over while sorted
+LINE_BYTES = 260
+LEAF_CELL_BYTES = 24
+CELL_BYTES = 3 * 24
+GRID_BYTES = 4  # as rle_body.GRID_BYTES: a grid cell held and run
 
 
 class McError(ValueError):
@@ -144,8 +153,12 @@ def _node_line(tree: _Tree, text: str, line: int) -> None:
     tree.add_node(level, tuple(kids))
 
 
-def read_tree(text: str) -> tuple[_Tree, str, list[str]]:
-    """The nodes, the rule (``#R``) and the comments of a macrocell file."""
+def read_tree(text: str, source: str = "<mc>") -> tuple[_Tree, str, list[str]]:
+    """The nodes, the rule (``#R``) and the comments of a macrocell file (one over the
+    memory budget is refused before its lines are split: base.budget)."""
+    count = text.count("\n") + 1
+    budget.check(source, len(text) + count * LINE_BYTES + text.count("*") * LEAF_CELL_BYTES,
+                 f"reading its {count:,} lines")
     lines = text.splitlines()
     if not lines or not lines[0].startswith("[M2]"):
         raise McError(1, 1, "expected '[M2]' starting a macrocell file")
@@ -286,11 +299,12 @@ def _pieces(nodes: _Nodes, root: int, x: int, y: int, emit) -> None:
             emit(*nodes.cells(ks, xs, ys, level))
 
 
-def cells_of(tree: _Tree, last_line: int
+def cells_of(tree: _Tree, last_line: int, source: str = "<mc>"
              ) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray] | np.ndarray,
                         tuple[int, int]]:
     """The root's cells relative to its live box's top-left — as arrays, or a uint8 grid
-    for a dense pattern — and Golly's origin in those coordinates."""
+    for a dense pattern — and Golly's origin in those coordinates (a pattern whose grid or
+    cells would exceed the memory budget is refused before either is made)."""
     root = len(tree.level) - 1
     nodes = _Nodes(tree)
     level, box, pop = tree.level[root], nodes.box(root), tree.pop[root]
@@ -308,6 +322,11 @@ def cells_of(tree: _Tree, last_line: int
         raise McError(last_line, 1, f"pattern has {pop} cells, more than {MAX_CELLS} can be "
                                     "loaded")
     origin = (half - x0, half - 1 - y0)
+    batch = min(pop, BATCH << 1) * CELL_BYTES  # the cells of one expansion step
+    if grid:
+        budget.check(source, w * h * GRID_BYTES + batch, f"its {w:,} x {h:,} grid")
+    else:
+        budget.check(source, pop * CELL_BYTES, f"its {pop:,} live cells")
     if grid:
         g = np.zeros((h, w), np.uint8)
 

@@ -14,8 +14,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 from camlab88.apps.ca import life_pc, macrocell
-from camlab88.apps.ca.rle_body import decode
-from camlab88.base import atomicfile
+from camlab88.apps.ca.rle_body import GRID_BYTES, decode
+from camlab88.base import atomicfile, budget
 from camlab88.base.textinput import InputError, quote, read_text, where
 
 NATIVE_MAGIC = "CAMLAB88-CA-PATTERN 1"
@@ -211,12 +211,55 @@ def parse_pattern(text: str, fmt: str, source: str = "<pattern>") -> Pattern:
     return parse_native(text, source)
 
 
+# What writing a cell costs in each format, measured order of magnitude: RLE and native
+# go through Python values a cell (~200 bytes), macrocell through numpy sorts and a leaf's
+# text; a plaintext .cells is a character per cell of its box. A grid pattern's cells are
+# listed first (24 bytes each).
+WRITE_CELL_BYTES = {"rle": 200, "native": 200, "mc": 120, "cells": 0}
+WRITE_BOX_BYTES = {"rle": 0, "native": 0, "mc": 0, "cells": 10}
+
+
+def population(pattern: Pattern) -> int:
+    """Live cells, without listing a grid pattern's."""
+    if isinstance(pattern, GridPattern):
+        return int(np.count_nonzero(pattern.grid))
+    return int(pattern.xs.size)
+
+
+def check_write(path: str, pattern: Pattern) -> None:
+    """Refuse (base.budget) a pattern whose file in ``path``'s format would need more
+    memory to write than the budget allows — before any cell is listed."""
+    fmt = format_of(path)
+    cells = population(pattern)
+    need = cells * (WRITE_CELL_BYTES.get(fmt, 200) + 24) + \
+        pattern.width * pattern.height * WRITE_BOX_BYTES.get(fmt, 0)
+    budget.check(path, need, f"writing its {cells:,} live cells as {fmt}")
+
+
+# What running a pattern costs (ca run): a dense pattern's box as its reader checked it
+# (rle_body.GRID_BYTES), a listed cell ~100 bytes (the engine's arrays, sorted and merged)
+RUN_BOX_BYTES = GRID_BYTES
+RUN_CELL_BYTES = 100
+
+
+def check_run(source: str, pattern: Pattern) -> None:
+    """Refuse a pattern whose run would need more memory than the budget allows."""
+    if isinstance(pattern, GridPattern):
+        need = pattern.width * pattern.height * RUN_BOX_BYTES
+        what = f"running its {pattern.width:,} x {pattern.height:,} grid"
+    else:
+        need = int(pattern.xs.size) * RUN_CELL_BYTES
+        what = f"running its {int(pattern.xs.size):,} live cells"
+    budget.check(source, need, what)
+
+
 def write_pattern(path: str | os.PathLike, pattern: Pattern) -> None:
     path = os.fspath(path)
     fmt = format_of(path)
     if fmt == "life":
         raise ValueError(f"{path}: Life 1.05/1.06 is read, not written; save as .rle, "
                          ".cells, .mc or native")
+    check_write(path, pattern)
     text = {"rle": format_rle, "cells": format_cells, "native": format_native,
             "mc": format_mc}[fmt](pattern)
     atomicfile.write_atomic(path, text)
@@ -492,7 +535,7 @@ def parse_rle(text: str, source: str = "<rle>") -> Pattern:
         col = offset - (body.rfind("\n", 0, offset) + 1) + 1
         return PatternError(source, min(body_line + line + 1, max(1, len(lines))), col, message)
 
-    cells, (left, top) = decode(body, fail)
+    cells, (left, top) = decode(body, fail, source)
     # Golly reads cells beyond the header's box too; so do we. The reference point is
     # Golly's origin: Pos gives the box corner relative to it.
     ref = (-pos[0] - left, -pos[1] - top)
@@ -506,8 +549,8 @@ def parse_rle(text: str, source: str = "<rle>") -> Pattern:
 def parse_mc(text: str, source: str = "<mc>") -> Pattern:
     """A macrocell file (apps/ca/macrocell.py); Golly's origin becomes the reference point."""
     try:
-        tree, rule, comments = macrocell.read_tree(text)
-        cells, ref = macrocell.cells_of(tree, max(1, text.count("\n")))
+        tree, rule, comments = macrocell.read_tree(text, source)
+        cells, ref = macrocell.cells_of(tree, max(1, text.count("\n")), source)
     except macrocell.McError as exc:
         raise PatternError(source, exc.line, exc.column, str(exc)) from None
     if isinstance(cells, np.ndarray):
@@ -549,10 +592,19 @@ def format_cells(p: Pattern) -> str:
     return "\n".join(head + ["".join(r).rstrip(".") for r in grid]) + "\n"
 
 
+# What decoding .cells costs: a character ~10 bytes (its row's string, the UTF-32 copy, the
+# masks), a live cell ~64 (positions found, rows searched, the pattern's three arrays)
+CELLS_TEXT_BYTES = 10
+CELLS_LIVE_BYTES = 64
+
+
 def parse_cells(text: str, source: str = "<cells>") -> Pattern:
     """Plaintext: '!' lines are comments ('!Name: ...' the name), every other line a row of
     '.' dead and 'O' (or 'o', '*') live cells. Decoded with numpy, so large
     patterns load in a fraction of a second."""
+    live = sum(text.count(c) for c in "Oo*")
+    budget.check(source, len(text) * CELLS_TEXT_BYTES + live * CELLS_LIVE_BYTES,
+                 f"decoding its {len(text):,} characters and {live:,} live cells")
     name = ""
     comments: list[str] = []
     rows: list[str] = []

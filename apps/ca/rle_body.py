@@ -15,6 +15,8 @@ from collections.abc import Callable
 
 import numpy as np
 
+from camlab88.base import budget
+
 PLANE = 65536  # the CA plane is 65536 cells square (section 7.3)
 MAX_STATE = 255
 _TOKEN = re.compile(r"([1-9][0-9]{0,5})?([bo.$!A-X]|[p-y][A-X])|\s+")
@@ -70,8 +72,10 @@ def _tokens(body: str, fail: Fail) -> tuple[list[str], list[str], np.ndarray]:
     raise fail(len(body), "expected '!' ending the RLE pattern")
 
 
-def decode_body(body: str, fail: Fail) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(xs, ys, states) of the live cells, sorted by row then column."""
+def decode_body(body: str, fail: Fail, source: str = "<rle>"
+                ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(xs, ys, states) of the live cells, sorted by row then column (a few bytes of
+    repeat counts can ask for 10^9 cells: over the memory budget they are refused)."""
     counts, syms, offsets = _tokens(body, fail)
     n = np.array([int(c) if c else 1 for c in counts], np.int64)
     state = np.array([_state(s) for s in syms], np.int64)
@@ -91,9 +95,11 @@ def decode_body(body: str, fail: Fail) -> tuple[np.ndarray, np.ndarray, np.ndarr
         raise fail(int(offsets[bad[0]]), "pattern is wider or taller than the 65536-cell plane")
     live = np.flatnonzero(run & (state > 0))
     reps = n[live]
+    total = int(reps.sum())
+    budget.check(source, total * 2 * CELL_BYTES, f"its {total:,} live cells")
     # x of cell k of a run = its run's x + (k - index of the run's first cell); built in
     # place so a 16-million-cell pattern needs one temporary array, not three
-    cell_x = np.arange(int(reps.sum()), dtype=np.int64)
+    cell_x = np.arange(total, dtype=np.int64)
     cell_x -= np.repeat(np.cumsum(reps) - reps - xs[live], reps)
     return cell_x, np.repeat(ys[live], reps), np.repeat(state[live], reps)
 
@@ -103,7 +109,15 @@ def decode_body(body: str, fail: Fail) -> tuple[np.ndarray, np.ndarray, np.ndarr
 GRID_FILL = 16
 
 
-def decode_compiled(body: str, fail: Fail
+SCAN_BYTES = 13  # the compiled scanner's arrays: three int32 and a uint8 per body byte
+CELL_BYTES = 24  # a live cell listed: x, y and state as int64
+# A grid's cell costs its byte and, once it runs, the engine's padded window and step
+# buffers: checked at that cost when read, so a grid no command can use is never made
+# (an 8192 x 8192 grid ran in 408 MB, a 30000 x 30000 one took 2.8 GB)
+GRID_BYTES = 4
+
+
+def decode_compiled(body: str, fail: Fail, source: str = "<rle>"
                     ) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray] | np.ndarray,
                                tuple[int, int]]:
     """The live cells as (xs, ys, states) or, for a dense pattern, a uint8 grid of states;
@@ -112,6 +126,7 @@ def decode_compiled(body: str, fail: Fail
     the token reader, which words the error or decodes what Python's ``\\s`` allows."""
     from camlab88.apps.ca import rle_scan
 
+    budget.check(source, len(body) * (SCAN_BYTES + 1), f"scanning its {len(body):,}-byte body")
     raw = body.encode("utf-8", "replace")
     b = np.frombuffer(raw, np.uint8)
     ry, rx, rn = (np.empty(b.shape[0], np.int32) for _ in range(3))
@@ -129,16 +144,18 @@ def decode_compiled(body: str, fail: Fail
         raise fail(at, _why(body, at) if at < len(body) else
                    "expected '!' ending the RLE pattern")
     if status != rle_scan.OK:
-        xs, ys, ts = decode_body(body, fail)
+        xs, ys, ts = decode_body(body, fail, source)
         return (xs, ys, ts), (0, 0)
     if cells == 0:
         empty = np.zeros(0, np.int64)
         return (empty, empty, empty), (0, 0)
     h, w = bottom - top + 1, right - left + 1
     if cells * GRID_FILL >= h * w:
+        budget.check(source, h * w * GRID_BYTES, f"its {w:,} x {h:,} grid")
         grid = np.zeros((h, w), np.uint8)
         rle_scan.to_grid(ry, rx, rn, rs, runs, grid, top, left)
         return grid, (left, top)
+    budget.check(source, cells * CELL_BYTES, f"its {cells:,} live cells")
     xs, ys, ts = (np.empty(cells, np.int64) for _ in range(3))
     rle_scan.to_cells(ry, rx, rn, rs, runs, xs, ys, ts, top, left)
     return (xs, ys, ts), (left, top)
@@ -150,13 +167,14 @@ def decode_compiled(body: str, fail: Fail
 SMALL_BODY = 8192
 
 
-def decode(body: str, fail: Fail
+def decode(body: str, fail: Fail, source: str = "<rle>"
            ) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray] | np.ndarray, tuple[int, int]]:
     """What :func:`decode_compiled` returns — cells or, dense, a grid, and the corner —
-    by whichever reader is quicker for the body's size."""
+    by whichever reader is quicker for the body's size (a grid or cell list over the
+    memory budget is refused before it is made, naming ``source``)."""
     if len(body) >= SMALL_BODY:
-        return decode_compiled(body, fail)
-    xs, ys, ts = decode_body(body, fail)
+        return decode_compiled(body, fail, source)
+    xs, ys, ts = decode_body(body, fail, source)
     if xs.size == 0:
         return (xs, ys, ts), (0, 0)
     left, top = int(xs.min()), int(ys.min())
@@ -164,6 +182,7 @@ def decode(body: str, fail: Fail
     ys -= top
     h, w = int(ys.max()) + 1, int(xs.max()) + 1
     if xs.size * GRID_FILL >= h * w:
+        budget.check(source, h * w * GRID_BYTES, f"its {w:,} x {h:,} grid")
         grid = np.zeros((h, w), np.uint8)
         grid[ys, xs] = ts
         return grid, (left, top)

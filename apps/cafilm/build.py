@@ -6,6 +6,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
 from camlab88.apps.actors.model import ActorSet, read_actors
 from camlab88.apps.actors.render import Look, canopy_over
 from camlab88.apps.cafilm.camera import auto_views, script_views
@@ -74,6 +75,27 @@ def tile_colours(rules: object, states: set[int]) -> dict[int, tuple[int, int, i
     return {s: tuple(int(v) for v in pal[s]) for s in states}
 
 
+def check_frames(spec: FilmSpec, actors: ActorSet, timeline, lights: int, look: Look) -> None:
+    """Refuse (base.budget) a film whose busiest frame — a generation's actors and the next
+    one's, as a change between them shows both — would need more memory than the budget
+    allows, before any frame is rendered."""
+    from camlab88.apps.actors.render import frame_need
+    from camlab88.base import budget
+
+    counts = []
+    for g in timeline.generations:
+        states, k = np.unique(np.asarray(g.states, dtype=np.int64), return_counts=True)
+        counts.append(dict(zip(states.tolist(), k.tolist())))
+    worst, what = 0, ""
+    for a, b in zip(counts, counts[1:] or counts):
+        both = {s: a.get(s, 0) + b.get(s, 0) for s in a.keys() | b.keys()}
+        need, about = frame_need(actors, both, lights, look)
+        if need > worst:
+            worst, what = need, about
+    source = " + ".join(str(p) for p in (spec.actors, spec.lights) if p) or str(spec.pattern)
+    budget.check(source, worst, what)
+
+
 def build(spec: FilmSpec) -> CaFilm:
     if not 1 <= spec.generations <= MAX_GENERATIONS:
         raise ValueError(f"--generations must be 1..{MAX_GENERATIONS}")
@@ -96,19 +118,21 @@ def build(spec: FilmSpec) -> CaFilm:
         from camlab88.apps.snooker.camera.ccl import read_script
 
         camera_text = read_script(spec.camera)
-    engine = _engine(spec)
-    timeline = record(engine, spec.generations)
-    if spec.lights:
+    look = Look(spec.size[0], spec.size[1], spec.samples)
+    lights = None
+    if spec.lights:  # read before the generations run: its cost does not depend on them
         from camlab88.apps.snooker.render.lights import read_lights
 
-        lights = read_lights(spec.lights)
-    else:
+        lights = read_lights(spec.lights, look.shadow_map ** 2 * 8, "with their shadow maps")
+    engine = _engine(spec)
+    timeline = record(engine, spec.generations)
+    if lights is None:
         lights = canopy_over(timeline.floor)
     views = (script_views(camera_text, spec.generations, str(spec.camera))
              if camera_text is not None else auto_views(timeline.floor, spec.generations))
     seen = {int(s) for g in timeline.generations for s in g.states.tolist()}
     tiles = tile_colours(engine.rules, seen - set(actors.actors))
-    look = Look(spec.size[0], spec.size[1], spec.samples)
+    check_frames(spec, actors, timeline, len(lights.positions), look)
     return CaFilm(actors, timeline, tiles, lights, views, spec.per_generation, glide, look)
 
 

@@ -11,10 +11,12 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import numpy as np
+
 from camlab88.apps.kas import correspond, kernels, pathfit, splines
 from camlab88.apps.kas.files import SamplePath, Timing
 from camlab88.apps.kas.model import AnimSequence, Chain, Drawing
 from camlab88.apps.kas.timing import fractions
+from camlab88.base import budget
 
 TOL = 1e-9  # relative collinearity tolerance for dropping points
 
@@ -50,6 +52,25 @@ def _frames(pos: np.ndarray, cols: np.ndarray, bounds: np.ndarray, sections: lis
         out.append(Drawing([Chain.raw(p_all[b[j]:b[j + 1]], c_all[b[j]:b[j + 1]], sections[j])
                             for j in range(n)]))
     return out
+
+
+# What a point of a made frame costs: its position and pen (24 bytes), the path fit's and
+# the redundant-point drop's copies, its chain, then its line when the sequence is written
+POINT_FRAME_BYTES = 160
+
+
+def check_cost(source: str, keys: list[Drawing], frames: int) -> None:
+    """Refuse (base.budget) ``frames`` frames of ``keys``' points over the memory budget,
+    before any frame is made."""
+    points = max((k.n_points for k in keys), default=0)
+    budget.check(source, points * frames * POINT_FRAME_BYTES,
+                 f"{frames:,} frames of {points:,} points")
+
+
+def frame_count(timing: Timing | None, frames: int | None, keys: int) -> int:
+    """The frames :func:`inbetween` or :func:`inbetween_keys` will make."""
+    d = len(fractions(timing, frames))
+    return d if keys == 2 else (keys - 1) * (d - 1) + 1
 
 
 def inbetween(a: Drawing, b: Drawing, frames: int | None = None,

@@ -132,9 +132,12 @@ def write(path: str | os.PathLike[str], rec: SessionRecording) -> None:
 
 def read(path: str | os.PathLike[str]) -> SessionRecording:
     """Read and check a recording; a bad one raises SessionFileError naming line and column."""
+    from camlab88.base import budget
+
     name = os.fspath(path)
     try:
         with open(name, "rb") as fh:
+            budget.check(name, 2 * os.fstat(fh.fileno()).st_size, "reading it")
             raw = fh.read()
     except OSError as exc:
         raise SessionFileError(name, 0, 0, f"cannot read: {exc.strerror or exc}") from None

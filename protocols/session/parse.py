@@ -20,6 +20,9 @@ import zlib
 from fractions import Fraction
 from typing import Any
 
+import numpy as np
+
+from camlab88.base import budget
 from camlab88.protocols.session.format import (
     _KEYS,
     FORMAT,
@@ -191,8 +194,42 @@ class _Reader:
         return ScreenHash(frame, tick, self.timed(tick, obj["time"]), sha)
 
 
+# What a recording costs in memory, besides its bytes (held once, split into lines once):
+# a record ~300 bytes (its line's object, its parsed tuple, its entry in the replay's tables);
+# the longest line ~6 times its length while it is decoded (text, JSON, base64, inflated)
+RECORD_BYTES = 300
+LINE_FACTOR = 6
+_BLOCK = 1 << 24
+
+
+def shape(raw: bytes | memoryview) -> tuple[int, int]:
+    """(lines, longest line's length) of ``raw``, read in blocks (no copy of it)."""
+    view = memoryview(raw)
+    lines, longest, run = 0, 0, 0
+    for at in range(0, len(view), _BLOCK):
+        block = np.frombuffer(view[at:at + _BLOCK], np.uint8)
+        ends = np.flatnonzero(block == 10)
+        if not ends.size:
+            run += block.size
+            continue
+        gaps = np.diff(ends) - 1
+        longest = max(longest, run + int(ends[0]), int(gaps.max()) if gaps.size else 0)
+        run = block.size - int(ends[-1]) - 1
+        lines += ends.size
+    return lines + (run > 0), max(longest, run)
+
+
+def check_cost(name: str, size: int, lines: int, longest: int) -> None:
+    """Refuse a recording over the memory budget (base.budget) before it is parsed."""
+    need = 2 * size + lines * RECORD_BYTES + longest * LINE_FACTOR
+    what = (f"its {lines:,} records" if lines * RECORD_BYTES >= longest * LINE_FACTOR else
+            f"its {longest:,}-byte line")
+    budget.check(name, need, what)
+
+
 def parse_lines(raw: bytes, name: str) -> SessionRecording:
     """The recording in ``raw`` (the bytes of file ``name``)."""
+    check_cost(name, len(raw), *shape(raw))
     reader = _Reader(name)
     for reader.line, line in enumerate(raw.split(b"\n"), start=1):
         if not line.strip():

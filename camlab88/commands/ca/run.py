@@ -12,7 +12,7 @@ from camlab88.runopts import check_output, fail
 def _run(args: argparse.Namespace) -> int:
     from camlab88.apps.ca import library
     from camlab88.apps.ca.engine import CENTRE, Engine
-    from camlab88.apps.ca.patterns import PatternError, read_pattern
+    from camlab88.apps.ca.patterns import PatternError, check_run, read_pattern
     from camlab88.apps.ca.rules import RuleError, load_rules
     from camlab88.apps.ca.seed import check_seed
 
@@ -20,6 +20,7 @@ def _run(args: argparse.Namespace) -> int:
         check_seed(args.seed)  # the kernels take an int64: a 20-digit seed is an error
         rules = load_rules(library.rules_path(args.rules))
         pattern = read_pattern(library.pattern_path(args.pattern))
+        check_run(args.pattern, pattern)  # the engine's cost, before it is built
         grid = pattern.placed_grid(CENTRE, CENTRE, args.orientation)  # a dense pattern's
         cells = pattern.placed(CENTRE, CENTRE, args.orientation) if grid is None else None
     except (FileNotFoundError, RuleError, PatternError, ValueError) as exc:

@@ -20,13 +20,15 @@ def _timing(name: str | None):
 
 def _inbetween(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import files, library, pathfit
-    from camlab88.apps.kas.inbetween import inbetween, inbetween_keys
+    from camlab88.apps.kas.inbetween import check_cost, frame_count, inbetween, inbetween_keys
 
     try:
         keys = [files.load_drawing_or_frame(library.resolve(k)) for k in args.keys]
         if len(keys) < 2:
             raise ValueError("give at least two keyframes")
         tm = _timing(args.timing)
+        if len(keys) == 2 or args.frames is not None or (tm is not None and tm.kind == "ticks"):
+            check_cost(" + ".join(args.keys), keys, frame_count(tm, args.frames, len(keys)))
         if len(keys) == 2:
             path = pathfit.load_checked(library.resolve(args.path)) if args.path else None
             seq = inbetween(keys[0], keys[1], args.frames, path, tm, args.missing, args.fit,

@@ -44,7 +44,7 @@ def _film(args: argparse.Namespace) -> int:
     from camlab88.apps.snooker.film import pipeline as P
     from camlab88.apps.snooker.film.movie import write_movie
     from camlab88.apps.snooker.film.progress import progress_bar
-    from camlab88.apps.snooker.render.lights import read_lights
+    from camlab88.apps.snooker.render.lights import LIGHT_PIXEL_BYTES, read_lights
 
     paths = P.FilmPaths.beside(args.out)
     paths.movie.parent.mkdir(parents=True, exist_ok=True)
@@ -53,7 +53,10 @@ def _film(args: argparse.Namespace) -> int:
         write_views(paths.views, views, [f"camlab88 snooker film --titles {args.titles}"])
     else:
         views = P.script_views(args.motion, args.script, paths.views)
-        scene = P.scene_of(args.motion, read_lights(args.lights) if args.lights else None)
+        w, h = args.size if args.mode == "truecolour" else (768, 512)
+        lights = (read_lights(args.lights, w * h * LIGHT_PIXEL_BYTES, f"at {w}x{h}")
+                  if args.lights else None)
+        scene = P.scene_of(args.motion, lights)
     if args.mode == "truecolour":
         look = P.FilmLook(args.size[0], args.size[1], not args.no_specks, True,
                           args.blur_samples if args.motion_blur else 1, not args.no_wood)

@@ -21,7 +21,11 @@ def render(args: argparse.Namespace) -> int:
     from camlab88.apps.snooker.camera.views import ViewFileError, read_views
     from camlab88.apps.snooker.checkpoint import CheckpointError
     from camlab88.apps.snooker.film.schedule import FilmError
-    from camlab88.apps.snooker.render.lights import LightsError, read_lights
+    from camlab88.apps.snooker.render.lights import (
+        LIGHT_PIXEL_BYTES,
+        LightsError,
+        read_lights,
+    )
     from camlab88.apps.snooker.render.scene import load_scene
     from camlab88.apps.snooker.render.sequence import SequenceError, select_views
     from camlab88.apps.snooker.session import SessionError
@@ -32,7 +36,9 @@ def render(args: argparse.Namespace) -> int:
         return fail(COMMAND, f"--mode {args.mode} draws the T5688's 768x512 screen; --size "
                     "is for truecolour")
     try:
-        lights = read_lights(args.lights) if args.lights is not None else None
+        w, h = args.size if args.mode == "truecolour" else (768, 512)
+        lights = (read_lights(args.lights, w * h * LIGHT_PIXEL_BYTES, f"at {w}x{h}")
+                  if args.lights is not None else None)
         scene = load_scene(args.motion, lights)
         views = select_views(read_views(args.views), scene, args.first, args.last,
                              str(args.views))

@@ -1,0 +1,127 @@
+"""Inputs that ask for more than their size: the bomb trial's rows (issue "every input has a
+budget"), each made at any scale so a test can trip the same check small and the slow test
+at the trial's size."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+
+def dense_mc(path: Path, level: int) -> Path:
+    """A macrocell of a full 2**level square in level - 2 lines (8192² at level 13)."""
+    lines = ["[M2] (bomb)", "#R B3/S23", "$".join(["********"] * 8) + "$"]
+    for lv in range(4, level + 1):
+        k = len(lines) - 2
+        lines.append(f"{lv} {k} {k} {k} {k}")
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def many_node_mc(path: Path, nodes: int) -> Path:
+    """One leaf and ``nodes`` level-4 node lines over it (the trial: 10^7, 100 MB)."""
+    with open(path, "w") as fh:
+        fh.write("[M2] (bomb)\n#R B3/S23\n**$\n")
+        fh.write("4 1 1 1 1\n" * nodes)
+    return path
+
+
+def many_leaf_mc(path: Path, leaves: int) -> Path:
+    """``leaves`` distinct 8 x 8 leaves of two rows each (the trial: 3x10^6, 57 MB) and the
+    nodes that place them side by side."""
+    with open(path, "w") as fh:
+        fh.write("[M2] (bomb)\n#R B3/S23\n")
+        for k in range(leaves):
+            a, b = k & 0xFF, (k >> 8) & 0xFF
+            row = lambda v: "".join("*" if v >> i & 1 else "." for i in range(8)) or "."  # noqa: E731
+            fh.write(f"{row(a | 1)}${row(b | 1)}$\n")
+        ids, level, nxt = list(range(1, leaves + 1)), 4, leaves + 1
+        while len(ids) > 1:
+            parents = []
+            for i in range(0, len(ids), 4):
+                quad = (ids[i:i + 4] + [0, 0, 0])[:4]
+                fh.write(f"{level} {quad[0]} {quad[1]} {quad[2]} {quad[3]}\n")
+                parents.append(nxt)
+                nxt += 1
+            ids, level = parents, level + 1
+    return path
+
+
+def dense_rle(path: Path, side: int) -> Path:
+    """An RLE of a full side x side square in a few bytes a row (the trial: 30000²)."""
+    with open(path, "w") as fh:
+        fh.write(f"x = {side}, y = {side}, rule = B3/S23\n")
+        row = f"{side}o$\n"
+        fh.write(row * (side - 1) + f"{side}o!\n")
+    return path
+
+
+def dense_cells(path: Path, side: int) -> Path:
+    """A plaintext .cells of a full side x side square (the trial: 8000², 64 MB)."""
+    with open(path, "w") as fh:
+        fh.write("!Name: bomb\n")
+        row = "O" * side + "\n"
+        for _ in range(side):
+            fh.write(row)
+    return path
+
+
+def many_point_kas(path: Path, points: int) -> Path:
+    """A KAS keyframe of one chain of ``points`` points (the trial: 10^7, 100 MB)."""
+    with open(path, "w") as fh:
+        fh.write(f"KAS keyframe 1\nchains 1\nchain section=0 points={points}\n")
+        block = "".join(f"{i % 500} {i % 300} 1\n" for i in range(1000))
+        for _ in range(points // 1000):
+            fh.write(block)
+        fh.write("".join(f"{i % 500} {i % 300} 1\n" for i in range(points % 1000)))
+        fh.write("end\n")
+    return path
+
+
+_HEADER = ('{"type": "header", "format": "camlab88-session", "version": 1, "argv": ["sigma", '
+           '"run", "--in", "x.sig", "--ticks", "4"], "headless": true, "hash_every": 10}\n')
+_END = ('{"type": "end", "frames": 0, "ticks": 1, "time": "0", "sha256": "' + "0" * 64 + '"}\n')
+
+
+def many_record_session(path: Path, records: int) -> Path:
+    """A session recording of ``records`` wire records (the trial: 4x10^6, 228 MB)."""
+    line = '{"type": "wire", "tick": 0, "dir": ">", "data": "eJwzBAAAMgAy"}\n'
+    with open(path, "w") as fh:
+        fh.write(_HEADER)
+        for _ in range(records // 10000):
+            fh.write(line * 10000)
+        fh.write(line * (records % 10000))
+        fh.write(_END)
+    return path
+
+
+def long_line_session(path: Path, size: int) -> Path:
+    """A session recording one of whose lines is ``size`` bytes long (the trial: 200 MB)."""
+    with open(path, "w") as fh:
+        fh.write(_HEADER)
+        fh.write('{"type": "file", "name": "x.sig", "sha256": "' + "0" * 64 + '", "data": "')
+        chunk = "A" * (1 << 20)
+        for _ in range(size >> 20):
+            fh.write(chunk)
+        fh.write('"}\n')
+        fh.write(_END)
+    return path
+
+
+def heavy_actors(path: Path, lathes: int, points: int) -> Path:
+    """Life's actor (state 1) of ``lathes`` lathes of ``points`` points each (the trial: 63
+    lathes of 511 points, inside the 64-part / 512-point limits; 483 KB)."""
+    profile = "  ".join(f"0.3 {k / points:.6f}" for k in range(points))
+    with open(path, "w") as fh:
+        fh.write("rules life\n\nactor 1 heavy\n  colour 200 200 200\n")
+        for _ in range(lathes):
+            fh.write(f"  lathe {profile}\n")
+        fh.write("end\n")
+    return path
+
+
+def many_lights(path: Path, count: int) -> Path:
+    """A renderer lights file of ``count`` lights (the trial: 200,000, 5 MB)."""
+    with open(path, "w") as fh:
+        for k in range(count):
+            fh.write(f"{k % 7 - 3} {k % 5 - 2} 2.5 0.001\n")
+    return path
