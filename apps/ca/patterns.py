@@ -226,14 +226,15 @@ def population(pattern: Pattern) -> int:
     return int(pattern.xs.size)
 
 
-def check_write(path: str, pattern: Pattern) -> None:
-    """Refuse (base.budget) a pattern whose file in ``path``'s format would need more
-    memory to write than the budget allows — before any cell is listed."""
+def check_write(path: str, pattern: Pattern, source: str = "") -> None:
+    """Refuse (base.budget) a pattern (read from ``source``) whose file in ``path``'s
+    format would need more memory to write than the budget allows — before any cell is
+    listed."""
     fmt = format_of(path)
     cells = population(pattern)
     need = cells * (WRITE_CELL_BYTES.get(fmt, 200) + 24) + \
         pattern.width * pattern.height * WRITE_BOX_BYTES.get(fmt, 0)
-    budget.check(path, need, f"writing its {cells:,} live cells as {fmt}")
+    budget.check(source or path, need, f"writing its {cells:,} live cells to {path} as {fmt}")
 
 
 # What running a pattern costs (ca run): a dense pattern's box as its reader checked it

@@ -75,25 +75,27 @@ def tile_colours(rules: object, states: set[int]) -> dict[int, tuple[int, int, i
     return {s: tuple(int(v) for v in pal[s]) for s in states}
 
 
-def check_frames(spec: FilmSpec, actors: ActorSet, timeline, lights: int, look: Look) -> None:
+def check_frames(spec: FilmSpec, actors: ActorSet, counts: list[dict[int, int]], lights: int,
+                 look: Look) -> None:
     """Refuse (base.budget) a film whose busiest frame — a generation's actors and the next
     one's, as a change between them shows both — would need more memory than the budget
-    allows, before any frame is rendered."""
+    allows, before any frame is rendered. ``counts``: live cells by state, a generation."""
     from camlab88.apps.actors.render import frame_need
     from camlab88.base import budget
 
-    counts = []
-    for g in timeline.generations:
-        states, k = np.unique(np.asarray(g.states, dtype=np.int64), return_counts=True)
-        counts.append(dict(zip(states.tolist(), k.tolist())))
     worst, what = 0, ""
-    for a, b in zip(counts, counts[1:] or counts):
+    for a, b in zip(counts, counts[1:] or [{}]):
         both = {s: a.get(s, 0) + b.get(s, 0) for s in a.keys() | b.keys()}
         need, about = frame_need(actors, both, lights, look)
         if need > worst:
             worst, what = need, about
     source = " + ".join(str(p) for p in (spec.actors, spec.lights) if p) or str(spec.pattern)
     budget.check(source, worst, what)
+
+
+def _counts(states: np.ndarray) -> dict[int, int]:
+    found, k = np.unique(np.asarray(states, dtype=np.int64), return_counts=True)
+    return dict(zip(found.tolist(), k.tolist()))
 
 
 def build(spec: FilmSpec) -> CaFilm:
@@ -125,6 +127,9 @@ def build(spec: FilmSpec) -> CaFilm:
 
         lights = read_lights(spec.lights, look.shadow_map ** 2 * 8, "with their shadow maps")
     engine = _engine(spec)
+    n_lights = len(lights.positions) if lights is not None else 4
+    # generation 0 first (no generation run yet), then the busiest pair of the film
+    check_frames(spec, actors, [_counts(engine.ts)], n_lights, look)
     timeline = record(engine, spec.generations)
     if lights is None:
         lights = canopy_over(timeline.floor)
@@ -132,7 +137,8 @@ def build(spec: FilmSpec) -> CaFilm:
              if camera_text is not None else auto_views(timeline.floor, spec.generations))
     seen = {int(s) for g in timeline.generations for s in g.states.tolist()}
     tiles = tile_colours(engine.rules, seen - set(actors.actors))
-    check_frames(spec, actors, timeline, len(lights.positions), look)
+    check_frames(spec, actors, [_counts(g.states) for g in timeline.generations],
+                 len(lights.positions), look)
     return CaFilm(actors, timeline, tiles, lights, views, spec.per_generation, glide, look)
 
 

@@ -18,8 +18,9 @@ class Run:
     status: int
     stderr: str
     stdout: str
-    seconds: float
+    seconds: float  # wall time
     peak_mb: float
+    cpu: float  # user + system seconds of the child: what it cost, whatever the load
 
 
 def camlab88(cwd: Path, *words: str, budget: str | None = None, timeout: float = 300) -> Run:
@@ -47,4 +48,5 @@ def camlab88(cwd: Path, *words: str, budget: str | None = None, timeout: float =
         child.returncode = os.waitstatus_to_exitcode(wstatus)  # Popen must not wait again
         out.seek(0)
         err.seek(0)
-        return Run(child.returncode, err.read(), out.read(), seconds, usage.ru_maxrss / 1024)
+        return Run(child.returncode, err.read(), out.read(), seconds, usage.ru_maxrss / 1024,
+                   usage.ru_utime + usage.ru_stime)

@@ -9,10 +9,11 @@ import sys
 
 def _convert(args: argparse.Namespace) -> int:
     from camlab88.apps.ca import library
-    from camlab88.apps.ca.patterns import PatternError, read_pattern, write_pattern
+    from camlab88.apps.ca.patterns import PatternError, check_write, read_pattern, write_pattern
 
     try:
         pattern = read_pattern(library.pattern_path(args.source))
+        check_write(args.dest, pattern, args.source)  # named by the input that costs it
         write_pattern(args.dest, pattern)
     except (FileNotFoundError, PatternError, ValueError) as exc:
         print(f"camlab88 ca convert: {exc}", file=sys.stderr)

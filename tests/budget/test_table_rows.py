@@ -1,0 +1,190 @@
+"""Every row of the bomb trial (inputs inside their formats' limits that grew past a
+gigabyte) is refused by the memory budget before the work: one line naming the input, what
+it would need and how to raise the limit, exit status 2, within 5 s of CPU time and 400 MB
+of peak RSS (both measured in the child, os.wait4; CPU time rather than wall time because
+the test machine is shared: at load 17 a bare ``ca run`` of 100 cells took 4.8 s of wall
+time; the wall time is bounded too, at 60 s, so a hang still fails). Each row twice: small, against a small budget
+(``CAMLAB88_BUDGET``) so it trips the same check in a fraction of the time, and at the
+trial's size against the default budget (marked slow)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
+
+from tests.budget import bombs
+from tests.budget.measure import camlab88
+
+REFUSE_SECONDS = 5.0  # CPU
+WALL_SECONDS = 60.0
+PEAK_MB = 400.0
+NOTICE = "camlab88: compiling "  # numba's first-compile notice (base/kernel_notice.py)
+SNOOKER = Path(__file__).resolve().parents[1] / "data" / "snooker_camera"
+
+
+@dataclass(frozen=True)
+class Row:
+    name: str
+    make: Callable[[Path, bool], str]  # (directory, real size?) -> the input's file name
+    words: tuple[str, ...]  # the command, {f} the input
+    check: str  # the words of the budget check it must trip
+    small_budget: str
+
+
+def _mc_dense(d: Path, real: bool) -> str:
+    bombs.dense_mc(d / "dense.mc", 13 if real else 10)
+    return "dense.mc"
+
+
+def _mc_nodes(d: Path, real: bool) -> str:
+    bombs.many_node_mc(d / "nodes.mc", 10**7 if real else 10**4)
+    return "nodes.mc"
+
+
+def _mc_leaves(d: Path, real: bool) -> str:
+    bombs.many_leaf_mc(d / "leaves.mc", 3 * 10**6 if real else 5000)
+    return "leaves.mc"
+
+
+def _rle(d: Path, real: bool) -> str:
+    bombs.dense_rle(d / "dense.rle", 30000 if real else 2000)
+    return "dense.rle"
+
+
+def _cells(d: Path, real: bool) -> str:
+    bombs.dense_cells(d / "dense.cells", 8000 if real else 500)
+    return "dense.cells"
+
+
+def _kas(d: Path, real: bool) -> str:
+    bombs.many_point_kas(d / "points.kas", 10**7 if real else 10**4)
+    return "points.kas"
+
+
+def _records(d: Path, real: bool) -> str:
+    bombs.many_record_session(d / "records.session", 4 * 10**6 if real else 40000)
+    return "records.session"
+
+
+def _long_line(d: Path, real: bool) -> str:
+    bombs.long_line_session(d / "line.session", (200 if real else 4) << 20)
+    return "line.session"
+
+
+def _actors(d: Path, real: bool) -> str:
+    bombs.heavy_actors(d / "heavy.actors", *((63, 511) if real else (2, 100)))
+    return "heavy.actors"
+
+
+def _lights(d: Path, real: bool) -> str:
+    bombs.many_lights(d / "many.lights", 200000 if real else 1000)
+    return "many.lights"
+
+
+_FILM = ("ca", "film", "life", "glider", "--generations", "1", "--frames-per-generation", "1",
+         "--size", "160x120", "--out", "film.gif")
+
+ROWS = [
+    Row("dense 8192² macrocell, ca convert", _mc_dense, ("ca", "convert", "{f}", "out.rle"),
+        "live cells to out.rle as rle would need", "100M"),
+    Row("macrocell of 10^7 node lines", _mc_nodes, ("ca", "convert", "{f}", "out.rle"),
+        "lines would need", "2M"),
+    Row("macrocell of 3x10^6 leaves", _mc_leaves, ("ca", "convert", "{f}", "out.rle"),
+        "lines would need", "1M"),
+    Row("dense RLE 30000², ca run", _rle, ("ca", "run", "--rules", "life", "--pattern", "{f}",
+                                            "--generations", "1"), "grid would need", "8M"),
+    Row("dense .cells 8000², ca run", _cells, ("ca", "run", "--rules", "life", "--pattern",
+                                                 "{f}", "--generations", "1"),
+        "live cells would need", "4M"),
+    Row(".kas of 10^7 points, kas inbetween", _kas,
+        ("kas", "inbetween", "{f}", "{f}", "--count", "3", "--out", "out.kas"),
+        "lines would need", "4M"),
+    Row("recording of 4x10^6 records, replay", _records, ("replay", "{f}"),
+        "records would need", "8M"),
+    Row("recording with a 200 MB line, replay", _long_line, ("replay", "{f}"),
+        "-byte line would need", "16M"),
+    Row("an actor of 63 lathes x 511 points, ca film", _actors,
+        (*_FILM, "--actors", "{f}"), "frame of", "16M"),
+    Row("200,000 lights, ca film", _lights, (*_FILM, "--lights", "{f}"),
+        "lights with their shadow maps would need", "16M"),
+]
+
+
+@pytest.fixture(scope="module")
+def warm(tmp_path_factory: pytest.TempPathFactory) -> None:
+    """numba's cache is fresh for a test run (tests/conftest.py): compile the CA kernels the
+    refusals pass through (the RLE scanner, the engine ca film runs first) before timing."""
+    d = tmp_path_factory.mktemp("warm")
+    (d / "warm.rle").write_text("x = 4, y = 3000\n" + "b3o$" * 2999 + "b3o!\n")
+    assert camlab88(d, "ca", "run", "--rules", "life", "--pattern", "warm.rle",
+                    "--generations", "1").status == 0
+
+
+def _refused(tmp_path: Path, row: Row, real: bool) -> None:
+    name = row.make(tmp_path, real)
+    words = [w.replace("{f}", name) for w in row.words]
+    run = camlab88(tmp_path, *words, budget=None if real else row.small_budget, timeout=120)
+    lines = [ln for ln in run.stderr.splitlines() if ln.strip() and not ln.startswith(NOTICE)]
+    assert run.status == 2, run.stderr
+    assert len(lines) == 1, run.stderr
+    line = lines[0]
+    assert "Traceback" not in run.stderr and "Error" not in line.split(":")[0]
+    assert name in line and row.check in line, line
+    assert "the memory budget is" in line and "--budget SIZE" in line, line
+    assert run.cpu <= REFUSE_SECONDS and run.seconds <= WALL_SECONDS, (run, line)
+    assert run.peak_mb <= PEAK_MB, (run.peak_mb, line)
+    assert not any(p.name.startswith("out.") or p.name == "film.gif" for p in tmp_path.iterdir())
+
+
+@pytest.mark.parametrize("row", ROWS, ids=[r.name for r in ROWS])
+def test_small_input_trips_the_same_check(tmp_path: Path, row: Row, warm: None) -> None:
+    _refused(tmp_path, row, real=False)
+
+
+@pytest.mark.slow
+@pytest.mark.xdist_group("budget-real-size")  # one 100-230 MB bomb at a time
+@pytest.mark.parametrize("row", ROWS, ids=[r.name for r in ROWS])
+def test_real_size_input_is_refused(tmp_path: Path, row: Row, warm: None) -> None:
+    try:
+        _refused(tmp_path, row, real=True)
+    finally:
+        for p in tmp_path.iterdir():
+            p.unlink()
+
+
+def test_snooker_render_refuses_lights_times_pixels(tmp_path: Path) -> None:
+    """The trial's lights row: one 160x120 snooker render (a light's terms at every pixel)."""
+    (tmp_path / "shot.checkpoint").write_bytes((SNOOKER / "pink_shot.checkpoint").read_bytes())
+    (tmp_path / "t.ccl").write_bytes((SNOOKER / "thesis_example.ccl").read_bytes())
+    assert camlab88(tmp_path, "snooker", "ccl", "t.ccl", "shot.checkpoint", "--out",
+                    "e.views").status == 0
+    bombs.many_lights(tmp_path / "many.lights", 200000)
+    run = camlab88(tmp_path, "snooker", "render", "shot.checkpoint", "e.views", "--frames",
+                   "tc/", "--mode", "truecolour", "--size", "160x120", "--lights",
+                   "many.lights", "--first", "1", "--last", "1")
+    assert run.status == 2 and run.stderr.count("\n") == 1, run.stderr
+    assert "many.lights: up to 200,001 lights at 160x120 would need" in run.stderr
+    assert run.cpu <= REFUSE_SECONDS and run.peak_mb <= PEAK_MB, run
+    assert not (tmp_path / "tc").exists() or not any((tmp_path / "tc").iterdir())
+
+
+def test_a_raised_budget_lets_the_same_input_through(tmp_path: Path) -> None:
+    """The option the refusal names works: the small dense .cells runs under --budget."""
+    bombs.dense_cells(tmp_path / "dense.cells", 200)
+    words = ("ca", "run", "--rules", "life", "--pattern", "dense.cells", "--generations", "0")
+    assert camlab88(tmp_path, *words, budget="1M").status == 2
+    run = camlab88(tmp_path, "--budget", "64M", *words, budget="1M")
+    assert run.status == 0, run.stderr
+
+
+def test_a_bad_budget_is_one_line(tmp_path: Path) -> None:
+    run = camlab88(tmp_path, "--budget", "lots", "ca", "run", "--help")
+    assert run.status == 2 and "--budget" in run.stderr and run.stderr.count("\n") == 1
+    bombs.dense_cells(tmp_path / "d.cells", 10)
+    run = camlab88(tmp_path, "ca", "run", "--rules", "life", "--pattern", "d.cells",
+                   "--generations", "0", budget="many")
+    assert run.status == 2 and "CAMLAB88_BUDGET='many'" in run.stderr, run.stderr
+    assert run.stderr.count("\n") == 1
