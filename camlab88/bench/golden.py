@@ -7,6 +7,24 @@ from pathlib import Path
 import numpy as np
 
 
+def golden_path(directory: Path, name: str) -> Path:
+    """``directory/name.png``, refused (ValueError) unless it stays inside ``directory``:
+    ``name`` is one plain file name (no ``/``, ``\\``, ``..``, no absolute or drive name),
+    and the file, if it is a symbolic link, does not lead out of the directory — so that
+    ``--camlab88-regen`` never writes (or replaces through a link) a file elsewhere."""
+    bad = (not name or name in (".", "..") or "/" in name or "\\" in name or "\0" in name
+           or ":" in name or Path(name).is_absolute())
+    if bad:
+        raise ValueError(f"camlab88_golden: {name!r} is not a plain file name; a golden "
+                         f"image is named inside its directory {directory}")
+    path = Path(directory) / f"{name}.png"
+    base = Path(directory).resolve()
+    if path.resolve().parent != base:
+        raise ValueError(f"camlab88_golden: {path} leads out of the golden directory {base} "
+                         f"(to {path.resolve()}): a golden image is a file of that directory")
+    return path
+
+
 def compare_golden(screen: np.ndarray, path: Path, regen: bool) -> None:
     """AssertionError naming the first differing pixel (or the missing file)."""
     from PIL import Image

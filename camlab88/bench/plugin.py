@@ -78,13 +78,14 @@ def assert_no_protocol_errors() -> Callable[[Any], None]:
 def camlab88_golden(request: pytest.FixtureRequest) -> Callable[..., None]:
     """``camlab88_golden(screen, name, directory=None)``: the screen must equal
     ``<directory>/<name>.png`` (default: ``golden/`` beside the test file), exactly;
-    ``pytest --camlab88-regen`` writes it instead."""
+    ``pytest --camlab88-regen`` writes it instead — only there: a name with ``/`` or
+    ``..``, an absolute name, or a symbolic link out of the directory is refused."""
     regen = bool(request.config.getoption(REGEN_OPTION, default=False))
     here = Path(str(request.node.fspath)).parent / "golden"
 
     def check(screen: Any, name: str, directory: str | os.PathLike[str] | None = None) -> None:
-        from camlab88.bench.golden import compare_golden
+        from camlab88.bench.golden import compare_golden, golden_path
 
-        compare_golden(screen, Path(directory or here) / f"{name}.png", regen)
+        compare_golden(screen, golden_path(Path(directory or here), name), regen)
 
     return check
