@@ -182,6 +182,22 @@ def _kas_paint() -> None:
     _put("kas-paint-ops", "touch_up.ops", opsfile.ops_text(own))
 
 
+# a tablet tape's entries of every kind (a session's T record; protocols.tablets.tape)
+_SMALL_TAPE = (b'[[0,"calibration",null],[0,"open",{"kind":"serial","name":"emulated:summa-mm",'
+               b'"protocol":"summa-mm","options":{},"model":{"name":"Summagraphics MM",'
+               b'"max_x":6000,"max_y":6000,"lines_per_inch":500.0,"pressure_max":null,'
+               b'"tilt_range":null,"origin":"upper-left","buttons":4},"replies":[],'
+               b'"parmrk":true}],[1,"raw","f80000000000"],[2,"flush",null],[3,"idle",1],'
+               b'[4,"lost","unplugged"]]')
+
+
+def _tapes() -> None:
+    """A tablet tape recorded by ``kas edit --tablet emulated:summa-mm --record`` (its T
+    records' entries, tests/data/tablets) and a small one with every kind of entry."""
+    _copy("tablet-tape", DATA / "tablets" / "summa_kas_edit.tape")
+    _put("tablet-tape", "every_kind.tape", _SMALL_TAPE)
+
+
 def _sessions() -> None:
     """Two recordings camlab88 made (tests/data/sessions, the small ones) and one written by
     protocols.session.format with every record type (input events too)."""
@@ -196,7 +212,8 @@ def _sessions() -> None:
         ["ca", "program", "--headless", "--events", "e.events"], 2, True,
         {"e.events": b"key space\nwait 1\n"},
         [(3, Fraction(3, 25), {"kind": "KeyDown", "key": "space"})],
-        [(3, ">", b"\x1b[H hello"), (4, "<", b"\x11"), (4, "+", b"\x13")],
+        [(3, ">", b"\x1b[H hello"), (4, "<", b"\x11"), (4, "+", b"\x13"),
+         (4, "T", _SMALL_TAPE)],
         [ScreenHash(2, 4, Fraction(4, 25), sha)], ScreenHash(3, 5, Fraction(1, 5), sha), 5)
     _put("session-recording", "every_record.session", dumps(rec))
 
@@ -234,7 +251,7 @@ def main() -> int:
     if CORPUS.exists():
         shutil.rmtree(CORPUS)
     for make in (_rainbow, _link_and_sigma, _kas, _snooker, _ca, _tablets, _scripts_and_views,
-                 _kas_paint, _sessions, _states, _cli_states):
+                 _kas_paint, _tapes, _sessions, _states, _cli_states):
         make()
     for folder in sorted(CORPUS.iterdir()):
         files = list(folder.iterdir())

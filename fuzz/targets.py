@@ -235,6 +235,31 @@ def _session(data: bytes) -> object:
     return _via_file(data, read, ".session")
 
 
+def _tape_errors() -> tuple[type[BaseException], ...]:
+    from camlab88.protocols.tablets.sources import SourceLost
+    from camlab88.protocols.tablets.tape import TapeError
+
+    return TapeError, SourceLost  # a "lost" entry replays as the device going away
+
+
+def _tape(data: bytes) -> object:
+    """A session's T record replayed as ``replay`` does: the entries checked, each opening's
+    decoder rebuilt and fed the recorded bytes poll by poll."""
+    from camlab88.protocols.tablets.tape import Tape, TapeSource, decoder_for
+
+    tape = Tape.from_chunks([data], NAME)
+    source = None
+    events = []
+    for poll in sorted(tape.by_poll):
+        tape.poll = poll
+        opened = tape.opens_now()
+        if opened is not None:
+            source = TapeSource(tape, opened, decoder_for)
+        if source is not None:
+            events += source.read()
+    return tape.calibration(), events
+
+
 def _actors_error() -> type[BaseException]:
     from camlab88.apps.actors.model import ActorFileError
 
@@ -317,6 +342,7 @@ TARGETS: dict[str, Target] = {t.name: t for t in (
     # the two below accept only their format's own error (every refusal names file:line:col)
     Target("kas-paint-ops", _kas_ops, (_kas_paint_ops(),)),
     Target("session-recording", _session, (_session_error(),)),
+    Target("tablet-tape", _tape, _tape_errors()),
     Target("ca-actors", _actors, (_actors_error(),)),
     Target("machine-state", _machine_state),
     Target("program-state", _program_state),

@@ -165,7 +165,15 @@ class _Reader:
     def _wire(self, obj: dict[str, Any]) -> None:
         if obj["dir"] not in (">", "<", "+", "-", "T"):
             raise self.fail(f"wire direction {obj['dir']!r}; expected >, <, +, - or T")
-        self.rec.wire.append((self.tick(obj), obj["dir"], self.data(obj["data"])))
+        data = self.data(obj["data"])
+        if obj["dir"] == "T":  # a tablet tape's entries: checked like every other record
+            from camlab88.protocols.tablets.tape import TapeError, parse_chunk
+
+            try:
+                parse_chunk(data, "tablet tape")
+            except TapeError as exc:
+                raise self.fail(str(exc)) from None
+        self.rec.wire.append((self.tick(obj), obj["dir"], data))
 
     def _hash(self, obj: dict[str, Any]) -> None:
         frame, every = obj["frame"], self.rec.hash_every

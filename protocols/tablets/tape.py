@@ -29,6 +29,90 @@ class TapeError(ValueError):
     """A tablet tape that cannot be replayed (the message says which entry and why)."""
 
 
+KINDS = ("open", "raw", "flush", "lost", "idle", "calibration")
+MAX_DEPTH = 8  # an entry is [poll, kind, payload]; an opening's model nests two more levels
+MAX_POLL = 10**12  # as a session recording's ticks
+MAX_RAW = 1 << 20  # hex digits of one read: a serial read or one HID report is far less
+MAX_TEXT = 4096  # a lost device's message, a name
+
+
+def _payload_fault(kind: str, payload: Any) -> str | None:
+    """Why ``payload`` cannot be a ``kind`` entry's (None: it can)."""
+    if kind == "raw":
+        if not isinstance(payload, str) or len(payload) > MAX_RAW:
+            return f"a raw entry's payload is hex text of at most {MAX_RAW} digits"
+        try:
+            bytes.fromhex(payload)
+        except ValueError:
+            return "a raw entry's payload is not hex"
+        return None
+    if kind == "flush":
+        return None if payload is None else "a flush entry has no payload (null)"
+    if kind == "lost":
+        return None if isinstance(payload, str) and len(payload) <= MAX_TEXT else \
+            "a lost entry's payload is the message (text)"
+    if kind == "idle":
+        return None if type(payload) is int and 0 <= payload <= 2 else \
+            "an idle entry's payload is a silence level 0, 1 or 2"
+    if kind == "open":
+        return _open_fault(payload)
+    return None if payload is None or isinstance(payload, dict) else \
+        "a calibration entry's payload is an object or null (none)"
+
+
+def _open_fault(opened: Any) -> str | None:
+    """Why ``opened`` is not a recorded opening (describe_open's shape)."""
+    if not isinstance(opened, dict) or not isinstance(opened.get("name", ""), str):
+        return "an open entry's payload is an object with a name"
+    if opened.get("kind") == "hid":
+        ids = (opened.get("vid"), opened.get("pid"))
+        descriptor = opened.get("descriptor")
+        if not all(type(v) is int and 0 <= v <= 0xFFFF for v in ids) or not (
+                descriptor is None or isinstance(descriptor, str)):
+            return "a HID opening has vid and pid 0..65535 and a hex descriptor or null"
+        return None
+    if opened.get("kind") == "serial":
+        options, model, replies = (opened.get(k) for k in ("options", "model", "replies"))
+        if not (isinstance(opened.get("protocol"), str) and isinstance(model, dict)
+                and isinstance(options, dict | None) and isinstance(replies, list | None)
+                and all(isinstance(r, str) for r in replies or [])
+                and isinstance(opened.get("parmrk", False), bool)):
+            return ("a serial opening has a protocol (text), options (an object), a model "
+                    "(an object), replies (texts) and parmrk (true or false)")
+        return None
+    return f"an open entry's kind is 'hid' or 'serial', not {str(opened.get('kind'))[:20]!r}"
+
+
+def check_entries(entries: Any, where: str) -> list[list[Any]]:
+    """``entries`` if every one is ``[poll, kind, payload]`` of a known kind with a payload
+    of its type; TapeError naming the entry otherwise."""
+    if not isinstance(entries, list):
+        raise TapeError(f"{where}: a record is not a list of entries")
+    for n, entry in enumerate(entries):
+        if not (isinstance(entry, list) and len(entry) == 3 and type(entry[0]) is int
+                and 0 <= entry[0] <= MAX_POLL and isinstance(entry[1], str)):
+            raise TapeError(f"{where}: entry {n + 1} is not [poll, kind, payload] (a poll "
+                            f"0..{MAX_POLL})")
+        if entry[1] not in KINDS:
+            raise TapeError(f"{where}: entry {n + 1}: unknown kind {entry[1][:20]!r}; one of "
+                            f"{', '.join(KINDS)}")
+        fault = _payload_fault(entry[1], entry[2])
+        if fault is not None:
+            raise TapeError(f"{where}: entry {n + 1}: {fault}")
+    return entries
+
+
+def parse_chunk(chunk: bytes, where: str = "tablet tape") -> list[list[Any]]:
+    """One ``T`` record's entries, checked (JSON nested at most MAX_DEPTH deep)."""
+    from camlab88.base.textinput import loads_json
+
+    try:
+        text = chunk.decode("utf-8")
+    except UnicodeDecodeError:
+        raise TapeError(f"{where}: not UTF-8 text") from None
+    return check_entries(loads_json(text, where, TapeError, max_depth=MAX_DEPTH), where)
+
+
 class TapeRecorder:
     """Collects entries; ``take()`` hands out the new ones as bytes (for a session record)."""
 
@@ -76,7 +160,7 @@ def decoder_for(opened: dict[str, Any]) -> Any:
                                     str(opened.get("name", "tablet tape")))
         if opened.get("kind") == "serial":
             return SerialTapeDecoder(opened)
-    except (KeyError, TypeError, ValueError) as exc:
+    except (KeyError, TypeError, ValueError, AttributeError) as exc:
         raise TapeError(f"tablet tape: cannot rebuild the decoder: {exc}") from None
     raise TapeError(f"tablet tape: unknown source kind {opened.get('kind')!r}")
 
@@ -129,10 +213,7 @@ class Tape:
     def __init__(self, entries: list[list[Any]], where: str = "tablet tape") -> None:
         self.where = where
         self.by_poll: dict[int, list[tuple[str, Any]]] = {}
-        for n, entry in enumerate(entries):
-            if not (isinstance(entry, list) and len(entry) == 3 and isinstance(entry[0], int)
-                    and isinstance(entry[1], str)):
-                raise TapeError(f"{where}: entry {n + 1} is not [poll, kind, payload]")
+        for entry in check_entries(entries, where):
             self.by_poll.setdefault(entry[0], []).append((entry[1], entry[2]))
         self.poll = 0
 
@@ -140,13 +221,7 @@ class Tape:
     def from_chunks(cls, chunks: list[bytes], where: str = "tablet tape") -> Tape:
         entries: list[list[Any]] = []
         for chunk in chunks:
-            try:
-                more = json.loads(chunk)
-            except (ValueError, TypeError) as exc:
-                raise TapeError(f"{where}: not JSON: {exc}") from None
-            if not isinstance(more, list):
-                raise TapeError(f"{where}: a record is not a list of entries")
-            entries += more
+            entries += parse_chunk(chunk, where)
         return cls(entries, where)
 
     def calibration(self) -> tuple[str, tuple[int, int], tuple[int, int]] | None:

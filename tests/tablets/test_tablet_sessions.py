@@ -128,6 +128,12 @@ def test_rainbow_run_with_a_hidraw_tablet_records_and_replays_without_it(
     b'{"poll":0}',  # a record that is not a list of entries
     b"not json",
     b'[[1e400,"raw","00"]]',
+    # the bomb trial's four: a raw payload that is a number or null, an idle level 9, a tape
+    # nested 100,000 deep (TypeError, IndexError and RecursionError before)
+    b'[[0,"raw",5]]',
+    b'[[0,"raw",null]]',
+    b'[[0,"idle",9]]',
+    b"[" * 100000 + b"]" * 100000,
 ])
 def test_a_damaged_tablet_tape_is_refused_in_one_line(tmp_path: Path, tape: bytes) -> None:
     """A recording is data: whatever its tablet tape says, the replay ends with a message
