@@ -67,6 +67,17 @@ def naming_user_path(path: str | os.PathLike[str], tmp: str | None = None) -> It
         raise type(exc)(exc.errno, exc.strerror or str(exc), os.fspath(path)) from None
 
 
+def place_fault(target: Path) -> str | None:
+    """Why no file can be made at ``target``'s place (docs/exit_status.md, the one output
+    rule): a file in the way of its directory, named as such, or a directory that does not
+    exist (never created for an output); None when its directory is there."""
+    for parent in reversed(target.parents):
+        if parent.exists() and not parent.is_dir():
+            return f"{parent} is a file in the way, not a directory"
+    parent = target.parent if str(target.parent) else Path(".")
+    return None if parent.is_dir() else f"no such directory {parent}"
+
+
 def temp_beside(target: Path, suffix: str = "") -> tuple[int, str]:
     """A new temporary file beside ``target``, named ``.<name>.<pid>.<random>.tmp<suffix>``
     so that ``sweep_stale`` removes it if this writer is killed; errors name ``target``."""
@@ -78,7 +89,8 @@ def temp_beside(target: Path, suffix: str = "") -> tuple[int, str]:
             return tempfile.mkstemp(prefix=f".{target.name}.{os.getpid()}.",
                                     suffix=f".tmp{suffix}", dir=str(target.parent) or ".")
         except OSError as exc:  # mkstemp names its random file: name the user's
-            raise type(exc)(exc.errno, exc.strerror, None) from None
+            why = place_fault(target) if exc.errno in (errno.ENOENT, errno.ENOTDIR) else None
+            raise type(exc)(exc.errno, why or exc.strerror, None) from None
 
 
 def commit(tmp: str | os.PathLike[str], target: Path, sync_dir: bool = True) -> None:
@@ -143,6 +155,47 @@ def fsync_dir(folder: Path) -> None:
         os.close(fd)
 
 
+# How long a write waits for a FIFO's reader (a named pipe nobody reads blocked for ever):
+# CAMLAB88_FIFO_WAIT seconds, default 10
+FIFO_WAIT = 10.0
+_POLL = 0.05
+
+
+def fifo_wait() -> float:
+    text = os.environ.get("CAMLAB88_FIFO_WAIT", "")
+    try:
+        wait = float(text) if text else FIFO_WAIT
+    except ValueError:
+        return FIFO_WAIT
+    return wait if 0 <= wait <= 86400 else FIFO_WAIT
+
+
+def open_into(target: Path, path: str | os.PathLike[str], mode: str = "wb",
+              encoding: str | None = None, newline: str | None = None) -> IO:
+    """``target`` (a device or FIFO) opened for writing in place. A FIFO is opened only
+    once a reader has it open, waited for at most ``fifo_wait()`` seconds; then
+    ``OSError(ENXIO, 'no reader opened this FIFO in N s', path)`` — one line, not a hang."""
+    if not stat.S_ISFIFO(os.stat(target).st_mode):
+        return open(target, mode, encoding=encoding, newline=newline)
+    import time
+
+    wait = fifo_wait()
+    deadline = time.monotonic() + wait
+    while True:
+        try:
+            fd = os.open(target, os.O_WRONLY | os.O_NONBLOCK)
+            break
+        except OSError as exc:
+            if exc.errno != errno.ENXIO:  # ENXIO: no reader yet
+                raise
+            if time.monotonic() >= deadline:
+                raise OSError(errno.ENXIO, f"no reader opened this FIFO in {wait:g} s "
+                              "(CAMLAB88_FIFO_WAIT)", os.fspath(path)) from None
+            time.sleep(_POLL)
+    os.set_blocking(fd, True)  # a reader is there: writes wait for it as a pipe's do
+    return os.fdopen(fd, mode, encoding=encoding, newline=newline)
+
+
 @contextmanager
 def atomic_output(path: str | os.PathLike[str], mode: str = "wb",
                   encoding: str | None = None, newline: str | None = None) -> Iterator[IO]:
@@ -151,7 +204,7 @@ def atomic_output(path: str | os.PathLike[str], mode: str = "wb",
     is ``.<name>.<pid>.<random>.tmp``, so a later write sweeps up one a killed writer left."""
     target, into = output_target(path)
     if into:  # a device or FIFO: written into, in place
-        with naming_user_path(path), open(target, mode, encoding=encoding, newline=newline) as fh:
+        with naming_user_path(path), open_into(target, path, mode, encoding, newline) as fh:
             yield fh
         return
     fd, tmp = temp_beside(target)
@@ -181,8 +234,9 @@ def atomic_path(path: str | os.PathLike[str]) -> Iterator[Path]:
     with the same suffix; when the block ends it is fsynced and renamed over ``path``, on
     any error removed. Killed writers' leftovers are swept as in ``atomic_output``."""
     target, into = output_target(path)
-    if into:  # a device or FIFO: the writer opens it by name and writes into it
-        with naming_user_path(path):
+    if into:  # a device or FIFO: the writer opens it by name and writes into it (a FIFO
+        # once a reader is there: held open meanwhile, so the writer's open does not wait)
+        with naming_user_path(path), open_into(target, path):
             yield target
         return
     fd, tmp = temp_beside(target, target.suffix)
@@ -212,7 +266,7 @@ class AtomicBatch:
     def add(self, path: str | os.PathLike[str], data: bytes) -> None:
         target, into = output_target(path)
         if into:
-            with naming_user_path(path), open(target, "wb") as fh:
+            with naming_user_path(path), open_into(target, path) as fh:
                 fh.write(data)
             return
         fd, tmp = temp_beside(target)

@@ -243,7 +243,7 @@ def _command(words: list[str]) -> str:
 
 # what a full disk, a read-only mount or a directory in the way does to a writer
 _WRITE_FAULTS = {errno.ENOSPC, errno.EDQUOT, errno.EROFS, errno.EISDIR, errno.ENOTDIR,
-                 errno.EACCES, errno.EPERM, errno.EFBIG, errno.EIO}
+                 errno.EACCES, errno.EPERM, errno.EFBIG, errno.EIO, errno.ENXIO}
 
 
 def _write_fault(words: list[str], exc: OSError) -> int:

@@ -57,15 +57,15 @@ def add_control_options(p: argparse.ArgumentParser, speed_flag: bool = True) -> 
 def controls_from_args(args: argparse.Namespace, command: str, headless: bool) -> Controls:
     """Controls from the flags (absent flags: the defaults); outputs checked now."""
     from camlab88.emulator.harness.control_options import Controls
-    from camlab88.runopts import check_output
+    from camlab88.runopts import check_output, check_output_dir
 
     c = Controls(speed=getattr(args, "speed", None), video=getattr(args, "video", None),
                  inspect=bool(getattr(args, "inspect", False)),
                  inspect_out=getattr(args, "inspect_out", None))
     if c.video is not None:
         check_output(command, c.video, "write the video")
-    if c.inspect_out is not None and c.inspect_out.exists() and not c.inspect_out.is_dir():
-        raise SystemExit(f"{command}: --inspect-out {c.inspect_out}: not a directory")
+    if c.inspect_out is not None:
+        check_output_dir(command, Path(c.inspect_out), "write the inspector's frames to")
     if c.inspect and headless:
         print(f"{command}: --inspect shows a panel in the window; headless, "
               "--inspect-out DIR writes the panels", file=sys.stderr)

@@ -30,5 +30,10 @@ def run_film(command: str, inputs: Iterable[str | Path | None], film: Callable[[
     except CclErrors as exc:
         print(exc, file=sys.stderr)
         return fail(command, "the camera script has errors; nothing rendered")
+    except OSError as exc:  # the inputs were found and the outputs checked: a write fault
+        # during the render is the work failing (docs/exit_status.md: status 1)
+        if not isinstance(exc, refusals):
+            raise
+        return fail(command, exc, 2 if isinstance(exc, FileNotFoundError) else 1)
     except refusals as exc:
         return fail(command, exc)

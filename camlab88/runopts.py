@@ -77,6 +77,10 @@ def run_options(args: argparse.Namespace, command: str, can_headless: str | None
     record = getattr(args, "record", None)
     if record is not None:
         _check_writable(command, Path(record), "record to")
+    if getattr(args, "screenshot", None) is not None and active is None:
+        check_output(command, Path(args.screenshot), "save the screenshot to", (".png",))
+    if getattr(args, "frames", None) is not None and active is None:
+        check_output_dir(command, Path(args.frames))
     from camlab88.control_flags import controls_from_args
     from camlab88.stateopts import state_options
 
@@ -100,28 +104,61 @@ def _check_writable(command: str, path: Path, doing: str) -> None:
     check_output(command, path, doing)
 
 
-def check_output(command: str, path: Path, doing: str = "write") -> None:
-    """Refuse at the start, not after the work, an output that cannot be written: a
-    directory, or a file in a directory that is missing, read-only or not ours. A device
-    or FIFO is written into (base.atomicfile), so only it must be writable."""
+def _place(command: str, path: Path, doing: str) -> None:
+    """The one output rule's first half (docs/exit_status.md): the directory an output
+    goes in must exist (it is never created), a file in the way is named as such."""
+    from camlab88.base.atomicfile import place_fault
+
+    why = place_fault(path)
+    if why is not None:
+        raise SystemExit(f"{command}: cannot {doing} {path}: {why}")
+
+
+def check_output(command: str, path: Path, doing: str = "write",
+                 kinds: tuple[str, ...] = ()) -> None:
+    """Refuse at the start, not after the work, an output that cannot be written (status
+    2, one line): a name whose extension is not one of ``kinds`` (the formats the command
+    writes, when the extension chooses one: ``--out x.jpg`` for a PNG writer); a directory
+    at the path; a directory that is missing (never created), read-only or not ours; a file
+    in the way of the directory. A device or FIFO is written into (base.atomicfile), so
+    only it must be writable."""
     import os
 
+    if kinds and path.suffix.lower() not in kinds:
+        said = f"'{path.suffix}'" if path.suffix else "no extension"
+        raise SystemExit(f"{command}: cannot {doing} {path}: {said} names no format it "
+                         f"writes ({', '.join(kinds)})")
     if path.is_dir():
         raise SystemExit(f"{command}: cannot {doing} {path}: it is a directory")
     if path.exists() and not path.is_file():
         if not os.access(path, os.W_OK):
             raise SystemExit(f"{command}: cannot {doing} {path}: not writable")
         return
+    _place(command, path, doing)
     parent = path.parent if str(path.parent) else Path(".")
-    if not parent.is_dir() or not os.access(parent, os.W_OK):
-        why = "read-only" if parent.is_dir() else "missing"
-        raise SystemExit(f"{command}: cannot {doing} {path}: its directory {parent} is {why}")
+    if not os.access(parent, os.W_OK):
+        raise SystemExit(f"{command}: cannot {doing} {path}: its directory {parent} is "
+                         "read-only")
     from camlab88.base.atomicfile import probe
 
     try:
         probe(path)  # a full disk shows now, not after the run
     except OSError as exc:
         raise SystemExit(f"{command}: cannot {doing} {path}: {exc.strerror}") from None
+
+
+def check_output_dir(command: str, path: Path, doing: str = "write frames to") -> None:
+    """The same rule for a directory of outputs (``--frames DIR``): DIR may be new (it is
+    made, one level), but its parent must exist; a file at DIR or in its way is named."""
+    import os
+
+    if path.exists() and not path.is_dir():
+        raise SystemExit(f"{command}: cannot {doing} {path}: it is a file in the way, not a "
+                         "directory")
+    _place(command, path, doing)
+    where = path if path.is_dir() else (path.parent if str(path.parent) else Path("."))
+    if not os.access(where, os.W_OK):
+        raise SystemExit(f"{command}: cannot {doing} {path}: {where} is read-only")
 
 
 def fail(command: str, message: object, status: int = 2) -> int:

@@ -31,10 +31,9 @@ def _film(args: argparse.Namespace) -> int:
     from camlab88.apps.snooker.film.pipeline import FilmPaths
     from camlab88.apps.snooker.film.schedule import frame_file
 
-    for out in (args.out, args.gif):  # before any work: a bad place fails now
+    for out in (args.out, args.gif):  # before any work: a bad place fails now (status 2)
         if out is not None:
-            out.parent.mkdir(parents=True, exist_ok=True)
-            check_output(COMMAND, out)
+            check_output(COMMAND, out, "write the film to", (".mp4", ".gif"))
     spec = FilmSpec(args.rules, args.pattern, args.generations, args.actors, args.camera,
                     args.lights, args.frames_per_generation, args.glide, args.size,
                     args.samples, args.edges, args.seed)

@@ -30,7 +30,7 @@ def _run(args: argparse.Namespace) -> int:
         print("camlab88 ca run: --generations must be >= 0", file=sys.stderr)
         return 2
     if args.png:  # a directory or read-only place is refused before the generations run
-        check_output("camlab88 ca run", Path(args.png), "write the picture to")
+        check_output("camlab88 ca run", Path(args.png), "write the picture to", (".png",))
     from camlab88.apps.ca.jump_progress import ProgressLine
 
     engine = Engine(rules, edges=args.edges, seed=args.seed, algorithm=args.engine)

@@ -15,7 +15,8 @@ def export(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import files, library
     from camlab88.apps.kas.export import export as write
 
-    check_output(COMMAND, Path(args.out), "export to")  # a full disk shows before rendering
+    # the one output rule (docs/exit_status.md), and a full disk, before rendering: status 2
+    check_output(COMMAND, Path(args.out), "export to", (".gif", ".mp4", ".png"))
     try:
         seq = files.load_sequence(library.resolve(args.seq))
         if args.renderer == "sigma":
@@ -26,8 +27,10 @@ def export(args: argparse.Namespace) -> int:
                         render_frame=_on_sigma(args.background))
         else:
             out = write(seq, args.out, args.width, args.background, progress("export"))
-    except (OSError, ValueError) as exc:
+    except ValueError as exc:
         return fail(COMMAND, exc)
+    except OSError as exc:  # a write fault during the export: the work failed (status 1)
+        return fail(COMMAND, exc, 1)
     print(f"wrote {_written(out, len(seq))} ({args.renderer} renderer)")
     return 0
 

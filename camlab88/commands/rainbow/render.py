@@ -3,8 +3,9 @@
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 
-from camlab88.runopts import fail
+from camlab88.runopts import check_output, check_output_dir, fail
 
 COMMAND = "camlab88 rainbow render"
 
@@ -14,6 +15,12 @@ def render(args: argparse.Namespace) -> int:
     from camlab88.emulator.rainbow.errors import RainbowError
     from camlab88.emulator.rainbow.scene import SceneError, load_scene
 
+    # the one output rule (docs/exit_status.md), before the work: status 2
+    check_output(COMMAND, Path(args.out), "write", (".png",))
+    if args.bands:
+        check_output(COMMAND, Path(args.bands), "write the bands to")
+    if args.inspect_out is not None:
+        check_output_dir(COMMAND, Path(args.inspect_out), "write the inspector's frames to")
     try:
         device = load_scene(args.scene, Rainbow(strict=args.strict))
     except (SceneError, RainbowError) as exc:

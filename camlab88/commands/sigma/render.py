@@ -25,6 +25,12 @@ def render(args: argparse.Namespace) -> int:
         raise _die("give --out PNG and/or --frames DIR (or --video FILE, --inspect-out DIR)")
     if args.fps < 1:
         raise _die("--fps must be at least 1")
+    from camlab88.runopts import check_output, check_output_dir
+
+    if args.out is not None:  # the one output rule (docs/exit_status.md), before the work
+        check_output(COMMAND, Path(args.out), "write", (".png",))
+    if args.frames is not None:
+        check_output_dir(COMMAND, Path(args.frames))
     settings = _settings(args.baud)  # refuse a bad --baud even when no frames use it
     try:
         got = read_stream_file(args.stream)

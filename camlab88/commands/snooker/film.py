@@ -45,9 +45,12 @@ def _film(args: argparse.Namespace) -> int:
     from camlab88.apps.snooker.film.movie import write_movie
     from camlab88.apps.snooker.film.progress import progress_bar
     from camlab88.apps.snooker.render.lights import LIGHT_PIXEL_BYTES, read_lights
+    from camlab88.runopts import check_output
 
     paths = P.FilmPaths.beside(args.out)
-    paths.movie.parent.mkdir(parents=True, exist_ok=True)
+    for out in (args.out, args.gif):  # before any work: a bad place fails now (status 2)
+        if out is not None:
+            check_output(COMMAND, Path(out), "write the film to", (".mp4", ".gif"))
     if args.titles:
         scene, views = P.title_film(args.titles)
         write_views(paths.views, views, [f"camlab88 snooker film --titles {args.titles}"])

@@ -35,6 +35,12 @@ def render(args: argparse.Namespace) -> int:
     if args.mode != "truecolour" and args.size != (768, 512):
         return fail(COMMAND, f"--mode {args.mode} draws the T5688's 768x512 screen; --size "
                     "is for truecolour")
+    from camlab88.runopts import check_output, check_output_dir
+
+    check_output_dir(COMMAND, Path(args.frames))  # the one output rule, before the work
+    for movie, kind in ((args.mp4, ".mp4"), (args.gif, ".gif")):
+        if movie is not None:
+            check_output(COMMAND, Path(movie), "write the film to", (kind,))
     try:
         w, h = args.size if args.mode == "truecolour" else (768, 512)
         lights = (read_lights(args.lights, w * h * LIGHT_PIXEL_BYTES, f"at {w}x{h}")
