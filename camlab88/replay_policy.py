@@ -49,7 +49,7 @@ PROGRAMS: dict[tuple[str, str], dict[str, str]] = {
     ("sigma", "run"): {**_RUN, "--model": KEEP, "--baud": KEEP, "--in": KEEP,
                        "--seconds": KEEP, "--record-line": DROP, "--pty": OUTSIDE,
                        "--listen": OUTSIDE, "--serial": OUTSIDE,
-                       "--order-timeout": KEEP, "--idle-timeout": KEEP,
+                       "--order-timeout": KEEP, "--idle-timeout": KEEP, "--session-time": KEEP,
                        "--trace": SCRATCH, "--strict": KEEP},
     ("rainbow", "run"): {**_RUN, "--screenshot-frame": KEEP, "--record-stream": DROP,
                          "--strict": KEEP, "--demo": KEEP, "--tablet": TAPE,

@@ -9,8 +9,10 @@ clusters, arcs, colour tables and pending input of one program never reach the n
 of one program is not "already there" for the next). A client that resets, closes mid-frame
 or sends garbage loses its connection and nothing else: the server goes on to the next. A
 frame still unfinished ``frame_timeout`` seconds after its first byte arrived (its age, however
-the bytes trickle in), or a client silent for ``idle_timeout`` seconds while another program
-is waiting, is hung up on — so no client can wedge the server.
+the bytes trickle in), a client silent for ``idle_timeout`` seconds while another program
+is waiting, or one that has been connected ``session_time`` seconds while another is waiting
+(however steadily it sends: a ``hello`` frame a second held the server for ever) is hung up
+on — so no client can wedge the server.
 """
 
 from __future__ import annotations
@@ -26,6 +28,7 @@ from camlab88.protocols.rainbow.stream import REFUSED, Decoder, StreamError, enc
 
 FRAME_TIMEOUT = 10.0  # s from a frame's first byte to its last
 IDLE_TIMEOUT = 60.0  # s of silence after which a client gives way to a waiting one
+SESSION_TIME = 180.0  # s connected after which a client gives way to a waiting one
 BACKLOG = 128  # connections the kernel queues while one program is served (then refused)
 BUSY = b"the Rainbow is serving another program; try again when it has finished"
 
@@ -61,7 +64,7 @@ class _Client:
         executor.decoder = Decoder()  # per-connection state: nothing carries over
         executor.device.new_session()
         conn.settimeout(frame_timeout)  # sendall to a client that stops reading gives up
-        self.last_heard = time.monotonic()
+        self.last_heard = self.began = time.monotonic()
         self.frame_began: float | None = None  # when the unfinished frame's first byte came
 
     def receive(self) -> str | None:
@@ -93,14 +96,16 @@ class _Client:
             return f"bad frame: {error}"
         return None
 
-    def overdue(self, now: float, someone_waiting: bool,
-                frame_timeout: float, idle_timeout: float) -> str | None:
+    def overdue(self, now: float, someone_waiting: bool, frame_timeout: float,
+                idle_timeout: float, session_time: float = SESSION_TIME) -> str | None:
         silent = now - self.last_heard
         began = self.frame_began
         if began is not None and now - began > frame_timeout:
             return f"a frame unfinished {now - began:.1f} s after its first byte"
         if someone_waiting and silent > idle_timeout:
             return f"idle for {silent:.0f} s while another program waited"
+        if someone_waiting and now - self.began > session_time:
+            return f"connected for {now - self.began:.0f} s while another program waited"
         return None
 
     def close(self) -> None:
@@ -122,7 +127,7 @@ def _waiting(sock: socket.socket) -> bool:
 
 def serve(executor: Executor, sock: socket.socket, connections: int | None = None,
           frame_timeout: float = FRAME_TIMEOUT, idle_timeout: float = IDLE_TIMEOUT,
-          poll: float = 0.5) -> ServerStats:
+          poll: float = 0.5, session_time: float = SESSION_TIME) -> ServerStats:
     """Serve programs one at a time until ``connections`` have been served (None: for ever);
     see the module docstring for what happens to the others."""
     stats = ServerStats()
@@ -135,12 +140,12 @@ def serve(executor: Executor, sock: socket.socket, connections: int | None = Non
                 why = client.receive()
                 if why is None:
                     why = client.overdue(time.monotonic(), _waiting(sock), frame_timeout,
-                                         idle_timeout)
+                                         idle_timeout, session_time)
                     if why is None:
                         continue  # read it to its end before judging a newcomer "busy"
             elif client is not None:
                 why = client.overdue(time.monotonic(), sock in ready, frame_timeout,
-                                     idle_timeout)
+                                     idle_timeout, session_time)
             else:
                 why = None
             if client is not None and why is not None:

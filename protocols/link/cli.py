@@ -133,6 +133,7 @@ def echo_command(args: argparse.Namespace) -> int:
     ``--seconds`` of line time."""
     from camlab88.protocols.link.transports import (
         IDLE_TIMEOUT,
+        SESSION_TIME,
         PtyBridge,
         SerialUrlBridge,
         TcpBridge,
@@ -143,7 +144,8 @@ def echo_command(args: argparse.Namespace) -> int:
     line = SerialLine(settings, xonxoff=not args.no_xonxoff, recorder=recorder)
     bridge: Any
     if args.listen is not None:
-        bridge = TcpBridge(args.listen, endpoint=line.host, idle_timeout=IDLE_TIMEOUT)
+        bridge = TcpBridge(args.listen, endpoint=line.host, idle_timeout=IDLE_TIMEOUT,
+                           session_time=SESSION_TIME)
         print(f"echo device on a {settings} line: connect to 127.0.0.1:{bridge.port}", flush=True)
     elif args.url:
         bridge = SerialUrlBridge(args.url, settings, endpoint=line.host)

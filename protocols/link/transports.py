@@ -47,6 +47,9 @@ MAX_QUEUED = 4096  # bytes from outside waiting to go down the line (a tty drive
 REFILL_AT = MAX_QUEUED // 2
 _RDHUP = getattr(select, "POLLRDHUP", 0)  # Linux: the peer shut its sending side
 IDLE_TIMEOUT = 60.0  # s of line time a silent client keeps the line from a newcomer (commands)
+# s of line time a client may hold the line while others try to connect, however steadily it
+# sends (a byte a second kept it for ever): then the next newcomer takes the line
+SESSION_TIME = 180.0
 PROBE_MS = 50  # how long a newcomer's arrival waits for a probed client's reset
 PROBE_EVERY = 1.0  # s between two probes of one client (a late reset is seen at the next poll)
 RCVBUF = 16384  # bytes of kernel receive buffer per client (Linux doubles it)
@@ -214,16 +217,20 @@ class TcpBridge(Bridge):
 
     ``port=0`` picks a free port; read the chosen one from ``.port``. With ``idle_timeout``
     (seconds of line time), a client that has sent nothing for that long gives way to a
-    newcomer instead of the newcomer being refused.
+    newcomer instead of the newcomer being refused; with ``session_time``, a client that has
+    held the line that long gives way to the next newcomer whatever it sends (a refused
+    newcomer is told how long at most it has to wait).
     """
 
     def __init__(
         self, port: int, host: str = "127.0.0.1", *, endpoint: Endpoint | None = None,
-        idle_timeout: float | None = None,
+        idle_timeout: float | None = None, session_time: float | None = None,
     ) -> None:
         super().__init__(endpoint)
         self.idle_timeout = idle_timeout
+        self.session_time = session_time
         self._heard_at = 0.0  # line time the client last sent something
+        self._since = 0.0  # line time the client connected
         self._server = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
         try:
             self._server.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
@@ -257,6 +264,9 @@ class TcpBridge(Bridge):
             elif self._client is not None and self._client_idle():
                 self._drop_client(f"silent for {self.idle_timeout:g} s of line time while "
                                   "another client waited", hang_up=True)
+            elif self._client is not None and self._client_overstayed():
+                self._drop_client(f"held the line for {self.session_time:g} s of line time "
+                                  "while another client waited", hang_up=True)
             if self._client is None:
                 if self._left:  # what the last client left on the line is not for this one
                     self._left = False
@@ -264,12 +274,12 @@ class TcpBridge(Bridge):
                 sock.setblocking(False)
                 sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
                 self._client, self._probed_at = sock, -PROBE_EVERY
-                self._heard_at = self._line_time()
+                self._heard_at = self._since = self._line_time()
                 self._event("connected", f"{addr[0]}:{addr[1]}")
-            else:  # one client at a time: say so, then hang up
+            else:  # one client at a time: say so (and for how long at most), then hang up
                 with contextlib.suppress(OSError):
                     sock.setblocking(False)
-                    sock.send(BUSY)
+                    sock.send(self._busy())
                 sock.close()
                 self._event("refused", f"{addr[0]}:{addr[1]} (a client is already connected)")
 
@@ -325,6 +335,21 @@ class TcpBridge(Bridge):
         a client whose bytes wait for the line is not silent)."""
         return (self.idle_timeout is not None and not self._client_ready()
                 and self._line_time() - self._heard_at >= self.idle_timeout)
+
+    def _client_overstayed(self) -> bool:
+        """Whether the client has held the line for ``session_time`` of line time (judged
+        when a newcomer connects: a client alone keeps the line as long as it likes)."""
+        return (self.session_time is not None
+                and self._line_time() - self._since >= self.session_time)
+
+    def _busy(self) -> bytes:
+        """The refusal a newcomer reads: with a session time, when the line is free at the
+        latest (in line time, which is wall time while serving)."""
+        if self.session_time is None:
+            return BUSY
+        left = max(0.0, self.session_time - (self._line_time() - self._since))
+        return (f"camlab88: another client is connected to this line; it gives way to the "
+                f"next client in at most {left:.0f} s\r\n").encode()
 
     def _client_orphaned(self) -> bool:
         """Whether a client whose bytes wait for the line has in fact closed: its close sits

@@ -42,7 +42,7 @@ def serve(args: argparse.Namespace) -> int:
 
                 executor.tracer = RainbowTracer(trace.sink, trace.strict)
             serve_on(executor, sock, args.connections, frame_timeout=args.frame_timeout,
-                     idle_timeout=args.idle_timeout)
+                     idle_timeout=args.idle_timeout, session_time=args.session_time)
     finally:
         sock.close()
         if window is not None:

@@ -145,7 +145,8 @@ def _open_bridge(args: argparse.Namespace, settings, endpoint):
     if args.listen is not None:
         try:
             bridge = tr.TcpBridge(args.listen, endpoint=endpoint,
-                                  idle_timeout=float(args.idle_timeout))
+                                  idle_timeout=float(args.idle_timeout),
+                                  session_time=float(args.session_time))
         except OSError as exc:
             raise _die(f"cannot listen on 127.0.0.1:{args.listen}: "
                        f"{exc.strerror or exc}") from None
