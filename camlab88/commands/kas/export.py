@@ -17,8 +17,11 @@ def export(args: argparse.Namespace) -> int:
 
     # the one output rule (docs/exit_status.md), and a full disk, before rendering: status 2
     check_output(COMMAND, Path(args.out), "export to", (".gif", ".mp4", ".png"))
-    try:
+    try:  # the input: missing or malformed, it could not start (status 2)
         seq = files.load_sequence(library.resolve(args.seq))
+    except (OSError, ValueError) as exc:
+        return fail(COMMAND, exc)
+    try:
         if args.renderer == "sigma":
             if args.width != 768:
                 print("kas export: the Sigma renderer draws 768 x 512; --width applies to "
