@@ -130,15 +130,23 @@ def write(path: str | os.PathLike[str], rec: SessionRecording) -> None:
     write_atomic(path, dumps(rec).encode("utf-8"))
 
 
-def read(path: str | os.PathLike[str]) -> SessionRecording:
-    """Read and check a recording; a bad one raises SessionFileError naming line and column."""
+def read(path: str | os.PathLike[str], traffic: bool = True) -> SessionRecording:
+    """Read and check a recording; a bad one raises SessionFileError naming line and column.
+    ``traffic=False`` (a replay): the file is read a line at a time and the program/device
+    traffic (``>``/``<`` wire records) is checked but not kept, so the memory does not grow
+    with the recording's length (base.budget counts what is kept); otherwise the whole file
+    is checked against the budget first."""
     from camlab88.base import budget
+    from camlab88.protocols.session.parse import parse_stream, stream_lines
 
     name = os.fspath(path)
     try:
         with open(name, "rb") as fh:
-            budget.check(name, 2 * os.fstat(fh.fileno()).st_size, "reading it")
-            raw = fh.read()
+            if traffic:
+                budget.check(name, 2 * os.fstat(fh.fileno()).st_size, "reading it")
+                raw = fh.read()
+            else:
+                return parse_stream(stream_lines(fh, name), name, traffic=False)
     except OSError as exc:
         raise SessionFileError(name, 0, 0, f"cannot read: {exc.strerror or exc}") from None
     return loads(raw, name)

@@ -17,6 +17,7 @@ import hashlib
 import json
 import re
 import zlib
+from collections.abc import Iterable, Iterator
 from fractions import Fraction
 from typing import Any
 
@@ -50,6 +51,8 @@ class _Reader:
         self.last_frame = 0
         self.total = 0
         self.ended = False
+        self.traffic = True  # keep the > and < wire records (a replay does not need them)
+        self.kept = 0  # bytes of what is kept, as the budget counts them
 
     def fail(self, message: str, col: int = 1) -> SessionFileError:
         return SessionFileError(self.name, self.line, col, message)
@@ -147,7 +150,18 @@ class _Reader:
             raise self.fail(f"file {obj['name']!r}: content does not match its sha256")
         self.rec.files[obj["name"]] = data
 
+    def keep(self, size: int) -> None:
+        """Count a kept record against the budget (only a replay streams: a whole-file
+        read was counted before it began)."""
+        if self.traffic:
+            return
+        self.kept += RECORD_BYTES + size
+        if self.kept > budget.limit():
+            budget.check(f"{self.name}:{self.line}", self.kept, "the events and outside "
+                         "input kept to this line")
+
     def _event(self, obj: dict[str, Any]) -> None:
+        self.keep(len(str(obj["event"])))
         tick = self.tick(obj)
         self.rec.events.append((tick, self.timed(tick, obj["time"]), obj["event"]))
 
@@ -173,7 +187,10 @@ class _Reader:
                 parse_chunk(data, "tablet tape")
             except TapeError as exc:
                 raise self.fail(str(exc)) from None
-        self.rec.wire.append((self.tick(obj), obj["dir"], data))
+        tick = self.tick(obj)
+        if self.traffic or obj["dir"] not in "<>":
+            self.keep(len(data))
+            self.rec.wire.append((tick, obj["dir"], data))
 
     def _hash(self, obj: dict[str, Any]) -> None:
         frame, every = obj["frame"], self.rec.hash_every
@@ -213,9 +230,18 @@ _BLOCK = 1 << 24
 def shape(raw: bytes | memoryview) -> tuple[int, int]:
     """(lines, longest line's length) of ``raw``, read in blocks (no copy of it)."""
     view = memoryview(raw)
+    return shape_of_blocks(view[at:at + _BLOCK] for at in range(0, len(view), _BLOCK))
+
+
+def shape_of_file(fh: Any) -> tuple[int, int]:
+    """(lines, longest line's length) of an open file from where it is, 16 MB at a time."""
+    return shape_of_blocks(iter(lambda: fh.read(_BLOCK), b""))
+
+
+def shape_of_blocks(blocks: Iterable[bytes | memoryview]) -> tuple[int, int]:
     lines, longest, run = 0, 0, 0
-    for at in range(0, len(view), _BLOCK):
-        block = np.frombuffer(view[at:at + _BLOCK], np.uint8)
+    for chunk in blocks:
+        block = np.frombuffer(chunk, np.uint8)
         ends = np.flatnonzero(block == 10)
         if not ends.size:
             run += block.size
@@ -238,8 +264,28 @@ def check_cost(name: str, size: int, lines: int, longest: int) -> None:
 def parse_lines(raw: bytes, name: str) -> SessionRecording:
     """The recording in ``raw`` (the bytes of file ``name``)."""
     check_cost(name, len(raw), *shape(raw))
+    return parse_stream(raw.split(b"\n"), name)
+
+
+def stream_lines(fh: Any, name: str) -> Iterator[bytes]:
+    """The lines of an open recording, one at a time (no line kept after the next is read),
+    after a first pass in blocks has refused a line longer than the budget can decode
+    (before any line is read whole)."""
+    _lines, longest = shape_of_file(fh)
+    budget.check(name, longest * LINE_FACTOR, f"its {longest:,}-byte line")
+    fh.seek(0)
+    for line in fh:
+        yield line[:-1] if line.endswith(b"\n") else line
+
+
+def parse_stream(lines: Iterable[bytes], name: str, traffic: bool = True) -> SessionRecording:
+    """The recording in ``lines``, checked record by record. ``traffic=False`` (a replay):
+    the program/device traffic (``>`` and ``<`` wire records, most of a long recording) is
+    checked and not kept, so memory does not grow with it; what is kept is counted against
+    the memory budget as it comes."""
     reader = _Reader(name)
-    for reader.line, line in enumerate(raw.split(b"\n"), start=1):
+    reader.traffic = traffic
+    for reader.line, line in enumerate(lines, start=1):
         if not line.strip():
             continue
         try:

@@ -78,15 +78,28 @@ def many_point_kas(path: Path, points: int) -> Path:
 
 
 _HEADER = ('{"type": "header", "format": "camlab88-session", "version": 1, "argv": ["sigma", '
-           '"run", "--in", "x.sig", "--ticks", "4"], "headless": true, "hash_every": 10}\n')
+           '"run", "--in", "x.sig", "--seconds", "1"], "headless": true, "hash_every": 10}\n')
 _END = ('{"type": "end", "frames": 0, "ticks": 1, "time": "0", "sha256": "' + "0" * 64 + '"}\n')
 
 
-def many_record_session(path: Path, records: int) -> Path:
-    """A session recording of ``records`` wire records (the trial: 4x10^6, 228 MB)."""
-    line = '{"type": "wire", "tick": 0, "dir": ">", "data": "eJwzBAAAMgAy"}\n'
+def _empty_input() -> str:
+    """The file record of the recorded command's input, x.sig (empty)."""
+    import base64
+    import hashlib
+    import zlib
+
+    data = base64.b64encode(zlib.compress(b"")).decode()
+    return (f'{{"type": "file", "name": "x.sig", "sha256": "{hashlib.sha256(b"").hexdigest()}", '
+            f'"data": "{data}"}}\n')
+
+
+def many_record_session(path: Path, records: int, direction: str = ">") -> Path:
+    """A session recording of ``records`` wire records (the trial: 4x10^6 of the program's
+    traffic, ``>``, 228 MB; ``+``: outside input, which a replay keeps)."""
+    line = f'{{"type": "wire", "tick": 0, "dir": "{direction}", "data": "eJwzBAAAMgAy"}}\n'
     with open(path, "w") as fh:
         fh.write(_HEADER)
+        fh.write(_empty_input())
         for _ in range(records // 10000):
             fh.write(line * 10000)
         fh.write(line * (records % 10000))

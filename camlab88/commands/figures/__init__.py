@@ -62,7 +62,7 @@ def _replay(args: argparse.Namespace, path: Path) -> int:
     from camlab88.session_replay import rerun
 
     try:
-        rec = read(path)
+        rec = read(path, traffic=False)  # a replay: the traffic is not kept
     except SessionFileError as exc:
         return fail(COMMAND, exc)
     headless = choose_headless(COMMAND, args.headless, "writing the figure's last screen")

@@ -60,7 +60,7 @@ def _session(args: argparse.Namespace) -> int:
     from camlab88.session_replay import rerun
 
     try:
-        rec = read(args.recording)
+        rec = read(args.recording, traffic=False)  # a replay: the traffic is not kept
     except SessionFileError as exc:
         return fail(COMMAND, exc)
     shot = Path(args.screenshot).resolve() if args.screenshot else None

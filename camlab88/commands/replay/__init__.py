@@ -31,7 +31,7 @@ def replay(args: argparse.Namespace) -> int:
     from camlab88.session_replay import rerun
 
     try:
-        rec = read(args.recording)
+        rec = read(args.recording, traffic=False)  # a replay: the traffic is not kept
     except SessionFileError as exc:
         return fail(COMMAND, exc)
     headless = choose_headless(COMMAND, args.headless, "checking the screen hashes")
