@@ -230,9 +230,22 @@ def _session_error() -> type[BaseException]:
 
 
 def _session(data: bytes) -> object:
-    from camlab88.protocols.session.format import read
+    """Both ways a recording is read: whole, and streamed as a replay reads it (the two
+    must agree on what they refuse)."""
+    from camlab88.protocols.session.format import SessionFileError, read
 
-    return _via_file(data, read, ".session")
+    def both(path: str) -> object:
+        try:
+            whole = read(path)
+        except SessionFileError as exc:
+            try:
+                read(path, traffic=False)
+            except SessionFileError:
+                raise exc from None
+            raise AssertionError("the streamed read took what the whole read refused") from None
+        return whole, read(path, traffic=False)
+
+    return _via_file(data, both, ".session")
 
 
 def _tape_errors() -> tuple[type[BaseException], ...]:
