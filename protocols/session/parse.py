@@ -233,9 +233,25 @@ def shape(raw: bytes | memoryview) -> tuple[int, int]:
     return shape_of_blocks(view[at:at + _BLOCK] for at in range(0, len(view), _BLOCK))
 
 
-def shape_of_file(fh: Any) -> tuple[int, int]:
-    """(lines, longest line's length) of an open file from where it is, 16 MB at a time."""
-    return shape_of_blocks(iter(lambda: fh.read(_BLOCK), b""))
+# how the recorder writes a traffic record's direction (json.dumps' default separators)
+_TRAFFIC = (b'"dir": ">"', b'"dir": "<"')
+
+
+def shape_of_file(fh: Any) -> tuple[int, int, int]:
+    """(lines, longest line's length, traffic records as the recorder writes them) of an
+    open file from where it is, 16 MB at a time. The traffic count can only fall short
+    (a record spelt otherwise, or cut by a block's end), so what is kept is never
+    underestimated."""
+    traffic = 0
+
+    def blocks() -> Iterator[bytes]:
+        nonlocal traffic
+        for block in iter(lambda: fh.read(_BLOCK), b""):
+            traffic += sum(block.count(t) for t in _TRAFFIC)
+            yield block
+
+    lines, longest = shape_of_blocks(blocks())
+    return lines, longest, traffic
 
 
 def shape_of_blocks(blocks: Iterable[bytes | memoryview]) -> tuple[int, int]:
@@ -271,8 +287,11 @@ def stream_lines(fh: Any, name: str) -> Iterator[bytes]:
     """The lines of an open recording, one at a time (no line kept after the next is read),
     after a first pass in blocks has refused a line longer than the budget can decode
     (before any line is read whole)."""
-    _lines, longest = shape_of_file(fh)
-    budget.check(name, longest * LINE_FACTOR, f"its {longest:,}-byte line")
+    lines, longest, traffic = shape_of_file(fh)
+    kept = max(0, lines - traffic)
+    what = (f"its {kept:,} records a replay keeps" if kept * RECORD_BYTES >= longest * LINE_FACTOR
+            else f"its {longest:,}-byte line")
+    budget.check(name, kept * RECORD_BYTES + longest * LINE_FACTOR, what)
     fh.seek(0)
     for line in fh:
         yield line[:-1] if line.endswith(b"\n") else line

@@ -104,7 +104,7 @@ ROWS = [
         ("kas", "inbetween", "{f}", "{f}", "--count", "3", "--out", "out.kas"),
         "lines would need", "4M"),
     Row("recording of 4x10^6 outside-input records, replay", _records, ("replay", "{f}"),
-        "the events and outside input kept to this line would need", "8M"),
+        "records a replay keeps would need", "8M"),
     Row("recording with a 200 MB line, replay", _long_line, ("replay", "{f}"),
         "-byte line would need", "16M"),
     Row("an actor of 63 lathes x 511 points, ca film", _actors,
