@@ -1,11 +1,12 @@
 """Every row of the bomb trial (inputs inside their formats' limits that grew past a
 gigabyte) is refused by the memory budget before the work: one line naming the input, what
 it would need and how to raise the limit, exit status 2, within 5 s of CPU time and 400 MB
-of peak RSS (both measured in the child, os.wait4; CPU time rather than wall time because
-the test machine is shared: at load 17 a bare ``ca run`` of 100 cells took 4.8 s of wall
-time; the wall time is bounded too, at 60 s, so a hang still fails). Each row twice:
-small, against a small budget (``CAMLAB88_BUDGET``) so it trips the same check in a fraction
-of the time, and at the trial's size against the default budget (marked slow)."""
+of peak RSS, both measured in the child (os.wait4 in a small launcher:
+tests/budget/measure.py). CPU time rather than wall time because the test machine is
+shared (at load 17 a bare ``ca run`` of 100 cells took 4.8 s of wall time); the wall time
+is bounded too, at 60 s, so a hang still fails. Each row twice: small, against a small
+budget (``CAMLAB88_BUDGET``) so it trips the same check in a fraction of the time, and at
+the trial's size against the default budget (marked slow)."""
 
 from __future__ import annotations
 
