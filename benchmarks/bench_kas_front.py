@@ -12,7 +12,6 @@ from camlab88.apps.kas import demo
 from camlab88.apps.kas.editor import Editor
 from camlab88.apps.kas.program import EditorFront, LineTest, Session, parse_timed_script
 from camlab88.apps.kas.program.draw import encode
-from camlab88.apps.kas.program.keyboard import key_to_bytes
 from camlab88.apps.kas.program.viewer import VIEW_CLIP, ViewerHost, chain_prims, frame_points_px
 from camlab88.emulator.harness.sigma import SigmaSessionRun
 from camlab88.emulator.harness.sigma_batch import host_periods
@@ -28,7 +27,7 @@ def editor_session() -> None:
     t0 = time.perf_counter()
     front = EditorFront(Editor(seed=1))
     machine = SigmaMachine("t5684")
-    s = SigmaSessionRun(machine, Session(front, machine.host), key_to_bytes)
+    s = SigmaSessionRun(machine, Session(front, machine.host))
     s.run_script(parse_timed_script(text, "edit_all"))
     wall = time.perf_counter() - t0
     sent = sum(len(d) for _, d in s.session.sent)

@@ -48,8 +48,10 @@ class Sigma(MachineBench):
 
     # ------------------------------------------------------------------ local input
     def key(self, char: str) -> None:
-        """A key struck on the terminal's keyboard (ends a cursor read, else goes up the line)."""
-        self.machine.terminal.key(char)
+        """A key struck on the terminal's keyboard: a character, or a key's name
+        (``"up"``, ``"f2"``: camlab88.protocols.sigma.keyboard); ends a cursor read, else
+        goes up the line."""
+        self.machine.press(char)
 
     def cursor(self, x: int, y: int) -> None:
         """Move the crosshair with the joystick to drawing-area (x, y) (device units, y up)."""

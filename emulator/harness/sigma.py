@@ -4,7 +4,6 @@ line served to outside programs (``sigma run``) is emulator.harness.sigma_line."
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from fractions import Fraction
 from typing import Any
 
@@ -23,11 +22,11 @@ class SigmaSessionRun:
     input in, update out, through the machine's port) and the machine moves on ``TICK`` with
     the terminal taking what had arrived at the tick's start (the order the KAS programs have
     always shown).  ``session`` has ``step``, ``due``, ``busy``, ``begin`` and ``front``
-    (apps side, duck-typed); ``key_bytes`` turns a key name into what the key sends."""
+    (apps side, duck-typed). A key is named as the keyboard names it
+    (protocols.sigma.keyboard)."""
 
-    def __init__(self, machine: SigmaMachine, session: Any,
-                 key_bytes: Callable[[str], bytes]) -> None:
-        self.machine, self.session, self.key_bytes = machine, session, key_bytes
+    def __init__(self, machine: SigmaMachine, session: Any) -> None:
+        self.machine, self.session = machine, session
 
     @property
     def terminal(self) -> Any:
@@ -36,7 +35,7 @@ class SigmaSessionRun:
     def step(self, mouse: list[Any] | tuple = (), keys: list[str] | tuple = ()) -> None:
         self.session.begin()
         for k in keys:
-            self.machine.key(self.key_bytes(k).decode("latin-1"))
+            self.machine.press(k)
         self.session.step(mouse)
         self.machine.tick(TICK, take_first=True)
 

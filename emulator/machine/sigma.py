@@ -96,10 +96,11 @@ class SigmaMachine:
         return np.ascontiguousarray(self.terminal.indices()[::-1])
 
     # ------------------------------------------------------------------ the user
-    def key(self, char: str) -> None:
-        """A key struck on the terminal's keyboard (by its user, not the host): its bytes
-        go up the line now."""
-        self.terminal.key(char)
+    def press(self, name: str, shift: bool = False) -> None:
+        """A key struck on the terminal's keyboard (by its user, not the host), named as in
+        protocols.sigma.keyboard or a printable character: what it sends goes up the line
+        now (a cursor key during a cursor read moves the crosshair instead)."""
+        self.terminal.press(name, shift)
 
     # ------------------------------------------------------------------ traces
     def trace(self, sink: Callable[[TraceEvent], None] | None,

@@ -29,6 +29,7 @@ from camlab88.protocols.sigma import (
     format_report,
 )
 from camlab88.protocols.sigma.decoder_state import check_keys
+from camlab88.protocols.sigma.keyboard import CURSOR_STEPS, KEY_BYTES
 from camlab88.roms.sigma import load_font, load_lut
 
 TEXT_CELL_W = 8  # graphics text (BA) advance, reconstructed
@@ -396,6 +397,18 @@ class Terminal:
         r = self.reg
         r.cursor_report = False
         self._send(format_report(key, r.cursor_x, r.cursor_y, self.decoder.coord_digits))
+
+    def press(self, name: str, shift: bool = False) -> None:
+        """A named key of the keyboard (protocols.sigma.keyboard: ``"up"``, ``"f2"``, a
+        printable character ...) struck: a cursor key moves the crosshair while a cursor read
+        is armed with the crosshair on the keys (Shift: 8 units), every other time it sends
+        its code like any key; a name the keyboard has not is ignored."""
+        step = CURSOR_STEPS.get(name)
+        if step is not None and self.reg.cursor_report and not self.reg.cursor_tablet:
+            n = 8 if shift else 1
+            self.cursor_keys(step[0] * n, step[1] * n)
+        elif name in KEY_BYTES or len(name) == 1:
+            self.key(KEY_BYTES[name].decode("latin-1") if name in KEY_BYTES else name)
 
     def cursor_keys(self, dx: int, dy: int) -> None:
         """Joystick / cursor keys move the crosshair (device units, y up)."""

@@ -7,7 +7,6 @@ from pathlib import Path
 from camlab88.apps.kas.editor import Editor
 from camlab88.apps.kas.events import Key, Pointer
 from camlab88.apps.kas.program import EditorFront, Session, parse_timed_script
-from camlab88.apps.kas.program.keyboard import key_to_bytes
 from camlab88.emulator.harness.sigma import SigmaSessionRun
 from camlab88.emulator.machine import SigmaMachine
 
@@ -18,7 +17,7 @@ GOLDEN = DATA / "golden"
 def drive(front) -> SigmaSessionRun:
     """``front`` on an emulated T5684 over a 9600-baud line, run as the harness runs it."""
     machine = SigmaMachine("t5684")
-    return SigmaSessionRun(machine, Session(front, machine.host), key_to_bytes)
+    return SigmaSessionRun(machine, Session(front, machine.host))
 
 
 def script(name: str):

@@ -8,7 +8,6 @@ import pytest
 from camlab88.apps.kas.editor import Editor
 from camlab88.apps.kas.files import KasFileError
 from camlab88.apps.kas.program import EditorFront, parse_timed_script
-from camlab88.apps.kas.program.keyboard import KEY_BYTES, bytes_to_keys, key_to_bytes
 from camlab88.emulator.sigma import Terminal
 
 from tests.kas_front.helpers import DATA, GOLDEN, drive, model_only, run_editor
@@ -82,15 +81,6 @@ def test_stylus_cursor_follows_without_touching_the_planes() -> None:
     assert np.array_equal(before, term.indices())
     assert (term.reg.cursor_x, term.reg.cursor_y) == (296 - 144, 218 - 96)
     assert front.editor.drawing.chains == []
-
-
-def test_keyboard_codes_round_trip() -> None:
-    for name in KEY_BYTES:
-        assert bytes_to_keys(key_to_bytes(name)) == [name]
-    assert bytes_to_keys(b"ab,.") == ["a", "b", ",", "."]
-    with pytest.raises(ValueError, match="no Sigma key"):
-        key_to_bytes("f13")
-    assert 0x11 not in b"".join(KEY_BYTES.values()) and 0x13 not in b"".join(KEY_BYTES.values())
 
 
 @pytest.mark.parametrize("text, where", [

@@ -10,9 +10,9 @@ from camlab88.apps.kas.library import LIBRARY
 from camlab88.apps.kas.program import EditorFront, parse_timed_script
 from camlab88.apps.kas.program import layout as L
 from camlab88.apps.kas.program.draw import Painter, chain_prims, clip_polyline, encode
-from camlab88.apps.kas.program.keyboard import bytes_to_keys
 from camlab88.emulator.sigma import Terminal
 from camlab88.protocols.sigma import Decoder, Encoder
+from camlab88.protocols.sigma.keyboard import bytes_to_keys
 from hypothesis import given, settings
 from hypothesis import strategies as st
 

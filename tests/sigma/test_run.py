@@ -23,11 +23,17 @@ def test_window_input_goes_to_keyboard_cursor_and_tablet() -> None:
     t = Terminal("t5684")
     sent: list[bytes] = []
     t.on_output = sent.append
-    _feed([KeyDown("a", "a", frozenset()), KeyDown("return", "", frozenset()),
-           KeyDown("right", "", frozenset({"shift"})), KeyDown("up", "", frozenset())], t)
-    assert sent == [b"a", b"\r"]
-    assert (t.reg.cursor_x, t.reg.cursor_y) == (8, 1)
-    t.feed(b"\r+-*/GM3HF")
+    arrows = [KeyDown("right", "", frozenset({"shift"})), KeyDown("up", "", frozenset())]
+    _feed([KeyDown("a", "a", frozenset()), KeyDown("return", "", frozenset()), *arrows], t)
+    # no cursor read armed: the cursor keys send their codes (the KAS programs' pan keys)
+    assert sent == [b"a", b"\r", b"\x06", b"\x10"]
+    assert (t.reg.cursor_x, t.reg.cursor_y) == (0, 0)
+    t.feed(b"\r+-*/HF")  # a cursor read on the keys (CF, the default): they move the crosshair
+    _feed(arrows, t)
+    assert (t.reg.cursor_x, t.reg.cursor_y) == (8, 1) and len(sent) == 4
+    _feed([KeyDown("q", "q", frozenset())], t)
+    assert sent[-1] == b"q008,001\r"
+    t.feed(b"GM3HF")
     _feed([PointerMove(100, 11, frozenset()), PointerButton(100, 11, 1, True)], t)
     assert sent[-1] == b"1100,500\r"  # window row 11 is device y 500
 

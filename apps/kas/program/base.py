@@ -10,9 +10,9 @@ from __future__ import annotations
 
 from camlab88.apps.kas.program import layout as L
 from camlab88.apps.kas.program.draw import Painter, Prim
-from camlab88.apps.kas.program.keyboard import bytes_to_keys
 from camlab88.apps.quitting import QUIT_QUESTION, AsksBeforeQuitting
 from camlab88.protocols.sigma import Encoder
+from camlab88.protocols.sigma.keyboard import bytes_to_keys
 from camlab88.protocols.tablets.input_layer import PointerEvent
 
 

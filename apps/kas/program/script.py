@@ -35,8 +35,8 @@ from camlab88.apps.kas.events import TIME_WORD
 from camlab88.apps.kas.files import KasFileError
 from camlab88.apps.kas.program import layout as L
 from camlab88.apps.kas.program.base import Front
-from camlab88.apps.kas.program.keyboard import key_to_bytes
 from camlab88.protocols.link.port import HostPort
+from camlab88.protocols.sigma.keyboard import key_to_bytes
 from camlab88.protocols.tablets.input_layer import InputLayer, MouseSample
 
 DEFAULT_STEP = Fraction(1, 50)

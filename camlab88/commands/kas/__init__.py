@@ -39,7 +39,6 @@ def run_front(front, args: argparse.Namespace, command: str, keys: str,
               prepared=None):
     """Run a KAS program on an emulated T5684 over the line, on the harness: from a script
     and/or a window.  Returns the run (the session and its machine)."""
-    from camlab88.apps.kas.program.keyboard import KEY_BYTES, key_to_bytes
     from camlab88.apps.kas.program.layout import TABLET_AREA
     from camlab88.apps.kas.program.script import Session
     from camlab88.emulator.harness import run
@@ -47,6 +46,7 @@ def run_front(front, args: argparse.Namespace, command: str, keys: str,
     from camlab88.emulator.machine import SigmaMachine
     from camlab88.emulator.tablet_input.pointer import TabletInput
     from camlab88.protocols.link import LineSettings
+    from camlab88.protocols.sigma.keyboard import KEY_BYTES
     from camlab88.runopts import unattended
 
     events, opts = prepared or prepare_front(args, command)
@@ -58,7 +58,7 @@ def run_front(front, args: argparse.Namespace, command: str, keys: str,
         opts.live = True
     machine = SigmaMachine("t5684", LineSettings(baud=args.baud))
     session = Session(front, machine.host, pointer=tablet)
-    ran = SigmaSessionRun(machine, session, key_to_bytes)
+    ran = SigmaSessionRun(machine, session)
     target = SigmaProgramTarget(ran, f"{command} - Sigma T5684", keys, frozenset(KEY_BYTES),
                                 events, unattended(opts))
     try:
