@@ -1,31 +1,31 @@
 """How a command area registers its actions: one module per action, named in a tuple.
 
-``camlab88/commands/<area>/__init__.py`` lists ``ACTIONS = ("play", "simulate", ...)``; each
-action's parser is its entry in ``camlab88/commands/<area>/commands.toml`` (built by
-camlab88.commandspec), and ``camlab88/commands/<area>/<action>.py`` holds its handler.  Adding
-an action is one new module, one entry and one name in the tuple; action modules never import
-each other (import-linter checks it).
+``camlab88/commands/<area>/__init__.py`` lists ``ACTIONS = ("play", "simulate", ...)`` and
+holds the area's ``HELP`` and ``DESCRIPTION``; each action module
+``camlab88/commands/<area>/<action>.py`` declares its parser (``add_parser``) beside its
+handler. Adding an action is one new module and one name in the tuple; action modules never
+import each other (import-linter checks it).
 """
 
 from __future__ import annotations
 
 import argparse
+import importlib
+import sys
 from collections.abc import Sequence
-
-from camlab88.commandspec import add_command, area_spec
 
 
 def register_area(subparsers: argparse._SubParsersAction, package: str,
                   actions: Sequence[str]) -> argparse.ArgumentParser:
     """Add the area of `package` (``camlab88.commands.ca`` -> ``ca``), its help and
-    description from the top of its commands.toml, with its `actions`."""
+    description, with its `actions`."""
     name = package.rsplit(".", 1)[1]
-    spec = area_spec(name)
-    parser = subparsers.add_parser(name, help=spec["help"],
-                                   description=spec.get("description", spec["help"]))
+    area = sys.modules[package]
+    parser = subparsers.add_parser(name, help=area.HELP,
+                                   description=getattr(area, "DESCRIPTION", area.HELP))
     sub = parser.add_subparsers(dest=f"{name}_action", metavar="ACTION")
     for action in _needed(subparsers, name, actions):
-        add_command(sub, f"{package}.{action}")
+        importlib.import_module(f"{package}.{action}").add_parser(sub)
     parser.set_defaults(handler=lambda args: _no_action(parser))
     return parser
 
@@ -33,13 +33,16 @@ def register_area(subparsers: argparse._SubParsersAction, package: str,
 def _needed(subparsers: argparse._SubParsersAction, name: str,
             actions: Sequence[str]) -> Sequence[str]:
     """The actions whose parsers a command line needs: only its own when it names one of
-    the area's actions (``ca run`` builds no parser for ``ca convert``, whose options
-    import modules of their own: ~10 ms of every short run), else all (the area's help, a
-    misspelt action's "did you mean"). ``words``: the line, set by camlab88.cli."""
+    the area's actions (``ca run`` imports no other action's module), else all (the area's
+    help, a misspelt action's "did you mean"), and none when the line names no area (the
+    top-level help reads the areas' own lines only). An action's command is its module's
+    name with ``-`` for ``_`` (``edit_script`` is ``kas edit-script``). ``words``: the
+    line, set by camlab88.cli; none: every parser (the replay allowlist's list)."""
     words = getattr(subparsers, "words", ())
-    if len(words) > 1 and words[0] == name:
-        spec = area_spec(name)
-        chosen = [a for a in actions if spec[a].get("name", a) == words[1]]
+    if words and words[0] != name:
+        return ()
+    if len(words) > 1:
+        chosen = [a for a in actions if a.replace("_", "-") == words[1]]
         if chosen:
             return chosen
     return actions

@@ -76,6 +76,27 @@ def build_parser(words: Sequence[str] = ()) -> argparse.ArgumentParser:
     return parser
 
 
+def command_parser(parser: argparse.ArgumentParser,
+                   words: Sequence[str]) -> argparse.ArgumentParser:
+    """The parser of the command ``words`` name (``["ca", "run", ...]``: ``ca run``'s); as
+    far as they name one (an area's, or the whole line's)."""
+    for word in words:
+        choices = next((a.choices for a in parser._actions
+                        if isinstance(a, argparse._SubParsersAction)), {})
+        if word not in choices:
+            break
+        parser = choices[word]
+    return parser
+
+
+def run_only_flags(parser: argparse.ArgumentParser) -> dict[str, int]:
+    """The options declared run-only (``action.run_only``: how a run is shown or recorded,
+    never what the program does), each with the number of values it takes (0 or 1): what a
+    save state's identity leaves out (emulator.harness.program_state)."""
+    return {flag: 0 if action.nargs == 0 else 1 for action in parser._actions
+            if getattr(action, "run_only", False) for flag in action.option_strings}
+
+
 def _bare(parser: argparse.ArgumentParser) -> int:
     """Bare ``camlab88``: the help, not an error."""
     parser.print_help()
@@ -193,8 +214,10 @@ def _take_budget(words: list[str]) -> list[str]:
 def _main(argv: Sequence[str] | None) -> int:
     words = _take_budget(list(sys.argv[1:] if argv is None else argv))
     words = normalise_argv(words)
-    args = build_parser(words).parse_args(words)
+    parser = build_parser(words)
+    args = parser.parse_args(words)
     args._argv = words  # what a --record recording stores and a replay re-runs
+    args._run_only = run_only_flags(command_parser(parser, words))
     previous = _catch_sigterm()
     try:
         result = args.handler(args)

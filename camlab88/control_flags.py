@@ -13,6 +13,8 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from camlab88.replay_policy import KEEP, SCRATCH
+
 if TYPE_CHECKING:  # the harness (and numpy) load when a command runs, not for its --help
     from camlab88.emulator.harness.control_options import Controls
 
@@ -41,17 +43,26 @@ def video(text: str) -> Path:
 
 
 def add_control_options(p: argparse.ArgumentParser, speed_flag: bool = True) -> None:
-    """Add --speed, --video, --inspect and --inspect-out to an action's parser."""
+    """Add --speed, --video, --inspect and --inspect-out to an action's parser; each is
+    run-only, and what a replay does with it is said (the pacing and the inspector change
+    nothing a replay checks; the files they write are outputs)."""
+    shown = []
     if speed_flag:
-        p.add_argument("--speed", type=speed, metavar="X",
-                       help="run at X times the period's speed (0.1..1000; 1 = period "
-                            "speed; default: a window at period speed, headless flat out)")
-    p.add_argument("--video", type=video, metavar="FILE",
-                   help="write the frames shown as FILE.mp4 or FILE.gif")
-    p.add_argument("--inspect", action="store_true",
-                   help="show the device inspector beside the screen (F11 toggles it)")
-    p.add_argument("--inspect-out", type=Path, metavar="DIR",
-                   help="write the inspector's panel for every frame as DIR/frame_NNNNN.png")
+        shown.append((p.add_argument(
+            "--speed", type=speed, metavar="X",
+            help="run at X times the period's speed (0.1..1000; 1 = period speed; default: "
+                 "a window at period speed, headless flat out)"), KEEP))
+    shown += [
+        (p.add_argument("--video", type=video, metavar="FILE",
+                        help="write the frames shown as FILE.mp4 or FILE.gif"), SCRATCH),
+        (p.add_argument("--inspect", action="store_true",
+                        help="show the device inspector beside the screen (F11 toggles it)"),
+         KEEP),
+        (p.add_argument("--inspect-out", type=Path, metavar="DIR",
+                        help="write the inspector's panel for every frame as "
+                             "DIR/frame_NNNNN.png"), SCRATCH)]
+    for action, kind in shown:
+        action.replay, action.run_only = kind, True
 
 
 def controls_from_args(args: argparse.Namespace, command: str, headless: bool) -> Controls:

@@ -8,6 +8,8 @@ import argparse
 import sys
 from typing import TYPE_CHECKING, Any
 
+from camlab88.replay_policy import TAPE
+
 if TYPE_CHECKING:
     from camlab88.emulator.harness import RunOptions
 
@@ -16,8 +18,8 @@ SOURCE_FORMS = "hid:VID:PID, serial:PORT?protocol=P, or a pyserial URL?protocol=
 
 def add_tablet_option(p: argparse.ArgumentParser, what: str, where: str) -> None:
     """``--tablet SOURCE``; the help reads "also WHAT a real tablet (the source forms) WHERE"."""
-    p.add_argument("--tablet", metavar="SOURCE",
-                   help=f"also {what} a real tablet ({SOURCE_FORMS}){where}")
+    p.add_argument("--tablet", metavar="SOURCE",  # a replay decodes the recorded tape
+                   help=f"also {what} a real tablet ({SOURCE_FORMS}){where}").replay = TAPE
 
 
 def open_tablet(command: str, text: str | None, opts: RunOptions) -> Any:

@@ -1,15 +1,18 @@
 """What a session recording may make ``camlab88 replay`` run: a recording is data.
 
 A recording names a command line, and recordings are shared, so the command line is checked
-against a fixed allowlist before anything runs: only the programs ``--record`` exists on,
-only the options listed here for each (exact spellings, no abbreviations), each value then
-checked by the program's own argument parser. What each allowed option becomes:
+before anything runs: only the programs ``--record`` exists on, only the options each of them
+declares with a replay class (exact spellings, no abbreviations), each value then checked by
+the program's own argument parser. Each option's class is set where the option is declared,
+beside its handler (``p.add_argument(...).replay = KEEP``; the shared run options in
+camlab88.runopts, control_flags, stateopts ...). What each class means:
 
 ``KEEP``     replayed as recorded (numbers bounded: a recording cannot ask for a huge window)
 ``SCRATCH``  an output the recorded run wrote (--screenshot, --frames, --out, --save ...):
              redirected into the replay's scratch directory, which is deleted afterwards, so
              the program behaves as recorded but writes nothing of the user's
-``DROP``     a recorder (--record, --record-line, --record-stream): the replay does not repeat it
+``DROP``     a recorder (--record, --record-line, --record-stream): the replay does not repeat
+             it; a command whose ``--record`` is DROP is a program a replay runs
 ``OUTSIDE``  the line's outside end (sigma run --pty / --listen / --serial): never opened;
              the outside bytes stored in the recording (``+`` wire records) are fed instead
 ``KEEP`` also covers ``--load-state FILE``: the state a recorded run began from is an input
@@ -34,44 +37,6 @@ KEEP, SCRATCH, DROP, OUTSIDE, TAPE = "keep", "scratch", "drop", "outside", "tape
 MAX_NUMBER = 10**9  # any numeric value kept (ticks, seconds, baud, frames ...)
 MAX_SCALE = 8       # --scale: a window 8 times 768x576 is already 85 MB of pixels
 MAX_WORDS, MAX_WORD = 256, 4096
-
-_RUN = {"--headless": KEEP, "--scale": KEEP, "--stop-after": KEEP, "--screenshot": SCRATCH,
-        "--frames": SCRATCH, "--record": DROP,
-        # the emulator controls: pacing and the inspector change nothing a replay checks
-        # (the replay's own flags decide them); the files they write are outputs
-        "--speed": KEEP, "--inspect": KEEP, "--video": SCRATCH, "--inspect-out": SCRATCH,
-        # save states: the file saved is an output; the state a run began from is an input
-        # file the recording carries by content (like every input), so the replay loads it
-        "--save-state": SCRATCH, "--at": KEEP, "--load-state": KEEP}
-_KAS_FRONT = {**_RUN, "--script": KEEP, "--background": KEEP, "--baud": KEEP, "--tablet": TAPE}
-
-PROGRAMS: dict[tuple[str, str], dict[str, str]] = {
-    ("sigma", "run"): {**_RUN, "--model": KEEP, "--baud": KEEP, "--in": KEEP,
-                       "--seconds": KEEP, "--record-line": DROP, "--pty": OUTSIDE,
-                       "--listen": OUTSIDE, "--serial": OUTSIDE,
-                       "--order-timeout": KEEP, "--idle-timeout": KEEP, "--session-time": KEEP,
-                       "--trace": SCRATCH, "--strict": KEEP},
-    ("rainbow", "run"): {**_RUN, "--screenshot-frame": KEEP, "--record-stream": DROP,
-                         "--strict": KEEP, "--demo": KEEP, "--tablet": TAPE,
-                         "--trace": SCRATCH, "--strict-protocol": KEEP},
-    ("kas", "edit"): {**_KAS_FRONT, "--over": KEEP, "--seed": KEEP},
-    ("kas", "path"): {**_KAS_FRONT, "--out": SCRATCH, "--ticks": SCRATCH,
-                      "--previous": KEEP, "--no-library": KEEP},
-    ("kas", "superimpose"): {**_KAS_FRONT, "--out": SCRATCH, "--prompt": KEEP},
-    ("kas", "view"): {**_RUN, "--realtime": KEEP, "--every": KEEP, "--baud": KEEP,
-                      "--fps": KEEP, "--swap": KEEP, "--background": KEEP},
-    ("kas", "paint"): {**_RUN, "--ops": KEEP, "--save": SCRATCH, "--script": KEEP,
-                       "--replay": KEEP, "--gif": SCRATCH, "--mp4": SCRATCH, "--baud": KEEP},
-    ("snooker", "play"): {**_RUN, "--events": KEEP, "--save": SCRATCH},
-    ("snooker", "replay"): {**_RUN, "--first": KEEP, "--last": KEEP},
-    ("snooker", "visualise"): dict(_RUN),
-    ("snooker", "camera"): {**_RUN, "--events": KEEP},
-    ("ca", "program"): {**_RUN, "--rules": KEEP, "--pattern": KEEP, "--log": SCRATCH,
-                        "--record-pans": KEEP, "--checkpoint": KEEP, "--script": KEEP,
-                        "--replay-pans": KEEP, "--start": KEEP, "--edges": KEEP,
-                        "--seed": KEEP, "--events": KEEP, "--json": KEEP},
-    ("ca", "actors"): {**_RUN, "--rules": KEEP, "--events": KEEP, "--tablet": TAPE},
-}
 
 # why the options people are most likely to meet are refused (any other: "not replayed")
 _WHY = {
@@ -98,14 +63,43 @@ def checked_argv(argv: list[str]) -> list[str]:
                             f"{MAX_WORD} characters")
     words = cli.normalise_argv(argv)
     key = tuple(words[:2])
-    table = PROGRAMS.get(key)  # type: ignore[arg-type]
+    sub = cli.command_parser(cli.build_parser(words), key)
+    table = None if sub is None else program_options(sub)
     if table is None:
         raise ReplayRefused(f"'{' '.join(words[:2])}' is not a program a replay runs "
-                            f"(only: {', '.join(' '.join(k) for k in PROGRAMS)})")
-    sub = _subparser(cli.build_parser(), key)
+                            f"(only: {', '.join(' '.join(k) for k in programs())})")
     out = list(key) + _options(words[2:], table, sub, " ".join(key))
     _parse(cli, out)
     return out
+
+
+def program_options(sub: argparse.ArgumentParser) -> dict[str, str] | None:
+    """What a replay does with each option of the command ``sub`` parses (its declared
+    classes), or None when the command is not a program a replay runs (no session
+    ``--record``)."""
+    record = sub._option_string_actions.get("--record")
+    if getattr(record, "replay", None) != DROP:
+        return None
+    return {flag: action.replay for action in sub._actions if hasattr(action, "replay")
+            for flag in action.option_strings}
+
+
+def programs() -> dict[tuple[str, str], dict[str, str]]:
+    """Every program a replay runs, with program_options (builds every parser)."""
+    from camlab88 import cli
+
+    out = {}
+    for area, area_parser in _choices(cli.build_parser()).items():
+        for action, sub in _choices(area_parser).items():
+            table = program_options(sub)
+            if table is not None:
+                out[(area, action)] = table
+    return out
+
+
+def _choices(parser: argparse.ArgumentParser) -> dict[str, argparse.ArgumentParser]:
+    return next((a.choices for a in parser._actions
+                 if isinstance(a, argparse._SubParsersAction)), {})
 
 
 def _options(words: list[str], table: dict[str, str], sub: argparse.ArgumentParser,
@@ -158,19 +152,12 @@ def _bounded(name: str, value: str) -> None:
         raise ReplayRefused(f"option {name} {value}: outside -{limit}..{limit}")
 
 
-def _subparser(parser: argparse.ArgumentParser, key: tuple[str, ...]) -> argparse.ArgumentParser:
-    for word in key:
-        action = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
-        parser = action.choices[word]
-    return parser
-
-
 def _parse(cli, argv: list[str]) -> argparse.Namespace:
     """The program's own parser on the command line the replay will run."""
     said = io.StringIO()
     try:
         with contextlib.redirect_stderr(said), contextlib.redirect_stdout(said):
-            args = cli.build_parser().parse_args(argv)
+            args = cli.build_parser(argv).parse_args(argv)
     except SystemExit:
         last = (said.getvalue().strip().splitlines() or ["does not parse"])[-1]
         raise ReplayRefused(f"the program's parser refuses it: {last}") from None

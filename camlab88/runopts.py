@@ -17,6 +17,8 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from camlab88.replay_policy import DROP, KEEP, SCRATCH
+
 if TYPE_CHECKING:
     from camlab88.emulator.harness import RunOptions
 
@@ -42,19 +44,28 @@ def positive(text: str) -> int:
 
 def add_run_options(p: argparse.ArgumentParser, record: bool = True,
                     stop_after: bool = True) -> None:
-    """Add the shared run flags to an action's parser."""
-    p.add_argument("--headless", action="store_true", help="no window (virtual time)")
-    p.add_argument("--screenshot", type=Path, metavar="PNG",
-                   help="run to the end unpaced, save the last screen as PNG and exit")
-    p.add_argument("--frames", type=frames_dir, metavar="DIR",
-                   help="write every frame shown as DIR/frame_NNNNN.png")
+    """Add the shared run flags to an action's parser: each is run-only (it changes how the
+    run is shown or recorded, never what the program does: a save state's identity leaves
+    it out) and says what a replay does with it (camlab88.replay_policy)."""
+    shown = [
+        (p.add_argument("--headless", action="store_true", help="no window (virtual time)"),
+         KEEP),
+        (p.add_argument("--screenshot", type=Path, metavar="PNG",
+                        help="run to the end unpaced, save the last screen as PNG and exit"),
+         SCRATCH),
+        (p.add_argument("--frames", type=frames_dir, metavar="DIR",
+                        help="write every frame shown as DIR/frame_NNNNN.png"), SCRATCH)]
     if stop_after:
-        p.add_argument("--stop-after", type=positive, metavar="N",
-                       help="stop after N frames")
-    if record:
-        p.add_argument("--record", type=Path, metavar="FILE",
-                       help="record the session (replay it with 'camlab88 replay FILE')")
-    p.add_argument("--scale", type=positive, default=1, help="window scale (default 1)")
+        shown.append((p.add_argument("--stop-after", type=positive, metavar="N",
+                                     help="stop after N frames"), KEEP))
+    if record:  # the session recorder: a command with it is a program a replay runs
+        shown.append((p.add_argument(
+            "--record", type=Path, metavar="FILE",
+            help="record the session (replay it with 'camlab88 replay FILE')"), DROP))
+    shown.append((p.add_argument("--scale", type=positive, default=1,
+                                 help="window scale (default 1)"), KEEP))
+    for action, kind in shown:
+        action.replay, action.run_only = kind, True
     from camlab88.control_flags import add_control_options
 
     add_control_options(p, speed_flag=not any(a.dest == "speed" for a in p._actions))
@@ -90,7 +101,8 @@ def run_options(args: argparse.Namespace, command: str, can_headless: str | None
         headless=headless, scale=getattr(args, "scale", 1),
         screenshot=getattr(args, "screenshot", None), frames=getattr(args, "frames", None),
         record=getattr(args, "record", None), stop_after=getattr(args, "stop_after", None),
-        command=command, argv=list(sys.argv[1:] if argv is None else argv))
+        command=command, argv=list(sys.argv[1:] if argv is None else argv),
+        run_only=getattr(args, "_run_only", {}))
 
 
 def unattended(opts: RunOptions) -> bool:

@@ -7,6 +7,8 @@ from __future__ import annotations
 import argparse
 from typing import TYPE_CHECKING
 
+from camlab88.replay_policy import KEEP
+
 if TYPE_CHECKING:
     from camlab88.emulator.harness import RunOptions
     from camlab88.protocols.rainbow.script import Player
@@ -18,7 +20,8 @@ HEADLESS_NEEDS_EVENTS = ("Headless it needs --events (the run ends with the scri
 def add_events_option(p: argparse.ArgumentParser) -> None:
     p.add_argument("--events", metavar="FILE",
                    help="scripted mouse/keyboard input (the Rainbow script format, "
-                   "docs/harness.md: move, glide, press, release, click, drag, key, type, wait)")
+                   "docs/harness.md: move, glide, press, release, click, drag, key, type, "
+                   "wait)").replay = KEEP
 
 
 def events_player(path: str | None) -> Player | None:

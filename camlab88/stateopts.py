@@ -11,6 +11,8 @@ from fractions import Fraction
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from camlab88.replay_policy import KEEP, SCRATCH
+
 if TYPE_CHECKING:
     from camlab88.emulator.harness.program_state import StateOptions
 
@@ -27,13 +29,19 @@ def seconds(text: str) -> Fraction:
 
 
 def add_state_options(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--save-state", type=Path, metavar="FILE",
-                   help="save the whole state (device + program) to FILE when the run ends, "
-                   "or at --at SECONDS of virtual time")
-    p.add_argument("--at", type=seconds, metavar="SECONDS",
-                   help="with --save-state: save at this virtual time (the run goes on)")
-    p.add_argument("--load-state", type=Path, metavar="FILE",
-                   help="continue from a state saved by the same program, version and inputs")
+    """--save-state, --at, --load-state: run-only; in a replay the file saved is an output,
+    and the state a run began from an input file the recording carries by content."""
+    for action, kind in (
+            (p.add_argument("--save-state", type=Path, metavar="FILE",
+                            help="save the whole state (device + program) to FILE when the "
+                            "run ends, or at --at SECONDS of virtual time"), SCRATCH),
+            (p.add_argument("--at", type=seconds, metavar="SECONDS",
+                            help="with --save-state: save at this virtual time (the run "
+                            "goes on)"), KEEP),
+            (p.add_argument("--load-state", type=Path, metavar="FILE",
+                            help="continue from a state saved by the same program, version "
+                            "and inputs"), KEEP)):
+        action.replay, action.run_only = kind, True
 
 
 def state_options(args: argparse.Namespace, command: str, active: Any) -> StateOptions:

@@ -9,16 +9,19 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any
 
+from camlab88.replay_policy import KEEP, SCRATCH
+
 
 def add_trace_options(p: argparse.ArgumentParser, strict: str = "--strict") -> None:
     """``strict`` is the flag's name (the Rainbow commands' --strict already means the
     relic's memory, so theirs is --strict-protocol)."""
     p.add_argument("--trace", metavar="FILE",
                    help="write every decoded order as JSON Lines: byte offset, virtual time, "
-                   "order, its arguments, any warning")
+                   "order, its arguments, any warning").replay = SCRATCH
     p.add_argument(strict, dest="strict_protocol", action="store_true",
                    help="exit 1 at the first unknown, malformed or out-of-range order, naming "
-                   "its byte offset, time, the bytes before it and what was expected")
+                   "its byte offset, time, the bytes before it and what was expected",
+                   ).replay = KEEP
 
 
 class TraceRun:

@@ -1,2 +1,2 @@
-"""One package per area; each defines ``register(subparsers)``, the parsers built from its
-``commands.toml`` (camlab88.commandspec)."""
+"""One package per area; each defines ``register(subparsers)``: its actions' parsers, each
+declared by the action's module beside its handler (camlab88.areas)."""

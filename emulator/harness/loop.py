@@ -107,6 +107,7 @@ class RunOptions:
     stop_after: int | None = None       # stop after this many frames
     command: str = "camlab88"           # for messages: "camlab88 kas edit"
     argv: list[str] = field(default_factory=list)   # for recordings
+    run_only: dict[str, int] = field(default_factory=dict)  # argv's run-only flags: values
     inputs: list[Path] = field(default_factory=list)  # extra input files to record
     controls: Controls = field(default_factory=Controls)  # --speed, --video, --inspect...
     state: Any = None  # emulator.harness.program_state.StateOptions: save states, seeking

@@ -29,10 +29,6 @@ own_state(Terminal)  # the terminal's own versioned state (emulator/sigma/state.
 if TYPE_CHECKING:
     from camlab88.emulator.harness.loop import Harness
 
-# flags that change how a run is shown or recorded, never what the program does
-RUN_ONLY = {"--headless": 0, "--screenshot": 1, "--frames": 1, "--stop-after": 1,
-            "--record": 1, "--scale": 1, "--save-state": 1, "--load-state": 1, "--at": 1,
-            "--speed": 1, "--period": 0, "--inspect": 0, "--inspect-out": 1, "--video": 1}
 SUFFIX = ".c88state"
 
 
@@ -105,11 +101,14 @@ def load_target_state(target: Any, data: bytes) -> None:
 def identity(harness: Harness, version: str) -> dict[str, Any]:
     """What a state needs to be loaded: the program, the version, the shaping arguments."""
     return {"program": harness.options.command, "camlab88": version,
-            "args": shaping_args(harness.options.argv, harness.options.inputs)}
+            "args": shaping_args(harness.options.argv, harness.options.inputs,
+                                 harness.options.run_only)}
 
 
-def shaping_args(argv: list[str], extra: list[Path]) -> list[str]:
-    """``argv`` without run-only flags; each word naming a file stands for its content."""
+def shaping_args(argv: list[str], extra: list[Path], run_only: dict[str, int]) -> list[str]:
+    """``argv`` without its ``run_only`` flags (flag -> how many values it takes: those
+    that change how a run is shown or recorded, never what the program does, as the
+    command's parser declares them); each word naming a file stands for its content."""
     out: list[str] = []
     skip = 0
     for word in argv:
@@ -117,8 +116,8 @@ def shaping_args(argv: list[str], extra: list[Path]) -> list[str]:
             skip -= 1
             continue
         name, eq, value = word.partition("=")
-        if name in RUN_ONLY:
-            skip = 0 if eq else RUN_ONLY[name]
+        if name in run_only:
+            skip = 0 if eq else run_only[name]
             continue
         out.append(_by_content(word))
     return out + [_by_content(str(p)) for p in extra]

@@ -24,10 +24,11 @@ def test_no_function_in_camlab88_is_longer_than_40_lines() -> None:
 
 
 def test_every_area_lists_its_actions_one_module_each() -> None:
-    """Each action is a module with an entry in its area's commands.toml naming the
-    module's handler; an area that is one command registers itself."""
+    """Each action is a module declaring its parser (``add_parser``) beside the handler it
+    runs; an area that is one command registers itself."""
+    import argparse
+
     from camlab88.cli import COMMAND_MODULES
-    from camlab88.commandspec import area_spec
 
     for area in COMMAND_MODULES:
         pkg = importlib.import_module(f"camlab88.commands.{area}")
@@ -37,19 +38,6 @@ def test_every_area_lists_its_actions_one_module_each() -> None:
             assert callable(pkg.register), area
         for action in actions:
             module = importlib.import_module(f"camlab88.commands.{area}.{action}")
-            handler = area_spec(area)[action]["handler"]
-            assert callable(getattr(module, handler)), (area, action, handler)
-
-
-def test_action_modules_hold_no_parser_prose() -> None:
-    """An action's parser and its prose are its entry in the area's commands.toml
-    (camlab88/commandspec.py), not add_parser/add_argument calls in its module."""
-    found = []
-    for path in sorted((ROOT / "commands").glob("*/*.py")):
-        if path.name == "__init__.py":  # an area's own option helpers live there
-            continue
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-            if (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
-                    and node.func.attr in ("add_parser", "add_argument")):
-                found.append(f"{path.relative_to(ROOT.parent)}:{node.lineno}")
-    assert not found, "move these into commands.toml:\n" + "\n".join(found)
+            parser = module.add_parser(argparse.ArgumentParser().add_subparsers())
+            handler = parser.get_default("handler")
+            assert handler.__module__ == module.__name__, (area, action, handler)

@@ -119,7 +119,7 @@ def test_the_wheel_holds_camlab88_and_its_dist_info_only(wheel: Path) -> None:
     # the mapped folders are inside, with their data files
     for module in ("camlab88/emulator/window.py", "camlab88/apps/ca/library/life.rules",
                    "camlab88/protocols/sigma/__init__.py", "camlab88/roms/__init__.py",
-                   "camlab88/base/atomicfile.py", "camlab88/commands/ca/commands.toml"):
+                   "camlab88/base/atomicfile.py", "camlab88/commands/ca/run.py"):
         assert module in names, module
 
 

@@ -5,11 +5,35 @@ from __future__ import annotations
 
 import argparse
 import sys
+from camlab88.rainbow_tablet import add_tablet_option
+from camlab88.replay_policy import KEEP
+from camlab88.runopts import add_run_options
+from camlab88.scriptopts import HEADLESS_NEEDS_EVENTS, add_events_option
 
-from camlab88.commandspec import keys_of
 
 COMMAND = "camlab88 ca actors"
-KEYS = keys_of(__name__)
+KEYS = """\
+left: add/drag a point, set a slider; right: delete a point; middle: menu; s save; Tab next \
+cell type; q, Esc or close the window to quit"""
+
+DESCRIPTION = f"""\
+Edit a rule set's actors file on the emulated Rainbow: pick a cell type, draw its lathe \
+profile, watch the solid turn, set colour and material, save (docs/ca_actors.md). \
+{HEADLESS_NEEDS_EVENTS} A --screenshot run never saves."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("actors", help="the 3-D picture editor for cell types (section 8.1)",
+                           description=DESCRIPTION)
+    p.add_argument("file", metavar="FILE", help="the actors file (created by the first save)")
+    p.add_argument("--rules",
+                   help="rule file or library name whose cell types are edited (default: "
+                        "the one FILE names, else life)").replay = KEEP
+    add_events_option(p)
+    add_tablet_option(p, what="draw with", where=": its surface maps onto the profile pad")
+    add_run_options(p)
+    p.set_defaults(handler=actors)
+    return p
 
 
 def actors(args: argparse.Namespace) -> int:

@@ -11,6 +11,19 @@ from camlab88.runopts import check_output, fail
 
 COMMAND = "camlab88 ca convert"
 
+DESCRIPTION = """\
+Read a pattern and write it in the format given by the output file's extension (.rle, .cells, \
+.mc Golly's macrocell, anything else native)."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("convert", help="convert a pattern between native, RLE, .cells and .mc",
+                           description=DESCRIPTION)
+    p.add_argument("source", help="pattern file or library name")
+    p.add_argument("dest", help="output file")
+    p.set_defaults(handler=_convert)
+    return p
+
 
 def _convert(args: argparse.Namespace) -> int:
     from camlab88.apps.ca import library

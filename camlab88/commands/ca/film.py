@@ -9,9 +9,52 @@ import argparse
 import sys
 from pathlib import Path
 
-from camlab88.runopts import check_output, fail
+from camlab88.argtypes import dask_address, film_path, frame_size
+from camlab88.runopts import check_output, fail, positive
 
 COMMAND = "camlab88 ca film"
+
+DESCRIPTION = """\
+Run RULES on PATTERN for N generations and film it with each cell state drawn as its actor \
+(docs/ca_actors.md; a state without one is a coloured tile), births growing, deaths \
+shrinking, moving cells gliding, F frames a generation. Beside --out: \
+OUT_frames/frame_NNNNN.png; frames already rendered are kept, so a stopped truecolour film \
+resumes (docs/ca_film.md)."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("film",
+                           help="the automaton as a film of 3-D actors (chessmen...) (§8.1)",
+                           description=DESCRIPTION)
+    p.add_argument("rules", metavar="RULES", help="rule file or library name (life, maze)")
+    p.add_argument("pattern", metavar="PATTERN", help="pattern file or library name")
+    p.add_argument("--actors", metavar="FILE",
+                   help="the actors file (e.g. examples/ca/chess.actors); without it "
+                        "every cell is a tile")
+    p.add_argument("--generations", type=positive, required=True, metavar="N")
+    p.add_argument("--camera", metavar="SCRIPT",
+                   help="camera script (CCL over the grid: events are generation numbers, "
+                        "coordinates cells)")
+    p.add_argument("--out", type=film_path, required=True, metavar="FILM", help=".mp4 or .gif")
+    p.add_argument("--gif", type=film_path, metavar="FILE", help="also a GIF of the film")
+    p.add_argument("--mode", default="truecolour", choices=["truecolour", "t5688"])
+    p.add_argument("--size", default="768x512", type=frame_size, metavar="WxH",
+                   help="truecolour frame size (t5688: its 768x512 screen)")
+    p.add_argument("--frames-per-generation", default=8, type=positive, metavar="F")
+    p.add_argument("--glide", default="all", metavar="all|none|S,S",
+                   help="states whose cells glide to a neighbouring birth (default all)")
+    p.add_argument("--samples", default=2, type=positive, metavar="S",
+                   help="anti-aliasing: S x S samples a pixel (default 2)")
+    p.add_argument("--lights", metavar="FILE",
+                   help="lights file (x y z in cells; default four lights above the board)")
+    p.add_argument("--edges", default="wrap", choices=["wrap", "dead"])
+    p.add_argument("--seed", default=0, type=int)
+    p.add_argument("--dask", type=dask_address, metavar="ADDRESS|local",
+                   help="render on a Dask cluster")
+    p.add_argument("--workers", type=positive, metavar="N",
+                   help="processes (default: one per core)")
+    p.set_defaults(handler=film)
+    return p
 
 
 def film(args: argparse.Namespace) -> int:

@@ -5,16 +5,75 @@ from __future__ import annotations
 import argparse
 import sys
 
-from camlab88.commandspec import keys_of
-from camlab88.runopts import fail, unattended
-from camlab88.scriptopts import events_player, scripted_run_options
+from camlab88.replay_policy import KEEP, SCRATCH
+from camlab88.runopts import add_run_options, fail, unattended
+from camlab88.scriptopts import (
+    HEADLESS_NEEDS_EVENTS,
+    add_events_option,
+    events_player,
+    scripted_run_options,
+)
 
 COMMAND = "camlab88 ca program"
-KEYS = keys_of(__name__)
+KEYS = """\
+left button pans; middle: menus; right: edit / step; Finish (menu) or close the window to \
+quit"""
 TEMPLATE = "Log/k,RecordPansAndZooms/s,Checkpoint,Script/k,ReplayPansAndZooms/s"
 # Tripos keyword -> the --flag form's destination (section 7.3.1)
 TRIPOS_DEST = {"Log": "log", "RecordPansAndZooms": "record_pans", "Checkpoint": "checkpoint",
                "Script": "script", "ReplayPansAndZooms": "replay_pans"}
+
+DESCRIPTION = f"""\
+The interactive cellular automaton on the emulated Rainbow: mouse (left button pans, middle \
+button menus, right button edits / steps) and keyboard. Log, RecordPansAndZooms, Checkpoint, \
+Script and ReplayPansAndZooms as in section 7.3.1. {HEADLESS_NEEDS_EVENTS} A --screenshot run \
+writes no log and no checkpoint."""
+EPILOG = f"""\
+The section 7.3.1 arguments come in two forms: the thesis's Tripos form, as positional words \
+(template {TEMPLATE}; /k: the keyword must be given before its value, /s: a switch; \
+Checkpoint's keyword may be left out), e.g. `camlab88 ca program Log run.log \
+RecordPansAndZooms Checkpoint 50`; and ours, the --flag form: Log/k = --log, \
+RecordPansAndZooms/s = --record-pans, Checkpoint = --checkpoint, Script/k = --script, \
+ReplayPansAndZooms/s = --replay-pans. Keywords are matched in any case; KEY=value works too. \
+Give each argument in one form only."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("program",
+                           help="the interactive program on the emulated Rainbow (sections "
+                                "7.3.1-2)", description=DESCRIPTION, epilog=EPILOG)
+    p.add_argument("tripos", nargs="*", metavar="ARG",
+                   help=f"the thesis's Tripos form: {TEMPLATE} (see below)")
+    p.add_argument("--rules", default="life",
+                   help="rule file or library name (life)").replay = KEEP
+    p.add_argument("--pattern", help="pattern loaded at the centre of the view").replay = KEEP
+    p.add_argument("--log", metavar="L",
+                   help="Log: record every intervention in file L").replay = SCRATCH
+    p.add_argument("--record-pans", action="store_true",
+                   help="RecordPansAndZooms: the log also records pans and zooms").replay = KEEP
+    p.add_argument("--checkpoint", default=0, type=int, metavar="N",
+                   help="Checkpoint: write L<generation> every N generations").replay = KEEP
+    p.add_argument("--script", metavar="S", help="Script: replay the log S").replay = KEEP
+    p.add_argument("--replay-pans", action="store_true",
+                   help="ReplayPansAndZooms: also repeat the script's pans and "
+                        "zooms").replay = KEEP
+    p.add_argument("--start", type=int, metavar="G",
+                   help="begin the script at generation G (asked for if omitted)").replay = KEEP
+    p.add_argument("--edges", choices=["wrap", "bounded"],
+                   help="plane edges (default wrap; a script's log header decides)").replay = KEEP
+    p.add_argument("--seed", type=int,
+                   help="seed of random outcomes (default 0; a script's log header "
+                        "decides)").replay = KEEP
+    p.add_argument("--random", action="store_true",
+                   help="truly random outcomes (§8.1): a seed drawn from the operating system, "
+                        "printed and written to the Log's header (and a recording), so a "
+                        "replay repeats the run")
+    add_events_option(p)
+    add_run_options(p)
+    p.add_argument("--json", action="store_true",
+                   help="print the final statistics as JSON").replay = KEEP
+    p.set_defaults(handler=program)
+    return p
 
 
 def program(args: argparse.Namespace) -> int:

@@ -5,6 +5,24 @@ from __future__ import annotations
 import argparse
 import sys
 
+DESCRIPTION = """\
+Start from the latest checkpoint (log name + generation) at or before GENERATION, apply the \
+script's interventions and rules up to GENERATION, and print the statistics."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("replay", help="replay a Log as a Script up to a generation",
+                           description=DESCRIPTION)
+    p.add_argument("--script", required=True, help="log file written by a ca session")
+    p.add_argument("--generation", type=int, required=True)
+    p.add_argument("--edges", choices=["wrap", "bounded"],
+                   help="only for logs that do not record their edges (default wrap)")
+    p.add_argument("--seed", type=int,
+                   help="only for logs that do not record their seed (default 0)")
+    p.add_argument("--json", action="store_true")
+    p.set_defaults(handler=_replay)
+    return p
+
 
 def _replay(args: argparse.Namespace) -> int:
     from camlab88.apps.ca.engine import Engine

@@ -8,6 +8,42 @@ from pathlib import Path
 
 from camlab88.runopts import check_output, fail
 
+DESCRIPTION = """\
+Load RULES and PATTERN (paths or library names), place the pattern's reference point at the \
+centre of the 65536x65536 plane, run N generations and print the statistics of the Statistics \
+menu."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("run", help="run rules on a pattern headless and print statistics",
+                           description=DESCRIPTION)
+    p.add_argument("--rules", required=True, help="rule file or library name (e.g. life)")
+    p.add_argument("--pattern", required=True,
+                   help="pattern file (.pat native, .rle, .cells) or library name")
+    p.add_argument("--generations", type=int, required=True, help="generations to run")
+    p.add_argument("--json", action="store_true", help="print one JSON object last")
+    p.add_argument("--edges", default="wrap", choices=["wrap", "bounded"],
+                   help="plane edges wrap round (torus) or are bounded (default wrap)")
+    p.add_argument("--seed", default=0, type=int,
+                   help="seed of the reproducible random outcomes (default 0)")
+    p.add_argument("--orientation", default="identity",
+                   help="one of the eight orientations (identity, rot90, ... "
+                        "antitranspose)")
+    p.add_argument("--every", default=0, type=int,
+                   help="also print a statistics line every N generations")
+    p.add_argument("--png", metavar="PATH",
+                   help="also write a picture of the final population's bounding box")
+    p.add_argument("--zoom", default=4, type=int, help="pixels per cell for --png")
+    p.add_argument("--monochrome", action="store_true", help="--png in white on black")
+    p.add_argument("--engine", default="auto", choices=["auto", "hashlife", "direct"],
+                   help="hashlife jumps (deterministic rules only), direct steps one "
+                        "generation at a time; auto picks hashlife for long runs (default)")
+    p.add_argument("--memory", default=512, type=int, metavar="MB",
+                   help="HashLife node-table limit; past it the table is "
+                        "garbage-collected (default 512)")
+    p.set_defaults(handler=_run)
+    return p
+
 
 def _run(args: argparse.Namespace) -> int:
     from camlab88.apps.ca import library

@@ -9,19 +9,37 @@ from __future__ import annotations
 
 import argparse
 import sys
+from pathlib import Path
 
 from camlab88.commands.demo.acts import ACTS, FPS, Act
-from camlab88.commandspec import add_command, keys_of
 
 __all__ = ["ACTS", "Act", "register"]
 COMMAND = "camlab88 demo"
-KEYS = keys_of(__name__)
+KEYS = "Space: next act; Esc or close: quit"
 ACT_NAMES = tuple(a.name for a in ACTS)  # the --only choices; the help lists them
 ACT_LIST = "; ".join(f"{i}. {a.name}: {a.about}" for i, a in enumerate(ACTS, 1))
 
+DESCRIPTION = f"""\
+Play the demo: the emulated devices running the thesis's programs, at 25 frames a second of \
+device time. The acts: {ACT_LIST}. With a display it opens a window (Space: next act, Esc: \
+quit); with none, or --headless, it writes every frame as PNG and one animated GIF per act \
+into --out."""
 
-def register(subparsers: argparse._SubParsersAction) -> None:
-    add_command(subparsers, __name__, demo)
+
+def register(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("demo", help="play the demo session (all acts)",
+                           description=DESCRIPTION)
+    p.add_argument("--headless", action="store_true", help="no window, write files")
+    p.add_argument("--out", default="camlab88-demo", type=Path,
+                   help="output directory when headless (default ./camlab88-demo)")
+    p.add_argument("--scale", default=1, type=int, help="window scale")
+    p.add_argument("--screenshot", type=Path,
+                   help="play unpaced, save the last screen of the last act and exit")
+    p.add_argument("--fast", action="store_true", help="do not pace to the wall clock")
+    p.add_argument("--only", action="append", choices=ACT_NAMES, metavar="ACT",
+                   help=f"play only this act (repeatable): {', '.join(ACT_NAMES)}")
+    p.set_defaults(handler=demo)
+    return p
 
 
 def demo(args: argparse.Namespace) -> int:

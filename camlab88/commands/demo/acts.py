@@ -1,12 +1,10 @@
-"""The demo's acts: a registry, one entry an act (``[[acts]]`` in the demo's commands.toml,
-where their titles and one-line descriptions are prose).  Each act's ``frames`` names a
-function of this module (``module:function``, imported when the act plays) yielding
-(h, w, 3) uint8 frames at 25 a second of device time, made by a program talking to an
-emulated device."""
+"""The demo's acts: a registry, one entry an act, in the order they play (``ACTS``: name,
+title, size, the function of this module yielding its frames, the line ``demo --help``
+shows). Each act's function yields (h, w, 3) uint8 frames at 25 a second of device time,
+made by a program talking to an emulated device."""
 
 from __future__ import annotations
 
-import importlib
 from typing import TYPE_CHECKING, Any, NamedTuple
 
 if TYPE_CHECKING:
@@ -19,23 +17,36 @@ class Act(NamedTuple):  # a NamedTuple, not a dataclass: every command builds th
     name: str
     title: str
     size: tuple[int, int]   # device pixels (w, h)
-    frames: str             # "module:function" yielding the act's frames
+    frames: str             # the function of this module yielding the act's frames
     about: str              # one line for --help
 
     def play(self) -> Iterator[Any]:
-        module, func = self.frames.rsplit(":", 1)
-        return getattr(importlib.import_module(module), func)()
+        return globals()[self.frames]()
 
 
-def _acts() -> tuple[Act, ...]:
-    from camlab88.commandspec import area_spec
-
-    return tuple(Act(a["name"], a["title"], (a["size"][0], a["size"][1]),
-                     f"{__name__}:{a['frames']}", a["about"])
-                 for a in area_spec("demo")["acts"])
-
-
-ACTS = _acts()
+ACTS: tuple[Act, ...] = (
+    Act("sigma", "Sigma T5684 on a 9600-baud line", (768, 512), "sigma_frames",
+        "a host session over the line: vectors, dash masks, ellipses, fill, LUT animation, "
+        "double buffering (§3.1.4)"),
+    Act("kas", "KAS keyframe editor and line test on the T5684", (768, 512), "kas_frames",
+        "KAS's editor drawing a stroke, then a line test of 'a line taking a walk'"),
+    Act("paint", "KAS painting on the T5688", (768, 512), "paint_frames",
+        "the demo walk auto-painted from its middle frame, replayed double-buffered at 9600 "
+        "baud (§3.3)"),
+    Act("snooker", "snooker motion development on the Rainbow", (768, 576), "snooker_frames",
+        "a break simulated and replayed at 25 frames a second"),
+    Act("snooker_camera", "snooker camera angles on the Rainbow", (768, 576),
+        "snooker_camera_frames",
+        "the thesis's example camera script (§6.3.1) over its shot, in the visualiser (§6.3.2)"),
+    Act("film", "from motion development to rendered film", (768, 512), "film_frames",
+        "a break simulated, a camera script interpreted, 36 frames rendered in true colour "
+        "(§6.4)"),
+    Act("ca", "the programmable cellular automaton on the Rainbow", (768, 576), "ca_frames",
+        "Life's Gosper gun in auto mode, panned and zoomed by scripted mouse input"),
+    Act("shelf", "Appendix I's shelf unit on the Rainbow", (768, 576), "shelf_frames",
+        "four translucent pads slide apart and together; only arcs move, the LUT keeps the "
+        "translucence"),
+)
 
 
 def sigma_frames() -> Iterator[Any]:

@@ -14,7 +14,6 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from camlab88.commandspec import add_command
 from camlab88.figure_catalogue import by_number
 from camlab88.figure_catalogue import figures as catalogue
 from camlab88.runopts import fail
@@ -23,9 +22,22 @@ COMMAND = "camlab88 figures"
 FIGURES_DIR = Path(__file__).resolve().parents[3] / "examples" / "figures"
 
 
+DESCRIPTION = """\
+The thesis's screen figures as session recordings (examples/figures). With no number, the \
+list with captions; with one, that figure replayed in a window, or headless to a PNG of its \
+last screen."""
 
-def register(subparsers: argparse._SubParsersAction) -> None:
-    add_command(subparsers, __name__, figures)
+
+def register(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("figures",
+                           help="the thesis's screen figures, replayed from shipped recordings",
+                           description=DESCRIPTION)
+    p.add_argument("number", nargs="?", help="a figure number, e.g. 6.5")
+    p.add_argument("--headless", action="store_true", help="no window: write the PNG")
+    p.add_argument("--screenshot", type=Path, metavar="PNG",
+                   help="save the last screen here (default fig-N.png when headless)")
+    p.set_defaults(handler=figures)
+    return p
 
 
 def recording(number: str) -> Path:

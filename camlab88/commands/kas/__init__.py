@@ -8,11 +8,34 @@ model on a script) and the programs on the emulated Sigma T5684 (``edit``, ``pat
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 
 from camlab88.areas import register_area
+from camlab88.replay_policy import KEEP, TAPE
+from camlab88.runopts import add_run_options
 
 ACTIONS = ("inbetween", "superimpose", "plot", "export", "schedule", "edit_script",
            "path_script", "edit", "path", "view", "demo", "library", "paint")
+HELP = "KAS, the keyframe animation suite (chapter 3)"
+DESCRIPTION = """\
+KAS: keyframe editor model, in-betweener, superimposer, viewer schedule and hard copy (thesis \
+ch. 3). File names may be library names (see 'kas library')."""
+
+
+def add_background_options(p: argparse.ArgumentParser) -> None:
+    """The background options several of the area's commands share."""
+    p.add_argument("--background", choices=["black", "white"], default="black").replay = KEEP
+
+
+def add_front_options(p: argparse.ArgumentParser) -> None:
+    """The front options several of the area's commands share."""
+    p.add_argument("--script", type=Path,
+                   help="event script (docs/kas.md; times optional)").replay = KEEP
+    p.add_argument("--tablet", metavar="SOURCE",
+                   help="tablet source (see 'camlab88 tablet'); default: the mouse").replay = TAPE
+    add_background_options(p)
+    p.add_argument("--baud", type=int, default=9600).replay = KEEP
+    add_run_options(p, stop_after=False)
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:

@@ -6,11 +6,29 @@ import argparse
 import sys
 from pathlib import Path
 
-from camlab88.commandspec import keys_of
+from camlab88.commands.kas import add_front_options
+from camlab88.replay_policy import KEEP
 from camlab88.runopts import fail
 
 COMMAND = "camlab88 kas edit"
-KEYS = keys_of(__name__)
+KEYS = "F2 saves; Esc/close quits (asks if unsaved: y saves, n discards, Esc stays)"
+
+DESCRIPTION = """\
+Edit keyframe FILE (created, empty, if missing) on an emulated Sigma T5684 over a 9600-baud \
+line: the stylus is the tablet (--tablet SOURCE) or the mouse, keys are typed on the \
+terminal. F2 saves. --script runs an event script (docs/kas.md); --headless needs one. A \
+--screenshot run saves nothing but the PNG."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("edit", help="the keyframe editor on the emulated Sigma T5684",
+                           description=DESCRIPTION)
+    p.add_argument("file")
+    add_front_options(p)
+    p.add_argument("--over", help="previous keyframe to draw over (§2.3 guide)").replay = KEEP
+    p.add_argument("--seed", default=0, type=int, help="de-regularise random seed").replay = KEEP
+    p.set_defaults(handler=edit)
+    return p
 
 
 def edit(args: argparse.Namespace) -> int:

@@ -6,6 +6,22 @@ import argparse
 
 from camlab88.runopts import fail
 
+DESCRIPTION = """\
+Headless: feed the editor model the events of SCRIPT (move/down/up X Y, key K, menu ITEM, \
+type TEXT) and save the keyframe."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("edit-script", help="run the keyframe editor model on an event script",
+                           description=DESCRIPTION)
+    p.add_argument("script")
+    p.add_argument("--start", help="keyframe to start from (default empty)")
+    p.add_argument("--over", help="previous keyframe to draw over (§2.3 guide)")
+    p.add_argument("--seed", default=0, type=int)
+    p.add_argument("--out", required=True)
+    p.set_defaults(handler=_edit_script)
+    return p
+
 
 def _edit_script(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import files, library

@@ -6,9 +6,27 @@ import argparse
 import sys
 from pathlib import Path
 
+from camlab88.commands.kas import add_background_options
 from camlab88.runopts import check_output, fail, progress
 
 COMMAND = "camlab88 kas export"
+
+DESCRIPTION = """\
+Render every frame and write OUT.gif, OUT.mp4 or OUT_NNNN.png, with a progress bar. By \
+default each frame is drawn by the emulated Sigma T5684 (768 x 512, 16 colours, its own \
+vectors); --renderer raster uses the software rasteriser at any --width."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("export", help="export a sequence as GIF, MP4 or PNGs",
+                           description=DESCRIPTION)
+    p.add_argument("seq")
+    p.add_argument("out")
+    p.add_argument("--renderer", default="sigma", choices=["sigma", "raster"])
+    p.add_argument("--width", default=768, type=int, help="raster renderer only")
+    add_background_options(p)
+    p.set_defaults(handler=export)
+    return p
 
 
 def export(args: argparse.Namespace) -> int:

@@ -17,6 +17,42 @@ def _timing(name: str | None):
         return timing.curve(name)
     return files.load_timing(path)
 
+DESCRIPTION = """\
+Frames from keyframe A to B (both included) along a sample path, placed by a timing (tick \
+marks or a curve); with more than two keyframes a spline goes through them all."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("inbetween", help="in-between keyframes into a sequence",
+                           description=DESCRIPTION)
+    p.add_argument("keys", nargs="+", metavar="KEY", help="two or more keyframe files")
+    p.add_argument("--path", help="sample path file (two keyframes only)")
+    p.add_argument("--timing",
+                   help="timing file (ticks or curve) or a built-in curve name: linear, "
+                        "ease-in, ease-out, ease-in-out, overshoot")
+    p.add_argument("--count", "--frames", dest="frames", type=int, metavar="N",
+                   help="frames per pair of keyframes, both included (--frames N is the "
+                        "old spelling: elsewhere --frames names a directory of PNGs)")
+    p.add_argument("--missing", default="copy-nearest", choices=["copy-nearest", "grow", "stay"],
+                   help="what chains missing from a keyframe do (default copy-nearest)")
+    p.add_argument("--fit", default="similarity-reflect",
+                   choices=["similarity-reflect", "axis-stretch", "similarity", "stretch"],
+                   help="how the path is fitted to each point pair: axis-stretch is the "
+                        "thesis's literal per-axis stretch, similarity-reflect (default; "
+                        "'stretch' is its old name) and similarity are ours (docs/kas.md)")
+    p.add_argument("--method", default="catmull-rom",
+                   choices=["linear", "overhauser", "catmull-rom", "kochanek-bartels"],
+                   help="spline through three or more keyframes (default catmull-rom)")
+    p.add_argument("--tension", default=0.0, type=float)
+    p.add_argument("--continuity", default=0.0, type=float)
+    p.add_argument("--bias", default=0.0, type=float)
+    p.add_argument("--keep-redundant", action="store_true",
+                   help="keep collinear points instead of dropping them")
+    p.add_argument("--fps", default=25.0, type=float)
+    p.add_argument("--out", required=True, help="sequence file to write")
+    p.set_defaults(handler=_inbetween)
+    return p
+
 
 def _inbetween(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import files, library, pathfit

@@ -7,6 +7,24 @@ from pathlib import Path
 
 from camlab88.runopts import fail
 
+DESCRIPTION = """\
+Lists the user library ($CAMLAB88_KAS_LIBRARY, default ~/.local/share/camlab88/kas) and the \
+shipped one. --save FILE NAME checks FILE and copies it into the user library; library names \
+can then be given wherever a file is asked for. An entry of that NAME is replaced only with \
+--force."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("library",
+                           help="list (or add to) the libraries of keyframes, paths and "
+                                "timings",
+                           description=DESCRIPTION)
+    p.add_argument("--save", nargs=2, metavar=("FILE", "NAME"))
+    p.add_argument("--force", action="store_true",
+                   help="with --save: replace an existing entry of that NAME")
+    p.set_defaults(handler=_library)
+    return p
+
 
 def _library(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import library

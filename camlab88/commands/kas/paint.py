@@ -4,13 +4,41 @@ from __future__ import annotations
 
 import argparse
 import time
+from pathlib import Path
+from camlab88.replay_policy import KEEP, SCRATCH
 from dataclasses import replace
 from typing import Any
 
-from camlab88.runopts import fail, run_options, unattended
+from camlab88.runopts import add_run_options, fail, run_options, unattended
 
 COMMAND = "camlab88 kas paint"
 FLAT_OUT = "flat out, not at the line's speed"  # headless time is virtual: nothing paces it
+
+DESCRIPTION = """\
+Paint SEQ on an emulated Sigma T5688 over a 9600-baud line (thesis 3.3). Interactive (a \
+window, or --headless with --script): select chains, fill, colour, edit the palette; the \
+operations are recorded (--save). With --replay, or --ops with --frames/--gif/--mp4: every \
+frame painted from the operations file, double-buffered in the two spare quarters, each \
+painted frame written as DIR/frame_NNNNN.png (from 1)."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("paint", help="paint a sequence on the emulated Sigma T5688",
+                           description=DESCRIPTION)
+    p.add_argument("seq", help="the sequence (.kas; library names work)")
+    p.add_argument("--ops", type=Path, help="operations file to start from / replay").replay = KEEP
+    p.add_argument("--save", type=Path,
+                   help="write the operations file here at the end, with the seed points "
+                        "each frame used (default: --ops when interactive)").replay = SCRATCH
+    p.add_argument("--script", type=Path, help="painting script (docs/kas.md)").replay = KEEP
+    p.add_argument("--replay", action="store_true",
+                   help="paint every frame and play it").replay = KEEP
+    p.add_argument("--gif", type=Path, help="the painted sequence as a GIF").replay = SCRATCH
+    p.add_argument("--mp4", type=Path, help="the painted sequence as an MP4").replay = SCRATCH
+    p.add_argument("--baud", default=9600, type=int).replay = KEEP
+    add_run_options(p)
+    p.set_defaults(handler=paint)
+    return p
 
 
 def paint(args: argparse.Namespace) -> int:

@@ -5,11 +5,38 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from camlab88.commandspec import keys_of
+from camlab88.commands.kas import add_front_options
+from camlab88.replay_policy import KEEP, SCRATCH
 from camlab88.runopts import fail
 
 COMMAND = "camlab88 kas path"
-KEYS = keys_of(__name__)
+KEYS = """\
+draw the path with the stylus (mouse); t then touches place ticks; F2 saves; Esc/close quits \
+(asks if unsaved: y saves, n discards, Esc stays)"""
+
+DESCRIPTION = """\
+Keyframes A and B shown superimposed; the stylus draws the sample path, 't' then touches \
+place tick marks; F2 (or the end of a headless script) saves the path to --out and the ticks \
+to --ticks. A --screenshot run saves nothing but the PNG."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("path", help="draw a sample path and tick marks on the Sigma",
+                           description=DESCRIPTION)
+    p.add_argument("first")
+    p.add_argument("second")
+    p.add_argument("--out", required=True, help="sample path file to write").replay = SCRATCH
+    p.add_argument("--ticks",
+                   help="tick timing file to write (default: OUT with _ticks)").replay = SCRATCH
+    p.add_argument("--previous",
+                   help="the previous pair's path, shown for continuity (default: the "
+                        "path last saved for a pair ending at FIRST, if any)").replay = KEEP
+    p.add_argument("--no-library", action="store_true",
+                   help="do not keep the path in the user library (nor look up the "
+                        "previous pair's)").replay = KEEP
+    add_front_options(p)
+    p.set_defaults(handler=path)
+    return p
 
 
 def path(args: argparse.Namespace) -> int:

@@ -6,6 +6,22 @@ import argparse
 
 from camlab88.runopts import fail
 
+DESCRIPTION = """\
+Headless in-betweener set-up: keyframes A and B are shown, the SCRIPT's stylus stroke draws \
+the path, 't' then touches place tick marks; writes the path and the tick timing."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("path-script", help="draw a sample path and tick marks from a script",
+                           description=DESCRIPTION)
+    p.add_argument("first")
+    p.add_argument("second")
+    p.add_argument("script")
+    p.add_argument("--path-out", required=True)
+    p.add_argument("--timing-out", required=True)
+    p.set_defaults(handler=_path_script)
+    return p
+
 
 def _path_script(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import files, library

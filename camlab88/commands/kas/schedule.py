@@ -7,6 +7,26 @@ from pathlib import Path
 
 from camlab88.runopts import fail
 
+DESCRIPTION = """\
+Given each frame's size in characters on the line, compute the real-time line test of §3.1.4: \
+the frame due now is sent after each swap; frames passed over are dropped."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("schedule", help="which frames the real-time viewer shows and drops",
+                           description=DESCRIPTION)
+    p.add_argument("sizes",
+                   help="comma-separated characters per frame, or @FILE with one number a "
+                        "line")
+    p.add_argument("--fps", default=25.0, type=float)
+    p.add_argument("--baud", default=9600, type=float)
+    p.add_argument("--bits-per-char", default=10.0, type=float, help="10 for 8N1")
+    p.add_argument("--clock", default="first-shown", choices=["first-shown", "first-sent"],
+                   help="time runs from the first frame displayed (§3.1.4, default) or "
+                        "from its first character sent (the earlier model)")
+    p.set_defaults(handler=_schedule)
+    return p
+
 
 def _schedule(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import viewer_schedule as vs

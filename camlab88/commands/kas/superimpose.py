@@ -6,11 +6,32 @@ from __future__ import annotations
 import argparse
 import re
 
-from camlab88.commandspec import keys_of
+from camlab88.commands.kas import add_front_options
+from camlab88.replay_policy import KEEP, SCRATCH
 from camlab88.runopts import fail
 
 COMMAND = "camlab88 kas superimpose"
-KEYS = keys_of(__name__)
+KEYS = "type each sequence's start (frames) and Return; Return alone keeps the default"
+
+DESCRIPTION = """\
+Combine sequences; SEQ@N starts N frames late (its first frame is held until then); a \
+sequence that ends early holds its last frame. The same sequence may be given several times. \
+With --prompt the program runs on the emulated Sigma and asks each sequence's start on entry, \
+as section 3.1.3 says ('all timing information is prompted for on entry'); any @N is then the \
+default shown in brackets. Without --prompt the offsets come from the command line (ours)."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("superimpose", help="superimpose sequences with start offsets",
+                           description=DESCRIPTION)
+    p.add_argument("seqs", nargs="+", metavar="SEQ[@OFFSET]")
+    p.add_argument("--out", required=True).replay = SCRATCH
+    p.add_argument("--prompt", action="store_true",
+                   help="ask the timings on the Sigma (keyboard, or --script "
+                        "key events)").replay = KEEP
+    add_front_options(p)
+    p.set_defaults(handler=_superimpose)
+    return p
 
 
 def _superimpose(args: argparse.Namespace) -> int:

@@ -4,9 +4,36 @@ from __future__ import annotations
 
 import argparse
 
-from camlab88.runopts import fail, run_options
+from camlab88.commands.kas import add_background_options
+from camlab88.replay_policy import KEEP
+from camlab88.runopts import add_run_options, fail, run_options
 
 COMMAND = "camlab88 kas view"
+
+DESCRIPTION = """\
+Play SEQ on an emulated Sigma T5684 over the line, double buffered in two 2-bit buffers (four \
+colours). --realtime (default) keeps period-line time and drops the frames the line cannot \
+carry; --every shows every frame however long it takes."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("view", help="the line test: play a sequence on the emulated Sigma",
+                           description=DESCRIPTION)
+    p.add_argument("seq")
+    either = p.add_mutually_exclusive_group()
+    either.add_argument("--realtime", dest="mode", action="store_const", const="realtime",
+                        default="realtime").replay = KEEP
+    either.add_argument("--every", dest="mode", action="store_const", const="every",
+                        default="realtime").replay = KEEP
+    p.add_argument("--baud", default=9600, type=int).replay = KEEP
+    p.add_argument("--fps", type=float, help="default: the sequence's").replay = KEEP
+    p.add_argument("--swap", default="lut", choices=["lut", "mask"],
+                   help="buffer switch: rewrite the LUT (default) or the "
+                        "display mask").replay = KEEP
+    add_background_options(p)
+    add_run_options(p, stop_after=False)
+    p.set_defaults(mode="realtime", handler=view)
+    return p
 
 
 def view(args: argparse.Namespace) -> int:

@@ -7,6 +7,8 @@ import argparse
 from camlab88.areas import register_area
 
 ACTIONS = ("dump", "stream", "echo")
+HELP = "serial-line tools: dump recordings, extract streams, echo device"
+DESCRIPTION = "Tools for the emulated serial line (see docs/link.md)."
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:

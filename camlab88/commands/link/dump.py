@@ -9,6 +9,24 @@ SESSION_NOTE = ("is a session recording, not a link recording: `sigma run --reco
                 "now writes a session recording (play it with `camlab88 replay FILE`); "
                 "`sigma run --record-line FILE` writes the link recording that `link dump` reads")
 
+DESCRIPTION = """\
+Print a link recording (sigma run --record-line FILE, link record ...) readably: one timed \
+chunk a line."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("dump", help="print a link recording readably",
+                           description=DESCRIPTION)
+    p.add_argument("recording")
+    p.add_argument("--decode", action="store_true",
+                   help="show the host-to-terminal bytes as decoded Sigma orders (byte "
+                        "offset, arrival time, order, arguments, warnings) and the replies as "
+                        "text")
+    p.add_argument("--model", default="t5684", choices=["t5684", "t5688"],
+                   help="the terminal that decodes them (with --decode)")
+    p.set_defaults(handler=dump)
+    return p
+
 
 def dump(args: argparse.Namespace) -> int:
     from camlab88.protocols.link.cli import dump as dump_recording

@@ -5,9 +5,30 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from pathlib import Path
+from camlab88.commands.rainbow import add_relic_memory_options
 from camlab88.runopts import check_output, check_output_dir, fail
 
 COMMAND = "camlab88 rainbow render"
+
+DESCRIPTION = """\
+Compile SCENE.json's pad graph to band structure and render one 768x576 frame."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("render", help="render a scene file (JSON pad graph) to a PNG",
+                           description=DESCRIPTION)
+    p.add_argument("scene", metavar="SCENE.json")
+    p.add_argument("--out", required=True, metavar="PNG", help="where to write the frame")
+    p.add_argument("--bands", metavar="FILE", help="also write the band structure as text")
+    p.add_argument("--reference", action="store_true",
+                   help="render with the per-pixel reference compositor instead")
+    add_relic_memory_options(p)
+    p.add_argument("--inspect-out", type=Path, metavar="DIR",
+                   help="also write the inspector's panel (bands over the screen, video "
+                        "memory, pad graph) as DIR/frame_00000.png")
+    p.set_defaults(handler=render)
+    return p
 
 
 def render(args: argparse.Namespace) -> int:

@@ -10,6 +10,25 @@ from camlab88.runopts import fail
 
 COMMAND = "camlab88 rainbow replay"
 
+DESCRIPTION = """\
+Feed a recording's commands and input events (rainbow run --record-stream) to a fresh \
+Rainbow; every reply must match the recorded one. A session recording (--record) is run again \
+with every screen hash checked, as 'camlab88 replay --check'."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("replay", help="replay a recorded command stream and check it",
+                           description=DESCRIPTION)
+    p.add_argument("recording", metavar="FILE")
+    p.add_argument("--headless", action="store_true", help="no window")
+    p.add_argument("--screenshot", metavar="PNG", help="save the last frame")
+    p.add_argument("--scale", default=1, type=int, help="window scale factor")
+    p.add_argument("--strict", action="store_true",
+                   help="replay on the relic's video memory (for stream recordings made "
+                        "with --strict; a session recording repeats its own options)")
+    p.set_defaults(handler=replay)
+    return p
+
 
 def replay(args: argparse.Namespace) -> int:
     from camlab88.base.png import write_png

@@ -4,14 +4,39 @@ from __future__ import annotations
 
 import argparse
 
-from camlab88.commandspec import keys_of
-from camlab88.rainbow_tablet import feed_tablet, open_tablet
-from camlab88.runopts import run_options
-from camlab88.traceopts import open_trace
+from camlab88.commands.rainbow import add_relic_memory_options
+from camlab88.rainbow_tablet import add_tablet_option, feed_tablet, open_tablet
+from camlab88.replay_policy import DROP, KEEP
+from camlab88.runopts import add_run_options, positive, run_options
+from camlab88.traceopts import add_trace_options, open_trace
 
 COMMAND = "camlab88 rainbow run"
-KEYS = keys_of(__name__)
+KEYS = "middle button: the demo's menu; Esc or close the window to quit"
 HEADLESS_FRAMES = 250
+
+DESCRIPTION = """\
+Run the Rainbow with the Appendix I transparency example and moving double-buffered pads \
+(headless: 250 frames unless --stop-after N)."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("run", help="open the window with a demo of pads and transparency",
+                           description=DESCRIPTION)
+    add_run_options(p)
+    p.add_argument("--screenshot-frame", dest="stop_after_old", type=positive, metavar="N",
+                   help="the same as --stop-after N (kept for old command lines)").replay = KEEP
+    p.add_argument("--record-stream", metavar="FILE",
+                   help="record the device's command stream and input for "
+                        "'rainbow replay'").replay = DROP
+    add_relic_memory_options(p)
+    p.add_argument("--demo", default="pads", choices=["pads", "shelf"],
+                   help="pads: the Appendix I transparency example and double-buffered "
+                        "pads (default); shelf: Appendix I's shelf unit of translucent "
+                        "components on four pads sliding apart (left button pauses)").replay = KEEP
+    add_tablet_option(p, what="feed", where=" to the Rainbow's tablet input")
+    add_trace_options(p, strict="--strict-protocol")
+    p.set_defaults(handler=run)
+    return p
 
 
 def run(args: argparse.Namespace) -> int:

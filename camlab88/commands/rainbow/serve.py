@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import argparse
 
+from camlab88.commands.rainbow import add_relic_memory_options
 from camlab88.runopts import fail
-from camlab88.traceopts import open_trace
+from camlab88.traceopts import add_trace_options, open_trace
 
 COMMAND = "camlab88 rainbow serve"
 
@@ -17,6 +18,33 @@ def _seconds(text: str) -> float:
         raise argparse.ArgumentTypeError(f"{text[:40]!r} is not a number of seconds in "
                                          "(0, 86400]")
     return float(text)
+
+DESCRIPTION = """\
+Listen on 127.0.0.1:PORT for a program using protocols.rainbow.SocketTransport; show its \
+frames in the window (no display: headless, serving only)."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("serve", help="serve a Rainbow to a program over a local TCP socket",
+                           description=DESCRIPTION)
+    p.add_argument("--port", default=4711, type=int, help="TCP port on 127.0.0.1 (0 = any)")
+    p.add_argument("--headless", action="store_true", help="no window")
+    p.add_argument("--connections", type=int,
+                   help="stop after serving this many programs (default: for ever)")
+    p.add_argument("--scale", default=1, type=int, help="window scale factor")
+    add_relic_memory_options(p)
+    p.add_argument("--frame-timeout", default=10.0, type=_seconds, metavar="S",
+                   help="hang up on a program whose frame is unfinished S seconds after "
+                        "its first byte (default 10)")
+    p.add_argument("--idle-timeout", default=60.0, type=_seconds, metavar="S",
+                   help="a program silent for S seconds gives way to one waiting (default "
+                        "60)")
+    p.add_argument("--session-time", default=180.0, type=_seconds, metavar="S",
+                   help="a program connected for S seconds gives way to one waiting, however "
+                        "steadily it sends (default 180)")
+    add_trace_options(p, strict="--strict-protocol")
+    p.set_defaults(handler=serve)
+    return p
 
 
 def serve(args: argparse.Namespace) -> int:

@@ -9,18 +9,41 @@ frame (and time) that differs; a damaged, truncated or newer recording is refuse
 from __future__ import annotations
 
 import argparse
+from camlab88.control_flags import add_control_options
+from camlab88.stateopts import add_state_options, seconds
 from fractions import Fraction
 from pathlib import Path
 
-from camlab88.commandspec import add_command
-from camlab88.runopts import fail
+from camlab88.runopts import fail, frames_dir
 
 COMMAND = "camlab88 replay"
 SNAPSHOT_EVERY = 1  # s of virtual time between a seek's snapshots (F4 steps back by them)
 
+DESCRIPTION = """\
+Run a session recording again: its program, arguments and input files as recorded, its input \
+events at their virtual times. --check compares every screen hash (exit 0: all agree; 1: \
+names the first differing frame and time). --period plays at the original speed (9600 baud is \
+slow: that is the point); otherwise as fast as possible."""
 
-def register(subparsers: argparse._SubParsersAction) -> None:
-    add_command(subparsers, __name__, replay)
+
+def register(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("replay", help="replay a recorded session (--record FILE) and check it",
+                           description=DESCRIPTION)
+    p.add_argument("recording", type=Path, metavar="FILE")
+    p.add_argument("--headless", action="store_true", help="no window")
+    p.add_argument("--check", action="store_true", help="compare every recorded screen hash")
+    p.add_argument("--period", action="store_true",
+                   help="play at the recorded speed (the same as --speed 1)")
+    p.add_argument("--frames", type=frames_dir, metavar="DIR",
+                   help="write every frame shown as DIR/frame_NNNNN.png")
+    p.add_argument("--screenshot", type=Path, metavar="PNG", help="save the last screen")
+    add_control_options(p)
+    add_state_options(p)
+    p.add_argument("--seek", type=seconds, metavar="T",
+                   help="start showing at virtual time T: run there headless first, "
+                        "keeping a state snapshot every 1 s for F4 (step back)")
+    p.set_defaults(handler=replay)
+    return p
 
 
 def replay(args: argparse.Namespace) -> int:

@@ -4,16 +4,41 @@ from __future__ import annotations
 
 import argparse
 import sys
+from camlab88.commands.sigma import MODELS
+from camlab88.control_flags import add_control_options
+from camlab88.runopts import frames_dir
 from fractions import Fraction
 from pathlib import Path
 
-from camlab88.traceopts import open_trace
+from camlab88.traceopts import add_trace_options, open_trace
 
 COMMAND = "camlab88 sigma render"
 
 
 def _die(message: str) -> SystemExit:
     return SystemExit(f"{COMMAND}: {message}")
+
+DESCRIPTION = """\
+Feed a Sigma byte stream (raw bytes or a link recording) to an emulated terminal and write \
+the final screen, 768x512 PNG, row 0 = top; or with --frames, the screen at every 1/FPS s of \
+line time."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("render", help="decode a stream and write the screen as PNG",
+                           description=DESCRIPTION)
+    p.add_argument("--model", default="t5684", choices=MODELS)
+    p.add_argument("--in", dest="stream", type=Path, required=True, help="stream file")
+    p.add_argument("--out", type=Path, help="final screen PNG")
+    p.add_argument("--frames", type=frames_dir, metavar="DIR",
+                   help="directory for one PNG per frame period (frame_NNNNN.png)")
+    p.add_argument("--fps", default=25, type=int, help="frames per second of line time")
+    p.add_argument("--baud", default=9600, type=int,
+                   help="line speed that times --frames (a recording keeps its own times)")
+    add_trace_options(p)
+    add_control_options(p)
+    p.set_defaults(handler=render)
+    return p
 
 
 def render(args: argparse.Namespace) -> int:

@@ -6,10 +6,13 @@ from __future__ import annotations
 import argparse
 import contextlib
 import sys
+from pathlib import Path
+from camlab88.commands.sigma import MODELS
+from camlab88.replay_policy import DROP, KEEP, OUTSIDE
 from fractions import Fraction
 
-from camlab88.runopts import run_options
-from camlab88.traceopts import open_trace
+from camlab88.runopts import add_run_options, run_options
+from camlab88.traceopts import add_trace_options, open_trace
 
 COMMAND = "camlab88 sigma run"
 FRAME = Fraction(1, 25)
@@ -28,6 +31,55 @@ def _seconds(text: str) -> Fraction:
 
 def _die(message: str) -> SystemExit:
     return SystemExit(f"{COMMAND}: {message}")
+
+DESCRIPTION = """\
+Run an emulated terminal in a window, its line on a pseudo-terminal (--pty) or a TCP port on \
+127.0.0.1 (--listen). Keys typed into the window go up the line (cursor keys move the \
+crosshair during a cursor read), the mouse is the tablet. --screenshot: the screen at \
+--seconds, else once the --in stream has arrived."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("run", help="an interactive terminal in a window",
+                           description=DESCRIPTION)
+    p.add_argument("--model", default="t5684", choices=MODELS).replay = KEEP
+    outside_end = p.add_mutually_exclusive_group()
+    outside_end.add_argument("--pty", action="store_true",
+                             help="open a pseudo-terminal (the default)").replay = OUTSIDE
+    outside_end.add_argument("--listen", type=int, metavar="PORT",
+                             help="listen on 127.0.0.1:PORT").replay = OUTSIDE
+    outside_end.add_argument("--serial", metavar="URL",
+                             help="any pyserial URL, e.g. /dev/ttyUSB0").replay = OUTSIDE
+    p.add_argument("--baud", type=int,
+                   help="line speed (default 9600, or that of an --in recording)").replay = KEEP
+    p.add_argument("--in", dest="stream", type=Path,
+                   help="also play this stream down the line: raw bytes back to back from "
+                        "the start, a recording at its recorded times").replay = KEEP
+    p.add_argument("--seconds", type=float,
+                   help="exit after this many seconds of line time").replay = KEEP
+    p.add_argument("--until-idle", type=_seconds, metavar="S",
+                   help="exit once the outside end has written nothing for S seconds of line "
+                        "time and the line is quiet (a host program that has finished)")
+    p.add_argument("--events", type=Path, metavar="FILE",
+                   help="the terminal's user, scripted: keys, cursor moves and the stylus at "
+                        "times of line time or when the host waits for a reply "
+                        "(docs/host-programs.md)")
+    p.add_argument("--order-timeout", default="10", type=_seconds, metavar="S",
+                   help="hang up on a --listen client that leaves half an order "
+                        "unfinished this many seconds of line time (default 10)").replay = KEEP
+    p.add_argument("--idle-timeout", default="60", type=_seconds, metavar="S",
+                   help="a --listen client silent this many seconds of line time gives "
+                        "way to one that connects (default 60)").replay = KEEP
+    p.add_argument("--session-time", default="180", type=_seconds, metavar="S",
+                   help="a --listen client that has held the line this many seconds of line "
+                        "time gives way to the next one that connects, however steadily it "
+                        "sends (default 180)").replay = KEEP
+    p.add_argument("--record-line", type=Path, metavar="FILE",
+                   help="record the line (both directions) as a link recording").replay = DROP
+    add_run_options(p, stop_after=False)
+    add_trace_options(p)
+    p.set_defaults(handler=run)
+    return p
 
 
 def run(args: argparse.Namespace) -> int:

@@ -6,12 +6,37 @@ from __future__ import annotations
 import argparse
 import sys
 
-from camlab88.commandspec import keys_of
-from camlab88.runopts import fail, unattended
-from camlab88.scriptopts import events_player, scripted_run_options
+from camlab88.runopts import add_run_options, fail, unattended
+from camlab88.scriptopts import (
+    HEADLESS_NEEDS_EVENTS,
+    add_events_option,
+    events_player,
+    scripted_run_options,
+)
 
 COMMAND = "camlab88 snooker camera"
-KEYS = keys_of(__name__)
+KEYS = """\
+type to edit the script (it is re-interpreted at once; saving it from another editor works \
+too); ctrl-s saves, ctrl-r reloads; tab play/pause; page up/down step; left button on the \
+time line scrubs; escape quits"""
+
+DESCRIPTION = f"""\
+The camera script beside the live perspective view on the emulated Rainbow: every edit, typed \
+here or saved to SCRIPT from any text editor, is re-interpreted and the view updates at once; \
+errors are marked at their lines while the preview goes on. Keys: {KEYS}. \
+{HEADLESS_NEEDS_EVENTS}"""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("camera",
+                           help="edit a camera script with the live view beside it (§6.5)",
+                           description=DESCRIPTION)
+    p.add_argument("script", metavar="SCRIPT", help="the camera script (created if missing)")
+    p.add_argument("motion", metavar="CHECKPOINT|SESSION")
+    add_events_option(p)
+    add_run_options(p)
+    p.set_defaults(handler=camera)
+    return p
 
 
 def camera(args: argparse.Namespace) -> int:

@@ -10,7 +10,10 @@ import argparse
 import sys
 from pathlib import Path
 
-from camlab88.runopts import fail
+from camlab88.apps.snooker.render.modes import MODES
+from camlab88.argtypes import film_path, frame_size
+from camlab88.commands.snooker import add_dask_options, add_looks_options
+from camlab88.runopts import fail, positive
 
 COMMAND = "camlab88 snooker film"
 
@@ -19,6 +22,43 @@ def _word(text: str) -> str:
     if not (1 <= len(text) <= 8 and all(c.isascii() and c.isprintable() for c in text)):
         raise argparse.ArgumentTypeError(f"{text!r}: 1 to 8 printable ASCII letters")
     return text.upper()
+
+DESCRIPTION = """\
+Interpret the camera script over the shot, render every frame and film them at 25 frames/s \
+(no sound). Beside --out: OUT.views and OUT_frames/. Frames already rendered (complete PNGs \
+of the right size) are skipped, so a stopped film resumes. Truecolour frames render on a \
+local process pool (one process per core), or on a Dask cluster: --dask tcp://HOST:8786 \
+(started with 'dask scheduler' and 'dask worker tcp://HOST:8786'), or --dask local."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("film",
+                           help="camera script -> views -> rendered frames -> MP4/GIF "
+                                "(§6.3-6.4)",
+                           description=DESCRIPTION)
+    p.add_argument("motion", nargs="?", metavar="CHECKPOINT|SESSION")
+    p.add_argument("script", nargs="?", metavar="SCRIPT.ccl", help="the camera script (§6.3.1)")
+    p.add_argument("--titles", type=_word, metavar="WORD",
+                   help="instead of a shot: the §6.5 title animation, WORD spelled by "
+                        "giant lettered balls aimed with 'set up next shot' (e.g. CAMLAB88)")
+    p.add_argument("--out", type=film_path, required=True, metavar="FILM",
+                   help="the film: .mp4 (H.264) or .gif")
+    p.add_argument("--gif", type=film_path, metavar="FILE", help="also a GIF of the film")
+    p.add_argument("--mode", default="truecolour", choices=MODES,
+                   help="truecolour (default), or a Sigma mode drawn on the emulated T5688")
+    p.add_argument("--size", default="768x512", type=frame_size, metavar="WxH",
+                   help="truecolour frame size")
+    add_dask_options(p)
+    p.add_argument("--workers", type=positive, metavar="N",
+                   help="processes (default: one per core; --dask local: its workers)")
+    p.add_argument("--motion-blur", action="store_true",
+                   help="integrate each frame over a 1/50 s shutter (§6.4)")
+    p.add_argument("--blur-samples", default=12, type=positive, metavar="N",
+                   help="renders averaged over the shutter with --motion-blur")
+    p.add_argument("--lights", type=Path, metavar="FILE", help="lights file (see render)")
+    add_looks_options(p)
+    p.set_defaults(handler=film)
+    return p
 
 
 def film(args: argparse.Namespace) -> int:

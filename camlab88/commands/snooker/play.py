@@ -4,12 +4,39 @@ from __future__ import annotations
 
 import argparse
 
-from camlab88.commandspec import keys_of
-from camlab88.runopts import fail, unattended
-from camlab88.scriptopts import events_player, scripted_run_options
+from camlab88.replay_policy import SCRATCH
+from camlab88.runopts import add_run_options, fail, unattended
+from camlab88.scriptopts import (
+    HEADLESS_NEEDS_EVENTS,
+    add_events_option,
+    events_player,
+    scripted_run_options,
+)
 
 COMMAND = "camlab88 snooker"
-KEYS = keys_of(__name__)
+KEYS = """\
+middle button: menus; right: restart simulation; left held: mouse x4; Esc: leave (y saves, n \
+does not, Esc stays); close the window to quit"""
+
+DESCRIPTION = f"""\
+The interactive program (thesis §6.2.1-§6.2.2) on the emulated Rainbow. Middle button: menus \
+and everything else; right: restart simulation; left held: mouse movement x4. With SESSION \
+you are asked: new game (n) or restore (r). {HEADLESS_NEEDS_EVENTS}"""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("play",
+                           help="the interactive motion-development program on the emulated "
+                                "Rainbow", description=DESCRIPTION)
+    p.add_argument("session", nargs="?", metavar="SESSION",
+                   help="a saved session file to offer for restoring (and to save to)")
+    add_events_option(p)
+    p.add_argument("--save", metavar="SESSION",
+                   help="where 'Exit from the program' saves (default: SESSION; with "
+                        "neither, Exit asks for a file name)").replay = SCRATCH
+    add_run_options(p)
+    p.set_defaults(handler=play)
+    return p
 
 
 def play(args: argparse.Namespace) -> int:

@@ -11,10 +11,62 @@ import argparse
 import sys
 from pathlib import Path
 
-from camlab88.runopts import fail, progress
+from camlab88.apps.snooker.render.modes import MODES
+from camlab88.argtypes import frame_size, gif_file, mp4_file
+from camlab88.commands.snooker import add_dask_options, add_looks_options
+from camlab88.runopts import fail, frames_dir, positive, progress
 
 COMMAND = "camlab88 snooker render"
 RECORD = ".camlab88-render.json"  # the resume record, hidden among the frames
+
+DESCRIPTION = """\
+Render every frame of a view file over a checkpoint or session. --mode period: the 1984 \
+program on the emulated T5688 over the 9600-baud line (firmware outlines + flood fill: \
+polygon colour leaks past the anti-aliased edges, counted); fixed: the same with software \
+Bresenham outlines (no leaks); adapted: firmware outlines anti-aliased where the firmware \
+puts them (no leaks, period's line time); truecolour: 24-bit at --size. Writes \
+DIR/frame_NNNNN.png numbered as the checkpoint's frames. Truecolour renders in parallel: one \
+process per core (--workers N), or on a Dask cluster (--dask tcp://HOST:8786 from 'dask \
+scheduler' + 'dask worker', or --dask local); it resumes: a frame whose PNG is complete and \
+was made from the same shot, view and settings (DIR/.camlab88-render.json) is skipped; each \
+frame is written atomically and a failed frame or dead worker is retried and reported. The \
+Sigma modes by default draw every frame on one emulated T5688 over the 9600-baud line, one \
+after another as in 1984, and report line time and leaks; with --workers N or --dask they go \
+parallel too: each frame on a fresh emulated T5688 (LUT loaded, screen cleared), \
+byte-identical to the sequential frames since every frame starts from a cleared screen, but \
+without the line statistics."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("render",
+                           help="finished frames on the emulated Sigma T5688 or in true "
+                                "colour (§6.4)", description=DESCRIPTION)
+    p.add_argument("motion", metavar="CHECKPOINT|SESSION")
+    p.add_argument("views", metavar="VIEWS", help="the view file (from 'snooker ccl')")
+    p.add_argument("--frames", type=frames_dir, required=True, metavar="DIR",
+                   help="write DIR/frame_NNNNN.png")
+    p.add_argument("--mode", default="period", choices=MODES, help="(default period)")
+    p.add_argument("--palette", default="fixed", choices=["fixed", "adaptive"],
+                   help="the T5688's 256 colours: fixed (period) or chosen for the "
+                        "sequence")
+    p.add_argument("--size", default="768x512", type=frame_size, metavar="WxH",
+                   help="truecolour picture size (the Sigma modes are 768x512)")
+    p.add_argument("--first", type=positive, metavar="N", help="first frame (default: all)")
+    p.add_argument("--last", type=positive, metavar="M", help="last frame")
+    p.add_argument("--lights", type=Path, metavar="FILE",
+                   help="lights file: 'x y z [intensity | r g b]' a line (default: a "
+                        "canopy of four bulbs)")
+    add_looks_options(p)
+    p.add_argument("--workers", type=positive, metavar="N",
+                   help="processes (truecolour default: one per core; Sigma modes: "
+                        "sequential unless given; --dask local: its workers)")
+    add_dask_options(p)
+    p.add_argument("--mp4", type=mp4_file, metavar="FILE",
+                   help="also film the frames: H.264 at 25 frames/s, no sound")
+    p.add_argument("--gif", type=gif_file, metavar="FILE",
+                   help="also film the frames as a GIF at 25 frames/s")
+    p.set_defaults(handler=render)
+    return p
 
 
 def render(args: argparse.Namespace) -> int:

@@ -4,10 +4,26 @@ from __future__ import annotations
 
 import argparse
 
-from camlab88.runopts import fail, run_options
+from camlab88.replay_policy import KEEP
+from camlab88.runopts import add_run_options, fail, run_options
 
 COMMAND = "camlab88 snooker replay"
 OUTPUT_HINT = "give --frames DIR or --screenshot PNG to write what it plays"
+
+DESCRIPTION = """\
+Play a §6.2.2 checkpoint file on the emulated Rainbow at 25 frames/s (real time in a window, \
+virtual time headless)."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("replay", help="play a checkpoint file on the Rainbow at 25 fps",
+                           description=DESCRIPTION)
+    p.add_argument("checkpoint", metavar="CHECKPOINT")
+    p.add_argument("--first", default=0, type=int, help="first frame (default 0)").replay = KEEP
+    p.add_argument("--last", type=int, help="last frame (default: the last)").replay = KEEP
+    add_run_options(p)
+    p.set_defaults(handler=replay)
+    return p
 
 
 def replay(args: argparse.Namespace) -> int:

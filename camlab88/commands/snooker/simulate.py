@@ -15,6 +15,39 @@ def _table_option(value: str) -> tuple[str, str]:
     k, v = value.split("=", 1)
     return k.strip(), v.strip()
 
+DESCRIPTION = """\
+Simulate until all balls have stopped and write the §6.2.2 checkpoint file (4096 units per \
+foot). ANGLE_DEG is measured anticlockwise from straight up the table (from the baulk end \
+towards the black); SPIN is m/s along the shot (+ top spin, - back spin)."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("simulate",
+                           help="simulate a shot headlessly until every ball stops; write a "
+                                "checkpoint",
+                           description=DESCRIPTION)
+    p.add_argument("--from", dest="source", metavar="SESSION|CHECKPOINT",
+                   help="start from a saved session (JSON) or the last frame of a "
+                        "checkpoint")
+    either = p.add_mutually_exclusive_group(required=True)
+    either.add_argument("--break", dest="break_speed", type=float, metavar="SPEED_M_S",
+                        help="the opening position, cue ball in the D struck at the pack")
+    either.add_argument("--shot", nargs="+", metavar="ARG",
+                        help="BALL SPEED_M_S ANGLE_DEG [SPIN_M_S]; BALL is 1..22 or a name "
+                             "(cue, yellow, ..., black, red1..red15)")
+    p.add_argument("--out", required=True, metavar="CHECKPOINT", help="checkpoint file to write")
+    p.add_argument("--save-session", metavar="SESSION", help="also save the session file")
+    p.add_argument("--first", default=0, type=int, help="first time frame to write (default 0)")
+    p.add_argument("--last", type=int, help="last time frame to write (default: the last)")
+    p.add_argument("--table", action="append", default=[], type=_table_option,
+                   metavar="NAME=VALUE",
+                   help="change a table constant, e.g. cushion_restitution=1.2 "
+                        "ball_diameter_m=0.2 (new games only)")
+    p.add_argument("--max-seconds", default=600.0, type=float,
+                   help="give up if balls are still moving after this long (default 600)")
+    p.set_defaults(handler=simulate)
+    return p
+
 
 def simulate(args: argparse.Namespace) -> int:
     from camlab88.apps.snooker.checkpoint import CheckpointError

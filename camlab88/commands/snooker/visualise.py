@@ -7,11 +7,28 @@ from __future__ import annotations
 import argparse
 import sys
 
-from camlab88.commandspec import keys_of
-from camlab88.runopts import fail, run_options, unattended
+from camlab88.runopts import add_run_options, fail, run_options, unattended
 
 COMMAND = "camlab88 snooker visualise"
-KEYS = keys_of(__name__)
+KEYS = """\
+space play/pause, left/right step, page up/down 25 frames, home/end, drag with the left \
+button to scrub, escape quits"""
+
+DESCRIPTION = f"""\
+Play a view file (from 'snooker ccl') over a checkpoint or session on the emulated Rainbow at \
+25 frames/s. Keys: {KEYS}. Headless it plays every frame once; --frames DIR writes \
+DIR/frame_NNNNN.png numbered as the checkpoint's frames."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("visualise",
+                           help="the perspective view of every frame on the Rainbow (§6.3.2)",
+                           description=DESCRIPTION)
+    p.add_argument("motion", metavar="CHECKPOINT|SESSION")
+    p.add_argument("views", metavar="VIEWS", help="the view file")
+    add_run_options(p)
+    p.set_defaults(handler=visualise)
+    return p
 
 
 def visualise(args: argparse.Namespace) -> int:

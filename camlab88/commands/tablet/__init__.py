@@ -7,6 +7,10 @@ import argparse
 from camlab88.areas import register_area
 
 ACTIONS = ("list", "monitor", "calibrate", "emulate")
+HELP = "graphics tablets: real (HID/serial) and emulated"
+DESCRIPTION = """\
+Graphics tablets over USB HID or serial, and an emulated tablet that speaks a real protocol \
+on a pty."""
 SOURCE_HELP = (
     "hid:VID:PID | serial:PORT?protocol=P[&baud=N] | URL?protocol=P (loop://, socket://...) | "
     "emulated:P[?drive=demo]; P = wacom4, summa-mm, bitpad1, bitpad2, calcomp, summa-flair"

@@ -3,8 +3,22 @@
 from __future__ import annotations
 
 import argparse
+from camlab88.commands.tablet import add_source_argument
 
 COMMAND = "camlab88 tablet calibrate"
+
+DESCRIPTION = """\
+Touch the top-left then the bottom-right corner of the working area. Saved under \
+$CAMLAB88_CONFIG_DIR (else ~/.config/camlab88)/calibration.json."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("calibrate", help="touch two corners; saved per device",
+                           description=DESCRIPTION)
+    add_source_argument(p)
+    p.add_argument("--seconds", default=120.0, type=float, help="give up after S seconds")
+    p.set_defaults(handler=calibrate)
+    return p
 
 
 def calibrate(args: argparse.Namespace) -> int:

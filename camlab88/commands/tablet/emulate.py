@@ -6,6 +6,25 @@ import argparse
 
 COMMAND = "camlab88 tablet emulate"
 
+DESCRIPTION = """\
+Open a window; the mouse drives a tablet that writes its protocol's bytes to a \
+pseudo-terminal (path printed) that any program can open as a serial port. Left button = tip, \
+right = barrel, middle = button 2; key o = out of proximity, e = eraser end. Needs a display \
+(the mouse), except with --demo."""
+
+
+def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("emulate", help="an emulated tablet on a pty, driven by the mouse",
+                           description=DESCRIPTION)
+    p.add_argument("--protocol", default="summa-mm",
+                   help="wacom4, summa-mm (default), bitpad1, bitpad2, calcomp, "
+                        "summa-flair")
+    p.add_argument("--demo", action="store_true", help="draw a scripted stroke, not the mouse")
+    p.add_argument("--seconds", type=float, help="exit after S seconds")
+    p.add_argument("--screenshot", help="save the window after a few frames, exit")
+    p.set_defaults(handler=emulate)
+    return p
+
 
 def emulate(args: argparse.Namespace) -> int:
     from camlab88.emulator.tablet_input.emulate import emulate_tablet

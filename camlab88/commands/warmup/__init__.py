@@ -14,7 +14,6 @@ from __future__ import annotations
 import argparse
 import sys
 
-from camlab88.commandspec import add_command
 
 COMMAND = "camlab88 warm-up"
 
@@ -33,9 +32,18 @@ STEPS: tuple[tuple[str, str | tuple[str, ...]], ...] = (
     ("HashLife", "camlab88.apps.ca.hashlife.kernel_warmup:compile_kernels"),
 )
 
+DESCRIPTION = """\
+Compile every kernel group of every program into numba's cache now, with a progress line, \
+instead of on the first run that needs each group. Later commands load them from the cache \
+(NUMBA_CACHE_DIR if set; the camlab88 command sets it to ~/.cache/camlab88/numba otherwise)."""
 
-def register(subparsers: argparse._SubParsersAction) -> None:
-    add_command(subparsers, __name__, _run)
+
+def register(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    p = actions.add_parser("warm-up",
+                           help="compile every numba kernel now (otherwise: on first use)",
+                           description=DESCRIPTION)
+    p.set_defaults(handler=_run)
+    return p
 
 
 def _run(args: argparse.Namespace) -> int:
