@@ -46,18 +46,6 @@ def test_every_subcommand_has_help() -> None:
     assert result.returncode == 0 and "demo" in result.stdout
 
 
-# Files other branches were rewriting during this clean-up; their type: ignores and "issue N"
-# comments go when they merge.
-_IGNORES_LEFT_FOR_LATER = {
-    "apps/ca/engine.py", "apps/kas/paint/opsfile.py", "apps/kas/paint/outlines.py",
-    "apps/kas/paint/palette.py", "apps/kas/paint/planes.py", "apps/kas/paint/replay.py",
-    "apps/kas/program/layout.py", "apps/kas/program/viewer.py",
-    "camlab88/commands/kas/export.py", "camlab88/commands/kas/paint.py",
-    "camlab88/commands/sigma/render.py", "camlab88/commands/snooker/render.py",
-    "camlab88/replay_policy.py",
-}
-
-
 def _python_files() -> list[Path]:
     listed = _run("git", "ls-files", "*.py").stdout.split()
     return [ROOT / name for name in listed if (ROOT / name).exists()]
@@ -68,7 +56,6 @@ def test_no_type_ignore_comments_without_a_type_checker() -> None:
     nothing and only tells the reader that something is wrong."""
     marker = "# type" + ": ignore"
     found = [f"{path.relative_to(ROOT)}:{n}" for path in _python_files()
-             if path.relative_to(ROOT).as_posix() not in _IGNORES_LEFT_FOR_LATER
              for n, line in enumerate(path.read_text().splitlines(), 1) if marker in line]
     assert not found, "type: ignore without a type checker:\n" + "\n".join(found)
 
@@ -80,7 +67,6 @@ def test_product_code_says_what_and_why_not_which_issue() -> None:
     product = ("apps/", "base/", "camlab88/", "emulator/", "protocols/", "roms/")
     found = [f"{path.relative_to(ROOT)}:{n}" for path in _python_files()
              if path.relative_to(ROOT).as_posix().startswith(product)
-             and path.relative_to(ROOT).as_posix() not in _IGNORES_LEFT_FOR_LATER
              for n, line in enumerate(path.read_text().splitlines(), 1) if issue.search(line)]
     assert not found, "'issue N' in product code:\n" + "\n".join(found)
 

@@ -284,7 +284,7 @@ class Engine:
         """(x, y, type) of live cells inside ``rect`` (which may cross the seam)."""
         if rect.wraps:
             found = [self._cells_in_plain_rect(r) for r in rect.parts()]
-            return tuple(np.concatenate(a) for a in zip(*found))  # type: ignore[return-value]
+            return tuple(np.concatenate(a) for a in zip(*found))
         return self._cells_in_plain_rect(rect)
 
     def _cells_in_plain_rect(self, rect: Rect) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -76,7 +76,7 @@ def ops_text(f: OpsFile) -> str:
 def seeds_text(r: Seeds) -> str:
     kind, what = r.key
     head = " ".join(map(str, what)) if kind in ("fill", "line") else \
-        f"{_num(what[0])} {_num(what[1])}"  # type: ignore[index]
+        f"{_num(what[0])} {_num(what[1])}"
     return " ".join([f"seeds {kind} {head} at"] + [_num(v) for p in r.seeds for v in p])
 
 
@@ -153,7 +153,7 @@ def _palette(r: _Reader) -> Palette:
         r.int_at(cl, args[0], i, i, "palette entries go in order: index")
         entries.append(tuple(r.int_at(cl, a, 0, 255, g) for a, g in
                              zip(args[1:], ("red", "green", "blue"), strict=True)))
-    return Palette(entries)  # type: ignore[arg-type]
+    return Palette(entries)
 
 
 def _op(r: _Reader, ln: int, words: list[tuple[int, str]], n_colours: int,

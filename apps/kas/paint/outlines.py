@@ -34,7 +34,7 @@ def plan(seq: AnimSequence) -> OutlinePlan:
     rgb = [(0, 0, 0)] + [tuple(int(v) for v in _palette_rgb(p)) for p in top]
     while len(rgb) < 4:
         rgb.append(rgb[-1])
-    return OutlinePlan(slots, tuple(rgb))  # type: ignore[arg-type]
+    return OutlinePlan(slots, tuple(rgb))
 
 
 class Run(NamedTuple):

@@ -53,7 +53,7 @@ class Palette:
             self._index(i)
         rgb = tuple(round(sum(self.entries[i][g] * n for i, n in parts.items()) / total)
                     for g in range(3))
-        self.set(target, rgb)  # type: ignore[arg-type]
+        self.set(target, rgb)
         return self.entries[target]
 
     def step(self, i: int, gun: str, delta: int) -> RGB:
@@ -63,12 +63,12 @@ class Palette:
         rgb = list(self.entries[self._index(i)])
         g = GUNS.index(gun)
         rgb[g] = min(max(rgb[g] + int(delta), 0), 255)
-        self.entries[i] = tuple(rgb)  # type: ignore[assignment]
+        self.entries[i] = tuple(rgb)
         return self.entries[i]
 
     def proportions(self, i: int) -> tuple[float, float, float]:
         """What the RGB editor shows: each gun as a fraction of full intensity."""
-        return tuple(v / 255 for v in self.entries[self._index(i)])  # type: ignore[return-value]
+        return tuple(v / 255 for v in self.entries[self._index(i)])
 
     def _index(self, i: int) -> int:
         if not 0 <= i < len(self.entries):
@@ -80,4 +80,4 @@ def _check(rgb: RGB) -> RGB:
     t = tuple(int(v) for v in rgb)
     if len(t) != 3 or any(not 0 <= v <= 255 for v in t):
         raise ValueError(f"a colour is three values 0..255, not {rgb!r}")
-    return t  # type: ignore[return-value]
+    return t

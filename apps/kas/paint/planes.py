@@ -35,7 +35,7 @@ def lut(fills: Sequence[RGB], outlines: Sequence[RGB], highlight: RGB) -> list[R
             out.append(tuple(outlines[o]))
         else:
             out.append(tuple(fills[f]) if f < len(fills) else tuple(fills[0]))
-    return out  # type: ignore[return-value]
+    return out
 
 
 def fill_entries(fill: int) -> list[int]:

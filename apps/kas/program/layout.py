@@ -86,7 +86,7 @@ def lut_plan(background: str = "black") -> list[tuple[int, int, int]]:
 def dim_rgb(rgb: tuple[int, int, int], background: str = "black") -> tuple[int, int, int]:
     """A pen's 4-bit colour dimmed: moved DIM_SHARE of the way from the background to it."""
     bg = 15 if background == "white" else 0
-    return tuple(round(bg + (c - bg) * DIM_SHARE) for c in rgb)  # type: ignore[return-value]
+    return tuple(round(bg + (c - bg) * DIM_SHARE) for c in rgb)
 
 
 def dim_lut(lut: list[tuple[int, int, int]], pens: dict[int, int],

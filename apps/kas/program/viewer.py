@@ -70,7 +70,7 @@ def four_colours(seq: AnimSequence, background: str = "black") -> FourColours:
     rgb = [bg] + [tuple(round(v / 17) for v in _pen_rgb(p, background)) for p in top]
     while len(rgb) < 4:
         rgb.append(rgb[-1])
-    return FourColours(slot_of_pen, tuple(rgb))  # type: ignore[arg-type]
+    return FourColours(slot_of_pen, tuple(rgb))
 
 
 def frame_points_px(frame: Drawing) -> list[tuple[np.ndarray, np.ndarray]]:
