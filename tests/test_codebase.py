@@ -107,3 +107,21 @@ def test_every_definition_in_the_product_is_used_somewhere() -> None:
                 continue
             dead.append(f"{rel}:{node.lineno}: {name}")
     assert not dead, "defined and used nowhere:\n" + "\n".join(dead)
+
+
+def test_no_two_test_modules_share_a_name() -> None:
+    """A test module is found by its name: ``test_cli.py`` in five folders was five places
+    to look (name them after their package: tests/kas/test_kas_cli.py)."""
+    from collections import Counter
+
+    names = Counter(p.name for p in (ROOT / "tests").rglob("test_*.py"))
+    assert [n for n, k in names.items() if k > 1] == []
+
+
+def test_the_index_of_tests_is_current() -> None:
+    """tests/INDEX.md maps each module to its tests; regenerate it with
+    ``python -m tests.support.index_of_tests --write``."""
+    from tests.support.index_of_tests import INDEX, index
+
+    assert INDEX.read_text(encoding="utf-8") == index(), (
+        "tests/INDEX.md is stale: python -m tests.support.index_of_tests --write")

@@ -15,7 +15,7 @@ from camlab88.apps.kas.paint.program import PaintProgram
 from camlab88.apps.kas.paint.session import PaintSession
 
 from tests.kas_paint.helpers import t5688_line
-from tests.kas_paint.test_golden import FIG_OPS, figure_38
+from tests.kas_paint.test_kas_paint_golden import FIG_OPS, figure_38
 
 HAT = 4  # FIG_OPS fills the hat (chains 5 and 6) in colour 4
 

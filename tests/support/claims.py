@@ -117,12 +117,12 @@ OTHERS = [
     Claim("§7.2", "figure 7.6, Life in the rule language, runs as printed",
           "the figure's text, comments and all, parses to the messages and interpretations "
           "the thesis explains; the library's life.rules is that text and runs Life",
-          _t("tests/ca/test_rules.py::test_figure_7_6_life_as_printed") + ", "
-          + _t("tests/ca/test_rules.py::test_library_life_is_figure_7_6"), "agrees"),
+          _t("tests/ca/test_ca_rules.py::test_figure_7_6_life_as_printed") + ", "
+          + _t("tests/ca/test_ca_rules.py::test_library_life_is_figure_7_6"), "agrees"),
     Claim("§7.4.1", "figure 7.8, the maze runner's rules, run as printed",
           "the figure's text parses to the messages and interpretations the thesis "
           "explains and is the library's maze.rules, which solves mazes (next row)",
-          _t("tests/ca/test_rules.py::test_figure_7_8_maze_as_printed"), "agrees"),
+          _t("tests/ca/test_ca_rules.py::test_figure_7_8_maze_as_printed"), "agrees"),
     Claim("§7.4.1", "(the project's own, not the thesis's: 'shortest' does not occur in it) "
           "the maze runner reaches a maze's exit first by the shortest path",
           "the generation the runner reaches the exit = the shortest path's length (BFS)",
@@ -147,7 +147,7 @@ OTHERS = [
     Claim("§6.2.2", "the animator can replay all the frames produced, or a sub-range, in real "
           "time at 25 frames a second", "a replay of frames 0-19 reports 20 frames at 25 "
           "frames/s: 40 display frames of the 50 Hz Rainbow, 0.80 s",
-          _t("tests/snooker_program/test_commands.py::test_replay_plays_a_checkpoint_at_25_fps"),
+          _t("tests/snooker_program/test_snooker_program_commands.py::test_replay_plays_a_checkpoint_at_25_fps"),
           "agrees"),
     Claim("§3.3", "a useful measure of automatic painting is the operator time per frame",
           "ten operations given on the middle frame paint all 100 frames of the walk (0.1 "
