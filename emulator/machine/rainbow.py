@@ -102,9 +102,9 @@ class RainbowMachine:
     def save_state(self) -> bytes:
         """Device (graph, memory, LUTs, clock, input queue), client ids, stream position."""
         head, blobs = self.device.save_state()
-        c, d = self.client, self.executor.decoder
-        head["client"] = [c._next_node, c._next_arc, c.calls]
-        head["stream"] = {"offset": d._offset, "pending": bytes(d._buf).hex()}
+        offset, pending = self.executor.decoder.position()
+        head["client"] = list(self.client.ids())
+        head["stream"] = {"offset": offset, "pending": pending.hex()}
         head["strict_memory"] = self.strict_memory
         return pack("rainbow", head, blobs)
 
@@ -123,5 +123,5 @@ class RainbowMachine:
         except (ValueError, KeyError, TypeError, IndexError) as exc:
             raise MachineStateError(f"machine state: {exc}") from None
         self._build(device)
-        self.client._next_node, self.client._next_arc, self.client.calls = nxt, arc, calls
-        self.executor.decoder._offset, self.executor.decoder._buf = offset, bytearray(pending)
+        self.client.continue_from((nxt, arc, calls))
+        self.executor.decoder.resume(offset, pending)

@@ -65,6 +65,16 @@ class RainbowClient:
     def close(self) -> None:
         self.transport.close()
 
+    # -- saved with a machine ----------------------------------------------------------------
+    def ids(self) -> tuple[int, int, int]:
+        """(next node, next arc, calls made): what a saved session needs to go on naming
+        nodes and arcs as the device expects."""
+        return self._next_node, self._next_arc, self.calls
+
+    def continue_from(self, ids: tuple[int, int, int]) -> None:
+        """Go on from ``ids()``'s values (a machine's state being loaded)."""
+        self._next_node, self._next_arc, self.calls = ids
+
     def hello(self) -> dict[str, int]:
         vals = struct.unpack("<5i", self._call("hello"))
         return dict(zip(("screen_w", "screen_h", "lut_size", "memory_w", "memory_h"), vals))

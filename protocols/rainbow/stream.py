@@ -152,6 +152,14 @@ class Decoder:
         frame's start): it moves whenever a frame is completed."""
         return self._offset
 
+    def position(self) -> tuple[int, bytes]:
+        """(offset, the unfinished frame's bytes): where a saved stream stands."""
+        return self._offset, bytes(self._buf)
+
+    def resume(self, offset: int, pending: bytes) -> None:
+        """Stand where ``position()`` said (a machine's state being loaded)."""
+        self._offset, self._buf = offset, bytearray(pending)
+
 
 def split_reply(data: bytes) -> tuple[int, bytes, bytes]:
     """(status, payload, rest) from the front of ``data``; raises if it is incomplete."""
