@@ -72,7 +72,6 @@ class SigmaLineTarget(SavesState):
                  order_timeout: Fraction = ORDER_TIMEOUT,
                  until_idle: Fraction | None = None, script: list[Any] | None = None) -> None:
         self.machine, self.bridge = machine, bridge
-        self.term, self.line = machine.terminal, machine.line
         self.title, self.keys = title, KEYS_HINT
         self.size = (768, 512)
         self.until = until
@@ -89,13 +88,11 @@ class SigmaLineTarget(SavesState):
         self._order_since: Fraction | None = None  # when the unfinished order began
         self._commands = 0
         self._client_left = False  # a client went; its bytes may still be on the line
-        self.tap = OutsideTap(self.line.host, self._line_hung_up)  # the bridge's endpoint
-        self._machine_up = self.term.on_output
-        self.term.on_output = self._up
+        self.tap = OutsideTap(machine.outside, self._line_hung_up)  # the bridge's endpoint
+        machine.watch_sent(self._up)
 
     def _up(self, data: bytes) -> None:
         self._sent += data
-        self._machine_up(data)
 
     def handle_events(self, events: list[HostEvent]) -> None:
         # A new tick: an earlier tick's traffic nobody recorded is forgotten (memory bounded)
@@ -104,7 +101,7 @@ class SigmaLineTarget(SavesState):
         if events:
             self._frame = None
         for ev in events:
-            to_terminal(ev, self.term)
+            to_terminal(ev, self.machine)
 
     def tick(self) -> bool:
         self._play_script()
@@ -123,19 +120,18 @@ class SigmaLineTarget(SavesState):
             ev = self.script[self._script_at]
             if ev.when == "at" and self.machine.now < Fraction(ev.at):
                 return
-            if ev.when == "reply" and not (self.term.reg.cursor_report
-                                            and not self.line.host.has_in_flight()):
+            if ev.when == "reply" and not (self.machine.reading_cursor()
+                                            and not self.machine.outside.has_in_flight()):
                 return
             self._script_at += 1
             self._frame = None
             if ev.action == "key":
                 for char in ev.text:
-                    self.term.key(char)
+                    self.machine.key(char)
             elif ev.action == "cursor":
-                reg = self.term.reg
-                self.term.cursor_keys(ev.x - reg.cursor_x, ev.y - reg.cursor_y)
+                self.machine.cursor(ev.x, ev.y)
             else:
-                self.term.tablet(ev.x, ev.y, ev.down)
+                self.machine.tablet(ev.x, ev.y, ev.down)
 
     def script_done(self) -> bool:
         return self._script_at >= len(self.script)
@@ -154,10 +150,10 @@ class SigmaLineTarget(SavesState):
         """The outside end's turn: the bridge polled, or a replay's recorded traffic."""
         for d, data in self._replayed:
             if d == "+":
-                self.line.host.write(data)
+                self.machine.outside.write(data)
                 self._heard_at = self.machine.now
             else:
-                self.line.host.hang_up()
+                self.machine.outside.hang_up()
                 self._line_hung_up()
         self._replayed = []
         if self.bridge is None:
@@ -177,54 +173,49 @@ class SigmaLineTarget(SavesState):
     def _left_half_order(self) -> None:
         """A client that left half an order: once its last bytes have arrived, the line
         hangs up (recorded, so a replay does the same), which reports the half order."""
-        if not self._client_left or self.line.host.has_in_flight():
+        if not self._client_left or self.machine.outside.has_in_flight():
             return
         self._client_left = False
-        if self.term.decoder.mid_order:
+        if self.machine.orders()[1]:
             self.tap.hang_up()
 
     def _watch_order(self, now: Fraction) -> None:
         """Note when the order now unfinished at the terminal began (``now``, this tick's
         start, if an order was completed or none was pending)."""
-        decoder = self.term.decoder
-        done, self._commands = self._commands != decoder.stats.commands, decoder.stats.commands
-        if not decoder.mid_order:
+        commands, mid_order = self.machine.orders()
+        done, self._commands = self._commands != commands, commands
+        if not mid_order:
             self._order_since = None
         elif self._order_since is None or done:
             self._order_since = now
 
     def _order_overdue(self) -> bool:
         since = self._order_since
-        return since is not None and self.line.clock.exact - since >= self.order_timeout
+        return since is not None and self.machine.now - since >= self.order_timeout
 
     def _line_hung_up(self) -> None:
         """A client's half order leaves with it: the next client starts on an order boundary.
         It is counted and reported as malformed, as the bytes of a next client cutting it
         short would be over a pty (and ``--strict`` stops on it)."""
-        decoder, tracer = self.term.decoder, self.machine.tracer
         try:
-            if decoder.mid_order:
-                decoder.stats.malformed += 1
-                if tracer is not None:
-                    tracer.cut_short(float(self.line.clock.exact), "the client hanging up")
+            self.machine.drop_partial_order("the client hanging up")
         finally:
-            decoder.drop_partial()
             self._order_since = None
 
     def busy(self) -> bool:
         """Bytes are on their way along the line, either direction (the harness does not
         pace a live line then: it runs as fast as the outside end writes)."""
-        return self.line.host.has_in_flight() or self.line.device.has_in_flight()
+        return self.machine.busy()
 
     def frame(self) -> np.ndarray:
         """The terminal's picture; composed again only after bytes or input changed it (the
         terminal changes no other way), so an idle line costs no drawing."""
         if self._frame is None:
-            self._frame = self.term.frame()
+            self._frame = self.machine.frame()
         return self._frame
 
     def time(self) -> Fraction:
-        return self.line.clock.exact
+        return self.machine.now
 
     def wire(self) -> list[tuple[str, bytes]]:
         """This tick's traffic: what came from outside (``+`` bytes, ``-`` the line hanging

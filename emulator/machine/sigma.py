@@ -14,7 +14,7 @@ from camlab88.emulator.sigma import Terminal
 from camlab88.emulator.sigma.trace import SigmaTracer
 from camlab88.protocols.link import LineSettings, SerialLine, VirtualClock
 from camlab88.protocols.link.clock import TimeLike, to_time
-from camlab88.protocols.link.line import RecorderLike
+from camlab88.protocols.link.line import Endpoint, RecorderLike
 from camlab88.protocols.link.port import LinePort
 
 TICK = Fraction(1, 100)  # how often the terminal takes what has arrived (as `sigma run`)
@@ -39,9 +39,16 @@ class SigmaMachine:
         self.terminal.on_output = self._up
         self.host = HostPort(self.line)
         self.tracer: SigmaTracer | None = None
+        self._watch_sent: Callable[[bytes], None] | None = None
 
     def _up(self, data: bytes) -> None:
         self.line.device.write(data)
+        if self._watch_sent is not None:
+            self._watch_sent(data)
+
+    def watch_sent(self, observer: Callable[[bytes], None] | None) -> None:
+        """Tell ``observer`` every byte the terminal sends up the line (None: stop)."""
+        self._watch_sent = observer
 
     # ------------------------------------------------------------------ time
     @property
@@ -95,7 +102,65 @@ class SigmaMachine:
         """(512, 768) uint8 LUT indices on the screen, row 0 = top."""
         return np.ascontiguousarray(self.terminal.indices()[::-1])
 
+    # ------------------------------------------------------------------ the outside end
+    @property
+    def outside(self) -> Endpoint:
+        """The line's host end as an outside program's bridge serves it (a pty, a TCP
+        client, a serial port): bytes written go down the line, ``hang_up`` ends a client."""
+        return self.line.host
+
+    def drop_partial_order(self, why: str) -> None:
+        """Forget the order the terminal has half received (its sender hung up: ``why``):
+        the next sender starts on an order boundary. The half order is counted and traced
+        as malformed, as a next sender's bytes cutting it short would be."""
+        decoder = self.terminal.decoder
+        try:
+            if decoder.mid_order:
+                decoder.stats.malformed += 1
+                if self.tracer is not None:
+                    self.tracer.cut_short(float(self.clock.exact), why)
+        finally:
+            decoder.drop_partial()
+
+    def busy(self) -> bool:
+        """Bytes are on their way along the line, either direction."""
+        return bool(self.line.host.has_in_flight() or self.line.device.has_in_flight())
+
+    def reading_cursor(self) -> bool:
+        """A cursor read is armed (HF): the next key or stylus press reports the crosshair."""
+        return bool(self.terminal.reg.cursor_report)
+
+    def finish(self) -> None:
+        """Let the line deliver everything queued (a line recording's end)."""
+        self.line.finish()
+
+    @property
+    def stats(self) -> dict[str, int]:
+        """The terminal's counts (bytes, commands, unknown, malformed, errors) and the
+        line's (``host_to_device_bytes`` ...)."""
+        return {**self.terminal.stats, **self.line.stats}
+
+    def orders(self) -> tuple[int, bool]:
+        """(orders the terminal has completed, whether one is half received now)."""
+        decoder = self.terminal.decoder
+        return decoder.stats.commands, bool(decoder.mid_order)
+
     # ------------------------------------------------------------------ the user
+    def key(self, char: str) -> None:
+        """A character typed on the terminal's keyboard (ends a cursor read, else goes up
+        the line)."""
+        self.terminal.key(char)
+
+    def cursor(self, x: int, y: int) -> None:
+        """Move the crosshair with the joystick to drawing-area (x, y) (device units, y up;
+        a crosshair on the tablet does not move)."""
+        reg = self.terminal.reg
+        self.terminal.cursor_keys(x - reg.cursor_x, y - reg.cursor_y)
+
+    def tablet(self, x: int, y: int, pressed: bool) -> None:
+        """The stylus at screen (x, y) (device units, y up); a press ends a cursor read."""
+        self.terminal.tablet(x, y, pressed)
+
     def press(self, name: str, shift: bool = False) -> None:
         """A key struck on the terminal's keyboard (by its user, not the host), named as in
         protocols.sigma.keyboard or a printable character: what it sends goes up the line

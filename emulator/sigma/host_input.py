@@ -13,14 +13,16 @@ from camlab88.emulator.host_input import HostEvent, KeyDown, PointerButton, Poin
 from camlab88.protocols.sigma.keyboard import KEY_BYTES
 
 if TYPE_CHECKING:
+    from camlab88.emulator.machine.sigma import SigmaMachine
     from camlab88.emulator.sigma.terminal import Terminal
 
 KEYS_HINT = ("keys go up the line (cursor keys: the crosshair during a cursor read, Shift x8); "
              "the mouse is the tablet; close the window to quit")
 
 
-def to_terminal(ev: HostEvent, term: Terminal) -> None:
-    """Apply one window event to terminal ``term``."""
+def to_terminal(ev: HostEvent, term: Terminal | SigmaMachine) -> None:
+    """Apply one window event to ``term``: a terminal, or a machine (its terminal's keys and
+    stylus)."""
     if isinstance(ev, KeyDown):
         if ev.key in KEY_BYTES:
             term.press(ev.key, "shift" in ev.mods)

@@ -81,7 +81,7 @@ def _run_until_closed(target: SigmaLineTarget, s: socket.socket, ticks: int) -> 
         target.handle_events([])
         target.tick()
         if _closed(s):
-            return target.line.clock.exact
+            return target.machine.now
     return None
 
 
@@ -94,7 +94,7 @@ def test_a_sigma_client_silent_with_half_an_order_is_hung_up_on_in_line_time() -
     finally:
         target.bridge.close()
     assert when is not None and 2 <= when <= Fraction(23, 10), when
-    assert not target.term.decoder.mid_order  # the half order went with its client
+    assert not target.machine.orders()[1]  # the half order went with its client
 
 
 def test_a_sigma_client_silent_between_orders_keeps_the_line() -> None:

@@ -75,7 +75,7 @@ def kas_frames() -> Iterator[Any]:
 
     machine = SigmaMachine("t5684", LineSettings(baud=9600))
     for t, data in demo_session().chunks:  # the host's writes, each at its line time
-        machine.line.host.write(data, at=t)
+        machine.outside.write(data, at=t)
     for _k in periods(machine, Fraction(1, FPS)):
         yield machine.frame()
 

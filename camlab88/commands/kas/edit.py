@@ -64,7 +64,7 @@ def edit(args: argparse.Namespace) -> int:
         return _interrupted(locals().get("front"), target, preview)
     except (OSError, ValueError) as exc:
         return fail(COMMAND, exc)
-    _report(front.editor, ran.machine.line, target, saved, preview, front.discarded)
+    _report(front.editor, ran.machine, target, saved, preview, front.discarded)
     if failed and front.editor.dirty:  # the last edits are lost: say why, exit non-zero
         return fail(COMMAND, f"{target}: NOT saved: {failed[-1].strerror or failed[-1]}", 1)
     return 0
@@ -113,7 +113,7 @@ def _run(front, args: argparse.Namespace, prepared):
     return run_front(front, args, COMMAND, keys, prepared)
 
 
-def _report(ed, line, target: Path, saved: list[int], preview: bool,
+def _report(ed, machine, target: Path, saved: list[int], preview: bool,
             discarded: bool = False) -> None:
     if preview:
         state = "screenshot run: nothing saved"
@@ -126,4 +126,4 @@ def _report(ed, line, target: Path, saved: list[int], preview: bool,
     else:
         state = f"saved {target}"
     print(f"kas edit: {len(ed.drawing.chains)} chains, {ed.drawing.n_points} points; {state}; "
-          f"{line.stats['host_to_device_bytes']} characters to the Sigma")
+          f"{machine.stats['host_to_device_bytes']} characters to the Sigma")

@@ -77,7 +77,7 @@ def render(args: argparse.Namespace) -> int:
     if args.out is not None:
         _png(machine.frame(), args.out)
         print(f"wrote {args.out}")
-    _say_skipped(machine.terminal, args.stream, host_bytes(got))
+    _say_skipped(machine, args.stream, host_bytes(got))
     return 0
 
 
@@ -94,7 +94,7 @@ def _machine(model: str, got, settings):
     machine = SigmaMachine(model, got.settings, xonxoff=False)
     ct = got.settings.char_time
     for t, data in got.arrivals(">"):  # the host end, writing ahead at recorded times
-        machine.line.host.write(data, at=max(Fraction(0), t - len(data) * ct))
+        machine.outside.write(data, at=max(Fraction(0), t - len(data) * ct))
     return machine
 
 
@@ -159,10 +159,10 @@ def _duration(got, settings) -> Fraction:
     return Fraction(got.duration)
 
 
-def _say_skipped(term, stream: Path, data: bytes) -> None:
+def _say_skipped(machine, stream: Path, data: bytes) -> None:
     from camlab88.protocols.sigma.orders import GRAPHICS_FLAG
 
-    s = term.stats
+    s = machine.stats
     if s["unknown"] or s["malformed"] or s["errors"]:
         print(f"skipped: {s['unknown']} unknown, {s['malformed']} malformed, "
               f"{s['errors']} impossible orders", file=sys.stderr)

@@ -96,10 +96,9 @@ def run(args: argparse.Namespace) -> int:
         opts.realtime = True  # an outside program's line runs at its baud rate, idle asleep
     machine, recorder = _machine(args, settings)
     target = _target(args, machine, got, script)
-    line = machine.line
     # Ctrl-C, or SIGTERM (cli.main delivers it as Ctrl-C): the recording is still written
     with open_trace(args, COMMAND, "the line") as trace, contextlib.ExitStack() as done:
-        done.callback(_finish, target, line, recorder, args)
+        done.callback(_finish, target, machine, recorder, args)
         machine.trace(trace.sink, trace.strict)
         if replay.active() is None:
             target.bridge = _open_bridge(args, settings, target.tap)
@@ -107,17 +106,17 @@ def run(args: argparse.Namespace) -> int:
         run_target(target, opts)
     if trace.failed:
         return 1
-    s = target.term.stats
+    s = machine.stats
     print(f"camlab88 sigma: {s['bytes']} bytes in, {s['unknown']} unknown and "
           f"{s['malformed']} malformed orders skipped", flush=True)
     return 0
 
 
-def _finish(target, line, recorder, args: argparse.Namespace) -> None:
+def _finish(target, machine, recorder, args: argparse.Namespace) -> None:
     if target.bridge is not None:
         target.bridge.close()
     if recorder is not None:
-        line.finish()
+        machine.finish()
         recorder.close()
         print(f"{COMMAND}: recorded the line to {args.record_line}", flush=True)
 
@@ -172,16 +171,15 @@ def _target(args: argparse.Namespace, machine, got, script: list):
     from camlab88.emulator.harness.sigma_line import SigmaLineTarget
     from camlab88.protocols.link.replay import replay_into
 
-    line = machine.line
     if isinstance(got, bytes):
         if got:
-            line.host.write(got)
+            machine.outside.write(got)
     else:
-        replay_into(got, line.host, ">")
+        replay_into(got, machine.outside, ">")
     until = None if args.seconds is None else Fraction(args.seconds)
     if until is None and args.screenshot is not None and args.until_idle is None:
         # once the --in stream has arrived
-        until = Fraction(line.host.drain_time()) + FRAME
+        until = Fraction(machine.outside.drain_time()) + FRAME
     return SigmaLineTarget(machine, None, f"camlab88 Sigma {args.model.upper()}", until,
                            _report, args.order_timeout, args.until_idle, script)
 
