@@ -36,7 +36,7 @@ class PtySigma:
         self.sigma = Sigma(model, baud, trace=trace, strict=strict)
         self.terminal = self.sigma.machine.terminal
         self._lock = threading.Lock()
-        self._bridge = PtyBridge(self.sigma.machine.line.host)
+        self._bridge = PtyBridge(self.sigma.machine.outside)
         self.path: str = self._bridge.slave_path
         self._last_input = time.monotonic()
         self._polls = 0  # polls of the pty so far (wait_idle waits for fresh ones)

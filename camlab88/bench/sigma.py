@@ -39,12 +39,12 @@ class Sigma(MachineBench):
         elif seconds < 0:
             raise ValueError(f"cannot run backwards ({seconds} s)")
         else:
-            m.run_until(m.clock.exact + to_time(seconds))
+            m.run_until(m.now + to_time(seconds))
 
     @property
     def now(self) -> float:
         """Virtual seconds since power-on."""
-        return self.machine.clock.now
+        return float(self.machine.now)
 
     # ------------------------------------------------------------------ local input
     def key(self, char: str) -> None:
@@ -55,15 +55,14 @@ class Sigma(MachineBench):
 
     def cursor(self, x: int, y: int) -> None:
         """Move the crosshair with the joystick to drawing-area (x, y) (device units, y up)."""
-        reg = self.machine.terminal.reg
-        self.machine.terminal.cursor_keys(x - reg.cursor_x, y - reg.cursor_y)
+        self.machine.cursor(x, y)
 
     def tablet(self, x: int, y: int, pressed: bool = False) -> None:
         """The stylus at screen (x, y) (device units, y up); a press ends a cursor read."""
-        self.machine.terminal.tablet(x, y, pressed)
+        self.machine.tablet(x, y, pressed)
 
     # ------------------------------------------------------------------ state
     @property
     def stats(self) -> dict[str, int]:
         """Bytes and orders decoded; unknown, malformed and impossible orders skipped."""
-        return dict(self.machine.terminal.stats)
+        return dict(self.machine.stats)

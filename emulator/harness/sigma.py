@@ -41,7 +41,7 @@ class SigmaSessionRun:
 
     def busy(self) -> bool:
         """The screen is not up to date or the line is not quiet (either way)."""
-        return bool(self.session.busy() or self.machine.line.device.in_flight())
+        return bool(self.session.busy() or self.machine.in_flight())
 
     def run_script(self, events: list[Any], settle: bool = True) -> None:
         self.session.begin()

@@ -136,9 +136,17 @@ class SigmaMachine:
 
     @property
     def stats(self) -> dict[str, int]:
-        """The terminal's counts (bytes, commands, unknown, malformed, errors) and the
-        line's (``host_to_device_bytes`` ...)."""
-        return {**self.terminal.stats, **self.line.stats}
+        """The terminal's counts: bytes, commands, unknown, malformed, errors."""
+        return self.terminal.stats
+
+    @property
+    def line_stats(self) -> dict[str, int]:
+        """The line's counts (``host_to_device_bytes`` ...)."""
+        return self.line.stats
+
+    def in_flight(self) -> bool:
+        """Bytes from the terminal are still on their way up the line."""
+        return bool(self.line.device.in_flight())
 
     def orders(self) -> tuple[int, bool]:
         """(orders the terminal has completed, whether one is half received now)."""

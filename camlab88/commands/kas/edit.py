@@ -126,4 +126,4 @@ def _report(ed, machine, target: Path, saved: list[int], preview: bool,
     else:
         state = f"saved {target}"
     print(f"kas edit: {len(ed.drawing.chains)} chains, {ed.drawing.n_points} points; {state}; "
-          f"{machine.stats['host_to_device_bytes']} characters to the Sigma")
+          f"{machine.line_stats['host_to_device_bytes']} characters to the Sigma")
