@@ -24,7 +24,7 @@ class _InterruptedMidTick(SigmaLineTarget):
     def __init__(self, at: int, signum: int) -> None:
         super().__init__(SigmaMachine("t5684"), None, "test")
         self.at, self.signum, self.n = at, signum, 0
-        self.line.host.write(b"\r+-*/HI2GI200200GJ600200600400200400200200")
+        self.machine.outside.write(b"\r+-*/HI2GI200200GJ600200600400200400200200")
 
     def tick(self) -> bool:
         alive = super().tick()
