@@ -53,8 +53,9 @@ def test_a_sigma_line_starts_each_client_on_an_empty_line() -> None:
     line = target.machine.line
     target.bridge = TcpBridge(0, endpoint=target.tap)
     fed = bytearray()
-    feed = target.machine.terminal.feed
-    target.machine.terminal.feed = lambda data: (fed.extend(data), feed(data))  # what the terminal got
+    term = target.machine.terminal
+    feed = term.feed
+    term.feed = lambda data: (fed.extend(data), feed(data))  # what the terminal got
     hello = b"\r\nhello from b"
     try:
         a = socket.create_connection(("127.0.0.1", target.bridge.port), timeout=5)
