@@ -49,9 +49,14 @@ def test_the_programs_are_those_with_record_and_each_option_has_a_replay_class()
     assert set(recordable) == set(tables)
     assert ("sigma", "run") in tables and ("snooker", "play") in tables
     for key, options in recordable.items():
-        # an option added to a program without saying what a replay does with it
-        unlisted = options - set(tables[key])
+        # an option added to a program without saying what a replay does with it (a replay
+        # refuses it); sigma run's two newest are refused on purpose until a replay of them
+        # is tested
+        unlisted = options - set(tables[key]) - REFUSED_FOR_NOW.get(key, set())
         assert unlisted == set(), (key, unlisted)
+
+
+REFUSED_FOR_NOW = {("sigma", "run"): {"--until-idle", "--events"}}
 
 
 @pytest.mark.parametrize("name", sorted(p.name for p in DATA.glob("*.session")))
