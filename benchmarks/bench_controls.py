@@ -42,9 +42,8 @@ def _record(tmp: Path) -> Path:
 
 def _paced(session: Path, speed: str | None) -> tuple[float, float, float]:
     """(virtual span, wall span, whole command wall) of one headless replay."""
-    from camlab88.emulator.harness import pace
-
     from camlab88.cli import main
+    from camlab88.emulator.harness import pace
 
     calls: list[tuple[float, float]] = []
     original = pace.Pacer.pace

@@ -20,12 +20,11 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
+from camlab88.commands.demo import sigma_demo_stream  # noqa: E402
 from camlab88.emulator.sigma import Terminal  # noqa: E402
 from camlab88.emulator.sigma.raster import boundary_fill  # noqa: E402
 from camlab88.protocols.sigma import Encoder  # noqa: E402
 from camlab88.protocols.sigma.abbreviated import encode_points, new_state, scan_points  # noqa: E402
-
-from camlab88.commands.demo import sigma_demo_stream  # noqa: E402
 from tests.sigma.streams import gks_plot, pgplot_plot  # noqa: E402
 
 LINE_CPS = 960  # 9600 baud 8N1

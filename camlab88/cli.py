@@ -212,10 +212,8 @@ def _take_budget(words: list[str]) -> list[str]:
 
 
 def _main(argv: Sequence[str] | None) -> int:
-    words = _take_budget(list(sys.argv[1:] if argv is None else argv))
-    words = normalise_argv(words)
-    parser = build_parser(words)
-    args = parser.parse_args(words)
+    words = normalise_argv(_take_budget(list(sys.argv[1:] if argv is None else argv)))
+    args = (parser := build_parser(words)).parse_args(words)
     args._argv = words  # what a --record recording stores and a replay re-runs
     args._run_only = run_only_flags(command_parser(parser, words))
     previous = _catch_sigterm()

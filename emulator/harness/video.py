@@ -12,6 +12,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
 from camlab88.emulator.harness.loop import Plugin
 
 if TYPE_CHECKING:
@@ -46,6 +47,7 @@ class VideoWriter(Plugin):
         import contextlib
 
         import imageio_ffmpeg
+
         from camlab88.base.atomicfile import atomic_path
 
         self._stack = contextlib.ExitStack()

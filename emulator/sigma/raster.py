@@ -13,10 +13,9 @@ never pays for it.
 from __future__ import annotations
 
 import threading
+from typing import Any
 
 import numpy as np
-
-from typing import Any
 
 KERNELS = ("draw_line", "draw_polyline", "fill_rect", "dot_run")  # raster_kernels' names
 

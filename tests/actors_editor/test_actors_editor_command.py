@@ -7,7 +7,6 @@ from __future__ import annotations
 from pathlib import Path
 
 from camlab88.apps.actors.model import read_actors
-
 from camlab88.cli import main
 
 

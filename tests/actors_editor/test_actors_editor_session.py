@@ -6,9 +6,8 @@ from __future__ import annotations
 from pathlib import Path
 
 from camlab88.apps.actors.editor.demo import demo_events
-from camlab88.protocols.session import read
-
 from camlab88.cli import main
+from camlab88.protocols.session import read
 
 SESSION = Path(__file__).resolve().parents[2] / "examples" / "ca" / "actors_edit.session"
 

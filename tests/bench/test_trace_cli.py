@@ -108,6 +108,7 @@ def _serve(tmp_path, *extra):
 
 def test_rainbow_serve_traces_and_strict_stops_at_the_first_refusal(tmp_path):
     import pytest
+
     from camlab88.protocols.rainbow import RainbowClient, RainbowRefused, SocketTransport
     from camlab88.protocols.rainbow.stream import StreamError
 

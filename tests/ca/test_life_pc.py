@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+
 from camlab88.apps.ca.patterns import PatternError, parse_life, read_pattern, write_pattern
 
 

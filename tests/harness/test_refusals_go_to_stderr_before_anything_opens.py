@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import pytest
+
 from camlab88.emulator.harness.display import DisplayRefused
 
 
@@ -25,9 +26,8 @@ def test_the_window_test_card_refuses_on_stderr(monkeypatch: pytest.MonkeyPatch,
 
 def test_a_mouse_driven_emulated_tablet_refuses_before_opening_its_pty(
         monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]) -> None:
-    from camlab88.emulator.tablet_input import emulated_source
-
     from camlab88.cli import main
+    from camlab88.emulator.tablet_input import emulated_source
 
     _no_display(monkeypatch)
     opened = []

@@ -9,10 +9,10 @@ import signal
 from pathlib import Path
 
 import pytest
-from camlab88.emulator.harness.loop import Harness
-from camlab88.protocols.session import format as session_format
 
 from camlab88 import cli
+from camlab88.emulator.harness.loop import Harness
+from camlab88.protocols.session import format as session_format
 
 
 def test_sigterm_mid_run_writes_the_recording_and_exits_143(tmp_path: Path,

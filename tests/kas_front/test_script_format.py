@@ -7,7 +7,6 @@ from pathlib import Path
 
 from camlab88.apps.kas import files
 from camlab88.apps.kas.events import parse_script
-
 from camlab88.cli import main
 from tests.kas_front.helpers import DATA
 

@@ -7,6 +7,7 @@ import threading
 from pathlib import Path
 
 import pytest
+
 from camlab88.protocols.link import LineSettings, Recorder, SerialLine
 from camlab88.protocols.link.cli import dump, main, printable, run_echo, write_stream
 from camlab88.protocols.link.transports import TcpBridge
@@ -93,9 +94,8 @@ def _tool_options(parser: argparse.ArgumentParser, *path: str) -> list[tuple]:
 
 @pytest.mark.parametrize("tool", ["echo", "stream"])
 def test_camlab88_link_and_python_m_protocols_link_share_one_parser(tool: str) -> None:
-    from camlab88.protocols.link.cli import add_tools
-
     from camlab88.cli import build_parser
+    from camlab88.protocols.link.cli import add_tools
 
     standalone = argparse.ArgumentParser()
     add_tools(standalone)

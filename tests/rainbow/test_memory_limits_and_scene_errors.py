@@ -9,12 +9,12 @@ import json
 
 import numpy as np
 import pytest
+
+from camlab88.cli import main
 from camlab88.emulator.rainbow import GraphError, OutOfVideoMemory, Rainbow, RainbowError
 from camlab88.emulator.rainbow.graph import MAX_COORD
 from camlab88.emulator.rainbow.reference import reference_frame
 from camlab88.emulator.rainbow.scene import SceneError, build_scene
-
-from camlab88.cli import main
 
 
 # -- 1. virtual pads are limited by the coordinate range, not by video memory --------------

@@ -8,10 +8,10 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+
 from camlab88.emulator.rainbow import Rainbow
 from camlab88.emulator.rainbow.session import in_process
 from camlab88.protocols.rainbow import shelf
-
 from tests.support.golden import assert_matches_golden
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "rainbow"

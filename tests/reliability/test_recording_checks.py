@@ -9,10 +9,10 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
-from camlab88.emulator.harness.replay import Mismatch
-from camlab88.protocols.session import SessionFileError, read
 
 from camlab88.cli import main
+from camlab88.emulator.harness.replay import Mismatch
+from camlab88.protocols.session import SessionFileError, read
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "sessions"
 CA = DATA / "ca_program.session"

@@ -8,9 +8,9 @@ import re
 from pathlib import Path
 
 import pytest
-from camlab88.protocols.session import read
 
 from camlab88.cli import main
+from camlab88.protocols.session import read
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "sessions"
 SHIPPED = sorted(p.name for p in DATA.glob("*.session"))

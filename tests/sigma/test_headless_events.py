@@ -17,6 +17,7 @@ from pathlib import Path
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+
 from camlab88.protocols.sigma.input_script import InputScriptError, parse
 
 PROGRAM = Path(__file__).parent / "programs" / "pgcurs.c"

@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker import checkpoint
 from camlab88.apps.snooker.checkpoint import to_units
 from camlab88.apps.snooker.layout import opening_state
 from camlab88.apps.snooker.table import Table
-
 from camlab88.cli import main
 
 

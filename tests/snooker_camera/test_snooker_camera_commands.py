@@ -7,9 +7,9 @@ import shutil
 from pathlib import Path
 
 import numpy as np
-from camlab88.apps.snooker.camera.views import read_views
 from PIL import Image
 
+from camlab88.apps.snooker.camera.views import read_views
 from camlab88.cli import main
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_camera"
@@ -82,9 +82,8 @@ def test_a_recorded_session_replays_the_script_saved_from_outside(tmp_path: Path
     import argparse
 
     from camlab88.apps.snooker.camera import motion
-    from camlab88.emulator.harness.loop import Plugin
-
     from camlab88.commands.snooker import camera as command
+    from camlab88.emulator.harness.loop import Plugin
     from camlab88.runopts import run_options
 
     monkeypatch.chdir(tmp_path)

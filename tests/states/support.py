@@ -8,13 +8,13 @@ from contextlib import contextmanager
 from pathlib import Path
 
 import pytest
+
+from camlab88.cli import main
 from camlab88.emulator.harness import plugins
 from camlab88.emulator.harness.loop import Plugin
 from camlab88.emulator.harness.session_record import screen_hash
 from camlab88.emulator.machine.state_file import unpack
 from camlab88.protocols.session import read
-
-from camlab88.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]
 RECORDINGS = sorted([*(ROOT / "examples" / "figures").glob("*.session"),

@@ -138,9 +138,8 @@ def test_monitor_count_must_be_positive(capsys) -> None:
 
 def test_the_source_help_lists_every_protocol_a_tablet_can_speak() -> None:
     """`tablet emulate` accepts summa-flair (an alias): `tablet monitor --help` says so."""
-    from camlab88.protocols.tablets.registry import ALIASES, PROTOCOL_NAMES
-
     from camlab88.commands.tablet import SOURCE_HELP
+    from camlab88.protocols.tablets.registry import ALIASES, PROTOCOL_NAMES
 
     listed = SOURCE_HELP.split("P = ")[1].split(", ")
     assert sorted(listed) == sorted([*PROTOCOL_NAMES, *ALIASES])

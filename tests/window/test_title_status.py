@@ -6,8 +6,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from camlab88.apps.kas import files
 
+from camlab88.apps.kas import files
 from camlab88.cli import main
 from tests.kas_paint.helpers import walk
 

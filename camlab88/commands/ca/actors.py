@@ -5,11 +5,11 @@ from __future__ import annotations
 
 import argparse
 import sys
+
 from camlab88.rainbow_tablet import add_tablet_option
 from camlab88.replay_policy import KEEP
 from camlab88.runopts import add_run_options
 from camlab88.scriptopts import HEADLESS_NEEDS_EVENTS, add_events_option
-
 
 COMMAND = "camlab88 ca actors"
 KEYS = """\

@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import argparse
 import time
-from pathlib import Path
-from camlab88.replay_policy import KEEP, SCRATCH
 from dataclasses import replace
+from pathlib import Path
 from typing import Any
 
+from camlab88.replay_policy import KEEP, SCRATCH
 from camlab88.runopts import add_run_options, fail, run_options, unattended
 
 COMMAND = "camlab88 kas paint"

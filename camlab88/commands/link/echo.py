@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import argparse
-from camlab88.protocols.link.cli_args import ECHO_HELP as LINK_ECHO_HELP, add_echo_arguments
+
+from camlab88.protocols.link.cli_args import ECHO_HELP as LINK_ECHO_HELP
+from camlab88.protocols.link.cli_args import add_echo_arguments
 
 
 def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:

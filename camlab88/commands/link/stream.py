@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import argparse
-from camlab88.protocols.link.cli_args import STREAM_HELP as LINK_STREAM_HELP, add_stream_arguments
+
+from camlab88.protocols.link.cli_args import STREAM_HELP as LINK_STREAM_HELP
+from camlab88.protocols.link.cli_args import add_stream_arguments
 
 
 def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:

@@ -5,7 +5,6 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from pathlib import Path
 from camlab88.commands.rainbow import add_relic_memory_options
 from camlab88.runopts import check_output, check_output_dir, fail
 

@@ -9,12 +9,12 @@ frame (and time) that differs; a damaged, truncated or newer recording is refuse
 from __future__ import annotations
 
 import argparse
-from camlab88.control_flags import add_control_options
-from camlab88.stateopts import add_state_options, seconds
 from fractions import Fraction
 from pathlib import Path
 
+from camlab88.control_flags import add_control_options
 from camlab88.runopts import fail, frames_dir
+from camlab88.stateopts import add_state_options, seconds
 
 COMMAND = "camlab88 replay"
 SNAPSHOT_EVERY = 1  # s of virtual time between a seek's snapshots (F4 steps back by them)

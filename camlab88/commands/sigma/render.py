@@ -4,12 +4,12 @@ from __future__ import annotations
 
 import argparse
 import sys
-from camlab88.commands.sigma import MODELS
-from camlab88.control_flags import add_control_options
-from camlab88.runopts import frames_dir
 from fractions import Fraction
 from pathlib import Path
 
+from camlab88.commands.sigma import MODELS
+from camlab88.control_flags import add_control_options
+from camlab88.runopts import frames_dir
 from camlab88.traceopts import add_trace_options, open_trace
 
 COMMAND = "camlab88 sigma render"

@@ -6,11 +6,11 @@ from __future__ import annotations
 import argparse
 import contextlib
 import sys
+from fractions import Fraction
 from pathlib import Path
+
 from camlab88.commands.sigma import MODELS
 from camlab88.replay_policy import DROP, KEEP, OUTSIDE
-from fractions import Fraction
-
 from camlab88.runopts import add_run_options, run_options
 from camlab88.traceopts import add_trace_options, open_trace
 
@@ -32,6 +32,7 @@ def _seconds(text: str) -> Fraction:
 def _die(message: str) -> SystemExit:
     return SystemExit(f"{COMMAND}: {message}")
 
+HELP = "an interactive terminal in a window"
 DESCRIPTION = """\
 Run an emulated terminal in a window, its line on a pseudo-terminal (--pty) or a TCP port on \
 127.0.0.1 (--listen). Keys typed into the window go up the line (cursor keys move the \
@@ -40,8 +41,7 @@ crosshair during a cursor read), the mouse is the tablet. --screenshot: the scre
 
 
 def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("run", help="an interactive terminal in a window",
-                           description=DESCRIPTION)
+    p = actions.add_parser("run", help=HELP, description=DESCRIPTION)
     p.add_argument("--model", default="t5684", choices=MODELS).replay = KEEP
     outside_end = p.add_mutually_exclusive_group()
     outside_end.add_argument("--pty", action="store_true",

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+
 from camlab88.commands.tablet import add_source_argument
 from camlab88.runopts import positive
 

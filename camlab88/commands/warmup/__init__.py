@@ -14,7 +14,6 @@ from __future__ import annotations
 import argparse
 import sys
 
-
 COMMAND = "camlab88 warm-up"
 
 # (what, a completion "module:function" or a camlab88 command line); order: cheapest first
