@@ -20,7 +20,6 @@ import time
 from pathlib import Path
 
 from _bench import ROOT, load
-
 from camlab88.apps.cafilm.build import FilmSpec, build
 from camlab88.apps.cafilm.film import render_image, shoot
 

@@ -9,9 +9,8 @@ import subprocess
 
 import numpy as np
 import pytest
-from PIL import Image
-
 from camlab88.apps.kas import demo, plot
+from PIL import Image
 
 DPI = 20
 

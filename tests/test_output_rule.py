@@ -20,7 +20,6 @@ import sys
 from pathlib import Path
 
 import pytest
-
 from camlab88.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]

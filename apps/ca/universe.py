@@ -18,7 +18,6 @@ from dataclasses import dataclass, field
 from typing import Protocol
 
 import numpy as np
-
 from camlab88.apps.ca import grid_stats
 
 SIDE = 65536

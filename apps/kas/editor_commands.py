@@ -10,7 +10,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-
 from camlab88.apps.kas.model import Chain
 
 TRANSFORM_KINDS = ("move", "rotate", "reflect", "enlarge", "stretch")

@@ -14,7 +14,6 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-
 from camlab88.apps.kas.model import FIELD_H, FIELD_W, PALETTE, AnimSequence, Drawing
 from camlab88.base.atomicfile import write_atomic
 

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import numpy as np
-
 from camlab88.apps.kas.files import Timing, validate_timing
 
 

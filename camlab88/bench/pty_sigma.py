@@ -17,7 +17,6 @@ from collections.abc import Callable
 from fractions import Fraction
 
 import numpy as np
-
 from camlab88.bench.sigma import Sigma
 from camlab88.emulator.protocol_trace import ProtocolError
 

@@ -8,7 +8,6 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
-
 from camlab88.emulator.harness.program_state import SavesState
 from camlab88.emulator.host_input import HostEvent
 from camlab88.emulator.machine import SigmaMachine

@@ -12,7 +12,6 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-
 from camlab88.emulator.harness.loop import Plugin
 
 if TYPE_CHECKING:
@@ -47,7 +46,6 @@ class VideoWriter(Plugin):
         import contextlib
 
         import imageio_ffmpeg
-
         from camlab88.base.atomicfile import atomic_path
 
         self._stack = contextlib.ExitStack()

@@ -11,7 +11,6 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
-
 from camlab88.emulator.inspect import draw
 from camlab88.emulator.protocol_trace import TraceEvent
 

@@ -24,7 +24,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-
 from camlab88.protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
 
 COMPONENTS = ("back", "left", "right", "shelves")          # plane pairs 0-1, 2-3, 4-5, 6-7

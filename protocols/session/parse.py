@@ -22,7 +22,6 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
-
 from camlab88.base import budget
 from camlab88.protocols.session.format import (
     _KEYS,

@@ -14,7 +14,6 @@ import re
 from collections.abc import Callable
 
 import numpy as np
-
 from camlab88.protocols.sigma import abbreviated
 from camlab88.protocols.sigma.commands import (
     AgsEnd,

@@ -2,9 +2,8 @@
 
 from __future__ import annotations
 
-from hypothesis import strategies as st
-
 from camlab88.apps.actors.model import Actor, ActorSet, Cycle, Material, Part
+from hypothesis import strategies as st
 
 coord = st.floats(-100, 100, allow_nan=False, allow_infinity=False)
 positive = st.floats(1e-6, 100, allow_nan=False, allow_infinity=False)

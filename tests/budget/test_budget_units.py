@@ -4,7 +4,6 @@ a bad setting named, the refusal's words."""
 from __future__ import annotations
 
 import pytest
-
 from camlab88.base import budget
 
 

@@ -6,9 +6,6 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
 from camlab88.apps.ca.library import rules_path
 from camlab88.apps.ca.rules import (
     MATCH_EXACT,
@@ -22,6 +19,8 @@ from camlab88.apps.ca.rules import (
     load_rules,
     parse_rules,
 )
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "ca"
 

@@ -5,11 +5,10 @@ from __future__ import annotations
 import re
 
 import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
 from camlab88.apps.ca.program.script_events import MouseState, ScriptError, parse, play
 from camlab88.protocols.rainbow.events import KeyEvent, MouseEvent
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 
 def test_commands():

@@ -4,7 +4,6 @@
 from __future__ import annotations
 
 import pytest
-
 from camlab88.emulator.harness.display import DisplayRefused
 
 

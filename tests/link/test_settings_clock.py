@@ -3,7 +3,6 @@ from __future__ import annotations
 from fractions import Fraction
 
 import pytest
-
 from camlab88.protocols.link import LineSettings, Throttle, VirtualClock, to_time
 
 

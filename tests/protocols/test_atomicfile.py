@@ -6,7 +6,6 @@ import os
 from pathlib import Path
 
 import pytest
-
 from camlab88.base.atomicfile import atomic_output, write_atomic
 
 

@@ -3,11 +3,10 @@
 from __future__ import annotations
 
 import numpy as np
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
 from camlab88.emulator.rainbow import Rainbow
 from camlab88.emulator.rainbow.memory import VideoMemory
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 far = st.integers(-3000, 3000)
 near = st.integers(-20, 80)

@@ -9,7 +9,6 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
-
 from camlab88.cli import main
 from camlab88.emulator.harness.replay import Mismatch
 from camlab88.protocols.session import SessionFileError, read

@@ -5,7 +5,6 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-
 from camlab88.emulator.sigma import Terminal
 from camlab88.protocols.sigma import Encoder
 

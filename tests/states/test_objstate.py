@@ -10,7 +10,6 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-
 from camlab88.base.objstate import Resumable, StateError, capture, restore
 
 

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import pytest
-
 from camlab88.emulator import window as window_module
 
 

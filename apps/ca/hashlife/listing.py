@@ -5,7 +5,6 @@ compiles it."""
 from __future__ import annotations
 
 import numpy as np
-
 from camlab88.apps.ca.hashlife.kernels import (
     PLANE_LEVEL,
     listing,

@@ -29,7 +29,6 @@ from __future__ import annotations
 import weakref
 
 import numpy as np
-
 from camlab88.apps.ca.hashlife.kernels import (
     BASE,
     EMPTY,

@@ -21,7 +21,6 @@ from __future__ import annotations
 from functools import cached_property
 
 import numpy as np
-
 from camlab88.apps.kas.paint import seeds, vector
 from camlab88.apps.kas.paint.autopaint import Step
 

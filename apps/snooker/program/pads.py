@@ -14,7 +14,6 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-
 from camlab88.apps.snooker.program import layout
 from camlab88.apps.snooker.program.layout import TableView
 from camlab88.apps.snooker.table import BROWN, N_BALLS, is_red

@@ -19,7 +19,6 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
-
 from camlab88.apps.snooker import aiming
 from camlab88.apps.snooker.events import EventKind
 from camlab88.apps.snooker.program import arrows, constants, layout, menus

@@ -17,7 +17,6 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-
 from camlab88.base import budget
 
 DEFAULT_AMBIENT = 0.22
