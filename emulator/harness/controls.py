@@ -19,6 +19,7 @@ import numpy as np
 from camlab88.base.png import write_png
 from camlab88.emulator.harness.control_options import SPEED_MAX, SPEED_MIN, Controls, clamp_speed
 from camlab88.emulator.harness.loop import Plugin, RunOptions
+from camlab88.emulator.harness.written import tell_written
 from camlab88.emulator.host_input import HostEvent, KeyDown, KeyUp, Quit
 
 if TYPE_CHECKING:
@@ -123,7 +124,7 @@ class ControlKeys(Plugin):
             return path
         self.shots.append(path)
         self.note = f"screenshot {path.name}"
-        print(f"{harness.options.command}: screenshot {path}", file=sys.stderr, flush=True)
+        tell_written(harness, f"screenshot {path}")
         return path
 
     # ------------------------------------------------------------------ window
