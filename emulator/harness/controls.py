@@ -150,25 +150,19 @@ class ControlKeys(Plugin):
             frame = overlay(frame, key_lines(harness))
         if not self.inspect:
             return frame
+        from camlab88.emulator.inspect.find import nothing
+
         if self._panel is None:
             from camlab88.emulator.inspect import panel_for
 
             self._panel = panel_for(harness.target) or False
-        panel = self._panel(frame) if self._panel else _nothing(frame.shape[0])
+        panel = self._panel(frame) if self._panel else nothing(frame.shape[0])
         return np.concatenate([frame, panel], axis=1)
 
 
 def _signalled(harness: Harness) -> bool:
     """Ctrl-C or SIGTERM came (the run ends after the next tick, as unpaused)."""
     return getattr(getattr(harness, "signals", None), "caught", None) is not None
-
-
-def _nothing(height: int) -> np.ndarray:
-    from camlab88.emulator.inspect import PANEL_WIDTH, draw
-
-    img = draw.canvas(PANEL_WIDTH, height)
-    draw.text(img, 8, 8, "nothing to inspect here")
-    return img
 
 
 def speed_text(speed: float | None) -> str:
