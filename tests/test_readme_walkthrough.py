@@ -104,6 +104,13 @@ def test_the_walkthrough_runs_in_order(tmp_path: Path) -> None:
     assert (tmp_path / "library" / "my_arc.kas").is_file()  # kas library --save kept it
     assert (tmp_path / "kas" / "plots" / "sequence.pdf").is_file()
     assert (tmp_path / "kas" / "house_sun.gif").stat().st_size > 0
+    # and again, in the same directory with the same library (a second try, or a second
+    # person on a shared HOME): every line still runs
+    for argv in commands:
+        done = subprocess.run(_camlab88() + argv[1:], cwd=tmp_path, env=env, text=True,
+                              capture_output=True, timeout=300)
+        shown = " ".join(argv)
+        assert done.returncode == 0, f"second run: {shown}\n{done.stdout}\n{done.stderr}"
     # the examples themselves are inputs only: nothing in the walkthrough rewrote them
     for shipped in (ROOT / "examples").rglob("*"):
         if shipped.is_file():
