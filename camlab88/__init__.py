@@ -1,8 +1,8 @@
 """camlab88: the command-line entry point and the glue that wires programs to devices.
 
 Public API (docs/api.md): ``from camlab88 import Sigma, Rainbow`` — emulated devices for
-testing host software — and ``ProtocolError`` / ``TraceEvent`` of their protocol traces, and ``RainbowRefused``, what a
-refused pad-library call raises.
+testing host software — ``ProtocolError`` / ``TraceEvent`` of their protocol traces, and
+``RainbowRefused``, what a refused pad-library call raises.
 They load on first use, so ``import camlab88`` (and ``camlab88 --help``) stays fast.
 """
 
