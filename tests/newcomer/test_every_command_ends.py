@@ -137,6 +137,22 @@ def _camlab88() -> list[str]:
     return [str(script)] if script.exists() else [sys.executable, "-m", "camlab88"]
 
 
+def _run_within(argv: list[str], cwd: Path, env: dict[str, str]) -> str | None:
+    """The line's stderr, or None when it was still running after LIMIT_S (then it and
+    every process it started, a render's workers too, are ended: its own session)."""
+    import signal
+
+    with subprocess.Popen([*_camlab88(), *argv[1:]], cwd=cwd, env=env,
+                          stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                          stderr=subprocess.PIPE, text=True, start_new_session=True) as proc:
+        try:
+            return proc.communicate(timeout=LIMIT_S)[1]
+        except subprocess.TimeoutExpired:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.communicate()
+            return None
+
+
 @pytest.mark.parametrize("document", [d for d in DOCUMENTS if to_run(d)])
 def test_every_command_of_the_document_ends(document: str, tmp_path: Path) -> None:
     shutil.copytree(ROOT / "examples", tmp_path / "examples")
@@ -148,14 +164,10 @@ def test_every_command_of_the_document_ends(document: str, tmp_path: Path) -> No
     env = _env(tmp_path / "home")
     hung, tracebacks = [], []
     for argv in to_run(document):
-        try:
-            done = subprocess.run([*_camlab88(), *argv[1:]], cwd=tmp_path, env=env,
-                                  stdin=subprocess.DEVNULL, capture_output=True, text=True,
-                                  timeout=LIMIT_S)
-        except subprocess.TimeoutExpired:
+        err = _run_within(argv, tmp_path, env)
+        if err is None:
             hung.append(shlex.join(argv))
-            continue
-        if "Traceback (most recent call last)" in done.stderr:
-            tracebacks.append(f"{shlex.join(argv)}\n{done.stderr[-2000:]}")
+        elif "Traceback (most recent call last)" in err:
+            tracebacks.append(f"{shlex.join(argv)}\n{err[-2000:]}")
     assert not hung, f"{document}: still running after {LIMIT_S} s:\n" + "\n".join(hung)
     assert not tracebacks, f"{document}: a traceback:\n" + "\n\n".join(tracebacks)
