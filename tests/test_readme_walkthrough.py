@@ -52,7 +52,8 @@ def written(argv: list[str]) -> list[str]:
     """What a README line writes: its output options' files, `kas export`'s and `ca
     convert`'s second file, and a `kas library --save` entry (as library:NAME)."""
     if argv[1:3] == ["kas", "library"]:
-        return [f"library:{argv[-1]}"] if "--save" in argv else []
+        save = argv.index("--save") if "--save" in argv else None
+        return [f"library:{argv[save + 2]}"] if save is not None else []  # --save FILE NAME
     out = _outputs(argv)
     if argv[1:3] in (["kas", "export"], ["ca", "convert"]):
         out.append(argv[4])
