@@ -40,12 +40,17 @@ def video(text: str) -> Path:
     return path
 
 
-def add_control_options(p: argparse.ArgumentParser, speed_flag: bool = True) -> None:
-    """Add --speed, --video, --inspect and --inspect-out to an action's parser."""
+SPEED_DEFAULT = "a window at period speed, headless flat out"
+
+
+def add_control_options(p: argparse.ArgumentParser, speed_flag: bool = True,
+                        speed_default: str = SPEED_DEFAULT) -> None:
+    """Add --speed, --video, --inspect and --inspect-out to an action's parser;
+    ``speed_default`` says what runs without --speed (tests/controls/test_stated_speed.py)."""
     if speed_flag:
         p.add_argument("--speed", type=speed, metavar="X",
                        help="run at X times the period's speed (0.1..1000; 1 = period "
-                            "speed; default: a window at period speed, headless flat out)")
+                            f"speed; default: {speed_default})")
     p.add_argument("--video", type=video, metavar="FILE",
                    help="write the frames shown as FILE.mp4 or FILE.gif")
     p.add_argument("--inspect", action="store_true",

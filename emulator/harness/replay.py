@@ -70,6 +70,7 @@ class Replay:
     controls: Controls | None = None  # the replay's --speed, --video, --inspect...
     state: Any = None       # the replay's StateOptions (--seek, --save-state, --load-state)
     seeking: bool = False   # a seek's first run: it stops at the seek time, not the end
+    wrote: list[str] = field(default_factory=list)  # what the run's writers named (written.py)
 
     def adjust(self, options: RunOptions) -> None:
         options.headless = self.headless

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from camlab88.emulator.harness.loop import Plugin
+from camlab88.emulator.harness.written import tell_written
 
 if TYPE_CHECKING:
     from camlab88.emulator.harness.loop import Harness
@@ -46,6 +47,7 @@ class VideoWriter(Plugin):
         import contextlib
 
         import imageio_ffmpeg
+
         from camlab88.base.atomicfile import atomic_path
 
         self._stack = contextlib.ExitStack()
@@ -81,5 +83,5 @@ class VideoWriter(Plugin):
                              f"{exc}") from None
         self._stack.close()
         if not failed:
-            print(f"{harness.options.command}: video {self.path} ({self.count} frames at "
-                  f"{float(harness.target.fps):g} fps)", file=sys.stderr)
+            tell_written(harness, f"video {self.path} ({self.count} frames at "
+                         f"{float(harness.target.fps):g} fps)")

@@ -46,7 +46,18 @@ def replay(args: argparse.Namespace) -> int:
         status, said = rerun(ctx)
     except ReplayRefused as exc:  # the header (line 1) holds the command line
         return fail(COMMAND, f"{args.recording}:1: not replayed: {exc}")
+    _name_written(ctx)
     return _verdict(args, ctx, status, said)
+
+
+def _name_written(ctx) -> None:
+    """Every file and directory the replay wrote (--frames, --screenshot, --video,
+    --inspect-out, --save-state, F12), one line each, as every other command names them:
+    the replayed program's own lines are kept back."""
+    import sys
+
+    for text in ctx.wrote:
+        print(f"{COMMAND}: {text}", file=sys.stderr)
 
 
 def _controls(args: argparse.Namespace, headless: bool):
