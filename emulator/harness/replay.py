@@ -70,6 +70,7 @@ class Replay:
     controls: Controls | None = None  # the replay's --speed, --video, --inspect...
     state: Any = None       # the replay's StateOptions (--seek, --save-state, --load-state)
     seeking: bool = False   # a seek's first run: it stops at the seek time, not the end
+    capture: Plugin | None = None  # --html: gathers the web page's video, events and orders
 
     def adjust(self, options: RunOptions) -> None:
         options.headless = self.headless
@@ -81,7 +82,8 @@ class Replay:
         self.runs += 1
 
     def plugins(self) -> list[Plugin]:
-        return [RecordedInput(self), HashCheck(self)]
+        extra = [self.capture] if self.capture is not None else []
+        return [RecordedInput(self), HashCheck(self), *extra]
 
 
 _ACTIVE: ContextVar[Replay | None] = ContextVar("camlab88_replay", default=None)
