@@ -27,7 +27,7 @@ class PageText:
     """What the page says about the session, besides the data."""
 
     title: str
-    recording: str          # the recording's file name, for "camlab88 replay NAME"
+    recording: str          # the recording's name, for "camlab88 replay NAME"
     program: str            # the recorded command line
     device: str
     recorded: str           # the recording's date (its file's)
@@ -51,7 +51,7 @@ def page_data(capture: Any, video_name: str) -> dict[str, Any]:
             "video": video_name}
 
 
-def _asset(name: str) -> str:
+def asset(name: str) -> str:
     return resources.files(__name__).joinpath(name).read_text(encoding="utf-8")
 
 
@@ -99,12 +99,12 @@ def render(capture: Any, text: PageText, video: Path, inline: bool) -> str:
         "@PANEL_NOTE@": panel_note, "@NEVENTS@": str(len(c.events)),
         "@NORDERS@": str(len(c.orders)), "@ORDERS_HIDDEN@": "" if c.orders else "hidden",
         "@FOOTER@": footer, "@DATA@": _script_json(page_data(c, video.name)),
-        "@CSS@": _asset("player.css"), "@JS@": _asset("player.js"),
+        "@CSS@": asset("player.css"), "@JS@": asset("player.js"),
         "@VIDEO_DATA@": video_data,
     }
     # one pass: what is put in (the session's text among it) is never read for markers
     return re.sub(r"@[A-Z_]+@", lambda m: parts.get(m.group(0), m.group(0)),
-                  _asset("page.html"))
+                  asset("page.html"))
 
 
 def write(out: Path, capture: Any, text: PageText, video: Path) -> list[Path]:

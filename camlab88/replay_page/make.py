@@ -27,15 +27,16 @@ class Made:
 
 
 def recorded_on(path: Path) -> str:
-    """The recording's date: its file's (format 1 holds no date of its own)."""
+    """The recording's date: its file's (a recording, format 1, holds no date of its own)."""
     stamp = datetime.fromtimestamp(path.stat().st_mtime, UTC)
-    return stamp.strftime("%Y-%m-%d %H:%M UTC") + " (the file's date)"
+    return f"{stamp:%Y-%m-%d %H:%M} UTC (the recording file's date)"
 
 
 def make_page(rec: Any, recording: Path, out: Path, codec: str = "h264", check: bool = False,
-              title: str | None = None, extra: str = "") -> Made:
+              title: str | None = None, extra: str = "", replay_as: str | None = None) -> Made:
     """Replay ``rec`` (read from ``recording``) headless, gathering the page's video and
-    data, and write the page to ``out`` when the program ran to its end. Raises
+    data, and write the page to ``out`` when the program ran to its end (``replay_as``: the
+    recording's name in the page's "camlab88 replay NAME", else its file name). Raises
     ReplayRefused as ``rerun`` does."""
     from camlab88 import __version__
     from camlab88.emulator.harness.replay import Replay
@@ -53,7 +54,7 @@ def make_page(rec: Any, recording: Path, out: Path, codec: str = "h264", check: 
         program = " ".join(rec.argv)
         device = capture.data.device or DEVICE_OF.get(rec.argv[0], "?")
         text = PageText(title=title or f"{' '.join(rec.argv[:2])} on the {device}: "
-                        f"{recording.name}", recording=recording.name, program=program,
+                        f"{recording.name}", recording=replay_as or recording.name, program=program,
                         device=device, recorded=recorded_on(recording), version=__version__,
                         extra=extra)
         made.files = write(out, capture.data, text, video)

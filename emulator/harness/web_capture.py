@@ -44,6 +44,7 @@ class Capture:
     dropped_events: int = 0
     dropped_orders: int = 0
     panel: bool = False
+    last: np.ndarray | None = None          # the last screen shown (a gallery's thumbnail)
 
 
 def web_params(path: Path) -> dict[str, Any]:
@@ -120,6 +121,7 @@ class WebCapture(Plugin):
             return
         h, w = frame.shape[:2]
         self.data.screen = (w - w % 2, h - h % 2)
+        self.data.last = frame.copy()  # the device may draw the next one into the same array
         if self._panel is not None:
             frame = np.concatenate([frame, self._panel(frame)], axis=1)
         first = self._writer.count
