@@ -166,13 +166,13 @@
   }
   video.addEventListener("play", () => {
     play.textContent = "Pause";
-    play.setAttribute("aria-label", "pause (space or F5)");
+    play.setAttribute("aria-label", "Pause");
     refresh();
     requestAnimationFrame(tick);
   });
   video.addEventListener("pause", () => {
     play.textContent = "Play";
-    play.setAttribute("aria-label", "play (space or F5)");
+    play.setAttribute("aria-label", "Play");
     refresh();
   });
   video.addEventListener("seeked", refresh);

@@ -64,13 +64,14 @@ class WebCapture(Plugin):
         self.data = Capture()
         self._writer: VideoWriter | None = None
         self._panel: Any = None
-        self._started = False
+        # a command running more than one harness: the first one's run is the page's
+        self._harness: Harness | None = None
 
     # ------------------------------------------------------------------ set-up
     def start(self, harness: Harness) -> None:
-        if self._started:  # a command running more than one harness: the first is the page's
+        if self._harness is not None:
             return
-        self._started = True
+        self._harness = harness
         target = harness.target
         self.data.fps = float(target.fps)
         self.data.device = _device_name(target)
@@ -94,7 +95,7 @@ class WebCapture(Plugin):
     # ------------------------------------------------------------------ input and orders
     def handle_events(self, harness: Harness, events: list[Any]) -> list[Any]:
         """The window's or the recording's events (a script's come through ``on_input``)."""
-        if self._writer is not None:
+        if self._writer is not None and harness is self._harness:
             for ev in events:
                 if type(ev).__name__ != "Quit":
                     self._event(harness, ev)
@@ -117,7 +118,7 @@ class WebCapture(Plugin):
 
     # ------------------------------------------------------------------ frames
     def on_frame(self, harness: Harness, frame: np.ndarray) -> None:
-        if self._writer is None:
+        if self._writer is None or harness is not self._harness:
             return
         h, w = frame.shape[:2]
         self.data.screen = (w - w % 2, h - h % 2)
@@ -131,7 +132,7 @@ class WebCapture(Plugin):
         self.data.video_frames = self._writer.count
 
     def finish(self, harness: Harness) -> None:
-        if self._writer is not None:
+        if self._writer is not None and harness is self._harness:
             writer, self._writer = self._writer, None
             writer.finish(harness)
             self.data.video_frames = writer.count

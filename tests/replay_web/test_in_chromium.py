@@ -207,6 +207,9 @@ def test_controls_are_labelled_and_reached_by_tab(kas: Made, open_page) -> None:
         || e.textContent.trim() || (e.id && document.querySelector(`label[for=${e.id}]`))))
         .map(e => e.outerHTML.slice(0, 80))""")
     assert unnamed == []
+    keys = p.page.eval_on_selector_all("[aria-keyshortcuts]", "es => es.map(e => "
+                                       "e.getAttribute('aria-keyshortcuts')).join(' ')")
+    assert {"F5", "F6", "F7", "F8", "Space"} <= set(keys.split())
     reached = []
     p.page.locator("h1").click()
     for _ in range(12):
