@@ -61,50 +61,62 @@ def _script_json(data: Any) -> str:
         .replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026")
 
 
-def render(capture: Any, text: PageText, video: Path, inline: bool) -> str:
-    """The page's HTML; the video inlined (``inline``) or named beside it."""
-    e = html.escape
+def fill(name: str, parts: dict[str, str]) -> str:
+    """The asset ``name`` with its ``@MARKER@``s replaced, in one pass: what is put in (a
+    session's text among it) is never read for markers."""
+    return re.sub(r"@[A-Z_]+@", lambda m: parts.get(m.group(0), m.group(0)), asset(name))
+
+
+def _video_parts(video: Path, inline: bool) -> tuple[str, str]:
+    """The inlined video's script element, or the video element's ``data-src``."""
+    if not inline:
+        return "", f' data-src="{html.escape(video.name)}"'
+    b64 = base64.b64encode(video.read_bytes()).decode("ascii")
     mime = MIME[video.suffix.lower()]
-    if inline:
-        b64 = base64.b64encode(video.read_bytes()).decode("ascii")
-        video_data = f'<script type="application/octet-stream" id="video-data" ' \
-                     f'data-mime="{mime}">{b64}</script>'
-        src = ""
-    else:
-        video_data, src = "", f' data-src="{e(video.name)}"'
-    c = capture
-    meta = (f"{e(text.device)} &middot; program <code>{e(text.program)}</code> &middot; "
+    return f'<script type="application/octet-stream" id="video-data" data-mime="{mime}">' \
+           f"{b64}</script>", ""
+
+
+def _meta(c: Any, text: PageText) -> str:
+    e = html.escape
+    return (f"{e(text.device)} &middot; program <code>{e(text.program)}</code> &middot; "
             f"recorded {e(text.recorded)} &middot; made by camlab88 {e(text.version)} &middot; "
             f"{len(c.frames)} frames at {c.fps:g} frames a second "
             f"({c.video_frames / c.fps if c.fps else 0:.1f} s)")
+
+
+def _footer(c: Any, text: PageText) -> str:
+    e = html.escape
     footer = (f"Replay it for real, in the emulator: <code>camlab88 replay "
               f"{e(text.recording)}</code> (add <code>--check</code> to compare every "
               f"screen hash; <code>--period</code> to play at the line's own speed). This "
               f"page was made by <code>camlab88 replay {e(text.recording)} --html</code>; "
               f"it needs no network.")
-    dropped = []
-    if c.dropped_events:
-        dropped.append(f"{c.dropped_events} later input events not listed")
-    if c.dropped_orders:
-        dropped.append(f"{c.dropped_orders} later orders not listed")
+    dropped = [f"{n} later {what} not listed" for n, what in
+               ((c.dropped_events, "input events"), (c.dropped_orders, "orders")) if n]
     if dropped:
         footer += " " + e("; ".join(dropped)) + " (the page lists the first 100000)."
-    panel_note = ('<p class="hint">Left: the screen; right: the inspector\'s panel at the '
-                  'same frame (the band structure over the screen, video memory per plane, '
-                  'the pad graph).</p>' if c.panel else "")
-    parts = {
+    return footer
+
+
+PANEL_NOTE = ('<p class="hint">Left: the screen; right: the inspector\'s panel at the same '
+              'frame (the band structure over the screen, video memory per plane, the pad '
+              'graph).</p>')
+
+
+def render(capture: Any, text: PageText, video: Path, inline: bool) -> str:
+    """The page's HTML; the video inlined (``inline``) or named beside it."""
+    e, c = html.escape, capture
+    video_data, src = _video_parts(video, inline)
+    return fill("page.html", {
         "@TITLE@": e(text.title), "@VERSION@": e(text.version),
-        "@META@": meta, "@EXTRA@": text.extra,
+        "@META@": _meta(c, text), "@EXTRA@": text.extra,
         "@WIDTH@": str(c.size[0]), "@HEIGHT@": str(c.size[1]), "@SRC@": src,
-        "@PANEL_NOTE@": panel_note, "@NEVENTS@": str(len(c.events)),
+        "@PANEL_NOTE@": PANEL_NOTE if c.panel else "", "@NEVENTS@": str(len(c.events)),
         "@NORDERS@": str(len(c.orders)), "@ORDERS_HIDDEN@": "" if c.orders else "hidden",
-        "@FOOTER@": footer, "@DATA@": _script_json(page_data(c, video.name)),
-        "@CSS@": asset("player.css"), "@JS@": asset("player.js"),
-        "@VIDEO_DATA@": video_data,
-    }
-    # one pass: what is put in (the session's text among it) is never read for markers
-    return re.sub(r"@[A-Z_]+@", lambda m: parts.get(m.group(0), m.group(0)),
-                  asset("page.html"))
+        "@FOOTER@": _footer(c, text), "@DATA@": _script_json(page_data(c, video.name)),
+        "@CSS@": asset("player.css"), "@JS@": asset("player.js"), "@VIDEO_DATA@": video_data,
+    })
 
 
 def write(out: Path, capture: Any, text: PageText, video: Path) -> list[Path]:

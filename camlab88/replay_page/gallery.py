@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from camlab88.replay_page import asset
+from camlab88.replay_page import asset, fill
 
 THUMB_STEP = 2  # thumbnails at half size
 
@@ -38,53 +38,26 @@ def figure_html(fig: Any) -> str:
     return out
 
 
+def _card(en: Entry) -> str:
+    e, f = html.escape, en.figure
+    head = f"Figure {e(f.number)} <span class=\"sec\">{e(f.section_label)}</span>"
+    if en.page is not None:
+        thumb = (f'<img src="{e(en.thumb.name)}" alt="the last screen of figure '
+                 f'{e(f.number)}\'s session">' if en.thumb else "")
+        head = f'<a href="{e(en.page.name)}">{thumb}{head}</a>'
+    else:
+        head = f"{head} <em>({e(en.why)})</em>"
+    verdict = (f"<p><strong>{e(f.verdict)}</strong>: {e(f.differs)}</p>" if f.differs
+               else f"<p>{e(f.verdict)}</p>")
+    return (f'<li class="card"><h2>{head}</h2>\n<p class="caption">&ldquo;{e(f.caption)}'
+            f"&rdquo;</p>\n<p>{e(f.shows)}</p>\n{verdict}</li>")
+
+
 def index_html(entries: list[Entry], version: str) -> str:
-    e = html.escape
-    cards = []
-    for en in entries:
-        f = en.figure
-        head = f"Figure {e(f.number)} <span class=\"sec\">{e(f.section_label)}</span>"
-        if en.page is not None:
-            thumb = (f'<img src="{e(en.thumb.name)}" alt="the last screen of figure '
-                     f'{e(f.number)}\'s session">' if en.thumb else "")
-            head = f'<a href="{e(en.page.name)}">{thumb}{head}</a>'
-        else:
-            head = f"{head} <em>({e(en.why)})</em>"
-        verdict = (f"<p><strong>{e(f.verdict)}</strong>: {e(f.differs)}</p>" if f.differs
-                   else f"<p>{e(f.verdict)}</p>")
-        cards.append(f'<li class="card"><h2>{head}</h2>\n<p class="caption">&ldquo;'
-                     f"{e(f.caption)}&rdquo;</p>\n<p>{e(f.shows)}</p>\n{verdict}</li>")
     made = sum(en.page is not None for en in entries)
-    return f"""<!DOCTYPE html>
-<html lang="en">
-<head>
-<meta charset="utf-8">
-<meta name="viewport" content="width=device-width, initial-scale=1">
-<meta name="generator" content="camlab88 {e(version)}">
-<title>The thesis's screen figures, replayed: camlab88</title>
-<link rel="icon" href="data:,">
-<style>
-{asset("gallery.css")}
-</style>
-</head>
-<body>
-<header>
-<h1>The thesis's screen figures, replayed</h1>
-<p>Each screen figure of the 1987 thesis as a recorded session on the emulated device (a
-Sigma T5684/T5688 terminal or the Rainbow workstation), made into a page that plays it, with
-the input the program was given and, on the Sigma, every order sent down the line.
-{made} of {len(entries)} figures; made by camlab88 {e(version)}. Every page opens offline.
-To replay one for real: <code>camlab88 figures N</code>, or <code>camlab88 replay
-examples/figures/fig-N.session</code>.</p>
-</header>
-<main>
-<ol class="cards">
-{chr(10).join(cards)}
-</ol>
-</main>
-</body>
-</html>
-"""
+    return fill("gallery.html", {
+        "@VERSION@": html.escape(version), "@CSS@": asset("gallery.css"),
+        "@COUNT@": f"{made} of {len(entries)}", "@CARDS@": "\n".join(map(_card, entries))})
 
 
 def build(out: Path, figures: list[Any], recording: Any, codec: str = "h264") -> list[Entry]:

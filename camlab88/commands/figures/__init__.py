@@ -90,12 +90,13 @@ def _replay(args: argparse.Namespace, path: Path) -> int:
 
 def _gallery(args: argparse.Namespace) -> int:
     """``--html DIR``: every figure's replay page and index.html (camlab88.replay_page)."""
-    from camlab88.figure_catalogue import figures as catalogue
+    from camlab88.figure_catalogue import by_number
     from camlab88.replay_page.gallery import build
 
-    chosen = [f for f in catalogue() if args.number in (None, f.number)]
-    if not chosen:
-        return fail(COMMAND, f"no screen figure {args.number!r}")
+    known = by_number()
+    if args.number is not None and args.number not in known:
+        return fail(COMMAND, f"no screen figure {args.number!r} (figures: {', '.join(known)})")
+    chosen = list(known.values()) if args.number is None else [known[args.number]]
     out = args.html
     if out.exists() and not out.is_dir():
         return fail(COMMAND, f"cannot write the gallery to {out}: not a directory")
