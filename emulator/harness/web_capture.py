@@ -191,4 +191,6 @@ def describe_event(ev: Any) -> str:
         if ev.kind == "pointer":
             return f"stylus {'down' if ev.down else 'up'} {ev.x:g},{ev.y:g}"
         return ev.kind
+    if kind == "Command":  # the painting program's script: a command and its words
+        return " ".join([ev.name, *map(str, ev.args)])
     return kind

@@ -153,3 +153,14 @@ def test_the_page_files_ship_in_the_package() -> None:
     assert {"page.html", "player.js", "player.css"} <= names
     root = Path(__file__).resolve().parents[2]
     assert '"*.js"' in (root / "pyproject.toml").read_text()
+
+
+def test_the_painting_programs_script_is_the_input_timeline(tmp_path) -> None:
+    """kas paint plays its --script a command at a time: each is an event of the page."""
+    figure = Path(__file__).resolve().parents[2] / "examples" / "figures" / "fig-3.8.session"
+    out = tmp_path / "paint.html"
+    assert main(["replay", str(figure), "--html", str(out)]) == 0
+    data = page_data(out)
+    words = [text for _t, text in data["events"]]
+    assert words[:3] == ["colour 10", "select 0.0 -2.5", "fill"]
+    assert len(data["orders"]) > 1000  # the T5688's painting orders, decoded
