@@ -1,9 +1,9 @@
 """The thesis's screen figures as data: number, section, caption, what our recording shows
 and where it differs from the thesis, and why.
 
-One place (``figure_catalogue.toml`` beside this module), read by the web gallery
-(``camlab88 figures --html DIR``); the figures work makes ``camlab88 figures`` and
-docs/figures.md's table read it too.
+One place (``figure_catalogue.toml`` beside this module) read by ``camlab88 figures``, by the
+web gallery and by ``examples/figures/make_figures.py --docs``, which writes docs/figures.md's
+table from it (tests/test_figures.py checks the two agree).
 """
 
 from __future__ import annotations
@@ -74,3 +74,16 @@ def figures() -> tuple[Figure, ...]:
 
 def by_number() -> dict[str, Figure]:
     return {f.number: f for f in figures()}
+
+
+def markdown_table() -> str:
+    """docs/figures.md's table (make_figures.py --docs writes it there)."""
+    rows = ["| fig. | § | the thesis's caption | ours | verdict: what differs, and why | "
+            "what the recording shows | replay |",
+            "|---|---|---|---|---|---|---|"]
+    for f in figures():
+        verdict = f.verdict if not f.differs else f"**{f.verdict}**: {f.differs}"
+        rows.append(f"| {f.number} | {f.section_label} | {f.caption} | "
+                    f"![](images/figures/fig-{f.number}.png) | {verdict} | {f.shows} | "
+                    f"`camlab88 figures {f.number}` |")
+    return "\n".join(rows) + "\n"
