@@ -9,6 +9,7 @@ frame (and time) that differs; a damaged, truncated or newer recording is refuse
 from __future__ import annotations
 
 import argparse
+import sys
 from fractions import Fraction
 from pathlib import Path
 
@@ -34,6 +35,8 @@ def replay(args: argparse.Namespace) -> int:
         rec = read(args.recording, traffic=False)  # a replay: the traffic is not kept
     except SessionFileError as exc:
         return fail(COMMAND, exc)
+    if args.html is not None:
+        return _html(args, rec)
     headless = choose_headless(COMMAND, args.headless, "checking the screen hashes")
     ctx = Replay(rec, headless=headless, period=args.period, check=args.check,
                  frames=_abs(args.frames), screenshot=_abs(args.screenshot),
@@ -54,10 +57,43 @@ def _name_written(ctx) -> None:
     """Every file and directory the replay wrote (--frames, --screenshot, --video,
     --inspect-out, --save-state, F12), one line each, as every other command names them:
     the replayed program's own lines are kept back."""
-    import sys
-
     for text in ctx.wrote:
         print(f"{COMMAND}: {text}", file=sys.stderr)
+
+
+def _html(args: argparse.Namespace, rec) -> int:
+    """``--html OUT``: the session replayed headless into a web page."""
+    from camlab88.replay_page.make import form_of, make_page
+    from camlab88.replay_policy import ReplayRefused
+    from camlab88.runopts import check_output
+
+    others = [flag for flag, given in (("--seek", args.seek), ("--save-state", args.save_state),
+              ("--load-state", args.load_state), ("--frames", args.frames),
+              ("--screenshot", args.screenshot), ("--period", args.period or None),
+              ("--video", args.video), ("--inspect-out", args.inspect_out)) if given]
+    if others:
+        return fail(COMMAND, f"--html makes the whole session's page on its own; "
+                    f"it does not take {', '.join(others)}")
+    out = args.html.resolve()
+    if out.suffix.lower() in (".html", ".htm"):
+        check_output(COMMAND, out, "write the page to")
+    elif out.exists() and not out.is_dir():
+        return fail(COMMAND, f"cannot write the page to {args.html}: not a directory "
+                    "(name a .html file for a single page)")
+    try:
+        made = make_page(rec, args.recording, out, args.html_codec, check=args.check)
+    except ReplayRefused as exc:
+        return fail(COMMAND, f"{args.recording}:1: not replayed: {exc}")
+    except OSError as exc:
+        return fail(COMMAND, f"cannot write the page to {args.html}: {exc.strerror or exc}")
+    status = _verdict(args, made.ctx, made.status, made.said)
+    if status == 0:
+        size = sum(f.stat().st_size for f in made.files)
+        print(f"{COMMAND}: web page {made.files[0]} ({size / 1e6:.2f} MB; "
+              f"{form_of(args.html)}; {len(made.capture.frames)} frames, "
+              f"{len(made.capture.events)} input events, {len(made.capture.orders)} orders)",
+              file=sys.stderr)
+    return status
 
 
 def _controls(args: argparse.Namespace, headless: bool):
