@@ -14,6 +14,7 @@ import errno
 import importlib
 import sys
 from collections.abc import Sequence
+from typing import NoReturn
 
 from camlab88 import __version__
 
@@ -34,12 +35,60 @@ COMMAND_MODULES: tuple[str, ...] = (
 
 
 class _Parser(argparse.ArgumentParser):
-    """argparse, with "did you mean" for a misspelt subcommand or action."""
+    """argparse, with every parse error in one line — the message, "did you mean" for a
+    misspelt subcommand, action or option, and where the usage is (``--help``) — instead
+    of the usage block; and an option no command has named as unknown, even where argparse
+    would first complain that a required one is missing (``--input`` for ``--in``)."""
 
-    def error(self, message: str) -> None:
-        if "invalid choice:" in message:
+    # the last parser that read the line (a subcommand's, once it is reached): its options
+    # are the ones an unknown option is compared with, and its --help the one to see
+    reading: _Parser | None = None
+
+    def parse_known_args(self, args: Sequence[str] | None = None,
+                         namespace: argparse.Namespace | None = None
+                         ) -> tuple[argparse.Namespace, list[str]]:
+        _Parser.reading = self
+        self.words = list(sys.argv[1:] if args is None else args)
+        return super().parse_known_args(args, namespace)
+
+    def error(self, message: str) -> NoReturn:
+        leaf = _Parser.reading or self
+        unknown = leaf.unknown_options()
+        if unknown and (message.startswith(("the following arguments are required",
+                                            "unrecognized arguments"))):
+            message = f"unknown option {unknown[0]}" + leaf.option_suggestion(unknown[0])
+        elif "invalid choice:" in message:
             message += _suggestion(message)
-        super().error(message)
+        self.exit(2, f"{leaf.prog}: {message} (see {leaf.prog} --help)\n")
+
+    def known_options(self) -> set[str]:
+        """Every option string this parser's help names (its groups' too)."""
+        import re
+
+        return set(re.findall(r"(?<![\w-])(--?[A-Za-z][\w-]*)", self.format_help()))
+
+    def unknown_options(self) -> list[str]:
+        """The long options on the line that this parser does not take, not even as a
+        unique abbreviation."""
+        words = getattr(self, "words", [])
+        words = words[:words.index("--")] if "--" in words else words
+        known = None
+        out = []
+        for word in words:
+            if not word.startswith("--") or word == "--":
+                continue
+            known = self.known_options() if known is None else known
+            name = word.split("=", 1)[0]
+            if name not in known and sum(k.startswith(name) for k in known) != 1:
+                out.append(name)
+        return out
+
+    def option_suggestion(self, name: str) -> str:
+        from camlab88.base.suggest import did_you_mean
+
+        longs = sorted(k for k in self.known_options() if k.startswith("--"))
+        stems = [k for k in longs if name.startswith(k)]  # --input for --in: the stem first
+        return did_you_mean(name, stems[-1:] or longs)
 
 
 def _suggestion(message: str) -> str:
@@ -57,6 +106,7 @@ def _suggestion(message: str) -> str:
 def build_parser(words: Sequence[str] = ()) -> argparse.ArgumentParser:
     """The whole command line, or — when `words` starts with an area's name — only that
     area (the others' modules are not imported: ``ca run`` need not load snooker's)."""
+    _Parser.reading = None
     parser = _Parser(
         prog="camlab88",
         description="Working models of the Sigma T5684/T5688 terminals and the Cambridge "

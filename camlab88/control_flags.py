@@ -42,16 +42,21 @@ def video(text: str) -> Path:
     return path
 
 
-def add_control_options(p: argparse.ArgumentParser, speed_flag: bool = True) -> None:
+SPEED_DEFAULT = "a window at period speed, headless flat out"
+
+
+def add_control_options(p: argparse.ArgumentParser, speed_flag: bool = True,
+                        speed_default: str = SPEED_DEFAULT) -> None:
     """Add --speed, --video, --inspect and --inspect-out to an action's parser; each is
     run-only, and what a replay does with it is said (the pacing and the inspector change
-    nothing a replay checks; the files they write are outputs)."""
+    nothing a replay checks; the files they write are outputs). ``speed_default`` says what
+    runs without --speed (tests/controls/test_stated_speed.py)."""
     shown = []
     if speed_flag:
         shown.append((p.add_argument(
             "--speed", type=speed, metavar="X",
             help="run at X times the period's speed (0.1..1000; 1 = period speed; default: "
-                 "a window at period speed, headless flat out)"), KEEP))
+                 f"{speed_default})"), KEEP))
     shown += [
         (p.add_argument("--video", type=video, metavar="FILE",
                         help="write the frames shown as FILE.mp4 or FILE.gif"), SCRATCH),

@@ -34,14 +34,15 @@ def events_player(path: str | None) -> Player | None:
 def scripted_run_options(args: argparse.Namespace, command: str, player: Player | None,
                          idle_frames: int | None = 100) -> RunOptions:
     """The run options of a program driven by the mouse and keyboard: a window is wanted
-    unless the --events script (or --stop-after) gives a headless run an end; a headless
-    run with neither (the display rule chose it) stops after ``idle_frames`` frames."""
-    from camlab88.runopts import run_options
+    unless the --events script (or --stop-after) gives a headless run an end; a run nobody
+    watches (headless, or one that ends in a --screenshot) with neither stops after
+    ``idle_frames`` frames, so it always ends."""
+    from camlab88.runopts import run_options, unattended
 
     useful = "playing the --events script" if player else (
         "for --stop-after frames" if args.stop_after else None)
     opts = run_options(args, command, useful, "give --headless with --events FILE",
                        getattr(args, "_argv", None))
-    if idle_frames and opts.headless and player is None and opts.stop_after is None:
+    if idle_frames and unattended(opts) and player is None and opts.stop_after is None:
         opts.stop_after = idle_frames
     return opts

@@ -19,13 +19,20 @@ class TraceEvent:
     expected: str | None = None
     context: bytes = b""
 
-    def to_json(self) -> dict[str, Any]:
+    def as_dict(self) -> dict[str, Any]:
+        """The event as a dict of JSON types (what ``to_json`` writes)."""
         out: dict[str, Any] = {"offset": self.offset, "time": round(self.time, 9),
                                "order": self.order, "args": self.args}
         if self.warning is not None:
             out.update(warning=self.warning, kind=self.kind, expected=self.expected,
                        context=self.context.decode("latin-1"))
         return out
+
+    def to_json(self) -> str:
+        """The event as one line of JSON text (a ``--trace`` file's line)."""
+        import json
+
+        return json.dumps(self.as_dict(), ensure_ascii=False)
 
     def message(self) -> str:
         """One line: where, what, the bytes leading up to it, and what was expected."""
@@ -56,9 +63,7 @@ class TraceFile:
         self.count = 0
 
     def __call__(self, ev: TraceEvent) -> None:
-        import json
-
-        self._fh.write(json.dumps(ev.to_json(), ensure_ascii=False) + "\n")
+        self._fh.write(ev.to_json() + "\n")
         self.count += 1
 
     def close(self) -> None:

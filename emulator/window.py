@@ -58,6 +58,9 @@ class Window:
 
     def __init__(self, title: str, size: tuple[int, int], scale: int = 1) -> None:
         os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
+        # pygame's documented hint: centred, and centred again when the window grows (the
+        # inspector beside the screen), so it stays on a screen without a window manager
+        os.environ.setdefault("SDL_VIDEO_CENTERED", "1")
         import pygame  # the one place pygame is imported
 
         if int(scale) != scale or scale < 1:
@@ -68,6 +71,7 @@ class Window:
         self._pg: Any = pygame
         self.size = (int(width), int(height))
         self.scale = int(scale)
+        self.zoom = float(self.scale)  # window pixels per device pixel (less where it must fit)
         pygame.display.init()
         window_size = (self.size[0] * self.scale, self.size[1] * self.scale)
         self.surface = pygame.display.set_mode(window_size)
@@ -91,16 +95,26 @@ class Window:
             self._fit((w, h))
         frame = np.ascontiguousarray(frame, dtype=np.uint8)
         image = pg.image.frombuffer(frame.tobytes(), (w, h), "RGB")
-        if self.scale != 1:
-            image = pg.transform.scale(image, self.surface.get_size())  # nearest neighbour
+        if self.surface.get_size() != (w, h):
+            if self.zoom >= 1:
+                image = pg.transform.scale(image, self.surface.get_size())  # nearest neighbour
+            else:  # shrunk to fit the screen: averaged, so lines stay visible
+                image = pg.transform.smoothscale(image, self.surface.get_size())
         self.surface.blit(image, (0, 0))
         pg.display.flip()
 
     def _fit(self, size: tuple[int, int]) -> None:
-        """Resize the window to show ``size`` pixels (w, h) scaled, if it does not already."""
-        want = (size[0] * self.scale, size[1] * self.scale)
+        """Resize the window to show ``size`` pixels (w, h) scaled, if it does not already;
+        never larger than the screen it is on (then scaled down to fit)."""
+        self.zoom = fit_zoom(size, self.scale, self._screen())
+        want = (round(size[0] * self.zoom), round(size[1] * self.zoom))
         if self.surface.get_size() != want:
             self.surface = self._pg.display.set_mode(want)
+
+    def _screen(self) -> tuple[int, int] | None:
+        """The size of the screen the window is on (pygame's desktop sizes), if known."""
+        sizes = self._pg.display.get_desktop_sizes()
+        return tuple(sizes[0]) if sizes else None
 
     def set_caption(self, text: str) -> None:
         """The window's title bar (set only when it changes)."""
@@ -123,8 +137,8 @@ class Window:
 
     def _device_xy(self, pos: tuple[int, int]) -> tuple[int, int]:
         w, h = self.size
-        x = min(max(int(pos[0]) // self.scale, 0), w - 1)
-        y = min(max(int(pos[1]) // self.scale, 0), h - 1)
+        x = min(max(int(pos[0] / self.zoom), 0), w - 1)
+        y = min(max(int(pos[1] / self.zoom), 0), h - 1)
         return x, y
 
     def _mods(self, mod: int) -> frozenset[str]:
@@ -194,6 +208,14 @@ class Window:
 
     def __exit__(self, *exc: object) -> None:
         self.close()
+
+
+def fit_zoom(size: tuple[int, int], scale: int, screen: tuple[int, int] | None) -> float:
+    """Window pixels per picture pixel: ``scale``, or less where the picture (the screen and
+    the inspector beside it) would not fit on ``screen`` (w, h)."""
+    if screen is None or screen[0] < 1 or screen[1] < 1:
+        return float(scale)
+    return min(float(scale), screen[0] / size[0], screen[1] / size[1])
 
 
 def test_card(width: int, height: int) -> np.ndarray:

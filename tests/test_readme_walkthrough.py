@@ -52,7 +52,8 @@ def written(argv: list[str]) -> list[str]:
     """What a README line writes: its output options' files, `kas export`'s and `ca
     convert`'s second file, and a `kas library --save` entry (as library:NAME)."""
     if argv[1:3] == ["kas", "library"]:
-        return [f"library:{argv[-1]}"] if "--save" in argv else []
+        save = argv.index("--save") if "--save" in argv else None
+        return [f"library:{argv[save + 2]}"] if save is not None else []  # --save FILE NAME
     out = _outputs(argv)
     if argv[1:3] in (["kas", "export"], ["ca", "convert"]):
         out.append(argv[4])
@@ -104,6 +105,13 @@ def test_the_walkthrough_runs_in_order(tmp_path: Path) -> None:
     assert (tmp_path / "library" / "my_arc.kas").is_file()  # kas library --save kept it
     assert (tmp_path / "kas" / "plots" / "sequence.pdf").is_file()
     assert (tmp_path / "kas" / "house_sun.gif").stat().st_size > 0
+    # and again, in the same directory with the same library (a second try, or a second
+    # person on a shared HOME): every line still runs
+    for argv in commands:
+        done = subprocess.run(_camlab88() + argv[1:], cwd=tmp_path, env=env, text=True,
+                              capture_output=True, timeout=300)
+        shown = " ".join(argv)
+        assert done.returncode == 0, f"second run: {shown}\n{done.stdout}\n{done.stderr}"
     # the examples themselves are inputs only: nothing in the walkthrough rewrote them
     for shipped in (ROOT / "examples").rglob("*"):
         if shipped.is_file():

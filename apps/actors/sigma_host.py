@@ -23,10 +23,22 @@ from camlab88.apps.snooker.render.runs import RunWriter
 from camlab88.protocols.sigma import Encoder
 
 SCREEN_W, SCREEN_H = 768, 512
+# levels of each board square's ramp, dark to lit: at 10 the fall-off of the light across
+# the board showed as a dark contour ring, and its specular highlight as a grey disc (issue
+# 45); 28 levels and the glossy shades keep every step small (tested against the truecolour
+# frame: tests/cafilm/test_t5688_board.py)
+BOARD_LEVELS = 28
+GLOSS_SHADES, GLOSS = 8, tuple(np.geomspace(0.006, 0.25, 7))  # highlight shades x white
 
 
 def _ramp(albedo: np.ndarray, n: int, top: float) -> list[np.ndarray]:
     return list(albedo[None, :] * np.geomspace(0.03, top, n)[:, None])
+
+
+def _glossy(albedo: np.ndarray, top: float) -> list[np.ndarray]:
+    """The board under a light's specular highlight: lit shades with white added (without
+    them the highlight's pale disc was matched to the actors' greys)."""
+    return [albedo * g + s for g in np.geomspace(0.2, top, GLOSS_SHADES) for s in GLOSS]
 
 
 def _whiten(lit: np.ndarray, n: int) -> list[np.ndarray]:
@@ -38,8 +50,9 @@ def fixed_palette(actor_colours: list[tuple[int, int, int]],
                   tile_colours: list[tuple[int, int, int]], top: float) -> Palette:
     """256 linear colours for a film whose brightest lit albedo is ``top`` times itself."""
     entries: list[np.ndarray] = [BACKGROUND]
-    floors = [BOARD[0], BOARD[1], *(linear_colour(c) for c in tile_colours)]
-    for f in floors:
+    for f in BOARD:  # the light's fall-off across the board: steps too coarse show as rings
+        entries += _ramp(f, BOARD_LEVELS, top) + _glossy(f, top)
+    for f in (linear_colour(c) for c in tile_colours):
         entries += _ramp(f, 10, top)
     per = max(8, (SIZE - len(entries)) // max(len(actor_colours), 1) - 4)
     for c in actor_colours:

@@ -29,6 +29,12 @@ class Sigma(MachineBench):
             data = data.encode("latin-1")
         return self.machine.host.write(bytes(data))
 
+    def write(self, data: bytes) -> int:
+        """The Sigma as a port: a host program that writes to any object with ``write``
+        (a serial port, a file) writes to the line this way. Returns ``len(data)``."""
+        self.send(data)
+        return len(data)
+
     def run(self, seconds: float | None = None) -> None:
         """Advance virtual time by ``seconds``, or (None) until the line is idle: every byte
         sent either way has arrived and the terminal has taken what it was sent."""

@@ -19,6 +19,7 @@ import numpy as np
 from camlab88.base.png import write_png
 from camlab88.emulator.harness.control_options import SPEED_MAX, SPEED_MIN, Controls, clamp_speed
 from camlab88.emulator.harness.loop import Plugin, RunOptions
+from camlab88.emulator.harness.written import tell_written
 from camlab88.emulator.host_input import HostEvent, KeyDown, KeyUp, Quit
 
 if TYPE_CHECKING:
@@ -123,7 +124,7 @@ class ControlKeys(Plugin):
             return path
         self.shots.append(path)
         self.note = f"screenshot {path.name}"
-        print(f"{harness.options.command}: screenshot {path}", file=sys.stderr, flush=True)
+        tell_written(harness, f"screenshot {path}")
         return path
 
     # ------------------------------------------------------------------ window
@@ -149,25 +150,19 @@ class ControlKeys(Plugin):
             frame = overlay(frame, key_lines(harness))
         if not self.inspect:
             return frame
+        from camlab88.emulator.inspect.find import nothing
+
         if self._panel is None:
             from camlab88.emulator.inspect import panel_for
 
             self._panel = panel_for(harness.target) or False
-        panel = self._panel(frame) if self._panel else _nothing(frame.shape[0])
+        panel = self._panel(frame) if self._panel else nothing(frame.shape[0])
         return np.concatenate([frame, panel], axis=1)
 
 
 def _signalled(harness: Harness) -> bool:
     """Ctrl-C or SIGTERM came (the run ends after the next tick, as unpaused)."""
     return getattr(getattr(harness, "signals", None), "caught", None) is not None
-
-
-def _nothing(height: int) -> np.ndarray:
-    from camlab88.emulator.inspect import PANEL_WIDTH, draw
-
-    img = draw.canvas(PANEL_WIDTH, height)
-    draw.text(img, 8, 8, "nothing to inspect here")
-    return img
 
 
 def speed_text(speed: float | None) -> str:

@@ -3,13 +3,13 @@ DIR/frame_NNNNN.png (headless or not)."""
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from camlab88.base.png import frame_path, write_png
 from camlab88.emulator.harness.loop import Plugin
+from camlab88.emulator.harness.written import tell_written
 
 if TYPE_CHECKING:
     from camlab88.emulator.harness.loop import Harness
@@ -40,5 +40,5 @@ class InspectOut(Plugin):
 
     def finish(self, harness: Harness) -> None:
         if self.count:
-            print(f"{harness.options.command}: wrote {self.count} inspector panels to "
-                  f"{self.directory}/frame_NNNNN.png", file=sys.stderr)
+            tell_written(harness, f"wrote {self.count} inspector panels to "
+                         f"{self.directory}/frame_NNNNN.png")

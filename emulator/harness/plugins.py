@@ -3,7 +3,6 @@ and, inside ``camlab88 replay``, recorded input and screen-hash checking."""
 
 from __future__ import annotations
 
-import sys
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
@@ -12,6 +11,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from camlab88.base.png import frame_path, write_png
 from camlab88.emulator.harness.loop import Plugin, RunOptions
+from camlab88.emulator.harness.written import tell_written
 
 if TYPE_CHECKING:
     from camlab88.emulator.harness.loop import Harness
@@ -31,8 +31,7 @@ class FrameWriter(Plugin):
         self.count += 1
 
     def finish(self, harness: Harness) -> None:
-        print(f"{harness.options.command}: wrote {self.count} frames to "
-              f"{self.directory}/frame_NNNNN.png", file=sys.stderr)
+        tell_written(harness, f"wrote {self.count} frames to {self.directory}/frame_NNNNN.png")
 
 
 class Screenshot(Plugin):
@@ -50,7 +49,7 @@ class Screenshot(Plugin):
                 harness.window.screenshot(self.path)
             else:
                 write_png(_with_panel(harness, harness.screen()), self.path)
-        print(f"{harness.options.command}: screenshot {self.path}", file=sys.stderr)
+        tell_written(harness, f"screenshot {self.path}")
 
 
 def _with_panel(harness: Harness, frame: np.ndarray) -> np.ndarray:

@@ -26,6 +26,7 @@ class RainbowTarget(SavesState):
     fps = FPS
     size = (768, 576)
     escape_is_a_key = False  # True where the program reads Esc itself (the harness: quit)
+    _state_exclude = ("on_input",)  # a replay's listener: kept as set, never saved
 
     def __init__(self, session: Any, step: Callable[[], bool], title: str, keys: str,
                  script: Player | None = None, end_with_script: bool = True,
@@ -41,11 +42,15 @@ class RainbowTarget(SavesState):
         self.host = RainbowHostInput()
         self._wire_at = 0
         self.tablet: Any = None  # a tablet source the command polls in its step
+        self.on_input: Callable[[Any], None] | None = None  # told each scripted event
+
 
     def handle_events(self, events: list[HostEvent]) -> None:
         if self.script is not None and not self.script.finished:
             for e in self.script.due():
                 self.session.inject(e)
+                if self.on_input is not None:
+                    self.on_input(e)
             return  # the window's input counts once the script has played
         for ev in events:
             dev = self.host.convert(ev)

@@ -70,6 +70,8 @@ class Replay:
     controls: Controls | None = None  # the replay's --speed, --video, --inspect...
     state: Any = None       # the replay's StateOptions (--seek, --save-state, --load-state)
     seeking: bool = False   # a seek's first run: it stops at the seek time, not the end
+    wrote: list[str] = field(default_factory=list)  # what the run's writers named (written.py)
+    capture: Plugin | None = None  # --html: gathers the web page's video, events and orders
 
     def adjust(self, options: RunOptions) -> None:
         options.headless = self.headless
@@ -81,7 +83,8 @@ class Replay:
         self.runs += 1
 
     def plugins(self) -> list[Plugin]:
-        return [RecordedInput(self), HashCheck(self)]
+        extra = [self.capture] if self.capture is not None else []
+        return [RecordedInput(self), HashCheck(self), *extra]
 
 
 _ACTIVE: ContextVar[Replay | None] = ContextVar("camlab88_replay", default=None)

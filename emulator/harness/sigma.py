@@ -71,6 +71,7 @@ class SigmaProgramTarget(SavesState):
 
     fps = 25
     escape_is_a_key = True  # the KAS fronts: Esc cancels, or asks before quitting
+    _state_exclude = ("on_input",)  # a replay's listener: kept as set, never saved
 
     def __init__(self, run: SigmaSessionRun, title: str, keys: str,
                  key_names: frozenset[str], script: list[Any], end_with_script: bool,
@@ -85,6 +86,7 @@ class SigmaProgramTarget(SavesState):
         self._mouse: list[Any] = []
         self._keys: list[str] = []
         self._buttons = 0
+        self.on_input: Any = None  # told each scripted event as it is given (a web replay)
 
     def handle_events(self, events: list[HostEvent]) -> None:
         from camlab88.emulator.host_input import KeyDown, PointerButton, PointerMove
@@ -106,7 +108,12 @@ class SigmaProgramTarget(SavesState):
     def tick(self) -> bool:
         mouse, keys = [], []
         if self.i < len(self.script):
+            first = self.i
             mouse, keys, self.i = self.session.due(self.script, self.i)
+            if self.on_input is not None:
+                for ev in self.script[first:self.i]:
+                    if ev.kind != "wait":
+                        self.on_input(ev)
         self.run.step(mouse + self._mouse, keys + self._keys)
         self._mouse, self._keys = [], []
         if getattr(self.session.front, "quitting", False):

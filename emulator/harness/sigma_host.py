@@ -30,6 +30,17 @@ class SigmaHostTarget:
         self.title, self.keys = title, keys
         self.dt, self.fps, self.on_tick = dt, fps, on_tick
 
+    @property
+    def on_input(self) -> Callable[[Any], None] | None:
+        """A listener told each scripted input the program takes (a program that plays a
+        script has an ``on_input`` of its own: the web replay's timeline)."""
+        return getattr(self.program, "on_input", None)
+
+    @on_input.setter
+    def on_input(self, listener: Callable[[Any], None] | None) -> None:
+        if hasattr(self.program, "on_input"):
+            self.program.on_input = listener
+
     def handle_events(self, events: list[HostEvent]) -> None:
         p = self.program
         for ev in events:

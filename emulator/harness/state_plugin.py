@@ -26,6 +26,7 @@ from camlab88.emulator.harness.program_state import (
     load_program,
     save_program,
 )
+from camlab88.emulator.harness.written import tell_written
 from camlab88.emulator.host_input import HostEvent, KeyDown
 from camlab88.emulator.machine.state_file import MachineStateError
 
@@ -168,7 +169,7 @@ class StatePlugin(Plugin):
             return
         self.last_saved = data
         self.written.append(path)
-        _say(harness, f"saved state {path} (at {float(harness.target.time()):g} s)")
+        tell_written(harness, f"saved state {path} (at {float(harness.target.time()):g} s)")
 
     def _free_name(self, harness: Harness) -> Path:
         stem = "-".join(harness.options.command.split()[1:]) or "state"

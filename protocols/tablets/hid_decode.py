@@ -109,8 +109,8 @@ class PenDecoder:
 
     A pen report has absolute X and Y in a Digitizer, Pen, Stylus or Puck collection; a report
     whose X is in a Finger collection or a Touch Screen / Touch Pad application is a touch report
-    (``touch_reports``), never a pen: a finger must not draw (N-Trig, Atmel and
-    Goodix pen+touch screens).  A report outside any digitizer collection that still carries
+    (``touch_reports``), never a pen: a finger must not draw (N-Trig, Atmel and Goodix
+    pen+touch screens send both).  A report outside any digitizer collection that still carries
     digitizer usages (Huion H610's report 9, a pen described as a mouse) is a pen too.
 
     Buttons follow Linux hid-input's pen mapping: bit 0 contact (Tip Switch, Eraser under

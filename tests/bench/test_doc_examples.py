@@ -58,3 +58,32 @@ def test_the_doc_pytest_examples_pass_under_the_plugin(tmp_path):
     assert out.returncode == 0, out.stdout + out.stderr
     assert "2 passed" in out.stdout or ("1 passed" in out.stdout and "no C compiler" in
                                         out.stdout), out.stdout
+
+
+def test_the_api_doc_shows_only_public_names():
+    """docs/api.md's examples import only camlab88's public names, and the page names no
+    internal module except where it says they are internal."""
+    import camlab88
+
+    text = DOC.read_text()
+    for block in BLOCKS:
+        for names in re.findall(r"from camlab88 import ([\w, ]+)", block):
+            assert {n.strip() for n in names.split(",")} <= set(camlab88.__all__), names
+        assert not re.search(r"(from|import) camlab88\.", block), block
+        assert ".machine." not in block  # the bench's own machine is not API
+    # "camlab88.emulator.*" (saying it is internal) is the only mention of an internal module
+    internal = re.findall(r"camlab88\.(?:emulator|protocols|apps|base|roms)\.\w+", text)
+    assert not internal, internal
+
+
+def test_a_trace_event_to_json_is_json_text():
+    import json
+
+    from camlab88 import Sigma
+
+    sigma = Sigma()
+    sigma.send(b"\r+-*/HI2GI200200GJ600200BH")
+    sigma.run()
+    event = sigma.trace[3]
+    assert json.loads(event.to_json()) == event.as_dict()
+    assert event.as_dict()["order"] == "GI"

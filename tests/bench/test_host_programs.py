@@ -47,7 +47,7 @@ def plot_box(port, x0: int, y0: int, x1: int, y1: int) -> None:
 
 
 def test_a_python_host_program_draws_its_box(sigma, assert_no_protocol_errors):
-    plot_box(sigma.machine.host, 100, 100, 300, 200)
+    plot_box(sigma, 100, 100, 300, 200)
     sigma.run()
     assert_no_protocol_errors(sigma)
     assert sigma.screen[511 - 100, 200].any() and sigma.screen[511 - 200, 300].any()
@@ -55,7 +55,7 @@ def test_a_python_host_program_draws_its_box(sigma, assert_no_protocol_errors):
 
 
 def test_a_golden_screen_compares_exactly(sigma, camlab88_golden):
-    plot_box(sigma.machine.host, 100, 100, 300, 200)
+    plot_box(sigma, 100, 100, 300, 200)
     sigma.run()
     camlab88_golden(sigma.screen, "python_box", GOLDEN)
     from camlab88.bench.golden import compare_golden

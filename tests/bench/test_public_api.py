@@ -14,7 +14,8 @@ BOX = b"\r+-*/HI2GI200200GJ600200600400200400200200BH"
 
 
 def test_all_names_exactly_the_public_api():
-    assert sorted(camlab88.__all__) == ["ProtocolError", "Rainbow", "Sigma", "TraceEvent"]
+    assert sorted(camlab88.__all__) == ["ProtocolError", "Rainbow", "RainbowRefused", "Sigma",
+                                       "TraceEvent"]
     for name in camlab88.__all__:
         assert getattr(camlab88, name) is not None
     with pytest.raises(AttributeError, match="no attribute 'Terminal'"):

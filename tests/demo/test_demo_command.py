@@ -85,3 +85,40 @@ def test_shelf_act_slides_the_unit_apart(tmp_path: Path) -> None:
     pngs = sorted(tmp_path.glob("shelf_*.png"))
     assert len(pngs) == 100
     assert not np.array_equal(_png(pngs[0]), _png(pngs[50]))
+
+
+def test_an_act_shown_through_a_callback_is_computed_no_further_than_the_frame_shown() -> None:
+    """The inspector reads the act's device as the frame is shown: the program runs in
+    lockstep with the frames taken (acts.lockstep), never ahead."""
+    from camlab88.commands.demo.acts import Stage
+
+    act = next(a for a in demo.ACTS if a.name == "ca")
+    stage = Stage()
+    for k, frame in enumerate(act.play(stage)):
+        assert np.array_equal(frame, stage.session.executor.last_frame)
+        if k == 30:
+            break
+
+
+def test_the_acts_play_in_one_run_with_the_controls_and_each_acts_inspector(
+        tmp_path: Path, monkeypatch, capsys) -> None:
+    import camlab88.emulator.harness as harness
+
+    runs = []
+    real = harness.run
+    monkeypatch.setattr(harness, "run", lambda *a, **k: runs.append(a) or real(*a, **k))
+    out, panels, video = tmp_path / "out", tmp_path / "panels", tmp_path / "demo.gif"
+    assert main(["demo", "--headless", "--only", "kas", "--only", "shelf", "--out", str(out),
+                 "--inspect-out", str(panels), "--video", str(video), "--speed", "1000"]) == 0
+    assert len(runs) == 1  # one run, so one window, across the acts
+    kas, shelf = sorted(out.glob("kas_*.png")), sorted(out.glob("shelf_*.png"))
+    assert _png(kas[0]).shape == (512, 768, 3) and _png(shelf[0]).shape == (576, 768, 3)
+    shown = sorted(panels.glob("frame_*.png"))
+    assert len(shown) == len(kas) + len(shelf)
+    # the KAS act's panel is a Sigma's, the shelf act's a Rainbow's: they differ at the top
+    first_kas, first_shelf = _png(shown[0]), _png(shown[len(kas)])
+    assert first_kas.shape[1] == first_shelf.shape[1]
+    assert not np.array_equal(first_kas[:40], first_shelf[:40])
+    assert video.is_file()
+    err = capsys.readouterr().err
+    assert "act 1/2" in err and "act 2/2" in err and f"video {video}" in err

@@ -143,3 +143,27 @@ def test_kas_edit_still_creates_the_file_when_it_runs(in_tmp: Path, capsys) -> N
     assert rc == 0, err
     assert (in_tmp / "new.kas").is_file()
     assert "created new.kas" in out
+
+
+# -- replay names what it writes, like every other command --------------------------------------
+
+def test_replay_names_every_file_and_directory_it_writes(in_tmp: Path, capsys) -> None:
+    rc, _, err = _run(capsys, "ca", "program", "--headless", "--pattern", "glider",
+                      "--events", str(EXAMPLES / "ca" / "session.events"),
+                      "--record", "glider.session")
+    assert rc == 0, err
+    rc, _, err = _run(capsys, "replay", "glider.session", "--headless", "--frames", "frames",
+                      "--screenshot", "last.png", "--inspect-out", "panels", "--video",
+                      "glider.gif", "--save-state", "end.c88state")
+    assert rc == 0, err
+    lines = [line for line in err.splitlines() if line.startswith("camlab88 replay: ")]
+    n = len(list((in_tmp / "frames").glob("frame_*.png")))
+    assert n > 0
+    named = "\n".join(lines)
+    assert f"wrote {n} frames to {in_tmp / 'frames'}/frame_NNNNN.png" in named
+    assert f"screenshot {in_tmp / 'last.png'}" in named
+    assert f"inspector panels to {in_tmp / 'panels'}/frame_NNNNN.png" in named
+    assert f"video {in_tmp / 'glider.gif'}" in named
+    assert f"saved state {in_tmp / 'end.c88state'}" in named
+    for path in ("last.png", "glider.gif", "end.c88state"):
+        assert (in_tmp / path).is_file()

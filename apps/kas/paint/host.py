@@ -6,6 +6,7 @@ the line has drained, and the replay's frames as the harness's ticks.  The harne
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import Any
 
 from camlab88.apps.kas.paint.replay import ReplayHost
 from camlab88.protocols.link.port import HostPort
@@ -24,6 +25,7 @@ class PaintHost:
         self.session, self.port, self.commands, self.end = session, port, list(commands), end
         self.messages: list[str] = []
         self.at = (0, 0)  # the pointer, device pixels (y up)
+        self.on_input: Callable[[Any], None] | None = None  # told each script command run
         self._send(session.start())
 
     def _send(self, data: bytes) -> None:
@@ -84,6 +86,8 @@ class PaintHost:
 
         if self.port.drained() and self.commands:
             cmd = self.commands.pop(0)
+            if self.on_input is not None:
+                self.on_input(cmd)
             self._do(lambda: script.run(self.session, cmd))
         return True
 

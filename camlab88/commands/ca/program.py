@@ -58,7 +58,8 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="ReplayPansAndZooms: also repeat the script's pans and "
                         "zooms").replay = KEEP
     p.add_argument("--start", type=int, metavar="G",
-                   help="begin the script at generation G (asked for if omitted)").replay = KEEP
+                   help="begin the script at generation G (asked for in a window; without a window "
+                        "or with --screenshot, the Log's first generation)").replay = KEEP
     p.add_argument("--edges", choices=["wrap", "bounded"],
                    help="plane edges (default wrap; a script's log header decides)").replay = KEEP
     p.add_argument("--seed", type=int,
@@ -87,6 +88,8 @@ def program(args: argparse.Namespace) -> int:
         _truly_random(args)
         player = events_player(args.events)
         opts = scripted_run_options(args, COMMAND, player)
+        if args.script and args.start is None and player is None and unattended(opts):
+            args.start = _first_generation(args.script)
         options = _options(args, preview=opts.screenshot is not None)
         stats = _run(options, player, opts)
     except (OSError, LogError, RuleError, PatternError, ScriptError, ValueError) as exc:
@@ -115,6 +118,17 @@ def _truly_random(args: argparse.Namespace) -> None:
     args._argv = argv
     print(f"{COMMAND}: truly random outcomes: seed {args.seed} (from the operating system; "
           "the log and a recording keep it)", flush=True)
+
+
+def _first_generation(script: str) -> int:
+    """Where a --script run nobody can answer begins: the Log's first generation (the
+    start question is asked only in a window, or of an --events script)."""
+    from camlab88.apps.ca.log import read_log
+
+    first = min((e.generation for e in read_log(script)), default=0)
+    print(f"{COMMAND}: beginning the script at generation {first}, the Log's first "
+          "(--start G begins elsewhere)", file=sys.stderr)
+    return first
 
 
 def _report_files(options) -> None:

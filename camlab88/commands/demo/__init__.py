@@ -12,6 +12,7 @@ import sys
 from pathlib import Path
 
 from camlab88.commands.demo.acts import ACTS, FPS, Act
+from camlab88.control_flags import add_control_options
 
 __all__ = ["ACTS", "Act", "register"]
 COMMAND = "camlab88 demo"
@@ -21,9 +22,9 @@ ACT_LIST = "; ".join(f"{i}. {a.name}: {a.about}" for i, a in enumerate(ACTS, 1))
 
 DESCRIPTION = f"""\
 Play the demo: the emulated devices running the thesis's programs, at 25 frames a second of \
-device time. The acts: {ACT_LIST}. With a display it opens a window (Space: next act, Esc: \
-quit); with none, or --headless, it writes every frame as PNG and one animated GIF per act \
-into --out."""
+device time. The acts: {ACT_LIST}. With a display it opens one window for every act (Space: \
+next act, Esc: quit; F1 lists the controls, F11 shows the act's device in the inspector); with \
+none, or --headless, it writes every frame as PNG and one animated GIF per act into --out."""
 
 
 def register(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
@@ -35,7 +36,9 @@ def register(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--scale", default=1, type=int, help="window scale")
     p.add_argument("--screenshot", type=Path,
                    help="play unpaced, save the last screen of the last act and exit")
-    p.add_argument("--fast", action="store_true", help="do not pace to the wall clock")
+    p.add_argument("--fast", action="store_true",
+                   help="do not pace to the wall clock: flat out (--speed X wins)")
+    add_control_options(p)
     p.add_argument("--only", action="append", choices=ACT_NAMES, metavar="ACT",
                    help=f"play only this act (repeatable): {', '.join(ACT_NAMES)}")
     p.set_defaults(handler=demo)
@@ -48,24 +51,35 @@ def demo(args: argparse.Namespace) -> int:
 
 
 def play_acts(acts: list[Act], args: argparse.Namespace) -> int:
-    """Each act on the harness: a window per act, or headless into PNGs and a GIF."""
+    """The acts one after another in one run: one window (Space: next act), or headless
+    into PNGs and a GIF per act; the controls (--speed, --video, --inspect, --inspect-out,
+    F-keys) as on every program, the inspector following each act's device."""
+    from camlab88.commands.demo.acts import Stage
+    from camlab88.control_flags import controls_from_args
     from camlab88.emulator.harness import Plugin, RunOptions, choose_headless, run
-    from camlab88.emulator.harness.stream import FrameStream, PngGifWriter
+    from camlab88.emulator.harness.stream import ActSequence, ActWriters, FrameStream
 
     headless = choose_headless(COMMAND, args.headless,
                                f"writing every frame as PNG and a GIF per act into {args.out}")
+    controls = controls_from_args(args, COMMAND, headless)
+    hold = not headless and args.screenshot is None
+    streams = []
     for i, act in enumerate(acts, 1):
-        print(f"{COMMAND}: act {i}/{len(acts)}: {act.title}", file=sys.stderr, flush=True)
-        last = i == len(acts)
-        hold = not headless and last and args.screenshot is None
-        target = FrameStream(act.play(), act.size, FPS, f"{COMMAND} - {act.title}", KEYS, hold)
-        opts = RunOptions(headless=headless, paced=not args.fast, scale=args.scale,
-                          screenshot=args.screenshot if last else None, command=COMMAND)
-        plugins: list[Plugin] = []
-        if headless:
-            args.out.mkdir(parents=True, exist_ok=True)
-            plugins.append(PngGifWriter(args.out, act.name, act.title, FPS, COMMAND))
-        h = run(target, opts, plugins)
-        if target.quit or h.quit:
-            return 0
+        stage = Stage()
+        streams.append(FrameStream(act.play(stage), act.size, FPS, act.title, KEYS,
+                                   hold and i == len(acts), stage))
+
+    def announce(i: int) -> None:
+        print(f"{COMMAND}: act {i + 1}/{len(acts)}: {acts[i].title}", file=sys.stderr,
+              flush=True)
+
+    target = ActSequence(streams, COMMAND, KEYS, announce)
+    opts = RunOptions(headless=headless, paced=not args.fast, scale=args.scale,
+                      screenshot=args.screenshot, command=COMMAND, controls=controls,
+                      argv=list(getattr(args, "_argv", [])))
+    plugins: list[Plugin] = []
+    if headless:
+        args.out.mkdir(parents=True, exist_ok=True)
+        plugins.append(ActWriters(args.out, [(a.name, a.title) for a in acts], FPS, COMMAND))
+    run(target, opts, plugins)
     return 0

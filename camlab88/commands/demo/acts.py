@@ -8,9 +8,30 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any, NamedTuple
 
 if TYPE_CHECKING:
-    from collections.abc import Iterator
+    from collections.abc import Callable, Iterator
 
 FPS = 25
+
+
+def lockstep(run: Callable[[Callable[[Any], None]], object]) -> Iterator[Any]:
+    from camlab88.base.lockstep import lockstep as frames
+
+    return frames(run)
+
+
+class Stage:
+    """The device an act's frames come from, for the inspector: ``machine`` (a Sigma
+    machine) or ``session`` (a Rainbow session); ``time`` the act's device time."""
+
+    def __init__(self) -> None:
+        self.machine: Any = None
+        self.session: Any = None
+        self.shown = 0
+
+    def time(self) -> Any:
+        from fractions import Fraction
+
+        return Fraction(self.shown, FPS)
 
 
 class Act(NamedTuple):  # a NamedTuple, not a dataclass: every command builds this parser
@@ -20,8 +41,12 @@ class Act(NamedTuple):  # a NamedTuple, not a dataclass: every command builds th
     frames: str             # the function of this module yielding the act's frames
     about: str              # one line for --help
 
-    def play(self) -> Iterator[Any]:
-        return globals()[self.frames]()
+    def play(self, stage: Stage | None = None) -> Iterator[Any]:
+        """The act's frames; ``stage`` gets the device they come from."""
+        stage = stage if stage is not None else Stage()
+        for frame in globals()[self.frames](stage):
+            stage.shown += 1
+            yield frame
 
 
 ACTS: tuple[Act, ...] = (
@@ -49,7 +74,7 @@ ACTS: tuple[Act, ...] = (
 )
 
 
-def sigma_frames() -> Iterator[Any]:
+def sigma_frames(stage: Stage) -> Iterator[Any]:
     """The Sigma showcase: the screen after each 1/25 s of line time at 9600 baud."""
     from fractions import Fraction  # imported here: every command builds the demo's parser
 
@@ -58,13 +83,13 @@ def sigma_frames() -> Iterator[Any]:
     from camlab88.protocols.link import LineSettings
     from camlab88.protocols.sigma.demo import sigma_demo_stream
 
-    machine = SigmaMachine("t5684", LineSettings(baud=9600), xonxoff=False)
+    machine = stage.machine = SigmaMachine("t5684", LineSettings(baud=9600), xonxoff=False)
     machine.host.write(sigma_demo_stream())
     for _k in periods(machine, Fraction(1, FPS)):
         yield machine.frame()
 
 
-def kas_frames() -> Iterator[Any]:
+def kas_frames(stage: Stage) -> Iterator[Any]:
     """KAS on the T5684: the host's chunks written to a 9600-baud line at their times."""
     from fractions import Fraction
 
@@ -73,25 +98,27 @@ def kas_frames() -> Iterator[Any]:
     from camlab88.emulator.machine import SigmaMachine
     from camlab88.protocols.link import LineSettings
 
-    machine = SigmaMachine("t5684", LineSettings(baud=9600))
+    machine = stage.machine = SigmaMachine("t5684", LineSettings(baud=9600))
     for t, data in demo_session().chunks:  # the host's writes, each at its line time
         machine.outside.write(data, at=t)
     for _k in periods(machine, Fraction(1, FPS)):
         yield machine.frame()
 
 
-def snooker_frames() -> Iterator[Any]:
+def snooker_frames(stage: Stage) -> Iterator[Any]:
     """The snooker program's replay on the Rainbow: a break simulated and shown (ball pads
     double-buffered over the table pad by LUT transparency)."""
     from camlab88.apps.snooker.program.demo import play_break
     from camlab88.emulator.rainbow.session import in_process
 
-    frames: list[Any] = []
-    play_break(in_process(on_frame=lambda f: frames.append(f.copy())).client, 4.0)
-    yield from frames
+    def run(show: Callable[[Any], None]) -> None:
+        stage.session = in_process(on_frame=show)
+        play_break(stage.session.client, 4.0)
+
+    yield from lockstep(run)
 
 
-def ca_frames() -> Iterator[Any]:
+def ca_frames(stage: Stage) -> Iterator[Any]:
     """The cellular automaton on the Rainbow: the Gosper gun in auto mode, panned and zoomed,
     driven by the program's own scripted mouse events."""
     from camlab88.apps.ca.program.demo import demo_events
@@ -99,24 +126,26 @@ def ca_frames() -> Iterator[Any]:
     from camlab88.apps.ca.program.script_events import parse, play
     from camlab88.emulator.rainbow.session import in_process
 
-    session = in_process()
+    session = stage.session = in_process()
     program = CAProgram(session.client, Options(rules="life", pattern="gosper_gun"))
-    frames: list[Any] = []
 
-    def frame() -> None:
-        program.frame()
-        frames.append(session.executor.last_frame.copy())
+    def run(show: Callable[[Any], None]) -> None:
+        def frame() -> None:
+            program.frame()
+            show(session.executor.last_frame)
 
-    play(parse(demo_events(60), "<ca demo>"), session.inject, frame, lambda: program.finished)
-    yield from frames
+        play(parse(demo_events(60), "<ca demo>"), session.inject, frame,
+             lambda: program.finished)
+
+    yield from lockstep(run)
 
 
-def shelf_frames() -> Iterator[Any]:
+def shelf_frames(stage: Stage) -> Iterator[Any]:
     """Appendix I's shelf unit: four pads slide apart and back (4 s); only arcs move."""
     from camlab88.emulator.rainbow.session import in_process
     from camlab88.protocols.rainbow.shelf import ShelfDemo
 
-    session = in_process()
+    session = stage.session = in_process()
     demo = ShelfDemo(session.client)
     for _ in range(100):  # one slide apart and together again, at 25 frames a second
         demo.step()
@@ -124,7 +153,7 @@ def shelf_frames() -> Iterator[Any]:
         yield session.executor.last_frame.copy()
 
 
-def paint_frames() -> Iterator[Any]:
+def paint_frames(stage: Stage) -> Iterator[Any]:
     """The demo walk (with its rising sun) auto-painted from three operations done on its
     middle frame, every fourth frame painted and replayed double-buffered on a T5688 at 9600
     baud; one picture per 1/25 s of line time."""
@@ -143,26 +172,29 @@ def paint_frames() -> Iterator[Any]:
     sun = tuple(seq.frames[mid - 1].chains[2].centre())
     ops = OpsFile(ops=[Op("fill", 3, chains=(2,)), Op("fill", 5, chains=(1,)),
                        Op("region", 27, at=sun)], painted=mid)
-    machine = SigmaMachine("t5688", LineSettings(baud=9600), xonxoff=False)
+    machine = stage.machine = SigmaMachine("t5688", LineSettings(baud=9600), xonxoff=False)
     host = ReplayHost(PaintProgram(seq, ops), machine.host, range(1, len(seq.frames) + 1, 4))
     for _ in periods(machine, Fraction(1, FPS)):
         yield machine.frame()
         host.step()  # the next frame once the line has delivered the last
 
 
-def snooker_camera_frames() -> Iterator[Any]:
+def snooker_camera_frames(stage: Stage) -> Iterator[Any]:
     """The thesis's example camera script over its shot, in the visualiser on the Rainbow."""
     from camlab88.apps.snooker.visualiser.demo import play_example
     from camlab88.emulator.rainbow.session import in_process
 
-    session = in_process()
-    frames: list[Any] = []
-    play_example(session.client, lambda _f: frames.append(session.executor.last_frame.copy()))
-    yield from frames
+    session = stage.session = in_process()
+
+    def run(show: Callable[[Any], None]) -> None:
+        play_example(session.client, lambda _f: show(session.executor.last_frame))
+
+    yield from lockstep(run)
 
 
-def film_frames() -> Iterator[Any]:
+def film_frames(stage: Stage) -> Iterator[Any]:
     """A break from the motion program through a camera script to rendered frames."""
     from camlab88.apps.snooker.film.demo import film_frames as frames
 
     yield from frames()
+

@@ -12,6 +12,7 @@ differs live in camlab88/figure_catalogue.toml; docs/figures.md is the gallery.
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
 
 from camlab88.figure_catalogue import by_number
@@ -36,6 +37,10 @@ def register(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--headless", action="store_true", help="no window: write the PNG")
     p.add_argument("--screenshot", type=Path, metavar="PNG",
                    help="save the last screen here (default fig-N.png when headless)")
+    p.add_argument("--html", type=Path, metavar="DIR",
+                   help="build the web gallery in DIR: each figure's session as a "
+                        "self-contained replay page (fig-N.html: number, section, caption, what "
+                        "differs), and index.html; opens offline (docs/replay-web.md)")
     p.set_defaults(handler=figures)
     return p
 
@@ -45,6 +50,8 @@ def recording(number: str) -> Path:
 
 
 def figures(args: argparse.Namespace) -> int:
+    if args.html is not None:
+        return _gallery(args)
     if args.number is None:
         return _list()
     known = by_number()
@@ -95,3 +102,29 @@ def _replay(args: argparse.Namespace, path: Path) -> int:
     if fig.differs:
         print(f"{fig.verdict}: {fig.differs}")
     return 0
+
+
+def _gallery(args: argparse.Namespace) -> int:
+    """``--html DIR``: every figure's replay page and index.html (camlab88.replay_page)."""
+    from camlab88.figure_catalogue import by_number
+    from camlab88.replay_page.gallery import build
+
+    known = by_number()
+    if args.number is not None and args.number not in known:
+        return fail(COMMAND, f"no screen figure {args.number!r} (figures: {', '.join(known)})")
+    chosen = list(known.values()) if args.number is None else [known[args.number]]
+    out = args.html
+    if out.exists() and not out.is_dir():
+        return fail(COMMAND, f"cannot write the gallery to {out}: not a directory")
+    try:
+        entries = build(out, chosen, recording)
+    except OSError as exc:
+        return fail(COMMAND, f"cannot write the gallery to {out}: {exc.strerror or exc}")
+    made = [en for en in entries if en.page is not None]
+    failed = [en for en in entries if en.page is None and en.why != "not recorded yet"]
+    size = sum(p.stat().st_size for p in out.iterdir() if p.is_file())
+    print(f"{COMMAND}: gallery {out / 'index.html'} ({len(made)} figure pages, "
+          f"{size / 1e6:.1f} MB in {out})", file=sys.stderr)
+    for en in failed:
+        print(f"{COMMAND}: figure {en.figure.number}: {en.why}", file=sys.stderr)
+    return 1 if failed else 0

@@ -9,6 +9,7 @@ frame (and time) that differs; a damaged, truncated or newer recording is refuse
 from __future__ import annotations
 
 import argparse
+import sys
 from fractions import Fraction
 from pathlib import Path
 
@@ -23,7 +24,8 @@ DESCRIPTION = """\
 Run a session recording again: its program, arguments and input files as recorded, its input \
 events at their virtual times. --check compares every screen hash (exit 0: all agree; 1: \
 names the first differing frame and time). --period plays at the original speed (9600 baud is \
-slow: that is the point); otherwise as fast as possible."""
+slow: that is the point); otherwise as fast as possible, in a window too. It names every \
+file and directory it writes (--frames, --screenshot, --video, --inspect-out, --save-state)."""
 
 
 def register(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
@@ -37,11 +39,19 @@ def register(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--frames", type=frames_dir, metavar="DIR",
                    help="write every frame shown as DIR/frame_NNNNN.png")
     p.add_argument("--screenshot", type=Path, metavar="PNG", help="save the last screen")
-    add_control_options(p)
+    add_control_options(p, speed_default="flat out, in a window too (--period is --speed 1)")
     add_state_options(p)
     p.add_argument("--seek", type=seconds, metavar="T",
                    help="start showing at virtual time T: run there headless first, "
                         "keeping a state snapshot every 1 s for F4 (step back)")
+    p.add_argument("--html", type=Path, metavar="OUT",
+                   help="replay headless into a web page that plays the session with its "
+                        "input events and (Sigma) the orders on the line, synchronised; "
+                        "OUT.html: one self-contained file (the video inside), else a "
+                        "directory: index.html beside the video (docs/replay-web.md)")
+    p.add_argument("--html-codec", choices=["h264", "vp9"], default="h264",
+                   help="the page's video: H.264 in MP4 (default: plays in every browser) or "
+                        "VP9 in WebM")
     p.set_defaults(handler=replay)
     return p
 
@@ -57,6 +67,8 @@ def replay(args: argparse.Namespace) -> int:
         rec = read(args.recording, traffic=False)  # a replay: the traffic is not kept
     except SessionFileError as exc:
         return fail(COMMAND, exc)
+    if args.html is not None:
+        return _html(args, rec)
     headless = choose_headless(COMMAND, args.headless, "checking the screen hashes")
     ctx = Replay(rec, headless=headless, period=args.period, check=args.check,
                  frames=_abs(args.frames), screenshot=_abs(args.screenshot),
@@ -69,7 +81,51 @@ def replay(args: argparse.Namespace) -> int:
         status, said = rerun(ctx)
     except ReplayRefused as exc:  # the header (line 1) holds the command line
         return fail(COMMAND, f"{args.recording}:1: not replayed: {exc}")
+    _name_written(ctx)
     return _verdict(args, ctx, status, said)
+
+
+def _name_written(ctx) -> None:
+    """Every file and directory the replay wrote (--frames, --screenshot, --video,
+    --inspect-out, --save-state, F12), one line each, as every other command names them:
+    the replayed program's own lines are kept back."""
+    for text in ctx.wrote:
+        print(f"{COMMAND}: {text}", file=sys.stderr)
+
+
+def _html(args: argparse.Namespace, rec) -> int:
+    """``--html OUT``: the session replayed headless into a web page."""
+    from camlab88.replay_page.make import form_of, make_page
+    from camlab88.replay_policy import ReplayRefused
+    from camlab88.runopts import check_output
+
+    others = [flag for flag, given in (("--seek", args.seek), ("--save-state", args.save_state),
+              ("--load-state", args.load_state), ("--frames", args.frames),
+              ("--screenshot", args.screenshot), ("--period", args.period or None),
+              ("--video", args.video), ("--inspect-out", args.inspect_out)) if given]
+    if others:
+        return fail(COMMAND, f"--html makes the whole session's page on its own; "
+                    f"it does not take {', '.join(others)}")
+    out = args.html.resolve()
+    if out.suffix.lower() in (".html", ".htm"):
+        check_output(COMMAND, out, "write the page to")
+    elif out.exists() and not out.is_dir():
+        return fail(COMMAND, f"cannot write the page to {args.html}: not a directory "
+                    "(name a .html file for a single page)")
+    try:
+        made = make_page(rec, args.recording, out, args.html_codec, check=args.check)
+    except ReplayRefused as exc:
+        return fail(COMMAND, f"{args.recording}:1: not replayed: {exc}")
+    except OSError as exc:
+        return fail(COMMAND, f"cannot write the page to {args.html}: {exc.strerror or exc}")
+    status = _verdict(args, made.ctx, made.status, made.said)
+    if status == 0:
+        size = sum(f.stat().st_size for f in made.files)
+        print(f"{COMMAND}: web page {made.files[0]} ({size / 1e6:.2f} MB; "
+              f"{form_of(args.html)}; {len(made.capture.frames)} frames, "
+              f"{len(made.capture.events)} input events, {len(made.capture.orders)} orders)",
+              file=sys.stderr)
+    return status
 
 
 def _controls(args: argparse.Namespace, headless: bool):

@@ -50,7 +50,7 @@ def camera(args: argparse.Namespace) -> int:
         player = events_player(args.events)
     except (CheckpointError, SessionError, ScriptError, OSError) as exc:
         return fail(COMMAND, exc)
-    opts = scripted_run_options(args, COMMAND, player, idle_frames=None)
+    opts = scripted_run_options(args, COMMAND, player)
     h, tool = _run(shot, args.script, player, opts)
     r = tool.result
     n = len(r.errors) if r is not None else 0
