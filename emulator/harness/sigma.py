@@ -9,7 +9,6 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
-from camlab88.emulator.harness.program_state import SavesState
 from camlab88.emulator.host_input import HostEvent
 from camlab88.emulator.machine import SigmaMachine
 from camlab88.emulator.machine.state_file import MachineStateError
@@ -63,7 +62,7 @@ class SigmaSessionRun:
             self.step()
 
 
-class SigmaProgramTarget(SavesState):
+class SigmaProgramTarget:
     """A program session on a Sigma machine (KAS's editor and path fronts; see
     ``SigmaSessionRun``).  Window keys named in ``key_names`` (or printable characters) are
     struck on the terminal; the left mouse button is the stylus tip.  A timed ``script``

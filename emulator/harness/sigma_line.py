@@ -17,9 +17,10 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
-from camlab88.emulator.harness.program_state import SavesState
+from camlab88.base.plainstate import Blob, Frac, Int, Opt, Record
 from camlab88.emulator.host_input import HostEvent
 from camlab88.emulator.machine import SigmaMachine
+from camlab88.emulator.machine.state_file import MachineStateError
 from camlab88.emulator.sigma.host_input import KEYS_HINT, to_terminal
 
 TICK = Fraction(1, 100)  # virtual seconds per tick
@@ -56,13 +57,17 @@ class OutsideTap:
         return getattr(self._endpoint, name)
 
 
-class SigmaLineTarget(SavesState):
+class SigmaLineTarget:
     """A Sigma machine whose line's host end ``bridge`` serves (None in a replay: the
     recorded outside traffic comes back through ``put_wire`` / ``put_hang_up``).  Runs until
     ``until`` seconds of line time (None: for ever).  Set the machine's tracer
     (``machine.trace``) for ``--trace`` / ``--strict``."""
 
-    _state_exclude = ("bridge", "tracer", "report")  # the outside world: kept as built
+    # its declared state (emulator.harness.program_state): the machine's own versioned
+    # state, when the order now unfinished began and how many orders the terminal had done;
+    # the bridge, the report and the until are the command line's, never a state's
+    STATE_VERSION = 1
+    STATE_SCHEMA = Record(machine=Blob(), order_since=Opt(Frac()), commands=Int(0))
 
     fps = 25
     escape_is_a_key = True  # a terminal key: host programs read ESC (close the window quits)
@@ -92,6 +97,22 @@ class SigmaLineTarget(SavesState):
         self.tap = OutsideTap(self.line.host, self._line_hung_up)  # the bridge's endpoint
         self._machine_up = self.term.on_output
         self.term.on_output = self._up
+
+    def state_values(self) -> dict[str, Any]:
+        return {"machine": self.machine.save_state(), "order_since": self._order_since,
+                "commands": self._commands}
+
+    def load_state_values(self, values: dict[str, Any]) -> None:
+        """Continue from state_values() (checked against STATE_SCHEMA); the machine's part
+        is checked whole before anything changes."""
+        self.machine.check_state(values["machine"])
+        try:
+            self.machine.load_state(values["machine"])
+        except ValueError as exc:  # (checked above: not expected)
+            raise MachineStateError(str(exc)) from None
+        self._order_since, self._commands = values["order_since"], values["commands"]
+        self._frame, self._replayed, self._sent, self._received = None, [], bytearray(), b""
+        self.tap.take()
 
     def _up(self, data: bytes) -> None:
         self._sent += data
