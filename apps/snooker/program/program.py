@@ -15,8 +15,9 @@ from __future__ import annotations
 
 import math
 import os
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 from camlab88.apps.snooker import aiming
@@ -36,6 +37,7 @@ from camlab88.apps.snooker.rules import describe_on
 from camlab88.apps.snooker.session import Session, SessionError
 from camlab88.apps.snooker.state import effective_velocity
 from camlab88.apps.snooker.table import BALL_NAMES, CUE, cushion_sides
+from camlab88.base.plainstate import Int, Record
 from camlab88.protocols.rainbow.client import RainbowClient
 from camlab88.protocols.rainbow.events import LEFT, MIDDLE, Event, KeyEvent, MouseEvent
 
@@ -711,16 +713,53 @@ class Program:
         for _ in self.position_steps(frames, on_table):
             pass
 
-    def position_steps(self, frames: list[np.ndarray],
-                       on_table: list[np.ndarray]) -> Iterator[int]:
+    def position_steps(self, frames: list[np.ndarray], on_table: list[np.ndarray],
+                       start: int = 0) -> Iterator[int]:
         """``play_positions`` one position at a time (two 50 Hz display frames each), for a
-        run loop that ticks: yields the index of each position shown."""
+        run loop that ticks: yields the index of each position shown (from ``start``: a
+        replay continued from a save state)."""
         d = self.display
         d.help.show(f"Replaying {len(frames)} frames at 25 frames/s.", HELP_COLOUR)
         d.info.show("checkpoint replay", HELP_COLOUR)
         for n, (pos, on) in enumerate(zip(frames, on_table)):
+            if n < start:
+                continue
             d.draw_balls(pos, on, Overlay())
             d.frame_box.show(f"frame {n}", "#ffffff")
             for _ in range(2):  # 25 frames/s on a 50 Hz display
                 self.client.wait_frame()
             yield n
+
+
+class PositionReplay:
+    """``snooker replay``'s program: the checkpoint's positions shown one per tick
+    (``position_steps``). Its declared state is how many have been shown and the display;
+    a load makes the steps again from there (a generator is rebuilt, never saved)."""
+
+    STATE_VERSION = 1
+
+    def __init__(self, program: Program, frames: list[np.ndarray],
+                 on_table: list[np.ndarray]) -> None:
+        self.program, self.frames, self.on_table = program, frames, on_table
+        self.shown = 0
+        self._steps = program.position_steps(frames, on_table)
+        self.STATE_SCHEMA = Record(shown=Int(0, len(frames)),
+                                   display=Display.STATE_SCHEMA)
+
+    def step(self) -> bool:
+        if next(self._steps, None) is None:
+            return False
+        self.shown += 1
+        return True
+
+    def state_values(self) -> dict[str, Any]:
+        return {"shown": self.shown, "display": self.program.display.state_values()}
+
+    def check_state_values(self, values: dict[str, Any]) -> Callable[[], None]:
+        put_display = self.program.display.check_state_values(values["display"])
+
+        def put() -> None:
+            put_display()
+            self.shown = values["shown"]
+            self._steps = self.program.position_steps(self.frames, self.on_table, self.shown)
+        return put
