@@ -18,6 +18,7 @@ attribute name or a path: values only, and only where the schema says so.
 
 from __future__ import annotations
 
+import json
 import math
 from dataclasses import dataclass
 from fractions import Fraction
@@ -58,6 +59,9 @@ class Int(Kind):
     lo: int | None = None
     hi: int | None = None
 
+    def encode(self, value: Any, parts: dict[str, bytes]) -> Any:
+        return int(value)
+
     def decode(self, value: Any, parts: dict[str, bytes], where: str) -> int:
         if type(value) is not int:
             raise _refuse(where, f"{_show(value)} is not a whole number")
@@ -72,6 +76,9 @@ class Int(Kind):
 
 @dataclass(frozen=True)
 class Float(Kind):
+    def encode(self, value: Any, parts: dict[str, bytes]) -> Any:
+        return float(value)
+
     def decode(self, value: Any, parts: dict[str, bytes], where: str) -> float:
         if type(value) not in (int, float) or not math.isfinite(value):
             raise _refuse(where, f"{_show(value)} is not a finite number")
@@ -286,3 +293,54 @@ class Blob(Kind):
 
     def describe(self) -> str:
         return f"bytes[{self.max_len}]"
+
+
+def depth(text: bytes) -> int:
+    """The deepest nesting of ``[`` / ``{`` in a JSON text (strings skipped), counted
+    without parsing, so text nested too deep is refused before json runs."""
+    deepest = level = 0
+    in_string = escaped = False
+    for ch in text.translate(None, _OTHER_BYTES):  # brackets, quotes, backslashes
+        if in_string:
+            if escaped:
+                escaped = False
+            elif ch == 0x5C:
+                escaped = True
+            elif ch == 0x22:
+                in_string = False
+        elif ch == 0x22:
+            in_string = True
+        elif ch in (0x5B, 0x7B):
+            level += 1
+            deepest = max(deepest, level)
+        elif ch in (0x5D, 0x7D):
+            level -= 1
+    return deepest
+
+
+_OTHER_BYTES = bytes(c for c in range(256) if c not in b'[]{}"\\')  # translate deletes
+
+
+@dataclass(frozen=True)
+class JsonText(Kind):
+    """A JSON document a program's own versioned reader checks (e.g. a snooker session
+    file's contents), at most ``max_len`` bytes and ``max_depth`` deep, in a binary part."""
+
+    max_len: int = 32 << 20
+    max_depth: int = 16
+
+    def encode(self, value: Any, parts: dict[str, bytes]) -> Any:
+        return Blob(self.max_len).encode(json.dumps(value, separators=(",", ":")).encode(),
+                                         parts)
+
+    def decode(self, value: Any, parts: dict[str, bytes], where: str) -> Any:
+        data = Blob(self.max_len).decode(value, parts, where)
+        if depth(data) > self.max_depth:
+            raise _refuse(where, f"JSON nested deeper than {self.max_depth}")
+        try:
+            return json.loads(data.decode("utf-8"))
+        except (UnicodeDecodeError, ValueError) as exc:
+            raise _refuse(where, f"not JSON: {str(exc).splitlines()[0][:80]}") from None
+
+    def describe(self) -> str:
+        return f"json[{self.max_len}, depth {self.max_depth}]"

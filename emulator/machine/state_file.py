@@ -19,6 +19,8 @@ import json
 import zlib
 from typing import Any
 
+from camlab88.base.plainstate import depth
+
 MAGIC = b"CAMLAB88-MACHINE-STATE\n"
 VERSION = 2
 READS = (1, 2)
@@ -40,32 +42,6 @@ def pack(device: str, header: dict[str, Any], blobs: dict[str, bytes]) -> bytes:
                 blobs=[[name, len(packed[name]), len(blobs[name])] for name in blobs])
     text = json.dumps(head, sort_keys=True).encode("utf-8")
     return MAGIC + len(text).to_bytes(4, "big") + text + b"".join(packed.values())
-
-
-def depth(text: bytes) -> int:
-    """The deepest nesting of ``[`` / ``{`` in a JSON text (strings skipped), counted
-    without parsing: a header nested deeper than MAX_DEPTH is refused before json runs."""
-    deepest = level = 0
-    in_string = escaped = False
-    for ch in text.translate(None, _OTHER_BYTES):  # brackets, quotes, backslashes
-        if in_string:
-            if escaped:
-                escaped = False
-            elif ch == 0x5C:
-                escaped = True
-            elif ch == 0x22:
-                in_string = False
-        elif ch == 0x22:
-            in_string = True
-        elif ch in (0x5B, 0x7B):
-            level += 1
-            deepest = max(deepest, level)
-        elif ch in (0x5D, 0x7D):
-            level -= 1
-    return deepest
-
-
-_OTHER_BYTES = bytes(c for c in range(256) if c not in b'[]{}"\\')  # bytes.translate deletes
 
 
 def unpack(data: bytes, device: str) -> tuple[dict[str, Any], dict[str, bytes]]:
