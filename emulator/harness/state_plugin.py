@@ -23,6 +23,7 @@ from camlab88.emulator.harness.program_state import (
     SUFFIX,
     StateNotSaved,
     StateOptions,
+    declares_state,
     identity,
     load_program,
     rewind,
@@ -68,10 +69,16 @@ class StatePlugin(Plugin):
             options.snapshots if options.snapshots is not None else [])
         self._next_snapshot = Fraction(0)
         self.written: list[Path] = []
+        self.refused = False  # the run was refused at its start: nothing to say at its end
 
     # ------------------------------------------------------------------ start / end
     def start(self, harness: Harness) -> None:
         o = self.options
+        if (o.save is not None or o.load is not None) and not declares_state(harness.target):
+            flag = "--save-state" if o.save is not None else "--load-state"
+            self.refused = True
+            raise SystemExit(f"{harness.options.command}: {flag}: this program does not "
+                             "declare its state yet, so it saves and loads none (F4 rewinds)")
         if o.load_data is not None:  # a seek: this process's own snapshot
             try:
                 self._next_snapshot = rewind(harness, o.load_data)
@@ -103,6 +110,8 @@ class StatePlugin(Plugin):
 
     def finish(self, harness: Harness) -> None:
         o = self.options
+        if self.refused:
+            return
         if o.save is not None and o.at is None:
             self._write(harness, Path(o.save), asked=True)
         elif o.save is not None and not self.saved_at_time:
