@@ -179,9 +179,21 @@ def load_program(data: bytes, harness: Harness, ident: dict[str, Any]) -> Fracti
     """Continue ``harness`` from a state file's bytes (checked against ``ident`` and the
     target's schema first; all or nothing); returns its virtual time."""
     place, when, values = read_program(data, harness, ident)
-    harness.target.load_state_values(values)
+    _load_values(harness.target, values)
     _put_place(harness, place)
     return when
+
+
+def _load_values(target: Any, values: Any) -> None:
+    """The target's load_state_values (which checks everything before it changes anything);
+    what the program refuses is one line."""
+    try:
+        target.load_state_values(values)
+    except MachineStateError:
+        raise
+    except (ValueError, KeyError, TypeError, IndexError, ArithmeticError) as exc:
+        text = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+        raise MachineStateError(f"the program refused it: {text[:300]}") from None
 
 
 def _put_place(harness: Harness, place: tuple[int, int, Fraction, Fraction]) -> None:
@@ -230,7 +242,7 @@ def rewind(harness: Harness, snap: Snapshot) -> Fraction:
             values = decode(target.STATE_SCHEMA, rest[0], rest[1], "state")
         except StateValueError as exc:
             raise MachineStateError(str(exc)) from None
-        target.load_state_values(values)
+        _load_values(target, values)
     else:
         from camlab88.base.objstate import StateError, restore
 

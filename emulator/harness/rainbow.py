@@ -50,8 +50,7 @@ class RainbowTarget:
         if program is not None:  # it declares its state: so does the target
             self.program = program
             self.STATE_VERSION = program.STATE_VERSION
-            self.STATE_SCHEMA = Record(rainbow=Blob(), script=Opt(Tuple((Int(0), Int(0)))),
-                                       buttons=Int(0, 7), program=program.STATE_SCHEMA)
+            self.STATE_SCHEMA = target_schema(program.STATE_SCHEMA)
 
     # ------------------------------------------------------------------ declared state
     def state_values(self) -> dict[str, Any]:
@@ -114,6 +113,13 @@ class RainbowTarget:
         if take_tape is not None:
             out.append(("T", take_tape()))
         return out
+
+
+def target_schema(program: Any) -> Record:
+    """A Rainbow program's whole declared state: the Rainbow (its own versioned state),
+    the --events script's place, the window's mouse buttons and the program's own."""
+    return Record(rainbow=Blob(), script=Opt(Tuple((Int(0), Int(0)))), buttons=Int(0, 7),
+                  program=program)
 
 
 # ---------------------------------------------------------------------------- the Rainbow

@@ -834,14 +834,13 @@ class PositionReplay:
     a load makes the steps again from there (a generator is rebuilt, never saved)."""
 
     STATE_VERSION = 1
+    STATE_SCHEMA = Record(shown=Int(0), display=Display.STATE_SCHEMA)
 
     def __init__(self, program: Program, frames: list[np.ndarray],
                  on_table: list[np.ndarray]) -> None:
         self.program, self.frames, self.on_table = program, frames, on_table
         self.shown = 0
         self._steps = program.position_steps(frames, on_table)
-        self.STATE_SCHEMA = Record(shown=Int(0, len(frames)),
-                                   display=Display.STATE_SCHEMA)
 
     def step(self) -> bool:
         if next(self._steps, None) is None:
@@ -853,6 +852,9 @@ class PositionReplay:
         return {"shown": self.shown, "display": self.program.display.state_values()}
 
     def check_state_values(self, values: dict[str, Any]) -> Callable[[], None]:
+        if values["shown"] > len(self.frames):
+            raise ValueError(f"{values['shown']} positions shown; the checkpoint has "
+                             f"{len(self.frames)}")
         put_display = self.program.display.check_state_values(values["display"])
 
         def put() -> None:
