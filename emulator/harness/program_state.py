@@ -35,7 +35,7 @@ RUN_ONLY = {"--headless": 0, "--screenshot": 1, "--frames": 1, "--stop-after": 1
             "--speed": 1, "--period": 0, "--inspect": 0, "--inspect-out": 1, "--video": 1}
 SUFFIX = ".c88state"
 # the harness's place: ticks, frames shown, the next frame's time, the last shown's time
-PLACE = Tuple((Int(0), Int(0), Frac(), Frac()))
+PLACE = Tuple((Int(0, 1 << 53), Int(0, 1 << 53), Frac(), Frac()))
 TIME = Frac(nonnegative=True)
 
 
@@ -219,8 +219,11 @@ def snapshot(harness: Harness) -> Snapshot:
     target = harness.target
     if declares_state(target):
         parts: dict[str, bytes] = {}
-        values: Any = ("declared", encode(target.STATE_SCHEMA, target.state_values(), parts),
-                       parts)
+        try:
+            values: Any = ("declared", encode(target.STATE_SCHEMA, target.state_values(),
+                                              parts), parts)
+        except (TypeError, ValueError, KeyError) as exc:
+            raise MachineStateError(f"cannot save this program's state now: {exc}") from None
     else:
         from camlab88.base.objstate import StateError, capture
 

@@ -101,9 +101,12 @@ class StatePlugin(Plugin):
         if o.save is not None and o.at is not None and not self.saved_at_time and now >= o.at:
             self.saved_at_time = True
             self._write(harness, Path(o.save), asked=True)
-        if o.seek_to is not None and now >= o.seek_to:  # a seek's first run ends here
-            o.seek_state = snapshot(harness)
-            harness.stop()
+        if o.seek_to is not None and now >= o.seek_to:  # a seek's first run ends here ...
+            try:
+                o.seek_state = snapshot(harness)
+                harness.stop()
+            except MachineStateError:
+                pass  # ... or at the first tick after it with a state (e.g. a dialogue ended)
         elif (harness.window is not None or o.snapshots is not None) and \
                 now >= self._next_snapshot:
             self._snapshot(harness, now)

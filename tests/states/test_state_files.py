@@ -128,7 +128,7 @@ def _demo_harness(tmp_path: Path) -> Harness:
     opts = RunOptions(headless=True, command="camlab88 rainbow run", argv=["rainbow", "run"],
                       state=StateOptions(version="test", key_dir=tmp_path, snapshots=[],
                                          snapshot_every=__import__("fractions").Fraction(1, 10)))
-    h = Harness(RainbowTarget(session, step, "demo", ""), opts)
+    h = Harness(RainbowTarget(session, step, "demo", "", program=demo), opts)
     for p in h.plugins:
         p.start(h)
     return h

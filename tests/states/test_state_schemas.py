@@ -68,6 +68,7 @@ def test_a_changed_schema_without_a_new_version_fails(monkeypatch) -> None:
     """(The check above can fail: a field renamed under the same version.)"""
     import sys
 
+    monkeypatch.delenv("CAMLAB88_UPDATE_SCHEMAS", raising=False)
     me = sys.modules[__name__]
     real = me.schemas()
     name = "sigma run"
