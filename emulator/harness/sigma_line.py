@@ -17,7 +17,7 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
-from camlab88.base.plainstate import Blob, Frac, Int, Opt, Record
+from camlab88.base.plainstate import Blob, Bool, Frac, Int, Opt, Record
 from camlab88.emulator.host_input import HostEvent
 from camlab88.emulator.machine import SigmaMachine
 from camlab88.emulator.machine.state_file import MachineStateError
@@ -64,10 +64,12 @@ class SigmaLineTarget:
     (``machine.trace``) for ``--trace`` / ``--strict``."""
 
     # its declared state (emulator.harness.program_state): the machine's own versioned
-    # state, when the order now unfinished began and how many orders the terminal had done;
+    # state, when the order now unfinished began, how many orders the terminal had done, the
+    # --events script's place, when outside bytes last came and whether a client has left;
     # the bridge, the report and the until are the command line's, never a state's
     STATE_VERSION = 1
-    STATE_SCHEMA = Record(machine=Blob(), order_since=Opt(Frac()), commands=Int(0))
+    STATE_SCHEMA = Record(machine=Blob(), order_since=Opt(Frac()), commands=Int(0),
+                          script_at=Int(0), heard_at=Frac(), client_left=Bool())
 
     fps = 25
     escape_is_a_key = True  # a terminal key: host programs read ESC (close the window quits)
@@ -100,17 +102,24 @@ class SigmaLineTarget:
 
     def state_values(self) -> dict[str, Any]:
         return {"machine": self.machine.save_state(), "order_since": self._order_since,
-                "commands": self._commands}
+                "commands": self._commands, "script_at": self._script_at,
+                "heard_at": self._heard_at, "client_left": self._client_left}
 
     def load_state_values(self, values: dict[str, Any]) -> None:
         """Continue from state_values() (checked against STATE_SCHEMA); the machine's part
         is checked whole before anything changes."""
         self.machine.check_state(values["machine"])
+        if values["script_at"] > len(self.script):
+            raise MachineStateError(f"the state is at --events script event "
+                                    f"{values['script_at']}; this run's script has "
+                                    f"{len(self.script)}")
         try:
             self.machine.load_state(values["machine"])
         except ValueError as exc:  # (checked above: not expected)
             raise MachineStateError(str(exc)) from None
         self._order_since, self._commands = values["order_since"], values["commands"]
+        self._script_at, self._heard_at = values["script_at"], values["heard_at"]
+        self._client_left = values["client_left"]
         self._frame, self._replayed, self._sent, self._received = None, [], bytearray(), b""
         self.tap.take()
 
