@@ -3,12 +3,12 @@ an object graph captured structurally and restored *in place* into the same runn
 program. A graph never leaves the process - it is never written to a file or read from one,
 and nothing from outside ever reaches ``restore`` (emulator.harness.program_state.snapshot
 and rewind are its only callers). Save state files and recordings hold a program's declared
-state instead: plain values checked against the schema it declares (base.plainstate; issue
-38: a graph from a file could name code, and did).
+state instead: plain values checked against the schema it declares (base.plainstate): a
+graph from a file could name code, and did.
 
 An object graph captured structurally and restored *in place* into a freshly built graph of
-the same program. Not pickle: a state file names no
-code. Loading never imports a module, never calls a constructor or any callable the file
+the same program. Not pickle: a graph names no code. Restoring never imports a module, never
+calls a constructor or any callable the graph
 names; it only creates instances (``object.__new__``) of classes of camlab88's own packages
 that are already loaded, fills their attributes, and writes into the objects, arrays and
 closures the fresh build made (so the references wiring them together - callbacks, views,
@@ -328,15 +328,6 @@ def _put_set(out: set[Any], old: set[Any]) -> None:
 
 def _put_numpy_state(out: np.random.Generator, state: Any) -> None:
     out.bit_generator.state = state
-
-
-def set_attribute(obj: Any, name: str, value: Any) -> None:
-    """``obj.name = value``, undone with the restore running now if it fails (for a
-    ``_state_restored`` hook)."""
-    journal = _JOURNAL.get()
-    if journal is not None:
-        journal.append((_put_attr, (obj, name, _own(obj, name))))
-    object.__setattr__(obj, name, value)
 
 
 class _Restore:

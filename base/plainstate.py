@@ -1,5 +1,5 @@
 """A program's declared state: plain values checked against a small schema the program
-declares in its own code (issue 38; the way PyBoy asks each chip for its fields under a
+declares in its own code (the way PyBoy asks each chip for its fields under a
 ``STATE_VERSION`` and MAME registers each field with ``save_item``).
 
 A schema is a tree of kinds: :class:`Int`, :class:`Float`, :class:`Bool`, :class:`Str`,

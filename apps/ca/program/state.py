@@ -1,4 +1,4 @@
-"""``ca program``'s declared state (the harness's program_state; issue 38): plain values the
+"""``ca program``'s declared state (the harness's program_state): plain values the
 program is rebuilt from through its own code.
 
 The automaton (the shown generation, the one computed ahead and the checkpoints waiting to
