@@ -1,6 +1,14 @@
-"""A program's whole state as data: an object graph captured structurally and restored *in
-place* into a freshly built graph of the same program. Not pickle: a state file names no
-code. Loading never imports a module, never calls a constructor or any callable the file
+"""In-process rewind snapshots only (F4, a seek's jump) of a program that declares no state:
+an object graph captured structurally and restored *in place* into the same running
+program. A graph never leaves the process - it is never written to a file or read from one,
+and nothing from outside ever reaches ``restore`` (emulator.harness.program_state.snapshot
+and rewind are its only callers). Save state files and recordings hold a program's declared
+state instead: plain values checked against the schema it declares (base.plainstate): a
+graph from a file could name code, and did.
+
+An object graph captured structurally and restored *in place* into a freshly built graph of
+the same program. Not pickle: a graph names no code. Restoring never imports a module, never
+calls a constructor or any callable the graph
 names; it only creates instances (``object.__new__``) of classes of camlab88's own packages
 that are already loaded, fills their attributes, and writes into the objects, arrays and
 closures the fresh build made (so the references wiring them together - callbacks, views,
@@ -320,15 +328,6 @@ def _put_set(out: set[Any], old: set[Any]) -> None:
 
 def _put_numpy_state(out: np.random.Generator, state: Any) -> None:
     out.bit_generator.state = state
-
-
-def set_attribute(obj: Any, name: str, value: Any) -> None:
-    """``obj.name = value``, undone with the restore running now if it fails (for a
-    ``_state_restored`` hook)."""
-    journal = _JOURNAL.get()
-    if journal is not None:
-        journal.append((_put_attr, (obj, name, _own(obj, name))))
-    object.__setattr__(obj, name, value)
 
 
 class _Restore:
@@ -776,66 +775,3 @@ def restore(root: Any, tree: Any, blobs: list[bytes], _hooks: bool = True,
     finally:
         sys.setrecursionlimit(limit)
         _JOURNAL.reset(token)
-
-
-# ---------------------------------------------------------------------------- dialogues
-class Resumable:
-    """A program's dialogue (a generator asking questions) that can be saved.
-
-    A running generator cannot be saved, so this keeps what makes it again: the state of its
-    owner when it began, which of the owner's dialogue functions made it (looked up among
-    ``makers``, never named freely by a file), its arguments and every value sent to it.
-    After a load it is made again: the owner is put back as it was when the dialogue began,
-    the dialogue is run with the same values (deterministic: the same questions, the same
-    effects), and then the owner's saved state is put back over it. ``attr`` is the
-    owner's attribute that holds this object."""
-
-    _state_exclude = ("gen", "makers")
-
-    def __init__(self, owner: Any, attr: str, gen: Any, makers: dict[str, Any]) -> None:
-        code = gen.gi_code
-        self.maker = f"{gen.gi_frame.f_globals.get('__name__')}:{code.co_qualname}"
-        if makers.get(self.maker) is None:
-            raise StateError(f"{self.maker} is not one of the owner's dialogues")
-        self.args = dict(gen.gi_frame.f_locals)  # a generator not yet started: its arguments
-        self.owner, self.attr, self.gen, self.makers = owner, attr, gen, makers
-        self._state_refusal = ""
-        try:
-            self.before = capture(owner)
-        except StateError as exc:  # the dialogue runs all the same; only a save refuses
-            self.before, self._state_refusal = None, f"a dialogue began while {exc}"
-        self.sent: list[Any] = []
-        self.started = False
-
-    def __iter__(self) -> Resumable:
-        return self
-
-    def __next__(self) -> Any:
-        return self.send(None)
-
-    def send(self, value: Any) -> Any:
-        if self.started:
-            self.sent.append(value)
-        self.started = True
-        return self.gen.send(value)
-
-    def close(self) -> None:
-        self.gen.close()
-
-    def _state_restored(self) -> None:
-        owner = self.owner
-        makers = getattr(type(owner), "dialogue_makers", lambda: {})()
-        maker = makers.get(self.maker)
-        if maker is None:
-            raise StateError(f"dialogue {self.maker!r} is not one of this program's")
-        now = capture(owner)
-        restore(owner, *self.before, _hooks=False)
-        gen = maker(**self.args)
-        if self.started:
-            gen.send(None)
-            for value in self.sent:
-                gen.send(value)
-        restore(owner, *now, _hooks=False)
-        again = getattr(owner, self.attr)
-        set_attribute(again, "gen", gen)
-        set_attribute(again, "makers", makers)

@@ -291,6 +291,12 @@ def _main(argv: Sequence[str] | None) -> int:
             command = _command(words)
             print(f"{command}: {exc}", file=sys.stderr)
             return USAGE
+
+        from camlab88.emulator.harness.program_state import StateNotSaved
+
+        if isinstance(exc, StateNotSaved):  # --save-state could not save: said in one line
+            print(exc, file=sys.stderr)
+            return 1
         if getattr(args, "load_state", None) is None:
             raise
         return _state_fault(words, args.load_state, exc)

@@ -221,8 +221,9 @@ def _sessions() -> None:
 def _states() -> None:
     """A Sigma machine with a stream half taken, and a CA program's whole state."""
     from camlab88.apps.ca.program.program import CAProgram, Options
-    from camlab88.emulator.harness.program_state import object_state
+    from camlab88.base.plainstate import encode
     from camlab88.emulator.machine import SigmaMachine
+    from camlab88.emulator.machine.state_file import pack
     from camlab88.emulator.rainbow.session import in_process
     from camlab88.protocols.sigma.demo import sigma_animation_stream
 
@@ -232,13 +233,15 @@ def _states() -> None:
     _put("machine-state", "sigma_mid_stream.state", machine.save_state())
     program = CAProgram(in_process().client, Options(pattern="glider"))
     program.frame()
-    _put("program-state", "ca_glider.state", object_state(program))
+    parts: dict[str, bytes] = {}
+    values = encode(program.STATE_SCHEMA, program.state_values(), parts)
+    _put("program-state", "ca_glider.state", pack("program", {"values": values}, parts))
 
 
 def _cli_states() -> None:
-    """Real states saved by three commands, opened (fuzz/states.py): the cli-load-state
-    seeds. They name the camlab88 version: make them again after a version change, or the
-    commands refuse them all at the version check and the fuzzing goes no deeper."""
+    """Real states saved by the commands in fuzz/states.py, opened: the cli-load-state
+    seeds. They name each program's state version: make them again after a version bump,
+    or the commands refuse them all at the version check and the fuzzing goes no deeper."""
     from fuzz import states
 
     with tempfile.TemporaryDirectory() as scratch:

@@ -3,14 +3,13 @@ through ``--load-state FILE``: every outcome must be a clean run (status 0) or a
 (status 1 or 2) on one line naming the file — never a traceback, a hang or memory without
 bound.
 
-A state is an envelope (emulator.machine.state_file) around a deflated envelope of the
-program's object tree, so a byte flipped in the file is almost always refused by zlib's
-checksum and goes no deeper. The fuzzers therefore work on the state *opened*: one JSON line
-(the program envelope's header and the target envelope's header, which holds the object
-tree), then the target's binary parts (arrays, long byte strings) as they are in the file,
+A state is an envelope (emulator.machine.state_file) whose header holds the program's
+declared values and whose deflated parts hold the machines' own states, so a byte flipped
+in the file is almost always refused by zlib's checksum and goes no deeper. The fuzzers
+therefore work on the state *opened*: one JSON line (the header), then the parts inflated,
 each length-prefixed. ``close_state`` packs it again before the command reads it, so a
-mutation lands in the tree or the harness's place and is read by objstate and the program
-itself (one in a part is refused by zlib, as in a file).
+mutation lands in a value, the harness's place or a machine's state and is read by the
+schema check and the program itself.
 """
 
 from __future__ import annotations
@@ -34,9 +33,11 @@ PROGRAMS: dict[str, list[str]] = {
     "ca-program": ["ca", "program", "--pattern", "glider", "--headless", "--stop-after", "2"],
     "snooker-play": ["snooker", "play", "--headless", "--stop-after", "2"],
     "sigma-run": ["sigma", "run", "--headless", "--in", str(STREAM), "--seconds", "0.3"],
+    "rainbow-run": ["rainbow", "run", "--headless", "--stop-after", "3", "--demo", "pads"],
 }
 COMMANDS = {"camlab88 ca program": "ca-program", "camlab88 snooker": "snooker-play",
-            "camlab88 sigma run": "sigma-run"}  # as a state names its program
+            "camlab88 sigma run": "sigma-run",
+            "camlab88 rainbow run": "rainbow-run"}  # as a state names its program
 _LENGTH = 4  # bytes of each part's length prefix in an opened state
 
 
@@ -147,48 +148,42 @@ def check_isolated(program: str, data: bytes, path: Path, limit: float,
 
 # ------------------------------------------------------------------ opened states
 def open_state(data: bytes) -> bytes:
-    """A state file as one JSON line of both headers (the target's holds the object tree),
-    then the target's parts as they are in the file (deflated), each length-prefixed."""
-    from camlab88.emulator.machine.state_file import MAGIC, unpack
+    """A state file as one JSON line (its header: the program, its arguments, the harness's
+    place, the declared values, and the names of its parts), then its binary parts inflated
+    (the machines' own states, arrays), each length-prefixed: a mutation lands in a value or
+    a part, not in deflate's checksum."""
+    from camlab88.emulator.machine.state_file import unpack
 
-    outer, blobs = unpack(data, "program")
-    inner_bytes = blobs["target"]
-    inner, _ = unpack(inner_bytes, "target")  # checks it; the parts are taken still deflated
-    k = len(MAGIC) + 4 + int.from_bytes(inner_bytes[len(MAGIC):len(MAGIC) + 4], "big")
-    heads = {"program": _bare(outer), "target": _bare(inner)}
-    out = bytearray(json.dumps(heads, sort_keys=True).encode("utf-8") + b"\n")
-    for _name, n in inner["blobs"]:
-        out += n.to_bytes(_LENGTH, "big") + inner_bytes[k:k + n]
-        k += n
+    head, blobs = unpack(data, "program")
+    line = dict(_bare(head), parts=list(blobs))
+    out = bytearray(json.dumps(line, sort_keys=True).encode("utf-8") + b"\n")
+    for part in blobs.values():
+        out += len(part).to_bytes(_LENGTH, "big") + part
     return bytes(out)
 
 
 def close_state(opened: bytes) -> bytes:
     """The state file an opened state stands for. A header line that is no longer JSON, or
-    not the two headers, is passed on as it is (the loader refuses it); parts whose lengths
-    no longer add up are cut where the bytes end."""
-    from camlab88.emulator.machine.state_file import MAGIC, VERSION, pack
+    not a mapping naming its parts, is passed on as it is (the loader refuses it); parts
+    whose lengths no longer add up are cut where the bytes end."""
+    from camlab88.emulator.machine.state_file import pack
 
     line, _, rest = opened.partition(b"\n")
     try:
-        heads = json.loads(line.decode("utf-8"))
-        program, target = heads["program"], heads["target"]
-        if not (isinstance(program, dict) and isinstance(target, dict)):
+        head = json.loads(line.decode("utf-8"))
+        names = head.pop("parts")
+        if not (isinstance(names, list) and all(isinstance(n, str) for n in names)):
             raise TypeError
-    except (UnicodeDecodeError, ValueError, KeyError, TypeError):
+    except (UnicodeDecodeError, ValueError, KeyError, TypeError, AttributeError,
+            RecursionError):
         return opened
-    parts: list[bytes] = []
+    parts: dict[str, bytes] = {}
     k = 0
-    while k < len(rest):
+    for name in names:
         n = int.from_bytes(rest[k:k + _LENGTH], "big")
-        parts.append(rest[k + _LENGTH:k + _LENGTH + n])
+        parts[name] = rest[k + _LENGTH:k + _LENGTH + n]
         k += _LENGTH + n
-    # the target's envelope as state_file.pack writes it, its parts already deflated
-    head = dict(target, format_version=VERSION, device="target",
-                blobs=[[str(i), len(p)] for i, p in enumerate(parts)])
-    text = json.dumps(head, sort_keys=True).encode("utf-8")
-    inner = MAGIC + len(text).to_bytes(4, "big") + text + b"".join(parts)
-    return pack("program", program, {"target": inner})
+    return pack("program", head, parts)
 
 
 def program_of(opened: bytes) -> str:
@@ -211,6 +206,8 @@ ODD_VALUES: tuple[Any, ...] = (
     None, True, False, 0, -1, 1, 2**31, -(2**63), 2**64, 10**30, 0.5, -1e308, 1e308,
     "", "x", "0", "1/0", "-1", "nan", [], {}, [0], [[]], {"": 0}, {"O": "builtins:object"},
     {"R": 0}, {"R": 10**9}, {"L": []}, {"T": [1, 2]}, {"A": "x"}, [-1, -1, -1, -1],
+    {"code": ["camlab88.base.atomicfile", "write_atomic", 1]}, "/tmp/x", "../../x",
+    ["a0", [2**40]], [10**300, 1], [1, 0],
 )
 
 
@@ -230,7 +227,7 @@ def scalar_places(tree: Any) -> list[tuple[Any, Any]]:
 
 
 def edit_tree(data: bytes, edits: list[tuple[int, Any]]) -> bytes:
-    """The state file with values of its headers' trees replaced: each edit is (a place's
+    """The state file with values of its header replaced: each edit is (a place's
     number, taken modulo the number of places; the new value)."""
     opened = open_state(data)
     line, _, rest = opened.partition(b"\n")

@@ -295,15 +295,21 @@ def _machine_state(data: bytes) -> object:
 
 
 def _program_state(data: bytes) -> object:
-    """A whole-program state (base.objstate) loaded in place into a CA program."""
-    from camlab88.emulator.harness.program_state import load_object_state
+    """A CA program's declared state file: unpacked, its values checked against the
+    program's schema and by the program (built, not put in place); refusals are
+    ValueErrors (MachineStateError, StateValueError, the checkpoint reader's LogError)."""
+    from camlab88.base.plainstate import decode
+    from camlab88.emulator.machine.state_file import unpack
 
     if not _PROGRAMS:
         from camlab88.apps.ca.program.program import CAProgram, Options
         from camlab88.emulator.rainbow.session import in_process
 
         _PROGRAMS.append(CAProgram(in_process().client, Options(pattern="glider")))
-    return load_object_state(_PROGRAMS[0], data)
+    program = _PROGRAMS[0]
+    head, parts = unpack(data, "program")
+    values = decode(program.STATE_SCHEMA, head.get("values"), parts)
+    return program.check_state_values(values)
 
 
 def _cli_load_state(data: bytes) -> object:

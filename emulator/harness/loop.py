@@ -41,11 +41,11 @@ class Target(Protocol):
     refused while e.g. unsaved work is asked about), ``wire() -> list[tuple[str, bytes]]``
     (the wire traffic since the last call, for recordings), ``put_wire(data)`` (replayed
     outside input on the wire), ``finish()`` and ``status() -> str`` (the keys, frame and
-    time, shown after ``title`` in the window's title bar), ``save_state() -> bytes`` and
-    ``load_state(data: bytes) -> None`` (the target's whole state: device, line, clock,
-    program, tablet decoder; loaded into a freshly built target of the same program, or
-    MachineStateError; without them the harness captures the target's object graph itself:
-    emulator.harness.program_state).
+    time, shown after ``title`` in the window's title bar), and its declared state:
+    ``STATE_VERSION``, ``STATE_SCHEMA``, ``state_values()`` and ``load_state_values(values)``
+    (plain values checked against the schema, loaded into a freshly built target of the
+    same program all or nothing: emulator.harness.program_state; a target without them
+    saves no state file, and F4 keeps its object graph in memory).
     """
 
     title: str

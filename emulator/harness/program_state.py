@@ -1,35 +1,38 @@
-"""A program's save state: one versioned envelope around the target's own state.
+"""A program's save state: one versioned envelope around the program's declared state.
 
 The envelope (emulator.machine.state_file, device ``program``) names the program (its
-command), the camlab88 version, the arguments that shape it (files by SHA-256 of their
-content, run-only flags left out) and the harness's place (ticks, frames shown, the next
-frame's time); its blob ``target`` is what ``target.save_state()`` gave. A state of another
-program, another version or other inputs is refused with one line (MachineStateError).
+command), the program's state version, the arguments that shape it (files by SHA-256 of
+their content, run-only flags left out) and the harness's place (ticks, frames shown, the
+next frame's time); its header's ``values`` and its binary parts are the target's declared
+state (base.plainstate): plain values checked against the schema the target declares
+(``STATE_VERSION``, ``STATE_SCHEMA``, ``state_values()``, ``load_state_values(values)``;
+``migrate_state(version, values)`` reads an older version where one is documented). A state
+of another program, another state version or other inputs is refused with one line
+(MachineStateError). Nothing in a state names code, a class or a path, and loading one does
+no I/O but reading the file.
 
-Targets save themselves through :class:`SavesState` (the whole object graph from the
-target down: device, line, clock, program, tablet decoder; base.objstate); a target without
-``save_state`` is captured the same way by :func:`target_state`.
+In-process rewind snapshots (F4, a seek's jump) never leave the process: a target that
+declares no state keeps them as base.objstate graphs (``snapshot`` / ``rewind``).
 """
 
 from __future__ import annotations
 
 import hashlib
-from contextvars import ContextVar
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from camlab88.base.objstate import StateError, capture, own_state, restore
+from camlab88.base.plainstate import Frac, Int, StateValueError, Tuple, decode, encode
 from camlab88.emulator.machine.state_file import MachineStateError, pack, unpack
-from camlab88.emulator.sigma import Terminal
-
-own_state(Terminal)  # the terminal's own versioned state (emulator/sigma/state.py)
 
 if TYPE_CHECKING:
     from camlab88.emulator.harness.loop import Harness
 
 SUFFIX = ".c88state"
+# the harness's place: ticks, frames shown, the next frame's time, the last shown's time
+PLACE = Tuple((Int(0, 1 << 53), Int(0, 1 << 53), Frac(), Frac()))
+TIME = Frac(nonnegative=True)
 
 
 @dataclass
@@ -39,62 +42,23 @@ class StateOptions:
     save: Path | None = None
     at: Fraction | None = None
     load: Path | None = None
-    load_data: bytes | None = None     # a state in memory (a seek's second run)
+    load_data: bytes | None = None     # a seek's state, made by this process (never a file)
     version: str = "?"
     key_dir: Path = field(default_factory=Path.cwd)  # where F2 writes without --save-state
     snapshot_every: Fraction = Fraction(5)  # s of virtual time between F4 snapshots
-    snapshots: list[tuple[Fraction, bytes]] | None = None  # kept (and collected) for F4
+    snapshots: list[tuple[Fraction, Any]] | None = None  # kept (and collected) for F4
     seek_to: Fraction | None = None    # a seek's first run: stop here, keep the state ...
-    seek_state: bytes | None = None    # ... in here
+    seek_state: Any = None             # ... in here (an in-process snapshot)
 
 
-class SavesState:
-    """``save_state()`` / ``load_state(data)`` for a harness target: its whole object graph
-    (base.objstate), restored in place into a freshly built target of the same program."""
-
-    def save_state(self) -> bytes:
-        return object_state(self)
-
-    def load_state(self, data: bytes) -> None:
-        load_object_state(self, data)
+class StateNotSaved(Exception):
+    """--save-state could not save (one line naming the file): the run's work failed
+    (camlab88.cli ends it with status 1)."""
 
 
-def object_state(obj: Any) -> bytes:
-    try:
-        tree, blobs = capture(obj)
-    except StateError as exc:
-        raise MachineStateError(f"cannot save this program's state now: {exc}") from None
-    return pack("target", {"tree": tree, "class": type(obj).__qualname__},
-                {str(i): b for i, b in enumerate(blobs)})
-
-
-# the command line's words while a state loads: strings a state may not replace
-PINNED: ContextVar[frozenset[str]] = ContextVar("camlab88_pinned", default=frozenset())
-
-
-def load_object_state(obj: Any, data: bytes) -> None:
-    head, blobs = unpack(data, "target")
-    if head.get("class") != type(obj).__qualname__:
-        raise MachineStateError(f"the state is of a {head.get('class')!r}, this program runs "
-                                f"a {type(obj).__qualname__!r}")
-    try:
-        restore(obj, head.get("tree"), [blobs[str(i)] for i in range(len(blobs))],
-                pinned=PINNED.get())
-    except (StateError, KeyError) as exc:
-        raise MachineStateError(f"the state does not fit: {exc}") from None
-
-
-def target_state(target: Any) -> bytes:
-    save = getattr(target, "save_state", None)
-    return save() if save is not None else object_state(target)
-
-
-def load_target_state(target: Any, data: bytes) -> None:
-    load = getattr(target, "load_state", None)
-    if load is not None:
-        load(data)
-    else:
-        load_object_state(target, data)
+def declares_state(target: Any) -> bool:
+    return all(hasattr(target, n) for n in ("STATE_VERSION", "STATE_SCHEMA", "state_values",
+                                            "load_state_values"))
 
 
 # ---------------------------------------------------------------------------- identity
@@ -123,17 +87,6 @@ def shaping_args(argv: list[str], extra: list[Path], run_only: dict[str, int]) -
     return out + [_by_content(str(p)) for p in extra]
 
 
-def _file_name(word: str) -> bool:
-    """A command-line word that names a file (has a directory or a suffix; not a number)."""
-    if word.startswith("-") or not ("/" in word or "." in word):
-        return False
-    try:
-        float(word)
-    except ValueError:
-        return True
-    return False
-
-
 def _by_content(word: str) -> str:
     name, eq, value = word.partition("=") if word.startswith("--") else ("", "", word)
     path = Path(value)
@@ -146,13 +99,11 @@ def _by_content(word: str) -> str:
 
 
 def check_identity(head: dict[str, Any], mine: dict[str, Any]) -> None:
-    """One line saying how a state's program, version or inputs differ from this run's."""
+    """One line saying how a state's program or inputs differ from this run's (the camlab88
+    version it names is only noted: the program's state version is what must agree)."""
     if head.get("program") != mine["program"]:
-        raise MachineStateError(f"it is a state of '{head.get('program')}', not of "
+        raise MachineStateError(f"it is a state of {_short(head.get('program'))}, not of "
                                 f"'{mine['program']}'")
-    if head.get("camlab88") != mine["camlab88"]:
-        raise MachineStateError(f"it was saved by camlab88 {head.get('camlab88')}; this is "
-                                f"camlab88 {mine['camlab88']}")
     theirs, ours = head.get("args"), mine["args"]
     if theirs != ours:
         raise MachineStateError("it was saved with other arguments or input files: "
@@ -164,50 +115,142 @@ def _first_difference(theirs: Any, ours: list[str]) -> str:
         return "its argument list is damaged"
     for a, b in zip(theirs, ours, strict=False):
         if a != b:
-            return f"{a!r} there, {b!r} here"
+            return f"{_short(a)} there, {_short(b)} here"
     return f"{len(theirs)} arguments there, {len(ours)} here"
 
 
 # ---------------------------------------------------------------------------- envelope
 def save_program(harness: Harness, ident: dict[str, Any]) -> bytes:
-    """The whole state now: ``ident`` (identity(): the program, version and input files as
-    they are now), the harness's place, the target's state."""
-    head = dict(ident, harness=_place(harness),
-                time=str(harness.target.time()))
-    return pack("program", head, {"target": target_state(harness.target)})
-
-
-def _place(harness: Harness) -> list[Any]:
-    return [harness.ticks, harness.frames_shown, str(harness._next_show),
-            str(harness._shown_at)]
-
-
-def read_program(data: bytes, ident: dict[str, Any] | None
-                 ) -> tuple[dict[str, Any], bytes]:
-    head, blobs = unpack(data, "program")
-    if ident is not None:  # None: a state this run made itself (F3, F4)
-        check_identity(head, ident)
-    if "target" not in blobs:
-        raise MachineStateError("the state holds no program state")
-    return head, blobs["target"]
-
-
-def load_program(data: bytes, harness: Harness, ident: dict[str, Any] | None) -> Fraction:
-    """Continue ``harness`` from a state (checked against ``ident`` first); returns its
-    virtual time."""
-    head, target = read_program(data, ident)
+    """The whole state now, for a file: ``ident`` (identity(): the program, version and input
+    files as they are now), the harness's place, the target's declared state."""
+    target = harness.target
+    if not declares_state(target):
+        raise MachineStateError(f"{ident['program']} does not save its state to a file")
+    parts: dict[str, bytes] = {}
     try:
-        ticks, shown, next_show, shown_at = head["harness"]
-        place = (int(ticks), int(shown), Fraction(next_show), Fraction(shown_at))
-        when = Fraction(head["time"])
-    except (KeyError, TypeError, ValueError, ZeroDivisionError) as exc:
-        raise MachineStateError(f"the harness's place is damaged: {exc!r}") from None
-    words = {w for a in harness.options.argv for w in (a, a.partition("=")[2]) if _file_name(w)}
-    token = PINNED.set(frozenset(words))
+        values = encode(target.STATE_SCHEMA, target.state_values(), parts)
+    except (StateValueError, TypeError, ValueError, KeyError) as exc:
+        raise MachineStateError(f"cannot save this program's state now: {exc}") from None
+    head = dict(ident, state_version=target.STATE_VERSION,
+                harness=PLACE.encode(_place(harness), parts),
+                time=TIME.encode(target.time(), parts), values=values)
+    return pack("program", head, parts)
+
+
+def _place(harness: Harness) -> tuple[int, int, Fraction, Fraction]:
+    return (harness.ticks, harness.frames_shown, harness._next_show, harness._shown_at)
+
+
+def read_program(data: bytes, harness: Harness, ident: dict[str, Any]
+                 ) -> tuple[tuple[int, int, Fraction, Fraction], Fraction, Any]:
+    """(place, time, values) of a state file's bytes for ``harness``'s target, every value
+    checked against the target's schema; nothing is changed."""
+    target = harness.target
+    if not declares_state(target):
+        raise MachineStateError(f"{ident['program']} does not load a state from a file")
+    head, parts = unpack(data, "program")
+    check_identity(head, ident)
+    version = head.get("state_version")
+    values = head.get("values")
+    if version != target.STATE_VERSION:
+        migrate = getattr(target, "migrate_state", None)
+        older = type(version) is int and 0 < version < target.STATE_VERSION
+        if migrate is None or not older:
+            raise MachineStateError(f"it is a state of version {_short(version)}; this "
+                                    f"{ident['program']} reads version "
+                                    f"{target.STATE_VERSION}")
+        values = migrate(version, values)
     try:
-        load_target_state(harness.target, target)
-    finally:
-        PINNED.reset(token)
+        place = PLACE.decode(head.get("harness"), parts, "harness")
+        when = TIME.decode(head.get("time"), parts, "time")
+        values = decode(target.STATE_SCHEMA, values, parts, "state")
+    except StateValueError as exc:
+        raise MachineStateError(str(exc)) from None
+    return place, when, values
+
+
+def _short(value: Any) -> str:
+    text = repr(value)
+    return text if len(text) <= 40 else text[:37] + "..."
+
+
+def load_program(data: bytes, harness: Harness, ident: dict[str, Any]) -> Fraction:
+    """Continue ``harness`` from a state file's bytes (checked against ``ident`` and the
+    target's schema first; all or nothing); returns its virtual time."""
+    place, when, values = read_program(data, harness, ident)
+    _load_values(harness.target, values)
+    _put_place(harness, place)
+    return when
+
+
+def _load_values(target: Any, values: Any) -> None:
+    """The target's load_state_values (which checks everything before it changes anything);
+    what the program refuses is one line."""
+    try:
+        target.load_state_values(values)
+    except MachineStateError:
+        raise
+    except (ValueError, KeyError, TypeError, IndexError, ArithmeticError) as exc:
+        text = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+        raise MachineStateError(f"the program refused it: {text[:300]}") from None
+
+
+def _put_place(harness: Harness, place: tuple[int, int, Fraction, Fraction]) -> None:
     harness.ticks, harness.frames_shown, harness._next_show, harness._shown_at = place
     harness.last_frame = harness.target.frame() if place[1] else None
-    return when
+
+
+# ---------------------------------------------------------------------------- in process
+@dataclass(frozen=True)
+class Snapshot:
+    """A state that never leaves this process (F4, a seek): the target's own in-memory
+    state and the harness's place."""
+
+    program: str
+    place: tuple[int, int, Fraction, Fraction]
+    time: Fraction
+    values: Any
+
+
+def snapshot(harness: Harness) -> Snapshot:
+    """The whole state now, in memory: the declared state where the target has one, else
+    its object graph (base.objstate: in-process only)."""
+    target = harness.target
+    if declares_state(target):
+        parts: dict[str, bytes] = {}
+        try:
+            values: Any = ("declared", encode(target.STATE_SCHEMA, target.state_values(),
+                                              parts), parts)
+        except (TypeError, ValueError, KeyError) as exc:
+            raise MachineStateError(f"cannot save this program's state now: {exc}") from None
+    else:
+        from camlab88.base.objstate import StateError, capture
+
+        try:
+            values = ("graph", *capture(target))
+        except StateError as exc:
+            raise MachineStateError(f"cannot save this program's state now: {exc}") from None
+    return Snapshot(harness.options.command, _place(harness), target.time(), values)
+
+
+def rewind(harness: Harness, snap: Snapshot) -> Fraction:
+    """Put a snapshot of this program back (all or nothing); returns its virtual time."""
+    if not isinstance(snap, Snapshot) or snap.program != harness.options.command:
+        raise MachineStateError("not a snapshot of this program")
+    target = harness.target
+    kind, *rest = snap.values
+    if kind == "declared":
+        try:
+            values = decode(target.STATE_SCHEMA, rest[0], rest[1], "state")
+        except StateValueError as exc:
+            raise MachineStateError(str(exc)) from None
+        _load_values(target, values)
+    else:
+        from camlab88.base.objstate import StateError, restore
+
+        try:
+            restore(target, rest[0], rest[1])
+        except (StateError, KeyError) as exc:
+            raise MachineStateError(f"the snapshot does not fit: {exc}") from None
+    _put_place(harness, snap.place)
+    return snap.time

@@ -9,15 +9,19 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
-from camlab88.emulator.harness.program_state import SavesState
+from camlab88.base.plainstate import Blob, Int, Opt, Record, Tuple
 from camlab88.emulator.host_input import HostEvent
+from camlab88.emulator.machine.state_file import MachineStateError, pack, unpack
+from camlab88.emulator.rainbow.device import Rainbow
+from camlab88.emulator.rainbow.errors import RainbowError
+from camlab88.emulator.rainbow.memory import VideoMemory
 from camlab88.emulator.rainbow.host_input import RainbowHostInput
 from camlab88.protocols.rainbow.script import Player
 
 FPS = 50  # the Rainbow's display frames per second
 
 
-class RainbowTarget(SavesState):
+class RainbowTarget:
     """``step()`` advances the program (True while it runs).  Window input goes to the
     device's input controller; with a ``script`` (protocols.rainbow.script.Player) the
     script drives the mouse and keyboard instead (and, with ``end_with_script``, the run
@@ -30,7 +34,7 @@ class RainbowTarget(SavesState):
 
     def __init__(self, session: Any, step: Callable[[], bool], title: str, keys: str,
                  script: Player | None = None, end_with_script: bool = True,
-                 status: Callable[[], str] | None = None) -> None:
+                 status: Callable[[], str] | None = None, program: Any = None) -> None:
         self.session = session
         self.step = step
         self.title = title
@@ -43,7 +47,35 @@ class RainbowTarget(SavesState):
         self._wire_at = 0
         self.tablet: Any = None  # a tablet source the command polls in its step
         self.on_input: Callable[[Any], None] | None = None  # told each scripted event
+        if program is not None:  # it declares its state: so does the target
+            self.program = program
+            self.STATE_VERSION = program.STATE_VERSION
+            self.STATE_SCHEMA = target_schema(program.STATE_SCHEMA)
 
+    # ------------------------------------------------------------------ declared state
+    def state_values(self) -> dict[str, Any]:
+        """The Rainbow and its client (rainbow_state), the script's place, the window's
+        mouse buttons and the program's own declared state."""
+        script = None if self.script is None else (
+            self.script.played(), self.script.wait)
+        return {"rainbow": rainbow_state(self.session), "script": script,
+                "buttons": self.host.buttons, "program": self.program.state_values()}
+
+    def load_state_values(self, values: dict[str, Any]) -> None:
+        """Continue from state_values() (checked against STATE_SCHEMA): every part is
+        checked before anything changes."""
+        put_rainbow = check_rainbow_state(self.session, values["rainbow"])
+        script = values["script"]
+        if (script is None) != (self.script is None) or (
+                script is not None and not self.script.can_resume(*script)):
+            raise MachineStateError("the state's place in the --events script does not fit "
+                                    "this run's script")
+        put_program = self.program.check_state_values(values["program"])
+        put_rainbow()
+        if script is not None:
+            self.script.resume(*script)
+        self.host.buttons = values["buttons"]
+        put_program()
 
     def handle_events(self, events: list[HostEvent]) -> None:
         if self.script is not None and not self.script.finished:
@@ -81,3 +113,44 @@ class RainbowTarget(SavesState):
         if take_tape is not None:
             out.append(("T", take_tape()))
         return out
+
+
+def target_schema(program: Any) -> Record:
+    """A Rainbow program's whole declared state: the Rainbow (its own versioned state),
+    the --events script's place, the window's mouse buttons and the program's own."""
+    return Record(rainbow=Blob(), script=Opt(Tuple((Int(0), Int(0)))), buttons=Int(0, 7),
+                  program=program)
+
+
+# ---------------------------------------------------------------------------- the Rainbow
+def rainbow_state(session: Any) -> bytes:
+    """The Rainbow of an in-process session as its own versioned state (like
+    RainbowMachine.save_state): the device's parts, the client's ids and calls."""
+    head, blobs = session.device.save_state()
+    c = session.client
+    head["client"] = [c._next_node, c._next_arc, c.calls]
+    return pack("rainbow-session", head, blobs)
+
+
+def check_rainbow_state(session: Any, data: bytes) -> Callable[[], None]:
+    """MachineStateError unless ``data`` (rainbow_state()) loads into ``session``: loaded
+    into a scratch device first; returns what puts it into the session's own device."""
+    head, blobs = unpack(data, "rainbow-session")
+    device = session.device
+    try:
+        scratch = Rainbow(VideoMemory(device.memory.width, device.memory.height))
+        scratch.load_state(head, blobs)
+        client = head["client"]
+        if not (isinstance(client, list) and len(client) == 3 and
+                all(type(v) is int and 0 <= v < 1 << 31 for v in client)):
+            raise ValueError(f"client ids {str(client)[:40]} are damaged")
+    except (ValueError, KeyError, TypeError, IndexError, RainbowError) as exc:
+        raise MachineStateError(f"Rainbow state: {str(exc)[:200]}") from None
+
+    def put() -> None:
+        device.load_state(head, blobs)
+        c = session.client
+        c._next_node, c._next_arc, c.calls = client
+        session.executor.last_frame = None  # composed again from the device
+        session.executor.decoder = type(session.executor.decoder)()
+    return put

@@ -8,7 +8,7 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
-from camlab88.emulator.harness.program_state import SavesState
+from camlab88.base.plainstate import Blob, Int, Record
 from camlab88.emulator.host_input import HostEvent
 from camlab88.emulator.machine import SigmaMachine
 from camlab88.emulator.machine.state_file import MachineStateError
@@ -62,7 +62,7 @@ class SigmaSessionRun:
             self.step()
 
 
-class SigmaProgramTarget(SavesState):
+class SigmaProgramTarget:
     """A program session on a Sigma machine (KAS's editor and path fronts; see
     ``SigmaSessionRun``).  Window keys named in ``key_names`` (or printable characters) are
     struck on the terminal; the left mouse button is the stylus tip.  A timed ``script``
@@ -194,21 +194,19 @@ class PeriodTarget:
     def time(self) -> Fraction:
         return self.k / self._period
 
-    def save_state(self) -> bytes:
-        from camlab88.emulator.machine.state_file import pack
+    # its declared state (program_state): the period reached and the machine's own
+    # versioned state; the program's generator is made again and run to that period
+    STATE_VERSION = 1
+    STATE_SCHEMA = Record(k=Int(0), machine=Blob())
 
+    def state_values(self) -> dict[str, Any]:
         if self.result is not None:
             raise MachineStateError("the line test has finished: nothing left to save")
-        return pack("period", {"k": self.k}, {"machine": self.machine.save_state()})
+        return {"k": self.k, "machine": self.machine.save_state()}
 
-    def load_state(self, data: bytes) -> None:
-        from camlab88.emulator.machine.state_file import unpack
-
-        head, blobs = unpack(data, "period")
-        k = head.get("k")
-        if type(k) is not int or k < 0 or "machine" not in blobs:
-            raise MachineStateError("line test state: the period or the machine is missing")
-        self.machine.check_state(blobs["machine"])  # refused here: nothing has run
+    def load_state_values(self, values: dict[str, Any]) -> None:
+        k, state = values["k"], values["machine"]
+        self.machine.check_state(state)  # refused here: nothing has run
         at_start = self.k == 0 and self.result is None
         if at_start or (self.restart is None and k >= self.k and self.result is None):
             machine, periods, at = self.machine, self.periods, self.k
@@ -221,5 +219,5 @@ class PeriodTarget:
                 at = next(periods) + 1
             except StopIteration:
                 raise MachineStateError(f"the line test ends before period {k}") from None
-        machine.load_state(blobs["machine"])
+        machine.load_state(state)
         self.machine, self.periods, self.k, self.result = machine, periods, at, None

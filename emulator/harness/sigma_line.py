@@ -17,9 +17,10 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
-from camlab88.emulator.harness.program_state import SavesState
+from camlab88.base.plainstate import Blob, Bool, Frac, Int, Opt, Record
 from camlab88.emulator.host_input import HostEvent
 from camlab88.emulator.machine import SigmaMachine
+from camlab88.emulator.machine.state_file import MachineStateError
 from camlab88.emulator.sigma.host_input import KEYS_HINT, to_terminal
 
 TICK = Fraction(1, 100)  # virtual seconds per tick
@@ -56,13 +57,19 @@ class OutsideTap:
         return getattr(self._endpoint, name)
 
 
-class SigmaLineTarget(SavesState):
+class SigmaLineTarget:
     """A Sigma machine whose line's host end ``bridge`` serves (None in a replay: the
     recorded outside traffic comes back through ``put_wire`` / ``put_hang_up``).  Runs until
     ``until`` seconds of line time (None: for ever).  Set the machine's tracer
     (``machine.trace``) for ``--trace`` / ``--strict``."""
 
-    _state_exclude = ("bridge", "tracer", "report")  # the outside world: kept as built
+    # its declared state (emulator.harness.program_state): the machine's own versioned
+    # state, when the order now unfinished began, how many orders the terminal had done, the
+    # --events script's place, when outside bytes last came and whether a client has left;
+    # the bridge, the report and the until are the command line's, never a state's
+    STATE_VERSION = 1
+    STATE_SCHEMA = Record(machine=Blob(), order_since=Opt(Frac()), commands=Int(0),
+                          script_at=Int(0), heard_at=Frac(), client_left=Bool())
 
     fps = 25
     escape_is_a_key = True  # a terminal key: host programs read ESC (close the window quits)
@@ -90,6 +97,29 @@ class SigmaLineTarget(SavesState):
         self._client_left = False  # a client went; its bytes may still be on the line
         self.tap = OutsideTap(machine.outside, self._line_hung_up)  # the bridge's endpoint
         machine.watch_sent(self._up)
+
+    def state_values(self) -> dict[str, Any]:
+        return {"machine": self.machine.save_state(), "order_since": self._order_since,
+                "commands": self._commands, "script_at": self._script_at,
+                "heard_at": self._heard_at, "client_left": self._client_left}
+
+    def load_state_values(self, values: dict[str, Any]) -> None:
+        """Continue from state_values() (checked against STATE_SCHEMA); the machine's part
+        is checked whole before anything changes."""
+        self.machine.check_state(values["machine"])
+        if values["script_at"] > len(self.script):
+            raise MachineStateError(f"the state is at --events script event "
+                                    f"{values['script_at']}; this run's script has "
+                                    f"{len(self.script)}")
+        try:
+            self.machine.load_state(values["machine"])
+        except ValueError as exc:  # (checked above: not expected)
+            raise MachineStateError(str(exc)) from None
+        self._order_since, self._commands = values["order_since"], values["commands"]
+        self._script_at, self._heard_at = values["script_at"], values["heard_at"]
+        self._client_left = values["client_left"]
+        self._frame, self._replayed, self._sent, self._received = None, [], bytearray(), b""
+        self.tap.take()
 
     def _up(self, data: bytes) -> None:
         self._sent += data

@@ -21,10 +21,14 @@ from camlab88.base.atomicfile import write_atomic
 from camlab88.emulator.harness.loop import Plugin
 from camlab88.emulator.harness.program_state import (
     SUFFIX,
+    StateNotSaved,
     StateOptions,
+    declares_state,
     identity,
     load_program,
+    rewind,
     save_program,
+    snapshot,
 )
 from camlab88.emulator.harness.written import tell_written
 from camlab88.emulator.host_input import HostEvent, KeyDown
@@ -34,6 +38,20 @@ if TYPE_CHECKING:
     from camlab88.emulator.harness.loop import Harness
 
 KEEP = 64  # snapshots held for F4
+MAX_STATE_FILE = 64 << 20  # bytes (emulator.machine.state_file.MAX_FILE)
+
+
+def read_state_file(command: str, path: Path) -> bytes:
+    """A state file's bytes, at most MAX_STATE_FILE of them (read no further): the only I/O
+    a load does."""
+    try:
+        with open(path, "rb") as f:
+            data = f.read(MAX_STATE_FILE + 1)
+    except OSError as exc:
+        raise SystemExit(f"{command}: cannot read {path}: {exc.strerror or exc}") from None
+    if len(data) > MAX_STATE_FILE:
+        raise SystemExit(f"{command}: {path}: not loaded: larger than {MAX_STATE_FILE} bytes")
+    return data
 
 
 class StatePlugin(Plugin):
@@ -51,20 +69,28 @@ class StatePlugin(Plugin):
             options.snapshots if options.snapshots is not None else [])
         self._next_snapshot = Fraction(0)
         self.written: list[Path] = []
+        self.refused = False  # the run was refused at its start: nothing to say at its end
 
     # ------------------------------------------------------------------ start / end
     def start(self, harness: Harness) -> None:
         o = self.options
-        if o.load is not None or o.load_data is not None:
+        if (o.save is not None or o.load is not None) and not declares_state(harness.target):
+            flag = "--save-state" if o.save is not None else "--load-state"
+            self.refused = True
+            raise SystemExit(f"{harness.options.command}: {flag}: this program does not "
+                             "declare its state yet, so it saves and loads none (F4 rewinds)")
+        if o.load_data is not None:  # a seek: this process's own snapshot
             try:
-                data = o.load_data if o.load_data is not None else Path(o.load).read_bytes()
-                when = load_program(data, harness, identity(harness, o.version))
-            except OSError as exc:
-                raise SystemExit(f"{harness.options.command}: cannot read {o.load}: "
-                                 f"{exc.strerror or exc}") from None
+                self._next_snapshot = rewind(harness, o.load_data)
             except MachineStateError as exc:
-                name = o.load if o.load_data is None else "the state to start from"
-                raise SystemExit(f"{harness.options.command}: {name}: not loaded: "
+                raise SystemExit(f"{harness.options.command}: the state to start from: not "
+                                 f"loaded: {exc}") from None
+        elif o.load is not None:
+            data = read_state_file(harness.options.command, Path(o.load))
+            try:
+                when = load_program(data, harness, identity(harness, o.version))
+            except MachineStateError as exc:
+                raise SystemExit(f"{harness.options.command}: {o.load}: not loaded: "
                                  f"{exc}") from None
             self.last_saved = data
             self._next_snapshot = when
@@ -74,18 +100,23 @@ class StatePlugin(Plugin):
         o = self.options
         if o.save is not None and o.at is not None and not self.saved_at_time and now >= o.at:
             self.saved_at_time = True
-            self._write(harness, Path(o.save))
-        if o.seek_to is not None and now >= o.seek_to:  # a seek's first run ends here
-            o.seek_state = save_program(harness, identity(harness, o.version))
-            harness.stop()
+            self._write(harness, Path(o.save), asked=True)
+        if o.seek_to is not None and now >= o.seek_to:  # a seek's first run ends here ...
+            try:
+                o.seek_state = snapshot(harness)
+                harness.stop()
+            except MachineStateError:
+                pass  # ... or at the first tick after it with a state (e.g. a dialogue ended)
         elif (harness.window is not None or o.snapshots is not None) and \
                 now >= self._next_snapshot:
             self._snapshot(harness, now)
 
     def finish(self, harness: Harness) -> None:
         o = self.options
+        if self.refused:
+            return
         if o.save is not None and o.at is None:
-            self._write(harness, Path(o.save))
+            self._write(harness, Path(o.save), asked=True)
         elif o.save is not None and not self.saved_at_time:
             print(f"{harness.options.command}: --save-state: the run ended at "
                   f"{float(harness.target.time()):g} s, before --at {float(o.at or 0):g} s; "
@@ -123,9 +154,14 @@ class StatePlugin(Plugin):
         if not older:
             _say(harness, "F4: no earlier snapshot")
             return
-        when, data = older[-1]
+        when, snap = older[-1]
         self.snapshots[:] = older[:-1]
-        self._load(harness, data, f"F4: back to {float(when):g} s")
+        try:
+            self._next_snapshot = rewind(harness, snap)
+        except MachineStateError as exc:
+            _say(harness, f"F4: not loaded: {exc}")
+            return
+        self._shown(harness, f"F4: back to {float(when):g} s")
 
     # ------------------------------------------------------------------ helpers
     def _refuse_going_back(self, harness: Harness, key: str) -> bool:
@@ -136,36 +172,42 @@ class StatePlugin(Plugin):
 
     def _load(self, harness: Harness, data: bytes, said: str) -> None:
         try:
-            when = load_program(data, harness, None)  # this run's own state
+            when = load_program(data, harness, identity(harness, self.options.version))
         except MachineStateError as exc:
             _say(harness, f"not loaded: {exc}")
             return
         self._next_snapshot = when
+        self._shown(harness, said)
+
+    def _shown(self, harness: Harness, said: str) -> None:
         if harness.window is not None and harness.last_frame is not None:
             harness.window.show(harness.last_frame)
         _say(harness, said)
 
     def _snapshot(self, harness: Harness, now: Fraction) -> None:
         try:
-            data = save_program(harness, identity(harness, self.options.version))
+            snap = snapshot(harness)
         except MachineStateError:
             return  # e.g. mid-dialogue: the next tick tries again
-        self.snapshots.append((now, data))
+        self.snapshots.append((now, snap))
         if len(self.snapshots) > KEEP:  # thin out: every other one of the older half
             half = len(self.snapshots) // 2
             self.snapshots[:] = self.snapshots[:half:2] + self.snapshots[half:]
         self._next_snapshot = now + self.options.snapshot_every
 
-    def _write(self, harness: Harness, path: Path) -> None:
+    def _write(self, harness: Harness, path: Path, asked: bool = False) -> None:
+        """Save to ``path``; a state that cannot be made or written is said in one line, and
+        with ``asked`` (--save-state) the run ends with status 1 (docs/exit_status.md)."""
         try:
             data = save_program(harness, identity(harness, self.options.version))
-        except MachineStateError as exc:
-            _say(harness, f"no state saved at {float(harness.target.time()):g} s: {exc}")
-            return
-        try:
             write_atomic(path, data)
-        except OSError as exc:
-            _say(harness, f"cannot write {path}: {exc.strerror or exc}")
+        except (MachineStateError, OSError) as exc:
+            why = exc.strerror or exc if isinstance(exc, OSError) else exc
+            said = f"--save-state {path}: no state saved at " \
+                f"{float(harness.target.time()):g} s: {why}"
+            if asked:
+                raise StateNotSaved(f"{harness.options.command}: {said}") from None
+            _say(harness, said)
             return
         self.last_saved = data
         self.written.append(path)

@@ -9,7 +9,10 @@ up a menu ('Do nothing' first); the choice appears as a coloured message.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
+from typing import Any
 
+from camlab88.base.plainstate import Bool, Float, Int, ListOf, Record, Tuple
 from camlab88.protocols.rainbow import transparency
 from camlab88.protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
 from camlab88.protocols.rainbow.events import MouseEvent
@@ -62,6 +65,36 @@ class Demo:
         self.speed = 1.0
         self.frozen = {"poly": False, "splodge": False}
         self.poly_phase = self.spl_phase = 0.0
+
+    # its declared state (emulator.harness.program_state); the pads are the Rainbow's
+    STATE_VERSION = 1
+    STATE_SCHEMA = Record(
+        t=Int(0), speed=Float(), frozen=Record(poly=Bool(), splodge=Bool()),
+        poly_phase=Float(), spl_phase=Float(),
+        balls=ListOf(Tuple((Float(), Float(), Float(), Float())), 6),
+        db=DoubleBuffer.STATE_SCHEMA, msg=MessageArea.STATE_SCHEMA, menu=PopupMenu.STATE_SCHEMA)
+
+    def state_values(self) -> dict[str, Any]:
+        return {"t": self.t, "speed": self.speed, "frozen": dict(self.frozen),
+                "poly_phase": self.poly_phase, "spl_phase": self.spl_phase,
+                "balls": [tuple(b) for b in self.balls], "db": self.db.state_values(),
+                "msg": self.msg.state_values(), "menu": self.menu.state_values()}
+
+    def check_state_values(self, values: dict[str, Any]) -> Callable[[], None]:
+        if len(values["balls"]) != len(self.balls):
+            raise ValueError(f"{len(values['balls'])} balls, this demo has {len(self.balls)}")
+        parts = [self.db.check_state_values(values["db"]),
+                 self.msg.check_state_values(values["msg"]),
+                 self.menu.check_state_values(values["menu"])]
+
+        def put() -> None:
+            self.t, self.speed = values["t"], values["speed"]
+            self.frozen = dict(values["frozen"])
+            self.poly_phase, self.spl_phase = values["poly_phase"], values["spl_phase"]
+            self.balls = [list(b) for b in values["balls"]]
+            for part in parts:
+                part()
+        return put
 
     def _handle(self, e: object) -> None:
         if not isinstance(e, MouseEvent):

@@ -260,6 +260,21 @@ class Player:
     def __init__(self, script: Script) -> None:
         self.steps = list(script.steps)
         self.wait = 0
+        self._total = len(self.steps)
+
+    def played(self) -> int:
+        """How many batches have been given (a save state's place in the script)."""
+        return self._total - len(self.steps)
+
+    def can_resume(self, played: int, wait: int) -> bool:
+        """``resume(played, wait)`` fits this script (from its start)."""
+        return self.played() == 0 and 0 <= played <= self._total and wait >= 0 and (
+            played > 0 or wait == 0)
+
+    def resume(self, played: int, wait: int) -> None:
+        """Continue a fresh player from a saved place (``can_resume`` first)."""
+        del self.steps[:played]
+        self.wait = wait
 
     @property
     def finished(self) -> bool:

@@ -21,9 +21,12 @@ redrawn and the lookup table is never rewritten: translucence is kept by the tab
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
+from camlab88.base.plainstate import Bool, Int, Record
 from camlab88.protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
 
 COMPONENTS = ("back", "left", "right", "shelves")          # plane pairs 0-1, 2-3, 4-5, 6-7
@@ -183,6 +186,18 @@ class ShelfDemo:
         self.shelf = build(c)
         self.t = 0
         self.paused = False
+
+    # its declared state (emulator.harness.program_state); the pads are the Rainbow's
+    STATE_VERSION = 1
+    STATE_SCHEMA = Record(t=Int(0), paused=Bool())
+
+    def state_values(self) -> dict[str, Any]:
+        return {"t": self.t, "paused": self.paused}
+
+    def check_state_values(self, values: dict[str, Any]) -> Callable[[], None]:
+        def put() -> None:
+            self.t, self.paused = values["t"], values["paused"]
+        return put
 
     def step(self) -> tuple[int, int]:
         c = self.client

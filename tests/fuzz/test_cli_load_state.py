@@ -1,8 +1,9 @@
 """Damaged whole-program states through the command line's ``--load-state FILE``: real states
-of three programs (the CA program, the snooker program, the Sigma terminal's run), saved by
-the commands themselves, then loaded back by the same commands in process after random
-damage — to the file's bytes, to its headers' and object tree's values (fuzz.states edits
-them with the parts opened, so the damage gets past zlib's checksums) and to its arrays.
+of four programs (the CA program, the snooker program, the Sigma terminal's run, the Rainbow
+demo), saved by the commands themselves, then loaded back by the same commands in process
+after random damage — to the file's bytes, to its header's declared values (fuzz.states
+edits them with the parts opened, so the damage gets past zlib's checksums) and to its
+parts (the machines' own states).
 Every outcome is a clean run or one line naming the file with status 1 or 2: never a
 traceback, a hang or runaway memory. Each load runs in a forked copy of this process: not to
 keep a damaged state from leaking into the next example (a refused load changes nothing and
@@ -77,20 +78,19 @@ def test_a_state_damaged_in_its_envelope_is_refused_naming_the_file(name, seeds,
         assert code == 2 and str(scratch) in err and "Traceback" not in err, err
 
 
-def test_a_state_whose_program_fails_on_its_values_is_refused_naming_the_file(
+def test_a_state_whose_program_refuses_its_values_is_refused_naming_the_file(
         seeds, scratch) -> None:
-    """A damaged value the objects accept but the program cannot run on (here the Sigma
-    run's line tracer, replaced by a number): one line naming the file, status 2 — the
-    outcome that was a traceback before the command line caught it."""
-    data = seeds["sigma-run"]
+    """A value of the declared kind the program itself refuses (the CA program's edit mode
+    is a text, but only one of the program's modes is taken): one line naming the file,
+    status 2."""
+    data = seeds["ca-program"]
     opened = open_state(data)
-    assert b'"tracer"' in opened
-    damaged = close_state(opened.replace(b'["tracer", null]', b'["tracer", 7]', 1))
-    assert damaged != data, "the Sigma run's state no longer holds a tracer of None"
-    assert check_isolated("sigma-run", damaged, scratch, LIMIT_S, MEMORY_MB) is None
+    assert b'"edit_mode": "step_up"' in opened
+    damaged = close_state(opened.replace(b'"edit_mode": "step_up"', b'"edit_mode": "/x"', 1))
+    assert check_isolated("ca-program", damaged, scratch, LIMIT_S, MEMORY_MB) is None
     scratch.write_bytes(damaged)
-    code, err = load_state("sigma-run", scratch, LIMIT_S)
-    assert code == 2 and str(scratch) in err and "failed on this state" in err, err
+    code, err = load_state("ca-program", scratch, LIMIT_S)
+    assert code == 2 and str(scratch) in err and "not one of the program's" in err, err
 
 
 json_values = st.sampled_from(ODD_VALUES) | st.integers() | st.floats(allow_nan=False) | \

@@ -64,10 +64,10 @@ def test_a_sigma_state_keeps_bytes_still_on_the_line():
 def test_a_state_from_another_version_or_device_is_refused():
     state = SigmaMachine().save_state()
     n = int.from_bytes(state[len(MAGIC):len(MAGIC) + 4], "big")
-    head = state[len(MAGIC) + 4:len(MAGIC) + 4 + n].replace(b'"format_version": 1',
+    head = state[len(MAGIC) + 4:len(MAGIC) + 4 + n].replace(b'"format_version": 2',
                                                              b'"format_version": 9')
     bumped = MAGIC + len(head).to_bytes(4, "big") + head + state[len(MAGIC) + 4 + n:]
-    with pytest.raises(MachineStateError, match="version 9; this camlab88 reads version 1"):
+    with pytest.raises(MachineStateError, match="version 9; this camlab88 reads version 2"):
         SigmaMachine().load_state(bumped)
     with pytest.raises(MachineStateError, match="for a 'sigma', not a 'rainbow'"):
         RainbowMachine().load_state(state)
@@ -133,3 +133,41 @@ def test_a_sigma_state_continues_identically_in_a_fresh_process(tmp_path):
     want = f"{hashlib.sha256(m.frame().tobytes()).hexdigest()} {m.clock.exact} " \
            f"{m.host.read().hex()}"
     assert fresh_python(CONTINUE, str(path)).strip() == want
+
+
+def _file(head: dict, body: bytes) -> bytes:
+    import json
+
+    text = json.dumps(dict(head, device="sigma"), sort_keys=True).encode()
+    return MAGIC + len(text).to_bytes(4, "big") + text + body
+
+
+def test_the_state_file_reads_format_1_and_bounds_what_it_reads() -> None:
+    """Format 1 (parts without their inflated length) is still read; a part claiming more
+    than deflate gives, a zip bomb, a header nested too deep or a file too long is refused
+    in one line before anything large is allocated."""
+    import zlib
+
+    from camlab88.emulator.machine import state_file
+
+    part = zlib.compress(b"abc" * 1000, 1)
+    head, blobs = state_file.unpack(_file({"format_version": 1, "blobs": [["p", len(part)]]},
+                                          part), "sigma")
+    assert blobs == {"p": b"abc" * 1000}
+    bomb = zlib.compress(b"\0" * (8 << 20), 9)
+    for entry, why in ((["p", len(bomb), 10], "longer than it says"),
+                       (["p", len(bomb), 1 << 40], "claims"),
+                       (["p", 3, 10**6], "claims")):
+        data = _file({"format_version": 2, "blobs": [entry]},
+                     bomb if entry[1] == len(bomb) else b"abc")
+        with pytest.raises(MachineStateError, match=why) as exc:
+            state_file.unpack(data, "sigma")
+        assert "\n" not in str(exc.value)
+    deep = _file({"format_version": 2, "blobs": [], "x": 0}, b"")
+    n = int.from_bytes(deep[len(MAGIC):len(MAGIC) + 4], "big")
+    text = deep[len(MAGIC) + 4:len(MAGIC) + 4 + n].replace(b'"x": 0', b'"x": ' + b"[" * 100000
+                                                           + b"]" * 100000)
+    with pytest.raises(MachineStateError, match="nested deeper than 64"):
+        state_file.unpack(MAGIC + len(text).to_bytes(4, "big") + text, "sigma")
+    with pytest.raises(MachineStateError, match="at most"):
+        state_file.unpack(MAGIC + b"\0" * (state_file.MAX_FILE + 1), "sigma")

@@ -1,7 +1,8 @@
 """A state saved by one process and loaded by another continues with the frames of the
-uninterrupted run, for the six programs the device tests in test_state_files.py leave out
-(kas paint, kas view, snooker visualise, ca program, sigma run, rainbow run): ``--frames all``
-of a run that saves at ``--at T`` against ``--frames rest`` of a new process that loads it."""
+uninterrupted run, for the programs that declare their state and that test_state_files.py
+leaves out (kas view, snooker replay, snooker visualise, ca program, sigma run, rainbow
+run): ``--frames all`` of a run that saves at ``--at T`` against ``--frames rest`` of a new
+process that loads it."""
 
 from __future__ import annotations
 
@@ -35,8 +36,7 @@ def _ca_program(d: Path) -> list[str]:
 
 
 PROGRAMS: dict[str, tuple[Callable[[Path], list[str]], str]] = {
-    "kas-paint": (lambda d: ["kas", "paint", "face.kas", "--headless", "--script",
-                             "fig-3.7.script"], "1"),
+    "snooker-replay": (lambda d: ["snooker", "replay", "pink_shot.cp", "--headless"], "1"),
     "kas-view": (_kas_view, "1"),
     "snooker-visualise": (lambda d: ["snooker", "visualise", "pink_shot.cp", "example.views",
                                      "--headless"], "1"),
@@ -46,7 +46,7 @@ PROGRAMS: dict[str, tuple[Callable[[Path], list[str]], str]] = {
     "rainbow-run": (lambda d: ["rainbow", "run", "--headless", "--stop-after", "30", "--demo",
                                "pads"], "0.5"),
 }
-INPUTS = {"kas-paint": "examples/figures/fig-3.7.session",
+INPUTS = {"snooker-replay": "examples/figures/fig-6.7.session",
           "snooker-visualise": "examples/figures/fig-6.7.session",
           "sigma-run": "tests/data/sessions/sigma_run.session"}
 

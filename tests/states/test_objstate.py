@@ -10,7 +10,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from camlab88.base.objstate import Resumable, StateError, capture, restore
+from camlab88.base.objstate import StateError, capture, restore
 
 
 def _through_json(tree):
@@ -84,47 +84,6 @@ def test_a_damaged_tree_is_a_state_error() -> None:
             restore(None, tree, [])
 
 
-def test_a_dialogue_in_progress_is_made_again_with_its_answers() -> None:
-    from camlab88.apps.ca.program.program import CAProgram, Options
-    from camlab88.emulator.rainbow.session import in_process
-
-    prog = CAProgram(in_process().client, Options(pattern="glider"))
-    from camlab88.apps.ca.program import commands
-
-    prog.frame()
-    prog._start(commands.alter_display(prog))
-    assert isinstance(prog.dialogue, Resumable)
-    tree, blobs = capture(prog)
-    fresh = CAProgram(in_process().client, Options(pattern="glider"))
-    restore(fresh, _through_json(tree), blobs)
-    assert isinstance(fresh.dialogue, Resumable) and fresh.dialogue.gen is not None
-    assert fresh.asking == prog.asking
-    prog._answer("Monochrome")
-    fresh._answer("Monochrome")
-    assert prog.display.mode == fresh.display.mode == "mono"
-
-
-class _Foreign:
-    """Something a state cannot hold (a class outside camlab88's packages)."""
-
-
-def test_a_dialogue_begun_while_the_program_holds_the_unsaveable_runs_and_refuses_a_save(
-) -> None:
-    from camlab88.apps.ca.program import commands
-    from camlab88.apps.ca.program.program import CAProgram, Options
-    from camlab88.emulator.rainbow.session import in_process
-
-    prog = CAProgram(in_process().client, Options(pattern="glider"))
-    prog.frame()
-    prog.oddity = _Foreign()
-    prog._start(commands.alter_display(prog))  # begins: the dialogue is not refused
-    assert prog.asking
-    with pytest.raises(StateError, match="a dialogue began while"):
-        capture(prog)
-    prog._answer("Monochrome")
-    assert prog.display.mode == "mono"
-
-
 def test_a_state_never_chooses_a_file_name_the_command_line_gave() -> None:
     from camlab88.emulator.harness.program_state import StateOptions as Box  # a plain class of ours
 
@@ -181,26 +140,3 @@ def test_a_state_is_never_written_into_what_a_module_shares() -> None:
     restore(fresh, *capture(saved))
     assert EDIT_ITEMS == kept and fresh.items is not EDIT_ITEMS
     assert fresh.items == {"centre": "changed by a state"}
-
-
-def test_a_dialogue_that_cannot_be_made_again_leaves_the_program_as_it_was() -> None:
-    """The last step of a load (a dialogue made again, after the whole tree is in place)
-    fails: everything the load wrote, the dialogue's own restores included, is put back."""
-    from camlab88.apps.ca.program import commands
-    from camlab88.apps.ca.program.program import CAProgram, Options
-    from camlab88.emulator.rainbow.session import in_process
-
-    prog = CAProgram(in_process().client, Options(pattern="glider"))
-    prog.frame()
-    prog._start(commands.alter_display(prog))
-    tree, blobs = capture(prog)
-    text = json.dumps(tree)
-    maker = '"maker", "camlab88.apps.ca.program.commands:alter_display"'
-    assert maker in text
-    tree = json.loads(text.replace(maker, '"maker", "camlab88.apps.ca.program.commands:nothing"'))
-    fresh = CAProgram(in_process().client, Options(pattern="gosper_gun"))
-    fresh.frame()
-    contents = capture(fresh)
-    with pytest.raises(StateError, match="dialogue 'camlab88.apps.ca.program.commands:nothing'"):
-        restore(fresh, tree, blobs)
-    assert capture(fresh) == contents

@@ -7,23 +7,23 @@ into the off-screen buffer before it is wanted, and discarded after any interven
 
 from __future__ import annotations
 
-import inspect
 import os
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 from camlab88.apps.ca import library, log
 from camlab88.apps.ca.engine import Engine
 from camlab88.apps.ca.patterns import read_pattern
 from camlab88.apps.ca.program import commands, stepping
+from camlab88.apps.ca.program import state as program_state
 from camlab88.apps.ca.program.commands import ERROR, Ask, Dialogue
 from camlab88.apps.ca.program.drawing import Display
 from camlab88.apps.ca.program.edit import Editor
 from camlab88.apps.ca.program.menus import EDIT_MODES, MainMenu, choice_menu, edit_menu
 from camlab88.apps.ca.program.viewport import VIEW_H, VIEW_W, Viewport
 from camlab88.apps.ca.session import Session
-from camlab88.base.objstate import Resumable
 from camlab88.protocols.rainbow.client import RainbowClient
 from camlab88.protocols.rainbow.events import LEFT, RIGHT, KeyEvent, MouseEvent
 
@@ -50,12 +50,15 @@ class Options:
 
 
 class CAProgram:
-    @staticmethod
-    def dialogue_makers() -> dict[str, Callable[..., Dialogue]]:
-        """The program's dialogues by name: what a save state may make again."""
-        return {f"{fn.__module__}:{fn.__qualname__}": fn
-                for module in (commands, stepping) for fn in vars(module).values()
-                if inspect.isgeneratorfunction(fn) and fn.__module__ == module.__name__}
+    # its declared state (the harness's program_state): apps/ca/program/state.py
+    STATE_VERSION = program_state.VERSION
+    STATE_SCHEMA = program_state.SCHEMA
+
+    def state_values(self) -> dict[str, Any]:
+        return program_state.state_values(self)
+
+    def check_state_values(self, values: dict[str, Any]) -> Callable[[], None]:
+        return program_state.check_state_values(self, values)
 
     def __init__(self, client: RainbowClient, options: Options | None = None) -> None:
         self.client = client
@@ -91,7 +94,7 @@ class CAProgram:
         self.finished = False
         self.mouse = (VIEW_W // 2, VIEW_H // 2)
         self.pan_from: tuple[int, int] | None = None
-        self.dialogue: Resumable | None = None
+        self.dialogue: Dialogue | None = None
         self.asking: Ask | None = None
         self.corner: tuple[int, int] | None = None
         self.text = ""
@@ -261,8 +264,7 @@ class CAProgram:
 
     # -- dialogues ----------------------------------------------------------------------------
     def _start(self, dialogue: Dialogue) -> None:
-        # kept with what makes it again, so a save state can hold a dialogue in progress
-        self.dialogue = Resumable(self, "dialogue", dialogue, self.dialogue_makers())
+        self.dialogue = dialogue
         self._answer(None, first=True)
 
     def _answer(self, value, first: bool = False) -> None:

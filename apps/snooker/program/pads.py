@@ -11,12 +11,15 @@ under the cursor.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 from camlab88.apps.snooker.program import layout
 from camlab88.apps.snooker.program.layout import TableView
 from camlab88.apps.snooker.table import BROWN, N_BALLS, is_red
+from camlab88.base.plainstate import Blob, Int, ListOf, Opt, Record, Str, Tuple
 from camlab88.protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
 from camlab88.protocols.rainbow.ui import DoubleBuffer, MessageArea
 
@@ -78,7 +81,47 @@ class TextBox:
             self.shown = None
 
 
+def _ints(rows: tuple[tuple[int, ...], ...]) -> list[tuple[int, ...]]:
+    return [tuple(int(v) for v in row) for row in rows]
+
+
+SHOWN = Opt(Tuple((Str(65536), Str(64))))  # a text box's (text, colour), or hidden
+SCENE = Opt(Record(pos=Blob(4096), on=Blob(4096), lines=ListOf(Tuple((Int(),) * 5)),
+                   dots=ListOf(Tuple((Int(),) * 3)), rings=ListOf(Tuple((Int(),) * 4))))
+BOXES = ("help", "info", "step_box", "status", "frame_box")
+
+
 class Display:
+    # its declared state: the balls' buffers, the cursor's place, each text box's text and
+    # the scene last drawn (so a redraw is skipped exactly where the running one skips it)
+    STATE_SCHEMA = Record(balls=DoubleBuffer.STATE_SCHEMA, cursor_at=Opt(Tuple((Int(), Int()))),
+                          boxes=Record(**{b: SHOWN for b in BOXES}), last_scene=SCENE)
+
+    def state_values(self) -> dict[str, Any]:
+        scene = None
+        if self.last_scene is not None:
+            pos, on, (lines, dots, rings) = self.last_scene
+            scene = {"pos": pos, "on": on, "lines": _ints(lines), "dots": _ints(dots),
+                     "rings": _ints(rings)}
+        return {"balls": self.balls.state_values(), "cursor_at": self.cursor_at,
+                "boxes": {b: getattr(self, b).shown for b in BOXES}, "last_scene": scene}
+
+    def check_state_values(self, values: dict[str, Any]) -> Callable[[], None]:
+        put_balls = self.balls.check_state_values(values["balls"])
+        scene = values["last_scene"]
+
+        def put() -> None:
+            put_balls()
+            self.cursor_at = values["cursor_at"]
+            for b in BOXES:
+                box = getattr(self, b)
+                box.shown = values["boxes"][b]
+                box.area.text = "" if box.shown is None else box.shown[0]
+            self.last_scene = None if scene is None else (
+                scene["pos"], scene["on"],
+                (tuple(scene["lines"]), tuple(scene["dots"]), tuple(scene["rings"])))
+        return put
+
     def __init__(self, client: RainbowClient, view: TableView) -> None:
         c = self.client = client
         self.view = view

@@ -15,8 +15,9 @@ from __future__ import annotations
 
 import math
 import os
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 from camlab88.apps.snooker import aiming
@@ -35,9 +36,22 @@ from camlab88.apps.snooker.program.pads import (
 from camlab88.apps.snooker.rules import describe_on
 from camlab88.apps.snooker.session import Session, SessionError
 from camlab88.apps.snooker.state import effective_velocity
-from camlab88.apps.snooker.table import BALL_NAMES, CUE, cushion_sides
+from camlab88.apps.snooker.table import BALL_NAMES, CUE, N_BALLS, cushion_sides
+from camlab88.base.plainstate import (
+    Bool,
+    Choice,
+    Float,
+    Int,
+    JsonText,
+    ListOf,
+    Opt,
+    Record,
+    Str,
+    Tuple,
+)
 from camlab88.protocols.rainbow.client import RainbowClient
 from camlab88.protocols.rainbow.events import LEFT, MIDDLE, Event, KeyEvent, MouseEvent
+from camlab88.protocols.rainbow.ui import PopupMenu
 
 MAGNIFY = 4  # left button: mouse movement x4 (§6.2.1)
 REPEAT_DELAY, REPEAT_EVERY = 12, 2  # auto-repeat in display frames
@@ -48,6 +62,14 @@ WARN_COLOUR = "#ffb0b0"
 START_HELP = ("Middle button: menu of options (over a ball: the ball's menu).\n"
               "Right: restart simulation.  Left held: mouse moves x4.\n"
               "Key t: table constants (ball size, cushion restitution, friction).")
+
+
+# what the program may be doing (``mode``): a state names one of these, nothing else
+MODES = frozenset(["aim_confirm", "aim_pot", "aim_target", "alter", "escape", "exit", "idle",
+                   "menu", "position", "replay", "running", "spin", "start", "velocity",
+                   *(f"keys:{p}" for p in ("position", "velocity", "replay", "aim_speed",
+                                           "aim_cushions")),
+                   *(f"keys:table:{item}" for item in constants.ITEMS)])
 
 
 class Program:
@@ -92,6 +114,83 @@ class Program:
             self.mode = "start"
             self.help_text = (f"New game (key n, or right button) or restore {restore_name}\n"
                               "(key r, or middle button)?")
+
+    # ------------------------------------------------------------------ declared state
+    # (the harness's program_state): the game as the session file holds it (read back by
+    # Session.from_json), the program's own values, the menus and the display. What the
+    # command line gave (the file to restore, where to save) stays the fresh build's; a
+    # state is not saved while a file name is being asked for (it would choose the file).
+    STATE_VERSION = 1
+    _POINT = Tuple((Float(), Float()))
+    _MENUS = ("green", "orange", "constants")
+    STATE_SCHEMA = Record(
+        session=JsonText(), restore_pending=Bool(), cursor=_POINT,
+        mouse=Opt(Tuple((Int(), Int()))), buttons=Int(0, 7), mode=Str(64),
+        ball=Opt(Int(0, N_BALLS - 1)), menu=Opt(Choice(_MENUS)), menu_cursor=_POINT,
+        text=Str(MAX_TEXT), prompt=Str(4096), help_text=Str(4096), help_colour=Str(64),
+        arrow_end=_POINT, spin=Float(), spin_from=Float(), unit=Choice(("frame", "event")),
+        unit_acc=Float(), repeat=Opt(Tuple((Int(-1, 1), Int(0)))),
+        aim=Opt(Record(ball=Int(0, N_BALLS - 1), old_velocity=_POINT, velocity=_POINT,
+                       path=ListOf(_POINT, 64), warning=Opt(Str(4096)))),
+        aim_target=_POINT, aim_speed=Float(), replay=ListOf(Int(0), 1 << 20),
+        replay_at=Int(0), ticks=Int(0), done=Bool(),
+        menus=Record(**{m: PopupMenu.STATE_SCHEMA for m in _MENUS}),
+        display=Display.STATE_SCHEMA)
+
+    def state_values(self) -> dict[str, Any]:
+        if self.mode in ("keys:exit_file", "keys:exit_range") or self.exit_path is not None:
+            raise ValueError("a file name is being asked for (a state never names a file)")
+        menus_ = {m: getattr(self, m) for m in self._MENUS}
+        menu = next((m for m, w in menus_.items() if w is self.menu), None)
+        aim = None if self.aim is None else {
+            "ball": self.aim.ball, "old_velocity": self.aim.old_velocity,
+            "velocity": self.aim.velocity, "path": list(self.aim.path),
+            "warning": self.aim.warning}
+        return {"session": self.session.to_json(), "restore_pending": self.restore is not None,
+                "cursor": self.cursor, "mouse": self.mouse, "buttons": self.buttons,
+                "mode": self.mode, "ball": self.ball, "menu": menu,
+                "menu_cursor": self.menu_cursor, "text": self.text, "prompt": self.prompt,
+                "help_text": self.help_text, "help_colour": self.help_colour,
+                "arrow_end": self.arrow_end, "spin": self.spin, "spin_from": self.spin_from,
+                "unit": self.unit, "unit_acc": self.unit_acc, "repeat": self.repeat,
+                "aim": aim, "aim_target": self.aim_target, "aim_speed": self.aim_speed,
+                "replay": self.replay, "replay_at": self.replay_at, "ticks": self.ticks,
+                "done": self.done,
+                "menus": {m: w.state_values() for m, w in menus_.items()},
+                "display": self.display.state_values()}
+
+    def check_state_values(self, v: dict[str, Any]) -> Callable[[], None]:
+        session = Session.from_json(v["session"])  # the session file's own checks
+        if v["restore_pending"] and self.restore is None:
+            raise ValueError("the state waits to restore a session this run was not given")
+        if v["mode"] not in MODES:  # (never a file name: see state_values)
+            raise ValueError(f"mode {v['mode'][:40]!r} is not one of the program's")
+        if v["replay"] and not v["replay_at"] < len(v["replay"]):
+            raise ValueError(f"replay place {v['replay_at']} of {len(v['replay'])}")
+        n = len(session.timeline.time_frames)
+        if any(f >= n for f in v["replay"]):
+            raise ValueError(f"a replayed frame past the session's {n}")
+        puts = [getattr(self, m).check_state_values(v["menus"][m]) for m in self._MENUS]
+        puts.append(self.display.check_state_values(v["display"]))
+        a = v["aim"]
+        aim = None if a is None else aiming.Aim(a["ball"], a["old_velocity"], a["velocity"],
+                                                tuple(a["path"]), a["warning"])
+
+        def put() -> None:
+            self.session = session
+            self.display.view = TableView.fit(session.table)
+            if not v["restore_pending"]:
+                self.restore = None
+            for name in ("cursor", "mouse", "buttons", "mode", "ball", "menu_cursor", "text",
+                         "prompt", "help_text", "help_colour", "arrow_end", "spin",
+                         "spin_from", "unit", "unit_acc", "repeat", "aim_target",
+                         "aim_speed", "replay", "replay_at", "ticks", "done"):
+                setattr(self, name, v[name])
+            self.menu = None if v["menu"] is None else getattr(self, v["menu"])
+            self.aim, self.exit_path, self._status_key = aim, None, None
+            for p in puts:
+                p()
+        return put
 
     # ------------------------------------------------------------------ the frame loop
     def step(self) -> tuple[int, int]:
@@ -711,16 +810,55 @@ class Program:
         for _ in self.position_steps(frames, on_table):
             pass
 
-    def position_steps(self, frames: list[np.ndarray],
-                       on_table: list[np.ndarray]) -> Iterator[int]:
+    def position_steps(self, frames: list[np.ndarray], on_table: list[np.ndarray],
+                       start: int = 0) -> Iterator[int]:
         """``play_positions`` one position at a time (two 50 Hz display frames each), for a
-        run loop that ticks: yields the index of each position shown."""
+        run loop that ticks: yields the index of each position shown (from ``start``: a
+        replay continued from a save state)."""
         d = self.display
         d.help.show(f"Replaying {len(frames)} frames at 25 frames/s.", HELP_COLOUR)
         d.info.show("checkpoint replay", HELP_COLOUR)
         for n, (pos, on) in enumerate(zip(frames, on_table)):
+            if n < start:
+                continue
             d.draw_balls(pos, on, Overlay())
             d.frame_box.show(f"frame {n}", "#ffffff")
             for _ in range(2):  # 25 frames/s on a 50 Hz display
                 self.client.wait_frame()
             yield n
+
+
+class PositionReplay:
+    """``snooker replay``'s program: the checkpoint's positions shown one per tick
+    (``position_steps``). Its declared state is how many have been shown and the display;
+    a load makes the steps again from there (a generator is rebuilt, never saved)."""
+
+    STATE_VERSION = 1
+    STATE_SCHEMA = Record(shown=Int(0), display=Display.STATE_SCHEMA)
+
+    def __init__(self, program: Program, frames: list[np.ndarray],
+                 on_table: list[np.ndarray]) -> None:
+        self.program, self.frames, self.on_table = program, frames, on_table
+        self.shown = 0
+        self._steps = program.position_steps(frames, on_table)
+
+    def step(self) -> bool:
+        if next(self._steps, None) is None:
+            return False
+        self.shown += 1
+        return True
+
+    def state_values(self) -> dict[str, Any]:
+        return {"shown": self.shown, "display": self.program.display.state_values()}
+
+    def check_state_values(self, values: dict[str, Any]) -> Callable[[], None]:
+        if values["shown"] > len(self.frames):
+            raise ValueError(f"{values['shown']} positions shown; the checkpoint has "
+                             f"{len(self.frames)}")
+        put_display = self.program.display.check_state_values(values["display"])
+
+        def put() -> None:
+            put_display()
+            self.shown = values["shown"]
+            self._steps = self.program.position_steps(self.frames, self.on_table, self.shown)
+        return put

@@ -13,13 +13,16 @@ in the finished sequence", so a ball the film would not show is not shown here e
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from typing import Any
 
 from camlab88.apps.snooker.camera.motion import Motion
 from camlab88.apps.snooker.camera.projection import FILM_H, FILM_W
 from camlab88.apps.snooker.camera.views import View
 from camlab88.apps.snooker.visualiser.display import ViewDisplay
+from camlab88.base.plainstate import Bool, Int, Opt, Record
 from camlab88.protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
 from camlab88.protocols.rainbow.events import LEFT, KeyEvent, MouseEvent
+from camlab88.protocols.rainbow.ui import DoubleBuffer
 
 LUT_PAGE = 1
 DEVICE_FRAMES_PER_FRAME = 2  # 25 frames/s on the 50 Hz display
@@ -58,6 +61,44 @@ class Visualiser:
     @property
     def frame(self) -> int:
         return self.views[self.index].frame
+
+    # its declared state (the harness's program_state): where it is in the view file, what
+    # is drawn and which view's table is on show (an index into the views: the cameras are
+    # the view file's); the pads are the Rainbow's
+    STATE_VERSION = 1
+    STATE_SCHEMA = Record(index=Int(0), drawn=Opt(Int(0)), playing=Bool(), done=Bool(),
+                          dragging=Bool(), table_shown=Opt(Int(0)), table_redraws=Int(0),
+                          tables=DoubleBuffer.STATE_SCHEMA, balls=DoubleBuffer.STATE_SCHEMA)
+
+    def state_values(self) -> dict[str, Any]:
+        d = self.display
+        shown = next((i for i, c in enumerate(self.cameras) if c is d.shown), None)
+        if d.shown is not None and shown is None:
+            raise ValueError("the view on show is not one of the view file's")
+        return {"index": self.index, "drawn": self.drawn, "playing": self.playing,
+                "done": self.done, "dragging": self.dragging, "table_shown": shown,
+                "table_redraws": d.table_redraws, "tables": d.tables.state_values(),
+                "balls": d.balls.state_values()}
+
+    def check_state_values(self, values: dict[str, Any]) -> Callable[[], None]:
+        n = len(self.views)
+        for name in ("index", "drawn", "table_shown"):
+            if values[name] is not None and values[name] >= n:
+                raise ValueError(f"{name} {values[name]}: the view file has {n} views")
+        d = self.display
+        parts = [d.tables.check_state_values(values["tables"]),
+                 d.balls.check_state_values(values["balls"])]
+
+        def put() -> None:
+            self.index, self.drawn = values["index"], values["drawn"]
+            self.playing, self.done = values["playing"], values["done"]
+            self.dragging = values["dragging"]
+            shown = values["table_shown"]
+            d.shown = None if shown is None else self.cameras[shown]
+            d.table_redraws = values["table_redraws"]
+            for part in parts:
+                part()
+        return put
 
     def draw(self) -> bool:
         """Draw the current frame if it is not the one on show; True if drawn."""

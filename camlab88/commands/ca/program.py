@@ -190,7 +190,8 @@ def _run(options, player, opts) -> dict:
         prog.frame()
         return not prog.finished
 
-    target = RainbowTarget(session, step, "camlab88 ca", KEYS, player, unattended(opts))
+    target = RainbowTarget(session, step, "camlab88 ca", KEYS, player, unattended(opts),
+                           program=prog)
     target.escape_is_a_key = True  # Esc closes a question, or finishes when none is open
     run(target, opts)
     return prog.session.statistics()

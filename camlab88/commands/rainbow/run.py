@@ -99,6 +99,6 @@ def _target(args: argparse.Namespace, opts, tablet, trace):
         demo.step()
         return True  # the demo runs until the window closes or --stop-after
 
-    target = RainbowTarget(session, step, "camlab88 Rainbow", KEYS)
+    target = RainbowTarget(session, step, "camlab88 Rainbow", KEYS, program=demo)
     target.tablet = tablet
     return target

@@ -77,7 +77,8 @@ def _run(args: argparse.Namespace, opts, restore, player):
         program.step()
         return not program.done
 
-    target = RainbowTarget(rb, step, "camlab88 snooker", KEYS, player, unattended(opts))
+    target = RainbowTarget(rb, step, "camlab88 snooker", KEYS, player, unattended(opts),
+                           program=program)
     target.escape_is_a_key = True  # Esc cancels, or asks y/n/Esc before leaving
     return program, run(target, opts)
 

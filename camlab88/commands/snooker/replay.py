@@ -52,16 +52,13 @@ def replay(args: argparse.Namespace) -> int:
 
 
 def _run(pos, on, opts):
-    from camlab88.apps.snooker.program.program import Program
+    from camlab88.apps.snooker.program.program import PositionReplay, Program
     from camlab88.emulator.harness import run
     from camlab88.emulator.harness.rainbow import RainbowTarget
     from camlab88.emulator.rainbow.session import in_process
 
     rb = in_process(record=opts.record is not None)
-    steps = Program(rb.client).position_steps(pos, on)
-
-    def step() -> bool:
-        return next(steps, None) is not None
-
-    target = RainbowTarget(rb, step, "camlab88 snooker replay", "Esc or close the window to quit")
+    replay = PositionReplay(Program(rb.client), pos, on)
+    target = RainbowTarget(rb, replay.step, "camlab88 snooker replay",
+                           "Esc or close the window to quit", program=replay)
     return run(target, opts)

@@ -91,7 +91,8 @@ def _run(shot, views, opts, frames_dir):
                 self.written = vis.drawn
                 self.count += 1  # named in the closing line
 
-    target = RainbowTarget(rb, step, COMMAND, KEYS, status=lambda: status(vis, target))
+    target = RainbowTarget(rb, step, COMMAND, KEYS, status=lambda: status(vis, target),
+                           program=vis)
     target.escape_is_a_key = True  # the visualiser's own Esc / q: done
     frames = Frames()
     return run(target, opts, [frames]), vis, frames.count

@@ -13,7 +13,10 @@
 from __future__ import annotations
 
 import colorsys
+from collections.abc import Callable
+from typing import Any
 
+from camlab88.base.plainstate import Bool, Choice, Int, Opt, Record
 from camlab88.protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
 
 BORDER, INK = 0, 1  # pixel values; item i's background is 2 + i
@@ -51,6 +54,26 @@ class ItemMenu:
         if i is not None:
             self.client.set_lut(self.base + ((2 + i) << self.plane), [self.highlights[i]])
         self.highlighted = i
+
+    # its declared state (the pixels and the colours are the Rainbow's)
+    STATE_SCHEMA = Record(highlighted=Opt(Int(0)), open=Bool(), scroll=Int(), x=Int(),
+                          y=Int())
+
+    def state_values(self) -> dict[str, Any]:
+        return {"highlighted": self.highlighted, "open": self.open_,
+                "scroll": getattr(self, "scroll", 0), "x": getattr(self, "x", 0),
+                "y": getattr(self, "y", 0)}
+
+    def check_state_values(self, values: dict[str, Any]) -> Callable[[], None]:
+        h = values["highlighted"]
+        if h is not None and h >= len(self.items):
+            raise ValueError(f"menu item {h} of {len(self.items)}")
+
+        def put() -> None:
+            self.highlighted, self.open_ = h, values["open"]
+            if hasattr(self, "scroll"):
+                self.scroll, self.x, self.y = values["scroll"], values["x"], values["y"]
+        return put
 
     def close(self) -> str | None:
         """Hide the menu; returns the item chosen (None if the cursor was off the menu)."""
@@ -171,6 +194,18 @@ class CrossMenu:
         self.highlights = {d: pastel(i, 5) for i, d in enumerate(self.DIRS)}
         self.highlighted: str | None = None
         self.cx = self.cy = 0
+
+    # its declared state (the pixels and the colours are the Rainbow's)
+    STATE_SCHEMA = Record(highlighted=Opt(Choice(DIRS)), cx=Int(), cy=Int())
+
+    def state_values(self) -> dict[str, Any]:
+        return {"highlighted": self.highlighted, "cx": self.cx, "cy": self.cy}
+
+    def check_state_values(self, values: dict[str, Any]) -> Callable[[], None]:
+        def put() -> None:
+            self.highlighted, self.cx, self.cy = values["highlighted"], values["cx"], \
+                values["cy"]
+        return put
 
     def _highlight(self, d: str | None) -> None:
         if d == self.highlighted:

@@ -6,6 +6,10 @@ changed per message through the LUT, not by redrawing), 1 black writing, 2 a whi
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
+from camlab88.base.plainstate import Record, Str
 from camlab88.protocols.rainbow.client import RainbowClient
 
 PAPER, INK, BORDER = 0, 1, 2
@@ -23,6 +27,17 @@ class MessageArea:
         client.set_lut(self.base + (INK << plane), ["#000000"])
         client.set_lut(self.base + (BORDER << plane), ["#ffffff"])
         self.text = ""
+
+    # its declared state: the text shown (its pixels and colour are the Rainbow's)
+    STATE_SCHEMA = Record(text=Str(65536))
+
+    def state_values(self) -> dict[str, Any]:
+        return {"text": self.text}
+
+    def check_state_values(self, values: dict[str, Any]) -> Callable[[], None]:
+        def put() -> None:
+            self.text = values["text"]
+        return put
 
     def show(self, text: str, colour: str) -> None:
         c = self.client
