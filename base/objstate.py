@@ -55,6 +55,7 @@ from pathlib import PurePath
 from typing import Any
 
 import numpy as np
+
 from camlab88.base.shared_objects import OURS, shared
 
 INLINE = 256  # bytes: smaller ones stay in the tree (base64)

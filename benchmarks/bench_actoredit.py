@@ -12,6 +12,7 @@ import statistics
 import tempfile
 
 from _bench import times
+
 from camlab88.apps.actors.editor import layout as L
 from camlab88.apps.actors.editor.cell_types import CellType
 from camlab88.apps.actors.editor.program import PREVIEW_EVERY, ActorEditor

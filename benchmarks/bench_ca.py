@@ -20,6 +20,7 @@ import platform
 import time
 
 import numpy as np
+
 from camlab88.apps.ca.engine import Engine
 from camlab88.apps.ca.library import pattern_path, rules_path
 from camlab88.apps.ca.patterns import read_pattern

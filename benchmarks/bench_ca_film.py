@@ -20,6 +20,7 @@ import time
 from pathlib import Path
 
 from _bench import ROOT, load
+
 from camlab88.apps.cafilm.build import FilmSpec, build
 from camlab88.apps.cafilm.film import render_image, shoot
 

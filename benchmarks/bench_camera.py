@@ -19,6 +19,7 @@ import time
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.apps.snooker.camera import ccl, motion
 from camlab88.apps.snooker.camera.motion import Motion
 from camlab88.apps.snooker.camera.views import View

@@ -20,6 +20,7 @@ import time
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.apps.ca.engine import CENTRE, Engine
 from camlab88.apps.ca.library import rules_path
 from camlab88.apps.ca.patterns import read_pattern, rle_lines

@@ -17,6 +17,7 @@ import time
 from pathlib import Path
 
 from _bench import load
+
 from camlab88.apps.snooker.camera.views import View
 from camlab88.apps.snooker.film.backends import DaskCluster, InProcess, LocalPool
 from camlab88.apps.snooker.film.schedule import render_film

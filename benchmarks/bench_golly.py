@@ -33,7 +33,6 @@ import time
 from pathlib import Path
 
 from camlab88.apps.ca.library import pattern_path
-
 from tests.ca.golly_oracle import DATA, bgolly
 
 HERE = Path(__file__).parent

@@ -12,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 from _bench import times
+
 from camlab88.apps.kas import files, timing
 from camlab88.apps.kas.files import SamplePath
 from camlab88.apps.kas.inbetween import inbetween, inbetween_keys

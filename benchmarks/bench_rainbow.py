@@ -10,6 +10,7 @@ import statistics
 
 import numpy as np
 from _bench import rate, times
+
 from camlab88.emulator.rainbow import Rainbow
 from camlab88.emulator.rainbow.compiler import Compiler
 from camlab88.emulator.rainbow.session import in_process

@@ -14,13 +14,13 @@ import time
 
 import numpy as np
 from _bench import load, times
+
 from camlab88.apps.snooker.render.metrics import score
 from camlab88.apps.snooker.render.palette import adaptive_palette, fixed_palette
 from camlab88.apps.snooker.render.sigma_host import SigmaHost
 from camlab88.apps.snooker.render.sigma_session import SigmaSession
 from camlab88.apps.snooker.render.truecolour import RenderOptions, render_frame, render_linear
 from camlab88.emulator.harness.sigma_batch import t5688_link
-
 from tests.snooker_render.helpers import break_scene, break_views
 
 

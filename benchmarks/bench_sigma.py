@@ -25,7 +25,6 @@ from camlab88.emulator.sigma import Terminal  # noqa: E402
 from camlab88.emulator.sigma.raster import boundary_fill  # noqa: E402
 from camlab88.protocols.sigma import Encoder  # noqa: E402
 from camlab88.protocols.sigma.abbreviated import encode_points, new_state, scan_points  # noqa: E402
-
 from tests.sigma.streams import gks_plot, pgplot_plot  # noqa: E402
 
 LINE_CPS = 960  # 9600 baud 8N1

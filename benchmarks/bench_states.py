@@ -19,7 +19,6 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # fuzz/ and tests/ helpers
 
 from camlab88.emulator.harness import state_plugin as sp
-
 from fuzz.states import run_cli
 from tests.states.support import inputs_of
 

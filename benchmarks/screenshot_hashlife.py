@@ -13,7 +13,6 @@ from camlab88.apps.ca.program import stepping
 from camlab88.apps.ca.program.menus import MainMenu, main_item_point
 from camlab88.apps.ca.program.program import Options
 from camlab88.base.png import write_png
-
 from tests.ca_program.driver import Driver
 
 

@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+
 from camlab88.emulator.host_input import HostEvent, KeyDown, KeyUp, PointerButton, PointerMove, Quit
 
 _SPECIAL_KEYS = {

@@ -9,8 +9,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from camlab88.cli import main
 from PIL import Image
+
+from camlab88.cli import main
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 HAND_WRITTEN = {"README.md", "make_examples.py"}

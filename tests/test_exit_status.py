@@ -12,6 +12,7 @@ import sys
 from pathlib import Path
 
 import pytest
+
 from camlab88.cli import build_parser
 
 ROOT = Path(__file__).resolve().parents[1]

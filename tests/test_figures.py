@@ -10,6 +10,7 @@ import sys
 from pathlib import Path
 
 import pytest
+
 from camlab88.commands.figures import FIGURES_DIR
 from camlab88.figure_catalogue import CatalogueError, by_number, markdown_table, parse
 from camlab88.protocols.session import read
@@ -109,8 +110,9 @@ def test_damaged_catalogue_is_named(text: str, says: str) -> None:
 def test_appendix_i_figure_shows_the_pad_graph_beside_the_screen(tmp_path: Path) -> None:
     """Appendix I fig. 2 is the screen and its pad structure: the figure's PNG is the
     Rainbow's 768-pixel screen with the inspector's panel (the pad graph) to its right."""
-    from camlab88.emulator.inspect import PANEL_WIDTH
     from PIL import Image
+
+    from camlab88.emulator.inspect import PANEL_WIDTH
 
     r = _cli("figures", "I.2", "--headless", "--screenshot", "i2.png", cwd=tmp_path)
     assert r.returncode == 0, r.stderr

@@ -9,8 +9,9 @@ import subprocess
 
 import numpy as np
 import pytest
-from camlab88.apps.kas import demo, plot
 from PIL import Image
+
+from camlab88.apps.kas import demo, plot
 
 DPI = 20
 

@@ -6,6 +6,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+
 from camlab88.apps.ca.library import pattern_path, rules_path
 from camlab88.apps.kas import library, timing
 from camlab88.base.suggest import did_you_mean

@@ -20,6 +20,7 @@ import sys
 from pathlib import Path
 
 import pytest
+
 from camlab88.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]

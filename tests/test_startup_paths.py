@@ -4,9 +4,10 @@ picks numpy for small in-betweens so a command never pays numba's start-up for t
 from __future__ import annotations
 
 import numpy as np
-from camlab88.apps.kas import kernels, kernels_jit
 from hypothesis import given, settings
 from hypothesis import strategies as st
+
+from camlab88.apps.kas import kernels, kernels_jit
 
 
 @st.composite

@@ -14,6 +14,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.actors.model import Actor, Part
 
 SEGMENTS = 24  # around a lathe or a sphere

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.actors.mesh import actor_mesh
 from camlab88.apps.actors.model import Actor, ActorSet
 from camlab88.apps.actors.render import Look, Placed, Shot, Stage, canopy_over, render_frame

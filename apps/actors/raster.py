@@ -19,8 +19,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from camlab88.base.kernel_notice import announce_compiles
 from numba import njit
+
+from camlab88.base.kernel_notice import announce_compiles
 
 announce_compiles("actors renderer", 6.0, __name__)  # cold compile, measured on the 2-core box
 

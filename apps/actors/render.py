@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
+
 from camlab88.apps.actors.mesh import actor_mesh, articulated, posed_actor_mesh, triangle_count
 from camlab88.apps.actors.model import Actor, ActorSet
 from camlab88.apps.snooker.render.frame import camera_params

@@ -17,6 +17,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.actors.render import BACKGROUND, BOARD, linear_colour
 from camlab88.apps.snooker.render.palette import SIZE, Palette
 from camlab88.apps.snooker.render.runs import RunWriter

@@ -16,6 +16,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.ca import algorithms
 from camlab88.apps.ca.rules import RuleSet
 from camlab88.apps.ca.tables import compile_rules

@@ -18,8 +18,9 @@ from __future__ import annotations
 import types
 
 import numpy as np
-from camlab88.base.kernel_notice import announce_compiles
 from numba import njit
+
+from camlab88.base.kernel_notice import announce_compiles
 
 # one line on stderr when a cold cache compiles (measured ~7 s)
 announce_compiles("cellular automaton", 7.0, __name__)

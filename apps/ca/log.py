@@ -21,6 +21,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.ca.engine import EDGES, SIDE, Engine, Rect
 from camlab88.apps.ca.patterns import Pattern, format_rle, parse_rle
 from camlab88.apps.ca.rules import parse_rules

@@ -23,6 +23,7 @@ from __future__ import annotations
 import re
 
 import numpy as np
+
 from camlab88.base import budget
 
 MAX_LEVEL = 62  # 2**62: coordinates still fit an int64

@@ -13,6 +13,7 @@ import re
 from dataclasses import dataclass, field
 
 import numpy as np
+
 from camlab88.apps.ca import life_pc, macrocell
 from camlab88.apps.ca.rle_body import GRID_BYTES, decode
 from camlab88.base import atomicfile, budget

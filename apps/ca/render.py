@@ -11,6 +11,7 @@ from __future__ import annotations
 import colorsys
 
 import numpy as np
+
 from camlab88.apps.ca.engine import SIDE, Engine, Rect
 from camlab88.apps.ca.rules import RuleSet
 

@@ -14,6 +14,7 @@ import re
 from collections.abc import Callable
 
 import numpy as np
+
 from camlab88.base import budget
 
 PLANE = 65536  # the CA plane is 65536 cells square (section 7.3)

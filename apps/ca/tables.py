@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.ca.rules import MATCH_EXACT, MATCH_PATTERN, MATCH_RANGE, RuleSet
 
 LOOKUP_SIZE = 1 << 16  # message values below this are interpreted by one table lookup

@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 from typing import Protocol
 
 import numpy as np
+
 from camlab88.apps.ca import grid_stats
 
 SIDE = 65536

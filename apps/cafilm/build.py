@@ -7,6 +7,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.apps.actors.model import ActorSet, read_actors
 from camlab88.apps.actors.render import Look, canopy_over
 from camlab88.apps.cafilm.camera import auto_views, script_views

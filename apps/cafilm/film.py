@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.apps.actors.model import ActorSet, format_actors
 from camlab88.apps.actors.render import Look, Shot, Stage, render_frame
 from camlab88.apps.cafilm.camera import GenerationViews

@@ -9,6 +9,7 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.actors.render import Look, render_linear
 from camlab88.apps.actors.sigma_host import SCREEN_H, SCREEN_W, ActorsSigmaHost, fixed_palette
 from camlab88.apps.cafilm.film import CaFilm, stage_at

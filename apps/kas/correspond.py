@@ -4,6 +4,7 @@ resampled to equal point counts; chains missing from a keyframe are invented by 
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.kas.model import Chain, Drawing
 
 MISSING_RULES = ("copy-nearest", "grow", "stay")

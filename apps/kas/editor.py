@@ -14,6 +14,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
+
 from camlab88.apps.kas import editor_commands as ops
 from camlab88.apps.kas.events import Event, Key, MenuPick, Pointer
 from camlab88.apps.kas.model import FIELD_H, FIELD_W, PENS, WORK_X, WORK_Y, Chain, Drawing

@@ -10,6 +10,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.kas.model import Chain
 
 TRANSFORM_KINDS = ("move", "rotate", "reflect", "enlarge", "stretch")

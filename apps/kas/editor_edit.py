@@ -17,6 +17,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 import numpy as np
+
 from camlab88.apps.kas import editor_commands as ops
 from camlab88.apps.kas.editor_commands import Transform
 

@@ -10,6 +10,7 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.apps.kas.model import AnimSequence, Drawing
 from camlab88.apps.kas.raster import render
 from camlab88.base.atomicfile import AtomicBatch, atomic_path, write_atomic

@@ -14,6 +14,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.kas.model import AnimSequence, Chain, Drawing
 from camlab88.base import budget
 from camlab88.base.atomicfile import write_atomic

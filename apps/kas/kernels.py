@@ -12,6 +12,7 @@ before, so a result's path does not depend on what ran earlier (docs/perf/startu
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.kas.model import redundant_mask
 
 NUMBA_FROM_POINTS = 2_000_000  # frames x points from which numba pays for its own start-up

@@ -9,8 +9,9 @@ dozen whole-array passes. Imported only for large in-betweens
 from __future__ import annotations
 
 import numpy as np
-from camlab88.base.kernel_notice import announce_compiles
 from numba import njit
+
+from camlab88.base.kernel_notice import announce_compiles
 
 announce_compiles("KAS in-betweener", 1.0, __name__)  # cold compile time, measured
 

@@ -14,6 +14,7 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+
 from camlab88.apps.kas.events import Event, Key, Pointer
 from camlab88.apps.kas.files import SamplePath, Timing
 from camlab88.apps.kas.model import Drawing

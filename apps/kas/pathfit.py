@@ -39,6 +39,7 @@ from __future__ import annotations
 import os
 
 import numpy as np
+
 from camlab88.apps.kas.files import KasFileError, SamplePath, load_path
 
 FIT_MODES = ("similarity-reflect", "axis-stretch", "similarity")

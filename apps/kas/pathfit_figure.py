@@ -13,6 +13,7 @@ import sys
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.apps.kas import pathfit, raster
 from camlab88.apps.kas.files import SamplePath
 from camlab88.apps.kas.inbetween import inbetween

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.apps.kas.model import FIELD_H, FIELD_W, PALETTE, AnimSequence, Drawing
 from camlab88.base.atomicfile import write_atomic
 

@@ -9,8 +9,9 @@ pictures larger than the Sigma's 768x512, and for the README's contact sheets.
 from __future__ import annotations
 
 import numpy as np
-from camlab88.apps.kas.model import FIELD_H, FIELD_W, PALETTE, Drawing
 from PIL import Image, ImageDraw
+
+from camlab88.apps.kas.model import FIELD_H, FIELD_W, PALETTE, Drawing
 
 
 def image_size(width: int) -> tuple[int, int]:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.kas.files import Timing, validate_timing
 
 

@@ -20,6 +20,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.snooker.speed_curve import curve_for
 from camlab88.apps.snooker.state import BallState
 from camlab88.apps.snooker.table import Table, cushion_sides

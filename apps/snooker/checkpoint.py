@@ -28,6 +28,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.snooker.table import FOOT_M, N_BALLS
 from camlab88.base.atomicfile import write_atomic
 from camlab88.base.textinput import InputError, quote, read_bytes

@@ -24,6 +24,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.snooker.kernels import (  # noqa: F401 - the scan, named here too
     NO_EVENT,
     scan,

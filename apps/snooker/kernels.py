@@ -15,8 +15,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from camlab88.base.kernel_notice import announce_compiles
 from numba import njit
+
+from camlab88.base.kernel_notice import announce_compiles
 
 # Cached, so only the first run after install compiles; every kernel here is called with
 # one set of argument types (docs/development.md, "numba's cache").

@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+
 from camlab88.apps.snooker.state import BallState
 from camlab88.apps.snooker.table import BROWN, COLOURS, CUE, N_BALLS, PINK, REDS, Table
 

@@ -22,6 +22,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+
 from camlab88.apps.snooker import kernels
 from camlab88.apps.snooker.events import (
     Event,

@@ -18,6 +18,7 @@ import math
 from dataclasses import dataclass, field, replace
 
 import numpy as np
+
 from camlab88.apps.snooker.events import Event, EventKind
 from camlab88.apps.snooker.layout import default_cue_position
 from camlab88.apps.snooker.table import (

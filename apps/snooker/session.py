@@ -18,6 +18,7 @@ import os
 from dataclasses import replace
 
 import numpy as np
+
 from camlab88.apps.snooker import aiming, checkpoint
 from camlab88.apps.snooker.events import Event, EventKind
 from camlab88.apps.snooker.layout import opening_state

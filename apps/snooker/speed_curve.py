@@ -29,6 +29,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import numpy as np
+
 from camlab88.apps.snooker.table import Table
 
 # (u, g) pairs: our digitisation of fig 6.2's observed curve, described above.

@@ -8,6 +8,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.snooker.table import N_BALLS
 
 _ARRAYS = ("pos", "vel", "spin", "curve_v0", "curve_t0", "spin0", "spin_t0", "on_table")

@@ -18,6 +18,7 @@ from dataclasses import dataclass, replace
 from typing import Literal
 
 import numpy as np
+
 from camlab88.apps.snooker.events import Event, EventKind
 from camlab88.apps.snooker.physics import Physics, SimulationError, state_moving
 from camlab88.apps.snooker.rules import GameState, Shot, adjudicate, apply_outcome, record

@@ -27,8 +27,9 @@ def golden_path(directory: Path, name: str) -> Path:
 
 def compare_golden(screen: np.ndarray, path: Path, regen: bool) -> None:
     """AssertionError naming the first differing pixel (or the missing file)."""
-    from camlab88.base.png import write_png
     from PIL import Image
+
+    from camlab88.base.png import write_png
 
     frame = np.ascontiguousarray(screen, dtype=np.uint8)
     if regen:

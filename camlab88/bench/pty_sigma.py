@@ -17,6 +17,7 @@ from collections.abc import Callable
 from fractions import Fraction
 
 import numpy as np
+
 from camlab88.bench.sigma import Sigma
 from camlab88.emulator.protocol_trace import ProtocolError
 

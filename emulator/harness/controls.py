@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
 from camlab88.base.png import write_png
 from camlab88.emulator.harness.control_options import SPEED_MAX, SPEED_MIN, Controls, clamp_speed
 from camlab88.emulator.harness.loop import Plugin, RunOptions

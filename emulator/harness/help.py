@@ -8,6 +8,7 @@ from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
 import numpy as np
+
 from camlab88.emulator.inspect import draw
 
 if TYPE_CHECKING:

@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
 from camlab88.base.png import frame_path, write_png
 from camlab88.emulator.harness.loop import Plugin
 from camlab88.emulator.harness.written import tell_written

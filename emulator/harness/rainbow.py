@@ -9,13 +9,14 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
+
 from camlab88.base.plainstate import Blob, Int, Opt, Record, Tuple
 from camlab88.emulator.host_input import HostEvent
 from camlab88.emulator.machine.state_file import MachineStateError, pack, unpack
 from camlab88.emulator.rainbow.device import Rainbow
 from camlab88.emulator.rainbow.errors import RainbowError
-from camlab88.emulator.rainbow.memory import VideoMemory
 from camlab88.emulator.rainbow.host_input import RainbowHostInput
+from camlab88.emulator.rainbow.memory import VideoMemory
 from camlab88.protocols.rainbow.script import Player
 
 FPS = 50  # the Rainbow's display frames per second

@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
 from camlab88.emulator.harness import codec
 from camlab88.emulator.harness.control_options import Controls
 from camlab88.emulator.harness.loop import Plugin, RunOptions

@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
+
 from camlab88.emulator.harness import codec
 from camlab88.emulator.harness.loop import Plugin, RunOptions
 from camlab88.emulator.host_input import HostEvent

@@ -8,6 +8,7 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
+
 from camlab88.base.plainstate import Blob, Int, Record
 from camlab88.emulator.host_input import HostEvent
 from camlab88.emulator.machine import SigmaMachine

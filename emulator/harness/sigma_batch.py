@@ -8,6 +8,7 @@ from collections.abc import Generator, Iterator
 from typing import Any
 
 import numpy as np
+
 from camlab88.emulator.machine import HostPort, SigmaMachine
 from camlab88.protocols.link import LineSettings
 from camlab88.protocols.link.clock import TimeLike, to_time

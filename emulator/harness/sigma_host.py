@@ -15,6 +15,7 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
+
 from camlab88.emulator.harness.sigma_batch import settle
 from camlab88.emulator.host_input import HostEvent, KeyDown, PointerButton, PointerMove
 from camlab88.emulator.machine import SigmaMachine

@@ -17,6 +17,7 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
+
 from camlab88.base.plainstate import Blob, Bool, Frac, Int, Opt, Record
 from camlab88.emulator.host_input import HostEvent
 from camlab88.emulator.machine import SigmaMachine

@@ -169,8 +169,9 @@ class PngGifWriter(Plugin):
 
 def write_gif(frames: list[np.ndarray], path: Path, fps: int) -> None:
     """An animated GIF of every GIF_EVERY-th frame (64 colours), written atomically."""
-    from camlab88.base.atomicfile import atomic_output
     from PIL import Image
+
+    from camlab88.base.atomicfile import atomic_output
 
     images = [Image.fromarray(f).convert("P", palette=Image.Palette.ADAPTIVE, colors=64)
               for f in frames]

@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
 from camlab88.emulator.harness.loop import Plugin
 from camlab88.emulator.harness.video import VideoWriter, video_params
 

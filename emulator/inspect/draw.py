@@ -5,6 +5,7 @@ to a window, to PNGs and to golden tests."""
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.roms.rainbow_font import load_font
 
 Colour = tuple[int, int, int]

@@ -7,6 +7,7 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
+
 from camlab88.emulator.inspect import draw
 
 BAND_COLOURS = [(255, 200, 60), (80, 200, 255)]

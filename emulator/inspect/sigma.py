@@ -11,6 +11,7 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
+
 from camlab88.emulator.inspect import draw
 from camlab88.emulator.protocol_trace import TraceEvent
 

@@ -8,6 +8,7 @@ from collections.abc import Callable
 from fractions import Fraction
 
 import numpy as np
+
 from camlab88.emulator.machine.state_file import MachineStateError, pack, unpack
 from camlab88.emulator.protocol_trace import TraceEvent
 from camlab88.emulator.sigma import Terminal

@@ -11,8 +11,9 @@ numba, about 0.15-0.2 s, nor load a kernel from the cache (another 0.2 s).
 from __future__ import annotations
 
 import numpy as np
-from camlab88.base.kernel_notice import announce_compiles
 from numba import njit
+
+from camlab88.base.kernel_notice import announce_compiles
 
 announce_compiles("Rainbow", 4.0, __name__,  # cold compile time, measured
                   completion="camlab88.emulator.rainbow.kernel_warmup:compile_kernels")

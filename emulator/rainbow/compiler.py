@@ -13,6 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.emulator.rainbow.bands import BandStructure
 from camlab88.emulator.rainbow.graph import SCREEN_H, SCREEN_W, Instance, Pad, PadGraph
 

@@ -7,6 +7,7 @@ the command stream (emulator/rainbow/executor.py), never directly.
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.emulator.rainbow.bands import BandStructure
 from camlab88.emulator.rainbow.compiler import Compiler
 from camlab88.emulator.rainbow.draw import Canvas

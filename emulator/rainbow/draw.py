@@ -8,6 +8,7 @@ in distinct planes do not disturb each other).
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.emulator.rainbow.errors import RainbowError
 from camlab88.emulator.rainbow.graph import Pad
 from camlab88.roms.rainbow_font import load_font

@@ -10,6 +10,7 @@ import struct
 from collections.abc import Callable
 
 import numpy as np
+
 from camlab88.emulator.rainbow.device import Rainbow
 from camlab88.emulator.rainbow.errors import RainbowError
 from camlab88.emulator.rainbow.graph import SCREEN_H, SCREEN_W

@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.emulator.rainbow.errors import OutOfVideoMemory, RainbowError
 
 GRANULE = 8

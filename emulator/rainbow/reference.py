@@ -8,6 +8,7 @@ the OR of the words of the instances holding that key, and the largest LUT page 
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.emulator.rainbow.errors import GraphError
 from camlab88.emulator.rainbow.graph import (
     MAX_INSTANCES,

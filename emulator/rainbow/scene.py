@@ -20,6 +20,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+
 from camlab88.base.textinput import quote, read_json
 from camlab88.emulator.rainbow.colour import parse_hex
 from camlab88.emulator.rainbow.device import Rainbow

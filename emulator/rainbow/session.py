@@ -6,6 +6,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.emulator.rainbow.device import Rainbow
 from camlab88.emulator.rainbow.executor import Executor
 from camlab88.protocols.rainbow.client import RainbowClient

@@ -7,6 +7,7 @@ says is what appears.
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.emulator.rainbow.bands import BandStructure
 from camlab88.emulator.rainbow.graph import SCREEN_H, SCREEN_W
 

@@ -7,6 +7,7 @@ them); FF clearing the alpha screen is read from PGPLOT's "erase alpha screen" (
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.emulator.sigma.models import SCREEN_H, SCREEN_W
 from camlab88.roms.sigma import load_font
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 import numpy as np
+
 from camlab88.emulator.sigma.models import SCREEN_H, SCREEN_W, Model
 
 if TYPE_CHECKING:

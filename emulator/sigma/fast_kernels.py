@@ -3,9 +3,10 @@
 
 from __future__ import annotations
 
+from numba import njit
+
 from camlab88.base.kernel_notice import announce_compiles
 from camlab88.protocols.sigma import abbreviated
-from numba import njit
 
 announce_compiles("Sigma raster", 2.0, abbreviated.__name__,
                   completion="camlab88.emulator.sigma.kernel_warmup:compile_kernels")

@@ -7,8 +7,9 @@ draws never imports numba (about a quarter of a second).
 from __future__ import annotations
 
 import numpy as np
-from camlab88.base.kernel_notice import announce_compiles
 from numba import njit
+
+from camlab88.base.kernel_notice import announce_compiles
 
 # one line on stderr if the cache is cold; ~2 s is the measured cold compile
 announce_compiles("Sigma raster", 2.0, __name__, "camlab88.protocols.sigma.abbreviated",

@@ -19,6 +19,7 @@ from dataclasses import asdict
 from typing import TYPE_CHECKING
 
 import numpy as np
+
 from camlab88.protocols.sigma.decoder_state import DecoderState
 
 if TYPE_CHECKING:

@@ -11,6 +11,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, fields
 
 import numpy as np
+
 from camlab88.emulator.sigma import display, raster
 from camlab88.emulator.sigma.alpha import AlphaScreen
 from camlab88.emulator.sigma.fast import scan_points_fast

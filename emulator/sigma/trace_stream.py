@@ -8,6 +8,7 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
+
 from camlab88.emulator.protocol_trace import TraceEvent
 from camlab88.emulator.sigma.terminal import Terminal
 from camlab88.emulator.sigma.trace import SigmaTracer

@@ -8,6 +8,7 @@ so the picture is evidence that the bytes mean what the mouse did.
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.protocols.tablets.events import TabletEvent, TabletModel
 
 SURFACE = (222, 218, 200)

@@ -11,6 +11,7 @@ import struct
 from collections.abc import Iterable, Iterator, Sequence
 
 import numpy as np
+
 from camlab88.protocols.rainbow.events import Event, decode_events
 from camlab88.protocols.rainbow.stream import OK, encode, split_reply
 from camlab88.protocols.rainbow.transport import Transport

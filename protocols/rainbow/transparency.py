@@ -14,6 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.protocols.rainbow.antialias import coverage
 from camlab88.protocols.rainbow.client import SCREEN, RainbowClient
 

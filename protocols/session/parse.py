@@ -22,6 +22,7 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
+
 from camlab88.base import budget
 from camlab88.protocols.session.format import (
     _KEYS,

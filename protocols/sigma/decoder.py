@@ -14,6 +14,7 @@ import re
 from collections.abc import Callable
 
 import numpy as np
+
 from camlab88.protocols.sigma import abbreviated
 from camlab88.protocols.sigma.commands import (
     AgsEnd,

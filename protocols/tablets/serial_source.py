@@ -7,6 +7,7 @@ from collections.abc import Callable
 from dataclasses import replace
 
 import serial
+
 from camlab88.protocols.link.serial_port import descriptor, open_url, read_available
 from camlab88.protocols.tablets import wacom4
 from camlab88.protocols.tablets.base import TabletParser

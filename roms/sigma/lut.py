@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.roms.sigma.chargen import RomError
 
 HERE = Path(__file__).resolve().parent

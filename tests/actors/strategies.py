@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
-from camlab88.apps.actors.model import Actor, ActorSet, Cycle, Material, Part
 from hypothesis import strategies as st
+
+from camlab88.apps.actors.model import Actor, ActorSet, Cycle, Material, Part
 
 coord = st.floats(-100, 100, allow_nan=False, allow_infinity=False)
 positive = st.floats(1e-6, 100, allow_nan=False, allow_infinity=False)

@@ -3,6 +3,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.actors.model import (
     ActorFileError,
     ActorSet,
@@ -12,9 +15,6 @@ from camlab88.apps.actors.model import (
     read_actors,
     write_actors,
 )
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
 from tests.actors.strategies import actor_set
 
 CHESS = Path(__file__).resolve().parents[2] / "examples" / "ca" / "chess.actors"

@@ -3,6 +3,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.apps.actors.model import Actor, Material, Part, read_actors
 from camlab88.apps.actors.preview import turntable
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.actors.model import Actor, ActorSet, Material, Part
 from camlab88.apps.actors.render import Look, Placed, Shot, Stage, render_frame, render_linear
 from camlab88.apps.snooker.render.lights import Lights

@@ -9,9 +9,9 @@ import shutil
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.apps.actors.editor import layout as L
 from camlab88.apps.actors.model import Part, format_actors, read_actors
-
 from tests.actors_editor.driver import MAZE, Driver, screen
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "ca"

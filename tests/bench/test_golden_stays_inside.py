@@ -8,6 +8,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+
 from camlab88.bench.golden import compare_golden, golden_path
 
 pytest_plugins = ["pytester"]

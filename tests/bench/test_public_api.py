@@ -3,11 +3,11 @@ These tests import nothing but ``camlab88``'s public names and the plugin's fixt
 
 from __future__ import annotations
 
-import camlab88
 import numpy as np
 import pytest
-from camlab88 import ProtocolError, Rainbow, Sigma, TraceEvent
 
+import camlab88
+from camlab88 import ProtocolError, Rainbow, Sigma, TraceEvent
 from tests.support.processes import fresh_python
 
 BOX = b"\r+-*/HI2GI200200GJ600200600400200400200200BH"

@@ -8,8 +8,9 @@ import json
 from pathlib import Path
 
 import numpy as np
-from camlab88.cli import main
 from PIL import Image
+
+from camlab88.cli import main
 
 BAD = b"\r+-*/HI2GI200200GJ600200QQ600400BH"  # QQ at byte 24
 
@@ -107,6 +108,7 @@ def _serve(tmp_path, *extra):
 
 def test_rainbow_serve_traces_and_strict_stops_at_the_first_refusal(tmp_path):
     import pytest
+
     from camlab88.protocols.rainbow import RainbowClient, RainbowRefused, SocketTransport
     from camlab88.protocols.rainbow.stream import StreamError
 

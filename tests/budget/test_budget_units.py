@@ -4,6 +4,7 @@ a bad setting named, the refusal's words."""
 from __future__ import annotations
 
 import pytest
+
 from camlab88.base import budget
 
 

@@ -12,6 +12,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
+
 from camlab88.apps.ca.patterns import read_pattern
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "ca" / "golly"

@@ -5,11 +5,12 @@ from __future__ import annotations
 from collections.abc import Iterator
 from contextlib import contextmanager
 
+from hypothesis import strategies as st
+
 from camlab88.apps.ca import engine as engine_mod
 from camlab88.apps.ca.engine import Engine
 from camlab88.apps.ca.library import rules_path
 from camlab88.apps.ca.rules import load_rules
-from hypothesis import strategies as st
 
 LIFE = load_rules(rules_path("life"))
 

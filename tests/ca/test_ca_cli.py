@@ -6,6 +6,7 @@ import json
 from pathlib import Path
 
 import pytest
+
 from camlab88.apps.ca import log
 from camlab88.apps.ca.library import rules_path
 from camlab88.cli import main

@@ -6,6 +6,9 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.ca.library import rules_path
 from camlab88.apps.ca.rules import (
     MATCH_EXACT,
@@ -19,8 +22,6 @@ from camlab88.apps.ca.rules import (
     load_rules,
     parse_rules,
 )
-from hypothesis import given, settings
-from hypothesis import strategies as st
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "ca"
 

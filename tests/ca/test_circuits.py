@@ -6,6 +6,7 @@ from __future__ import annotations
 import random
 
 import pytest
+
 from camlab88.apps.ca import circuits as C
 from camlab88.apps.ca.engine import Engine
 from camlab88.apps.ca.library import pattern_path, rules_path

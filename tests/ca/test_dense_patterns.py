@@ -8,13 +8,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.ca.engine import CENTRE, Engine
 from camlab88.apps.ca.patterns import ORIENTATIONS, GridPattern, Pattern, PatternError, parse_rle
 from camlab88.apps.ca.rle_body import SMALL_BODY, decode, decode_body, decode_compiled
 from camlab88.cli import main
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
 from tests.ca.helpers import LIFE
 from tests.support.processes import fresh_python
 

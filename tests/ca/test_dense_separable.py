@@ -4,14 +4,14 @@ the plain dense kernel and of the hash kernel, on random commuting rule sets and
 from __future__ import annotations
 
 import numpy as np
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.ca import engine as engine_mod
 from camlab88.apps.ca import tables as tables_mod
 from camlab88.apps.ca.engine import Engine
 from camlab88.apps.ca.rules import parse_rules
 from camlab88.apps.ca.tables import compile_rules
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
 from tests.ca.helpers import engine_constants, interpretation_lines, kernels_used
 
 

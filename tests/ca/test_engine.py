@@ -4,12 +4,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.ca import engine as engine_mod
 from camlab88.apps.ca.engine import Engine, Rect
 from camlab88.apps.ca.library import pattern_path
 from camlab88.apps.ca.patterns import read_pattern
 from camlab88.apps.ca.rules import parse_rules
-
 from tests.ca.helpers import LIFE, cellset, kernels_used, life, shifted
 
 BLOCK = "OO\nOO"

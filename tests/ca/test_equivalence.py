@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-from camlab88.apps.ca.engine import Engine
-from camlab88.apps.ca.rules import parse_rules
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from camlab88.apps.ca.engine import Engine
+from camlab88.apps.ca.rules import parse_rules
 from tests.ca.helpers import engine_constants, interpretation_lines, kernels_used
 
 OPS = ["+", "|", "&", "^"]

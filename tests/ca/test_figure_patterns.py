@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pytest
+
 from camlab88.apps.ca import library
 from camlab88.apps.ca.engine import Engine
 from camlab88.apps.ca.patterns import read_pattern

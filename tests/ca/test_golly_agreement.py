@@ -7,11 +7,11 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+
 from camlab88.apps.ca import library
 from camlab88.apps.ca.engine import CENTRE, Engine
 from camlab88.apps.ca.patterns import read_pattern
 from camlab88.apps.ca.rules import load_rules
-
 from tests.ca.golly_oracle import DATA, golly_cells, need_bgolly
 
 CASES = [  # file in tests/data/ca/golly, our rule set, generations, a Golly rule table?

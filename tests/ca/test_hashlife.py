@@ -4,13 +4,14 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.ca import log
 from camlab88.apps.ca.algorithms import AUTO_MIN_GENERATIONS, choose_engine
 from camlab88.apps.ca.engine import SIDE, Engine, Rect
 from camlab88.apps.ca.library import rules_path
 from camlab88.apps.ca.rules import load_rules, parse_rules
-from hypothesis import given, settings
-from hypothesis import strategies as st
 
 LIBRARY = {name: load_rules(rules_path(name))
            for name in ("life", "maze", "turing_primes", "circuits", "overgrazing")}

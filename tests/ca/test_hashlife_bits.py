@@ -6,6 +6,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.ca import log
 from camlab88.apps.ca.engine import SIDE, Engine
 from camlab88.apps.ca.hashlife.algorithm import HashLife
@@ -15,8 +18,6 @@ from camlab88.apps.ca.hashlife.generic import GenericRun
 from camlab88.apps.ca.hashlife.tree import Tree
 from camlab88.apps.ca.library import rules_path
 from camlab88.apps.ca.rules import load_rules, parse_rules
-from hypothesis import given, settings
-from hypothesis import strategies as st
 
 LIFE = load_rules(rules_path("life"))
 # Not outer-totalistic: orthogonal neighbours add 1, diagonal ones 16, the cell itself ORs

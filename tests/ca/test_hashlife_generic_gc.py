@@ -6,7 +6,6 @@ reads its own cells after the other engine's collection."""
 from __future__ import annotations
 
 from camlab88.apps.ca.rules import parse_rules
-
 from tests.ca.test_hashlife import LIBRARY, PLACES, soup
 
 

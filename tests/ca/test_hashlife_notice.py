@@ -9,10 +9,11 @@ import subprocess
 import sys
 from pathlib import Path
 
+from numba.core.registry import CPUDispatcher
+
 import camlab88.apps.ca.hashlife  # noqa: F401 - registers its kernel groups
 from camlab88.apps.ca.hashlife import kernels
 from camlab88.base import kernel_notice
-from numba.core.registry import CPUDispatcher
 
 HL = "camlab88.apps.ca.hashlife.kernels:"  # + a kernel's name
 

@@ -4,11 +4,11 @@ and the doubling "Fast forward", on the emulated Rainbow (headless)."""
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.ca import log
 from camlab88.apps.ca.program import stepping
 from camlab88.apps.ca.program.menus import JUMP_ITEMS, MAIN_ITEMS, MainMenu
 from camlab88.apps.ca.program.program import Options
-
 from tests.ca_program.driver import Driver
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+
 from camlab88.apps.ca import library, maze, turing
 from camlab88.apps.ca.engine import Engine
 from camlab88.apps.ca.library_build import generated

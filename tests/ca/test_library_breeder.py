@@ -12,7 +12,6 @@ from camlab88.apps.ca import library
 from camlab88.apps.ca.engine import Engine
 from camlab88.apps.ca.patterns import read_pattern
 from camlab88.apps.ca.rules import load_rules
-
 from tests.ca.golly_oracle import need_bgolly
 
 # bgolly 3.3 on Golly's Patterns/Life/Breeders/breeder.lif (the file's source)

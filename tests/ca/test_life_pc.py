@@ -8,9 +8,10 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from camlab88.apps.ca.patterns import PatternError, parse_life, read_pattern, write_pattern
 from hypothesis import given, settings
 from hypothesis import strategies as st
+
+from camlab88.apps.ca.patterns import PatternError, parse_life, read_pattern, write_pattern
 
 
 def _cells(text: str) -> set[tuple[int, int]]:

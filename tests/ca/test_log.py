@@ -6,6 +6,7 @@ import os
 from pathlib import Path
 
 import pytest
+
 from camlab88.apps.ca import log
 from camlab88.apps.ca.engine import Engine, Rect
 from camlab88.apps.ca.library import pattern_path, rules_path

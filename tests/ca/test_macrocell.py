@@ -8,6 +8,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.ca.patterns import (
     GridPattern,
     Pattern,
@@ -17,8 +20,6 @@ from camlab88.apps.ca.patterns import (
     read_pattern,
 )
 from camlab88.cli import main
-from hypothesis import given, settings
-from hypothesis import strategies as st
 
 GOLLY = Path(__file__).resolve().parents[1] / "data" / "ca" / "golly"
 
@@ -156,7 +157,6 @@ def test_ca_convert_writes_macrocell_and_ca_run_reads_it(tmp_path: Path, capsys)
 
 def test_ca_program_loads_a_macrocell_pattern() -> None:
     from camlab88.apps.ca.program.program import Options
-
     from tests.ca_program.driver import Driver
 
     d = Driver(Options(rules="wireworld", pattern=str(GOLLY / "primes.mc")))

@@ -6,6 +6,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.ca.library import pattern_path
 from camlab88.apps.ca.patterns import (
     ORIENTATIONS,
@@ -21,8 +24,6 @@ from camlab88.apps.ca.patterns import (
     read_pattern,
     write_pattern,
 )
-from hypothesis import given, settings
-from hypothesis import strategies as st
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "ca"
 

@@ -5,14 +5,14 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.ca import library
 from camlab88.apps.ca.engine import Engine
 from camlab88.apps.ca.patterns import read_pattern
 from camlab88.apps.ca.reference_engine import ReferenceEngine
 from camlab88.apps.ca.rules import RuleSet, load_rules, parse_rules
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
 from tests.ca.test_equivalence import rule_sets
 
 

@@ -7,7 +7,6 @@ from camlab88.apps.ca import log
 from camlab88.apps.ca.engine import SIDE, Engine, Rect
 from camlab88.apps.ca.program.commands import rect_from
 from camlab88.apps.ca.session import Session
-
 from tests.ca.helpers import LIFE, cellset, shifted
 
 GLIDER = ".O.\n..O\nOOO"

@@ -6,11 +6,12 @@ reads (apps/ca/universe.py) are numpy's."""
 from __future__ import annotations
 
 import numpy as np
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.ca.rules import parse_rules
 from camlab88.apps.ca.tables import LOOKUP_SIZE, compile_rules
 from camlab88.apps.ca.universe import distinct
-from hypothesis import given, settings
-from hypothesis import strategies as st
 
 # values near the table's end and beyond it, where a range is cut off
 _VALUES = st.one_of(st.integers(0, 40), st.integers(LOOKUP_SIZE - 3, LOOKUP_SIZE + 3),

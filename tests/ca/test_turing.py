@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.ca import turing
 from camlab88.apps.ca.engine import Engine, Rect
 from camlab88.apps.ca.rules import parse_rules

@@ -5,6 +5,7 @@ it into a cell list, and the other forms are never kept beside it."""
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.ca.engine import CENTRE, Engine
 from camlab88.apps.ca.hashlife.tree import Tree
 from camlab88.apps.ca.library import rules_path

@@ -6,12 +6,13 @@ import json
 from pathlib import Path
 
 import numpy as np
+from PIL import Image
+
 from camlab88.apps.ca.program.demo import choose, demo_events, leave_editing
 from camlab88.apps.ca.program.program import CAProgram, Options
 from camlab88.apps.ca.program.script_events import parse, play
 from camlab88.cli import main
 from camlab88.emulator.rainbow.session import in_process
-from PIL import Image
 
 
 def _json_last(capsys) -> dict:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.ca import library, log
 from camlab88.apps.ca.engine import CENTRE, Rect
 from camlab88.apps.ca.patterns import read_pattern
@@ -11,7 +12,6 @@ from camlab88.apps.ca.program.colours import DEAD_GREY, GRID_WHITE
 from camlab88.apps.ca.program.menus import MAIN_ITEMS
 from camlab88.apps.ca.program.program import Options
 from camlab88.apps.ca.program.viewport import VIEW_H, VIEW_W
-
 from tests.ca_program.driver import DATA, Driver
 from tests.support.golden import assert_matches_golden
 

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from camlab88.apps.ca.program.program import Options
 
+from camlab88.apps.ca.program.program import Options
 from tests.ca_program.driver import Driver
 
 

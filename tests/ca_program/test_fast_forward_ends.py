@@ -4,8 +4,8 @@ frequency in use before it, and the next shown generation is that many on."""
 from __future__ import annotations
 
 import pytest
-from camlab88.apps.ca.program.program import Options
 
+from camlab88.apps.ca.program.program import Options
 from tests.ca_program.driver import Driver
 
 

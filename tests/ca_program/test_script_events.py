@@ -5,10 +5,11 @@ from __future__ import annotations
 import re
 
 import pytest
-from camlab88.apps.ca.program.script_events import MouseState, ScriptError, parse, play
-from camlab88.protocols.rainbow.events import KeyEvent, MouseEvent
 from hypothesis import given, settings
 from hypothesis import strategies as st
+
+from camlab88.apps.ca.program.script_events import MouseState, ScriptError, parse, play
+from camlab88.protocols.rainbow.events import KeyEvent, MouseEvent
 
 
 def test_commands():

@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 import pytest
-from camlab88.tripos_args import TriposArgsError, parse_template, read_args
 from hypothesis import given
 from hypothesis import strategies as st
+
+from camlab88.tripos_args import TriposArgsError, parse_template, read_args
 
 T = "Log/k,RecordPansAndZooms/s,Checkpoint,Script/k,ReplayPansAndZooms/s"
 

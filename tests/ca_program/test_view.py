@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.ca.engine import CENTRE, SIDE, Engine
 from camlab88.apps.ca.library import rules_path
 from camlab88.apps.ca.program import raster

@@ -7,8 +7,8 @@ from pathlib import Path
 
 import imageio.v3 as iio
 import pytest
-from camlab88.cli import main
 
+from camlab88.cli import main
 from tests.cafilm.helpers import CHESS, ROOT
 
 GUN_CCL = str(ROOT / "examples" / "ca" / "gun.ccl")

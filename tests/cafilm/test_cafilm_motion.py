@@ -5,11 +5,11 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.actors.model import Actor, ActorSet, Cycle, Material, Part
 from camlab88.apps.cafilm.film import phase, stage_at
 from camlab88.apps.cafilm.motion import change, cycle_pose, posed
 from camlab88.apps.cafilm.timeline import Generation
-
 from tests.cafilm.helpers import glider_film
 
 BOX = (Part("box", (), (0.5, 0.5, 0.5)),)

@@ -7,11 +7,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+
 from camlab88.apps.cafilm.film import digest, render_png, stage_at, tasks
 from camlab88.apps.cafilm.period import host_for, period_frames
 from camlab88.apps.snooker.film.backends import DaskCluster, InProcess, LocalPool
 from camlab88.apps.snooker.film.schedule import frame_file, render_film
-
 from tests.cafilm.helpers import glider_film
 
 

@@ -5,7 +5,6 @@ those programs leave on Esc too, asking y/n/Esc where there is unsaved work."""
 from __future__ import annotations
 
 from camlab88.emulator.host_input import KeyDown, KeyUp, Quit
-
 from tests.controls.fakes import FakeClock, FakeWindow, harness_with
 from tests.support.targets import Counter
 
@@ -53,7 +52,6 @@ def test_the_targets_that_read_escape_say_so() -> None:
 def test_snooker_escape_asks_y_n_escape_before_leaving() -> None:
     from camlab88.apps.snooker.program.program import Program
     from camlab88.emulator.rainbow.session import in_process
-
     from tests.snooker_program.helpers import feed
 
     rainbow = in_process()

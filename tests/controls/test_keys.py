@@ -7,10 +7,10 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
-from camlab88.emulator.harness import Plugin
-from camlab88.emulator.host_input import KeyDown, KeyUp, Quit
 from PIL import Image
 
+from camlab88.emulator.harness import Plugin
+from camlab88.emulator.host_input import KeyDown, KeyUp, Quit
 from tests.controls.fakes import FakeClock, FakeWindow, harness_with
 from tests.support.targets import Counter
 

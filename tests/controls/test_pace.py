@@ -4,8 +4,8 @@ clock: no real sleeping)."""
 from __future__ import annotations
 
 import pytest
-from camlab88.emulator.harness.pace import Pacer
 
+from camlab88.emulator.harness.pace import Pacer
 from tests.controls.fakes import FakeClock, harness_with
 from tests.support.targets import Counter
 

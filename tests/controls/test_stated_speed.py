@@ -6,10 +6,10 @@ after a run (an injected clock and window: nothing sleeps, no display)."""
 from __future__ import annotations
 
 import pytest
+
 from camlab88.cli import main
 from camlab88.emulator.harness.control_options import Controls
 from camlab88.emulator.harness.replay import Replay
-
 from tests.controls.fakes import FakeClock, FakeWindow, harness_with
 from tests.support.targets import Counter
 

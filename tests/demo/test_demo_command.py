@@ -5,9 +5,10 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+from PIL import Image
+
 from camlab88.cli import main
 from camlab88.commands import demo
-from PIL import Image
 
 
 def _png(path: Path) -> np.ndarray:

@@ -14,8 +14,8 @@ from collections.abc import Callable
 from pathlib import Path
 
 import pytest
-from camlab88.cli import main
 
+from camlab88.cli import main
 from fuzz.engine import Hang, _alarm, _rss_mb, fuzz
 from fuzz.mutate import mutate
 from fuzz.targets import CORPUS, TARGETS

@@ -9,10 +9,10 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
+
 from camlab88.apps.kas.paint import opsfile
 from camlab88.protocols.session import SessionFileError
 from camlab88.protocols.session.format import loads
-
 from fuzz.engine import run_one
 from fuzz.targets import CORPUS, TARGETS
 

@@ -10,7 +10,6 @@ import sys
 from pathlib import Path
 
 from camlab88.cli import build_parser
-
 from tests.support.processes import fresh_python
 
 ROOT = Path(__file__).resolve().parents[2]

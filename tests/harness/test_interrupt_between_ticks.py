@@ -11,6 +11,7 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
+
 from camlab88.emulator.harness import RunOptions, run
 from camlab88.emulator.harness.sigma_line import TICK, SigmaLineTarget
 from camlab88.emulator.machine import SigmaMachine

@@ -6,9 +6,9 @@ import argparse
 
 import numpy as np
 import pytest
+
 from camlab88.emulator.harness import DisplayRefused, Plugin, RunOptions, choose_headless, run
 from camlab88.emulator.host_input import KeyDown, Quit
-
 from tests.support.targets import Counter
 
 

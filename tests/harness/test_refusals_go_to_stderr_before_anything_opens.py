@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import pytest
+
 from camlab88.emulator.harness.display import DisplayRefused
 
 

@@ -9,6 +9,7 @@ import signal
 from pathlib import Path
 
 import pytest
+
 from camlab88 import cli
 from camlab88.emulator.harness.loop import Harness
 from camlab88.protocols.session import format as session_format

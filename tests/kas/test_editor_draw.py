@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+
 from camlab88.apps.kas.editor import MENU_ITEMS, Editor, menu_layout
 from camlab88.apps.kas.events import Key, MenuPick, Pointer
 from camlab88.apps.kas.model import Chain, Drawing

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.kas.editor import Editor
 from camlab88.apps.kas.events import Key, MenuPick
 from camlab88.apps.kas.model import Chain, Drawing

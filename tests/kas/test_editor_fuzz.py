@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 import numpy as np
-from camlab88.apps.kas.editor import MENU_ITEMS, Editor
-from camlab88.apps.kas.events import Key, MenuPick, Pointer
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+
+from camlab88.apps.kas.editor import MENU_ITEMS, Editor
+from camlab88.apps.kas.events import Key, MenuPick, Pointer
 
 coord = st.floats(-7, 6, allow_nan=False).map(lambda v: round(v, 2))
 pointer = st.builds(Pointer, coord, coord, st.booleans())

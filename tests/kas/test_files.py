@@ -6,12 +6,12 @@ import os
 
 import numpy as np
 import pytest
-from camlab88.apps.kas import files
-from camlab88.apps.kas.files import KasFileError, SamplePath, Timing
-from camlab88.apps.kas.model import AnimSequence, Chain, Drawing
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from camlab88.apps.kas import files
+from camlab88.apps.kas.files import KasFileError, SamplePath, Timing
+from camlab88.apps.kas.model import AnimSequence, Chain, Drawing
 from tests.support.refusals import refusal_of
 
 coord = st.floats(-1e4, 1e4, allow_nan=False, allow_infinity=False)

@@ -4,12 +4,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.kas import correspond, pathfit, splines, timing
 from camlab88.apps.kas.files import SamplePath, Timing
 from camlab88.apps.kas.inbetween import inbetween, inbetween_keys
 from camlab88.apps.kas.model import Chain, Drawing, drop_collinear
-from hypothesis import given, settings
-from hypothesis import strategies as st
 
 
 def chain(pts, colour=1, section=0):

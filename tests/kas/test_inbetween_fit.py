@@ -5,12 +5,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.kas import pathfit
 from camlab88.apps.kas.files import KasFileError, SamplePath
 from camlab88.apps.kas.inbetween import inbetween
 from camlab88.apps.kas.model import Chain, Drawing
-from hypothesis import given, settings
-from hypothesis import strategies as st
 
 ARCH = SamplePath([(0, 0), (1, 1), (2, 0)])
 

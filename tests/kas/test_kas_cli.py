@@ -3,13 +3,13 @@
 from __future__ import annotations
 
 import numpy as np
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.kas import demo, files
 from camlab88.apps.kas.events import Key, MenuPick, Pointer, parse_script
 from camlab88.apps.kas.files import KasFileError
 from camlab88.cli import main
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
 from tests.support.refusals import refusal_of
 
 

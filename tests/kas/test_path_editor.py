@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.kas.events import Pointer
 from camlab88.apps.kas.inbetween import inbetween
 from camlab88.apps.kas.model import Chain, Drawing

@@ -7,6 +7,7 @@ import xml.etree.ElementTree as ET
 
 import imageio.v3 as iio
 import numpy as np
+
 from camlab88.apps.kas import plot
 from camlab88.apps.kas.export import export
 from camlab88.apps.kas.model import AnimSequence, Chain, Drawing

@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.apps.kas.editor import Editor
 from camlab88.apps.kas.events import parse_script
 

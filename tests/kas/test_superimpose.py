@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pytest
+
 from camlab88.apps.kas.model import AnimSequence, Chain, Drawing
 from camlab88.apps.kas.superimpose import multiple_image, superimpose
 

@@ -4,6 +4,7 @@ from the first transmitted character (the thesis's clock: tests/kas/test_viewer_
 from __future__ import annotations
 
 import pytest
+
 from camlab88.apps.kas import viewer_schedule as vs
 
 

@@ -5,13 +5,13 @@ mode), reloaded on the terminal; a moved chain returns to its pen at full bright
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.kas.editor import Editor
 from camlab88.apps.kas.model import Chain, Drawing
 from camlab88.apps.kas.program import EditorFront, parse_timed_script
 from camlab88.apps.kas.program import layout as L
 from camlab88.apps.kas.program.screen import dim_pens
 from camlab88.emulator.sigma import Terminal
-
 from tests.kas_front.helpers import drive
 
 

@@ -5,12 +5,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.kas.editor import Editor
 from camlab88.apps.kas.files import KasFileError
 from camlab88.apps.kas.program import EditorFront, parse_timed_script
 from camlab88.emulator.sigma import Terminal
 from camlab88.protocols.sigma.keyboard import bytes_to_keys
-
 from tests.kas_front.helpers import DATA, GOLDEN, drive, model_only, run_editor
 from tests.support.golden import assert_matches_golden
 

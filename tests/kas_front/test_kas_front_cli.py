@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import numpy as np
-from camlab88.apps.kas import files
-from camlab88.cli import main
 from PIL import Image
 
+from camlab88.apps.kas import files
+from camlab88.cli import main
 from tests.kas_front.helpers import DATA, model_only
 
 ROOT_EXAMPLES = DATA.parents[2] / "examples" / "kas"

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.kas import files
 from camlab88.apps.kas.events import Key, Pointer
 from camlab88.apps.kas.library import LIBRARY
@@ -10,7 +11,6 @@ from camlab88.apps.kas.path_editor import PathEditor
 from camlab88.apps.kas.program import PathFront, demo_session
 from camlab88.emulator.sigma import Terminal
 from camlab88.protocols.sigma import Decoder
-
 from tests.kas_front.helpers import GOLDEN, drive, script
 from tests.support.golden import assert_matches_golden
 

@@ -3,6 +3,9 @@
 from __future__ import annotations
 
 import numpy as np
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.kas import files
 from camlab88.apps.kas.editor import Editor
 from camlab88.apps.kas.files import KasFileError
@@ -13,9 +16,6 @@ from camlab88.apps.kas.program.draw import Painter, chain_prims, clip_polyline, 
 from camlab88.emulator.sigma import Terminal
 from camlab88.protocols.sigma import Decoder, Encoder
 from camlab88.protocols.sigma.keyboard import bytes_to_keys
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
 from tests.kas_front.helpers import drive
 
 WORDS = st.sampled_from(["move", "down", "up", "key", "menu", "type", "wait", "fly", "+0.1",
@@ -98,6 +98,7 @@ def test_guide_keyframe_highlighted_on_screen() -> None:
 def test_a_script_file_with_a_bad_byte_a_directory_or_no_file_is_named(tmp_path) -> None:
     """A non-UTF-8 KAS script is named by file, line and column, not by Python's codec."""
     import pytest
+
     from camlab88.apps.kas.files import KasFileError
     from camlab88.apps.kas.program.script import load_timed_script
 

@@ -8,7 +8,6 @@ from pathlib import Path
 from camlab88.apps.kas import files
 from camlab88.apps.kas.events import parse_script
 from camlab88.cli import main
-
 from tests.kas_front.helpers import DATA
 
 UNTIMED = Path(__file__).resolve().parents[1] / "data" / "kas" / "walk_edit_script.txt"

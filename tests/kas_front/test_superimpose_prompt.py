@@ -6,6 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.apps.kas import files
 from camlab88.apps.kas.model import AnimSequence, Chain, Drawing
 from camlab88.apps.kas.program.superimpose_front import SuperimposeFront

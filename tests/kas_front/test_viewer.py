@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.kas import demo
 from camlab88.apps.kas import viewer_schedule as vs
 from camlab88.apps.kas.program.viewer import (

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.kas import files
 from camlab88.apps.kas.inbetween import inbetween
 from camlab88.apps.kas.library import LIBRARY

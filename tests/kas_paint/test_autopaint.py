@@ -7,12 +7,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.kas.model import AnimSequence, Chain, Drawing
 from camlab88.apps.kas.paint import areas, shape, vector
 from camlab88.apps.kas.paint.ops import Op, OpsFile
 from camlab88.apps.kas.paint.program import PaintProgram
 from camlab88.apps.kas.paint.replay import replay
-
 from tests.kas_paint import oracle
 from tests.kas_paint.helpers import sun, t5688_line, walk
 

@@ -7,13 +7,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.kas.model import AnimSequence, Chain, Drawing
 from camlab88.apps.kas.paint import areas
 from camlab88.apps.kas.paint.ops import Op, OpsFile
 from camlab88.apps.kas.paint.planes import FILL_MASK, OUTLINE_MASK
 from camlab88.apps.kas.paint.program import PaintProgram
 from camlab88.apps.kas.paint.session import PaintSession
-
 from tests.kas_paint.helpers import t5688_line
 from tests.kas_paint.test_kas_paint_golden import FIG_OPS, figure_38
 

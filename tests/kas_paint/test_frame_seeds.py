@@ -9,15 +9,15 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.kas.model import AnimSequence, Chain, Drawing
 from camlab88.apps.kas.paint import areas, opsfile
 from camlab88.apps.kas.paint.ops import Op, OpsFile, Seeds
 from camlab88.apps.kas.paint.program import PaintProgram
 from camlab88.apps.kas.paint.replay import replay
 from camlab88.apps.kas.paint.session import PaintSession
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
 from tests.kas_paint.helpers import WALK_FILLS, t5688_line, walk
 
 # a figure-eight (two lobes, left and right of the origin), drawn in two frames

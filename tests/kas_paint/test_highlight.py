@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.kas.paint import planes
 from camlab88.apps.kas.paint.ops import OpsFile
 from camlab88.apps.kas.paint.program import HIGHLIGHT_RGB, PaintProgram
-
 from tests.kas_paint.helpers import WALK_FILLS, t5688_line, walk
 
 

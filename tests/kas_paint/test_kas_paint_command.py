@@ -4,11 +4,11 @@ file, then the whole sequence painted from it into frame_NNNNN.png (from 1) and 
 from __future__ import annotations
 
 import numpy as np
+from PIL import Image
+
 from camlab88.apps.kas import files
 from camlab88.apps.kas.paint import opsfile
 from camlab88.cli import main
-from PIL import Image
-
 from tests.kas_paint.helpers import walk
 
 

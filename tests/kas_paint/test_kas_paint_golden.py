@@ -7,12 +7,12 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+
 from camlab88.apps.kas.model import AnimSequence, Chain, Drawing
 from camlab88.apps.kas.paint import areas
 from camlab88.apps.kas.paint.ops import Op, OpsFile
 from camlab88.apps.kas.paint.program import PaintProgram
 from camlab88.apps.kas.paint.replay import replay
-
 from tests.kas_paint.helpers import WALK_FILLS, t5688_line, walk
 from tests.support.golden import assert_matches_golden
 

@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.kas.paint import areas, opsfile, script
 from camlab88.apps.kas.paint.ops import OpsFile
 from camlab88.apps.kas.paint.session import PaintSession
-
 from tests.kas_paint.helpers import t5688_line, walk
 
 SCRIPT = """colour 3

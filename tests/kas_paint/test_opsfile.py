@@ -5,13 +5,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.kas.paint import opsfile
 from camlab88.apps.kas.paint.ops import Op, OpsFile
 from camlab88.apps.kas.paint.palette import Palette
 from camlab88.apps.kas.paint.program import PaintProgram
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
 from tests.kas_paint.helpers import one_frame, t5688_line
 
 TEXT = """KAS paint 1

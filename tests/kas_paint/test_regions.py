@@ -5,10 +5,10 @@ closed by a tolerance instead of the colour leaking."""
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.kas.model import AnimSequence, Chain, Drawing
 from camlab88.apps.kas.paint import areas
 from camlab88.apps.kas.paint.ops import Op, OpsFile
-
 from tests.kas_paint.oracle import seg_distance
 from tests.kas_paint.test_autopaint import _paint
 

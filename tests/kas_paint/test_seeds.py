@@ -5,13 +5,13 @@ them fills every enclosed piece and nothing outside (checked against a geometric
 from __future__ import annotations
 
 import numpy as np
+from hypothesis import example, given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.kas.paint import areas, orders, seeds
 from camlab88.apps.kas.paint.autopaint import Step
 from camlab88.apps.kas.paint.ops import Op, OpsFile
 from camlab88.apps.kas.paint.program import PaintProgram
-from hypothesis import example, given, settings
-from hypothesis import strategies as st
-
 from tests.kas_paint import oracle
 from tests.kas_paint.helpers import one_frame, terminal_for
 

@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 import numpy as np
-from camlab88.apps.kas.paint import vector
-from camlab88.emulator.sigma import raster
 from hypothesis import given, settings
 from hypothesis import strategies as st
+
+from camlab88.apps.kas.paint import vector
+from camlab88.emulator.sigma import raster
 
 coord = st.integers(0, 700)
 

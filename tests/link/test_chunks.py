@@ -3,9 +3,10 @@ from __future__ import annotations
 from fractions import Fraction
 
 import pytest
-from camlab88.protocols.link import LineSettings, SerialLine, chunks_by_period
 from hypothesis import given, settings
 from hypothesis import strategies as st
+
+from camlab88.protocols.link import LineSettings, SerialLine, chunks_by_period
 
 
 def test_one_second_of_9600_baud_in_25ths() -> None:

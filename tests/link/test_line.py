@@ -3,10 +3,10 @@ from __future__ import annotations
 from fractions import Fraction
 
 import pytest
-from camlab88.protocols.link import LineSettings, SerialLine, VirtualClock
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from camlab88.protocols.link import LineSettings, SerialLine, VirtualClock
 from tests.link.naive import simulate
 
 CT = Fraction(1, 960)

@@ -7,6 +7,7 @@ import threading
 from pathlib import Path
 
 import pytest
+
 from camlab88.protocols.link import LineSettings, Recorder, SerialLine
 from camlab88.protocols.link.cli import dump, main, printable, run_echo, write_stream
 from camlab88.protocols.link.transports import TcpBridge

@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 import serial
+
 from camlab88.protocols.link import SerialLine
 from camlab88.protocols.link.pty import PtyPort
-
 from tests.link.exactly import read_exactly
 
 

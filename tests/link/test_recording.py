@@ -5,6 +5,9 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.protocols.link import (
     LineSettings,
     Recorder,
@@ -16,9 +19,6 @@ from camlab88.protocols.link import (
     replay_into,
 )
 from camlab88.protocols.link.recording import format_time, parse_recording, parse_time
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
 from tests.support.refusals import refusal_of
 
 CT = Fraction(1, 960)

@@ -16,9 +16,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from camlab88.protocols.link import serial_port
 from PIL import Image
 
+from camlab88.protocols.link import serial_port
 from tests.support.serial_servers import Rfc2217Server, StreamServer, null_modem
 
 STREAM = Path(__file__).parents[1] / "data" / "link" / "pgplot_goctest.goc"

@@ -3,6 +3,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 import pytest
+
 from camlab88.protocols.link import LineSettings, Throttle, VirtualClock, to_time
 
 

@@ -6,7 +6,6 @@ import socket
 
 from camlab88.protocols.link import SerialLine
 from camlab88.protocols.link.transports import BUSY, SerialUrlBridge, TcpBridge
-
 from tests.link.exactly import read_exactly
 
 

@@ -7,11 +7,11 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
-from camlab88.emulator.machine import MachineStateError, RainbowMachine, SigmaMachine
-from camlab88.emulator.machine.state_file import MAGIC
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from camlab88.emulator.machine import MachineStateError, RainbowMachine, SigmaMachine
+from camlab88.emulator.machine.state_file import MAGIC
 from tests.support.processes import fresh_python
 
 PICTURE = (b"\r+-*/HI2GI200200GJ600200600400200400200200BHtext\r\n+-*/JH 6s0\x1fGIKQ1"

@@ -8,6 +8,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+
 from camlab88.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]

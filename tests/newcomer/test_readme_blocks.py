@@ -9,6 +9,7 @@ import shutil
 from pathlib import Path
 
 import pytest
+
 from camlab88.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -6,6 +6,7 @@ import os
 from pathlib import Path
 
 import pytest
+
 from camlab88.base.atomicfile import atomic_output, write_atomic
 
 

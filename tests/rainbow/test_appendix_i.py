@@ -4,6 +4,7 @@ moved independently, stays correctly blended with no pixel redrawn."""
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.emulator.rainbow.session import in_process
 from camlab88.protocols.rainbow import transparency as tx
 from camlab88.protocols.rainbow.antialias import coverage

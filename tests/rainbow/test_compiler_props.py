@@ -4,13 +4,13 @@ incremental compile after random edits == a compile from scratch."""
 from __future__ import annotations
 
 import numpy as np
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
 from camlab88.emulator.rainbow import Rainbow, RainbowError
 from camlab88.emulator.rainbow.bands import BandStructure, Span
 from camlab88.emulator.rainbow.compiler import compile_graph
 from camlab88.emulator.rainbow.memory import VideoMemory
-from hypothesis import HealthCheck, given, settings
-from hypothesis import strategies as st
-
 from tests.rainbow.conftest import random_lut
 
 coord = st.integers(-120, 800) | st.integers(0, 200)  # the second crowds pads together

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.emulator.rainbow import (
     GraphError,
     OutOfVideoMemory,

@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 import numpy as np
-from camlab88.emulator.rainbow import Rainbow
-from camlab88.emulator.rainbow.memory import VideoMemory
 from hypothesis import given, settings
 from hypothesis import strategies as st
+
+from camlab88.emulator.rainbow import Rainbow
+from camlab88.emulator.rainbow.memory import VideoMemory
 
 far = st.integers(-3000, 3000)
 near = st.integers(-20, 80)

@@ -4,9 +4,10 @@ them in a fraction of the time) give numpy's results."""
 from __future__ import annotations
 
 import numpy as np
-from camlab88.emulator.rainbow import _kernels
 from hypothesis import given, settings
 from hypothesis import strategies as st
+
+from camlab88.emulator.rainbow import _kernels
 
 
 @settings(deadline=None)  # the first example compiles or loads the kernels

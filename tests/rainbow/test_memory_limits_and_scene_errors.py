@@ -9,6 +9,7 @@ import json
 
 import numpy as np
 import pytest
+
 from camlab88.cli import main
 from camlab88.emulator.rainbow import GraphError, OutOfVideoMemory, Rainbow, RainbowError
 from camlab88.emulator.rainbow.graph import MAX_COORD

@@ -6,9 +6,9 @@ import json
 from pathlib import Path
 
 import numpy as np
-from camlab88.cli import main
 from PIL import Image
 
+from camlab88.cli import main
 from tests.support.golden import assert_matches_golden
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "rainbow"

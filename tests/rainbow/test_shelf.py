@@ -8,10 +8,10 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+
 from camlab88.emulator.rainbow import Rainbow
 from camlab88.emulator.rainbow.session import in_process
 from camlab88.protocols.rainbow import shelf
-
 from tests.support.golden import assert_matches_golden
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "rainbow"
@@ -107,8 +107,9 @@ def test_components_occupy_their_own_planes_at_one_priority() -> None:
 
 
 def test_rainbow_run_demo_shelf(tmp_path) -> None:
-    from camlab88.cli import main
     from PIL import Image
+
+    from camlab88.cli import main
 
     shot = tmp_path / "shelf.png"
     assert main(["rainbow", "run", "--demo", "shelf", "--headless", "--stop-after", "3",

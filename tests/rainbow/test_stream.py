@@ -7,6 +7,9 @@ import struct
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.emulator.rainbow import Rainbow, VideoMemory
 from camlab88.emulator.rainbow.executor import Executor
 from camlab88.emulator.rainbow.session import in_process, replay_on
@@ -14,9 +17,6 @@ from camlab88.protocols.rainbow import MouseEvent, RainbowClient, RainbowRefused
 from camlab88.protocols.rainbow.events import KeyEvent, TabletEvent, decode_events, encode_event
 from camlab88.protocols.rainbow.recording import Recording
 from camlab88.protocols.rainbow.stream import OPS_LIST, Decoder, StreamError, encode
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
 from tests.support.rainbow_server import serving
 
 

@@ -4,6 +4,7 @@ pop-up menu, a cross-shaped menu, message areas and the four-times-mapped pannin
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.emulator.rainbow.session import in_process
 from camlab88.protocols.rainbow import SCREEN
 from camlab88.protocols.rainbow.ui import CrossMenu, DoubleBuffer, MessageArea, PopupMenu, SuperPad

@@ -11,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+
 from camlab88.apps.ca.log import LogError, read_log_settings
 from camlab88.apps.ca.patterns import PatternError, read_pattern
 from camlab88.apps.ca.rules import RuleError, load_rules

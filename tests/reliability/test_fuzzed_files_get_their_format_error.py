@@ -4,10 +4,10 @@ something other than its format's error before its fix."""
 from __future__ import annotations
 
 import pytest
+
 from camlab88.apps.ca.log import LogError, parse_checkpoint
 from camlab88.apps.ca.patterns import PatternError, parse_native
 from camlab88.apps.snooker.session import Session, SessionError
-
 from fuzz.targets import TARGETS
 
 CHECKPOINT = ("CAMLAB88-CA-CHECKPOINT 1\ngeneration 1\nedges wrap\nseed 0\nadvance {}\nrules 0\n"

@@ -10,6 +10,7 @@ import socket
 from pathlib import Path
 
 import pytest
+
 from camlab88 import cli
 from camlab88.cli import main
 from camlab88.protocols.session import read, write

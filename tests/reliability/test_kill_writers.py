@@ -19,6 +19,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
+
 from camlab88.base.atomicfile import sweep_stale, write_atomic
 
 ROOT = Path(__file__).resolve().parents[2]

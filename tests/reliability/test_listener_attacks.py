@@ -12,11 +12,11 @@ import time
 from fractions import Fraction
 
 import pytest
+
 from camlab88.protocols.link import LineSettings, SerialLine
 from camlab88.protocols.link.transports import TcpBridge
 from camlab88.protocols.rainbow import RainbowClient, SocketTransport
 from camlab88.protocols.rainbow.stream import encode
-
 from tests.support.listeners import drain, echo_step
 from tests.support.rainbow_server import serving
 

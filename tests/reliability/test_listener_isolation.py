@@ -13,7 +13,6 @@ from fractions import Fraction
 from camlab88.emulator.harness.sigma_line import SigmaLineTarget
 from camlab88.emulator.machine import SigmaMachine
 from camlab88.protocols.link.transports import TcpBridge
-
 from tests.support.listeners import EchoLine, drain
 
 A_BYTES = bytes(range(0x41, 0x5B)) * 1200  # 31,200 bytes of A-Z: 32 s of line time

@@ -16,7 +16,6 @@ from fractions import Fraction
 from camlab88.protocols.link import LineSettings, SerialLine
 from camlab88.protocols.link.transports import SESSION_TIME, TcpBridge
 from camlab88.protocols.rainbow.stream import encode
-
 from tests.support.rainbow_server import serving
 
 STEP = Fraction(1, 100)  # s of line time a poll

@@ -14,7 +14,6 @@ from camlab88.emulator.machine import SigmaMachine
 from camlab88.protocols.link import LineSettings, SerialLine
 from camlab88.protocols.link.transports import TcpBridge
 from camlab88.protocols.rainbow.stream import encode
-
 from tests.support.listeners import port_of, start, stop
 from tests.support.rainbow_server import serving
 

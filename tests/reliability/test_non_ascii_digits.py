@@ -6,6 +6,7 @@ from __future__ import annotations
 import re
 
 import pytest
+
 from camlab88.apps.ca.library import rules_path
 from camlab88.apps.ca.log import latest_checkpoint
 from camlab88.apps.ca.patterns import PatternError, parse_rle

@@ -11,7 +11,6 @@ import threading
 from camlab88.emulator.rainbow.server import BUSY, ServerStats
 from camlab88.protocols.rainbow import RainbowClient, SocketTransport
 from camlab88.protocols.rainbow.stream import HEADER, REFUSED, encode
-
 from tests.support.rainbow_server import serving
 
 

@@ -9,6 +9,7 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
+
 from camlab88.cli import main
 from camlab88.emulator.harness.replay import Mismatch
 from camlab88.protocols.session import SessionFileError, read

@@ -8,6 +8,7 @@ import subprocess
 import sys
 
 import pytest
+
 from camlab88.base.atomicfile import AtomicBatch, atomic_path, write_atomic
 
 

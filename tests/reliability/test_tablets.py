@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import pytest
 import serial
+
 from camlab88.protocols.tablets import serial_source
 from camlab88.protocols.tablets.hid_descriptor import HidDescriptorError, parse_descriptor
 from camlab88.protocols.tablets.sources import SourceLost, parse_source

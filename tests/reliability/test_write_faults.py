@@ -10,8 +10,8 @@ import sys
 from pathlib import Path
 
 import pytest
-from camlab88.cli import main
 
+from camlab88.cli import main
 from tests.reliability.mounts import OLD, full_disk, read_only
 
 SCRIPT = Path(__file__).resolve().parents[1] / "data" / "kas_front" / "edit_all.txt"

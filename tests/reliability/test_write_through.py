@@ -16,6 +16,7 @@ import threading
 from pathlib import Path
 
 import pytest
+
 from camlab88.base.atomicfile import AtomicBatch, atomic_path, sweep_stale, write_atomic
 
 ROOT = Path(__file__).resolve().parents[2]

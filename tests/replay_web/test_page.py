@@ -9,9 +9,9 @@ import re
 from pathlib import Path
 
 import pytest
-from camlab88.emulator.harness.web_capture import Capture, describe_event
 
 from camlab88.cli import main
+from camlab88.emulator.harness.web_capture import Capture, describe_event
 from camlab88.replay_page import PageText, render
 from tests.replay_web.helpers import SESSIONS, page_data
 

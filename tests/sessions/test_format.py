@@ -8,10 +8,11 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
-from camlab88.protocols.session import ScreenHash, SessionFileError, SessionRecording
-from camlab88.protocols.session.format import dumps, loads
 from hypothesis import given, settings
 from hypothesis import strategies as st
+
+from camlab88.protocols.session import ScreenHash, SessionFileError, SessionRecording
+from camlab88.protocols.session.format import dumps, loads
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "sessions"
 GOOD = (DATA / "sigma_run.session").read_bytes()

@@ -14,8 +14,8 @@ import time
 from pathlib import Path
 
 import pytest
-from camlab88.protocols.session import read
 
+from camlab88.protocols.session import read
 from tests.support.listeners import port_of, start, stop, wait_idle
 
 ORDERS = b"\r+-*/HI2GI200200GJ600200600400200400200200"

@@ -8,6 +8,7 @@ import re
 from pathlib import Path
 
 import pytest
+
 from camlab88.cli import main
 from camlab88.protocols.session import read
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.emulator.sigma import Terminal
 from camlab88.protocols.sigma import Encoder
 

@@ -10,12 +10,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from PIL import Image
+
 from camlab88.cli import main
 from camlab88.emulator.sigma import Terminal
 from camlab88.protocols.link import LineSettings, SerialLine, VirtualClock
 from camlab88.protocols.link.recording import Recorder
 from camlab88.protocols.sigma import Encoder
-from PIL import Image
 
 
 def _fails(argv: list[str], *needles: str, capsys: pytest.CaptureFixture[str]) -> None:

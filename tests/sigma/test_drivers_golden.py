@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from camlab88.emulator.sigma import Terminal
 
+from camlab88.emulator.sigma import Terminal
 from tests.sigma.helpers import DATA
 from tests.sigma.streams import gks_plot, pgplot_plot, pgplot_session
 from tests.support.golden import assert_matches_golden

@@ -3,11 +3,11 @@
 from __future__ import annotations
 
 import numpy as np
-from camlab88.emulator.sigma import Terminal
-from camlab88.protocols.sigma import Decoder
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from camlab88.emulator.sigma import Terminal
+from camlab88.protocols.sigma import Decoder
 from tests.sigma.streams import gks_plot, pgplot_plot
 
 PGPLOT = pgplot_plot()

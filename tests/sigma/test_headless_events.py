@@ -15,9 +15,10 @@ import sys
 from pathlib import Path
 
 import pytest
-from camlab88.protocols.sigma.input_script import InputScriptError, parse
 from hypothesis import given, settings
 from hypothesis import strategies as st
+
+from camlab88.protocols.sigma.input_script import InputScriptError, parse
 
 PROGRAM = Path(__file__).parent / "programs" / "pgcurs.c"
 

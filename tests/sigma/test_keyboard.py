@@ -4,6 +4,7 @@ says for every key, and the KAS programs hear back the key that was struck."""
 from __future__ import annotations
 
 import pytest
+
 from camlab88.emulator.machine import SigmaMachine
 from camlab88.emulator.sigma import Terminal
 from camlab88.protocols.sigma.keyboard import KEY_BYTES, bytes_to_keys, key_to_bytes

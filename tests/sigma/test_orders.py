@@ -6,9 +6,9 @@ from collections.abc import Callable
 
 import numpy as np
 import pytest
+
 from camlab88.emulator.sigma import Terminal
 from camlab88.protocols.sigma import ORDERS
-
 from tests.sigma.helpers import FLAG, enc, graphics, lit, run
 
 E = enc()

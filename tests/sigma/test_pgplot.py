@@ -9,12 +9,12 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
+
 from camlab88 import Sigma
 from camlab88.emulator.sigma import Terminal
 from camlab88.protocols.link.recording import read_recording
 from camlab88.protocols.link.replay import replay_into
 from camlab88.protocols.sigma.drivers import PgplotGoc
-
 from tests.sigma.pgplot_data import DATA, STREAMS, gif_page, pages, recall_precision, stream
 
 PAGES = [(name, k) for name in STREAMS for k in range(1, len(pages(name)) + 1)]

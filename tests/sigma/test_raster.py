@@ -5,9 +5,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
+
 from camlab88.emulator.sigma.raster import boundary_fill, bresenham_points, firmware_line_points
 from camlab88.protocols.sigma.abbreviated import encode_points
-
 from tests.sigma.helpers import enc, graphics, lit
 
 E = enc()

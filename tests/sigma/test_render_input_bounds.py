@@ -7,6 +7,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+
 from camlab88.cli import main
 from camlab88.protocols.link import LineSettings
 from camlab88.protocols.link.recording import MAGIC, Recorder

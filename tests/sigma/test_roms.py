@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+
 from camlab88.roms.sigma import load_font, load_lut
 from camlab88.roms.sigma.chargen import RomError, parse_font
 from camlab88.roms.sigma.lut import parse_lut

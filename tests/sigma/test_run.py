@@ -7,11 +7,12 @@ import sys
 from pathlib import Path
 
 import numpy as np
+from PIL import Image
+
 from camlab88.emulator.host_input import KeyDown, PointerButton, PointerMove
 from camlab88.emulator.sigma import Terminal
 from camlab88.emulator.sigma.host_input import to_terminal
 from camlab88.protocols.sigma import Encoder
-from PIL import Image
 
 
 def _feed(events: list, term: Terminal) -> None:

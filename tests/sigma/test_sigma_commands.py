@@ -9,14 +9,14 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from PIL import Image
+
 from camlab88.cli import main
 from camlab88.emulator.sigma import Terminal
 from camlab88.protocols.link import LineSettings, SerialLine, VirtualClock
 from camlab88.protocols.link.recording import Recorder, read_recording
 from camlab88.protocols.link.replay import ReplayEndpoint
 from camlab88.protocols.sigma import Encoder
-from PIL import Image
-
 from tests.sigma.streams import gks_plot, pgplot_plot
 
 

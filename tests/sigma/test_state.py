@@ -6,11 +6,11 @@ import json
 
 import numpy as np
 import pytest
-from camlab88.emulator.sigma import Terminal
-from camlab88.emulator.sigma.state import MAGIC
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from camlab88.emulator.sigma import Terminal
+from camlab88.emulator.sigma.state import MAGIC
 from tests.sigma.streams import gks_plot, pgplot_plot
 
 

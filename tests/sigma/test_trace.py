@@ -4,10 +4,11 @@ counters as untraced; every warning the counters record is a trace line."""
 from __future__ import annotations
 
 import numpy as np
-from camlab88.emulator.sigma import Terminal
-from camlab88.emulator.sigma.trace import SigmaTracer
 from hypothesis import given, settings
 from hypothesis import strategies as st
+
+from camlab88.emulator.sigma import Terminal
+from camlab88.emulator.sigma.trace import SigmaTracer
 
 ORDERS = [b"\r+-*/", b"GI200200", b"GJ300300", b"JH 6s0\x1f", b"DJ12AF3Z", b"BAhi\r", b"BH",
           b"HI3", b"JG3F000", b"KQ1", b"JN1200", b"GH", b"IO", b"QQ", b"\x0c+-*/", b"B+-*/"]

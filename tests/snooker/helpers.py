@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.snooker.state import BallState
 from camlab88.apps.snooker.table import N_BALLS, Table
 

@@ -7,11 +7,11 @@ import math
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.aiming import AimError, aim_next_shot, aim_to_pot, nearest_pocket
 from camlab88.apps.snooker.events import EventKind
 from camlab88.apps.snooker.physics import simulate_to_rest
 from camlab88.apps.snooker.table import CUE, Table
-
 from tests.snooker.helpers import state_with
 
 T = Table()

@@ -6,13 +6,14 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.snooker import checkpoint
 from camlab88.apps.snooker.checkpoint import Checkpoint, CheckpointError, parse, to_units
 from camlab88.apps.snooker.layout import break_off
 from camlab88.apps.snooker.physics import simulate_to_rest
 from camlab88.apps.snooker.table import Table
-from hypothesis import given, settings
-from hypothesis import strategies as st
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "snooker"
 T = Table()

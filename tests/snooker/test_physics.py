@@ -6,15 +6,15 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.snooker.events import EventKind, ball_ball_time, scan, scan_python, table_arrays
 from camlab88.apps.snooker.layout import break_off, opening_state, pack_positions
 from camlab88.apps.snooker.physics import Physics, simulate_to_rest
 from camlab88.apps.snooker.speed_curve import curve_for, stopping_distance
 from camlab88.apps.snooker.state import BallState, effective_velocity
 from camlab88.apps.snooker.table import CUE, PINK, REDS, Table
-from hypothesis import HealthCheck, given, settings
-from hypothesis import strategies as st
-
 from tests.snooker.helpers import overlaps, state_with
 
 T = Table()

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker import checkpoint
 from camlab88.apps.snooker.checkpoint import to_units
 from camlab88.apps.snooker.layout import opening_state

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.events import Event, EventKind
 from camlab88.apps.snooker.layout import opening_state
 from camlab88.apps.snooker.rules import (
@@ -33,7 +34,6 @@ from camlab88.apps.snooker.table import (
     YELLOW,
     Table,
 )
-
 from tests.snooker.helpers import state_with
 
 T = Table()

@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 
 import pytest
+
 from camlab88.apps.snooker.events import EventKind
 from camlab88.apps.snooker.layout import break_off_direction
 from camlab88.apps.snooker.session import Session, SessionError

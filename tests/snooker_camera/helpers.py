@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.snooker.camera.motion import Motion
 from camlab88.apps.snooker.table import Table
 

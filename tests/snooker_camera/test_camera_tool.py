@@ -9,13 +9,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.camera import motion
 from camlab88.apps.snooker.camera_tool import layout
 from camlab88.apps.snooker.camera_tool.editor import TextBuffer
 from camlab88.apps.snooker.camera_tool.tool import CameraTool
 from camlab88.emulator.rainbow.session import in_process
 from camlab88.protocols.rainbow.events import LEFT, KeyEvent, MouseEvent
-
 from tests.support.golden import assert_matches_golden
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_camera"

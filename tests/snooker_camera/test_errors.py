@@ -4,9 +4,9 @@ keyword, events that never happen, focal lengths out of range; all at once."""
 from __future__ import annotations
 
 import pytest
+
 from camlab88.apps.snooker.camera import ccl
 from camlab88.apps.snooker.camera.errors import CclErrors
-
 from tests.snooker_camera.helpers import pink_rolls
 
 

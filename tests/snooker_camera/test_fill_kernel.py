@@ -5,9 +5,10 @@ partly or wholly off the picture, and degenerate ones."""
 from __future__ import annotations
 
 import numpy as np
-from camlab88.apps.snooker.visualiser.spans import fill_convex
 from hypothesis import given, settings
 from hypothesis import strategies as st
+
+from camlab88.apps.snooker.visualiser.spans import fill_convex
 
 H, W = 60, 80
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.table import Table
 from camlab88.apps.snooker.visualiser import table_model as tm
 

@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.camera import ccl
 from camlab88.apps.snooker.camera.names import DEFAULT_CAMERAS
 from camlab88.apps.snooker.camera.parser import parse
 from camlab88.apps.snooker.camera.space import ccl_to_table
-
 from tests.snooker_camera.helpers import R, T, make, pink_rolls, still
 
 HX, HY = T.length_m / 2, T.width_m / 2

@@ -5,12 +5,12 @@ positions inside the script."""
 from __future__ import annotations
 
 import numpy as np
-from camlab88.apps.snooker.camera import ccl
-from camlab88.apps.snooker.camera.cursor import KEYWORDS
-from camlab88.apps.snooker.camera.errors import CclErrors
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from camlab88.apps.snooker.camera import ccl
+from camlab88.apps.snooker.camera.cursor import KEYWORDS
+from camlab88.apps.snooker.camera.errors import CclErrors
 from tests.snooker_camera.helpers import pink_rolls
 
 MOTION = pink_rolls()

@@ -7,9 +7,10 @@ import shutil
 from pathlib import Path
 
 import numpy as np
+from PIL import Image
+
 from camlab88.apps.snooker.camera.views import read_views
 from camlab88.cli import main
-from PIL import Image
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_camera"
 SHOT = str(DATA / "pink_shot.checkpoint")

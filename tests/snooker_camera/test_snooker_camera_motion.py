@@ -7,11 +7,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.camera import motion
 from camlab88.apps.snooker.camera.motion import infer_strikes, timeline_events
 from camlab88.apps.snooker.session import Session
 from camlab88.apps.snooker.table import CUE, Table
-
 from tests.snooker_camera.helpers import R, make, still
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_camera"

@@ -6,6 +6,7 @@ import math
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.camera.projection import (
     Camera,
     CameraError,

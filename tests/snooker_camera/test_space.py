@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.snooker.camera import space
 from camlab88.apps.snooker.checkpoint import Checkpoint
 from camlab88.apps.snooker.table import FOOT_M, INCH_M, Table

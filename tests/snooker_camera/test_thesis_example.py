@@ -8,9 +8,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.camera import ccl, motion
 from camlab88.apps.snooker.checkpoint import read
-
 from tests.snooker_camera import pink_shot
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_camera"

@@ -5,6 +5,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.snooker.camera.views import (
     View,
     ViewFileError,
@@ -13,9 +16,6 @@ from camlab88.apps.snooker.camera.views import (
     views_text,
     write_views,
 )
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
 from tests.support.refusals import refusal_of
 
 

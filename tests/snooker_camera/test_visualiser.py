@@ -9,13 +9,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.camera import ccl, motion
 from camlab88.apps.snooker.camera.views import View
 from camlab88.apps.snooker.visualiser import display as vdisplay
 from camlab88.apps.snooker.visualiser.program import FILM_TOP, MASK, ViewsError, Visualiser
 from camlab88.emulator.rainbow.session import in_process
 from camlab88.protocols.rainbow.client import parse_colour
-
 from tests.snooker_camera.helpers import R, make, still
 from tests.support.golden import assert_matches_golden
 

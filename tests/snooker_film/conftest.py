@@ -1,10 +1,10 @@
 from __future__ import annotations
 
 import pytest
+
 from camlab88.apps.snooker.film.backends import InProcess
 from camlab88.apps.snooker.film.schedule import render_film
 from camlab88.apps.snooker.film.task import scene_digest
-
 from tests.snooker_film.helpers import break_scene, frame_bytes, small_tasks
 
 

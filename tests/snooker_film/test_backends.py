@@ -12,10 +12,10 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
+
 from camlab88.apps.snooker.film.backends import DaskCluster, LocalPool
 from camlab88.apps.snooker.film.schedule import render_film
 from camlab88.apps.snooker.film.task import scene_digest
-
 from tests.snooker_film.helpers import break_scene, frame_bytes, free_port, small_tasks
 
 ROOT = Path(__file__).resolve().parents[2]

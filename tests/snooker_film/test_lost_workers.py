@@ -11,7 +11,6 @@ from pathlib import Path
 from camlab88.apps.snooker.film.backends import DaskCluster
 from camlab88.apps.snooker.film.schedule import render_film
 from camlab88.apps.snooker.film.task import scene_digest
-
 from tests.snooker_film.helpers import break_scene, frame_bytes, small_tasks
 
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 import argparse
 
 import pytest
+
 from camlab88.apps.snooker.render.modes import MODES, SIGMA_MODES
 from camlab88.apps.snooker.render.sigma_host import SigmaHost
 from camlab88.cli import build_parser

@@ -9,12 +9,12 @@ from dataclasses import replace
 from pathlib import Path
 
 import pytest
+
 from camlab88.apps.snooker.film.backends import InProcess
 from camlab88.apps.snooker.film.pngcheck import is_complete
 from camlab88.apps.snooker.film.schedule import FilmError, frame_file, render_film
 from camlab88.apps.snooker.film.task import FrameTask, scene_digest
 from camlab88.base.png import png_bytes
-
 from tests.snooker_film.helpers import SIZE, break_scene, frame_bytes, small_tasks
 
 
@@ -93,6 +93,7 @@ def test_resume_checks_each_frame_against_the_hash_of_what_was_written(
     """A valid PNG of the right size is not enough: a frame copied over another, or one
     with 20 pixels repainted, is not what the manifest says was written: made again."""
     import imageio.v3 as iio
+
     from camlab88.apps.snooker.film.pngcheck import png_size
 
     tasks = small_tasks()

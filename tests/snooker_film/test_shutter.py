@@ -5,12 +5,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.camera.views import View
 from camlab88.apps.snooker.film.shutter import RATE, SHUTTER_S, at_times
 from camlab88.apps.snooker.film.task import FrameTask, render_image
 from camlab88.apps.snooker.render.frame import frame_geometry
 from camlab88.apps.snooker.render.scene import Scene
-
 from tests.snooker_film.helpers import break_scene
 
 W, H = 384, 256

@@ -4,6 +4,7 @@ rendered frames — deterministic, and the balls move."""
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.snooker.film.demo import film_frames
 
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.film.letterballs import INK, render_title
 from camlab88.apps.snooker.film.titles import WORD, slots, title_scene, title_session
 from camlab88.apps.snooker.render.gamma import encode

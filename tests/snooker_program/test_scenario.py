@@ -9,10 +9,10 @@ import math
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.program import menus, script_events
 from camlab88.apps.snooker.program.program import Program
 from camlab88.apps.snooker.table import CUE
-
 from tests.snooker_program.conftest import DATA
 from tests.support.golden import assert_matches_golden
 

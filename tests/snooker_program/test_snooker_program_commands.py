@@ -5,13 +5,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from PIL import Image
+
 from camlab88.apps.snooker import checkpoint
 from camlab88.apps.snooker.program import pads
 from camlab88.apps.snooker.session import Session
 from camlab88.apps.snooker.table import CUE
 from camlab88.cli import main
-from PIL import Image
-
 from tests.snooker_program.helpers import hex_rgb, saved_game
 
 

@@ -6,12 +6,12 @@ import math
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker import checkpoint
 from camlab88.apps.snooker.program import menus, pads
 from camlab88.apps.snooker.program.program import MAGNIFY, WARN_COLOUR, Program
 from camlab88.apps.snooker.session import Session
 from camlab88.apps.snooker.table import BLUE, CUE
-
 from tests.snooker_program.helpers import feed, hex_rgb, saved_game, screen_colour
 
 CUE_AT = (175, 325)  # the cue ball's pixel in the opening position

@@ -6,12 +6,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.events import EventKind
 from camlab88.apps.snooker.program import constants
 from camlab88.apps.snooker.program.program import Program
 from camlab88.apps.snooker.session import Session, SessionError
 from camlab88.apps.snooker.table import CUE, Table
-
 from tests.snooker_program.conftest import DATA
 from tests.snooker_program.helpers import feed, hex_rgb, screen_colour
 from tests.support.golden import assert_matches_golden

@@ -6,13 +6,14 @@ import math
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.apps.snooker.program import arrows, menus, script_events
 from camlab88.apps.snooker.program.layout import TableView
 from camlab88.apps.snooker.table import Table
 from camlab88.protocols.rainbow.client import SCREEN_W
 from camlab88.protocols.rainbow.events import LEFT, MIDDLE, KeyEvent, MouseEvent
-from hypothesis import given, settings
-from hypothesis import strategies as st
 
 VIEW = TableView.fit(Table())
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.apps.snooker.camera.views import View, read_views
 from camlab88.apps.snooker.render.scene import Scene, load_scene
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.render import kernels as K
 
 SUB = 64  # supersamples per pixel side for the exact reference

@@ -6,9 +6,9 @@ where the polygon covers each pixel's centre."""
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.snooker.render import antialias_figure as F
 from camlab88.emulator.sigma import Terminal
-
 from tests.snooker_render.test_antialias import FIG_6_8_BINARY, FIG_6_8_GREY
 
 

@@ -9,10 +9,10 @@ import sys
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.apps.snooker.render.palette import fixed_palette
 from camlab88.apps.snooker.render.sigma_host import SigmaHost
 from camlab88.apps.snooker.render.truecolour import RenderOptions, render_frame
-
 from tests.snooker_render.helpers import break_scene, break_views
 
 ROOT = Path(__file__).resolve().parents[2]

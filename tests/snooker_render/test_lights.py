@@ -4,9 +4,10 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from camlab88.apps.snooker.render.lights import LightsError, canopy, parse_lights, read_lights
 from hypothesis import given, settings
 from hypothesis import strategies as st
+
+from camlab88.apps.snooker.render.lights import LightsError, canopy, parse_lights, read_lights
 
 
 def _highlights(lum: np.ndarray) -> list[tuple[float, float]]:
@@ -35,7 +36,6 @@ def _highlights(lum: np.ndarray) -> list[tuple[float, float]]:
 def _ball_from_above(lights: object) -> np.ndarray:
     from camlab88.apps.snooker.camera.views import View
     from camlab88.apps.snooker.render.truecolour import RenderOptions, render_frame
-
     from tests.snooker_render.helpers import one_ball_scene
 
     s = one_ball_scene(0.0, 0.0, lights)

@@ -4,12 +4,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.render.frame import frame_geometry
 from camlab88.apps.snooker.render.metrics import score
 from camlab88.apps.snooker.render.painter import PolygonItem
 from camlab88.apps.snooker.render.palette import SIZE, adaptive_palette, fixed_palette
 from camlab88.apps.snooker.render.truecolour import RenderOptions, render_linear
-
 from tests.snooker_render.helpers import break_scene, break_views
 
 

@@ -10,12 +10,12 @@ from pathlib import Path
 import imageio.v2 as iio2
 import imageio.v3 as iio
 import pytest
+
 from camlab88.apps.snooker.render.scene import load_scene
 from camlab88.apps.snooker.render.sequence import render_sequence, select_views
 from camlab88.base.png import frame_path, png_bytes
 from camlab88.cli import main
 from camlab88.commands.snooker.render import RECORD
-
 from tests.snooker_render.helpers import BREAK, VIEWS, break_views
 
 FIRST, LAST = 5, 8

@@ -7,6 +7,7 @@ import math
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.render import kernels as K
 from camlab88.apps.snooker.render.balls import ball_params
 from camlab88.apps.snooker.render.frame import camera_params

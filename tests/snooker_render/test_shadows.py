@@ -8,12 +8,12 @@ import math
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.render.frame import frame_geometry
 from camlab88.apps.snooker.render.lights import Lights
 from camlab88.apps.snooker.render.painter import ShadowItem
 from camlab88.apps.snooker.render.shadow_pass import shadow_occlusion
 from camlab88.apps.snooker.render.shadows import ball_shadow_ellipses, cushion_shadow_polygons
-
 from tests.snooker_render.helpers import one_ball_scene, overhead
 
 R = 0.0262

@@ -8,12 +8,12 @@ from collections import Counter
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.render.palette import fixed_palette
 from camlab88.apps.snooker.render.sigma_host import SigmaHost
 from camlab88.apps.snooker.render.sigma_session import SigmaSession
 from camlab88.emulator.harness.sigma_batch import t5688_link
 from camlab88.protocols.sigma import AlphaText, Decoder, GraphicsFlag, Order, Point, Points
-
 from tests.snooker_render.helpers import break_scene, break_views
 
 

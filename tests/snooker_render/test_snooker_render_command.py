@@ -7,9 +7,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from camlab88.cli import main
 from PIL import Image
 
+from camlab88.cli import main
 from tests.snooker_render.helpers import BREAK, VIEWS
 
 ARGS = ["snooker", "render", str(BREAK), str(VIEWS)]

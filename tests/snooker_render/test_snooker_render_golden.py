@@ -7,7 +7,6 @@ from camlab88.apps.snooker.render.sigma_host import SigmaHost
 from camlab88.apps.snooker.render.sigma_session import SigmaSession
 from camlab88.apps.snooker.render.truecolour import RenderOptions, render_frame
 from camlab88.emulator.harness.sigma_batch import t5688_link
-
 from tests.snooker_render.helpers import DATA, break_scene, break_views, overhead
 from tests.support.golden import assert_matches_golden
 

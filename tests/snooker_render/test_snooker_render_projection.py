@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.camera.projection import project
 from camlab88.apps.snooker.render.frame import frame_geometry
 from camlab88.apps.snooker.render.painter import BallItem
@@ -12,7 +13,6 @@ from camlab88.apps.snooker.render.pinhole import Pinhole
 from camlab88.apps.snooker.render.shading import lights_array
 from camlab88.apps.snooker.render.truecolour import draw_ball
 from camlab88.apps.snooker.visualiser.scene import ball_discs
-
 from tests.snooker_render.helpers import break_scene, break_views
 
 W, H = 768, 512

@@ -6,9 +6,9 @@ import math
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.render.painter import BallItem, PolygonItem, ShadowItem, plan
 from camlab88.apps.snooker.render.specks import orientations, rolling_rotations
-
 from tests.snooker_render.helpers import break_scene
 
 R = 0.0262
@@ -92,7 +92,6 @@ def _ball_close_up(side_deg: float, specks: bool, x: float = 0.3) -> np.ndarray:
     """The cue ball at (x, 0.1) seen from 28 cm away, from `side_deg` round it."""
     from camlab88.apps.snooker.camera.views import View
     from camlab88.apps.snooker.render.truecolour import RenderOptions, render_frame
-
     from tests.snooker_render.helpers import one_ball_scene
 
     s = one_ball_scene(x, 0.1)

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from camlab88.apps.snooker.render import kernels as K
 from camlab88.apps.snooker.render.frame import camera_params
 from camlab88.apps.snooker.render.lights import Lights
@@ -21,7 +22,6 @@ from camlab88.apps.snooker.render.wood import (
     wood_params,
 )
 from camlab88.apps.snooker.table import Table
-
 from tests.snooker_render.helpers import break_scene, break_views
 
 LIGHTS = Lights(np.array([[0.9, 0.4, 1.0], [-0.9, -0.4, 1.0]]),

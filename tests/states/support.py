@@ -8,6 +8,7 @@ from contextlib import contextmanager
 from pathlib import Path
 
 import pytest
+
 from camlab88.cli import main
 from camlab88.emulator.harness import plugins
 from camlab88.emulator.harness.loop import Plugin

@@ -23,9 +23,9 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+
 from camlab88.emulator.machine.state_file import MAGIC, pack
 from camlab88.protocols.session.format import dumps, read
-
 from fuzz.states import close_state, open_state, run_cli
 from tests.states.support import inputs_of
 

@@ -10,6 +10,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+
 from camlab88.base.objstate import StateError, capture, restore
 
 

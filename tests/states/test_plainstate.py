@@ -7,6 +7,7 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
+
 from camlab88.base.plainstate import (
     Array,
     Blob,

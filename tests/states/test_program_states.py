@@ -8,10 +8,10 @@ import tempfile
 from pathlib import Path
 
 import pytest
-from camlab88.cli import main
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from camlab88.cli import main
 from tests.states.support import assert_continues, inputs_of
 
 STATEFUL = settings(max_examples=3, deadline=None, derandomize=True,

@@ -15,6 +15,9 @@ from typing import Any
 
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
 from camlab88 import __version__
 from camlab88.base.objstate import OURS, StateError, capture
 from camlab88.base.plainstate import encode
@@ -22,9 +25,6 @@ from camlab88.emulator.harness import plugins
 from camlab88.emulator.harness.loop import Plugin
 from camlab88.emulator.harness.program_state import identity, load_program, save_program
 from camlab88.emulator.machine.state_file import MachineStateError
-from hypothesis import HealthCheck, given, settings
-from hypothesis import strategies as st
-
 from fuzz.mutate import mutate
 from fuzz.states import ODD_VALUES, PROGRAMS, close_state, edit_tree, open_state, run_cli
 

@@ -8,9 +8,9 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
+
 from camlab88.cli import main
 from camlab88.protocols.session import read
-
 from tests.states.support import RECORDINGS, frame_logs
 
 

@@ -12,6 +12,7 @@ import sys
 from pathlib import Path
 
 import pytest
+
 from camlab88.cli import main
 from camlab88.emulator.harness.loop import Harness, RunOptions
 from camlab88.emulator.harness.program_state import StateOptions
@@ -19,7 +20,6 @@ from camlab88.emulator.harness.rainbow import RainbowTarget
 from camlab88.emulator.harness.state_plugin import StatePlugin
 from camlab88.emulator.host_input import KeyDown
 from camlab88.emulator.machine.state_file import MAGIC, pack, unpack
-
 from tests.states.support import ROOT, inputs_of
 
 RAINBOW = ["rainbow", "run", "--headless", "--stop-after", "12"]

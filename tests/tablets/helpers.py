@@ -6,6 +6,7 @@ import time
 from pathlib import Path
 
 import serial
+
 from camlab88.protocols.link.pty import PtyPort
 from camlab88.protocols.tablets.base import TabletParser
 from camlab88.protocols.tablets.events import TabletEvent

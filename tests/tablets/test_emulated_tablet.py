@@ -8,6 +8,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 import serial
+
 from camlab88.emulator.host_input import PointerButton, PointerMove
 from camlab88.emulator.tablet import EmulatedTablet, TabletView, demo_path, pointer_to_tablet
 from camlab88.emulator.tablet.drive import PointerState
@@ -16,7 +17,6 @@ from camlab88.protocols.tablets.events import TabletEvent
 from camlab88.protocols.tablets.registry import PROTOCOL_NAMES, make_parser
 from camlab88.protocols.tablets.summa import DEFAULT_MODEL as SUMMA_MODEL
 from camlab88.protocols.tablets.wacom4 import DEFAULT_MODEL as WACOM_MODEL
-
 from tests.tablets.helpers import HANG_GUARD
 
 
@@ -157,7 +157,6 @@ def test_view_golden_after_demo_through_the_protocol() -> None:
     from pathlib import Path
 
     from camlab88.protocols.tablets.registry import make_encoder
-
     from tests.support.golden import assert_matches_golden
 
     enc, parser = make_encoder("summa-mm"), make_parser("summa-mm")

@@ -7,8 +7,8 @@ import sys
 import time
 
 import serial
-from camlab88.protocols.tablets.registry import make_parser
 
+from camlab88.protocols.tablets.registry import make_parser
 from tests.tablets.helpers import HANG_GUARD
 
 

@@ -20,12 +20,12 @@ import tty
 from pathlib import Path
 
 import pytest
+
 from camlab88.protocols.tablets.events import TabletEvent
 from camlab88.protocols.tablets.line_setup import SETUPS
 from camlab88.protocols.tablets.registry import PROTOCOL_NAMES, make_encoder
 from camlab88.protocols.tablets.serial_source import SerialSource
 from camlab88.protocols.tablets.sources import parse_source
-
 from tests.support.serial_servers import null_modem
 from tests.tablets.helpers import HANG_GUARD
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 import struct
 
 import pytest
+
 from camlab88.protocols.tablets.hid_decode import (
     DG_TIP_PRESSURE,
     GD_X,
@@ -20,7 +21,6 @@ from camlab88.protocols.tablets.hid_decode import (
     encode_report,
 )
 from camlab88.protocols.tablets.hid_descriptor import HidDescriptorError, parse_descriptor
-
 from tests.tablets.helpers import DIGIMEND, SELFTESTS, load_descriptor, load_dump
 
 # --- descriptors ---------------------------------------------------------------------------

@@ -8,9 +8,9 @@ import time
 import types
 
 import pytest
+
 from camlab88.protocols.tablets.input_layer import InputLayer, MouseSample
 from camlab88.protocols.tablets.sources import SourceLost, open_source
-
 from tests.tablets.helpers import DIGIMEND, SELFTESTS, load_descriptor, load_dump
 
 

@@ -3,13 +3,13 @@
 from __future__ import annotations
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from camlab88.protocols.tablets.events import TabletEvent
 from camlab88.protocols.tablets.hid_decode import HidReportError, PenDecoder
 from camlab88.protocols.tablets.hid_descriptor import HidDescriptorError, parse_descriptor
 from camlab88.protocols.tablets.registry import PROTOCOL_NAMES, make_encoder, make_parser
-from hypothesis import given, settings
-from hypothesis import strategies as st
-
 from tests.tablets.helpers import DIGIMEND, load_descriptor
 
 H610 = load_descriptor(DIGIMEND / "Huion_H610/rd/original0.txt")

@@ -9,10 +9,10 @@ import time
 from pathlib import Path
 
 import pytest
+
 from camlab88.protocols.link.pty import PtyPort
 from camlab88.protocols.tablets.events import TabletEvent
 from camlab88.protocols.tablets.registry import make_encoder
-
 from tests.support.serial_servers import null_modem
 
 LIMIT = 10.0

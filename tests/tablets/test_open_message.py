@@ -7,6 +7,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+
 from camlab88.protocols.tablets.serial_source import SerialSource
 from camlab88.protocols.tablets.sources import SourceLost, parse_source
 

@@ -14,9 +14,9 @@ import re
 from pathlib import Path
 
 import pytest
+
 from camlab88.protocols.tablets.events import TabletEvent
 from camlab88.protocols.tablets.hid_decode import PenDecoder, encode_report
-
 from tests.tablets.helpers import SELFTESTS, load_descriptor
 from tests.tablets.umockdev_bed import descriptor_hex, run_in_bed, skip_reason
 

@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
 from camlab88.protocols.tablets import calcomp, summa, wacom4
 from camlab88.protocols.tablets.events import TabletEvent
 from camlab88.protocols.tablets.registry import make_encoder, make_parser
-from hypothesis import HealthCheck, given, settings
-from hypothesis import strategies as st
 
 SETTINGS = settings(max_examples=25, deadline=None,
                     suppress_health_check=[HealthCheck.function_scoped_fixture])

@@ -4,6 +4,7 @@ split packets, garbage between packets, wrong parity."""
 from __future__ import annotations
 
 import pytest
+
 from camlab88.protocols.tablets import wacom4
 from camlab88.protocols.tablets.base import ProtocolError
 from camlab88.protocols.tablets.events import TabletEvent

@@ -10,6 +10,7 @@ from contextlib import contextmanager
 from typing import Any
 
 import pytest
+
 from camlab88.emulator.tablet import EmulatedTablet
 from camlab88.protocols.tablets import summa
 from camlab88.protocols.tablets.calibration import (
@@ -29,7 +30,6 @@ from camlab88.protocols.tablets.sources import (
     open_source,
     parse_source,
 )
-
 from tests.tablets.helpers import HANG_GUARD
 
 # --- SOURCE strings ---------------------------------------------------------------------------

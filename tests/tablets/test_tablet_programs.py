@@ -8,6 +8,7 @@ import ast
 from pathlib import Path
 
 import pytest
+
 from camlab88.emulator.harness import Plugin, RunOptions, run
 from camlab88.emulator.host_input import KeyDown, PointerButton, PointerMove
 from camlab88.protocols.tablets.events import TabletEvent, TabletModel

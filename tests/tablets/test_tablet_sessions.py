@@ -15,8 +15,8 @@ import sys
 from pathlib import Path
 
 import pytest
-from camlab88.protocols.session import read, write
 
+from camlab88.protocols.session import read, write
 from tests.tablets.helpers import DIGIMEND, load_dump
 from tests.tablets.umockdev_bed import gaomon_m106k, run_in_bed, skip_reason
 

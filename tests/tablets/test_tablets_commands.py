@@ -7,6 +7,7 @@ import re
 import sys
 
 import pytest
+
 from camlab88.cli import main
 
 LINE = re.compile(r"^\s*[\d.]+ x=(\d+) y=(\d+) pressure=(\S+) buttons=0b([01]{4}) prox=(in|out)")

@@ -8,6 +8,7 @@ import json
 from pathlib import Path
 
 import pytest
+
 from camlab88.protocols.session import SessionFileError, read, write
 from camlab88.protocols.session.format import ScreenHash, SessionRecording
 from camlab88.protocols.tablets.tape import Tape, TapeError, parse_chunk

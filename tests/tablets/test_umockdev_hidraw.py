@@ -11,8 +11,8 @@ import time
 from pathlib import Path
 
 import pytest
-from camlab88.protocols.tablets.hid_decode import PenDecoder
 
+from camlab88.protocols.tablets.hid_decode import PenDecoder
 from tests.tablets.helpers import DIGIMEND, load_descriptor, load_dump
 from tests.tablets.umockdev_bed import gaomon_m106k, huion_h610, run_in_bed, skip_reason
 

@@ -15,7 +15,6 @@ import sys
 from pathlib import Path
 
 from camlab88.protocols.tablets.hid_descriptor import parse_hex_text
-
 from tests.tablets.helpers import DIGIMEND, load_dump
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -6,9 +6,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+
 from camlab88.apps.kas import files
 from camlab88.cli import main
-
 from tests.kas_paint.helpers import walk
 
 DATA = Path(__file__).resolve().parents[1] / "data"

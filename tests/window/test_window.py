@@ -7,9 +7,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from camlab88.emulator.host_input import KeyDown, KeyUp, PointerButton, PointerMove, Quit
 from PIL import Image
 
+from camlab88.emulator.host_input import KeyDown, KeyUp, PointerButton, PointerMove, Quit
 from tests.support.processes import fresh_python
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pytest
+
 from camlab88.emulator import window as window_module
 
 

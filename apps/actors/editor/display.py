@@ -5,6 +5,7 @@ new picture is uploaded), the status line, the message pad and the key help."""
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.actors.editor import layout as L
 from camlab88.apps.actors.editor.profile import Point, to_pixels
 from camlab88.apps.actors.editor.quantise import quantise

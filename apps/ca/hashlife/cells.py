@@ -7,6 +7,7 @@ The way back, a plane's cells listed, is ``listing``."""
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.ca.hashlife.kernels import (
     PLANE_LEVEL,
     any_live,

@@ -5,6 +5,7 @@ leaf (the leaf level in the store's meta says which: 0, a value; else a bit leaf
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.ca.hashlife.kernels import (
     MASK_LEVEL,
     PLANE_LEVEL,

@@ -30,6 +30,7 @@ kernel's group announces the compile.
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.ca.hashlife.kernels import (
     step_bits,
     step_values,

@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.ca.hashlife import cells
 from camlab88.apps.ca.hashlife.leaf import order_matters, pack
 from camlab88.apps.ca.hashlife.run import StoreRun

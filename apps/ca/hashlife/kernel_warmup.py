@@ -16,6 +16,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 
 import numpy as np
+
 from camlab88.apps.ca.engine import CENTRE, Engine
 from camlab88.apps.ca.hashlife import cells, census, listing
 from camlab88.apps.ca.hashlife.kernels import (

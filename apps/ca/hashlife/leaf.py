@@ -10,6 +10,7 @@ sends nothing and never changes.  The rules travel as one packed int64 array (``
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.ca.hashlife.kernels import (
     H_FORM,
     H_LINES,

@@ -5,6 +5,7 @@ compiles it."""
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.ca.hashlife.kernels import (
     PLANE_LEVEL,
     listing,

@@ -7,6 +7,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.ca.hashlife import census, evolve, listing
 from camlab88.apps.ca.hashlife.store import Store
 

@@ -29,6 +29,7 @@ from __future__ import annotations
 import weakref
 
 import numpy as np
+
 from camlab88.apps.ca.hashlife.kernels import (
     BASE,
     EMPTY,

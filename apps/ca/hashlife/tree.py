@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from typing import Protocol
 
 import numpy as np
+
 from camlab88.apps.ca.hashlife.plane import frame
 
 

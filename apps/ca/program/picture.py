@@ -6,6 +6,7 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
+
 from camlab88.apps.ca.engine import SIDE, Rect
 
 MARGIN = 2  # cells round the population

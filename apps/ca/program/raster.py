@@ -12,6 +12,7 @@ no redraw. At the subpixel zoom: 1 an empty pixel, 2..255 the density of live ce
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.ca.engine import SIDE, Engine, Rect
 
 GAP, DEAD = 0, 1

@@ -13,6 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.kas.model import FIELD_H
 
 AREA_W, AREA_H = 768, 512        # one quadrant = one screenful

@@ -19,6 +19,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 
 import numpy as np
+
 from camlab88.apps.kas.model import AnimSequence, Drawing
 from camlab88.apps.kas.paint import areas, regions, seeds, shape
 from camlab88.apps.kas.paint.ops import Op, OpsFile, Seeds, op_key

@@ -10,8 +10,9 @@ imports numba.
 from __future__ import annotations
 
 import numpy as np
-from camlab88.base.kernel_notice import announce_compiles
 from numba import njit
+
+from camlab88.base.kernel_notice import announce_compiles
 
 # one line on stderr if the cache is cold: measured 8 s at load 7 on the 2-core machine
 announce_compiles("KAS painting", 4.0, __name__)

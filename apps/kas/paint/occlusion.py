@@ -21,6 +21,7 @@ from __future__ import annotations
 from functools import cached_property
 
 import numpy as np
+
 from camlab88.apps.kas.paint import seeds, vector
 from camlab88.apps.kas.paint.autopaint import Step
 

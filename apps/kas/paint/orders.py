@@ -13,6 +13,7 @@ plane cleared (``KW80 DA``).
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.kas.paint import occlusion
 from camlab88.apps.kas.paint.autopaint import FramePlan, Step
 from camlab88.apps.kas.paint.outlines import Run

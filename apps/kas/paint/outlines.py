@@ -10,6 +10,7 @@ from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
+
 from camlab88.apps.kas.model import PALETTE, AnimSequence, Drawing
 from camlab88.apps.kas.paint import areas
 from camlab88.apps.kas.paint.planes import RGB

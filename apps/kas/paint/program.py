@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+
 from camlab88.apps.kas.model import AnimSequence
 from camlab88.apps.kas.paint import areas, mixing, orders, outlines, planes
 from camlab88.apps.kas.paint.autopaint import AutoPainter, FramePlan

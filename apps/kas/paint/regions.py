@@ -18,6 +18,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.kas.model import Drawing
 from camlab88.apps.kas.paint import areas, seeds, shape, vector
 

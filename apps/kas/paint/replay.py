@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.apps.kas.paint.areas import BUFFERS
 from camlab88.apps.kas.paint.autopaint import Failure
 from camlab88.apps.kas.paint.program import Line, PaintProgram

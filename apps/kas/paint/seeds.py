@@ -18,6 +18,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.kas.paint import vector
 
 DEEP = 6  # chamfer units (3 a pixel): two pixels from the wall is a real face, not a pocket

@@ -9,6 +9,7 @@ its nearer end meets the end reached so far, and the last end joins the first st
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.kas.model import Drawing
 
 

@@ -16,6 +16,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
+
 from camlab88.apps.kas.program.layout import BG, CHAR_H, CHAR_W, SCREEN_H, SCREEN_W
 from camlab88.protocols.sigma import Encoder
 

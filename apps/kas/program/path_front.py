@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import numpy as np
+
 from camlab88.apps.kas.events import Key, Pointer
 from camlab88.apps.kas.files import SamplePath, Timing
 from camlab88.apps.kas.path_editor import PathEditor

@@ -12,6 +12,7 @@ touches the picture in the planes.
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.kas.editor import KEYS, Editor, menu_layout
 from camlab88.apps.kas.model import FIELD_H, FIELD_W, NINE_H, NINE_W, PENS
 from camlab88.apps.kas.program import layout as L

@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 
 import numpy as np
+
 from camlab88.apps.kas.model import AnimSequence
 from camlab88.apps.kas.program import layout as L
 from camlab88.apps.kas.program.base import Front

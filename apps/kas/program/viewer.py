@@ -32,6 +32,7 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
+
 from camlab88.apps.kas.model import FIELD_H, PALETTE, AnimSequence, Drawing
 from camlab88.apps.kas.pens import pen_slots
 from camlab88.apps.kas.program.base import setup_bytes

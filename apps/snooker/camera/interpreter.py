@@ -22,6 +22,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+
 from camlab88.apps.snooker.camera import names, space
 from camlab88.apps.snooker.camera.errors import CclError
 from camlab88.apps.snooker.camera.motion import Motion

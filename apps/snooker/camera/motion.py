@@ -27,6 +27,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.apps.snooker import checkpoint as cpfile
 from camlab88.apps.snooker.camera import space
 from camlab88.apps.snooker.events import EventKind

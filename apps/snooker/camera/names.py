@@ -5,6 +5,7 @@ the events a script can wait for.  Frames are numbered from 1 (motion.py)."""
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.snooker.camera import space
 from camlab88.apps.snooker.camera.errors import CclError
 from camlab88.apps.snooker.camera.motion import Motion

@@ -26,6 +26,7 @@ checkpoint parks potted balls behind their pocket) and is not drawn.
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.snooker.checkpoint import Checkpoint, to_metres
 from camlab88.apps.snooker.table import BLACK, BLUE, BROWN, GREEN, PINK, YELLOW, Table
 

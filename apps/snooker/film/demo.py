@@ -8,6 +8,7 @@ import math
 from collections.abc import Iterator
 
 import numpy as np
+
 from camlab88.apps.snooker.camera import ccl, motion
 from camlab88.apps.snooker.film.task import FrameTask, render_image
 from camlab88.apps.snooker.render.scene import Scene

@@ -9,6 +9,7 @@ from __future__ import annotations
 from functools import lru_cache
 
 import numpy as np
+
 from camlab88.apps.snooker.film.titles import TitleScene
 from camlab88.apps.snooker.render.gamma import encode_image
 from camlab88.apps.snooker.render.materials import BALL_PHONG

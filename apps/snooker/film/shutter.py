@@ -15,6 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+
 from camlab88.apps.snooker.render.scene import Scene
 from camlab88.apps.snooker.render.specks import rolling_rotations
 

@@ -8,6 +8,7 @@ import hashlib
 from dataclasses import dataclass, fields
 
 import numpy as np
+
 from camlab88.apps.snooker.film.shutter import SHUTTER_S, at_times, sample_offsets
 from camlab88.apps.snooker.render.gamma import encode_image
 from camlab88.apps.snooker.render.scene import Scene

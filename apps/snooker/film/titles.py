@@ -18,6 +18,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+
 from camlab88.apps.snooker.camera.views import View
 from camlab88.apps.snooker.render.scene import Scene
 from camlab88.apps.snooker.session import Session

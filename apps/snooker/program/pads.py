@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+
 from camlab88.apps.snooker.program import layout
 from camlab88.apps.snooker.program.layout import TableView
 from camlab88.apps.snooker.table import BROWN, N_BALLS, is_red

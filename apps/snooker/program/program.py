@@ -20,6 +20,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+
 from camlab88.apps.snooker import aiming
 from camlab88.apps.snooker.events import EventKind
 from camlab88.apps.snooker.program import arrows, constants, layout, menus

@@ -12,6 +12,7 @@ the figure's numbers copied. The layout, colours and captions are ours.
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.protocols.sigma import Encoder
 
 EDGE = ((0.0, 4.2), (4.0, 1.0))  # figure units: pixel (col, row), row 0 at the top

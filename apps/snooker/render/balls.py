@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.snooker.render import kernels as K
 from camlab88.apps.snooker.render.lights import Lights
 from camlab88.apps.snooker.render.materials import BALL_PHONG, SPECK_ALBEDO, Phong

@@ -6,6 +6,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.snooker.render.painter import Item, plan
 from camlab88.apps.snooker.render.pinhole import Pinhole
 from camlab88.apps.snooker.render.scene import Scene

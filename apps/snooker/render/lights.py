@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.base import budget
 
 DEFAULT_AMBIENT = 0.22

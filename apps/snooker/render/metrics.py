@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.snooker.render.colour import delta_e, lab
 from camlab88.apps.snooker.render.gamma import decode, encode
 from camlab88.apps.snooker.render.palette import Palette

@@ -5,6 +5,7 @@ coverage of each edge pixel by the polygon."""
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.snooker.render import kernels as K
 
 

@@ -15,6 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.snooker.render.lights import Lights
 from camlab88.apps.snooker.render.materials import BALL_ALBEDO, SURFACES
 from camlab88.apps.snooker.render.scene import Scene

@@ -16,6 +16,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.snooker.render.colour import lab, lab_to_linear
 from camlab88.apps.snooker.render.gamma import encode
 from camlab88.apps.snooker.render.materials import BACKGROUND, BALL_ALBEDO, SURFACES

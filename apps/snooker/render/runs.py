@@ -11,6 +11,7 @@ screen is the drawing area's bottom-left quadrant; device y points up.
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.protocols.sigma import Encoder
 
 

@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 import numpy as np
+
 from camlab88.apps.snooker import checkpoint as ckpt
 from camlab88.apps.snooker.camera import motion
 from camlab88.apps.snooker.camera.space import checkpoint_centres

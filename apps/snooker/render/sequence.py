@@ -13,6 +13,7 @@ from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.snooker.render.palette import Palette, adaptive_palette, fixed_palette
 from camlab88.apps.snooker.render.scene import Scene
 from camlab88.apps.snooker.render.sigma_host import SCREEN_H, SCREEN_W, SigmaHost

@@ -4,6 +4,7 @@ model in numpy (the reference the ball kernel is tested against), thesis 6.4.1."
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.snooker.render.lights import Lights
 from camlab88.apps.snooker.render.materials import Phong
 

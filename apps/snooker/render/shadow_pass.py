@@ -4,6 +4,7 @@ and the Sigma host (thesis 6.4.1: per light, ball ellipses and the cushions' sha
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.snooker.render import kernels as K
 from camlab88.apps.snooker.render.frame import (
     FrameGeometry,

@@ -12,6 +12,7 @@ the light above the horizontal, seen from the ball's centre).
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.snooker.render.clip import clip_box
 from camlab88.apps.snooker.render.tablemodel import CUSHION_H_M, OUTWARD, SIDES
 

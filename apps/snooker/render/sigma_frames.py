@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
+
 from camlab88.protocols.link.port import BatchLink
 
 LinkFactory = Callable[[], BatchLink]

@@ -31,6 +31,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+
 from camlab88.apps.snooker.render import host_kernels as HK
 from camlab88.apps.snooker.render import kernels as K
 from camlab88.apps.snooker.render.balls import ball_params

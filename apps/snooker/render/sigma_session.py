@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.snooker.render.leaks import classify
 from camlab88.apps.snooker.render.sigma_host import SigmaFrame, SigmaHost
 from camlab88.protocols.link.port import BatchLink

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
+
 from camlab88.apps.snooker.render.clip import clip_box
 from camlab88.apps.snooker.table import Table
 

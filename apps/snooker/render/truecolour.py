@@ -10,6 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.snooker.render import kernels as K
 from camlab88.apps.snooker.render.balls import ball_params
 from camlab88.apps.snooker.render.frame import (

@@ -13,6 +13,7 @@ clamping the texture's frequencies, not by sampling).
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.snooker.render.materials import SURFACES, WOOD_PHONG
 from camlab88.apps.snooker.render.tablemodel import OUTWARD, Face
 

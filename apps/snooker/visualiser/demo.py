@@ -14,6 +14,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import numpy as np
+
 from camlab88.apps.snooker.camera import ccl
 from camlab88.apps.snooker.camera.motion import from_session
 from camlab88.apps.snooker.session import Session

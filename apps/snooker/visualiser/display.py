@@ -13,6 +13,7 @@ word with a ball value to the ball's colour, else a table value to the table's c
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.snooker.camera.projection import Camera
 from camlab88.apps.snooker.table import Table
 from camlab88.apps.snooker.visualiser import scene

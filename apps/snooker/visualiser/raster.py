@@ -7,6 +7,7 @@ scan-line polygon op about 10 ms (docs/perf/camera.md)."""
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.snooker.camera.projection import Camera, camera_basis, scale_px
 
 NEAR_CLIP_M = 1e-2  # table faces are clipped 1 cm in front of the observer

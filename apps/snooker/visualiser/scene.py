@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+
 from camlab88.apps.snooker.camera.projection import Camera, pixels_per_metre_at, project
 from camlab88.apps.snooker.table import N_BALLS, Table, is_red
 from camlab88.apps.snooker.visualiser import raster, table_model

@@ -12,8 +12,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from camlab88.base.kernel_notice import announce_compiles
 from numba import njit
+
+from camlab88.base.kernel_notice import announce_compiles
 
 announce_compiles("snooker visualiser", 1.0, __name__)
 

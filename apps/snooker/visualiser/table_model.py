@@ -14,6 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.snooker.table import Table
 
 CUSHION_W_M = 0.05  # cushion face to rail (2 in)

@@ -15,6 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.ca.hashlife.kernels import (
     KIND_LOOKUP,
     KIND_TOTALISTIC,

@@ -7,6 +7,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from camlab88.apps.ca.hashlife import cells
 from camlab88.apps.ca.hashlife.bits.rule import BinaryRule, binary_rule
 from camlab88.apps.ca.hashlife.bits.window import grid_to_tree

@@ -4,6 +4,7 @@ small Life pattern needs: the pattern is placed as a grid), without a cell list.
 from __future__ import annotations
 
 import numpy as np
+
 from camlab88.apps.ca.hashlife.kernels import (
     BIT_LEAF_LEVEL,
     build,
