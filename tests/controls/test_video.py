@@ -68,6 +68,7 @@ def test_an_inspect_out_that_is_a_file_is_refused_in_one_line(tmp_path, capsys) 
         status, message = 2, str(exc.code)
     else:
         message = capsys.readouterr().err
-    assert status != 0
-    assert f"--inspect-out {tmp_path / 'taken'}: not a directory" in message
+    assert status == 2  # docs/exit_status.md: an output that cannot be written, before the work
+    assert f"{tmp_path / 'taken'}: it is a file in the way, not a directory" in message
+    assert len(message.strip().splitlines()) == 1
     assert (tmp_path / "taken").read_text() == "a file"
