@@ -285,21 +285,7 @@ def _main(argv: Sequence[str] | None) -> int:
     except OSError as exc:
         return _write_fault(words, exc)
     except Exception as exc:
-        from camlab88.base.budget import OverBudget
-
-        if isinstance(exc, OverBudget):  # refused before the work: one line, status 2
-            command = _command(words)
-            print(f"{command}: {exc}", file=sys.stderr)
-            return USAGE
-
-        from camlab88.emulator.harness.program_state import StateNotSaved
-
-        if isinstance(exc, StateNotSaved):  # --save-state could not save: said in one line
-            print(exc, file=sys.stderr)
-            return 1
-        if getattr(args, "load_state", None) is None:
-            raise
-        return _state_fault(words, args.load_state, exc)
+        return _refused_or_raise(words, args, exc)
     finally:
         if previous:
             import signal
@@ -307,6 +293,26 @@ def _main(argv: Sequence[str] | None) -> int:
             for sig, handler in previous.items():
                 signal.signal(sig, handler)
     return int(result or 0)
+
+
+def _refused_or_raise(words: list[str], args: argparse.Namespace, exc: Exception) -> int:
+    """A command's exception that has a one-line answer: over the budget (status 2), a
+    --save-state that could not save (1), a program failing on a --load-state (2); any
+    other is a bug and propagates."""
+    from camlab88.base.budget import OverBudget
+
+    if isinstance(exc, OverBudget):  # refused before the work: one line, status 2
+        print(f"{_command(words)}: {exc}", file=sys.stderr)
+        return USAGE
+
+    from camlab88.emulator.harness.program_state import StateNotSaved
+
+    if isinstance(exc, StateNotSaved):  # --save-state could not save: said in one line
+        print(exc, file=sys.stderr)
+        return 1
+    if getattr(args, "load_state", None) is None:
+        raise exc
+    return _state_fault(words, args.load_state, exc)
 
 
 def _command(words: list[str]) -> str:

@@ -346,6 +346,37 @@ def snooker_files(out: Path) -> None:
     _cli(["snooker", "simulate", "--break", "5", "--out", str(out / "snooker" / "break.cp")])
 
 
+# Hand-written: the walking figure of docs/ca_actors.md (§8.1's "a human figure").
+WALKER_ACTORS = """\
+# A walking human figure built from parts (thesis 8.1: "each cell as an animated object in
+# its own right (a human figure for example) ... each actor undergoing its own independent
+# motion"), for the maze runner's rules: the runner's head (2) is the walker, its tail (3) a
+# footprint tile, the walls (1) low hedges. Units are cells; z is up. Legs and arms swing
+# about the hip and the shoulder (`swing PIVOT_Z DEGREES PERIOD PHASE`), left and right half
+# a period apart; `phase individual` gives every walker its own clock (from where and when
+# it was born), so two runners do not walk in step.
+rules maze
+
+actor 1 hedge
+  colour 60 120 50
+  material ambient 0.3 diffuse 0.8 specular 0.1 shininess 8
+  box 0.9 0.9 0.3
+end
+
+actor 2 walker
+  colour 220 180 140
+  material ambient 0.3 diffuse 0.8 specular 0.3 shininess 20
+  box 0.12 0.14 0.42 at -0.09 0 0 swing 0.44 30 16 0
+  box 0.12 0.14 0.42 at 0.09 0 0 swing 0.44 30 16 0.5
+  box 0.34 0.2 0.36 at 0 0 0.42
+  box 0.08 0.1 0.34 at -0.23 0 0.44 swing 0.78 25 16 0.5
+  box 0.08 0.1 0.34 at 0.23 0 0.44 swing 0.78 25 16 0
+  sphere 0.12 at 0 0 0.8
+  phase individual
+end
+"""
+
+
 TEXT_FILES: dict[str, Callable[[], str]] = {
     "rainbow/scene.json": rainbow_scene,
     "kas/house.script": lambda: KAS_KEYFRAME_SCRIPT,
@@ -354,6 +385,7 @@ TEXT_FILES: dict[str, Callable[[], str]] = {
     "ca/session.events": lambda: CA_EVENTS,
     "ca/actors_edit.events": lambda: _actors_events(),
     "ca/chess.actors": lambda: CHESS_ACTORS,
+    "ca/walker.actors": lambda: WALKER_ACTORS,
     "ca/gun.ccl": lambda: GUN_CAMERA,
 }
 STREAMS: dict[str, Callable[[], bytes]] = {

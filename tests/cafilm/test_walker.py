@@ -13,7 +13,7 @@ from camlab88.apps.actors.mesh import actor_mesh, posed_actor_mesh, swing_angle
 from camlab88.apps.actors.model import read_actors
 from camlab88.apps.actors.render import Stage, canopy_over, world_triangles
 from camlab88.apps.cafilm.motion import change, clock_shift, lineage, posed
-from tests.cafilm.test_motion import _gen
+from tests.cafilm.test_cafilm_motion import _gen
 
 WALKER = Path(__file__).resolve().parents[2] / "examples" / "ca" / "walker.actors"
 ACTORS = read_actors(WALKER)

@@ -111,7 +111,8 @@ def test_failed_f2_save_keeps_editing_and_says_not_saved(tmp_path, capsys) -> No
     assert main(["kas", "edit", str(target), "--script", str(script), "--headless"]) == 1
     said = capsys.readouterr()
     assert "1 chains, 3 points" in said.out and "NOT saved" in said.out
-    assert f"{target}: NOT saved: No such file or directory" in said.err
+    # the one output rule's wording (docs/exit_status.md): the missing directory named
+    assert f"{target}: NOT saved: no such directory {target.parent}" in said.err
     assert not target.exists()
 
 

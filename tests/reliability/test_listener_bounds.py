@@ -86,7 +86,9 @@ def test_memory_stays_flat_across_100_mb_offered_by_successive_tcp_clients() -> 
 
 
 def test_memory_stays_flat_and_the_writer_waits_on_the_pty() -> None:
-    proc, first = start(["sigma", "run", "--headless", "--pty"])
+    # --speed 1: the line paced, so the writer has to wait (without it the line takes what
+    # the host writes flat out: docs/api.md, "What paces what"); memory stays flat either way
+    proc, first = start(["sigma", "run", "--headless", "--pty", "--speed", "1"])
     try:
         assert "on pty" in first, first
         base, peak, accepted = _flat(proc.pid, _offer_pty, first.split()[-1])
@@ -139,7 +141,10 @@ def test_clients_that_reconnect_at_once_are_not_held_back() -> None:
 
 
 def test_a_live_client_held_by_the_line_keeps_it_and_sees_nothing_of_a_newcomer() -> None:
-    proc, first = start(["sigma", "run", "--headless", "--listen", "0"])
+    # --speed 1: a paced line, so the client's second of sending is a second of line time,
+    # well inside its session time (flat out, that second is minutes of line time, and a
+    # client over its session time gives way to the newcomer: test_listener_session_time)
+    proc, first = start(["sigma", "run", "--headless", "--listen", "0", "--speed", "1"])
     try:
         port = port_of(first)
         with socket.create_connection(("127.0.0.1", port), timeout=5) as live:

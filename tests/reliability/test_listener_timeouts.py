@@ -119,7 +119,10 @@ def test_sigma_run_listen_hangs_up_on_half_an_order_after_its_order_timeout() ->
             waited = time.monotonic() - began
     finally:
         out, err = stop(proc)
-    assert 1.0 <= waited <= 3.0, waited
+    # 1 s of line time after the half order's last byte arrived; a busy line runs flat out
+    # (docs/api.md, "What paces what"), so its 10 bytes' 10/960 s may pass before the clock
+    # here starts
+    assert 1.0 - 10 / 960 - 0.005 <= waited <= 3.0, waited
     assert "half an order unfinished for 1 s of line time" in err, err
 
 

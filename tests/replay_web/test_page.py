@@ -122,7 +122,7 @@ def test_html_alone(tmp_path, capsys, more: list[str], says: str) -> None:
 
 def test_outputs_that_cannot_be_written_are_refused_at_once(tmp_path, capsys) -> None:
     rec = str(SESSIONS / "sigma_run.session")
-    with pytest.raises(SystemExit, match="its directory .* is missing"):
+    with pytest.raises(SystemExit, match="no such directory"):
         main(["replay", rec, "--html", str(tmp_path / "no" / "p.html")])
     (tmp_path / "file").write_text("keep")
     assert main(["replay", rec, "--html", str(tmp_path / "file")]) == 2
