@@ -122,6 +122,10 @@ def readme(work: Path, demo: bool) -> None:
     text = (ROOT / "README.md").read_text(encoding="utf-8")
     for d in walkthrough_directories(text):  # the README's `mkdir -p` lines
         (work / d).mkdir(parents=True, exist_ok=True)
+    for line in text.splitlines():  # and the later sections' (the outputs' directories)
+        if line.startswith("    mkdir -p "):
+            for d in line.split()[2:]:
+                (work / d).mkdir(parents=True, exist_ok=True)
     commands = [argv[1:] for argv in walkthrough_commands(text)] + README_MORE + more_sections()
     if demo:
         commands.append(["demo", "--headless"])
