@@ -118,6 +118,8 @@ def _ca() -> None:
          "ambient 0.1 diffuse 0.9 specular 0 shininess 1\n lathe 0.4 0 0.1 0.5 size 1 2 1\n"
          " box 0.2 0.2 0.2 at 0 0 0.5\n sphere size 0.2 0.1 0.3\n extrude 0 0 1 0 0 1 "
          "height 0.2 at -0.5 -0.5 0\n bob 0.1 12\n turn -90 30\nend\n")
+    _copy("ca-lif", DATA / "ca" / "golly" / "acorn.lif", DATA / "ca" / "golly" / "breeder.lif")
+    _copy("ca-life", DATA / "ca" / "golly" / "acorn_106.life")
     _copy("ca-mc", DATA / "ca" / "golly" / "broken-lines.mc")
     _put("ca-mc", "wireworld.mc", "[M2]\n#R WireWorld\n1 0 3 3 1\n2 0 1 0 0\n3 2 0 2 2\n")
     _put("ca-mc", "gun.mc", format_mc(read_pattern(CA_LIB / "gosper_gun.rle")))
@@ -142,7 +144,9 @@ def _tablets() -> None:
         enc = make_encoder(proto)
         events = [TabletEvent(100 * k, 50 * k, True, k % 2) for k in range(1, 6)]
         _put(name, "stroke.bin", enc.startup() + b"".join(enc.encode(e) for e in events))
-    hexes = sorted((DATA / "tablets" / "linux-hid-selftests").glob("*.hex"))[:3]
+    # the three Wacom pens, and the pen+touch screens (finger collections beside the pen's)
+    selftests = DATA / "tablets" / "linux-hid-selftests"
+    hexes = [*sorted(selftests.glob("wacom_*.hex"))[:3], *sorted(selftests.glob("[!w]*.hex"))]
     for h in hexes:
         _put("hid-descriptor", h.stem + ".bin", parse_hex_text(h.read_text(), str(h)))
 
@@ -156,6 +160,9 @@ def _scripts_and_views() -> None:
     _copy("rainbow-script", DATA / "snooker_camera" / "typo.events", ROOT / "examples" / "ca" /
           "session.events")
     _copy("kas-script", ROOT / "examples" / "kas" / "arc.script")
+    _put("sigma-events", "every_kind.events", "# a cursor read answered, then typing\n"
+         "0.5 key A\nreply cursor 468 356\nnext key return\n1.25 type hello # kept\n"
+         "next tablet 100 200 down\nnext tablet 100 200 up\n")
 
 
 def _kas_paint() -> None:

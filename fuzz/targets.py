@@ -141,6 +141,12 @@ def _ca_pattern(suffix: str) -> Callable[[bytes], object]:
     return run
 
 
+def _sigma_events(data: bytes) -> object:
+    from camlab88.protocols.sigma.input_script import parse
+
+    return parse(_text(data), NAME)
+
+
 def _ca_rules(data: bytes) -> object:
     from camlab88.apps.ca.rules import parse_rules
 
@@ -345,6 +351,8 @@ TARGETS: dict[str, Target] = {t.name: t for t in (
     Target("ca-rle", _ca_pattern(".rle")),
     Target("ca-cells", _ca_pattern(".cells")),
     Target("ca-mc", _ca_pattern(".mc")),
+    Target("ca-lif", _ca_pattern(".lif")),
+    Target("ca-life", _ca_pattern(".life")),
     Target("ca-log", _ca_log),
     Target("ca-checkpoint", _ca_checkpoint),
     Target("hid-descriptor", _hid),
@@ -358,6 +366,7 @@ TARGETS: dict[str, Target] = {t.name: t for t in (
     Target("render-lights", _lights),
     Target("rainbow-script", _rainbow_script),
     Target("kas-script", _kas_script),
+    Target("sigma-events", _sigma_events),
     # the two below accept only their format's own error (every refusal names file:line:col)
     Target("kas-paint-ops", _kas_ops, (_kas_paint_ops(),)),
     Target("session-recording", _session, (_session_error(),)),
