@@ -59,6 +59,9 @@ OUTPUTS: dict[str, tuple[list[str], str, str | None, bool]] = {
     "ca convert": (["ca", "convert", "glider", "{OUT}"], ".rle", ".txt", False),
     "ca film": (["ca", "film", "life", "glider", "--generations", "1", "--size", "16x16",
                  "--out", "{OUT}"], ".gif", ".avi", False),
+    "demo --out": (["demo", "--headless", "--only", "ca", "--out", "{OUT}"], "", None, True),
+    "kas plot --pdf": (["kas", "plot", "sun.kas", "--pdf", "{OUT}"], "", None, True),
+    "kas plot --svg": (["kas", "plot", "sun.kas", "--svg", "{OUT}"], "", None, True),
 }
 
 
@@ -184,3 +187,24 @@ def test_a_fifo_with_a_reader_is_written(tmp_path: Path) -> None:
     _out, err = child.communicate(timeout=120)
     assert child.returncode == 0, err
     assert data.startswith(b"\x89PNG")
+
+
+def test_the_png_writer_makes_no_directory(tmp_path: Path) -> None:
+    """base.png.write_png made every missing directory of its path; now the rule's words."""
+    import numpy as np
+
+    from camlab88.base.png import write_png
+
+    with pytest.raises(OSError) as refused:
+        write_png(np.zeros((2, 2, 3), np.uint8), tmp_path / "nowhere" / "deeper" / "x.png")
+    assert f"no such directory {tmp_path / 'nowhere' / 'deeper'}" in str(refused.value)
+    assert not (tmp_path / "nowhere").exists()
+
+
+def test_a_new_directory_output_is_made_one_level(tmp_path: Path, capsys) -> None:
+    """What the rule allows is still done: DIR itself is made when its parent exists."""
+    assert main(["kas", "inbetween", "sun_a", "sun_b", "--frames", "3", "--out",
+                 str(tmp_path / "seq.kas")]) == 0
+    assert main(["kas", "plot", str(tmp_path / "seq.kas"), "--pdf",
+                 str(tmp_path / "plots")]) == 0
+    assert (tmp_path / "plots" / "sequence.pdf").read_bytes().startswith(b"%PDF")

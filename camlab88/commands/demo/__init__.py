@@ -61,6 +61,10 @@ def play_acts(acts: list[Act], args: argparse.Namespace) -> int:
 
     headless = choose_headless(COMMAND, args.headless,
                                f"writing every frame as PNG and a GIF per act into {args.out}")
+    if headless:  # the one output rule, before the work: --out is made one level, never more
+        from camlab88.runopts import check_output_dir
+
+        check_output_dir(COMMAND, args.out, "write the demo's frames to")
     controls = controls_from_args(args, COMMAND, headless)
     hold = not headless and args.screenshot is None
     streams = []
@@ -79,7 +83,7 @@ def play_acts(acts: list[Act], args: argparse.Namespace) -> int:
                       argv=list(getattr(args, "_argv", [])))
     plugins: list[Plugin] = []
     if headless:
-        args.out.mkdir(parents=True, exist_ok=True)
+        args.out.mkdir(exist_ok=True)
         plugins.append(ActWriters(args.out, [(a.name, a.title) for a in acts], FPS, COMMAND))
     run(target, opts, plugins)
     return 0
