@@ -28,6 +28,7 @@ STREAM = str(ROOT / "examples" / "sigma" / "pgplot_goc.sig")
 SCENE = str(ROOT / "examples" / "rainbow" / "scene.json")
 CHECKPOINT = str(ROOT / "tests" / "data" / "snooker_camera" / "pink_shot.checkpoint")
 CCL = str(ROOT / "tests" / "data" / "snooker_camera" / "thesis_example.ccl")
+RECORDING = str(ROOT / "examples" / "figures" / "fig-3.1.session")
 LINE_REC = "camlab88-link-recording 1\nline 9600 8N1\nxonxoff on\n0.010000 > 48\nend 1\n"
 
 # command: (argv writing {OUT}, an extension it writes, one that names no format it writes
@@ -62,6 +63,10 @@ OUTPUTS: dict[str, tuple[list[str], str, str | None, bool]] = {
     "demo --out": (["demo", "--headless", "--only", "ca", "--out", "{OUT}"], "", None, True),
     "kas plot --pdf": (["kas", "plot", "sun.kas", "--pdf", "{OUT}"], "", None, True),
     "kas plot --svg": (["kas", "plot", "sun.kas", "--svg", "{OUT}"], "", None, True),
+    "replay --frames": (["replay", RECORDING, "--headless", "--frames", "{OUT}"], "", None,
+                        True),
+    "replay --screenshot": (["replay", RECORDING, "--headless", "--screenshot", "{OUT}"],
+                            ".png", ".jpg", False),
 }
 
 
@@ -208,3 +213,8 @@ def test_a_new_directory_output_is_made_one_level(tmp_path: Path, capsys) -> Non
     assert main(["kas", "plot", str(tmp_path / "seq.kas"), "--pdf",
                  str(tmp_path / "plots")]) == 0
     assert (tmp_path / "plots" / "sequence.pdf").read_bytes().startswith(b"%PDF")
+    done = _run(tmp_path, ["replay", RECORDING, "--headless", "--frames", "frames",
+                           "--screenshot", "last.png"])
+    assert done.returncode == 0, done.stderr
+    assert (tmp_path / "frames" / "frame_00000.png").is_file()
+    assert (tmp_path / "last.png").read_bytes().startswith(b"\x89PNG")

@@ -69,6 +69,7 @@ def replay(args: argparse.Namespace) -> int:
         return fail(COMMAND, exc)
     if args.html is not None:
         return _html(args, rec)
+    _check_outputs(args)
     headless = choose_headless(COMMAND, args.headless, "checking the screen hashes")
     ctx = Replay(rec, headless=headless, period=args.period, check=args.check,
                  frames=_abs(args.frames), screenshot=_abs(args.screenshot),
@@ -83,6 +84,18 @@ def replay(args: argparse.Namespace) -> int:
         return fail(COMMAND, f"{args.recording}:1: not replayed: {exc}")
     _name_written(ctx)
     return _verdict(args, ctx, status, said)
+
+
+def _check_outputs(args: argparse.Namespace) -> None:
+    """The one output rule (docs/exit_status.md) for the replay's own --screenshot and
+    --frames, before the work: the replayed program's checks are skipped under a replay,
+    and its writers make no directory but DIR itself."""
+    from camlab88.runopts import check_output, check_output_dir
+
+    if args.screenshot is not None:
+        check_output(COMMAND, args.screenshot, "save the screenshot to", (".png",))
+    if args.frames is not None:
+        check_output_dir(COMMAND, args.frames)
 
 
 def _name_written(ctx) -> None:
