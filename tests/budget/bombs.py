@@ -138,3 +138,32 @@ def many_lights(path: Path, count: int) -> Path:
         for k in range(count):
             fh.write(f"{k % 7 - 3} {k % 5 - 2} 2.5 0.001\n")
     return path
+
+
+def dense_lif(path: Path, side: int) -> Path:
+    """A Life 1.05 file of a full side x side square, one ``*`` a cell (8000²: 64 MB)."""
+    with open(path, "w") as fh:
+        fh.write("#Life 1.05\n#D bomb\n#N\n#P 0 0\n")
+        row = "*" * side + "\n"
+        for _ in range(side):
+            fh.write(row)
+    return path
+
+
+def many_cell_life106(path: Path, cells: int) -> Path:
+    """A Life 1.06 file of ``cells`` cells, one ``x y`` line each (4x10^6: 45 MB)."""
+    side = max(int(cells ** 0.5), 1)
+    with open(path, "w") as fh:
+        fh.write("#Life 1.06\n")
+        for y in range(-(-cells // side)):
+            fh.write("".join(f"{x} {y}\n" for x in range(min(side, cells - y * side))))
+    return path
+
+
+def many_frame_rainbow(path: Path, frames: int) -> Path:
+    """A Rainbow recording of ``frames`` one-byte command frames (2x10^7: 100 MB)."""
+    with open(path, "w") as fh:
+        fh.write("# camlab88 rainbow recording v1\n")
+        for done in range(0, frames, 100000):
+            fh.write("> 00\n" * min(100000, frames - done))
+    return path

@@ -86,6 +86,21 @@ def _lights(d: Path, real: bool) -> str:
     return "many.lights"
 
 
+def _lif(d: Path, real: bool) -> str:
+    bombs.dense_lif(d / "dense.lif", 8000 if real else 500)
+    return "dense.lif"
+
+
+def _life106(d: Path, real: bool) -> str:
+    bombs.many_cell_life106(d / "cells.lif", 4 * 10**6 if real else 40000)
+    return "cells.lif"
+
+
+def _rainbow(d: Path, real: bool) -> str:
+    bombs.many_frame_rainbow(d / "frames.rbrec", 2 * 10**7 if real else 40000)
+    return "frames.rbrec"
+
+
 _FILM = ("ca", "film", "life", "glider", "--generations", "1", "--frames-per-generation", "1",
          "--size", "160x120", "--out", "film.gif")
 
@@ -112,6 +127,15 @@ ROWS = [
         (*_FILM, "--actors", "{f}"), "frame of", "16M"),
     Row("200,000 lights, ca film", _lights, (*_FILM, "--lights", "{f}"),
         "lights with their shadow maps would need", "16M"),
+    # not the trial's rows: readers it did not try, under the same check
+    Row("dense Life 1.05 8000², ca run", _lif, ("ca", "run", "--rules", "life", "--pattern",
+                                                "{f}", "--generations", "1"),
+        "lines and up to", "16M"),
+    Row("Life 1.06 of 4x10^6 cells, ca convert", _life106, ("ca", "convert", "{f}", "out.rle"),
+        "lines and up to", "4M"),
+    Row("Rainbow recording of 2x10^7 frames, rainbow replay", _rainbow,
+        ("rainbow", "replay", "{f}", "--headless"), "a replay holds every entry) would need",
+        "4M"),
 ]
 
 
