@@ -92,6 +92,8 @@ def _replay(args: argparse.Namespace, path: Path) -> int:
     ctx = Replay(rec, headless=headless, period=False, check=False, frames=None,
                  screenshot=None if shot is None else shot.resolve(), controls=controls)
     status, said = rerun(ctx)
+    if ctx.fault is not None:  # read again as it played, the recording failed its checks
+        return fail(COMMAND, ctx.fault)
     if ctx.runs == 0 or status != 0:
         return fail(COMMAND, f"{path}: the replay ended with exit status {status}: "
                     f"{said.strip()}", 1)

@@ -89,6 +89,8 @@ def _session(args: argparse.Namespace) -> int:
         status, _said = rerun(ctx)
     except ReplayRefused as exc:
         return fail(COMMAND, f"{args.recording}:1: not replayed: {exc}")
+    if ctx.fault is not None:  # read again as it played, the recording failed its checks
+        return fail(COMMAND, ctx.fault)
     bad = ctx.mismatch is not None or status != 0
     print(f"{COMMAND}: session recording, {ctx.compared} screen hashes compared, "
           f"{int(bad)} mismatches")

@@ -181,7 +181,7 @@ def _seek(args: argparse.Namespace, rec, ctx) -> int | None:
                     snapshot_every=Fraction(SNAPSHOT_EVERY), save=None, at=None)
     ahead = Replay(rec, headless=True, check=args.check, state=first, seeking=True)
     status, said = rerun(ahead)
-    if ahead.mismatch is not None or status != 0 or ahead.runs == 0:
+    if ahead.mismatch is not None or status != 0 or ahead.runs == 0 or ahead.fault:
         return _verdict(args, ahead, status, said)
     if first.seek_state is None:
         end = float(rec.end.time) if rec.end is not None else 0.0
@@ -198,6 +198,9 @@ def _abs(path: Path | None) -> Path | None:
 
 def _verdict(args: argparse.Namespace, ctx, status: int, said: str) -> int:
     name = args.recording
+    if ctx.fault is not None:  # read again as it played, the recording failed its checks
+        return fail(COMMAND, ctx.fault if ctx.fault.startswith(str(name)) else
+                    f"{name}: {ctx.fault}")
     if ctx.runs == 0:
         return fail(COMMAND, f"{name}: the recorded command ran no program "
                     f"({' '.join(ctx.rec.argv)}; exit status {status}){_said(said)}")
