@@ -87,7 +87,7 @@ class Replay:
 
     def plugins(self) -> list[Plugin]:
         extra = [self.capture] if self.capture is not None else []
-        window = RecordWindow(self.rec)  # one reading of the recording for each run
+        window = RecordWindow(self.rec, self.check)  # one reading of it for each run
         return [RecordedInput(self, window), HashCheck(self, window), *extra]
 
 

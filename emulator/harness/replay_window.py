@@ -22,9 +22,9 @@ class RecordWindow:
     ``fault`` is set (and nothing more is read) when the second reading fails: the file
     changed since the first pass, or one tick holds more than the memory budget."""
 
-    def __init__(self, rec: SessionRecording) -> None:
+    def __init__(self, rec: SessionRecording, hashes: bool = True) -> None:
+        self._want_hashes = hashes  # False: a replay without --check compares none
         self._items: Iterator[tuple[str, Any]] | None = rec.timeline()
-        self._name = "the recording"
         self._last = -1  # tick of the last record read
         self._read = 0
         self._limit = budget.limit()
@@ -87,7 +87,8 @@ class RecordWindow:
                 self.wire.append((value[0] - 1, value[1], value[2]))
         else:
             self._last = value.tick
-            self.hashes.append(value)
+            if self._want_hashes:
+                self.hashes.append(value)
         self._read += 1
         if self._read % _CHECK_EVERY == 0:
             self._check()

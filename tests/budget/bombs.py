@@ -167,3 +167,25 @@ def many_frame_rainbow(path: Path, frames: int) -> Path:
         for done in range(0, frames, 100000):
             fh.write("> 00\n" * min(100000, frames - done))
     return path
+
+
+def with_idle_events(src: Path, dst: Path, per_tick: int) -> Path:
+    """The recording ``src`` with ``per_tick`` key releases (of a key never pressed: no
+    program answers them, so the screen hashes still agree) at every tick of the run, in
+    tick order: a recording as long as many hours of typing, that ``replay --check``
+    passes. The run's time must be linear in its ticks (sigma run's: 1/100 s a tick)."""
+    import json
+    from fractions import Fraction
+
+    lines = src.read_text().splitlines()
+    end = json.loads(lines[-1])
+    step = Fraction(end["time"]) / end["ticks"]
+    head = [ln for ln in lines[:-1] if json.loads(ln)["type"] in ("header", "file")]
+    body = [(json.loads(ln)["tick"], 1, ln) for ln in lines[:-1]
+            if json.loads(ln)["type"] not in ("header", "file")]
+    event = '{{"type":"event","tick":{t},"time":"{v}","event":{{"kind":"KeyUp","key":"f15"}}}}'
+    body += [(t, 0, event.format(t=t, v=t * step)) for t in range(end["ticks"])
+             for _ in range(per_tick)]
+    body.sort(key=lambda r: (r[0], r[1]))
+    dst.write_text("\n".join(head + [ln for _t, _k, ln in body] + [lines[-1]]) + "\n")
+    return dst
