@@ -65,6 +65,8 @@ OUTPUTS: dict[str, tuple[list[str], str, str | None, bool]] = {
     "kas plot --svg": (["kas", "plot", "sun.kas", "--svg", "{OUT}"], "", None, True),
     "replay --frames": (["replay", RECORDING, "--headless", "--frames", "{OUT}"], "", None,
                         True),
+    "rainbow replay --screenshot": (["rainbow", "replay", "empty.rbrec", "--headless",
+                                     "--screenshot", "{OUT}"], ".png", ".jpg", False),
     "replay --screenshot": (["replay", RECORDING, "--headless", "--screenshot", "{OUT}"],
                             ".png", ".jpg", False),
 }
@@ -83,6 +85,7 @@ def _inputs(tmp_path: Path, name: str) -> None:
     (tmp_path / "plain").write_text("a file, not a directory\n")
     (tmp_path / "line.rec").write_text(LINE_REC)
     (tmp_path / "e.views").write_text("")
+    (tmp_path / "empty.rbrec").write_text("# camlab88 rainbow recording v1\n")
     if name == "kas export":
         (tmp_path / "sun.kas").write_text(_sequence(tmp_path))
 

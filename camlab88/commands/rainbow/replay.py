@@ -37,6 +37,12 @@ def replay(args: argparse.Namespace) -> int:
     from camlab88.protocols.rainbow.recording import Recording, RecordingError
     from camlab88.protocols.rainbow.recording import replay as replay_on
 
+    if args.screenshot:  # the one output rule, before the work (docs/exit_status.md)
+        from pathlib import Path
+
+        from camlab88.runopts import check_output
+
+        check_output(COMMAND, Path(args.screenshot), "save the screenshot to", (".png",))
     if _is_session(args.recording):
         return _session(args)
     try:
@@ -51,7 +57,10 @@ def replay(args: argparse.Namespace) -> int:
         if window is not None:
             window.close()
     if args.screenshot:
-        write_png(device.peek(), args.screenshot)
+        try:
+            write_png(device.peek(), args.screenshot)
+        except OSError as exc:  # after the start: the work failed (status 1)
+            return fail(COMMAND, exc, 1)
     print(f"{COMMAND}: {result.commands} commands, {result.events} input events, "
           f"{device.frame_count} frames, {len(result.mismatches)} mismatches")
     for m in result.mismatches[:10]:
