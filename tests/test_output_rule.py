@@ -67,6 +67,8 @@ OUTPUTS: dict[str, tuple[list[str], str, str | None, bool]] = {
                         True),
     "rainbow replay --screenshot": (["rainbow", "replay", "empty.rbrec", "--headless",
                                      "--screenshot", "{OUT}"], ".png", ".jpg", False),
+    "replay --html DIR": (["replay", RECORDING, "--html", "{OUT}"], "", None, True),
+    "figures --html": (["figures", "--html", "{OUT}", "3.1"], "", None, True),
     "replay --screenshot": (["replay", RECORDING, "--headless", "--screenshot", "{OUT}"],
                             ".png", ".jpg", False),
 }

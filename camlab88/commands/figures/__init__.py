@@ -116,8 +116,9 @@ def _gallery(args: argparse.Namespace) -> int:
         return fail(COMMAND, f"no screen figure {args.number!r} (figures: {', '.join(known)})")
     chosen = list(known.values()) if args.number is None else [known[args.number]]
     out = args.html
-    if out.exists() and not out.is_dir():
-        return fail(COMMAND, f"cannot write the gallery to {out}: not a directory")
+    from camlab88.runopts import check_output_dir
+
+    check_output_dir(COMMAND, out, "write the gallery to")  # the one output rule: DIR one level
     try:
         entries = build(out, chosen, recording)
     except OSError as exc:

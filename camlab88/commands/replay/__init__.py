@@ -110,7 +110,7 @@ def _html(args: argparse.Namespace, rec) -> int:
     """``--html OUT``: the session replayed headless into a web page."""
     from camlab88.replay_page.make import form_of, make_page
     from camlab88.replay_policy import ReplayRefused
-    from camlab88.runopts import check_output
+    from camlab88.runopts import check_output, check_output_dir
 
     others = [flag for flag, given in (("--seek", args.seek), ("--save-state", args.save_state),
               ("--load-state", args.load_state), ("--frames", args.frames),
@@ -123,8 +123,10 @@ def _html(args: argparse.Namespace, rec) -> int:
     if out.suffix.lower() in (".html", ".htm"):
         check_output(COMMAND, out, "write the page to")
     elif out.exists() and not out.is_dir():
-        return fail(COMMAND, f"cannot write the page to {args.html}: not a directory "
-                    "(name a .html file for a single page)")
+        return fail(COMMAND, f"cannot write the page to {args.html}: it is a file in the way, "
+                    "not a directory (name a .html file for a single page)")
+    else:  # the one output rule: DIR is made one level, in a directory that exists
+        check_output_dir(COMMAND, out, "write the page to")
     try:
         made = make_page(rec, args.recording, out, args.html_codec, check=args.check)
     except ReplayRefused as exc:
