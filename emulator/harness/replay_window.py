@@ -95,10 +95,10 @@ class RecordWindow:
         return True
 
     def _check(self) -> None:
-        held = (len(self.events) + len(self.wire) + len(self.hashes)) * RECORD_BYTES
-        if held > self._limit:  # a crafted file: one tick of millions of records
-            self.fault = (f"tick {self._last}: its records would need "
-                          f"{budget.size_text(held)} and more; the memory budget is "
+        count = len(self.events) + len(self.wire) + len(self.hashes)
+        if count * RECORD_BYTES > self._limit:  # a crafted file: one tick of millions
+            self.fault = (f"tick {self._last}: its {count:,} records and more, held for one "
+                          f"tick, would need more than the memory budget of "
                           f"{budget.size_text(self._limit)} (raise it with camlab88 --budget "
                           f"SIZE or {budget.ENV}=SIZE)")
             self.close()

@@ -189,3 +189,16 @@ def with_idle_events(src: Path, dst: Path, per_tick: int) -> Path:
     body.sort(key=lambda r: (r[0], r[1]))
     dst.write_text("\n".join(head + [ln for _t, _k, ln in body] + [lines[-1]]) + "\n")
     return dst
+
+
+def one_tick_of_events(path: Path, events: int) -> Path:
+    """A recording whose ``events`` key releases all fall on tick 0: a window of one tick
+    as long as the file (nothing a recorder writes; a crafted file)."""
+    line = '{"type": "event", "tick": 0, "time": "0", "event": {"kind": "KeyUp", "key": "f15"}}\n'
+    with open(path, "w") as fh:
+        fh.write(_HEADER)
+        fh.write(_empty_input())
+        for done in range(0, events, 10000):
+            fh.write(line * min(10000, events - done))
+        fh.write(_END)
+    return path

@@ -89,3 +89,16 @@ def test_replay_memory_does_not_grow_with_the_recording_s_length(tmp_path: Path)
         assert run.status == 0 and "screen hashes agree" in run.stdout, run.stderr
         peaks.append(run.peak_mb)
     assert peaks[1] <= peaks[0] * RATIO, peaks
+
+
+def test_one_tick_holding_more_than_the_budget_is_one_line(tmp_path: Path) -> None:
+    """The window is bounded by the budget too: 100,000 events on one tick (30 MB held)
+    against an 8 MB budget end the replay in one line, status 2, before they are fed."""
+    bombs.one_tick_of_events(tmp_path / "tick.session", 100000)
+    run = camlab88(tmp_path, "replay", "tick.session", "--headless", budget="8M", timeout=120)
+    lines = [ln for ln in run.stderr.splitlines() if ln.strip()]
+    assert run.status == 2 and len(lines) == 1 and "Traceback" not in run.stderr, run.stderr
+    assert lines[0].startswith("camlab88 replay: tick.session: tick 0: its "), lines
+    assert "records and more, held for one tick, would need more than the memory budget of 8 MB" \
+        in lines[0], lines
+    assert "--budget SIZE" in lines[0] and run.peak_mb <= 400, (lines, run.peak_mb)
