@@ -53,7 +53,7 @@ class _Reader:
         self.ended = False
         self.traffic = True  # keep the > and < wire records (a replay does not need them)
         # a replay's first pass: events, outside input (+, -) and hashes are checked, not
-        # kept; the replay reads them again a window at a time (protocols.session.window)
+        # kept; the replay reads them again a window at a time (emulator.harness.replay_window)
         self.window = False
         self.timeline: list[tuple[str, Any]] = []  # the replay pass: what the line held
         self.hold = True  # keep the files and the tablet tape (the replay pass has them)
