@@ -140,7 +140,8 @@ def test_rainbow_serve_frame_timeout_from_the_command_line() -> None:
         assert proc.poll() is None  # still serving
     finally:
         stop(proc)
-    assert 0.9 <= waited <= 2.5, waited  # the server may read the half frame before the clock here starts
+    # the server may read the half frame before the clock here starts
+    assert 0.9 <= waited <= 2.5, waited
 
 
 def test_a_silent_line_client_gives_way_to_a_newcomer_after_the_idle_timeout() -> None:
