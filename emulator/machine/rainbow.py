@@ -5,6 +5,7 @@ one. Every Rainbow program in camlab88 runs on this machine."""
 
 from __future__ import annotations
 
+import socket
 from collections.abc import Callable
 from fractions import Fraction
 
@@ -15,6 +16,7 @@ from camlab88.emulator.protocol_trace import TraceEvent
 from camlab88.emulator.rainbow.device import FRAME_MS, Rainbow
 from camlab88.emulator.rainbow.errors import RainbowError
 from camlab88.emulator.rainbow.executor import Executor
+from camlab88.emulator.rainbow.server import ServerStats, serve
 from camlab88.emulator.rainbow.trace import RainbowTracer
 from camlab88.protocols.rainbow.client import RainbowClient
 from camlab88.protocols.rainbow.events import Event
@@ -89,6 +91,10 @@ class RainbowMachine:
 
     def _call(self, frame: bytes) -> bytes:
         return self.executor.handle(frame)
+
+    def show_frames(self, on_frame: Callable[[np.ndarray], None] | None) -> None:
+        """Tell ``on_frame`` each frame a program waits for from now on (None: stop)."""
+        self._on_frame = self.executor.on_frame = on_frame
 
     @property
     def recording(self) -> Recording | None:
@@ -174,6 +180,15 @@ class RainbowMachine:
         self._build(device)
         self.client.continue_from((nxt, arc, calls))
         self.executor.decoder.resume(offset, pending)
+
+    # ------------------------------------------------------------------ a socket
+    def serve(self, sock: socket.socket, connections: int | None = None,
+              **limits: float) -> ServerStats:
+        """Serve programs on ``sock`` (emulator/rainbow/server.py's ``listen``) one at a
+        time, each a fresh pad-library session on this Rainbow, until ``connections`` have
+        been served (None: for ever); ``limits``: frame_timeout, idle_timeout,
+        session_time, poll (seconds)."""
+        return serve(self.executor, sock, connections, **limits)
 
     # ------------------------------------------------------------------ a program's run
     def session_state(self) -> bytes:
