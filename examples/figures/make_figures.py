@@ -43,14 +43,14 @@ class _CA:
         from camlab88.emulator.machine import RainbowMachine
 
         self._se = script_events
-        self.session = RainbowMachine()
-        self.program = CAProgram(self.session.client, Options(pattern=pattern, rules=rules))
+        self.machine = RainbowMachine()
+        self.program = CAProgram(self.machine.client, Options(pattern=pattern, rules=rules))
         self.mouse = script_events.MouseState()
         self.lines: list[str] = []
 
     def run(self, text: str) -> None:
         steps = self._se.parse(text, "<figure>", self.mouse)
-        self._se.play(steps, self.session.post, self.program.frame,
+        self._se.play(steps, self.machine.post, self.program.frame,
                       lambda: self.program.finished)
         self.lines.append(text.rstrip("\n"))
 
