@@ -316,9 +316,9 @@ def _program_state(data: bytes) -> object:
 
     if not _PROGRAMS:
         from camlab88.apps.ca.program.program import CAProgram, Options
-        from camlab88.emulator.rainbow.session import in_process
+        from camlab88.emulator.machine import RainbowMachine
 
-        _PROGRAMS.append(CAProgram(in_process().client, Options(pattern="glider")))
+        _PROGRAMS.append(CAProgram(RainbowMachine().client, Options(pattern="glider")))
     program = _PROGRAMS[0]
     head, parts = unpack(data, "program")
     values = decode(program.STATE_SCHEMA, head.get("values"), parts)

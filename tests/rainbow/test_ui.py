@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from camlab88.emulator.rainbow.session import in_process
+from camlab88.emulator.machine import RainbowMachine
 from camlab88.protocols.rainbow import SCREEN
 from camlab88.protocols.rainbow.ui import CrossMenu, DoubleBuffer, MessageArea, PopupMenu, SuperPad
 from camlab88.protocols.rainbow.ui.menu import ROW_H
@@ -16,7 +16,7 @@ def _rgb(hexs: str) -> list[int]:
 
 
 def test_double_buffered_animation_shows_only_whole_frames() -> None:
-    s = in_process()
+    s = RainbowMachine()
     c = s.client
     c.set_lut(0, ["#000000", "#ffffff"])
     db = DoubleBuffer(c, SCREEN, 200, 100, 1, x=50, y=50)
@@ -39,7 +39,7 @@ def test_double_buffered_animation_shows_only_whole_frames() -> None:
 
 
 def test_scrolling_menu_moves_pad_inside_smaller_cluster() -> None:
-    s = in_process()
+    s = RainbowMachine()
     c = s.client
     items = [f"Item {i}" for i in range(12)] + ["Do nothing"]
     menu = PopupMenu(c, items, visible_rows=5)
@@ -74,7 +74,7 @@ def test_scrolling_menu_moves_pad_inside_smaller_cluster() -> None:
 
 
 def test_cross_menu_chooses_by_direction() -> None:
-    s = in_process()
+    s = RainbowMachine()
     c = s.client
     items = {"centre": "Finish editing", "up": "Step up", "down": "Step down",
              "left": "Set to value", "right": "Pick up colour"}
@@ -95,7 +95,7 @@ def test_cross_menu_chooses_by_direction() -> None:
 
 
 def test_message_area_colour_and_text() -> None:
-    s = in_process()
+    s = RainbowMachine()
     c = s.client
     msg = MessageArea(c, 10, 10, 200, 30, lut_page=3)
     msg.show("Move ball", "#ffc0cb")
@@ -114,7 +114,7 @@ def world(wx: np.ndarray, wy: np.ndarray) -> np.ndarray:
 
 
 def test_four_times_mapped_panning() -> None:
-    s = in_process()
+    s = RainbowMachine()
     c = s.client
     c.set_lut(0, ["#202020", "#e0e0e0", "#ff0000", "#ff8080"])
     view = c.create_cluster(752, 576)

@@ -96,20 +96,20 @@ def _run(path: str, types: list, rules: str, player, opts, tablet):
     from camlab88.apps.actors.editor.program import ActorEditor
     from camlab88.emulator.harness import run
     from camlab88.emulator.harness.rainbow import RainbowTarget
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
     from camlab88.runopts import unattended
 
-    session = in_process(record=opts.record is not None)
-    editor = ActorEditor(session.client, path, types, rules,
+    machine = RainbowMachine(record=opts.record is not None)
+    editor = ActorEditor(machine.client, path, types, rules,
                          may_save=opts.screenshot is None)
 
     def step() -> bool:
         if target.tablet is not None and not target.tablet.gone:
-            _poll_tablet(target.tablet, session, editor)
+            _poll_tablet(target.tablet, machine, editor)
         editor.frame()
         return not editor.finished
 
-    target = RainbowTarget(session, step, "camlab88 ca actors", KEYS, player,
+    target = RainbowTarget(machine, step, "camlab88 ca actors", KEYS, player,
                            unattended(opts))
     target.may_close = editor.may_close
     target.tablet = tablet
@@ -117,7 +117,7 @@ def _run(path: str, types: list, rules: str, player, opts, tablet):
     return editor
 
 
-def _poll_tablet(tablet, session, editor) -> None:
+def _poll_tablet(tablet, machine, editor) -> None:
     """New tablet reports to the device's tablet input, the pen scaled to the tablet's
     range; a lost tablet is reported once and dropped."""
     from camlab88.rainbow_tablet import feed_tablet
@@ -126,7 +126,7 @@ def _poll_tablet(tablet, session, editor) -> None:
     if model is not None:
         editor.pen.extent = (max(1, model.max_x), max(1, model.max_y))
         editor.pen.flip = getattr(model, "origin", "upper-left") == "lower-left"
-    feed_tablet(COMMAND, tablet, session)
+    feed_tablet(COMMAND, tablet, machine)
 
 
 def _report(editor) -> int:

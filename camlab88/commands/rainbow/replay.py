@@ -32,10 +32,8 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
 
 def replay(args: argparse.Namespace) -> int:
     from camlab88.base.png import write_png
-    from camlab88.emulator.rainbow.device import Rainbow
-    from camlab88.emulator.rainbow.executor import Executor
+    from camlab88.emulator.machine import RainbowMachine
     from camlab88.protocols.rainbow.recording import Recording, RecordingError
-    from camlab88.protocols.rainbow.recording import replay as replay_on
 
     if args.screenshot:  # the one output rule, before the work (docs/exit_status.md)
         from pathlib import Path
@@ -49,20 +47,20 @@ def replay(args: argparse.Namespace) -> int:
         rec = Recording.load(args.recording)
     except (OSError, RecordingError) as exc:
         return fail(COMMAND, exc)
-    device = Rainbow(strict=args.strict)
     window = _window(args)
+    machine = RainbowMachine(strict_memory=args.strict, on_frame=_show(window))
     try:
-        result = replay_on(rec, Executor(device, _show(window)).handle, device.post_event)
+        result = machine.replay(rec)
     finally:
         if window is not None:
             window.close()
     if args.screenshot:
         try:
-            write_png(device.peek(), args.screenshot)
+            write_png(machine.frame(), args.screenshot)
         except OSError as exc:  # after the start: the work failed (status 1)
             return fail(COMMAND, exc, 1)
     print(f"{COMMAND}: {result.commands} commands, {result.events} input events, "
-          f"{device.frame_count} frames, {len(result.mismatches)} mismatches")
+          f"{machine.frame_count} frames, {len(result.mismatches)} mismatches")
     for m in result.mismatches[:10]:
         print(f"  {m}", file=sys.stderr)
     return 1 if result.mismatches else 0

@@ -64,7 +64,7 @@ def _run(shot, script, player, opts, plugins=()):
     from camlab88.apps.snooker.camera_tool.tool import CameraTool
     from camlab88.emulator.harness import run
     from camlab88.emulator.harness.rainbow import RainbowTarget
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
 
     class Target(RainbowTarget):
         """The script as read from disk during the run is outside input: recorded, and fed
@@ -78,7 +78,7 @@ def _run(shot, script, player, opts, plugins=()):
         def put_wire(self, data: bytes) -> None:
             tool.feed(data.decode("utf-8"))
 
-    rb = in_process(record=opts.record is not None)
+    rb = RainbowMachine(record=opts.record is not None)
     tool = CameraTool(rb.client, shot, script)
     target = Target(rb, tool.step, COMMAND, KEYS, player, unattended(opts))
     target.escape_is_a_key = True  # the tool's own Esc: done

@@ -68,9 +68,9 @@ def _run(shot, views, opts, frames_dir):
     from camlab88.emulator.harness import run
     from camlab88.emulator.harness.loop import Plugin
     from camlab88.emulator.harness.rainbow import RainbowTarget
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
 
-    rb = in_process(record=opts.record is not None)
+    rb = RainbowMachine(record=opts.record is not None)
     vis = Visualiser(rb.client, shot, views)
     once = unattended(opts)
 
