@@ -108,6 +108,14 @@ def test_cells_receiving_nothing_die_and_self_message_keeps_alive() -> None:
     assert e.population == 0
 
 
+def test_a_cell_receiving_nothing_dies_though_a_zero_message_would_live() -> None:
+    # a cell's message area is 0 whether it received +0 or nothing; only the first lives
+    e = Engine(parse_rules("1 0 0 0 1 . +0 $ 0 1"))
+    e.set(5, 5, 1)
+    e.step()
+    assert cellset(e) == {(6, 5, 1)}
+
+
 def test_messages_any_distance_and_and_xor_ops() -> None:
     far = parse_rules("1 0 0 0 3000 " + ". " * 3000 + "|1 $ 1 1")
     e = Engine(far)
