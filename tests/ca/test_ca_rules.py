@@ -181,3 +181,13 @@ def test_invisible_lifeform_parses() -> None:
     rules = parse_rules("1 0 0 0 0 invisible |1\n2 0 0 0 0 |1\n$\n1 1\n")
     assert rules.forms[1].invisible and rules.forms[1].colour is None
     assert not rules.forms[2].invisible
+
+
+def test_default_colours_are_green_red_blue_then_unique() -> None:
+    # section 7.4.1: type 1 "green by default", type 2 "red", type 3 "blue"
+    from camlab88.apps.ca.render import palette
+
+    rules = parse_rules("1 0 0 0 0 |1  2 0 0 0 0 |1  3 0 0 0 0 |1 $ 1 1")
+    pal = [tuple(int(v) for v in c) for c in palette(rules, 40)]
+    assert pal[:4] == [(0, 0, 0), (0, 255, 0), (255, 0, 0), (0, 0, 255)]
+    assert len(set(pal[1:])) == 40  # a unique colour per life-form
