@@ -483,3 +483,15 @@ def test_the_editing_cursor_stays_inside_the_visible_area():
     e = d.program.session.engine
     d.run("move 766 300\nclick right 766 300\nframes 1")
     assert e.get(*d.program.view.cell_at(751, 300)) == 1 and e.population == 1
+
+
+def test_centralise_viewport_brings_the_population_back_into_view():
+    d = Driver(Options(pattern="glider"))
+    d.leave_editing()
+    d.run("drag left 700 500 10 10 5\nframes 1")  # pan the glider out of view
+    bx = d.program.session.engine.bbox()
+    centre = ((bx.x0 + bx.x1) // 2, (bx.y0 + bx.y1) // 2)
+    assert not d.program.view.cell_visible(*centre)
+    d.main("Centralise viewport")
+    assert d.program.view.cell_visible(*centre)
+    assert d.program.view.centre_cell() == pytest.approx(centre, abs=1)
