@@ -142,3 +142,29 @@ def test_four_times_mapped_panning() -> None:
             exposed = 752 * 576 - (752 - abs(dx)) * (576 - abs(dy))
             assert sp.drawn_pixels - drawn == exposed
     assert np.array_equal(s.executor.last_frame, s.device.reference())
+
+
+def test_a_pop_up_menu_is_pastel_with_a_white_border_and_black_writing() -> None:
+    """§6.2.1: "pastel colours", a white border, black writing; the item under the
+    invisible cursor turns to its own pastel colour."""
+    s = in_process()
+    c = s.client
+    items = ["Pot", "Place", "Do nothing"]
+    menu = PopupMenu(c, items)
+    menu.open(300, 300)
+    c.wait_frame()
+    box = s.executor.last_frame[menu.y: menu.y + menu.window_h, menu.x: menu.x + menu.width]
+    colours = {tuple(int(v) for v in px) for px in box.reshape(-1, 3)}
+    item = _rgb(menu.colour)
+    lit = _rgb(menu.highlights[2])  # 'Do nothing', highlighted first
+    assert colours == {(255, 255, 255), (0, 0, 0), tuple(item), tuple(lit)}
+    assert (box[0] == 255).all() and (box[:, 0] == 255).all()  # the white border
+    assert (box[ROW_H * 2 + 9, 2: menu.width - 2] == lit).all(axis=-1).sum() > 10
+    for rgb in [item] + [_rgb(h) for h in menu.highlights]:
+        value, chroma = max(rgb), max(rgb) - min(rgb)
+        assert value >= 230 and 0.15 <= chroma / value <= 0.45  # pastel: bright, pale hue
+    menu.track(menu.x + 20, menu.y + 5)  # the cursor passes over 'Pot'
+    c.wait_frame()
+    box = s.executor.last_frame[menu.y: menu.y + menu.window_h, menu.x: menu.x + menu.width]
+    assert (box[9] == _rgb(menu.highlights[0])).all(axis=-1).sum() > 10
+    assert (box[ROW_H * 2 + 9] == lit).all(axis=-1).sum() == 0  # back to the menu colour
