@@ -84,6 +84,9 @@ class SessionRecording:
     # are not held (the lists above stay empty) but read again from the file, in order
     body: Callable[[], Iterator[tuple[str, Any]]] | None = field(default=None, repr=False,
                                                                  compare=False)
+    # and its tablet tape (``T`` wire records), read again as the replay's polls reach it
+    tape_body: Callable[[], Iterator[bytes]] | None = field(default=None, repr=False,
+                                                            compare=False)
 
     def timeline(self) -> Iterator[tuple[str, Any]]:
         """Events ``("event", (tick, time, event))``, outside input ``("wire", (tick, dir,
@@ -95,6 +98,13 @@ class SessionRecording:
         items += [(w[0], 1, ("wire", w)) for w in self.wire if w[1] in "+-"]
         items += [(h.tick, 2, ("hash", h)) for h in self.hashes]
         return iter([item for _t, _k, item in sorted(items, key=lambda x: (x[0], x[1]))])
+
+    def tape_records(self) -> Iterator[bytes]:
+        """The tablet tape's records (the data of ``T`` wire records) in file order: from
+        the file again for a replay's recording (which keeps none of them), else the list's."""
+        if self.tape_body is not None:
+            return self.tape_body()
+        return iter([data for _t, d, data in self.wire if d == "T"])
 
 
 def _b64(data: bytes) -> str:
@@ -166,6 +176,7 @@ def read(path: str | os.PathLike[str], traffic: bool = True) -> SessionRecording
                 rec = parse_stream(stream_lines(fh, name), name, traffic=False)
                 where = os.path.abspath(name)  # the replay runs in a scratch directory
                 rec.body = lambda: _timeline(name, where, stamp)
+                rec.tape_body = lambda: _timeline(name, where, stamp, tape=True)
                 return rec
     except OSError as exc:
         raise SessionFileError(name, 0, 0, f"cannot read: {exc.strerror or exc}") from None
@@ -176,17 +187,19 @@ def _stamp(st: os.stat_result) -> tuple[int, int, int, int]:
     return st.st_dev, st.st_ino, st.st_size, st.st_mtime_ns
 
 
-def _timeline(name: str, where: str, stamp: tuple[int, int, int, int],
-              ) -> Iterator[tuple[str, Any]]:
+def _timeline(name: str, where: str, stamp: tuple[int, int, int, int], tape: bool = False,
+              ) -> Iterator[Any]:
     """A replay's second pass over ``name`` (at ``where``), refused if the file is not the
-    one the first pass checked (replaced or changed since)."""
+    one the first pass checked (replaced or changed since); ``tape``: a pass for the tablet
+    tape's records alone (parse.timeline)."""
     from camlab88.protocols.session.parse import timeline
 
     try:
         with open(where, "rb") as fh:
             if _stamp(os.fstat(fh.fileno())) != stamp:
                 raise SessionFileError(name, 0, 0, "changed while it was replayed")
-            yield from timeline((ln[:-1] if ln.endswith(b"\n") else ln for ln in fh), name)
+            yield from timeline((ln[:-1] if ln.endswith(b"\n") else ln for ln in fh), name,
+                                tape)
     except OSError as exc:
         raise SessionFileError(name, 0, 0, f"cannot read: {exc.strerror or exc}") from None
 
