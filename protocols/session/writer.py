@@ -36,8 +36,7 @@ class SessionWriter:
 
     def __init__(self, path: str | os.PathLike[str], argv: list[str], hash_every: int,
                  headless: bool, files: dict[str, bytes]) -> None:
-        from camlab88.base.atomicfile import naming_user_path, open_into, output_target, \
-            temp_beside
+        from camlab88.base.atomicfile import naming_user_path, open_into, output_target, temp_beside
 
         self.path = path
         self._target, into = output_target(path)
