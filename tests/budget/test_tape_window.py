@@ -102,3 +102,26 @@ def test_replay_memory_does_not_grow_with_the_tape_s_length(tmp_path: Path,
         assert run.status == 0 and "screen hashes agree" in run.stdout, run.stderr
         peaks.append(run.peak_mb)
     assert peaks[1] <= peaks[0] * RATIO, peaks
+
+
+def test_one_poll_holding_more_than_the_budget_ends_the_replay_in_one_line(
+        tmp_path: Path, monkeypatch) -> None:
+    """100,000 entries on one poll (20 MB held) against an 8 MB budget: one line, status 2."""
+    import base64
+    import zlib
+
+    path = _recorded(tmp_path, monkeypatch, "2.5 wait\n")
+    lines = path.read_text().splitlines()
+    at = next(n for n, ln in enumerate(lines) if '"dir":"T"' in ln)
+    obj = json.loads(lines[at])
+    entries = json.loads(zlib.decompress(base64.b64decode(obj["data"])))
+    entries += [[entries[-1][0], "raw", ""]] * 100000
+    obj["data"] = base64.b64encode(zlib.compress(json.dumps(entries).encode(), 9)).decode()
+    lines[at] = json.dumps(obj, separators=(",", ":"))
+    (tmp_path / "poll.session").write_text("\n".join(lines) + "\n")
+    run = camlab88(tmp_path, "replay", "poll.session", "--check", "--headless", budget="8M")
+    said = [ln for ln in run.stderr.splitlines() if ln.strip()]
+    assert run.status == 2 and len(said) == 1 and "Traceback" not in run.stderr, run.stderr
+    assert said[0].startswith("camlab88 replay: poll.session: the recording's tablet tape: "
+                              "poll 0: its "), said
+    assert "held at once, would need more than the memory budget of 8 MB" in said[0], said
