@@ -226,8 +226,8 @@ class Tape:
                  on_fault: Callable[[str], None] | None = None) -> None:
         self.where = where
         if records is None:
-            held = json.dumps(check_entries(entries or [], where)).encode()
-            records = lambda: iter([held])  # noqa: E731 -- a fresh reading each call
+            held = [json.dumps(check_entries(entries or [], where)).encode()]
+            records = held.__iter__  # a fresh reading each call
         self._records = records
         self._reading: Iterator[list[Any]] | None = None
         self._pos = 0  # entries the reading has given
