@@ -271,12 +271,12 @@ def _tape_errors() -> tuple[type[BaseException], ...]:
 def _tape(data: bytes) -> object:
     """A session's T record replayed as ``replay`` does: the entries checked, each opening's
     decoder rebuilt and fed the recorded bytes poll by poll."""
-    from camlab88.protocols.tablets.tape import Tape, TapeSource, decoder_for
+    from camlab88.protocols.tablets.tape import Tape, TapeSource, decoder_for, parse_chunk
 
     tape = Tape.from_chunks([data], NAME)
     source = None
     events = []
-    for poll in sorted(tape.by_poll):
+    for poll in sorted({entry[0] for entry in parse_chunk(data, NAME)}):
         tape.poll = poll
         opened = tape.opens_now()
         if opened is not None:

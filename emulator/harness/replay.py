@@ -131,6 +131,7 @@ class RecordedInput(Plugin):
         recorded = [codec.decode(obj) for obj in self.window.events_at(harness.ticks)]
         if self.window.fault is not None:  # the file changed under the replay
             self.replay.fault = self.window.fault
+        if self.replay.fault is not None:  # ... or its tablet tape could not be read on
             harness.stop()
         return recorded + window_quit
 

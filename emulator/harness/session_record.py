@@ -18,7 +18,8 @@ import numpy as np
 from camlab88.emulator.harness import codec
 from camlab88.emulator.harness.loop import Plugin, RunOptions
 from camlab88.emulator.host_input import HostEvent
-from camlab88.protocols.session import ScreenHash, SessionRecording, write
+from camlab88.protocols.session import ScreenHash
+from camlab88.protocols.session.writer import SessionWriter
 
 if TYPE_CHECKING:
     from camlab88.emulator.harness.loop import Harness
@@ -61,18 +62,21 @@ def input_files(argv: list[str], extra: list[Path]) -> dict[str, bytes]:
 
 
 class SessionRecorder(Plugin):
-    """Collects the session while it runs and writes it when the run ends."""
+    """Writes the session as it runs (protocols.session.writer: to a temporary file beside
+    the target, renamed into place when the run ends), so its memory does not grow with the
+    session's length."""
 
     def __init__(self, options: RunOptions) -> None:
         self.path = Path(options.record)
         argv = replay_argv(options.argv)
-        self.rec = SessionRecording(argv, HASH_EVERY, options.headless,
-                                    input_files(argv, options.inputs))
+        self.out = SessionWriter(self.path, argv, HASH_EVERY, options.headless,
+                                 input_files(argv, options.inputs))
         self._pending: dict[str, bytearray] = {}
 
     def handle_events(self, harness: Harness, events: list[HostEvent]) -> list[HostEvent]:
         t = harness.target.time()
-        self.rec.events += [(harness.ticks, t, codec.encode(e)) for e in events]
+        for e in events:
+            self.out.event(harness.ticks, t, codec.encode(e))
         return events
 
     def post_tick(self, harness: Harness) -> None:
@@ -82,7 +86,7 @@ class SessionRecorder(Plugin):
         for d, data in wire():
             # outside input, a client leaving, a tablet tape: at its tick, for the replay
             if (d in "+T" and data) or d == "-":
-                self.rec.wire.append((harness.ticks, d, data))
+                self.out.wire(harness.ticks, d, data)
             elif data:
                 self._pending.setdefault(d, bytearray()).extend(data)
 
@@ -91,7 +95,7 @@ class SessionRecorder(Plugin):
         record a tick would cost more in JSON than the bytes themselves)."""
         for d, data in sorted(self._pending.items()):
             if data:
-                self.rec.wire.append((tick, d, bytes(data)))
+                self.out.wire(tick, d, bytes(data))
         self._pending = {}
 
     def wants_frame(self, harness: Harness) -> bool:
@@ -101,16 +105,19 @@ class SessionRecorder(Plugin):
         n = harness.frames_shown
         if n % HASH_EVERY == 0 and frame is not None:
             self._flush_wire(harness.ticks)
-            self.rec.hashes.append(ScreenHash(n, harness.ticks, harness.target.time(),
-                                              screen_hash(frame)))
+            self.out.hash(ScreenHash(n, harness.ticks, harness.target.time(),
+                                     screen_hash(frame)))
 
     def finish(self, harness: Harness) -> None:
-        self._flush_wire(harness.ticks)
-        frame = harness.last_frame if harness.last_frame is not None else harness.screen()
-        self.rec.end = ScreenHash(harness.frames_shown, harness.ticks, harness.target.time(),
-                                  screen_hash(frame))
-        self.rec.ticks = harness.ticks
-        write(self.path, self.rec)
+        try:
+            self._flush_wire(harness.ticks)
+            frame = harness.last_frame if harness.last_frame is not None else harness.screen()
+            self.out.finish(ScreenHash(harness.frames_shown, harness.ticks,
+                                       harness.target.time(), screen_hash(frame)),
+                            harness.ticks)
+        except BaseException:  # no recording: the half-written file goes, an older one stays
+            self.out.abandon()
+            raise
         print(f"{harness.options.command}: recorded the session to {self.path} "
-              f"({len(self.rec.events)} input events, {len(self.rec.hashes) + 1} screen "
+              f"({self.out.events} input events, {self.out.hashes + 1} screen "
               f"hashes)", file=sys.stderr)

@@ -4,19 +4,32 @@ device is never opened).  See protocols/tablets/tape.py."""
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from typing import Any
 
 
 def recorded_tape() -> Any:
-    """In a replay: the session's tablet tape (``T`` wire records); else None."""
+    """In a replay: the session's tablet tape (``T`` wire records), read from the recording
+    a window at a time as the polls reach it; else None. A fault reading it again (the file
+    changed, a poll over the budget) ends the tape and is the replay's fault."""
     from camlab88.emulator.harness import replay
+    from camlab88.protocols.session import SessionFileError
     from camlab88.protocols.tablets.tape import Tape
 
     active = replay.active()
     if active is None:
         return None
-    return Tape.from_chunks([data for _t, d, data in active.rec.wire if d == "T"],
-                            "the recording's tablet tape")
+
+    def fault(message: str) -> None:
+        active.fault = active.fault or message
+
+    def records() -> Iterator[bytes]:
+        try:
+            yield from active.rec.tape_records()
+        except SessionFileError as exc:
+            fault(str(exc))
+
+    return Tape(where="the recording's tablet tape", records=records, on_fault=fault)
 
 
 class TapedTablet:

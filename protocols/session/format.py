@@ -84,6 +84,9 @@ class SessionRecording:
     # are not held (the lists above stay empty) but read again from the file, in order
     body: Callable[[], Iterator[tuple[str, Any]]] | None = field(default=None, repr=False,
                                                                  compare=False)
+    # and its tablet tape (``T`` wire records), read again as the replay's polls reach it
+    tape_body: Callable[[], Iterator[bytes]] | None = field(default=None, repr=False,
+                                                            compare=False)
 
     def timeline(self) -> Iterator[tuple[str, Any]]:
         """Events ``("event", (tick, time, event))``, outside input ``("wire", (tick, dir,
@@ -96,32 +99,65 @@ class SessionRecording:
         items += [(h.tick, 2, ("hash", h)) for h in self.hashes]
         return iter([item for _t, _k, item in sorted(items, key=lambda x: (x[0], x[1]))])
 
+    def tape_records(self) -> Iterator[bytes]:
+        """The tablet tape's records (the data of ``T`` wire records) in file order: from
+        the file again for a replay's recording (which keeps none of them), else the list's."""
+        if self.tape_body is not None:
+            return self.tape_body()
+        return iter([data for _t, d, data in self.wire if d == "T"])
+
 
 def _b64(data: bytes) -> str:
     """Binary data: zlib-compressed, then base64 (wire traffic repeats itself a lot)."""
     return base64.b64encode(zlib.compress(data, 9)).decode("ascii")
 
 
-def _records(rec: SessionRecording) -> list[dict[str, Any]]:
+def head_records(argv: list[str], hash_every: int, headless: bool,
+                 files: dict[str, bytes]) -> list[dict[str, Any]]:
+    """The header and the input files' records: what a recording begins with."""
     import hashlib
 
     out: list[dict[str, Any]] = [{"type": "header", "format": FORMAT, "version": VERSION,
-                                  "argv": rec.argv, "headless": rec.headless,
-                                  "hash_every": rec.hash_every}]
+                                  "argv": argv, "headless": headless,
+                                  "hash_every": hash_every}]
     out += [{"type": "file", "name": n, "sha256": hashlib.sha256(d).hexdigest(),
-             "data": _b64(d)} for n, d in rec.files.items()]
+             "data": _b64(d)} for n, d in files.items()]
+    return out
+
+
+# a body record's place among those of its tick: events, then wire, then the screen hash
+EVENT, WIRE, HASH = 0, 1, 2
+
+
+def event_record(tick: int, time: Fraction, event: dict[str, Any]) -> dict[str, Any]:
+    return {"type": "event", "tick": tick, "time": str(time), "event": event}
+
+
+def wire_record(tick: int, direction: str, data: bytes) -> dict[str, Any]:
+    return {"type": "wire", "tick": tick, "dir": direction, "data": _b64(data)}
+
+
+def end_record(end: ScreenHash, ticks: int) -> dict[str, Any]:
+    r = _hash_record("end", end)
+    r["ticks"] = ticks
+    r.pop("tick", None)  # the end's tick is its ticks
+    return r
+
+
+def _records(rec: SessionRecording) -> list[dict[str, Any]]:
+    out = head_records(rec.argv, rec.hash_every, rec.headless, rec.files)
     body: list[tuple[int, int, dict[str, Any]]] = []
-    body += [(t, 0, {"type": "event", "tick": t, "time": str(v), "event": e})
-             for t, v, e in rec.events]
-    body += [(t, 1, {"type": "wire", "tick": t, "dir": d, "data": _b64(b)})
-             for t, d, b in rec.wire]
-    body += [(h.tick, 2, _hash_record("hash", h)) for h in rec.hashes]
+    body += [(t, EVENT, event_record(t, v, e)) for t, v, e in rec.events]
+    body += [(t, WIRE, wire_record(t, d, b)) for t, d, b in rec.wire]
+    body += [(h.tick, HASH, hash_record(h)) for h in rec.hashes]
     out += [r for _, _, r in sorted(body, key=lambda x: (x[0], x[1]))]
     if rec.end is not None:
-        end = _hash_record("end", rec.end)
-        end["ticks"] = rec.ticks
-        out.append(end)
+        out.append(end_record(rec.end, rec.ticks))
     return out
+
+
+def hash_record(h: ScreenHash) -> dict[str, Any]:
+    return _hash_record("hash", h)
 
 
 def _hash_record(kind: str, h: ScreenHash) -> dict[str, Any]:
@@ -129,14 +165,14 @@ def _hash_record(kind: str, h: ScreenHash) -> dict[str, Any]:
     return {"type": kind, key: h.frame, "tick": h.tick, "time": str(h.time), "sha256": h.sha256}
 
 
+def line(record: dict[str, Any]) -> bytes:
+    """One record as the file holds it: compact JSON and a newline."""
+    return json.dumps(record, sort_keys=False, separators=(",", ":")).encode("utf-8") + b"\n"
+
+
 def dumps(rec: SessionRecording) -> str:
     """The recording as text, one JSON record a line."""
-    lines = []
-    for r in _records(rec):
-        if r["type"] == "end":
-            r.pop("tick", None)
-        lines.append(json.dumps(r, sort_keys=False, separators=(",", ":")))
-    return "\n".join(lines) + "\n"
+    return b"".join(line(r) for r in _records(rec)).decode("utf-8")
 
 
 def write(path: str | os.PathLike[str], rec: SessionRecording) -> None:
@@ -166,6 +202,7 @@ def read(path: str | os.PathLike[str], traffic: bool = True) -> SessionRecording
                 rec = parse_stream(stream_lines(fh, name), name, traffic=False)
                 where = os.path.abspath(name)  # the replay runs in a scratch directory
                 rec.body = lambda: _timeline(name, where, stamp)
+                rec.tape_body = lambda: _timeline(name, where, stamp, tape=True)
                 return rec
     except OSError as exc:
         raise SessionFileError(name, 0, 0, f"cannot read: {exc.strerror or exc}") from None
@@ -176,17 +213,19 @@ def _stamp(st: os.stat_result) -> tuple[int, int, int, int]:
     return st.st_dev, st.st_ino, st.st_size, st.st_mtime_ns
 
 
-def _timeline(name: str, where: str, stamp: tuple[int, int, int, int],
-              ) -> Iterator[tuple[str, Any]]:
+def _timeline(name: str, where: str, stamp: tuple[int, int, int, int], tape: bool = False,
+              ) -> Iterator[Any]:
     """A replay's second pass over ``name`` (at ``where``), refused if the file is not the
-    one the first pass checked (replaced or changed since)."""
+    one the first pass checked (replaced or changed since); ``tape``: a pass for the tablet
+    tape's records alone (parse.timeline)."""
     from camlab88.protocols.session.parse import timeline
 
     try:
         with open(where, "rb") as fh:
             if _stamp(os.fstat(fh.fileno())) != stamp:
                 raise SessionFileError(name, 0, 0, "changed while it was replayed")
-            yield from timeline((ln[:-1] if ln.endswith(b"\n") else ln for ln in fh), name)
+            yield from timeline((ln[:-1] if ln.endswith(b"\n") else ln for ln in fh), name,
+                                tape)
     except OSError as exc:
         raise SessionFileError(name, 0, 0, f"cannot read: {exc.strerror or exc}") from None
 

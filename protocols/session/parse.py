@@ -56,8 +56,7 @@ class _Reader:
         # kept; the replay reads them again a window at a time (emulator.harness.replay_window)
         self.window = False
         self.timeline: list[tuple[str, Any]] = []  # the replay pass: what the line held
-        self.hold = True  # keep the files and the tablet tape (the replay pass has them)
-        self.kept = 0  # bytes of what is kept, as the budget counts them
+        self.hold = True  # keep the files (the replay pass has them)
 
     def fail(self, message: str, col: int = 1) -> SessionFileError:
         return SessionFileError(self.name, self.line, col, message)
@@ -156,23 +155,12 @@ class _Reader:
         if self.hold:
             self.rec.files[obj["name"]] = data
 
-    def keep(self, size: int) -> None:
-        """Count a kept record against the budget (only a replay streams: a whole-file
-        read was counted before it began)."""
-        if self.traffic:
-            return
-        self.kept += RECORD_BYTES + size
-        if self.kept > budget.limit():
-            budget.check(f"{self.name}:{self.line}", self.kept, "the tablet tape kept to "
-                         "this line")
-
     def _event(self, obj: dict[str, Any]) -> None:
         tick = self.tick(obj)
         item = (tick, self.timed(tick, obj["time"]), obj["event"])
         if self.window:
             self.timeline.append(("event", item))
             return
-        self.keep(len(str(obj["event"])))
         self.rec.events.append(item)
 
     def timed(self, tick: int, text: str) -> Fraction:
@@ -200,8 +188,9 @@ class _Reader:
         tick = self.tick(obj)
         if self.window and obj["dir"] in "+-":
             self.timeline.append(("wire", (tick, obj["dir"], data)))
-        elif (self.traffic or obj["dir"] not in "<>") and self.hold:
-            self.keep(len(data))
+        elif self.window and obj["dir"] == "T":  # the tape: a pass of its own reads it again
+            self.timeline.append(("tape", data))
+        elif self.traffic:
             self.rec.wire.append((tick, obj["dir"], data))
 
     def _hash(self, obj: dict[str, Any]) -> None:
@@ -249,25 +238,9 @@ def shape(raw: bytes | memoryview) -> tuple[int, int]:
     return shape_of_blocks(view[at:at + _BLOCK] for at in range(0, len(view), _BLOCK))
 
 
-# how the recorder (and a hand, with json.dumps' default separators) writes a tablet tape's
-# record, the one kind of record a replay keeps whole besides the input files
-_TAPE = (b'"dir":"T"', b'"dir": "T"')
-
-
-def shape_of_file(fh: Any) -> tuple[int, int, int]:
-    """(lines, longest line's length, tablet tape records as written) of an open file from
-    where it is, 16 MB at a time. A tape record spelt otherwise (or cut by a block's end)
-    is missed here and counted as it is read (``_Reader.keep``)."""
-    tape = 0
-
-    def blocks() -> Iterator[bytes]:
-        nonlocal tape
-        for block in iter(lambda: fh.read(_BLOCK), b""):
-            tape += sum(block.count(t) for t in _TAPE)
-            yield block
-
-    lines, longest = shape_of_blocks(blocks())
-    return lines, longest, tape
+def shape_of_file(fh: Any) -> tuple[int, int]:
+    """(lines, longest line's length) of an open file from where it is, 16 MB at a time."""
+    return shape_of_blocks(iter(lambda: fh.read(_BLOCK), b""))
 
 
 def shape_of_blocks(blocks: Iterable[bytes | memoryview]) -> tuple[int, int]:
@@ -303,10 +276,8 @@ def stream_lines(fh: Any, name: str) -> Iterator[bytes]:
     """The lines of an open recording, one at a time (no line kept after the next is read),
     after a first pass in blocks has refused a line longer than the budget can decode
     (before any line is read whole)."""
-    _lines, longest, kept = shape_of_file(fh)
-    what = (f"its {kept:,} records a replay keeps" if kept * RECORD_BYTES >= longest * LINE_FACTOR
-            else f"its {longest:,}-byte line")
-    budget.check(name, kept * RECORD_BYTES + longest * LINE_FACTOR, what)
+    _lines, longest = shape_of_file(fh)
+    budget.check(name, longest * LINE_FACTOR, f"its {longest:,}-byte line")
     fh.seek(0)
     for line in fh:
         yield line[:-1] if line.endswith(b"\n") else line
@@ -314,11 +285,10 @@ def stream_lines(fh: Any, name: str) -> Iterator[bytes]:
 
 def parse_stream(lines: Iterable[bytes], name: str, traffic: bool = True) -> SessionRecording:
     """The recording in ``lines``, checked record by record. ``traffic=False`` (a replay's
-    first pass): only the header, the input files, the tablet tape and the end are kept —
-    the program/device traffic (``>``, ``<``), the events, the outside input (``+``, ``-``)
-    and the screen hashes are checked and dropped, so memory does not grow with the
-    recording's length (the replay reads them again a window at a time: ``timeline``);
-    what is kept is counted against the memory budget as it comes."""
+    first pass): only the header, the input files and the end are kept — the program/device
+    traffic (``>``, ``<``), the events, the outside input (``+``, ``-``), the tablet tape
+    (``T``) and the screen hashes are checked and dropped, so memory does not grow with the
+    recording's length (the replay reads them again a window at a time: ``timeline``)."""
     reader = _Reader(name)
     reader.traffic, reader.window = traffic, not traffic
     for _ in _checked(reader, lines):
@@ -326,15 +296,18 @@ def parse_stream(lines: Iterable[bytes], name: str, traffic: bool = True) -> Ses
     return _whole(reader, name)
 
 
-def timeline(lines: Iterable[bytes], name: str) -> Iterator[tuple[str, Any]]:
+def timeline(lines: Iterable[bytes], name: str, tape: bool = False) -> Iterator[Any]:
     """A replay's second pass over a recording its first pass accepted: every event
     ``("event", (tick, time, event))``, outside input ``("wire", (tick, dir, data))`` and
     screen hash ``("hash", ScreenHash)`` in file order, checked again as they come (nothing
-    else kept); a fault raises SessionFileError as the first pass would have."""
+    else kept); a fault raises SessionFileError as the first pass would have. ``tape``: the
+    tablet tape's records' data alone (a pass the replay's tablet reads as its polls go)."""
     reader = _Reader(name)
     reader.traffic, reader.window, reader.hold = False, True, False
     for _ in _checked(reader, lines):
-        yield from reader.timeline
+        for kind, value in reader.timeline:
+            if (kind == "tape") == tape:
+                yield value if tape else (kind, value)
         reader.timeline.clear()
     _whole(reader, name)
 

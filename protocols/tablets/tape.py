@@ -17,7 +17,7 @@ device to open.
 from __future__ import annotations
 
 import json
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import asdict
 from typing import Any
 
@@ -207,14 +207,36 @@ class RecordingSource(TabletSource):
         self.inner.close()
 
 
-class Tape:
-    """A recorded tape, entries by poll, and the replay's poll counter."""
+ENTRY_BYTES = 200  # a held entry (its list, tuple and payload), as the budget counts one
 
-    def __init__(self, entries: list[list[Any]], where: str = "tablet tape") -> None:
+
+class Tape:
+    """A recorded tape and the replay's poll counter. It holds a window of the tape: the
+    entries from the poll it is at to the first entry past it, read from ``records`` (a
+    fresh reading of the tape's ``T`` records, in order, each call) as the polls reach them
+    and dropped once passed, so its memory does not grow with the tape's length.
+    ``on_fault`` hears why it stopped reading (one poll holding more than the memory budget);
+    a tape given as ``entries`` is read from them."""
+
+    # rebuilt, not saved: a loaded state's reading goes on from ``_read`` entries in
+    _state_exclude = ("_records", "_reading", "_pos", "on_fault")
+
+    def __init__(self, entries: list[list[Any]] | None = None, where: str = "tablet tape",
+                 records: Callable[[], Iterator[bytes]] | None = None,
+                 on_fault: Callable[[str], None] | None = None) -> None:
         self.where = where
+        if records is None:
+            held = [json.dumps(check_entries(entries or [], where)).encode()]
+            records = held.__iter__  # a fresh reading each call
+        self._records = records
+        self._reading: Iterator[list[Any]] | None = None
+        self._pos = 0  # entries the reading has given
+        self.on_fault = on_fault
         self.by_poll: dict[int, list[tuple[str, Any]]] = {}
-        for entry in check_entries(entries, where):
-            self.by_poll.setdefault(entry[0], []).append((entry[1], entry[2]))
+        self._read = 0  # entries read so far (a loaded state's fresh reading skips them)
+        self._ahead = -1  # the poll of the last entry read
+        self._held = 0
+        self._ended = False
         self.poll = 0
 
     @classmethod
@@ -242,19 +264,84 @@ class Tape:
                             "{device, top_left: [x, y], bottom_right: [x, y]}") from None
         return device, tuple(corners[0]), tuple(corners[1])
 
+    def here(self) -> list[tuple[str, Any]]:
+        """The entries of the poll the tape is at (those before it dropped)."""
+        self._reach(self.poll)
+        return self.by_poll.get(self.poll, [])
+
     def now(self, kind: str) -> list[Any]:
-        return [p for k, p in self.by_poll.get(self.poll, []) if k == kind]
+        return [p for k, p in self.here() if k == kind]
 
     def first(self, kind: str) -> Any:
-        for poll in sorted(self.by_poll):
-            for k, payload in self.by_poll[poll]:
-                if k == kind:
-                    return payload
-        return None
+        """The first ``kind`` entry's payload, from a reading of its own (the recorder notes
+        the calibration before the first poll: found at once)."""
+        reading = self._entries()
+        try:
+            for entry in reading:
+                if entry[1] == kind:
+                    return entry[2]
+            return None
+        finally:
+            _close(reading)
 
     def opens_now(self) -> dict[str, Any] | None:
         opens = self.now("open")
         return opens[0] if opens else None
+
+    def _entries(self) -> Iterator[list[Any]]:
+        records = self._records()
+        try:
+            for data in records:
+                yield from parse_chunk(data, self.where)
+        finally:
+            _close(records)
+
+    def _reach(self, poll: int) -> None:
+        """Drop the polls before ``poll``; read on until an entry past it (or the end)."""
+        for old in [p for p in self.by_poll if p < poll]:
+            self._held -= len(self.by_poll.pop(old))
+        if self._reading is not None and self._pos > self._read:  # a state loaded: go back
+            _close(self._reading)
+            self._reading = None
+        if self._reading is None and not self._ended:
+            self._reading, self._pos = self._entries(), 0
+        while self._reading is not None and (self._pos < self._read or self._ahead <= poll):
+            entry = next(self._reading, None)
+            if entry is None:
+                self._stop()
+                break
+            self._pos += 1
+            if self._pos <= self._read:  # read before a state was loaded: held there
+                continue
+            self._read += 1
+            self._ahead = entry[0]
+            if entry[0] >= poll:
+                self.by_poll.setdefault(entry[0], []).append((entry[1], entry[2]))
+                self._held += 1
+                self._check()
+
+    def _check(self) -> None:
+        from camlab88.base import budget
+
+        limit = budget.limit()
+        if self._held * ENTRY_BYTES > limit:  # a crafted tape: millions of entries at a poll
+            self._stop()
+            if self.on_fault is not None:
+                self.on_fault(f"{self.where}: poll {self._ahead}: its {self._held:,} entries "
+                              f"and more, held at once, would need more than the memory "
+                              f"budget of {budget.size_text(limit)} (raise it with camlab88 "
+                              f"--budget SIZE or {budget.ENV}=SIZE)")
+
+    def _stop(self) -> None:
+        if self._reading is not None:
+            _close(self._reading)
+        self._reading, self._ended = None, True
+
+
+def _close(reading: Any) -> None:
+    close = getattr(reading, "close", None)
+    if close is not None:
+        close()  # the file, when read from one
 
 
 class TapeSource(TabletSource):
@@ -273,7 +360,7 @@ class TapeSource(TabletSource):
         self._level_time = 0.0
 
     def read(self, timeout: float = 0.0) -> list[TabletEvent]:
-        entries = self.tape.by_poll.get(self.tape.poll, [])
+        entries = self.tape.here()
         events: list[TabletEvent] = []
         for kind, payload in entries:
             if kind == "raw":

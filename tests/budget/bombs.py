@@ -202,3 +202,28 @@ def one_tick_of_events(path: Path, events: int) -> Path:
             fh.write(line * min(10000, events - done))
         fh.write(_END)
     return path
+
+
+def with_empty_reads(src: Path, dst: Path, per_poll: int) -> Path:
+    """The recording ``src`` with ``per_poll`` empty reads (``raw`` entries of no bytes: the
+    decoder is fed nothing, so the screen hashes still agree) at every poll its tablet tape
+    has entries for: a tape as long as a tablet streaming ``per_poll`` times faster, that
+    ``replay --check`` passes."""
+    import base64
+    import json
+    import zlib
+
+    out = []
+    for line in src.read_text().splitlines():
+        obj = json.loads(line)
+        if obj["type"] == "wire" and obj["dir"] == "T":
+            entries = json.loads(zlib.decompress(base64.b64decode(obj["data"])))
+            for poll in sorted({e[0] for e in entries}):
+                entries += [[poll, "raw", ""]] * per_poll
+            entries.sort(key=lambda e: e[0])  # stable: the recorded ones first at a poll
+            data = json.dumps(entries, separators=(",", ":")).encode()
+            obj["data"] = base64.b64encode(zlib.compress(data, 9)).decode("ascii")
+            line = json.dumps(obj, separators=(",", ":"))
+        out.append(line)
+    dst.write_text("\n".join(out) + "\n")
+    return dst

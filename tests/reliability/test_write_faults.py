@@ -90,9 +90,11 @@ def test_a_write_failing_at_the_end_of_a_run_is_one_line(tmp_path: Path, capsys,
         raise OSError(errno.ENOSPC, "No space left on device", str(path))
 
     monkeypatch.setattr(session_format, "write", full)
-    monkeypatch.setattr("camlab88.emulator.harness.session_record.write", full)
+    monkeypatch.setattr("camlab88.protocols.session.writer.SessionWriter.finish",
+                        lambda self, end, ticks: full(self.path, None))
     rec = tmp_path / "r.session"
     code, err = _run(["sigma", "run", "--headless", "--seconds", "0.2", "--record", str(rec)],
                      capsys)
     assert code == 1
     assert err.strip() == f"camlab88 sigma run: {rec}: No space left on device"
+    assert sorted(tmp_path.iterdir()) == []  # no recording, and no temporary file left
