@@ -1,0 +1,88 @@
+"""The editors' save states (emulator.harness.input_log): kas edit, kas path, kas paint, the
+snooker camera tool and the CA actors editor keep the input that made their session and run
+a fresh session again with it. Saved mid-session, loaded, continued: the same frames as the
+unbroken run; a load writes nothing; a log that does not rebuild the saved picture is
+refused in one line."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from camlab88.cli import main
+from camlab88.emulator.machine.state_file import pack, unpack
+from tests.states.support import assert_continues, inputs_of
+
+
+def _kas_edit(d: Path) -> list[str]:
+    inputs_of("tests/data/sessions/kas_edit.session", d)
+    return ["kas", "edit", str(d / "key.kas"), "--script", str(d / "edit_all.txt"),
+            "--headless", "--seed", "1"]
+
+
+def _kas_path(d: Path) -> list[str]:
+    inputs_of("examples/figures/fig-3.6.session", d)
+    return ["kas", "path", str(d / "flag_a.kas"), str(d / "flag_b.kas"), "--out",
+            str(d / "flag_path.kas"), "--no-library", "--headless", "--script",
+            str(d / "fig-3.6.script")]
+
+
+@pytest.mark.parametrize("at", [0.5, 3.0])
+def test_kas_edit_continues_from_a_state(monkeypatch, tmp_path: Path, at: float) -> None:
+    assert_continues(monkeypatch, _kas_edit(tmp_path), at, tmp_path / "e.c88state")
+
+
+def test_kas_edit_starts_from_the_states_keyframe_not_from_file(monkeypatch, tmp_path: Path,
+                                                                capsys) -> None:
+    """FILE is where F2 saves (the command line's): the state keeps the keyframe the session
+    started from, so a FILE saved since (or replaced) changes nothing at a load."""
+    argv = _kas_edit(tmp_path)
+    state = tmp_path / "e.c88state"
+    assert main([*argv, "--save-state", str(state), "--at", "2"]) == 0
+    before = state.read_bytes()
+    (tmp_path / "key.kas").write_text("KAS keyframe 1\nchains 0\nend\n")  # another drawing
+    assert_continues(monkeypatch, argv, 2.0, state)
+    head, _ = unpack(before, "program")
+    assert str(tmp_path / "key.kas") not in json.dumps(head), "the save path is in the state"
+
+
+def test_kas_path_continues_from_a_state(monkeypatch, tmp_path: Path) -> None:
+    assert_continues(monkeypatch, _kas_path(tmp_path), 0.5, tmp_path / "p.c88state")
+
+
+def test_a_load_writes_nothing_while_the_session_runs_again(monkeypatch,
+                                                            tmp_path: Path) -> None:
+    """The session's saves before the state was saved are not made again at a load: the
+    loaded run writes --out once, at its own end (as the unbroken run did after the save)."""
+    from camlab88.apps.kas import files
+
+    argv = _kas_path(tmp_path)
+    state = tmp_path / "p.c88state"
+    seen: list[Path] = []
+    real = files.save_path
+
+    def noting(path, sample) -> None:
+        seen.append(Path(path))
+        real(path, sample)
+
+    monkeypatch.setattr(files, "save_path", noting)
+    assert main([*argv, "--save-state", str(state), "--at", "0.7"]) == 0
+    unbroken, seen[:] = list(seen), []
+    assert main([*argv, "--load-state", str(state)]) == 0
+    assert seen == unbroken == [tmp_path / "flag_path.kas"]
+
+
+def test_a_log_that_does_not_rebuild_the_saved_picture_is_refused(tmp_path: Path,
+                                                                  capsys) -> None:
+    argv = _kas_edit(tmp_path)
+    state = tmp_path / "e.c88state"
+    assert main([*argv, "--save-state", str(state), "--at", "2"]) == 0
+    head, parts = unpack(state.read_bytes(), "program")
+    head["values"]["input"]["events"].append([1, ["key", "x", "x", [], 0, 0, 0, False, []]])
+    state.write_bytes(pack("program", head, parts))
+    with pytest.raises(SystemExit) as stop:
+        main([*argv, "--load-state", str(state)])
+    assert "does not rebuild the saved picture" in str(stop.value)
+    assert str(state) in str(stop.value) and "\n" not in str(stop.value)
