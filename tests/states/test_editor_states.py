@@ -86,3 +86,14 @@ def test_a_log_that_does_not_rebuild_the_saved_picture_is_refused(tmp_path: Path
         main([*argv, "--load-state", str(state)])
     assert "does not rebuild the saved picture" in str(stop.value)
     assert str(state) in str(stop.value) and "\n" not in str(stop.value)
+
+
+def _kas_paint(d: Path) -> list[str]:
+    inputs_of("examples/figures/fig-3.7.session", d)
+    return ["kas", "paint", str(d / "face.kas"), "--headless", "--script",
+            str(d / "fig-3.7.script")]
+
+
+@pytest.mark.parametrize("at", [0.3, 2.0])
+def test_kas_paint_continues_from_a_state(monkeypatch, tmp_path: Path, at: float) -> None:
+    assert_continues(monkeypatch, _kas_paint(tmp_path), at, tmp_path / "k.c88state")
