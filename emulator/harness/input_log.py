@@ -20,11 +20,12 @@ from __future__ import annotations
 
 import hashlib
 from collections.abc import Callable
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
-from camlab88.base.plainstate import Bool, Choice, Int, ListOf, Record, Str, Tuple
+from camlab88.base.plainstate import Bool, Choice, Int, Kind, ListOf, Record, Str, Tuple
 from camlab88.emulator.host_input import HostEvent, KeyDown, KeyUp, PointerButton, PointerMove
 from camlab88.emulator.machine.state_file import MachineStateError
 
@@ -156,3 +157,22 @@ class InputLog:
             if not tick() and t < n - 1:
                 raise MachineStateError(f"the program ends after {t + 1} of the state's "
                                         f"{n} ticks")
+
+
+@dataclass(frozen=True)
+class StartState:
+    """What a program started from, kept in its state (``schema``: a plainstate kind;
+    ``values()`` now; ``load(values)`` starts the fresh program from it instead, before it
+    runs again). ``files``: words of the command line whose files the state stands in for,
+    so their content is left out of the state's identity (the program rewrites them)."""
+
+    schema: Kind
+    values: Callable[[], Any]
+    load: Callable[[Any], None]
+    files: tuple[str, ...] = ()
+
+
+def program_schema(start: Kind) -> Record:
+    """The state of a program with a start (SigmaProgramTarget.give_start,
+    RainbowTarget.keep_input): its input log and its start."""
+    return Record(input=SCHEMA, start=start)

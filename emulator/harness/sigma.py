@@ -4,14 +4,12 @@ line served to outside programs (``sigma run``) is emulator.harness.sigma_line."
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
 
 import numpy as np
 
-from camlab88.base.plainstate import Blob, Int, Kind, Record
+from camlab88.base.plainstate import Blob, Int, Record
 from camlab88.emulator.harness import input_log
 from camlab88.emulator.host_input import HostEvent
 from camlab88.emulator.machine import SigmaMachine
@@ -158,14 +156,14 @@ class SigmaProgramTarget:
     # load runs a fresh session again with it, the program's writes held back
     STATE_VERSION = 1
     STATE_SCHEMA: Any = input_log.SCHEMA
-    start: StartState | None = None
+    start: input_log.StartState | None = None
 
     def picture(self) -> str:
         return input_log.picture_hash(self.frame(), self.run.machine.save_state())
 
-    def give_start(self, start: StartState) -> None:
+    def give_start(self, start: input_log.StartState) -> None:
         self.start = start
-        self.STATE_SCHEMA = program_schema(start.schema)
+        self.STATE_SCHEMA = input_log.program_schema(start.schema)
         self.state_holds_files = start.files
 
     def state_values(self) -> dict[str, Any]:
@@ -189,24 +187,6 @@ class SigmaProgramTarget:
         finally:
             front.rebuilding = False
         self._sent_at = len(self.session.sent)  # a recording starts from here
-
-
-@dataclass(frozen=True)
-class StartState:
-    """What a program started from, kept in its state (``schema``: a plainstate kind;
-    ``values()`` now; ``load(values)`` starts the fresh program from it instead, before it
-    runs again). ``files``: words of the command line whose files the state stands in for,
-    so their content is left out of the state's identity (the program rewrites them)."""
-
-    schema: Kind
-    values: Callable[[], Any]
-    load: Callable[[Any], None]
-    files: tuple[str, ...] = ()
-
-
-def program_schema(start: Kind) -> Record:
-    """A Sigma program session's state with a start (SigmaProgramTarget.give_start)."""
-    return Record(input=input_log.SCHEMA, start=start)
 
     def wire(self) -> list[tuple[str, bytes]]:
         """The program's bytes to the terminal since the last call, and the tablet tape's

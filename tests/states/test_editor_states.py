@@ -13,7 +13,7 @@ import pytest
 
 from camlab88.cli import main
 from camlab88.emulator.machine.state_file import pack, unpack
-from tests.states.support import assert_continues, inputs_of
+from tests.states.support import assert_continues, frame_logs, inputs_of, saved_place
 
 
 def _kas_edit(d: Path) -> list[str]:
@@ -97,3 +97,57 @@ def _kas_paint(d: Path) -> list[str]:
 @pytest.mark.parametrize("at", [0.3, 2.0])
 def test_kas_paint_continues_from_a_state(monkeypatch, tmp_path: Path, at: float) -> None:
     assert_continues(monkeypatch, _kas_paint(tmp_path), at, tmp_path / "k.c88state")
+
+
+CAMERA = Path(__file__).resolve().parents[1] / "data" / "snooker_camera"
+CAMERA_EVENTS = ("wait 10\nkey down\nkey down\ntype veiw\nwait 10\nmove 210 550\npress left\n"
+                 "release left\nwait 10\nkey down\ntype xx\nwait 10\n")
+
+
+def _camera(d: Path) -> list[str]:
+    import shutil
+
+    shutil.copy(CAMERA / "thesis_example.ccl", d / "cam.ccl")
+    (d / "ev.txt").write_text(CAMERA_EVENTS)
+    return ["snooker", "camera", str(d / "cam.ccl"), str(CAMERA / "pink_shot.checkpoint"),
+            "--events", str(d / "ev.txt"), "--headless"]
+
+
+@pytest.mark.parametrize("at", [0.1, 0.5])
+def test_the_camera_tool_continues_from_a_state(monkeypatch, tmp_path: Path,
+                                                at: float) -> None:
+    assert_continues(monkeypatch, _camera(tmp_path), at, tmp_path / "c.c88state")
+
+
+def test_the_camera_tool_rebuilds_from_the_texts_it_read_not_the_disk(
+        monkeypatch, tmp_path: Path) -> None:
+    """Another editor saved SCRIPT during the session: the state keeps the text the tool
+    read then and the text it started from; a load reads neither from the disk (which
+    holds something else by then)."""
+    import os
+
+    from camlab88.emulator.harness import plugins
+    from camlab88.emulator.harness.loop import Plugin
+
+    argv = _camera(tmp_path)
+    script = tmp_path / "cam.ccl"
+
+    class Editor(Plugin):  # another editor saves the script while the tool runs
+        def post_tick(self, harness) -> None:
+            if harness.ticks == 5 and harness.options.state.load is None:
+                script.write_text(":focal length of 300\n")
+                os.utime(script, ns=(1, 3))
+
+    real = plugins.standard_plugins
+    monkeypatch.setattr(plugins, "standard_plugins", lambda o: [*real(o), Editor()])
+    state = tmp_path / "c.c88state"
+    with frame_logs(monkeypatch) as runs:
+        assert main([*argv, "--save-state", str(state), "--at", "0.4"]) == 0
+        head, _ = unpack(state.read_bytes(), "program")
+        assert [t for _, t in head["values"]["input"]["texts"]] == [":focal length of 300\n"]
+        script.write_text("garbage that would not interpret\n")  # neither text is on disk
+        assert main([*argv, "--load-state", str(state)]) == 0
+    full, rest = runs
+    k = saved_place(state)[1]
+    assert rest.pop("ticks") and full.pop("ticks")
+    assert {n: h for n, h in full.items() if n > k} == rest

@@ -62,7 +62,7 @@ def run_front(front, args: argparse.Namespace, command: str, keys: str,
               prepared=None, start=None):
     """Run a KAS program on an emulated T5684 over the line, on the harness: from a script
     and/or a window.  Returns the run (the session and its machine).  ``start``: what the
-    program started from, kept in its save state (emulator.harness.sigma.StartState)."""
+    program started from, kept in its save state (emulator.harness.input_log.StartState)."""
     from camlab88.apps.kas.program.layout import TABLET_AREA
     from camlab88.apps.kas.program.script import Session
     from camlab88.emulator.harness import run

@@ -124,7 +124,7 @@ START = Opt(Str(1 << 24))
 def _start_state(front, start, over, args: argparse.Namespace, save):
     from camlab88.apps.kas import files
     from camlab88.apps.kas.editor import Editor
-    from camlab88.emulator.harness.sigma import StartState
+    from camlab88.emulator.harness.input_log import StartState
 
     text = files.keyframe_text(start) if start is not None else None
 
