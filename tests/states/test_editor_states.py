@@ -151,3 +151,44 @@ def test_the_camera_tool_rebuilds_from_the_texts_it_read_not_the_disk(
     k = saved_place(state)[1]
     assert rest.pop("ticks") and full.pop("ticks")
     assert {n: h for n, h in full.items() if n > k} == rest
+
+
+ACTORS_EVENTS = ("wait 5\nkey tab\nwait 3\nclick left 32 472\nwait 3\nclick left 128 400\n"
+                 "wait 3\nkey s\nwait 5\nclick left 96 300\nwait 3\nclick left 64 250\n"
+                 "wait 5\n")
+
+
+def _actors(d: Path) -> list[str]:
+    (d / "m.actors").write_text("rules maze\nactor 1 wall\n  colour 9 9 9\n  box 1 1 1\nend\n",
+                                encoding="utf-8")
+    (d / "e.events").write_text(ACTORS_EVENTS)
+    return ["ca", "actors", str(d / "m.actors"), "--headless", "--events", str(d / "e.events")]
+
+
+@pytest.mark.parametrize("at", [0.1, 0.4])
+def test_the_actors_editor_continues_from_a_state(monkeypatch, tmp_path: Path,
+                                                  at: float) -> None:
+    """Saved before and after its own save (key s) rewrote FILE: a load starts from the
+    FILE the session began with, kept in the state, and its save writes nothing then."""
+    argv = _actors(tmp_path)
+    path = tmp_path / "m.actors"
+    first = path.read_text()
+    assert_continues(monkeypatch, argv, at, tmp_path / "a.c88state")
+    assert path.read_text() != first  # the runs saved FILE (rewritten: not what began them)
+
+
+def test_the_actors_editors_save_is_not_made_again_at_a_load(monkeypatch,
+                                                             tmp_path: Path) -> None:
+    from camlab88.apps.actors.editor import program
+
+    argv = _actors(tmp_path)
+    state = tmp_path / "a.c88state"
+    writes: list[str] = []
+    real = program.write_actors
+    monkeypatch.setattr(program, "write_actors",
+                        lambda path, s: (writes.append(str(path)), real(path, s)))
+    assert main([*argv, "--save-state", str(state), "--at", "0.4"]) == 0
+    assert writes == [str(tmp_path / "m.actors")]  # key s, before the state was saved
+    writes.clear()
+    assert main([*argv, "--load-state", str(state)]) == 0
+    assert writes == []
