@@ -21,6 +21,7 @@ from camlab88.emulator.rainbow.memory import VideoMemory
 from camlab88.protocols.rainbow.script import Player
 
 FPS = 50  # the Rainbow's display frames per second
+INPUT_STATE_VERSION = 1  # the state of a program kept by its input (keep_input)
 
 
 class RainbowTarget:
@@ -67,7 +68,7 @@ class RainbowTarget:
         after."""
         self._kept = (start, rebuilding)
         self._feed = feed
-        self.STATE_VERSION = 1
+        self.STATE_VERSION = INPUT_STATE_VERSION
         self.STATE_SCHEMA = input_log.SCHEMA if start is None else \
             input_log.program_schema(start.schema)
         self.snapshots_by_graph = True  # F4 in memory: rebuilding runs from the start
