@@ -16,6 +16,7 @@ from camlab88.emulator.machine import SigmaMachine
 from camlab88.emulator.machine.state_file import MachineStateError
 
 TICK = Fraction(1, 100)  # a program session's polling period: line time between polls
+MAX_PERIOD = 1 << 40  # a line test's periods (a year of 25 fps is < 2**30)
 
 
 class SigmaSessionRun:
@@ -242,17 +243,30 @@ class PeriodTarget:
         return self.k / self._period
 
     # its declared state (program_state): the period reached and the machine's own
-    # versioned state; the program's generator is made again and run to that period
-    STATE_VERSION = 1
-    STATE_SCHEMA = Record(k=Int(0), machine=Blob())
+    # versioned state; the program's generator is made again and run to that period.
+    # Version 2: the period is ``period`` (version 1 called it ``k``) and bounded, so a
+    # state cannot ask for more periods than a run could reach (migrate_state reads 1)
+    STATE_VERSION = 2
+    STATE_SCHEMA = Record(period=Int(0, MAX_PERIOD), machine=Blob())
 
     def state_values(self) -> dict[str, Any]:
         if self.result is not None:
             raise MachineStateError("the line test has finished: nothing left to save")
-        return {"k": self.k, "machine": self.machine.save_state()}
+        return {"period": self.k, "machine": self.machine.save_state()}
+
+    @staticmethod
+    def migrate_state(version: int, values: Any) -> Any:
+        """An older version's values (JSON, not yet checked) as this version's: 1 -> 2
+        renames ``k`` to ``period`` (the schema then checks its new bound)."""
+        if version == 1:
+            if not isinstance(values, dict) or set(values) != {"k", "machine"}:
+                raise MachineStateError("state (version 1): its fields are not k and "
+                                        "machine")
+            return {"period": values["k"], "machine": values["machine"]}
+        raise MachineStateError(f"no migration from version {version}")
 
     def load_state_values(self, values: dict[str, Any]) -> None:
-        k, state = values["k"], values["machine"]
+        k, state = values["period"], values["machine"]
         self.machine.check_state(state)  # refused here: nothing has run
         at_start = self.k == 0 and self.result is None
         if at_start or (self.restart is None and k >= self.k and self.result is None):
