@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from camlab88.cli import main
@@ -192,3 +193,40 @@ def test_the_actors_editors_save_is_not_made_again_at_a_load(monkeypatch,
     writes.clear()
     assert main([*argv, "--load-state", str(state)]) == 0
     assert writes == []
+
+
+def test_a_live_tablet_session_is_not_saved() -> None:
+    """Its reports are not in the log (they come from the device, not the window)."""
+    from types import SimpleNamespace
+
+    from camlab88.emulator.harness.sigma import SigmaProgramTarget
+    from camlab88.emulator.machine.state_file import MachineStateError
+
+    session = SimpleNamespace(pointer_source=SimpleNamespace(live=True))
+    target = SigmaProgramTarget(SimpleNamespace(session=session), "t", "", frozenset(), [],
+                                True)
+    with pytest.raises(MachineStateError, match="a live tablet's input is not kept"):
+        target.state_values()
+
+
+def test_an_editor_loads_a_state_into_a_fresh_run_only() -> None:
+    from camlab88.emulator.harness.input_log import InputLog, picture_hash
+    from camlab88.emulator.machine.state_file import MachineStateError
+
+    log = InputLog()
+    log.ticked()
+    values = InputLog().values(picture_hash(np.zeros((2, 2, 3), np.uint8)))
+    with pytest.raises(MachineStateError, match="fresh run only"):
+        log.rebuild(values, lambda e: None, lambda: True, lambda: True, lambda: "")
+
+
+def test_a_log_out_of_tick_order_is_refused() -> None:
+    from camlab88.emulator.harness.input_log import InputLog
+    from camlab88.emulator.machine.state_file import MachineStateError
+
+    key = ["key", "a", "a", [], 0, 0, 0, False, []]
+    for events in ([[3, key], [1, key]], [[5, key]]):
+        values = {"ticks": 5, "events": events, "texts": [], "picture": ""}
+        with pytest.raises(MachineStateError, match="not in tick order"):
+            InputLog().rebuild(values, lambda e: None, lambda: True, lambda: True,
+                               lambda: "")
