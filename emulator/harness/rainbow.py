@@ -56,6 +56,8 @@ class RainbowTarget:
             self.program = program
             self.STATE_VERSION = program.STATE_VERSION
             self.STATE_SCHEMA = target_schema(program.STATE_SCHEMA)
+            if hasattr(program, "migrate_state"):  # it reads its older versions
+                self.migrate_state = self._migrate_program
 
     # ------------------------------------------------------------------ declared state
     def keep_input(self, start: input_log.StartState | None = None,
@@ -96,6 +98,16 @@ class RainbowTarget:
             self.script.played(), self.script.wait)
         return {"rainbow": rainbow_state(self.session), "script": script,
                 "buttons": self.host.buttons, "program": self.program.state_values()}
+
+    def _migrate_program(self, version: int, values: Any) -> Any:
+        """An older version's values (JSON, unchecked): the program migrates its own part."""
+        if not isinstance(values, dict) or "program" not in values:
+            raise MachineStateError(f"state (version {version}): it holds no program part")
+        try:
+            return dict(values, program=self.program.migrate_state(version,
+                                                                    values["program"]))
+        except ValueError as exc:
+            raise MachineStateError(f"state (version {version}): {exc}") from None
 
     def _input_values(self) -> dict[str, Any]:
         if self.tablet is not None:

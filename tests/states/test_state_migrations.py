@@ -77,3 +77,21 @@ def test_a_version_without_a_migration_is_refused_naming_both(tmp_path: Path,
     with pytest.raises(SystemExit) as stop:
         main([*ARGV, "--load-state", str(path)])
     assert f"version {version}" in str(stop.value) and "version 2" in str(stop.value)
+
+
+def test_a_ca_program_state_of_version_1_loads_without_a_dialogue(tmp_path: Path) -> None:
+    """ca program's version 2 added the dialogue in progress; a version-1 state (which could
+    not be saved in one) reads as having none."""
+    events = tmp_path / "e.events"
+    events.write_text("frames 3\nclick right 300 300\nframes 6\n")
+    argv = ["ca", "program", "--headless", "--pattern", "glider", "--events", str(events)]
+    state = tmp_path / "c.c88state"
+    assert main([*argv, "--save-state", str(state), "--at", "0.1"]) == 0
+    head, parts = unpack(state.read_bytes(), "program")
+    assert head["state_version"] == 2 and head["values"]["program"].pop("dialogue") is None
+    state.write_bytes(pack("program", dict(head, state_version=1), parts))
+    assert main([*argv, "--load-state", str(state)]) == 0
+    head["values"]["program"] = ["not", "a", "mapping"]
+    state.write_bytes(pack("program", dict(head, state_version=1), parts))
+    with pytest.raises(SystemExit, match="its program part is not a version-1 mapping"):
+        main([*argv, "--load-state", str(state)])
