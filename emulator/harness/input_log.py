@@ -29,7 +29,9 @@ from camlab88.base.plainstate import Bool, Choice, Int, Kind, ListOf, Record, St
 from camlab88.emulator.host_input import HostEvent, KeyDown, KeyUp, PointerButton, PointerMove
 from camlab88.emulator.machine.state_file import MachineStateError
 
-MAX_TICKS = 1 << 40
+# a load runs every tick again: its time is bounded by this (about 11 h of a Sigma
+# session's line time, 23 h of a Rainbow's; a longer session saves no state)
+MAX_TICKS = 1 << 22
 MODS = ("shift", "ctrl", "alt", "meta")
 _XY = Int(-(1 << 20), 1 << 20)
 # (kind, key, char, mods, x, y, button, pressed, buttons held): one shape for every kind
@@ -106,6 +108,9 @@ class InputLog:
     # ------------------------------------------------------------------ state
     def values(self, picture: str) -> dict[str, Any]:
         """``picture``: picture_hash() now."""
+        if self.ticks > MAX_TICKS:
+            raise MachineStateError(f"the session is longer than the {MAX_TICKS} ticks a "
+                                    "state runs again at a load")
         return {"ticks": self.ticks, "events": list(self.events), "texts": list(self.texts),
                 "picture": picture}
 

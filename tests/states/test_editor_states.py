@@ -230,3 +230,14 @@ def test_a_log_out_of_tick_order_is_refused() -> None:
         with pytest.raises(MachineStateError, match="not in tick order"):
             InputLog().rebuild(values, lambda e: None, lambda: True, lambda: True,
                                lambda: "")
+
+
+def test_a_log_claims_at_most_max_ticks() -> None:
+    """A load runs every tick again: the count a state may claim is bounded."""
+    from camlab88.base.plainstate import StateValueError, decode
+    from camlab88.emulator.harness.input_log import MAX_TICKS, SCHEMA
+
+    values = {"ticks": MAX_TICKS + 1, "events": [], "texts": [], "picture": ""}
+    with pytest.raises(StateValueError, match="state.ticks"):
+        decode(SCHEMA, values, {})
+    assert decode(SCHEMA, dict(values, ticks=MAX_TICKS), {})["ticks"] == MAX_TICKS
