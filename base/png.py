@@ -29,14 +29,23 @@ def png_bytes(frame: np.ndarray) -> bytes:
 
 
 def write_png(frame: np.ndarray, path: str | os.PathLike[str]) -> Path:
-    """Write ``frame`` (row 0 = top) as PNG at ``path``, atomically, creating its directory."""
+    """Write ``frame`` (row 0 = top) as PNG at ``path``, atomically. Its directory is never
+    created (the one output rule, docs/exit_status.md): a missing one is an OSError whose
+    words are the rule's (``no such directory D``, ``F is a file in the way ...``)."""
     from camlab88.base.atomicfile import write_atomic
 
     data = png_bytes(frame)
     target = Path(path)
-    target.parent.mkdir(parents=True, exist_ok=True)
     write_atomic(target, data)
     return target
+
+
+def write_frame(frame: np.ndarray, directory: str | os.PathLike[str], k: int) -> Path:
+    """``frame`` as ``DIR/frame_NNNNN.png`` (``--frames DIR``): DIR is made if it is new,
+    one level only — its parent must exist, as the command checked before the work."""
+    folder = Path(directory)
+    folder.mkdir(exist_ok=True)
+    return write_png(frame, frame_path(folder, k))
 
 
 def frame_path(directory: str | os.PathLike[str], k: int) -> Path:

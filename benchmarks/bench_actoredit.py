@@ -19,7 +19,7 @@ from camlab88.apps.actors.editor.program import PREVIEW_EVERY, ActorEditor
 from camlab88.apps.actors.editor.quantise import quantise
 from camlab88.apps.actors.model import read_actors
 from camlab88.apps.actors.preview import turntable
-from camlab88.emulator.rainbow.session import in_process
+from camlab88.emulator.machine import RainbowMachine
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CHESS = os.path.join(ROOT, "examples", "ca", "chess.actors")
@@ -47,7 +47,7 @@ def main() -> None:
 
         path = os.path.join(tmp, "chess.actors")
         shutil.copy(CHESS, path)
-        session = in_process()
+        session = RainbowMachine()
         ed = ActorEditor(session.client, path, [CellType(1, "form 1", (0, 255, 0))], "life")
         ts = times(ed.frame, 8 * PREVIEW_EVERY)
         new = [t for i, t in enumerate(ts) if i % PREVIEW_EVERY == 0][1:]

@@ -25,7 +25,7 @@ from camlab88.apps.snooker.camera.motion import Motion
 from camlab88.apps.snooker.camera.views import View
 from camlab88.apps.snooker.camera_tool.tool import CameraTool
 from camlab88.apps.snooker.visualiser.program import Visualiser
-from camlab88.emulator.rainbow.session import in_process
+from camlab88.emulator.machine import RainbowMachine
 from camlab88.protocols.rainbow.events import KeyEvent
 
 DATA = Path(__file__).resolve().parents[1] / "tests" / "data" / "snooker_camera"
@@ -88,7 +88,7 @@ def bench_interpreter() -> None:
 def bench_visualiser(views: list[View], m: Motion, what: str, device_frames: int) -> None:
     fps, cpu = [], []
     for _ in range(3):
-        rb = in_process()
+        rb = RainbowMachine()
         vis = Visualiser(rb.client, m, views)
         vis.draw()
         rb.client.wait_frame()  # first picture (and any compilation) outside the timing
@@ -111,14 +111,14 @@ def bench_edit() -> None:
     with tempfile.TemporaryDirectory() as tmp:
         script = Path(tmp) / "cam.ccl"
         shutil.copy(DATA / "thesis_example.ccl", script)
-        rb = in_process()
+        rb = RainbowMachine()
         tool = CameraTool(rb.client, m, script)
         tool.step()
         tool.buf.place(4, 16)  # "focal length of 50": edit the 50
         first, both = [], []
         for k in range(20):
-            rb.inject(KeyEvent(0, "backspace", "", True))
-            rb.inject(KeyEvent(0, str(k % 10), str(k % 10), True))
+            rb.post(KeyEvent(0, "backspace", "", True))
+            rb.post(KeyEvent(0, str(k % 10), str(k % 10), True))
             t0 = time.perf_counter()
             for e in rb.client.poll_events():
                 tool.handle(e)

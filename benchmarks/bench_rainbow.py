@@ -11,9 +11,9 @@ import statistics
 import numpy as np
 from _bench import rate, times
 
+from camlab88.emulator.machine import RainbowMachine
 from camlab88.emulator.rainbow import Rainbow
 from camlab88.emulator.rainbow.compiler import Compiler
-from camlab88.emulator.rainbow.session import in_process
 
 
 def scene(n: int, seed: int = 0) -> tuple[Rainbow, list[int]]:
@@ -81,7 +81,7 @@ def fps_lines() -> list[str]:
     out.append(f"- 64 pads moving every frame, device API (compile + scan-out): "
                f"**{fps:.0f} frames/s**")
     # the same through the client API and command stream, in process
-    s = in_process()
+    s = RainbowMachine()
     c = s.client
     rng = np.random.default_rng(3)
     c.set_lut(0, [tuple(int(v) for v in rng.integers(0, 256, 3)) for _ in range(4096)])

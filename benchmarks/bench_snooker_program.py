@@ -17,7 +17,7 @@ from camlab88.apps.snooker.layout import break_off_direction
 from camlab88.apps.snooker.program.demo import break_session
 from camlab88.apps.snooker.program.program import Program
 from camlab88.apps.snooker.table import CUE
-from camlab88.emulator.rainbow.session import in_process
+from camlab88.emulator.machine import RainbowMachine
 from camlab88.protocols.rainbow.events import MouseEvent
 
 REPEATS = 5
@@ -35,7 +35,7 @@ def _fps(setup, frames: int) -> float:
 
 def simulating_break():
     """The break simulated live: a time frame every second display frame, balls redrawn."""
-    rb = in_process()
+    rb = RainbowMachine()
     p = Program(rb.client)
     ux, uy = break_off_direction(p.session.table, p.session.balls)
     p.session.set_velocity(CUE, 7 * ux, 7 * uy)
@@ -46,7 +46,7 @@ def simulating_break():
 
 def stepping_frames():
     """Alter a different frame: a new frame every display frame, velocity arrows drawn."""
-    rb = in_process()
+    rb = RainbowMachine()
     p = Program(rb.client, break_session(7.0))
     p.session.goto_time_frame(0)
     p.mode = "alter"
@@ -60,7 +60,7 @@ def stepping_frames():
 
 def replaying():
     """Replay: every time frame shown for two display frames."""
-    rb = in_process()
+    rb = RainbowMachine()
     s = break_session(7.0)
     p = Program(rb.client, s)
     frames = s.timeline.time_frames
@@ -74,12 +74,12 @@ def replaying():
 
 def cursor_moving():
     """Idle, the mouse moving every frame over the table (cursor pad moves, selection)."""
-    rb = in_process()
+    rb = RainbowMachine()
     p = Program(rb.client)
 
     def run(n: int) -> None:
         for i in range(n):
-            rb.inject(MouseEvent(0, 100 + (i * 7) % 560, 150 + (i * 3) % 300, 0))
+            rb.post(MouseEvent(0, 100 + (i * 7) % 560, 150 + (i * 3) % 300, 0))
             p.step()
     return run
 

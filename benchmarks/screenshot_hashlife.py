@@ -19,7 +19,7 @@ from tests.ca_program.driver import Driver
 def main(path: str) -> None:
     d = Driver(Options(pattern="gosper_gun"))
     d.leave_editing()
-    d.program.main_menu = MainMenu(d.session.client, jumps=True)  # the wiring asked for
+    d.program.main_menu = MainMenu(d.machine.client, jumps=True)  # the wiring asked for
     d.program.main_menu.mark("Step mode")
     d.program._start(stepping.go_to_generation(d.program))
     d.type("100000")

@@ -40,15 +40,15 @@ def open_tablet(command: str, text: str | None, opts: RunOptions) -> Any:
     return tablet
 
 
-def feed_tablet(command: str, tablet: Any, session: Any) -> None:
-    """The tablet's new reports to the device's tablet input; a lost tablet is reported once
-    and closed (not read again: its tape keeps what it said)."""
+def feed_tablet(command: str, tablet: Any, machine: Any) -> None:
+    """The tablet's new reports to the tablet input of ``machine`` (a RainbowMachine); a
+    lost tablet is reported once and closed (not read again: its tape keeps what it said)."""
     from camlab88.emulator.rainbow.host_input import tablet_event
     from camlab88.protocols.tablets.sources import SourceLost
 
     try:
         for ev in tablet.read(0.0):
-            session.inject(tablet_event(ev))
+            machine.post(tablet_event(ev))
     except (SourceLost, OSError) as exc:
         print(f"{command}: tablet lost ({exc}); carrying on without it", file=sys.stderr)
         tablet.close()

@@ -62,13 +62,13 @@ def checked_argv(argv: list[str]) -> list[str]:
         raise ReplayRefused(f"the command line is longer than {MAX_WORDS} words of at most "
                             f"{MAX_WORD} characters")
     words = cli.normalise_argv(argv)
-    key = tuple(words[:2])
+    key = _command_words(words[:2])  # an area that is one command (demo) is one word
     sub = cli.command_parser(cli.build_parser(words), key)
     table = None if sub is None else program_options(sub)
     if table is None:
         raise ReplayRefused(f"'{' '.join(words[:2])}' is not a program a replay runs "
                             f"(only: {', '.join(' '.join(k) for k in programs())})")
-    out = list(key) + _options(words[2:], table, sub, " ".join(key))
+    out = list(key) + _options(words[len(key):], table, sub, " ".join(key))
     _parse(cli, out)
     return out
 
@@ -84,17 +84,27 @@ def program_options(sub: argparse.ArgumentParser) -> dict[str, str] | None:
             for flag in action.option_strings}
 
 
-def programs() -> dict[tuple[str, str], dict[str, str]]:
+def programs() -> dict[tuple[str, ...], dict[str, str]]:
     """Every program a replay runs, with program_options (builds every parser)."""
     from camlab88 import cli
 
-    out = {}
+    out: dict[tuple[str, ...], dict[str, str]] = {}
     for area, area_parser in _choices(cli.build_parser()).items():
-        for action, sub in _choices(area_parser).items():
+        actions = _choices(area_parser) or {"": area_parser}  # demo: the area is the command
+        for action, sub in actions.items():
             table = program_options(sub)
             if table is not None:
-                out[(area, action)] = table
+                out[(area, action) if action else (area,)] = table
     return out
+
+
+def _command_words(words: list[str]) -> tuple[str, ...]:
+    """The words of ``words`` that name the command: an area and its action, or an area
+    that is one command (``demo``) alone."""
+    from camlab88 import cli
+
+    area = cli.command_parser(cli.build_parser(words), words[:1])
+    return tuple(words[:2]) if _choices(area) else tuple(words[:1])
 
 
 def _choices(parser: argparse.ArgumentParser) -> dict[str, argparse.ArgumentParser]:

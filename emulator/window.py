@@ -72,9 +72,11 @@ class Window:
         self._pg: Any = pygame
         self.size = (int(width), int(height))
         self.scale = int(scale)
-        self.zoom = float(self.scale)  # window pixels per device pixel (less where it must fit)
         pygame.display.init()
-        window_size = (self.size[0] * self.scale, self.size[1] * self.scale)
+        # fitted from the start: a window opened larger than the screen is placed partly
+        # off it (SDL centres it at a negative position; there is no window manager to help)
+        self.zoom = fit_zoom(self.size, self.scale, self._screen())  # window px / device px
+        window_size = (round(self.size[0] * self.zoom), round(self.size[1] * self.zoom))
         self.surface = pygame.display.set_mode(window_size)
         pygame.display.set_caption(title)
         self.caption = title

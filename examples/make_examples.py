@@ -354,7 +354,8 @@ WALKER_ACTORS = """\
 # footprint tile, the walls (1) low hedges. Units are cells; z is up. Legs and arms swing
 # about the hip and the shoulder (`swing PIVOT_Z DEGREES PERIOD PHASE`), left and right half
 # a period apart; `phase individual` gives every walker its own clock (from where and when
-# it was born), so two runners do not walk in step.
+# it was born), so two runners do not walk in step. Its front is its own -y (feet and nose
+# point that way); `face glide` turns it to face the way it walks.
 rules maze
 
 actor 1 hedge
@@ -368,11 +369,15 @@ actor 2 walker
   material ambient 0.3 diffuse 0.8 specular 0.3 shininess 20
   box 0.12 0.14 0.42 at -0.09 0 0 swing 0.44 30 16 0
   box 0.12 0.14 0.42 at 0.09 0 0 swing 0.44 30 16 0.5
+  extrude -0.06 -0.17 0.06 -0.17 0.06 0.07 -0.06 0.07 height 0.06 at -0.09 0 0 swing 0.44 30 16 0
+  extrude -0.06 -0.17 0.06 -0.17 0.06 0.07 -0.06 0.07 height 0.06 at 0.09 0 0 swing 0.44 30 16 0.5
   box 0.34 0.2 0.36 at 0 0 0.42
   box 0.08 0.1 0.34 at -0.23 0 0.44 swing 0.78 25 16 0.5
   box 0.08 0.1 0.34 at 0.23 0 0.44 swing 0.78 25 16 0
   sphere 0.12 at 0 0 0.8
+  sphere 0.035 at 0 -0.11 0.88
   phase individual
+  face glide
 end
 """
 

@@ -31,14 +31,14 @@ def _copy(target: str, *paths: Path) -> None:
 
 
 def _rainbow() -> None:
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
     from camlab88.protocols.rainbow.stream import encode
 
     _put("rainbow-scene", "small.json", '{"lut": [[0, "#000000"], [1, "#ff0000"]], "nodes": '
          '{"c": {"type": "cluster", "width": 64, "height": 32}, "p": {"type": "pad", "width": '
          '16, "height": 8, "depth": 1, "fill": 1}}, "arcs": [{"parent": "screen", "child": "c", '
          '"x": 5, "y": 6}, {"parent": "c", "child": "p", "priority": 1}]}')
-    rb = in_process(record=True)
+    rb = RainbowMachine(record=True)
     c = rb.client
     pad = c.create_pad(32, 16, 4)
     c.map(0, pad, 10, 20)
@@ -47,8 +47,8 @@ def _rainbow() -> None:
     c.text(pad, 1, 1, "hi", 1)
     c.wait_frame()
     (CORPUS / "rainbow-recording").mkdir(parents=True, exist_ok=True)
-    rb.recorder.recording.save(CORPUS / "rainbow-recording" / "session.rec")
-    frames = b"".join(d for kind, d in rb.recorder.recording.entries if kind == ">")
+    rb.recording.save(CORPUS / "rainbow-recording" / "session.rec")
+    frames = b"".join(d for kind, d in rb.recording.entries if kind == ">")
     _put("rainbow-stream", "session.bin", frames)
     _put("rainbow-stream", "hello.bin", encode("hello"))
 
@@ -229,16 +229,15 @@ def _states() -> None:
     """A Sigma machine with a stream half taken, and a CA program's whole state."""
     from camlab88.apps.ca.program.program import CAProgram, Options
     from camlab88.base.plainstate import encode
-    from camlab88.emulator.machine import SigmaMachine
+    from camlab88.emulator.machine import RainbowMachine, SigmaMachine
     from camlab88.emulator.machine.state_file import pack
-    from camlab88.emulator.rainbow.session import in_process
     from camlab88.protocols.sigma.demo import sigma_animation_stream
 
     machine = SigmaMachine("t5684")
     machine.host.write(sigma_animation_stream()[:400])
     machine.run_until(0.2)
     _put("machine-state", "sigma_mid_stream.state", machine.save_state())
-    program = CAProgram(in_process().client, Options(pattern="glider"))
+    program = CAProgram(RainbowMachine().client, Options(pattern="glider"))
     program.frame()
     parts: dict[str, bytes] = {}
     values = encode(program.STATE_SCHEMA, program.state_values(), parts)

@@ -237,7 +237,8 @@ def _session_error() -> type[BaseException]:
 
 def _session(data: bytes) -> object:
     """Both ways a recording is read: whole, and streamed as a replay reads it (the two
-    must agree on what they refuse)."""
+    must agree on what they refuse, and the replay's second reading give the events,
+    outside input and hashes the whole read holds)."""
     from camlab88.protocols.session.format import SessionFileError, read
 
     def both(path: str) -> object:
@@ -249,7 +250,13 @@ def _session(data: bytes) -> object:
             except SessionFileError:
                 raise exc from None
             raise AssertionError("the streamed read took what the whole read refused") from None
-        return whole, read(path, traffic=False)
+        streamed = read(path, traffic=False)
+        again = list(streamed.timeline())
+        for kind, held in (("event", whole.events), ("hash", whole.hashes),
+                           ("wire", [w for w in whole.wire if w[1] in "+-"])):
+            if [v for k, v in again if k == kind] != held:
+                raise AssertionError(f"the replay's reading differs from the whole in {kind}s")
+        return whole, streamed
 
     return _via_file(data, both, ".session")
 
@@ -309,9 +316,9 @@ def _program_state(data: bytes) -> object:
 
     if not _PROGRAMS:
         from camlab88.apps.ca.program.program import CAProgram, Options
-        from camlab88.emulator.rainbow.session import in_process
+        from camlab88.emulator.machine import RainbowMachine
 
-        _PROGRAMS.append(CAProgram(in_process().client, Options(pattern="glider")))
+        _PROGRAMS.append(CAProgram(RainbowMachine().client, Options(pattern="glider")))
     program = _PROGRAMS[0]
     head, parts = unpack(data, "program")
     values = decode(program.STATE_SCHEMA, head.get("values"), parts)

@@ -11,16 +11,24 @@ from tests.support import mutations
 
 # Ledgers whose rows all bite or say they are untested (see unproven_rows); every ledger
 # joins as its rows are mutation-checked or re-verdicted.
-ENFORCED: tuple[str, ...] = ()
+ENFORCED: tuple[str, ...] = ("ca", "ca_actors", "link", "rainbow", "tablets")
 
 
 def _cells(line: str) -> list[str]:
     return [c.strip() for c in line.strip().strip("|").split("|")]
 
 
+def _claims(status: str) -> bool:
+    """A status cell claiming a source: it says thesis or documented, or is docs/fidelity/
+    ca.md's abbreviation D ("documented in the thesis"), alone or qualified: "D (idea) /
+    R (method)"."""
+    return "thesis" in status or "documented" in status or status == "d" \
+        or status.startswith(("d ", "d("))
+
+
 def claiming_rows(stem: str) -> list[str]:
     """The ledger's table rows that claim agreement with a source: a ``status`` column saying
-    thesis or documented, or a ``verdict`` column beginning "agrees"."""
+    thesis or documented (or D), or a ``verdict`` column beginning "agrees"."""
     lines = (mutations.ROOT / mutations.ledger_of(stem)).read_text(encoding="utf-8") \
         .splitlines()
     out, column, kind = [], None, ""
@@ -37,8 +45,7 @@ def claiming_rows(stem: str) -> list[str]:
             continue
         cells = _cells(line)
         cell = cells[column].lower() if column < len(cells) else ""
-        claims = ("thesis" in cell or "documented" in cell) if kind == "status" \
-            else cell.startswith("agrees")
+        claims = _claims(cell) if kind == "status" else cell.startswith("agrees")
         if claims and "untested" not in cell:
             out.append(line)
     return out
@@ -75,6 +82,13 @@ def test_every_row_claiming_agreement_bites_or_says_untested() -> None:
     for stem in ENFORCED:
         assert unproven_rows(stem) == [], f"{mutations.ledger_of(stem)}: rows claiming " \
             "agreement with no caught mutation (add one, or re-verdict the row 'untested')"
+
+
+def test_the_ca_ledgers_abbreviation_d_claims_the_thesis() -> None:
+    rows = claiming_rows("ca")
+    assert any(r.startswith("| Life rules |") for r in rows)  # D
+    assert any(r.startswith("| Sparse representation") for r in rows)  # D (idea) / R (method)
+    assert not any(r.startswith("| Over-grazing Life |") for r in rows)  # R
 
 
 def test_the_report_keeps_other_ledgers_sections_when_one_is_rerun() -> None:

@@ -28,6 +28,7 @@ STREAM = str(ROOT / "examples" / "sigma" / "pgplot_goc.sig")
 SCENE = str(ROOT / "examples" / "rainbow" / "scene.json")
 CHECKPOINT = str(ROOT / "tests" / "data" / "snooker_camera" / "pink_shot.checkpoint")
 CCL = str(ROOT / "tests" / "data" / "snooker_camera" / "thesis_example.ccl")
+RECORDING = str(ROOT / "examples" / "figures" / "fig-3.1.session")
 LINE_REC = "camlab88-link-recording 1\nline 9600 8N1\nxonxoff on\n0.010000 > 48\nend 1\n"
 
 # command: (argv writing {OUT}, an extension it writes, one that names no format it writes
@@ -59,6 +60,17 @@ OUTPUTS: dict[str, tuple[list[str], str, str | None, bool]] = {
     "ca convert": (["ca", "convert", "glider", "{OUT}"], ".rle", ".txt", False),
     "ca film": (["ca", "film", "life", "glider", "--generations", "1", "--size", "16x16",
                  "--out", "{OUT}"], ".gif", ".avi", False),
+    "demo --out": (["demo", "--headless", "--only", "ca", "--out", "{OUT}"], "", None, True),
+    "kas plot --pdf": (["kas", "plot", "sun.kas", "--pdf", "{OUT}"], "", None, True),
+    "kas plot --svg": (["kas", "plot", "sun.kas", "--svg", "{OUT}"], "", None, True),
+    "replay --frames": (["replay", RECORDING, "--headless", "--frames", "{OUT}"], "", None,
+                        True),
+    "rainbow replay --screenshot": (["rainbow", "replay", "empty.rbrec", "--headless",
+                                     "--screenshot", "{OUT}"], ".png", ".jpg", False),
+    "replay --html DIR": (["replay", RECORDING, "--html", "{OUT}"], "", None, True),
+    "figures --html": (["figures", "--html", "{OUT}", "3.1"], "", None, True),
+    "replay --screenshot": (["replay", RECORDING, "--headless", "--screenshot", "{OUT}"],
+                            ".png", ".jpg", False),
 }
 
 
@@ -75,6 +87,7 @@ def _inputs(tmp_path: Path, name: str) -> None:
     (tmp_path / "plain").write_text("a file, not a directory\n")
     (tmp_path / "line.rec").write_text(LINE_REC)
     (tmp_path / "e.views").write_text("")
+    (tmp_path / "empty.rbrec").write_text("# camlab88 rainbow recording v1\n")
     if name == "kas export":
         (tmp_path / "sun.kas").write_text(_sequence(tmp_path))
 
@@ -184,3 +197,29 @@ def test_a_fifo_with_a_reader_is_written(tmp_path: Path) -> None:
     _out, err = child.communicate(timeout=120)
     assert child.returncode == 0, err
     assert data.startswith(b"\x89PNG")
+
+
+def test_the_png_writer_makes_no_directory(tmp_path: Path) -> None:
+    """base.png.write_png made every missing directory of its path; now the rule's words."""
+    import numpy as np
+
+    from camlab88.base.png import write_png
+
+    with pytest.raises(OSError) as refused:
+        write_png(np.zeros((2, 2, 3), np.uint8), tmp_path / "nowhere" / "deeper" / "x.png")
+    assert f"no such directory {tmp_path / 'nowhere' / 'deeper'}" in str(refused.value)
+    assert not (tmp_path / "nowhere").exists()
+
+
+def test_a_new_directory_output_is_made_one_level(tmp_path: Path, capsys) -> None:
+    """What the rule allows is still done: DIR itself is made when its parent exists."""
+    assert main(["kas", "inbetween", "sun_a", "sun_b", "--frames", "3", "--out",
+                 str(tmp_path / "seq.kas")]) == 0
+    assert main(["kas", "plot", str(tmp_path / "seq.kas"), "--pdf",
+                 str(tmp_path / "plots")]) == 0
+    assert (tmp_path / "plots" / "sequence.pdf").read_bytes().startswith(b"%PDF")
+    done = _run(tmp_path, ["replay", RECORDING, "--headless", "--frames", "frames",
+                           "--screenshot", "last.png"])
+    assert done.returncode == 0, done.stderr
+    assert (tmp_path / "frames" / "frame_00000.png").is_file()
+    assert (tmp_path / "last.png").read_bytes().startswith(b"\x89PNG")

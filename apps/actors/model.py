@@ -22,6 +22,7 @@ from camlab88.base.textinput import InputError, read_text
 KINDS = ("lathe", "box", "sphere", "extrude")
 CYCLE_KINDS = ("bob", "turn")
 PHASES = ("together", "individual")
+FACES = ("fixed", "glide")
 MAX_STATE = 255
 MAX_ACTORS = 256
 MAX_PARTS = 64
@@ -98,6 +99,9 @@ class Actor:
     # "together": every actor of the state moves in step (one clock, the film's);
     # "individual": each actor its own phase, from the cell and generation it was born in
     phase: str = "together"
+    # "fixed": as modelled, whichever way it moves; "glide": it turns to face the way it
+    # glides (its own -y forward) and keeps facing it while it stands
+    face: str = "fixed"
 
 
 @dataclass(frozen=True)
@@ -150,6 +154,8 @@ def _actor_lines(a: Actor) -> list[str]:
     lines += [f"  {c.kind} {_num(c.amount)} {c.period}" for c in a.cycles]
     if a.phase != "together":
         lines.append(f"  phase {a.phase}")
+    if a.face != "fixed":
+        lines.append(f"  face {a.face}")
     return lines + ["end"]
 
 
@@ -325,6 +331,7 @@ class _Draft:
     parts: list[Part] = field(default_factory=list)
     cycles: list[Cycle] = field(default_factory=list)
     phase: str = "together"
+    face: str = "fixed"
 
     def finish(self, ln: _Line) -> Actor:
         if self.colour is None:
@@ -333,7 +340,17 @@ class _Draft:
             raise ln.error(f"actor {self.state} {self.name!r} has no parts "
                            f"({', '.join(KINDS)})", ln.key_col)
         return Actor(self.state, self.name, self.colour, self.material or DEFAULT_MATERIAL,
-                     tuple(self.parts), tuple(self.cycles), self.phase)
+                     tuple(self.parts), tuple(self.cycles), self.phase, self.face)
+
+
+def _choice(ln: _Line, key: str, words: tuple[str, ...]) -> str:
+    """The line's one word after ``key``, one of ``words`` (an error points at it)."""
+    col = ln.words[ln.i][0] if ln.more() else ln.end_col
+    word = ln.word(" or ".join(repr(w) for w in words))
+    if word not in words:
+        raise ln.error(f"{key} {word[:40]!r}: expected {' or '.join(words)}", col)
+    ln.done()
+    return word
 
 
 def _actor_line(d: _Draft, ln: _Line, key: str) -> None:
@@ -353,13 +370,12 @@ def _actor_line(d: _Draft, ln: _Line, key: str) -> None:
                               ln.integer(f"{key} period (frames)", 1, MAX_PERIOD)))
         ln.done()
     elif key == "phase":
-        d.phase = ln.word("'together' or 'individual'")
-        if d.phase not in PHASES:
-            raise ln.error(f"phase {d.phase[:40]!r}: expected {' or '.join(PHASES)}")
-        ln.done()
+        d.phase = _choice(ln, key, PHASES)
+    elif key == "face":
+        d.face = _choice(ln, key, FACES)
     else:
         raise ln.error(f"unknown keyword {key[:40]!r} in an actor (expected colour, material, "
-                       f"{', '.join(KINDS)}, {', '.join(CYCLE_KINDS)}, phase or end)",
+                       f"{', '.join(KINDS)}, {', '.join(CYCLE_KINDS)}, phase, face or end)",
                        ln.key_col)
 
 

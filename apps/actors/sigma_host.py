@@ -19,6 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from camlab88.apps.actors.render import BACKGROUND, BOARD, linear_colour
+from camlab88.apps.snooker.render.gamma import GAMMA
 from camlab88.apps.snooker.render.palette import SIZE, Palette
 from camlab88.apps.snooker.render.runs import RunWriter
 from camlab88.protocols.sigma import Encoder
@@ -36,10 +37,22 @@ def _ramp(albedo: np.ndarray, n: int, top: float) -> list[np.ndarray]:
     return list(albedo[None, :] * np.geomspace(0.03, top, n)[:, None])
 
 
+def _board_ramp(albedo: np.ndarray, n: int, top: float) -> list[np.ndarray]:
+    """The board square's shades, dark to lit, evenly spaced in drive level (gamma-encoded)
+    rather than in ratio: a geometric ramp spent its levels in the dark and left steps of
+    ~17 drive levels where the light squares are lit, seen as faint contour rings."""
+    drive = np.linspace((0.03 / top) ** (1 / GAMMA), 1.0, n)
+    return list(albedo[None, :] * (top * drive ** GAMMA)[:, None])
+
+
 def _glossy(albedo: np.ndarray, top: float) -> list[np.ndarray]:
     """The board under a light's specular highlight: lit shades with white added (without
-    them the highlight's pale disc was matched to the actors' greys)."""
-    return [albedo * g + s for g in np.geomspace(0.2, top, GLOSS_SHADES) for s in GLOSS]
+    them the highlight's pale disc was matched to the actors' greys). The shades are where
+    the board is lit, 0.4 to 1 of ``top``, evenly spaced in drive level: spread in ratio
+    from 0.2 of it, two of eight fell where the light squares are, and the steps between
+    showed as faint contours across them."""
+    lit = top * np.linspace(0.4 ** (1 / GAMMA), 1.0, GLOSS_SHADES) ** GAMMA
+    return [albedo * g + s for g in lit for s in GLOSS]
 
 
 def _whiten(lit: np.ndarray, n: int) -> list[np.ndarray]:
@@ -52,7 +65,7 @@ def fixed_palette(actor_colours: list[tuple[int, int, int]],
     """256 linear colours for a film whose brightest lit albedo is ``top`` times itself."""
     entries: list[np.ndarray] = [BACKGROUND]
     for f in BOARD:  # the light's fall-off across the board: steps too coarse show as rings
-        entries += _ramp(f, BOARD_LEVELS, top) + _glossy(f, top)
+        entries += _board_ramp(f, BOARD_LEVELS, top) + _glossy(f, top)
     for f in (linear_colour(c) for c in tile_colours):
         entries += _ramp(f, 10, top)
     per = max(8, (SIZE - len(entries)) // max(len(actor_colours), 1) - 4)

@@ -19,7 +19,7 @@ import numpy as np
 from camlab88.apps.actors.model import ActorSet, format_actors
 from camlab88.apps.actors.render import Look, Shot, Stage, render_frame
 from camlab88.apps.cafilm.camera import GenerationViews
-from camlab88.apps.cafilm.motion import change, lineage, posed
+from camlab88.apps.cafilm.motion import change, facing, lineage, posed
 from camlab88.apps.cafilm.timeline import Timeline
 from camlab88.apps.snooker.render.lights import Lights
 
@@ -67,7 +67,9 @@ def stage_at(film: CaFilm, frame: int) -> tuple[Stage, Shot]:
     ch = change(gens[g], gens[min(g + 1, len(gens) - 1)], film.glide)
     individual = any(a.phase == "individual" for a in film.actors.actors.values())
     born = lineage(list(gens), g, film.glide) if individual else None
-    placed, cells = posed(ch, u, film.actors, frame - 1, born, g)
+    turning = any(a.face == "glide" for a in film.actors.actors.values())
+    faces = facing(list(gens), g, film.glide) if turning else None
+    placed, cells = posed(ch, u, film.actors, frame - 1, born, g, faces)
     grey = (128, 128, 128)
     tiles = tuple((c, r, film.tile_colours.get(s, grey)) for c, r, s in cells)
     stage = Stage(film.actors, film.timeline.floor, film.lights, placed, tiles)

@@ -23,6 +23,13 @@ clock, n + a shift from the cell and generation it was born in (``lineage``: an 
 gliding on keeps its birth, so its clock never jumps), so a crowd of walkers does not march
 in step (thesis 8.1: "each actor undergoing its own independent motion").
 
+An actor that ``face`` s ``glide`` turns to face the way it moves (``heading``: its own -y,
+the side the default camera sees, along the glide): during a glide it turns from the
+heading it had (0, as modelled, before its first glide) through the smaller angle, in the
+glide's first half, and keeps the new heading while it stands (``facing``: a glide carries
+the heading on). An actor born beside a death of its own state (a maze runner splitting at
+a junction) is born facing away from that cell.
+
 A state without an actor is a tile on the board, shown as the earlier generation's until
 the phase reaches one half, then as the later's.
 """
@@ -112,6 +119,48 @@ def clock_shift(birth: Birth) -> int:
     return (h & 0x7FFFFFFF) % SHIFT_FRAMES
 
 
+def heading(frm: Cell, to: Cell) -> float:
+    """Degrees about z that turn an actor's front (its own -y) from ``frm`` toward ``to``:
+    0 down the rows (the world's -Y), 90 along the columns (+X), 180 up the rows."""
+    return math.degrees(math.atan2(to[0] - frm[0], to[1] - frm[1]))
+
+
+def parents(ch: Change) -> dict[Cell, Cell]:
+    """Each birth's parent: the nearest cell of its state that died (gliding on or not), at
+    most one cell away; ties as the glides' pairing (orthogonal first, then row, col)."""
+    died = [(c, s) for c, s in ch.deaths] + [(c0, s) for c0, _c1, s in ch.glides]
+    out = {}
+    for bc, bs in ch.births:
+        near = [((dc[0] - bc[0]) ** 2 + (dc[1] - bc[1]) ** 2, dc[1], dc[0], dc)
+                for dc, ds in died
+                if ds == bs and max(abs(dc[0] - bc[0]), abs(dc[1] - bc[1])) == 1]
+        if near:
+            out[bc] = min(near)[3]
+    return out
+
+
+def facing(gens: list[Generation], g: int, glide: frozenset[int] | None = None
+           ) -> dict[Cell, float]:
+    """The heading of each living cell of generation ``g`` that has glided or was born
+    beside a parent (``heading``; a cell that stays keeps its own; absent: 0)."""
+    faces: dict[Cell, float] = {}
+    for k in range(min(g, len(gens) - 1)):
+        ch = change(gens[k], gens[k + 1], glide)
+        nxt = {c: faces[c] for c, _ in ch.stays if c in faces}
+        for c0, c1, _ in ch.glides:
+            nxt[c1] = heading(c0, c1)
+        for c, p in parents(ch).items():
+            nxt[c] = heading(p, c)
+        faces = nxt
+    return faces
+
+
+def _turning(h0: float, h1: float, u: float) -> float:
+    """From heading h0 to h1 through the smaller angle, done by the glide's half way."""
+    delta = (h1 - h0 + 180.0) % 360.0 - 180.0
+    return h0 + delta * smoothstep(2.0 * u)
+
+
 def cycle_pose(cycles: tuple[Cycle, ...], frame: float) -> tuple[float, float]:
     """(turn degrees, lift cells) of an actor's own motion at film frame ``frame``."""
     turn = lift = 0.0
@@ -125,20 +174,26 @@ def cycle_pose(cycles: tuple[Cycle, ...], frame: float) -> tuple[float, float]:
 
 def posed(ch: Change, u: float, actors: ActorSet, frame: int,
           born: dict[Cell, Birth] | None = None, g: int = 0,
+          faces: dict[Cell, float] | None = None,
           ) -> tuple[tuple[Placed, ...], tuple[tuple[int, int, int], ...]]:
     """(actors placed, tile cells (col, row, state)) at phase ``u`` of the change from
     generation ``g``; ``born``: ``lineage`` of generation g (needed only by actors whose
-    phase is individual; without it each is born where it stands at g)."""
+    phase is individual; without it each is born where it stands at g); ``faces``:
+    ``facing`` of generation g (needed only by actors that face their glide)."""
     e = smoothstep(u)
     have = actors.actors
     born = born or {}
+    faces = faces or {}
     placed: list[Placed] = []
     tiles: list[tuple[int, int, int]] = []
 
-    def put(state: int, col: float, row: float, scale: float, birth: Birth) -> None:
+    def put(state: int, col: float, row: float, scale: float, birth: Birth,
+            head: float = 0.0) -> None:
         a = have[state]
         clock = frame + (clock_shift(birth) if a.phase == "individual" else 0)
         turn, lift = cycle_pose(a.cycles, clock)
+        if a.face == "glide":
+            turn += head
         placed.append(Placed(state, col, row, scale, turn, lift, clock))
 
     def was(cell: Cell) -> Birth:
@@ -146,24 +201,28 @@ def posed(ch: Change, u: float, actors: ActorSet, frame: int,
 
     for (col, row), s in ch.stays:
         if s in have:
-            put(s, col, row, 1.0, was((col, row)))
+            put(s, col, row, 1.0, was((col, row)), faces.get((col, row), 0.0))
         else:
             tiles.append((col, row, s))
     for (col, row), s in ch.deaths:
         if s in have:
             if e < 1.0:
-                put(s, col, row, 1.0 - e, was((col, row)))
+                put(s, col, row, 1.0 - e, was((col, row)), faces.get((col, row), 0.0))
         elif u < 0.5:
             tiles.append((col, row, s))
+    mother = parents(ch)
     for (col, row), s in ch.births:
         if s in have:
             if e > 0.0:
-                put(s, col, row, e, ((col, row), g + 1))
+                p = mother.get((col, row))
+                put(s, col, row, e, ((col, row), g + 1),
+                    heading(p, (col, row)) if p is not None else 0.0)
         elif u >= 0.5:
             tiles.append((col, row, s))
     for (c0, r0), (c1, r1), s in ch.glides:
         if s in have:
-            put(s, c0 + (c1 - c0) * e, r0 + (r1 - r0) * e, 1.0, was((c0, r0)))
+            put(s, c0 + (c1 - c0) * e, r0 + (r1 - r0) * e, 1.0, was((c0, r0)),
+                _turning(faces.get((c0, r0), 0.0), heading((c0, r0), (c1, r1)), u))
         else:
             tiles.append((c0, r0, s) if u < 0.5 else (c1, r1, s))
     return tuple(placed), tuple(tiles)

@@ -224,7 +224,7 @@ def plot_sequence(seq: AnimSequence, out_dir: str | os.PathLike[str], fmt: str,
                   progress: Callable[[int, int], None] | None = None) -> list[Path]:
     """Write frame_NNNN.hpgl / .svg files, or one sequence.pdf, into ``out_dir``."""
     out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
+    out.mkdir(exist_ok=True)  # one level: its parent must exist (the one output rule)
     if fmt == "pdf":
         target = out / "sequence.pdf"
         write_atomic(target, pdf(seq.frames, size))

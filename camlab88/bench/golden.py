@@ -32,7 +32,8 @@ def compare_golden(screen: np.ndarray, path: Path, regen: bool) -> None:
     from camlab88.base.png import write_png
 
     frame = np.ascontiguousarray(screen, dtype=np.uint8)
-    if regen:
+    if regen:  # the golden directory (checked by golden_path) is made, nothing else
+        path.parent.mkdir(parents=True, exist_ok=True)
         write_png(frame, path)
         return
     if not path.exists():

@@ -126,7 +126,7 @@ def write(out: Path, capture: Any, text: PageText, video: Path) -> list[Path]:
     if single_file(out):
         write_atomic(out, render(capture, text, video, inline=True).encode("utf-8"))
         return [out]
-    out.mkdir(parents=True, exist_ok=True)
+    out.mkdir(exist_ok=True)  # one level: its parent was checked (the one output rule)
     moved = out / f"session{video.suffix}"
     write_atomic(moved, video.read_bytes())
     page = out / PAGE

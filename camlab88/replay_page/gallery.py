@@ -71,7 +71,7 @@ def build(out: Path, figures: list[Any], recording: Any, codec: str = "h264") ->
     from camlab88.replay_page.make import make_page
     from camlab88.replay_policy import ReplayRefused
 
-    out.mkdir(parents=True, exist_ok=True)
+    out.mkdir(exist_ok=True)  # one level: its parent was checked (the one output rule)
     entries = []
     for fig in figures:
         path = recording(fig.number)

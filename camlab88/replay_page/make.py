@@ -49,7 +49,8 @@ def make_page(rec: Any, recording: Path, out: Path, codec: str = "h264", check: 
         ctx = Replay(rec, headless=True, check=check, capture=capture)
         status, said = rerun(ctx)
         made = Made(status, said, ctx, capture.data)
-        if status != 0 or ctx.runs == 0 or ctx.mismatch is not None or not video.is_file():
+        if (status != 0 or ctx.runs == 0 or ctx.mismatch is not None or ctx.fault is not None
+                or not video.is_file()):
             return made
         program = " ".join(rec.argv)
         device = capture.data.device or DEVICE_OF.get(rec.argv[0], "?")

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from camlab88.base.png import frame_path, write_png
+from camlab88.base.png import frame_path, write_frame
 from camlab88.emulator.harness.loop import Plugin
 from camlab88.emulator.harness.written import tell_written
 
@@ -33,7 +33,7 @@ class InspectOut(Plugin):
     def on_frame(self, harness: Harness, frame: np.ndarray) -> None:
         path = frame_path(self.directory, self.count)
         try:
-            write_png(self._panel(frame), path)
+            write_frame(self._panel(frame), self.directory, self.count)
         except OSError as exc:
             raise SystemExit(f"{harness.options.command}: cannot write {path}: "
                              f"{exc.strerror or exc}") from None

@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from camlab88.base.png import frame_path, write_png
+from camlab88.base.png import frame_path, write_frame, write_png
 from camlab88.emulator.harness.loop import Plugin, RunOptions
 from camlab88.emulator.harness.written import tell_written
 
@@ -28,7 +28,7 @@ class FrameWriter(Plugin):
     def on_frame(self, harness: Harness, frame: np.ndarray) -> None:
         path = frame_path(self.directory, self.count)
         with _named_errors(harness, path):
-            write_png(frame, path)
+            write_frame(frame, self.directory, self.count)
         self.count += 1
 
     def finish(self, harness: Harness) -> None:

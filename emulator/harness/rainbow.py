@@ -1,4 +1,4 @@
-"""The harness target for a program on an in-process Rainbow (snooker, CA, the Rainbow demo,
+"""The harness target for a program on a Rainbow machine (snooker, CA, the Rainbow demo,
 and new Rainbow programs).  One tick = one program step, normally one 1/50 s display frame.
 """
 
@@ -13,11 +13,9 @@ import numpy as np
 from camlab88.base.plainstate import Blob, Int, Opt, Record, Tuple
 from camlab88.emulator.harness import input_log
 from camlab88.emulator.host_input import HostEvent
-from camlab88.emulator.machine.state_file import MachineStateError, pack, unpack
-from camlab88.emulator.rainbow.device import Rainbow
-from camlab88.emulator.rainbow.errors import RainbowError
+from camlab88.emulator.machine import RainbowMachine
+from camlab88.emulator.machine.state_file import MachineStateError
 from camlab88.emulator.rainbow.host_input import RainbowHostInput
-from camlab88.emulator.rainbow.memory import VideoMemory
 from camlab88.protocols.rainbow.script import Player
 
 FPS = 50  # the Rainbow's display frames per second
@@ -35,10 +33,10 @@ class RainbowTarget:
     escape_is_a_key = False  # True where the program reads Esc itself (the harness: quit)
     _state_exclude = ("on_input",)  # a replay's listener: kept as set, never saved
 
-    def __init__(self, session: Any, step: Callable[[], bool], title: str, keys: str,
+    def __init__(self, machine: RainbowMachine, step: Callable[[], bool], title: str, keys: str,
                  script: Player | None = None, end_with_script: bool = True,
                  status: Callable[[], str] | None = None, program: Any = None) -> None:
-        self.session = session
+        self.machine = machine
         self.step = step
         self.title = title
         self.keys = keys
@@ -87,16 +85,17 @@ class RainbowTarget:
         self.may_close = asked
 
     def picture(self) -> str:
-        return input_log.picture_hash(self.frame(), rainbow_state(self.session))
+        return input_log.picture_hash(self.frame(), self.machine.session_state())
 
     def state_values(self) -> dict[str, Any]:
-        """The Rainbow and its client (rainbow_state), the script's place, the window's
-        mouse buttons and the program's own declared state (or keep_input's log)."""
+        """The Rainbow and its client (RainbowMachine.session_state), the script's place,
+        the window's mouse buttons and the program's own declared state (or keep_input's
+        log)."""
         if self._kept is not None:
             return self._input_values()
         script = None if self.script is None else (
             self.script.played(), self.script.wait)
-        return {"rainbow": rainbow_state(self.session), "script": script,
+        return {"rainbow": self.machine.session_state(), "script": script,
                 "buttons": self.host.buttons, "program": self.program.state_values()}
 
     def _migrate_program(self, version: int, values: Any) -> Any:
@@ -132,7 +131,7 @@ class RainbowTarget:
         finally:
             if rebuilding is not None:
                 rebuilding(False)
-        rec = getattr(self.session.recorder, "recording", None)
+        rec = self.machine.recording
         self._wire_at = len(rec.entries) if rec is not None else 0  # a recording from here
 
     def load_state_values(self, values: dict[str, Any]) -> None:
@@ -141,7 +140,7 @@ class RainbowTarget:
         if self._kept is not None:
             self._load_input(values)
             return
-        put_rainbow = check_rainbow_state(self.session, values["rainbow"])
+        put_rainbow = self.machine.check_session_state(values["rainbow"])
         script = values["script"]
         if (script is None) != (self.script is None) or (
                 script is not None and not self.script.can_resume(*script)):
@@ -158,14 +157,14 @@ class RainbowTarget:
         self.log.given(events)
         if self.script is not None and not self.script.finished:
             for e in self.script.due():
-                self.session.inject(e)
+                self.machine.post(e)
                 if self.on_input is not None and not self.log.rebuilding:
                     self.on_input(e)
             return  # the window's input counts once the script has played
         for ev in events:
             dev = self.host.convert(ev)
             if dev is not None:
-                self.session.inject(dev)
+                self.machine.post(dev)
 
     def tick(self) -> bool:
         alive = bool(self.step())
@@ -174,15 +173,14 @@ class RainbowTarget:
         return alive and not ended
 
     def frame(self) -> np.ndarray:
-        last = self.session.executor.last_frame
-        return last if last is not None else self.session.device.peek()
+        return self.machine.shown()
 
     def time(self) -> Fraction:
-        return Fraction(self.session.device.frame_count, FPS)
+        return Fraction(self.machine.frame_count, FPS)
 
     def wire(self) -> list[tuple[str, bytes]]:
-        """The command stream since the last call (sessions made with ``record=True``)."""
-        rec = getattr(self.session.recorder, "recording", None)
+        """The command stream since the last call (a machine made with ``record=True``)."""
+        rec = self.machine.recording
         if rec is None:
             return []
         new = rec.entries[self._wire_at:]
@@ -199,37 +197,3 @@ def target_schema(program: Any) -> Record:
     the --events script's place, the window's mouse buttons and the program's own."""
     return Record(rainbow=Blob(), script=Opt(Tuple((Int(0), Int(0)))), buttons=Int(0, 7),
                   program=program)
-
-
-# ---------------------------------------------------------------------------- the Rainbow
-def rainbow_state(session: Any) -> bytes:
-    """The Rainbow of an in-process session as its own versioned state (like
-    RainbowMachine.save_state): the device's parts, the client's ids and calls."""
-    head, blobs = session.device.save_state()
-    c = session.client
-    head["client"] = [c._next_node, c._next_arc, c.calls]
-    return pack("rainbow-session", head, blobs)
-
-
-def check_rainbow_state(session: Any, data: bytes) -> Callable[[], None]:
-    """MachineStateError unless ``data`` (rainbow_state()) loads into ``session``: loaded
-    into a scratch device first; returns what puts it into the session's own device."""
-    head, blobs = unpack(data, "rainbow-session")
-    device = session.device
-    try:
-        scratch = Rainbow(VideoMemory(device.memory.width, device.memory.height))
-        scratch.load_state(head, blobs)
-        client = head["client"]
-        if not (isinstance(client, list) and len(client) == 3 and
-                all(type(v) is int and 0 <= v < 1 << 31 for v in client)):
-            raise ValueError(f"client ids {str(client)[:40]} are damaged")
-    except (ValueError, KeyError, TypeError, IndexError, RainbowError) as exc:
-        raise MachineStateError(f"Rainbow state: {str(exc)[:200]}") from None
-
-    def put() -> None:
-        device.load_state(head, blobs)
-        c = session.client
-        c._next_node, c._next_arc, c.calls = client
-        session.executor.last_frame = None  # composed again from the device
-        session.executor.decoder = type(session.executor.decoder)()
-    return put

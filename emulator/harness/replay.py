@@ -22,6 +22,7 @@ import numpy as np
 from camlab88.emulator.harness import codec
 from camlab88.emulator.harness.control_options import Controls
 from camlab88.emulator.harness.loop import Plugin, RunOptions
+from camlab88.emulator.harness.replay_window import RecordWindow
 from camlab88.emulator.harness.session_record import screen_hash
 from camlab88.emulator.host_input import HostEvent, Quit
 from camlab88.protocols.session import ScreenHash, SessionRecording
@@ -73,6 +74,7 @@ class Replay:
     seeking: bool = False   # a seek's first run: it stops at the seek time, not the end
     wrote: list[str] = field(default_factory=list)  # what the run's writers named (written.py)
     capture: Plugin | None = None  # --html: gathers the web page's video, events and orders
+    fault: str | None = None  # the recording could not be read again (RecordWindow.fault)
 
     def adjust(self, options: RunOptions) -> None:
         options.headless = self.headless
@@ -85,7 +87,8 @@ class Replay:
 
     def plugins(self) -> list[Plugin]:
         extra = [self.capture] if self.capture is not None else []
-        return [RecordedInput(self), HashCheck(self), *extra]
+        window = RecordWindow(self.rec, self.check)  # one reading of it for each run
+        return [RecordedInput(self, window), HashCheck(self, window), *extra]
 
 
 _ACTIVE: ContextVar[Replay | None] = ContextVar("camlab88_replay", default=None)
@@ -107,52 +110,63 @@ def replaying(replay: Replay) -> Iterator[Replay]:
 
 class RecordedInput(Plugin):
     """The recording's events at their ticks instead of the window's (a window close still
-    stops the replay); outside wire bytes back to the target; stop at the recorded end."""
+    stops the replay); outside wire bytes back to the target; stop at the recorded end.
+    Both come from a RecordWindow: the recording is read as the run goes, not held."""
 
-    def __init__(self, replay: Replay) -> None:
+    def __init__(self, replay: Replay, window: RecordWindow) -> None:
         rec = replay.rec
-        self.events: dict[int, list[HostEvent]] = {}
-        for tick, _t, obj in rec.events:
-            self.events.setdefault(tick, []).append(codec.decode(obj))
-        self.wire: dict[int, list[tuple[str, bytes]]] = {}
-        for tick, d, data in rec.wire:
-            if d in ("+", "-"):  # recorded after the tick: fed back before it, in order
-                self.wire.setdefault(tick - 1, []).append((d, data))
+        self.replay, self.window = replay, window
         self.end_tick = rec.ticks
         self.end_frame = rec.end.frame if rec.end is not None else None
 
     def handle_events(self, harness: Harness, events: list[HostEvent]) -> list[HostEvent]:
         put = getattr(harness.target, "put_wire", None)
         hang_up = getattr(harness.target, "put_hang_up", None)
-        for d, data in self.wire.get(harness.ticks, []):
+        for d, data in self.window.wire_at(harness.ticks):  # recorded after: fed before
             if d == "+" and put is not None:
                 put(data)
             elif d == "-" and hang_up is not None:
                 hang_up()
         window_quit = [e for e in events if isinstance(e, Quit)]
-        return self.events.get(harness.ticks, []) + window_quit
+        recorded = [codec.decode(obj) for obj in self.window.events_at(harness.ticks)]
+        if self.window.fault is not None:  # the file changed under the replay
+            self.replay.fault = self.window.fault
+            harness.stop()
+        return recorded + window_quit
 
     def post_tick(self, harness: Harness) -> None:
         past = self.end_frame is not None and harness.frames_shown > self.end_frame
         if harness.ticks >= self.end_tick or past:  # past the recorded end: it differs
             harness.stop()
 
+    def finish(self, harness: Harness) -> None:
+        self.window.close()
+
 
 class HashCheck(Plugin):
     """With ``check``: compare each recorded screen hash; the first difference stops the run."""
 
-    def __init__(self, replay: Replay) -> None:
-        self.replay = replay
-        self.expected = {h.frame: h for h in replay.rec.hashes}
+    def __init__(self, replay: Replay, window: RecordWindow) -> None:
+        self.replay, self.window = replay, window
+        rec = replay.rec
+        self.every = rec.hash_every
+        # the recorder hashes every multiple of hash_every up to the end (the reader checks)
+        self.last = (rec.end.frame // self.every * self.every if rec.end is not None
+                     else max((h.frame for h in rec.hashes), default=0))
 
     def wants_frame(self, harness: Harness) -> bool:
-        return self.replay.check and harness.frames_shown in self.expected
+        n = harness.frames_shown
+        return self.replay.check and 0 < n <= self.last and n % self.every == 0
 
     def on_frame(self, harness: Harness, frame: np.ndarray | None) -> None:
-        want = self.expected.get(harness.frames_shown)
-        if (self.replay.check and want is not None and self.replay.mismatch is None
-                and frame is not None):
+        if not self.wants_frame(harness) or self.replay.mismatch is not None or frame is None:
+            return
+        want = self.window.hash_at(harness.frames_shown)  # compared as it comes, then dropped
+        if want is not None:
             self._compare(harness, want, frame)
+        elif self.window.fault is not None:
+            self.replay.fault = self.window.fault
+            harness.stop()
 
     def _compare(self, harness: Harness, want: ScreenHash, frame: np.ndarray) -> None:
         got = screen_hash(frame)

@@ -155,7 +155,9 @@ def _device_name(target: Any) -> str:
     term = getattr(target, "term", None)
     if term is not None and hasattr(term, "model"):
         return f"Sigma {term.model.name.upper()}"
-    if getattr(getattr(target, "session", None), "device", None) is not None:
+    from camlab88.emulator.machine import RainbowMachine  # a Sigma run never gets here
+
+    if isinstance(getattr(target, "machine", None), RainbowMachine):
         return "Rainbow workstation"
     return type(target).__name__
 

@@ -22,7 +22,7 @@ def _sigma_terminal(target: Any) -> Any:
 
 
 def _rainbow_device(target: Any) -> Any:
-    device = getattr(getattr(target, "session", None), "device", None)
+    device = getattr(getattr(target, "machine", None), "device", None)  # a Rainbow machine
     if device is not None and hasattr(device, "graph") and hasattr(device, "bands"):
         return device
     return None

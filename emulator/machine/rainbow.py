@@ -1,9 +1,11 @@
 """A Rainbow with its command stream: the device, the executor, a byte-stream port a host
-program writes command frames to (``host``) and a pad-library client on that port
-(``client``); ticked in 20 ms frames and saved and restored as one."""
+program writes command frames to (``host``) and a pad-library client (``client``, one call
+one whole frame); ticked in 20 ms frames, optionally recorded, and saved and restored as
+one. Every Rainbow program in camlab88 runs on this machine."""
 
 from __future__ import annotations
 
+import socket
 from collections.abc import Callable
 from fractions import Fraction
 
@@ -12,10 +14,18 @@ import numpy as np
 from camlab88.emulator.machine.state_file import MachineStateError, pack, unpack
 from camlab88.emulator.protocol_trace import TraceEvent
 from camlab88.emulator.rainbow.device import FRAME_MS, Rainbow
+from camlab88.emulator.rainbow.errors import RainbowError
 from camlab88.emulator.rainbow.executor import Executor
+from camlab88.emulator.rainbow.server import ServerStats, serve
 from camlab88.emulator.rainbow.trace import RainbowTracer
 from camlab88.protocols.rainbow.client import RainbowClient
 from camlab88.protocols.rainbow.events import Event
+from camlab88.protocols.rainbow.recording import (
+    Recording,
+    RecordingTransport,
+    ReplayResult,
+    replay,
+)
 from camlab88.protocols.rainbow.transport import LoopbackTransport
 
 
@@ -51,25 +61,45 @@ class StreamPort:
 
 
 class RainbowMachine:
-    """Device + executor + stream port (``host``) + pad-library client (``client``)."""
+    """Device + executor + stream port (``host``) + pad-library client (``client``).
+
+    ``strict_memory``: the relic's 512x256 video memory. ``record``: every client call, its
+    reply and every input posted are written down in ``recording`` (a ``rainbow replay``
+    file, and a session recording's command stream). ``on_frame`` is told each frame a
+    program waits for (a window showing them)."""
 
     FPS = 1000 // FRAME_MS
 
-    def __init__(self, strict_memory: bool = False) -> None:
+    def __init__(self, strict_memory: bool = False, record: bool = False,
+                 on_frame: Callable[[np.ndarray], None] | None = None) -> None:
         self.strict_memory = strict_memory
+        self._on_frame = on_frame
         self._build(Rainbow(strict=strict_memory))
-        self.client = RainbowClient(LoopbackTransport(self._call))
+        # the client's calls are whole frames, each answered on its own (Executor.handle);
+        # the byte stream of ``host`` is not involved, so a half-written stream never
+        # swallows a call
+        port = LoopbackTransport(self._call)
+        self._recorder = RecordingTransport(port) if record else None
+        self.client = RainbowClient(self._recorder or port)
 
     def _build(self, device: Rainbow) -> None:
         tracer = getattr(getattr(self, "executor", None), "tracer", None)
         self.device = device
-        self.executor = Executor(device)
+        self.executor = Executor(device, self._on_frame)
         self.executor.tracer = tracer
         self.host = StreamPort(self)
 
     def _call(self, frame: bytes) -> bytes:
-        self.host.write(frame)
-        return self.host.read()
+        return self.executor.handle(frame)
+
+    def show_frames(self, on_frame: Callable[[np.ndarray], None] | None) -> None:
+        """Tell ``on_frame`` each frame a program waits for from now on (None: stop)."""
+        self._on_frame = self.executor.on_frame = on_frame
+
+    @property
+    def recording(self) -> Recording | None:
+        """What crossed the client and the input so far (None: not recording)."""
+        return None if self._recorder is None else self._recorder.recording
 
     # ------------------------------------------------------------------ time
     @property
@@ -87,9 +117,33 @@ class RainbowMachine:
         """(576, 768, 3) uint8: the screen as it stands (latched LUT), row 0 = top."""
         return self.device.peek()
 
+    def shown(self) -> np.ndarray:
+        """The frame last shown (ONE buffer later frames are composed into: copy it to keep
+        it), or the screen as it stands before any."""
+        last = self.executor.last_frame
+        return last if last is not None else self.device.peek()
+
+    @property
+    def frame_count(self) -> int:
+        """Display frames shown since power-on (50 a second)."""
+        return self.device.frame_count
+
+    @property
+    def compiles(self) -> int:
+        """How often the pad graph has been compiled into bands."""
+        return self.device.compiler.stats.compiles
+
     def post(self, event: Event) -> None:
-        """Host input into the device's input controller (stamped with the device time)."""
-        self.device.post_event(event)
+        """Host input into the device's input controller (stamped with the device time; in
+        the recording, if any)."""
+        queued = self.device.post_event(event)
+        if self._recorder is not None:
+            self._recorder.record_input(queued)
+
+    def replay(self, rec: Recording) -> ReplayResult:
+        """A recording's commands and input played on this machine; the result lists every
+        reply that differs from the recorded one."""
+        return replay(rec, self.executor.handle, self.device.post_event)
 
     # ------------------------------------------------------------------ traces
     def trace(self, sink: Callable[[TraceEvent], None] | None,
@@ -126,3 +180,40 @@ class RainbowMachine:
         self._build(device)
         self.client.continue_from((nxt, arc, calls))
         self.executor.decoder.resume(offset, pending)
+
+    # ------------------------------------------------------------------ a socket
+    def serve(self, sock: socket.socket, connections: int | None = None,
+              **limits: float) -> ServerStats:
+        """Serve programs on ``sock`` (emulator/rainbow/server.py's ``listen``) one at a
+        time, each a fresh pad-library session on this Rainbow, until ``connections`` have
+        been served (None: for ever); ``limits``: frame_timeout, idle_timeout,
+        session_time, poll (seconds)."""
+        return serve(self.executor, sock, connections, **limits)
+
+    # ------------------------------------------------------------------ a program's run
+    def session_state(self) -> bytes:
+        """The Rainbow as a program's saved run keeps it (harness/rainbow.py): the device's
+        parts and the client's ids and calls, not the byte stream (the client sends whole
+        frames)."""
+        head, blobs = self.device.save_state()
+        head["client"] = list(self.client.ids())
+        return pack("rainbow-session", head, blobs)
+
+    def check_session_state(self, data: bytes) -> Callable[[], None]:
+        """MachineStateError unless ``data`` (session_state()) loads: it is loaded into a
+        scratch device first; returns what puts it into this machine."""
+        head, blobs = unpack(data, "rainbow-session")
+        try:
+            Rainbow(strict=self.strict_memory).load_state(head, blobs)
+            client = head["client"]
+            if not (isinstance(client, list) and len(client) == 3 and
+                    all(type(v) is int and 0 <= v < 1 << 31 for v in client)):
+                raise ValueError(f"client ids {str(client)[:40]} are damaged")
+        except (ValueError, KeyError, TypeError, IndexError, RainbowError) as exc:
+            raise MachineStateError(f"Rainbow state: {str(exc)[:200]}") from None
+
+        def put() -> None:
+            self.device.load_state(head, blobs)
+            self.client.continue_from(tuple(client))
+            self.executor.restart()  # the next frame composed again from the device
+        return put

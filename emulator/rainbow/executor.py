@@ -39,6 +39,12 @@ class Executor:
         self.last_frame: np.ndarray | None = None
         self.tracer: RainbowTracer | None = None  # protocol trace (emulator/rainbow/trace.py)
 
+    def restart(self) -> None:
+        """Forget the stream's unfinished frame and the last frame (the device's state was
+        loaded from a file: the next frame is composed from it)."""
+        self.decoder = Decoder()
+        self.last_frame = None
+
     def frame_copy(self) -> np.ndarray | None:
         """A copy of the last frame that later frames will not overwrite (None before one)."""
         return None if self.last_frame is None else self.last_frame.copy()

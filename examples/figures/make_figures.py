@@ -40,17 +40,17 @@ class _CA:
     def __init__(self, pattern: str, rules: str = "life") -> None:
         from camlab88.apps.ca.program import script_events
         from camlab88.apps.ca.program.program import CAProgram, Options
-        from camlab88.emulator.rainbow.session import in_process
+        from camlab88.emulator.machine import RainbowMachine
 
         self._se = script_events
-        self.session = in_process()
-        self.program = CAProgram(self.session.client, Options(pattern=pattern, rules=rules))
+        self.machine = RainbowMachine()
+        self.program = CAProgram(self.machine.client, Options(pattern=pattern, rules=rules))
         self.mouse = script_events.MouseState()
         self.lines: list[str] = []
 
     def run(self, text: str) -> None:
         steps = self._se.parse(text, "<figure>", self.mouse)
-        self._se.play(steps, self.session.inject, self.program.frame,
+        self._se.play(steps, self.machine.post, self.program.frame,
                       lambda: self.program.finished)
         self.lines.append(text.rstrip("\n"))
 

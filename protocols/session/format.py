@@ -32,6 +32,7 @@ import base64
 import json
 import os
 import zlib
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
@@ -79,6 +80,21 @@ class SessionRecording:
     hashes: list[ScreenHash] = field(default_factory=list)
     end: ScreenHash | None = None
     ticks: int = 0
+    # a replay's recording (read(path, traffic=False)): events, outside input and hashes
+    # are not held (the lists above stay empty) but read again from the file, in order
+    body: Callable[[], Iterator[tuple[str, Any]]] | None = field(default=None, repr=False,
+                                                                 compare=False)
+
+    def timeline(self) -> Iterator[tuple[str, Any]]:
+        """Events ``("event", (tick, time, event))``, outside input ``("wire", (tick, dir,
+        data))`` (``+``, ``-``) and screen hashes ``("hash", ScreenHash)`` in the order of the
+        file: from the file again for a replay's recording, else from the lists."""
+        if self.body is not None:
+            return self.body()
+        items = [(e[0], 0, ("event", e)) for e in self.events]
+        items += [(w[0], 1, ("wire", w)) for w in self.wire if w[1] in "+-"]
+        items += [(h.tick, 2, ("hash", h)) for h in self.hashes]
+        return iter([item for _t, _k, item in sorted(items, key=lambda x: (x[0], x[1]))])
 
 
 def _b64(data: bytes) -> str:
@@ -146,10 +162,33 @@ def read(path: str | os.PathLike[str], traffic: bool = True) -> SessionRecording
                 budget.check(name, 2 * os.fstat(fh.fileno()).st_size, "reading it")
                 raw = fh.read()
             else:
-                return parse_stream(stream_lines(fh, name), name, traffic=False)
+                stamp = _stamp(os.fstat(fh.fileno()))
+                rec = parse_stream(stream_lines(fh, name), name, traffic=False)
+                where = os.path.abspath(name)  # the replay runs in a scratch directory
+                rec.body = lambda: _timeline(name, where, stamp)
+                return rec
     except OSError as exc:
         raise SessionFileError(name, 0, 0, f"cannot read: {exc.strerror or exc}") from None
     return loads(raw, name)
+
+
+def _stamp(st: os.stat_result) -> tuple[int, int, int, int]:
+    return st.st_dev, st.st_ino, st.st_size, st.st_mtime_ns
+
+
+def _timeline(name: str, where: str, stamp: tuple[int, int, int, int],
+              ) -> Iterator[tuple[str, Any]]:
+    """A replay's second pass over ``name`` (at ``where``), refused if the file is not the
+    one the first pass checked (replaced or changed since)."""
+    from camlab88.protocols.session.parse import timeline
+
+    try:
+        with open(where, "rb") as fh:
+            if _stamp(os.fstat(fh.fileno())) != stamp:
+                raise SessionFileError(name, 0, 0, "changed while it was replayed")
+            yield from timeline((ln[:-1] if ln.endswith(b"\n") else ln for ln in fh), name)
+    except OSError as exc:
+        raise SessionFileError(name, 0, 0, f"cannot read: {exc.strerror or exc}") from None
 
 
 def loads(raw: bytes, name: str = "<session>") -> SessionRecording:

@@ -52,6 +52,11 @@ class _Reader:
         self.total = 0
         self.ended = False
         self.traffic = True  # keep the > and < wire records (a replay does not need them)
+        # a replay's first pass: events, outside input (+, -) and hashes are checked, not
+        # kept; the replay reads them again a window at a time (emulator.harness.replay_window)
+        self.window = False
+        self.timeline: list[tuple[str, Any]] = []  # the replay pass: what the line held
+        self.hold = True  # keep the files and the tablet tape (the replay pass has them)
         self.kept = 0  # bytes of what is kept, as the budget counts them
 
     def fail(self, message: str, col: int = 1) -> SessionFileError:
@@ -148,7 +153,8 @@ class _Reader:
         data = self.data(obj["data"])
         if hashlib.sha256(data).hexdigest() != obj["sha256"]:
             raise self.fail(f"file {obj['name']!r}: content does not match its sha256")
-        self.rec.files[obj["name"]] = data
+        if self.hold:
+            self.rec.files[obj["name"]] = data
 
     def keep(self, size: int) -> None:
         """Count a kept record against the budget (only a replay streams: a whole-file
@@ -157,13 +163,17 @@ class _Reader:
             return
         self.kept += RECORD_BYTES + size
         if self.kept > budget.limit():
-            budget.check(f"{self.name}:{self.line}", self.kept, "the events and outside "
-                         "input kept to this line")
+            budget.check(f"{self.name}:{self.line}", self.kept, "the tablet tape kept to "
+                         "this line")
 
     def _event(self, obj: dict[str, Any]) -> None:
-        self.keep(len(str(obj["event"])))
         tick = self.tick(obj)
-        self.rec.events.append((tick, self.timed(tick, obj["time"]), obj["event"]))
+        item = (tick, self.timed(tick, obj["time"]), obj["event"])
+        if self.window:
+            self.timeline.append(("event", item))
+            return
+        self.keep(len(str(obj["event"])))
+        self.rec.events.append(item)
 
     def timed(self, tick: int, text: str) -> Fraction:
         """The time at ``tick``: never back, and one time for one tick."""
@@ -188,7 +198,9 @@ class _Reader:
             except TapeError as exc:
                 raise self.fail(str(exc)) from None
         tick = self.tick(obj)
-        if self.traffic or obj["dir"] not in "<>":
+        if self.window and obj["dir"] in "+-":
+            self.timeline.append(("wire", (tick, obj["dir"], data)))
+        elif (self.traffic or obj["dir"] not in "<>") and self.hold:
             self.keep(len(data))
             self.rec.wire.append((tick, obj["dir"], data))
 
@@ -197,7 +209,11 @@ class _Reader:
         if frame != self.last_frame + every:  # the recorder hashes every multiple
             raise self.fail(f"hash record: frame {frame} is not the next multiple of "
                             f"hash_every {every} after frame {self.last_frame}")
-        self.rec.hashes.append(self._screen(obj, frame))
+        screen = self._screen(obj, frame)
+        if self.window:
+            self.timeline.append(("hash", screen))
+        else:
+            self.rec.hashes.append(screen)
         self.last_frame = frame
 
     def _end(self, obj: dict[str, Any]) -> None:
@@ -233,25 +249,25 @@ def shape(raw: bytes | memoryview) -> tuple[int, int]:
     return shape_of_blocks(view[at:at + _BLOCK] for at in range(0, len(view), _BLOCK))
 
 
-# how the recorder writes a traffic record's direction (json.dumps' default separators)
-_TRAFFIC = (b'"dir": ">"', b'"dir": "<"')
+# how the recorder (and a hand, with json.dumps' default separators) writes a tablet tape's
+# record, the one kind of record a replay keeps whole besides the input files
+_TAPE = (b'"dir":"T"', b'"dir": "T"')
 
 
 def shape_of_file(fh: Any) -> tuple[int, int, int]:
-    """(lines, longest line's length, traffic records as the recorder writes them) of an
-    open file from where it is, 16 MB at a time. The traffic count can only fall short
-    (a record spelt otherwise, or cut by a block's end), so what is kept is never
-    underestimated."""
-    traffic = 0
+    """(lines, longest line's length, tablet tape records as written) of an open file from
+    where it is, 16 MB at a time. A tape record spelt otherwise (or cut by a block's end)
+    is missed here and counted as it is read (``_Reader.keep``)."""
+    tape = 0
 
     def blocks() -> Iterator[bytes]:
-        nonlocal traffic
+        nonlocal tape
         for block in iter(lambda: fh.read(_BLOCK), b""):
-            traffic += sum(block.count(t) for t in _TRAFFIC)
+            tape += sum(block.count(t) for t in _TAPE)
             yield block
 
     lines, longest = shape_of_blocks(blocks())
-    return lines, longest, traffic
+    return lines, longest, tape
 
 
 def shape_of_blocks(blocks: Iterable[bytes | memoryview]) -> tuple[int, int]:
@@ -287,8 +303,7 @@ def stream_lines(fh: Any, name: str) -> Iterator[bytes]:
     """The lines of an open recording, one at a time (no line kept after the next is read),
     after a first pass in blocks has refused a line longer than the budget can decode
     (before any line is read whole)."""
-    lines, longest, traffic = shape_of_file(fh)
-    kept = max(0, lines - traffic)
+    _lines, longest, kept = shape_of_file(fh)
     what = (f"its {kept:,} records a replay keeps" if kept * RECORD_BYTES >= longest * LINE_FACTOR
             else f"its {longest:,}-byte line")
     budget.check(name, kept * RECORD_BYTES + longest * LINE_FACTOR, what)
@@ -298,12 +313,34 @@ def stream_lines(fh: Any, name: str) -> Iterator[bytes]:
 
 
 def parse_stream(lines: Iterable[bytes], name: str, traffic: bool = True) -> SessionRecording:
-    """The recording in ``lines``, checked record by record. ``traffic=False`` (a replay):
-    the program/device traffic (``>`` and ``<`` wire records, most of a long recording) is
-    checked and not kept, so memory does not grow with it; what is kept is counted against
-    the memory budget as it comes."""
+    """The recording in ``lines``, checked record by record. ``traffic=False`` (a replay's
+    first pass): only the header, the input files, the tablet tape and the end are kept —
+    the program/device traffic (``>``, ``<``), the events, the outside input (``+``, ``-``)
+    and the screen hashes are checked and dropped, so memory does not grow with the
+    recording's length (the replay reads them again a window at a time: ``timeline``);
+    what is kept is counted against the memory budget as it comes."""
     reader = _Reader(name)
-    reader.traffic = traffic
+    reader.traffic, reader.window = traffic, not traffic
+    for _ in _checked(reader, lines):
+        reader.timeline.clear()
+    return _whole(reader, name)
+
+
+def timeline(lines: Iterable[bytes], name: str) -> Iterator[tuple[str, Any]]:
+    """A replay's second pass over a recording its first pass accepted: every event
+    ``("event", (tick, time, event))``, outside input ``("wire", (tick, dir, data))`` and
+    screen hash ``("hash", ScreenHash)`` in file order, checked again as they come (nothing
+    else kept); a fault raises SessionFileError as the first pass would have."""
+    reader = _Reader(name)
+    reader.traffic, reader.window, reader.hold = False, True, False
+    for _ in _checked(reader, lines):
+        yield from reader.timeline
+        reader.timeline.clear()
+    _whole(reader, name)
+
+
+def _checked(reader: _Reader, lines: Iterable[bytes]) -> Iterator[None]:
+    """Each record of ``lines`` read and checked by ``reader``, one at a time."""
     for reader.line, line in enumerate(lines, start=1):
         if not line.strip():
             continue
@@ -316,6 +353,11 @@ def parse_stream(lines: Iterable[bytes], name: str, traffic: bool = True) -> Ses
             reader.header(obj)
         else:
             reader.body(obj)
+        yield
+
+
+def _whole(reader: _Reader, name: str) -> SessionRecording:
+    """The recording ``reader`` read, refused if it was empty or had no end."""
     if reader.rec is None:
         raise SessionFileError(name, 1, 1, "empty: not a camlab88 session recording")
     if not reader.ended:

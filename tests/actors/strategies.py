@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from hypothesis import strategies as st
 
-from camlab88.apps.actors.model import Actor, ActorSet, Cycle, Material, Part
+from camlab88.apps.actors.model import FACES, PHASES, Actor, ActorSet, Cycle, Material, Part
 
 coord = st.floats(-100, 100, allow_nan=False, allow_infinity=False)
 positive = st.floats(1e-6, 100, allow_nan=False, allow_infinity=False)
@@ -49,6 +49,8 @@ def actor_set(draw) -> ActorSet:
     states = draw(st.lists(st.integers(0, 255), unique=True, max_size=5))
     actors = {s: Actor(s, draw(name), draw(colour), draw(material),
                        tuple(draw(st.lists(part, min_size=1, max_size=4))),
-                       tuple(draw(st.lists(cycle, max_size=2)))) for s in states}
+                       tuple(draw(st.lists(cycle, max_size=2))),
+                       draw(st.sampled_from(PHASES)), draw(st.sampled_from(FACES)))
+              for s in states}
     rules = draw(st.from_regex(r"[A-Za-z0-9_./-]{1,30}", fullmatch=True))
     return ActorSet(rules, actors)

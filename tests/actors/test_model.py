@@ -76,6 +76,7 @@ GOOD = "rules life\nactor 1 p\n  colour 1 2 3\n  box 1 1 1\nend\n"
     (GOOD.replace("actor 1 p", "actor 256 p"), "2:7", "between 0 and 255"),
     (GOOD + "colour 1 2 3\n", "6:1", "outside an actor"),
     (GOOD.replace("colour 1 2 3", "material ambient 1 diffuse 1"), "3:31", "lacks specular"),
+    (GOOD.replace("box 1 1 1", "box 1 1 1\n  face forward"), "5:8", "expected fixed or glide"),
 ])
 def test_bad_files_are_refused_naming_line_and_column(text: str, where: str,
                                                       words: str) -> None:

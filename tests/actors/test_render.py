@@ -7,7 +7,15 @@ import numpy as np
 import pytest
 
 from camlab88.apps.actors.model import Actor, ActorSet, Material, Part
-from camlab88.apps.actors.render import Look, Placed, Shot, Stage, render_frame, render_linear
+from camlab88.apps.actors.render import (
+    Look,
+    Placed,
+    Shot,
+    Stage,
+    linear_colour,
+    render_frame,
+    render_linear,
+)
 from camlab88.apps.snooker.render.lights import Lights
 from camlab88.apps.snooker.render.pinhole import Pinhole
 
@@ -116,3 +124,25 @@ def test_every_part_kind_draws_something_where_it_stands() -> None:
         img = render_frame(_stage((part,)), Shot((0.5, -8.5, 4.0), (0.5, -0.5, 0.3), 80.0),
                            Look(64, 64, ss=1))
         assert _red(img)[30:35, 30:35].all(), part.kind
+
+
+@pytest.mark.parametrize(("light", "cos"), [
+    ((0.5, -0.5, 4.5), 1.0),  # straight above the box's top, 4 cells up
+    ((0.5, -0.5, 40.5), 1.0),  # ten times as far: no attenuation, the same
+    ((3.5, -0.5, 3.5), 2 ** -0.5),  # 45 degrees off: N.L and R.V both cos 45
+])
+def test_a_surface_is_shaded_by_phongs_three_terms_from_point_lights(
+        light: tuple[float, float, float], cos: float) -> None:
+    """Thesis §6.4.1's model: I = ka A c_a + sum over lights (kd A N.L + ks (R.V)^n) I_l,
+    L towards the light's point, no fall-off with distance."""
+    ka, kd, ks, n = 0.5, 0.6, 0.3, 4.0
+    actor = Actor(1, "slab", (200, 100, 50), Material(ka, kd, ks, n),
+                  (Part("box", (), (0.6, 0.6, 0.5)),))
+    intensity, ambient = np.array([0.7, 0.6, 0.5]), np.array([0.2, 0.25, 0.3])
+    lights = Lights(np.array([light]), intensity[None, :], ambient)
+    stage = Stage(ActorSet("x", {1: actor}), (-3, -3, 4, 4), lights, (Placed(1, 0.0, 0.0),))
+    shot = Shot((0.5, -0.5001, 30.0), (0.5, -0.5, 0.0), 600.0)  # straight down on the top
+    lin = render_linear(stage, shot, Look(64, 64, ss=1, shadows=False))
+    albedo = linear_colour((200, 100, 50))
+    want = ka * ambient * albedo + (kd * albedo * cos + ks * cos ** n) * intensity
+    assert lin[32, 32] == pytest.approx(want, abs=2e-3)

@@ -6,7 +6,7 @@ from pathlib import Path
 
 from camlab88.apps.actors.editor.cell_types import CellType
 from camlab88.apps.actors.editor.program import ActorEditor
-from camlab88.emulator.rainbow.session import in_process
+from camlab88.emulator.machine import RainbowMachine
 from camlab88.protocols.rainbow.script import Player, parse
 
 LIFE = [CellType(1, "form 1", (0, 255, 0))]
@@ -23,15 +23,15 @@ def screen(r: float, h: float) -> tuple[int, int]:
 class Driver:
     def __init__(self, path: Path, types: list[CellType] | None = None,
                  rules: str = "life") -> None:
-        self.session = in_process()
-        self.editor = ActorEditor(self.session.client, str(path), types or LIFE, rules)
+        self.machine = RainbowMachine()
+        self.editor = ActorEditor(self.machine.client, str(path), types or LIFE, rules)
         self.frames = 0
 
     def run(self, text: str) -> None:
         player = Player(parse(text, "<test>"))
         while not player.finished and not self.editor.finished:
             for e in player.due():
-                self.session.inject(e)
+                self.machine.post(e)
             self.editor.frame()
             self.frames += 1
 
@@ -42,4 +42,4 @@ class Driver:
         self.run("".join(f"key {k}\nwait 1\n" for k in keys))
 
     def screen(self):
-        return self.session.device.peek()
+        return self.machine.device.peek()

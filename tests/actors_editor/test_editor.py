@@ -142,7 +142,7 @@ def test_a_tablet_pen_draws_points(tmp_path: Path) -> None:
     d.editor.pen.extent = (1000, 1000)
     for x, y, pressure in [(100, 900, 0), (100, 900, 500), (100, 900, 0), (300, 700, 500),
                            (300, 700, 0)]:
-        d.session.inject(TabletEvent(0, x, y, pressure, 0))
+        d.machine.post(TabletEvent(0, x, y, pressure, 0))
         d.editor.frame()
     pts = d.editor.profile.points
     assert len(pts) == 2 and pts[0][1] < pts[1][1]

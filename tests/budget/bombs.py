@@ -138,3 +138,67 @@ def many_lights(path: Path, count: int) -> Path:
         for k in range(count):
             fh.write(f"{k % 7 - 3} {k % 5 - 2} 2.5 0.001\n")
     return path
+
+
+def dense_lif(path: Path, side: int) -> Path:
+    """A Life 1.05 file of a full side x side square, one ``*`` a cell (8000²: 64 MB)."""
+    with open(path, "w") as fh:
+        fh.write("#Life 1.05\n#D bomb\n#N\n#P 0 0\n")
+        row = "*" * side + "\n"
+        for _ in range(side):
+            fh.write(row)
+    return path
+
+
+def many_cell_life106(path: Path, cells: int) -> Path:
+    """A Life 1.06 file of ``cells`` cells, one ``x y`` line each (4x10^6: 45 MB)."""
+    side = max(int(cells ** 0.5), 1)
+    with open(path, "w") as fh:
+        fh.write("#Life 1.06\n")
+        for y in range(-(-cells // side)):
+            fh.write("".join(f"{x} {y}\n" for x in range(min(side, cells - y * side))))
+    return path
+
+
+def many_frame_rainbow(path: Path, frames: int) -> Path:
+    """A Rainbow recording of ``frames`` one-byte command frames (2x10^7: 100 MB)."""
+    with open(path, "w") as fh:
+        fh.write("# camlab88 rainbow recording v1\n")
+        for done in range(0, frames, 100000):
+            fh.write("> 00\n" * min(100000, frames - done))
+    return path
+
+
+def with_idle_events(src: Path, dst: Path, per_tick: int) -> Path:
+    """The recording ``src`` with ``per_tick`` key releases (of a key never pressed: no
+    program answers them, so the screen hashes still agree) at every tick of the run, in
+    tick order: a recording as long as many hours of typing, that ``replay --check``
+    passes. The run's time must be linear in its ticks (sigma run's: 1/100 s a tick)."""
+    import json
+    from fractions import Fraction
+
+    lines = src.read_text().splitlines()
+    end = json.loads(lines[-1])
+    step = Fraction(end["time"]) / end["ticks"]
+    head = [ln for ln in lines[:-1] if json.loads(ln)["type"] in ("header", "file")]
+    body = [(json.loads(ln)["tick"], 1, ln) for ln in lines[:-1]
+            if json.loads(ln)["type"] not in ("header", "file")]
+    event = '{{"type":"event","tick":{t},"time":"{v}","event":{{"kind":"KeyUp","key":"f15"}}}}'
+    body += [(t, 0, event.format(t=t, v=t * step)) for t in range(end["ticks"])
+             for _ in range(per_tick)]
+    body.sort(key=lambda r: (r[0], r[1]))
+    dst.write_text("\n".join(head + [ln for _t, _k, ln in body] + [lines[-1]]) + "\n")
+    return dst
+
+
+def one_tick_of_events(path: Path, events: int) -> Path:
+    """A recording whose ``events`` key releases all fall on tick 0: a window of one tick
+    as long as the file (nothing a recorder writes; a crafted file)."""
+    line = '{"type": "event", "tick": 0, "time": "0", "event": {"kind": "KeyUp", "key": "f15"}}\n'
+    with open(path, "w") as fh:
+        fh.write(_HEADER)
+        fh.write(_empty_input())
+        for done in range(0, events, 10000):
+            fh.write(line * min(10000, events - done))
+        fh.write(_END)
+    return path

@@ -92,6 +92,17 @@ def test_broadcast_and_many_lifeforms() -> None:
     assert r.forms[60].colour == (0x10, 0x20, 0x30)
 
 
+def test_extents_are_above_below_left_right_and_ranges_inclusive() -> None:
+    # figure 7.6's comment: the extents are the rows above and below the sender, then the
+    # columns to its left and right; here two rows above, none below, one column right
+    f = parse_rules("1 2 0 0 1  +1 +2  +4 +8  +16 +32 $ 1 1").forms[1]
+    assert (f.top, f.left, f.rows, f.cols) == (-2, 0, 3, 2)
+    assert [(m.dy, m.dx, m.value) for m in f.messages] == [
+        (-2, 0, 1), (-2, 1, 2), (-1, 0, 4), (-1, 1, 8), (0, 0, 16), (0, 1, 32)]
+    r = parse_rules("1 0 0 0 0 |1 $ R 2 4 1")  # figure 7.8's 'R lo hi life-form'
+    assert [v for v in range(7) if r.interpret(v) is not None] == [2, 3, 4]
+
+
 def test_free_format_and_both_extent_forms_agree() -> None:
     a = parse_rules("1 1 1 1 1 +1 +1 +1 +1 |16 +1 +1 +1 +1 $ 3 1")
     b = parse_rules("1\n-1\n1\n-1 1\n+1 +1 +1\n+1 |16 +1\n+1 +1 +1\n$\n3\n1")
@@ -170,3 +181,13 @@ def test_invisible_lifeform_parses() -> None:
     rules = parse_rules("1 0 0 0 0 invisible |1\n2 0 0 0 0 |1\n$\n1 1\n")
     assert rules.forms[1].invisible and rules.forms[1].colour is None
     assert not rules.forms[2].invisible
+
+
+def test_default_colours_are_green_red_blue_then_unique() -> None:
+    # section 7.4.1: type 1 "green by default", type 2 "red", type 3 "blue"
+    from camlab88.apps.ca.render import palette
+
+    rules = parse_rules("1 0 0 0 0 |1  2 0 0 0 0 |1  3 0 0 0 0 |1 $ 1 1")
+    pal = [tuple(int(v) for v in c) for c in palette(rules, 40)]
+    assert pal[:4] == [(0, 0, 0), (0, 255, 0), (255, 0, 0), (0, 0, 255)]
+    assert len(set(pal[1:])) == 40  # a unique colour per life-form

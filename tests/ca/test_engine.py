@@ -108,6 +108,14 @@ def test_cells_receiving_nothing_die_and_self_message_keeps_alive() -> None:
     assert e.population == 0
 
 
+def test_a_cell_receiving_nothing_dies_though_a_zero_message_would_live() -> None:
+    # a cell's message area is 0 whether it received +0 or nothing; only the first lives
+    e = Engine(parse_rules("1 0 0 0 1 . +0 $ 0 1"))
+    e.set(5, 5, 1)
+    e.step()
+    assert cellset(e) == {(6, 5, 1)}
+
+
 def test_messages_any_distance_and_and_xor_ops() -> None:
     far = parse_rules("1 0 0 0 3000 " + ". " * 3000 + "|1 $ 1 1")
     e = Engine(far)
@@ -151,6 +159,19 @@ def test_broadcast_reaches_only_cells_with_local_messages() -> None:
     assert cellset(e) == {(5, 5, 3), (500, 600, 3)}  # the beacon itself received nothing
 
 
+def test_every_beacons_broadcast_arrives() -> None:
+    # two beacons broadcasting +#X100: a receiving cell's message is 1 + 2 x #X100
+    r = parse_rules("""
+        1 0 0 0 0 +1
+        2 0 0 0 0 BROADCAST +#X100 .
+        $ 1 1  #X101 2  #X201 3
+    """)
+    e = Engine(r)
+    e.set_cells([5, 900, 40000], [5, 7, 7], [1, 2, 2])
+    e.step()
+    assert cellset(e) == {(5, 5, 3)}
+
+
 def test_probabilistic_outcomes_reproducible_from_seed_position_generation() -> None:
     r = parse_rules("1 0 0 0 0 |1 $ 1 50% 1 30% 2 20% 0")
     xs, ys = np.meshgrid(np.arange(100), np.arange(100))
@@ -166,6 +187,15 @@ def test_probabilistic_outcomes_reproducible_from_seed_position_generation() -> 
     counts = a.by_type()
     assert abs(counts[1] - 5000) < 300 and abs(counts[2] - 3000) < 300
     assert abs(a.population - 8000) < 300
+    # the generation is in the number too: one cell's choices differ from one to the next
+    e = Engine(parse_rules("1 0 0 0 0 |1 $ 1 50% 1 50% 2  2 1"), seed=7)
+    e.set(3, 3, 1)
+    seen = []
+    for _ in range(64):
+        e.step()
+        seen.append(e.get(3, 3))
+        e.set(3, 3, 1)
+    assert 16 < seen.count(2) < 48
 
 
 def test_advance_area_freezes_outside_and_hides_it_from_inside() -> None:

@@ -60,7 +60,7 @@ def test_look_ahead_by_jumps_equals_stepping(tmp_path) -> None:
 
 def test_the_main_menu_can_show_the_jumps_in_a_third_column() -> None:
     d = Driver()
-    menu = MainMenu(d.session.client, lut_page=13, jumps=True)
+    menu = MainMenu(d.machine.client, lut_page=13, jumps=True)
     assert menu.items == MAIN_ITEMS + JUMP_ITEMS and menu.width == 3 * 144
     menu.open(400, 300)
     x, y = menu.x + 2 * 144 + 10, menu.y + 18 + 5  # third column, second row
@@ -133,7 +133,7 @@ def test_escape_stops_a_long_go_to_generation_and_keeps_the_shown_state() -> Non
     d.leave_editing()
     shown = d.program.session.engine.copy()
     # Escape arrives while the jump runs (the clock's third reading is inside it)
-    d.program.clock = _Clock(lambda n: n == 3 and d.session.inject(KeyEvent(0, "escape", "")))
+    d.program.clock = _Clock(lambda n: n == 3 and d.machine.post(KeyEvent(0, "escape", "")))
     d.program._start(stepping.go_to_generation(d.program))
     d.type("100000")
     assert d.program.said[-1].startswith("Go to generation 100000: stopped at generation 0")

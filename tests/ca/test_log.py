@@ -166,3 +166,13 @@ def test_log_header_records_edges_and_seed(tmp_path: Path) -> None:
     assert (edges, seed) == ("bounded", 7) and len(warn) == 1 and "edges bounded" in warn[0]
     assert log.resolve_settings(log.LogSettings("bounded", 7), None, 8)[2] == [
         "the script was recorded with seed 7; replaying with it, not the command line's 8"]
+
+
+def test_populate_keeps_the_overall_and_the_relative_densities() -> None:
+    # section 7.3.2: a rectangle, an overall density and relative densities of life-forms
+    e = Engine()
+    log.populate(e, Rect(10, 10, 209, 209), 0.5, {1: 3.0, 2: 1.0}, seed=1)
+    counts = e.by_type()
+    assert abs(e.population - 20000) < 600
+    assert abs(counts[1] - 15000) < 600 and abs(counts[2] - 5000) < 400
+    assert e.bbox() == Rect(10, 10, 209, 209)

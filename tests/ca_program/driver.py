@@ -7,7 +7,7 @@ from pathlib import Path
 from camlab88.apps.ca.program import script_events
 from camlab88.apps.ca.program.demo import choose, edit_choice, leave_editing
 from camlab88.apps.ca.program.program import CAProgram, Options
-from camlab88.emulator.rainbow.session import in_process
+from camlab88.emulator.machine import RainbowMachine
 from camlab88.protocols.rainbow.stream import Decoder
 from camlab88.protocols.rainbow.ui.menu import ROW_H
 
@@ -16,15 +16,15 @@ DATA = Path(__file__).resolve().parents[1] / "data" / "ca_program"
 
 class Driver:
     def __init__(self, options: Options | None = None, record: bool = False) -> None:
-        self.session = in_process(record=record)
-        self.program = CAProgram(self.session.client, options or Options())
+        self.machine = RainbowMachine(record=record)
+        self.program = CAProgram(self.machine.client, options or Options())
         self.mark = 0
         self.mouse = script_events.MouseState()
 
     # -- input ---------------------------------------------------------------------------
     def run(self, text: str) -> int:
         steps = script_events.parse(text, "<test>", self.mouse)
-        return script_events.play(steps, self.session.inject, self.program.frame,
+        return script_events.play(steps, self.machine.post, self.program.frame,
                                   lambda: self.program.finished)
 
     def frames(self, n: int = 1) -> None:
@@ -74,11 +74,11 @@ class Driver:
     # -- what the device saw --------------------------------------------------------------
     @property
     def frame(self):
-        return self.session.executor.last_frame.copy()
+        return self.machine.executor.last_frame.copy()
 
     def commands_since_mark(self) -> list:
         """Decoded command frames sent since the last call (needs record=True)."""
-        rec = self.session.recorder.recording.entries
+        rec = self.machine.recording.entries
         frames = [b for d, b in rec[self.mark:] if d == ">"]
         self.mark = len(rec)
         d = Decoder()

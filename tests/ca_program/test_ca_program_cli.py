@@ -12,7 +12,7 @@ from camlab88.apps.ca.program.demo import choose, demo_events, leave_editing
 from camlab88.apps.ca.program.program import CAProgram, Options
 from camlab88.apps.ca.program.script_events import parse, play
 from camlab88.cli import main
-from camlab88.emulator.rainbow.session import in_process
+from camlab88.emulator.machine import RainbowMachine
 
 
 def _json_last(capsys) -> dict:
@@ -60,9 +60,9 @@ def test_program_reports_bad_files(tmp_path: Path, capsys) -> None:
 
 
 def test_demo_plays_sixty_generations_of_the_gun() -> None:
-    session = in_process()
+    session = RainbowMachine()
     program = CAProgram(session.client, Options(rules="life", pattern="gosper_gun"))
-    play(parse(demo_events(60), "<ca demo>"), session.inject, program.frame,
+    play(parse(demo_events(60), "<ca demo>"), session.post, program.frame,
          lambda: program.finished)
     stats = program.session.statistics()
     assert stats["generation"] == 60 and stats["population"] == 46  # the gun and two gliders

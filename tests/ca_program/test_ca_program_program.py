@@ -473,3 +473,25 @@ def test_save_pattern_from_a_rectangle_across_the_seam(tmp_path):
     pat = read_pattern(tmp_path / "seam.pat")
     assert pat.cell_set() == {(0, 0, 1), (1, 0, 1), (2, 0, 1)}  # 3 cells, not 65535 wide
     assert pat.ref == (1, 0) and "Saved 3 cells" in d.program.said[-1]
+
+
+def test_the_editing_cursor_stays_inside_the_visible_area():
+    # section 7.3.1: the editing cursor is kept inside the visible area; over the band at
+    # the right the right button edits the last visible cell of that row
+    d = Driver()
+    d.frames(1)
+    e = d.program.session.engine
+    d.run("move 766 300\nclick right 766 300\nframes 1")
+    assert e.get(*d.program.view.cell_at(751, 300)) == 1 and e.population == 1
+
+
+def test_centralise_viewport_brings_the_population_back_into_view():
+    d = Driver(Options(pattern="glider"))
+    d.leave_editing()
+    d.run("drag left 700 500 10 10 5\nframes 1")  # pan the glider out of view
+    bx = d.program.session.engine.bbox()
+    centre = ((bx.x0 + bx.x1) // 2, (bx.y0 + bx.y1) // 2)
+    assert not d.program.view.cell_visible(*centre)
+    d.main("Centralise viewport")
+    assert d.program.view.cell_visible(*centre)
+    assert d.program.view.centre_cell() == pytest.approx(centre, abs=1)

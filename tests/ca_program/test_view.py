@@ -118,3 +118,22 @@ def test_drag_line_has_no_holes():
     assert line[-1] == (5, 2) and len(line) == 5
     for (ax, ay), (bx, by) in zip([(0, 0), *line], line):
         assert max(abs(ax - bx), abs(ay - by)) == 1
+
+
+def test_edit_mode_gives_every_life_form_its_own_colour_and_a_darker_shading() -> None:
+    # section 7.3.1: in edit mode each life-form has a unique colour and shading, so that
+    # cells of different types can be told apart whatever their rules' COLOUR says
+    from camlab88.apps.ca.program.colours import page
+    from camlab88.apps.ca.program.raster import FORMS, SHADE, form_value
+    from camlab88.apps.ca.rules import parse_rules
+
+    rules = parse_rules("1 0 0 0 0 COLOUR 00 FF 00 |1  2 0 0 0 0 COLOUR 00 FF 00 |1 $ 1 1")
+    cols = page("edit", rules, grid=True)
+    forms = [cols[form_value(t)] for t in range(1, FORMS + 1)]
+    shades = [cols[form_value(t) + SHADE] for t in range(1, FORMS + 1)]
+    assert len(set(forms)) == FORMS  # the two green forms are told apart too
+    assert all(s != f for s, f in zip(shades, forms))
+    def rgb(h: str) -> tuple[int, ...]:
+        return tuple(int(h[i: i + 2], 16) for i in (1, 3, 5))
+
+    assert all(all(a <= b for a, b in zip(rgb(s), rgb(f))) for s, f in zip(shades, forms))

@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 
 from camlab88.apps.actors.mesh import actor_mesh, posed_actor_mesh, swing_angle
-from camlab88.apps.actors.model import read_actors
-from camlab88.apps.actors.render import Stage, canopy_over, world_triangles
-from camlab88.apps.cafilm.motion import change, clock_shift, lineage, posed
+from camlab88.apps.actors.model import ActorSet, parse_actors, read_actors
+from camlab88.apps.actors.render import Placed, Stage, canopy_over, world_triangles
+from camlab88.apps.cafilm.motion import change, clock_shift, facing, lineage, posed
 from tests.cafilm.test_cafilm_motion import _gen
 
 WALKER = Path(__file__).resolve().parents[2] / "examples" / "ca" / "walker.actors"
@@ -21,7 +21,8 @@ MAN = ACTORS.actors[2]
 
 
 def test_the_walkers_legs_and_arms_swing_in_opposition() -> None:
-    legs = [p for p in MAN.parts if p.swing is not None and p.swing[0] < 0.5]
+    legs = [p for p in MAN.parts if p.kind == "box" and p.swing is not None
+            and p.swing[0] < 0.5]  # the boxes: each foot swings with its leg
     arms = [p for p in MAN.parts if p.swing is not None and p.swing[0] > 0.5]
     assert len(legs) == 2 and len(arms) == 2 and MAN.phase == "individual"
     for clock in (2, 4, 9):
@@ -51,9 +52,56 @@ def test_two_walkers_are_out_of_step_and_a_walkers_clock_survives_its_glide() ->
 
 
 def test_a_together_actor_keeps_the_films_clock() -> None:
-    from camlab88.apps.actors.model import parse_actors
-
     together = parse_actors(WALKER.read_text().replace("  phase individual\n", ""), "w")
     g = _gen({(0, 0): 2, (5, 3): 2})
     placed, _ = posed(change(g, g), 0.0, together, 7, lineage([g], 0), 0)
     assert {p.clock for p in placed} == {7}
+
+
+def _still() -> ActorSet:
+    """The walker on the film's own clock (no individual shift): frame 0 is its rest pose,
+    limbs hanging, so its shape shows which way it faces."""
+    return parse_actors(WALKER.read_text().replace("  phase individual\n", ""), "w")
+
+
+def _reach(placed: Placed, actors: ActorSet) -> tuple[float, float, float]:
+    """(ahead, behind, across) of the placed walker's triangles from its own centre, along
+    its glide east (+x in the world) and across it."""
+    tri = world_triangles(Stage(actors, (-2, -2, 8, 8), canopy_over((-2, -2, 8, 8)), (placed,)))
+    v = tri[0].reshape(-1, 3)
+    centre = np.array([placed.col + 0.5, -(placed.row + 0.5)])
+    d = v[:, :2] - centre
+    return float(d[:, 0].max()), float(-d[:, 0].min()), float(np.ptp(d[:, 1]))
+
+
+def test_the_walker_faces_the_way_it_glides_and_keeps_facing_it() -> None:
+    actors = _still()
+    gens = [_gen({(0, 0): 2}), _gen({(1, 0): 2}), _gen({(1, 0): 2}), _gen({(1, 1): 2})]
+    end_of_glide, _ = posed(change(gens[0], gens[1]), 1.0, actors, 0,
+                            faces=facing(gens, 0))
+    ahead, behind, across = _reach(end_of_glide[0], actors)
+    assert ahead > behind + 0.04  # its feet and nose point east, the way it went
+    assert across > ahead + behind  # shoulders across its path, not along it
+    standing, _ = posed(change(gens[1], gens[2]), 0.5, actors, 0, faces=facing(gens, 1))
+    assert standing[0].turn == pytest.approx(end_of_glide[0].turn)  # still facing east
+    # turning a corner south: from east (90 degrees) round to south (0), in the glide's
+    # first half, through the smaller angle
+    ch = change(gens[2], gens[3])
+    turns = [posed(ch, u, actors, 0, faces=facing(gens, 2))[0][0].turn
+             for u in (0.0, 0.25, 0.5, 1.0)]
+    assert turns[0] == pytest.approx(90.0) and turns[2] == turns[3] == pytest.approx(0.0)
+    assert 0.0 < turns[1] < 90.0
+
+
+def test_a_runner_born_beside_its_parent_faces_away_from_it_and_a_fixed_actor_never_turns(
+) -> None:
+    g0, g1 = _gen({(3, 3): 2}), _gen({(4, 3): 2, (3, 2): 2})  # the head splits
+    gens = [g0, g1]
+    heads = facing(gens, 1)
+    assert heads[(3, 2)] == pytest.approx(180.0)  # north, gliding on (rows first)
+    assert heads[(4, 3)] == pytest.approx(90.0)  # east, born away from (3, 3)
+    born, _ = posed(change(g0, g1), 0.5, _still(), 0, faces=facing(gens, 0))
+    assert [p.turn for p in born if p.scale < 1] == [pytest.approx(90.0)]  # grows facing east
+    chess = read_actors(WALKER.parent / "chess.actors")  # its knight does not `face glide`
+    placed, _ = posed(change(g0, g1), 1.0, chess, 0, faces=facing(gens, 0))
+    assert {p.turn for p in placed} == {0.0}

@@ -51,10 +51,10 @@ def test_the_targets_that_read_escape_say_so() -> None:
 
 def test_snooker_escape_asks_y_n_escape_before_leaving() -> None:
     from camlab88.apps.snooker.program.program import Program
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
     from tests.snooker_program.helpers import feed
 
-    rainbow = in_process()
+    rainbow = RainbowMachine()
     p = Program(rainbow.client)
     feed(rainbow, p, "move 300 420\nwait 1\nkey n\nwait 1")
     assert p.mode == "idle"

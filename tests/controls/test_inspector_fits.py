@@ -36,3 +36,20 @@ def test_a_window_growing_an_inspector_stays_within_the_screen() -> None:
         assert w._device_xy((x, 10))[0] == 700
     finally:
         w.close()
+
+
+def test_a_window_too_large_for_the_screen_opens_fitted() -> None:
+    """--scale 2 of a 768x512 screen (1536x1024) on SDL's 1024x768 dummy display: the window
+    opens scaled down to fit, not at full size partly off the screen until the first frame."""
+    import pygame
+
+    w = Window("large", (768, 512), scale=2)
+    try:
+        screen = pygame.display.get_desktop_sizes()[0]
+        width, height = w.surface.get_size()
+        assert width <= screen[0] and height <= screen[1]
+        assert w.zoom < 2 and (width, height) == (round(768 * w.zoom), round(512 * w.zoom))
+        x = int(700 * w.zoom) + 1  # the pointer still lands on the device pixel under it
+        assert w._device_xy((x, 10))[0] == 700
+    finally:
+        w.close()

@@ -13,8 +13,9 @@ def test_the_controls_commands_run_as_printed(tmp_path: Path, monkeypatch, capsy
     import imageio_ffmpeg
 
     commands = section_commands("Emulator controls")
-    assert [c[1] for c in commands] == ["sigma", "rainbow", "ca", "replay"]
+    assert [c[1] for c in commands] == ["sigma", "rainbow", "ca", "replay", "demo", "replay"]
     run_as_printed(commands, tmp_path, monkeypatch)
+    assert "all 11 screen hashes agree" in capsys.readouterr().out  # the demo's recording
     panels = sorted((tmp_path / "cameron_panels").iterdir())
     assert imageio_ffmpeg.count_frames_and_secs("cameron.mp4")[0] == len(panels) > 1
     assert (tmp_path / "scene_panel" / "frame_00000.png").is_file()

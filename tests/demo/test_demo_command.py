@@ -96,7 +96,7 @@ def test_an_act_shown_through_a_callback_is_computed_no_further_than_the_frame_s
     act = next(a for a in demo.ACTS if a.name == "ca")
     stage = Stage()
     for k, frame in enumerate(act.play(stage)):
-        assert np.array_equal(frame, stage.session.executor.last_frame)
+        assert np.array_equal(frame, stage.machine.shown())
         if k == 30:
             break
 

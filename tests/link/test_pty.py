@@ -68,3 +68,26 @@ def test_pty_bridge_end_to_end_with_pyserial() -> None:
             assert read_exactly(client.read, 7) == b"REPORT\r"
         finally:
             client.close()
+
+
+def test_a_program_opening_the_slave_without_setting_it_up_gets_the_bytes_raw() -> None:
+    # the pty itself is raw: a program that opens it as it is (as `cat` would, no termios
+    # calls of its own) sees CR, DC1 and DC3 as sent, with no line editing or flow control
+    import os
+    import select
+
+    with PtyPort() as pty:
+        fd = os.open(pty.slave_path, os.O_RDWR | os.O_NOCTTY | os.O_NONBLOCK)
+        try:
+            data = b"a\rb\x11\x13c"  # no newline: a line-buffered tty would hold it back
+            pty.write(data)
+            got = b""
+            for _ in range(40):
+                if len(got) >= len(data) or not select.select([fd], [], [], 0.05)[0]:
+                    if got:
+                        break
+                    continue
+                got += os.read(fd, 64)
+            assert got == data
+        finally:
+            os.close(fd)

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from camlab88.emulator.rainbow.session import in_process
+from camlab88.emulator.machine import RainbowMachine
 from camlab88.protocols.rainbow import transparency as tx
 from camlab88.protocols.rainbow.antialias import coverage
 
@@ -31,7 +31,7 @@ def expected(poly_at, spl_at) -> np.ndarray:
 
 
 def test_polygon_blends_over_splodges_while_both_move() -> None:
-    s = in_process()
+    s = RainbowMachine()
     ex = tx.build(s.client, poly_at=(100, 80), splodge_at=(40, 40))
     s.client.wait_frame()  # LUT writes take effect at the next frame
     words = s.device.memory.words.copy()
@@ -54,7 +54,7 @@ def test_polygon_blends_over_splodges_while_both_move() -> None:
 
 def test_edge_shades_really_mix() -> None:
     """An edge pixel over a splodge differs from the same shade over black: it is a blend."""
-    s = in_process()
+    s = RainbowMachine()
     tx.build(s.client, poly_at=(40, 40), splodge_at=(40, 40))
     s.client.wait_frame()
     shade = coverage(tx.polygon_points(), tx.POLY_W, tx.POLY_H, levels=32)

@@ -161,9 +161,9 @@ def test_virtual_pads_page_counts_in_a_tie() -> None:
 
 # -- 8. last_frame is one reused buffer; frame_copy() is a snapshot ------------------------
 def test_frame_copy_survives_later_frames() -> None:
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
 
-    s = in_process()
+    s = RainbowMachine()
     c = s.client
     c.set_lut(0, ["#000000", "#ff0000"])
     pad = c.create_pad(10, 10, 1)

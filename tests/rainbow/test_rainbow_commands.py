@@ -83,21 +83,21 @@ def test_bad_tablet_source_is_a_clear_error(capsys) -> None:
 
 
 def test_demo_menu_by_mouse() -> None:
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
     from camlab88.protocols.rainbow.demo import MENU_ITEMS, Demo
     from camlab88.protocols.rainbow.events import MIDDLE, MouseEvent
     from camlab88.protocols.rainbow.ui.menu import ROW_H
 
-    s = in_process()
+    s = RainbowMachine()
     demo = Demo(s.client)
     demo.step()
-    s.inject(MouseEvent(0, 600, 200, MIDDLE, 2, True))
+    s.post(MouseEvent(0, 600, 200, MIDDLE, 2, True))
     demo.step()
     assert demo.menu.open_ and demo.menu.highlighted == MENU_ITEMS.index("Do nothing")
     # move up to "Faster" (two rows above 'Do nothing'), release
-    s.inject(MouseEvent(0, 600, 200 - 2 * ROW_H, MIDDLE))
+    s.post(MouseEvent(0, 600, 200 - 2 * ROW_H, MIDDLE))
     demo.step()
-    s.inject(MouseEvent(0, 600, 200 - 2 * ROW_H, 0, 2, False))
+    s.post(MouseEvent(0, 600, 200 - 2 * ROW_H, 0, 2, False))
     demo.step()
     assert not demo.menu.open_ and demo.speed == 1.5
     assert demo.msg.text == "Selected: Faster"

@@ -9,8 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from camlab88.emulator.rainbow import Rainbow
-from camlab88.emulator.rainbow.session import in_process
+from camlab88.emulator.machine import RainbowMachine
 from camlab88.protocols.rainbow import shelf
 from tests.support.golden import assert_matches_golden
 
@@ -46,7 +45,7 @@ def _expected(s, demo: shelf.ShelfDemo) -> np.ndarray:
                    "are reconstructed)")
 @pytest.mark.parametrize("strict", [False, True])
 def test_sliding_apart_moves_only_arcs(strict: bool) -> None:
-    s = in_process(Rainbow(strict=strict))
+    s = RainbowMachine(strict_memory=strict)
     demo = shelf.ShelfDemo(s.client)
     demo.step()
     words = s.device.memory.words.copy()
@@ -72,7 +71,7 @@ def test_sliding_apart_moves_only_arcs(strict: bool) -> None:
 
 
 def test_slid_apart_matches_golden() -> None:
-    s = in_process()
+    s = RainbowMachine()
     demo = shelf.ShelfDemo(s.client)
     demo.t = 59  # 60 of the 200-frame cycle: well apart
     demo.step()
@@ -96,7 +95,7 @@ def test_table_blends_translucent_faces_and_keeps_outlines_opaque() -> None:
 
 
 def test_components_occupy_their_own_planes_at_one_priority() -> None:
-    s = in_process()
+    s = RainbowMachine()
     demo = shelf.ShelfDemo(s.client)
     g = s.device.graph
     pads = [g.pad(demo.shelf.pads[n]) for n in shelf.COMPONENTS]
@@ -114,7 +113,7 @@ def test_rainbow_run_demo_shelf(tmp_path) -> None:
     shot = tmp_path / "shelf.png"
     assert main(["rainbow", "run", "--demo", "shelf", "--headless", "--stop-after", "3",
                  "--screenshot", str(shot)]) == 0
-    s = in_process()
+    s = RainbowMachine()
     demo = shelf.ShelfDemo(s.client)
     for _ in range(3):
         demo.step()

@@ -10,9 +10,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from camlab88.emulator.machine import RainbowMachine
 from camlab88.emulator.rainbow import Rainbow, VideoMemory
 from camlab88.emulator.rainbow.executor import Executor
-from camlab88.emulator.rainbow.session import in_process, replay_on
 from camlab88.protocols.rainbow import MouseEvent, RainbowClient, RainbowRefused, SocketTransport
 from camlab88.protocols.rainbow.events import KeyEvent, TabletEvent, decode_events, encode_event
 from camlab88.protocols.rainbow.recording import Recording
@@ -87,7 +87,7 @@ def test_events_round_trip() -> None:
 
 
 def test_refusals_carry_the_reason() -> None:
-    c = in_process().client
+    c = RainbowMachine().client
     with pytest.raises(RainbowRefused, match="cycle"):
         a = c.create_cluster(10, 10)
         b = c.create_cluster(10, 10)
@@ -120,25 +120,26 @@ def test_socket_transport_drives_the_same_device() -> None:
 
 
 def test_record_and_replay(tmp_path) -> None:
-    s = in_process(record=True)
+    s = RainbowMachine(record=True)
     c = s.client
     p = c.create_pad(100, 100, 8)
     c.map(0, p, 5, 5)
     c.set_lut(0, [(i, 255 - i, i // 2) for i in range(256)])
-    s.inject(MouseEvent(0, 30, 40, 0))
+    s.post(MouseEvent(0, 30, 40, 0))
     c.circle(p, 50, 50, 30, 77)
     c.wait_frame()
-    s.inject(MouseEvent(0, 31, 41, 2, 2, True))
+    s.post(MouseEvent(0, 31, 41, 2, 2, True))
     events = c.poll_events()
     assert [e.t_ms for e in events] == [0, 20]
     c.polygon(p, [(0, 0), (90, 10), (40, 80)], 200)
     c.wait_frame()
     path = tmp_path / "session.rec"
-    s.recorder.recording.save(path)
-    device, result = replay_on(Recording.load(path))
+    s.recording.save(path)
+    again = RainbowMachine()
+    result = again.replay(Recording.load(path))
     assert result.mismatches == [] and result.commands > 5 and result.events == 2
-    assert np.array_equal(device.peek(), s.device.peek())
-    assert np.array_equal(device.memory.words, s.device.memory.words)
+    assert np.array_equal(again.frame(), s.frame())
+    assert np.array_equal(again.device.memory.words, s.device.memory.words)
 
 
 def test_bad_recording_names_the_line(tmp_path) -> None:
@@ -158,12 +159,12 @@ def test_docs_op_table_matches_the_code() -> None:
 
 
 def test_keyboard_and_tablet_events_reach_the_program_in_order() -> None:
-    s = in_process()
-    s.inject(KeyEvent(0, "a", "a", True))
+    s = RainbowMachine()
+    s.post(KeyEvent(0, "a", "a", True))
     s.client.wait_frame()
     s.client.wait_frame()
-    s.inject(TabletEvent(0, 1200, 800, 700, 1, True))
-    s.inject(KeyEvent(0, "a", "", False))
+    s.post(TabletEvent(0, 1200, 800, 700, 1, True))
+    s.post(KeyEvent(0, "a", "", False))
     got = s.client.poll_events(limit=2)
     assert got == [KeyEvent(0, "a", "a", True), TabletEvent(40, 1200, 800, 700, 1, True)]
     assert s.client.poll_events() == [KeyEvent(40, "a", "", False)]
@@ -171,10 +172,10 @@ def test_keyboard_and_tablet_events_reach_the_program_in_order() -> None:
 
 
 def test_draining_the_event_queue_polls_again_while_a_reply_comes_back_full() -> None:
-    s = in_process()
+    s = RainbowMachine()
     keys = [KeyEvent(0, chr(ord("a") + i), "", True) for i in range(5)]
     for k in keys:
-        s.inject(k)
+        s.post(k)
     assert list(s.client.drain_events(limit=2)) == keys  # replies of 2, 2 and 1 events
     assert list(s.client.drain_events(limit=2)) == []
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from camlab88.emulator.rainbow.session import in_process
+from camlab88.emulator.machine import RainbowMachine
 from camlab88.protocols.rainbow import SCREEN
 from camlab88.protocols.rainbow.ui import CrossMenu, DoubleBuffer, MessageArea, PopupMenu, SuperPad
 from camlab88.protocols.rainbow.ui.menu import ROW_H
@@ -16,7 +16,7 @@ def _rgb(hexs: str) -> list[int]:
 
 
 def test_double_buffered_animation_shows_only_whole_frames() -> None:
-    s = in_process()
+    s = RainbowMachine()
     c = s.client
     c.set_lut(0, ["#000000", "#ffffff"])
     db = DoubleBuffer(c, SCREEN, 200, 100, 1, x=50, y=50)
@@ -26,12 +26,12 @@ def test_double_buffered_animation_shows_only_whole_frames() -> None:
         c.rect(db.back, step * 20, 10, 20, 20, 1)
         # half-way through drawing the next picture the screen still shows the old one
         c.wait_frame()
-        half = s.executor.last_frame[60:80, 50:250, 0] > 0
+        half = s.shown()[60:80, 50:250, 0] > 0
         if step:
             assert half.any() and not half[:, step * 20: step * 20 + 20].all()
         db.swap()
         c.wait_frame()
-        lit = np.flatnonzero(s.executor.last_frame[70, 50:250, 0] > 0)
+        lit = np.flatnonzero(s.shown()[70, 50:250, 0] > 0)
         shown.append((int(lit.min()), int(lit.max())))
         assert np.array_equal(s.executor.last_frame, s.device.reference())
     assert shown == [(i * 20, i * 20 + 19) for i in range(6)]
@@ -39,7 +39,7 @@ def test_double_buffered_animation_shows_only_whole_frames() -> None:
 
 
 def test_scrolling_menu_moves_pad_inside_smaller_cluster() -> None:
-    s = in_process()
+    s = RainbowMachine()
     c = s.client
     items = [f"Item {i}" for i in range(12)] + ["Do nothing"]
     menu = PopupMenu(c, items, visible_rows=5)
@@ -60,7 +60,7 @@ def test_scrolling_menu_moves_pad_inside_smaller_cluster() -> None:
     assert seen[-1] == 0 and seen[0] > 5
     assert all(b in (a, a - 1) for a, b in zip(seen, seen[1:]))
     # the window (cluster) stayed 5 rows high: nothing of the menu below it
-    lit = np.flatnonzero(np.any(s.executor.last_frame[:, 300] != 0, axis=-1))
+    lit = np.flatnonzero(np.any(s.shown()[:, 300] != 0, axis=-1))
     assert lit.max() - lit.min() + 1 == 5 * ROW_H
     # and back down
     for _ in range(200):
@@ -74,7 +74,7 @@ def test_scrolling_menu_moves_pad_inside_smaller_cluster() -> None:
 
 
 def test_cross_menu_chooses_by_direction() -> None:
-    s = in_process()
+    s = RainbowMachine()
     c = s.client
     items = {"centre": "Finish editing", "up": "Step up", "down": "Step down",
              "left": "Set to value", "right": "Pick up colour"}
@@ -95,12 +95,12 @@ def test_cross_menu_chooses_by_direction() -> None:
 
 
 def test_message_area_colour_and_text() -> None:
-    s = in_process()
+    s = RainbowMachine()
     c = s.client
     msg = MessageArea(c, 10, 10, 200, 30, lut_page=3)
     msg.show("Move ball", "#ffc0cb")
     c.wait_frame()
-    f = s.executor.last_frame[10:40, 10:210]
+    f = s.shown()[10:40, 10:210]
     assert (f == _rgb("#ffc0cb")).all(axis=-1).sum() > 3000  # pink paper
     assert (f == 0).all(axis=-1).sum() > 20  # black writing
     msg.hide()
@@ -114,7 +114,7 @@ def world(wx: np.ndarray, wy: np.ndarray) -> np.ndarray:
 
 
 def test_four_times_mapped_panning() -> None:
-    s = in_process()
+    s = RainbowMachine()
     c = s.client
     c.set_lut(0, ["#202020", "#e0e0e0", "#ff0000", "#ff8080"])
     view = c.create_cluster(752, 576)
@@ -135,10 +135,36 @@ def test_four_times_mapped_panning() -> None:
         c.wait_frame()
         yy, xx = np.mgrid[sp.vy: sp.vy + 576, sp.vx: sp.vx + 752]
         want = lut[world(xx, yy)]
-        got = s.executor.last_frame[:, :752]
+        got = s.shown()[:, :752]
         assert np.array_equal(got, want), (dx, dy)
         # only the newly exposed strips were drawn
         if abs(dx) < 752 and abs(dy) < 576:
             exposed = 752 * 576 - (752 - abs(dx)) * (576 - abs(dy))
             assert sp.drawn_pixels - drawn == exposed
     assert np.array_equal(s.executor.last_frame, s.device.reference())
+
+
+def test_a_pop_up_menu_is_pastel_with_a_white_border_and_black_writing() -> None:
+    """§6.2.1: "pastel colours", a white border, black writing; the item under the
+    invisible cursor turns to its own pastel colour."""
+    s = RainbowMachine()
+    c = s.client
+    items = ["Pot", "Place", "Do nothing"]
+    menu = PopupMenu(c, items)
+    menu.open(300, 300)
+    c.wait_frame()
+    box = s.shown()[menu.y: menu.y + menu.window_h, menu.x: menu.x + menu.width]
+    colours = {tuple(int(v) for v in px) for px in box.reshape(-1, 3)}
+    item = _rgb(menu.colour)
+    lit = _rgb(menu.highlights[2])  # 'Do nothing', highlighted first
+    assert colours == {(255, 255, 255), (0, 0, 0), tuple(item), tuple(lit)}
+    assert (box[0] == 255).all() and (box[:, 0] == 255).all()  # the white border
+    assert (box[ROW_H * 2 + 9, 2: menu.width - 2] == lit).all(axis=-1).sum() > 10
+    for rgb in [item] + [_rgb(h) for h in menu.highlights]:
+        value, chroma = max(rgb), max(rgb) - min(rgb)
+        assert value >= 230 and 0.15 <= chroma / value <= 0.45  # pastel: bright, pale hue
+    menu.track(menu.x + 20, menu.y + 5)  # the cursor passes over 'Pot'
+    c.wait_frame()
+    box = s.shown()[menu.y: menu.y + menu.window_h, menu.x: menu.x + menu.width]
+    assert (box[9] == _rgb(menu.highlights[0])).all(axis=-1).sum() > 10
+    assert (box[ROW_H * 2 + 9] == lit).all(axis=-1).sum() == 0  # back to the menu colour

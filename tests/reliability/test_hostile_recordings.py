@@ -30,11 +30,11 @@ def _with_argv(tmp_path: Path, argv: list[str], base: str = "sigma_run.session",
 
 
 def _actions(parser: argparse.ArgumentParser, prefix: tuple[str, ...] = ()):
-    for action in parser._actions:
-        if isinstance(action, argparse._SubParsersAction):
-            for name, sub in action.choices.items():
-                yield from _actions(sub, (*prefix, name))
-    if len(prefix) == 2:
+    areas = [a for a in parser._actions if isinstance(a, argparse._SubParsersAction)]
+    for action in areas:
+        for name, sub in action.choices.items():
+            yield from _actions(sub, (*prefix, name))
+    if len(prefix) == 2 or (len(prefix) == 1 and not areas):  # demo: an area one command
         yield prefix, parser
 
 
@@ -48,6 +48,7 @@ def test_the_programs_are_those_with_record_and_each_option_has_a_replay_class()
     tables = programs()
     assert set(recordable) == set(tables)
     assert ("sigma", "run") in tables and ("snooker", "play") in tables
+    assert ("demo",) in tables  # an area that is one command
     for key, options in recordable.items():
         # an option added to a program without saying what a replay does with it (a replay
         # refuses it); sigma run's two newest are refused on purpose until a replay of them
@@ -72,7 +73,8 @@ def test_every_shipped_recording_is_allowed(name: str) -> None:
     (["snooker", "play", "--dask", "tcp://127.0.0.1:9"], "--dask: a replay renders"),
     (["rainbow", "serve", "--port", "0"], "'rainbow serve'"),
     (["link", "echo", "--listen", "0"], "'link echo'"),
-    (["demo", "--out", "/etc/camlab88"], "'demo"),
+    (["warm-up"], "'warm-up"),
+    (["demo", "--only", "sigma", "--listen", "5000"], "--listen: a replay opens no listener"),
     (["sigma", "run", "--tablet", "socket://127.0.0.1:9"], "--tablet"),
     (["sigma", "run", "--lis", "5000"], "option --lis"),  # an abbreviation argparse takes
     (["kas", "edit", "k.kas", "--events", "e.txt"], "option --events"),  # another program's
@@ -100,6 +102,10 @@ def test_outputs_move_into_the_scratch_directory_and_recorders_are_dropped() -> 
                         "r.session", "--listen", "5000", "--seconds", "3"])
     assert got == ["sigma", "run", "--headless", "--screenshot", "_out/1/shadow",
                    "--frames", "_out/3/x", "--seconds", "3"]
+    # an area that is one command (demo): its options start after its one word
+    assert checked_argv(["demo", "--headless", "--only", "sigma", "--out", "/etc/x",
+                         "--record", "d.session"]) == \
+        ["demo", "--headless", "--only", "sigma", "--out", "_out/3/x"]
 
 
 class _Sockets:

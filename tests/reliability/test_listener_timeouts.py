@@ -120,9 +120,10 @@ def test_sigma_run_listen_hangs_up_on_half_an_order_after_its_order_timeout() ->
     finally:
         out, err = stop(proc)
     # 1 s of line time after the half order's last byte arrived; a busy line runs flat out
-    # (docs/api.md, "What paces what"), so its 10 bytes' 10/960 s may pass before the clock
-    # here starts
-    assert 1.0 - 10 / 960 - 0.005 <= waited <= 3.0, waited
+    # (docs/api.md, "What paces what"), so its 10 bytes' 10/960 s, and the server's read of
+    # them, may come before the clock here starts: the lower bound asks only "not at once"
+    # (a CI run measured 0.98455 s against a 0.98458 s bound)
+    assert 0.9 <= waited <= 3.0, waited
     assert "half an order unfinished for 1 s of line time" in err, err
 
 
@@ -139,7 +140,8 @@ def test_rainbow_serve_frame_timeout_from_the_command_line() -> None:
         assert proc.poll() is None  # still serving
     finally:
         stop(proc)
-    assert 1.0 <= waited <= 2.5, waited
+    # the server may read the half frame before the clock here starts
+    assert 0.9 <= waited <= 2.5, waited
 
 
 def test_a_silent_line_client_gives_way_to_a_newcomer_after_the_idle_timeout() -> None:

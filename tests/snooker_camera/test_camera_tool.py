@@ -14,7 +14,7 @@ from camlab88.apps.snooker.camera import motion
 from camlab88.apps.snooker.camera_tool import layout
 from camlab88.apps.snooker.camera_tool.editor import TextBuffer
 from camlab88.apps.snooker.camera_tool.tool import CameraTool
-from camlab88.emulator.rainbow.session import in_process
+from camlab88.emulator.machine import RainbowMachine
 from camlab88.protocols.rainbow.events import LEFT, KeyEvent, MouseEvent
 from tests.support.golden import assert_matches_golden
 
@@ -25,7 +25,7 @@ DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_camera"
 def tool(tmp_path: Path):
     script = tmp_path / "cam.ccl"
     shutil.copy(DATA / "thesis_example.ccl", script)
-    rb = in_process()
+    rb = RainbowMachine()
     t = CameraTool(rb.client, motion.load(DATA / "pink_shot.checkpoint"), script)
     t.step()
     return rb, t
@@ -34,7 +34,7 @@ def tool(tmp_path: Path):
 def keys(rb, text: str) -> None:
     for ch in text:
         name = {"\n": "return", " ": "space"}.get(ch, ch)
-        rb.inject(KeyEvent(0, name, "" if ch == "\n" else ch, True))
+        rb.post(KeyEvent(0, name, "" if ch == "\n" else ch, True))
 
 
 @pytest.mark.claim(
@@ -45,14 +45,14 @@ def keys(rb, text: str) -> None:
     verdict="agrees (built: the thesis only proposed it)")
 def test_an_edit_is_interpreted_at_once_and_the_view_follows(tool) -> None:
     rb, t = tool
-    rb.inject(KeyEvent(0, "tab", "", True))  # pause on frame 2
+    rb.post(KeyEvent(0, "tab", "", True))  # pause on frame 2
     t.step()
     before = rb.executor.frame_copy()
     assert t.result.observer[1].tolist() == [-5.5, 0.0, 2.5]
     t.buf.place(2, 0)  # "observer at camera 1;" -> "observer at camera 5;"
     t.buf.end()
     for _ in range(2):
-        rb.inject(KeyEvent(0, "backspace", "", True))
+        rb.post(KeyEvent(0, "backspace", "", True))
     keys(rb, "5;")
     t.step()
     assert t.result.observer[1].tolist() == [5.5, 0.0, 2.5] and t.modified
@@ -93,9 +93,9 @@ def test_a_disk_change_does_not_overwrite_unsaved_edits(tool) -> None:
     os.utime(t.path, ns=(1, 2))
     t.step()
     assert t.buf.text.startswith("x:") and "ctrl-r reloads" in t.status
-    rb.inject(KeyEvent(0, "ctrl", "", True))
-    rb.inject(KeyEvent(0, "r", "", True))
-    rb.inject(KeyEvent(0, "ctrl", "", False))
+    rb.post(KeyEvent(0, "ctrl", "", True))
+    rb.post(KeyEvent(0, "r", "", True))
+    rb.post(KeyEvent(0, "ctrl", "", False))
     t.step()
     assert t.buf.text == ":focal length of 200\n" and t.result.focal[5] == 200
 
@@ -103,8 +103,8 @@ def test_a_disk_change_does_not_overwrite_unsaved_edits(tool) -> None:
 def test_ctrl_s_saves_atomically_and_is_not_seen_as_a_change(tool) -> None:
     rb, t = tool
     keys(rb, "A comment ")
-    rb.inject(KeyEvent(0, "ctrl", "", True))
-    rb.inject(KeyEvent(0, "s", "", True))
+    rb.post(KeyEvent(0, "ctrl", "", True))
+    rb.post(KeyEvent(0, "s", "", True))
     t.step()
     assert t.path.read_text().startswith("A comment :") and not t.modified
     n = t.interpretations
@@ -116,14 +116,14 @@ def test_scrub_on_the_time_line_and_step_keys(tool) -> None:
     rb, t = tool
     y = layout.TIMELINE[1] + 20
     x = layout.TIMELINE[0] + layout.timeline_x(44, 75)
-    rb.inject(MouseEvent(0, x, y, LEFT, 1, True))
+    rb.post(MouseEvent(0, x, y, LEFT, 1, True))
     t.step()
     assert t.frame == 44 and not t.playing
-    rb.inject(MouseEvent(0, x + 100, y, LEFT))  # dragging
+    rb.post(MouseEvent(0, x + 100, y, LEFT))  # dragging
     t.step()
     assert t.frame == layout.timeline_frame(x + 100, 75)
-    rb.inject(MouseEvent(0, x + 100, y, 0, 1, False))
-    rb.inject(KeyEvent(0, "page_up", "", True))
+    rb.post(MouseEvent(0, x + 100, y, 0, 1, False))
+    rb.post(KeyEvent(0, "page_up", "", True))
     t.step()
     assert t.frame == layout.timeline_frame(x + 100, 75) - 1
 
@@ -134,7 +134,7 @@ def test_timeline_marks_the_strike_and_the_tool_screen(tool) -> None:
     tl = rb.client.get_pixels(t.timeline.pad, 0, 0, *layout.TIMELINE[2:])
     x = layout.timeline_x(44, 75)
     assert (tl[6:42, x] == 2).all()  # the strike's red tick
-    rb.inject(MouseEvent(0, layout.timeline_x(50, 75), layout.TIMELINE[1] + 5, LEFT, 1, True))
+    rb.post(MouseEvent(0, layout.timeline_x(50, 75), layout.TIMELINE[1] + 5, LEFT, 1, True))
     t.step()
     assert_matches_golden(rb.executor.last_frame, DATA / "golden" / "camera_tool_050.png")
 

@@ -10,7 +10,7 @@ from pathlib import Path
 from camlab88.apps.snooker.camera import motion
 from camlab88.apps.snooker.camera_tool import fit, layout
 from camlab88.apps.snooker.camera_tool.tool import CameraTool
-from camlab88.emulator.rainbow.session import in_process
+from camlab88.emulator.machine import RainbowMachine
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_camera"
 
@@ -49,7 +49,7 @@ def test_the_script_pane_scrolls_sideways_to_a_long_lines_end_and_clicks_follow(
     shutil.copy(DATA / "thesis_example.ccl", script)
     long = "{ " + "a long comment " * 8 + "}"
     script.write_text(long + "\n" + script.read_text())
-    t = CameraTool(in_process().client, motion.load(DATA / "pink_shot.checkpoint"), script)
+    t = CameraTool(RainbowMachine().client, motion.load(DATA / "pink_shot.checkpoint"), script)
     t.step()
     t.buf.place(0, len(long))
     t.reinterpret()

@@ -131,9 +131,9 @@ def test_periods_and_the_session_file_give_the_same(result: ccl.Interpretation) 
     verdict="agrees")
 def test_the_demo_plays_the_example_as_printed() -> None:
     from camlab88.apps.snooker.visualiser.demo import EXAMPLE_SCRIPT, play_example
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
 
     assert EXAMPLE_SCRIPT == (DATA / "thesis_example.ccl").read_text()
-    rb = in_process()
+    rb = RainbowMachine()
     shown: list[int] = []
     assert play_example(rb.client, shown.append) == 75 and shown == list(range(1, 76))

@@ -14,7 +14,7 @@ from camlab88.apps.snooker.camera import ccl, motion
 from camlab88.apps.snooker.camera.views import View
 from camlab88.apps.snooker.visualiser import display as vdisplay
 from camlab88.apps.snooker.visualiser.program import FILM_TOP, MASK, ViewsError, Visualiser
-from camlab88.emulator.rainbow.session import in_process
+from camlab88.emulator.machine import RainbowMachine
 from camlab88.protocols.rainbow.client import parse_colour
 from tests.snooker_camera.helpers import R, make, still
 from tests.support.golden import assert_matches_golden
@@ -39,7 +39,7 @@ def colour_mask(frame: np.ndarray, colour: str) -> np.ndarray:
 
 
 def shown(motion_, views):
-    rb = in_process()
+    rb = RainbowMachine()
     vis = Visualiser(rb.client, motion_, views)
     vis.step()
     return rb, vis
@@ -111,7 +111,7 @@ def test_double_buffering_and_table_redrawn_only_when_the_view_changes() -> None
     same = ((-4.0, 0.0, 2.0), (0.0, 0.0, 0.0), 50.0)
     views = [View(1, *same), View(2, *same), View(3, *same), View(4, (-4.0, 0.5, 2.0),
                                                                 (0.0, 0.0, 0.0), 50.0)]
-    rb = in_process()
+    rb = RainbowMachine()
     vis = Visualiser(rb.client, make(c), views)
     d = vis.display
     fronts = []
@@ -131,7 +131,7 @@ def test_double_buffering_and_table_redrawn_only_when_the_view_changes() -> None
 
 def test_view_file_longer_than_the_motion_is_refused() -> None:
     with pytest.raises(ViewsError, match="goes to frame 3 but the motion has only 2 frames"):
-        Visualiser(in_process().client, make(still(2)),
+        Visualiser(RainbowMachine().client, make(still(2)),
                    [View(f, (1.0, 0, 1), (0.0, 0, 0), 50.0) for f in (1, 2, 3)])
 
 
@@ -139,7 +139,7 @@ def test_view_file_longer_than_the_motion_is_refused() -> None:
 def test_golden_frames_of_the_thesis_example(frame: int) -> None:
     m = motion.load(DATA / "pink_shot.checkpoint")
     r = ccl.compile_script((DATA / "thesis_example.ccl").read_text(), m)
-    rb = in_process()
+    rb = RainbowMachine()
     vis = Visualiser(rb.client, m, r.views())
     vis.index = frame - 1
     vis.playing = False
@@ -150,7 +150,7 @@ def test_golden_frames_of_the_thesis_example(frame: int) -> None:
 def test_frames_are_reported_numbered_as_the_checkpoint() -> None:
     m = motion.load(DATA / "pink_shot.checkpoint")
     r = ccl.compile_script((DATA / "thesis_example.ccl").read_text(), m)
-    rb = in_process()
+    rb = RainbowMachine()
     seen: list[int] = []
     n = Visualiser(rb.client, m, r.views()[:6]).play_through(seen.append)
     assert n == 6 and seen == [1, 2, 3, 4, 5, 6]

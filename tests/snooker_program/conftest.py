@@ -9,6 +9,6 @@ DATA = Path(__file__).resolve().parents[1] / "data" / "snooker_program"
 
 @pytest.fixture
 def rainbow():
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
 
-    return in_process()
+    return RainbowMachine()

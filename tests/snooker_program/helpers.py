@@ -15,7 +15,7 @@ def feed(rb, program: Program, text: str) -> None:
     player = script_events.Player(script_events.parse(text, start=program.mouse or (0, 0)))
     while not player.finished:
         for e in player.due():
-            rb.inject(e)
+            rb.post(e)
         program.step()
 
 

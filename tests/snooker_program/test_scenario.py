@@ -19,16 +19,16 @@ from tests.support.golden import assert_matches_golden
 
 @pytest.fixture(scope="module")
 def run():
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
 
-    rb = in_process()
+    rb = RainbowMachine()
     program = Program(rb.client)
     player = script_events.Player(script_events.load(DATA / "scenario.events"))
     trace: list[dict] = []
     frames: dict[str, np.ndarray] = {}
     while not player.finished:
         for e in player.due():
-            rb.inject(e)
+            rb.post(e)
         program.step()
         s = program.session
         trace.append({"mode": program.mode, "cursor": s.cursor, "frame": s.frame_number,

@@ -32,9 +32,9 @@ EXIT = "move 300 430\nwait 1\npress middle\nglide 300 412 6\nwait 1\nrelease mid
 
 @pytest.fixture(scope="module")
 def played(tmp_path_factory):
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
 
-    rb = in_process()
+    rb = RainbowMachine()
     save = tmp_path_factory.mktemp("tc") / "game.json"
     program = Program(rb.client, save_to=save)
     feed(rb, program, BALL_SIZE + RESTITUTION)

@@ -115,10 +115,10 @@ def test_a_missing_state_file_is_named(tmp_path: Path, capsys) -> None:
 
 # --------------------------------------------------------------------------- the keys
 def _demo_harness(tmp_path: Path) -> Harness:
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
     from camlab88.protocols.rainbow.demo import Demo
 
-    session = in_process()
+    session = RainbowMachine()
     demo = Demo(session.client)
 
     def step() -> bool:

@@ -85,6 +85,7 @@ def test_default_emulated_tablet_is_summagraphics(host_for) -> None:
 def test_wacom_identification_queries(host_for) -> None:
     tablet, host = host_for("wacom4")
     reply = _ask(tablet, host, b"~#", b"\r")
+    assert reply.decode().strip() == "~#UD-1212-R00 V1.4-4"  # the ledger's model string
     assert wacom4.parse_model_reply(reply.decode().strip()).code == "UD"
     reply = _ask(tablet, host, b"~C\r", b"\r")
     assert wacom4.parse_coords_reply(reply.decode().strip()) == (15240, 15240)

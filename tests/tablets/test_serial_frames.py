@@ -169,6 +169,22 @@ def test_bitpad1_perq_report(pty_pair) -> None:
     (event,) = pty_pair.through(parser, b"1234,0567,2\n")
     assert (event.x, event.y, event.buttons) == (1234, 567, 1)  # table index 1 -> '2'
     assert make_parser("bitpad1").feed(b"0000,2200,0\n")[0].buttons == 0
+    # the emulated Bit Pad One writes the PERQ's form: four digits each, the flag, a LF
+    assert make_encoder("bitpad1").encode(TabletEvent(1234, 567, True, 1, tool="puck")) \
+        == b"1234,0567,2\n"
+
+
+def test_calcomp_is_1000_lines_per_inch_with_its_origin_lower_left() -> None:
+    m = make_parser("calcomp").model
+    assert (m.max_x, m.max_y, m.lines_per_inch, m.origin) == (11999, 11999, 1000.0,
+                                                               "lower-left")
+
+
+def test_bit_pads_are_11_inches_square_at_200_lines_per_inch() -> None:
+    for name in ("bitpad1", "bitpad2"):
+        m = make_parser(name).model
+        assert (m.max_x, m.max_y, m.lines_per_inch, m.origin) == (2200, 2200, 200.0,
+                                                                   "lower-left")
 
 
 # --- robustness, every protocol -------------------------------------------------------------
@@ -260,3 +276,20 @@ def test_line_setups() -> None:
     assert (cal.wire, cal.xoff_to_tablet, cal.rtscts) == ((8, "N", 1), False, False)
     with pytest.raises(ValueError, match="unknown tablet protocol"):
         line_setup("mouse")
+
+
+def test_wacom4_model_reply_version_is_after_the_last_v() -> None:
+    # the kernel takes the ROM version after the LAST 'V': a model field may hold a V too
+    identity = wacom4.parse_model_reply("~#CT-0045V02,V1.3-5,")
+    assert (identity.code, identity.version) == ("CT", (1, 3))
+
+
+def test_calcomp_stop_and_stream_commands() -> None:
+    enc = make_encoder("calcomp")
+    commands, rest = enc.split_commands(b"\x1b%JR1000,0\r\x1b%H\r")
+    assert (commands, rest) == ([b"JR1000,0", b"H"], b"")
+    for command in commands:
+        enc.answer(command)
+    assert not enc.streaming  # ESC%H: the stream stops
+    enc.answer(b"IR")
+    assert enc.streaming  # ESC%IR: it streams again

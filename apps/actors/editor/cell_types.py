@@ -7,7 +7,7 @@ too, so nothing in the file becomes unreachable."""
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from camlab88.apps.actors.model import DEFAULT_MATERIAL, Actor, Part
 
@@ -63,5 +63,4 @@ def with_profile(actor: Actor, profile: tuple[tuple[float, float], ...]) -> Acto
             parts[i] = new
     elif i is not None:
         del parts[i]
-    return Actor(actor.state, actor.name, actor.colour, actor.material, tuple(parts),
-                 actor.cycles, actor.phase)
+    return replace(actor, parts=tuple(parts))  # its cycles, phase and facing kept

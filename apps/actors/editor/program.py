@@ -179,8 +179,7 @@ class ActorEditor(AsksBeforeQuitting):
         values[row] = value
         a = self._editable()
         colour = (int(values[0]), int(values[1]), int(values[2]))
-        self.actors[a.state] = Actor(a.state, a.name, colour, Material(*values[3:]), a.parts,
-                                     a.cycles, a.phase)
+        self.actors[a.state] = replace(a, colour=colour, material=Material(*values[3:]))
         self.display.sliders.show(values)
         self.show_status()
 

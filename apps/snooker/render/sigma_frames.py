@@ -65,7 +65,7 @@ def render_staged(scene, views: Sequence, out: Path, mode: str, size: tuple[int,
     from camlab88.apps.snooker.render.sequence import render_sequence
     from camlab88.base.png import frame_path, write_png
 
-    out.mkdir(parents=True, exist_ok=True)
+    out.mkdir(exist_ok=True)  # one level: its parent was checked (the one output rule)
     stage = Path(tempfile.mkdtemp(prefix=".render-", dir=out))
     totals = LineTotals()
     try:

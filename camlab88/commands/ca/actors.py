@@ -98,10 +98,10 @@ def _run(path: str, types: list, rules: str, player, opts, tablet):
     from camlab88.emulator.harness import run
     from camlab88.emulator.harness.input_log import StartState
     from camlab88.emulator.harness.rainbow import RainbowTarget
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
     from camlab88.runopts import unattended
 
-    session = in_process(record=opts.record is not None)
+    machine = RainbowMachine(record=opts.record is not None)
     # the editor is made at the first tick, so a --load-state can give it the FILE its
     # session started from first (a save rewrites FILE)
     made: list[ActorEditor] = []
@@ -109,7 +109,7 @@ def _run(path: str, types: list, rules: str, player, opts, tablet):
 
     def editor() -> ActorEditor:
         if not made:
-            made.append(ActorEditor(session.client, path, types, rules,
+            made.append(ActorEditor(machine.client, path, types, rules,
                                     may_save=opts.screenshot is None,
                                     start=given[0] if given else None))
         return made[0]
@@ -120,7 +120,7 @@ def _run(path: str, types: list, rules: str, player, opts, tablet):
         ed = editor()
         ed.writes = not holding[0]
         if target.tablet is not None and not target.tablet.gone:
-            _poll_tablet(target.tablet, session, ed)
+            _poll_tablet(target.tablet, machine, ed)
         ed.frame()
         return not ed.finished
 
@@ -129,7 +129,7 @@ def _run(path: str, types: list, rules: str, player, opts, tablet):
         if made:
             made[0].writes = not on
 
-    target = RainbowTarget(session, step, "camlab88 ca actors", KEYS, player,
+    target = RainbowTarget(machine, step, "camlab88 ca actors", KEYS, player,
                            unattended(opts))
     target.asks_before_closing(lambda: editor().may_close())
     target.tablet = tablet
@@ -143,7 +143,7 @@ def _run(path: str, types: list, rules: str, player, opts, tablet):
 START = Record(exists=Bool(), text=Opt(Str(4 << 20)), error=Opt(Str(4096)))
 
 
-def _poll_tablet(tablet, session, editor) -> None:
+def _poll_tablet(tablet, machine, editor) -> None:
     """New tablet reports to the device's tablet input, the pen scaled to the tablet's
     range; a lost tablet is reported once and dropped."""
     from camlab88.rainbow_tablet import feed_tablet
@@ -152,7 +152,7 @@ def _poll_tablet(tablet, session, editor) -> None:
     if model is not None:
         editor.pen.extent = (max(1, model.max_x), max(1, model.max_y))
         editor.pen.flip = getattr(model, "origin", "upper-left") == "lower-left"
-    feed_tablet(COMMAND, tablet, session)
+    feed_tablet(COMMAND, tablet, machine)
 
 
 def _report(editor) -> int:

@@ -181,16 +181,16 @@ def _run(options, player, opts) -> dict:
     from camlab88.apps.ca.program.program import CAProgram
     from camlab88.emulator.harness import run
     from camlab88.emulator.harness.rainbow import RainbowTarget
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
 
-    session = in_process(record=opts.record is not None)
-    prog = CAProgram(session.client, options)
+    machine = RainbowMachine(record=opts.record is not None)
+    prog = CAProgram(machine.client, options)
 
     def step() -> bool:
         prog.frame()
         return not prog.finished
 
-    target = RainbowTarget(session, step, "camlab88 ca", KEYS, player, unattended(opts),
+    target = RainbowTarget(machine, step, "camlab88 ca", KEYS, player, unattended(opts),
                            program=prog)
     target.escape_is_a_key = True  # Esc closes a question, or finishes when none is open
     run(target, opts)

@@ -13,6 +13,7 @@ from pathlib import Path
 
 from camlab88.commands.demo.acts import ACTS, FPS, Act
 from camlab88.control_flags import add_control_options
+from camlab88.replay_policy import DROP, KEEP, SCRATCH
 
 __all__ = ["ACTS", "Act", "register"]
 COMMAND = "camlab88 demo"
@@ -30,17 +31,27 @@ none, or --headless, it writes every frame as PNG and one animated GIF per act i
 def register(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p = actions.add_parser("demo", help="play the demo session (all acts)",
                            description=DESCRIPTION)
-    p.add_argument("--headless", action="store_true", help="no window, write files")
-    p.add_argument("--out", default="camlab88-demo", type=Path,
-                   help="output directory when headless (default ./camlab88-demo)")
-    p.add_argument("--scale", default=1, type=int, help="window scale")
-    p.add_argument("--screenshot", type=Path,
-                   help="play unpaced, save the last screen of the last act and exit")
-    p.add_argument("--fast", action="store_true",
-                   help="do not pace to the wall clock: flat out (--speed X wins)")
+    shown = [
+        (p.add_argument("--headless", action="store_true", help="no window, write files"),
+         KEEP),
+        (p.add_argument("--out", default="camlab88-demo", type=Path,
+                        help="output directory when headless (default ./camlab88-demo)"),
+         SCRATCH),
+        (p.add_argument("--scale", default=1, type=int, help="window scale"), KEEP),
+        (p.add_argument("--screenshot", type=Path,
+                        help="play unpaced, save the last screen of the last act and exit"),
+         SCRATCH),
+        (p.add_argument("--fast", action="store_true",
+                        help="do not pace to the wall clock: flat out (--speed X wins)"), KEEP),
+        (p.add_argument("--record", type=Path, metavar="FILE",
+                        help="record the whole demo, every act, as one session (replay it "
+                             "with 'camlab88 replay FILE --check')"), DROP)]
+    for action, kind in shown:
+        action.replay, action.run_only = kind, True
     add_control_options(p)
     p.add_argument("--only", action="append", choices=ACT_NAMES, metavar="ACT",
-                   help=f"play only this act (repeatable): {', '.join(ACT_NAMES)}")
+                   help=f"play only this act (repeatable): {', '.join(ACT_NAMES)}"
+                   ).replay = KEEP  # which acts play: what the program does, not run-only
     p.set_defaults(handler=demo)
     return p
 
@@ -56,11 +67,15 @@ def play_acts(acts: list[Act], args: argparse.Namespace) -> int:
     F-keys) as on every program, the inspector following each act's device."""
     from camlab88.commands.demo.acts import Stage
     from camlab88.control_flags import controls_from_args
-    from camlab88.emulator.harness import Plugin, RunOptions, choose_headless, run
+    from camlab88.emulator.harness import Plugin, RunOptions, run
     from camlab88.emulator.harness.stream import ActSequence, ActWriters, FrameStream
+    from camlab88.runopts import check_output
 
-    headless = choose_headless(COMMAND, args.headless,
-                               f"writing every frame as PNG and a GIF per act into {args.out}")
+    headless = _headless(args)
+    if headless:  # the one output rule, before the work: --out is made one level, never more
+        from camlab88.runopts import check_output_dir
+
+        check_output_dir(COMMAND, args.out, "write the demo's frames to")
     controls = controls_from_args(args, COMMAND, headless)
     hold = not headless and args.screenshot is None
     streams = []
@@ -74,12 +89,26 @@ def play_acts(acts: list[Act], args: argparse.Namespace) -> int:
               flush=True)
 
     target = ActSequence(streams, COMMAND, KEYS, announce)
+    if args.record is not None:
+        check_output(COMMAND, args.record, "record to")
     opts = RunOptions(headless=headless, paced=not args.fast, scale=args.scale,
                       screenshot=args.screenshot, command=COMMAND, controls=controls,
-                      argv=list(getattr(args, "_argv", [])))
+                      record=args.record, argv=list(getattr(args, "_argv", [])))
     plugins: list[Plugin] = []
     if headless:
-        args.out.mkdir(parents=True, exist_ok=True)
+        args.out.mkdir(exist_ok=True)
         plugins.append(ActWriters(args.out, [(a.name, a.title) for a in acts], FPS, COMMAND))
     run(target, opts, plugins)
     return 0
+
+
+def _headless(args: argparse.Namespace) -> bool:
+    """The display rule; a replay plays as recorded (its own --headless decides the
+    window: Replay.adjust)."""
+    from camlab88.emulator.harness import choose_headless, replay
+
+    active = replay.active()
+    if active is not None:
+        return bool(active.rec.headless)
+    return choose_headless(COMMAND, args.headless,
+                           f"writing every frame as PNG and a GIF per act into {args.out}")

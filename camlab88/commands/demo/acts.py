@@ -20,12 +20,11 @@ def lockstep(run: Callable[[Callable[[Any], None]], object]) -> Iterator[Any]:
 
 
 class Stage:
-    """The device an act's frames come from, for the inspector: ``machine`` (a Sigma
-    machine) or ``session`` (a Rainbow session); ``time`` the act's device time."""
+    """The device an act's frames come from, for the inspector: ``machine`` (a Sigma or
+    Rainbow machine); ``time`` the act's device time."""
 
     def __init__(self) -> None:
         self.machine: Any = None
-        self.session: Any = None
         self.shown = 0
 
     def time(self) -> Any:
@@ -109,11 +108,11 @@ def snooker_frames(stage: Stage) -> Iterator[Any]:
     """The snooker program's replay on the Rainbow: a break simulated and shown (ball pads
     double-buffered over the table pad by LUT transparency)."""
     from camlab88.apps.snooker.program.demo import play_break
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
 
     def run(show: Callable[[Any], None]) -> None:
-        stage.session = in_process(on_frame=show)
-        play_break(stage.session.client, 4.0)
+        stage.machine = RainbowMachine(on_frame=show)
+        play_break(stage.machine.client, 4.0)
 
     yield from lockstep(run)
 
@@ -124,17 +123,17 @@ def ca_frames(stage: Stage) -> Iterator[Any]:
     from camlab88.apps.ca.program.demo import demo_events
     from camlab88.apps.ca.program.program import CAProgram, Options
     from camlab88.apps.ca.program.script_events import parse, play
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
 
-    session = stage.session = in_process()
-    program = CAProgram(session.client, Options(rules="life", pattern="gosper_gun"))
+    machine = stage.machine = RainbowMachine()
+    program = CAProgram(machine.client, Options(rules="life", pattern="gosper_gun"))
 
     def run(show: Callable[[Any], None]) -> None:
         def frame() -> None:
             program.frame()
-            show(session.executor.last_frame)
+            show(machine.shown())
 
-        play(parse(demo_events(60), "<ca demo>"), session.inject, frame,
+        play(parse(demo_events(60), "<ca demo>"), machine.post, frame,
              lambda: program.finished)
 
     yield from lockstep(run)
@@ -142,15 +141,15 @@ def ca_frames(stage: Stage) -> Iterator[Any]:
 
 def shelf_frames(stage: Stage) -> Iterator[Any]:
     """Appendix I's shelf unit: four pads slide apart and back (4 s); only arcs move."""
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
     from camlab88.protocols.rainbow.shelf import ShelfDemo
 
-    session = stage.session = in_process()
-    demo = ShelfDemo(session.client)
+    machine = stage.machine = RainbowMachine()
+    demo = ShelfDemo(machine.client)
     for _ in range(100):  # one slide apart and together again, at 25 frames a second
         demo.step()
         demo.step()  # the Rainbow's 50 Hz frames, two a demo frame
-        yield session.executor.last_frame.copy()
+        yield machine.shown().copy()
 
 
 def paint_frames(stage: Stage) -> Iterator[Any]:
@@ -182,12 +181,12 @@ def paint_frames(stage: Stage) -> Iterator[Any]:
 def snooker_camera_frames(stage: Stage) -> Iterator[Any]:
     """The thesis's example camera script over its shot, in the visualiser on the Rainbow."""
     from camlab88.apps.snooker.visualiser.demo import play_example
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
 
-    session = stage.session = in_process()
+    machine = stage.machine = RainbowMachine()
 
     def run(show: Callable[[Any], None]) -> None:
-        play_example(session.client, lambda _f: show(session.executor.last_frame))
+        play_example(machine.client, lambda _f: show(machine.shown()))
 
     yield from lockstep(run)
 

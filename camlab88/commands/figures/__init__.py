@@ -92,6 +92,8 @@ def _replay(args: argparse.Namespace, path: Path) -> int:
     ctx = Replay(rec, headless=headless, period=False, check=False, frames=None,
                  screenshot=None if shot is None else shot.resolve(), controls=controls)
     status, said = rerun(ctx)
+    if ctx.fault is not None:  # read again as it played, the recording failed its checks
+        return fail(COMMAND, ctx.fault)
     if ctx.runs == 0 or status != 0:
         return fail(COMMAND, f"{path}: the replay ended with exit status {status}: "
                     f"{said.strip()}", 1)
@@ -114,8 +116,9 @@ def _gallery(args: argparse.Namespace) -> int:
         return fail(COMMAND, f"no screen figure {args.number!r} (figures: {', '.join(known)})")
     chosen = list(known.values()) if args.number is None else [known[args.number]]
     out = args.html
-    if out.exists() and not out.is_dir():
-        return fail(COMMAND, f"cannot write the gallery to {out}: not a directory")
+    from camlab88.runopts import check_output_dir
+
+    check_output_dir(COMMAND, out, "write the gallery to")  # the one output rule: DIR one level
     try:
         entries = build(out, chosen, recording)
     except OSError as exc:

@@ -3,8 +3,11 @@
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 
-from camlab88.runopts import fail, progress
+from camlab88.runopts import check_output_dir, fail, progress
+
+COMMAND = "camlab88 kas plot"
 
 DESCRIPTION = """\
 Each frame at the given size (default the twelve-field, 12 x 8.75 inches) with registration \
@@ -32,7 +35,9 @@ def _plot(args: argparse.Namespace) -> int:
     targets = [(f, d) for f, d in (("hpgl", args.hpgl), ("svg", args.svg), ("pdf", args.pdf))
                if d]
     if not targets:
-        return fail("camlab88 kas plot", "give --hpgl DIR, --svg DIR and/or --pdf DIR")
+        return fail(COMMAND, "give --hpgl DIR, --svg DIR and/or --pdf DIR")
+    for fmt, d in targets:  # the one output rule, before the work: DIR is made one level
+        check_output_dir(COMMAND, Path(d), f"write the {fmt.upper()} plots to")
     try:
         if min(args.width, args.height) <= 0 or args.margin < 0:
             raise ValueError("sizes must be positive")
@@ -42,5 +47,5 @@ def _plot(args: argparse.Namespace) -> int:
             written = plot.plot_sequence(seq, d, fmt, size, progress(f"plot {fmt}"))
             print(f"{fmt}: {len(written)} file(s) in {d}")
     except (OSError, ValueError) as exc:
-        return fail("camlab88 kas plot", exc)
+        return fail(COMMAND, exc)
     return 0

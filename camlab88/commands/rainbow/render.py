@@ -57,13 +57,13 @@ def render(args: argparse.Namespace) -> int:
 
 
 def _inspect(args: argparse.Namespace, device, frame) -> int:
-    from camlab88.base.png import frame_path, write_png
+    from camlab88.base.png import frame_path, write_frame
     from camlab88.emulator.inspect import PANEL_WIDTH
     from camlab88.emulator.inspect.rainbow import RainbowPanel
 
     path = frame_path(args.inspect_out, 0)
     try:
-        write_png(RainbowPanel(device, PANEL_WIDTH)(frame), path)
+        write_frame(RainbowPanel(device, PANEL_WIDTH)(frame), args.inspect_out, 0)
     except OSError as exc:
         return fail(COMMAND, exc)
     print(f"wrote {path}")

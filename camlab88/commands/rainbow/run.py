@@ -56,8 +56,8 @@ def run(args: argparse.Namespace) -> int:
         _finish(args, target, tablet)
     if trace.failed or target is None:
         return 1
-    dev = target.session.device
-    print(f"{COMMAND}: {dev.frame_count} frames, {dev.compiler.stats.compiles} compiles")
+    machine = target.machine
+    print(f"{COMMAND}: {machine.frame_count} frames, {machine.compiles} compiles")
     return 0
 
 
@@ -70,35 +70,32 @@ def _finish(args: argparse.Namespace, target, tablet) -> None:
     if target.tablet is not None:
         target.tablet.close()
     if args.record_stream:
-        target.session.recorder.recording.save(args.record_stream)
+        target.machine.recording.save(args.record_stream)
         print(f"{COMMAND}: recorded the command stream to {args.record_stream}")
 
 
 def _target(args: argparse.Namespace, opts, tablet, trace):
     from camlab88.emulator.harness.rainbow import RainbowTarget
-    from camlab88.emulator.rainbow import Rainbow
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
     from camlab88.protocols.rainbow.demo import Demo
 
     record = bool(args.record_stream) or opts.record is not None
-    session = in_process(Rainbow(strict=args.strict), record=record)
+    machine = RainbowMachine(strict_memory=args.strict, record=record)
     if trace.sink is not None:  # from the first call the demo makes
-        from camlab88.emulator.rainbow.trace import RainbowTracer
-
-        session.executor.tracer = RainbowTracer(trace.sink, trace.strict)
+        machine.trace(trace.sink, trace.strict)
     if getattr(args, "demo", "pads") == "shelf":
         from camlab88.protocols.rainbow.shelf import ShelfDemo
 
-        demo = ShelfDemo(session.client)
+        demo = ShelfDemo(machine.client)
     else:
-        demo = Demo(session.client)
+        demo = Demo(machine.client)
 
     def step() -> bool:
         if target.tablet is not None and not target.tablet.gone:
-            feed_tablet(COMMAND, target.tablet, session)
+            feed_tablet(COMMAND, target.tablet, machine)
         demo.step()
         return True  # the demo runs until the window closes or --stop-after
 
-    target = RainbowTarget(session, step, "camlab88 Rainbow", KEYS, program=demo)
+    target = RainbowTarget(machine, step, "camlab88 Rainbow", KEYS, program=demo)
     target.tablet = tablet
     return target

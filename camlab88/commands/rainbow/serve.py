@@ -49,12 +49,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
 
 def serve(args: argparse.Namespace) -> int:
     from camlab88.emulator.harness import choose_headless
-    from camlab88.emulator.rainbow import Rainbow
-    from camlab88.emulator.rainbow.executor import Executor
+    from camlab88.emulator.machine import RainbowMachine
     from camlab88.emulator.rainbow.server import listen
-    from camlab88.emulator.rainbow.server import serve as serve_on
 
-    device = Rainbow(strict=args.strict)
     headless = choose_headless(COMMAND, args.headless, "serving without showing the frames")
     window = None if headless else _window(args.scale)
     try:
@@ -62,15 +59,14 @@ def serve(args: argparse.Namespace) -> int:
     except OSError as exc:
         return fail(COMMAND, f"port {args.port}: {exc.strerror}")  # cannot start: 2
     print(f"{COMMAND}: listening on 127.0.0.1:{sock.getsockname()[1]}", flush=True)
-    executor = Executor(device, _on_frame(window, device))
+    machine = RainbowMachine(strict_memory=args.strict)
+    machine.show_frames(_on_frame(window, machine))
     try:
         with open_trace(args, COMMAND, "the command stream") as trace:
             if trace.sink is not None:
-                from camlab88.emulator.rainbow.trace import RainbowTracer
-
-                executor.tracer = RainbowTracer(trace.sink, trace.strict)
-            serve_on(executor, sock, args.connections, frame_timeout=args.frame_timeout,
-                     idle_timeout=args.idle_timeout, session_time=args.session_time)
+                machine.trace(trace.sink, trace.strict)
+            machine.serve(sock, args.connections, frame_timeout=args.frame_timeout,
+                          idle_timeout=args.idle_timeout, session_time=args.session_time)
     finally:
         sock.close()
         if window is not None:
@@ -87,8 +83,8 @@ def _window(scale: int):
     return Window("camlab88 Rainbow (serving)", (768, 576), scale=scale)
 
 
-def _on_frame(window, device):
-    """Each frame the served program makes: shown, and window input sent to the device."""
+def _on_frame(window, machine):
+    """Each frame the served program makes: shown, and window input sent to the machine."""
     from camlab88.emulator.host_input import Quit
     from camlab88.emulator.rainbow.host_input import RainbowHostInput
 
@@ -103,5 +99,5 @@ def _on_frame(window, device):
                 raise KeyboardInterrupt
             dev = host.convert(ev)
             if dev is not None:
-                device.post_event(dev)
+                machine.post(dev)
     return on_frame

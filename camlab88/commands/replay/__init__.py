@@ -69,6 +69,7 @@ def replay(args: argparse.Namespace) -> int:
         return fail(COMMAND, exc)
     if args.html is not None:
         return _html(args, rec)
+    _check_outputs(args)
     headless = choose_headless(COMMAND, args.headless, "checking the screen hashes")
     ctx = Replay(rec, headless=headless, period=args.period, check=args.check,
                  frames=_abs(args.frames), screenshot=_abs(args.screenshot),
@@ -85,6 +86,18 @@ def replay(args: argparse.Namespace) -> int:
     return _verdict(args, ctx, status, said)
 
 
+def _check_outputs(args: argparse.Namespace) -> None:
+    """The one output rule (docs/exit_status.md) for the replay's own --screenshot and
+    --frames, before the work: the replayed program's checks are skipped under a replay,
+    and its writers make no directory but DIR itself."""
+    from camlab88.runopts import check_output, check_output_dir
+
+    if args.screenshot is not None:
+        check_output(COMMAND, args.screenshot, "save the screenshot to", (".png",))
+    if args.frames is not None:
+        check_output_dir(COMMAND, args.frames)
+
+
 def _name_written(ctx) -> None:
     """Every file and directory the replay wrote (--frames, --screenshot, --video,
     --inspect-out, --save-state, F12), one line each, as every other command names them:
@@ -97,7 +110,7 @@ def _html(args: argparse.Namespace, rec) -> int:
     """``--html OUT``: the session replayed headless into a web page."""
     from camlab88.replay_page.make import form_of, make_page
     from camlab88.replay_policy import ReplayRefused
-    from camlab88.runopts import check_output
+    from camlab88.runopts import check_output, check_output_dir
 
     others = [flag for flag, given in (("--seek", args.seek), ("--save-state", args.save_state),
               ("--load-state", args.load_state), ("--frames", args.frames),
@@ -110,8 +123,10 @@ def _html(args: argparse.Namespace, rec) -> int:
     if out.suffix.lower() in (".html", ".htm"):
         check_output(COMMAND, out, "write the page to")
     elif out.exists() and not out.is_dir():
-        return fail(COMMAND, f"cannot write the page to {args.html}: not a directory "
-                    "(name a .html file for a single page)")
+        return fail(COMMAND, f"cannot write the page to {args.html}: it is a file in the way, "
+                    "not a directory (name a .html file for a single page)")
+    else:  # the one output rule: DIR is made one level, in a directory that exists
+        check_output_dir(COMMAND, out, "write the page to")
     try:
         made = make_page(rec, args.recording, out, args.html_codec, check=args.check)
     except ReplayRefused as exc:
@@ -168,7 +183,7 @@ def _seek(args: argparse.Namespace, rec, ctx) -> int | None:
                     snapshot_every=Fraction(SNAPSHOT_EVERY), save=None, at=None)
     ahead = Replay(rec, headless=True, check=args.check, state=first, seeking=True)
     status, said = rerun(ahead)
-    if ahead.mismatch is not None or status != 0 or ahead.runs == 0:
+    if ahead.mismatch is not None or status != 0 or ahead.runs == 0 or ahead.fault:
         return _verdict(args, ahead, status, said)
     if first.seek_state is None:
         end = float(rec.end.time) if rec.end is not None else 0.0
@@ -185,6 +200,9 @@ def _abs(path: Path | None) -> Path | None:
 
 def _verdict(args: argparse.Namespace, ctx, status: int, said: str) -> int:
     name = args.recording
+    if ctx.fault is not None:  # read again as it played, the recording failed its checks
+        return fail(COMMAND, ctx.fault if ctx.fault.startswith(str(name)) else
+                    f"{name}: {ctx.fault}")
     if ctx.runs == 0:
         return fail(COMMAND, f"{name}: the recorded command ran no program "
                     f"({' '.join(ctx.rec.argv)}; exit status {status}){_said(said)}")

@@ -126,6 +126,10 @@ def _write_frames(machine, got, settings, period: Fraction, directory: Path) -> 
     except ValueError as exc:
         raise _die(str(exc)) from None
     count = 0
+    try:  # made one level, its parent checked before the work (the one output rule)
+        directory.mkdir(exist_ok=True)
+    except OSError as exc:
+        raise _die(f"cannot write frames to {directory}: {exc.strerror or exc}") from None
     for k in periods(machine, period):
         _png(machine.frame(), frame_path(directory, k))
         count += 1

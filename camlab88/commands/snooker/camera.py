@@ -65,7 +65,7 @@ def _run(shot, script, player, opts, plugins=()):
     from camlab88.apps.snooker.camera_tool.tool import CameraTool
     from camlab88.emulator.harness import run
     from camlab88.emulator.harness.rainbow import RainbowTarget
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
 
     class Target(RainbowTarget):
         """The script as read from disk during the run is outside input: recorded, and fed
@@ -79,7 +79,7 @@ def _run(shot, script, player, opts, plugins=()):
         def put_wire(self, data: bytes) -> None:
             tool.feed(data.decode("utf-8"))
 
-    rb = in_process(record=opts.record is not None)
+    rb = RainbowMachine(record=opts.record is not None)
     tool = CameraTool(rb.client, shot, script)
 
     def step() -> bool:

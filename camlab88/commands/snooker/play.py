@@ -67,9 +67,9 @@ def _run(args: argparse.Namespace, opts, restore, player):
     from camlab88.apps.snooker.program.program import Program
     from camlab88.emulator.harness import run
     from camlab88.emulator.harness.rainbow import RainbowTarget
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
 
-    rb = in_process(record=opts.record is not None)
+    rb = RainbowMachine(record=opts.record is not None)
     program = Program(rb.client, restore=restore, save_to=args.save or args.session,
                       restore_name=str(args.session))
 

@@ -45,7 +45,7 @@ def replay(args: argparse.Namespace) -> int:
     on = [[table.on_playing_area(x, y) for x, y in p] for p in pos]
     h = _run(pos, on, opts)
     print(f"{COMMAND}: {min(h.ticks, len(pos))} frames at 25 frames/s "
-          f"({h.target.session.device.frame_count} display frames, {len(pos) / 25:.2f} s)")
+          f"({h.target.machine.frame_count} display frames, {len(pos) / 25:.2f} s)")
     if opts.headless and not writes:  # headless play leaves nothing to see: say how
         print(f"{COMMAND}: headless, so nothing was shown or written; {OUTPUT_HINT}")
     return 0
@@ -55,9 +55,9 @@ def _run(pos, on, opts):
     from camlab88.apps.snooker.program.program import PositionReplay, Program
     from camlab88.emulator.harness import run
     from camlab88.emulator.harness.rainbow import RainbowTarget
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
 
-    rb = in_process(record=opts.record is not None)
+    rb = RainbowMachine(record=opts.record is not None)
     replay = PositionReplay(Program(rb.client), pos, on)
     target = RainbowTarget(rb, replay.step, "camlab88 snooker replay",
                            "Esc or close the window to quit", program=replay)

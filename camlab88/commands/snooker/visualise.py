@@ -64,13 +64,13 @@ def status(vis, target) -> str:
 
 def _run(shot, views, opts, frames_dir):
     from camlab88.apps.snooker.visualiser.program import Visualiser
-    from camlab88.base.png import frame_path, write_png
+    from camlab88.base.png import write_frame
     from camlab88.emulator.harness import run
     from camlab88.emulator.harness.loop import Plugin
     from camlab88.emulator.harness.rainbow import RainbowTarget
-    from camlab88.emulator.rainbow.session import in_process
+    from camlab88.emulator.machine import RainbowMachine
 
-    rb = in_process(record=opts.record is not None)
+    rb = RainbowMachine(record=opts.record is not None)
     vis = Visualiser(rb.client, shot, views)
     once = unattended(opts)
 
@@ -87,7 +87,7 @@ def _run(shot, views, opts, frames_dir):
 
         def on_frame(self, harness, frame) -> None:
             if frames_dir is not None and vis.drawn is not None and vis.drawn != self.written:
-                write_png(frame, frame_path(frames_dir, vis.views[vis.drawn].frame))
+                write_frame(frame, frames_dir, vis.views[vis.drawn].frame)
                 self.written = vis.drawn
                 self.count += 1  # named in the closing line
 

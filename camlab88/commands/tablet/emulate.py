@@ -10,7 +10,9 @@ DESCRIPTION = """\
 Open a window; the mouse drives a tablet that writes its protocol's bytes to a \
 pseudo-terminal (path printed) that any program can open as a serial port. Left button = tip, \
 right = barrel, middle = button 2; key o = out of proximity, e = eraser end. Needs a display \
-(the mouse), except with --demo."""
+(the mouse), except with --demo. The emulator's controls work as in every window: F1 the keys, \
+F5 pause / resume (the tablet sends nothing while paused), F6 one frame, F7 / F8 half / double \
+speed, F11 the inspector, F12 a screenshot, Esc or closing the window quits."""
 
 
 def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
