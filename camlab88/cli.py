@@ -141,10 +141,14 @@ def command_parser(parser: argparse.ArgumentParser,
 
 def run_only_flags(parser: argparse.ArgumentParser) -> dict[str, int]:
     """The options declared run-only (``action.run_only``: how a run is shown or recorded,
-    never what the program does), each with the number of values it takes (0 or 1): what a
-    save state's identity leaves out (emulator.harness.program_state)."""
+    never what the program does) and the outputs (``.replay = SCRATCH``: where it writes,
+    which the program rewrites as it runs), each with the number of values it takes (0 or
+    1): what a save state's identity leaves out (emulator.harness.program_state)."""
+    from camlab88.replay_policy import SCRATCH
+
     return {flag: 0 if action.nargs == 0 else 1 for action in parser._actions
-            if getattr(action, "run_only", False) for flag in action.option_strings}
+            if getattr(action, "run_only", False) or getattr(action, "replay", None) == SCRATCH
+            for flag in action.option_strings}
 
 
 def _bare(parser: argparse.ArgumentParser) -> int:

@@ -433,7 +433,11 @@ def parse_actors(text: str, source: str) -> ActorSet:
     return ActorSet(rules, actors)
 
 
+def read_actor_text(path: str | os.PathLike[str]) -> str:
+    """An actors file's text (UTF-8, at most MAX_FILE_BYTES): ActorFileError otherwise."""
+    return read_text(path, MAX_FILE_BYTES, ActorFileError)
+
+
 def read_actors(path: str | os.PathLike[str]) -> ActorSet:
     """Read and parse an actors file (UTF-8); every refusal is an ActorFileError."""
-    text = read_text(path, MAX_FILE_BYTES, ActorFileError)
-    return parse_actors(text, str(path))
+    return parse_actors(read_actor_text(path), str(path))

@@ -64,9 +64,13 @@ def declares_state(target: Any) -> bool:
 # ---------------------------------------------------------------------------- identity
 def identity(harness: Harness, version: str) -> dict[str, Any]:
     """What a state needs to be loaded: the program, the version, the shaping arguments."""
+    held = getattr(harness.target, "state_holds_files", ())  # (their content is in it)
+    argv = [IN_STATE if w in held else w for w in harness.options.argv]
     return {"program": harness.options.command, "camlab88": version,
-            "args": shaping_args(harness.options.argv, harness.options.inputs,
-                                 harness.options.run_only)}
+            "args": shaping_args(argv, harness.options.inputs, harness.options.run_only)}
+
+
+IN_STATE = "<a file the state holds>"
 
 
 def shaping_args(argv: list[str], extra: list[Path], run_only: dict[str, int]) -> list[str]:
@@ -216,7 +220,9 @@ def snapshot(harness: Harness) -> Snapshot:
     """The whole state now, in memory: the declared state where the target has one, else
     its object graph (base.objstate: in-process only)."""
     target = harness.target
-    if declares_state(target):
+    # a target whose declared state is its input log (input_log) would run from its start
+    # at every F4: its in-memory graph is faster
+    if declares_state(target) and not getattr(target, "snapshots_by_graph", False):
         parts: dict[str, bytes] = {}
         try:
             values: Any = ("declared", encode(target.STATE_SCHEMA, target.state_values(),

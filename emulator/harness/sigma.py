@@ -10,11 +10,13 @@ from typing import Any
 import numpy as np
 
 from camlab88.base.plainstate import Blob, Int, Record
+from camlab88.emulator.harness import input_log
 from camlab88.emulator.host_input import HostEvent
 from camlab88.emulator.machine import SigmaMachine
 from camlab88.emulator.machine.state_file import MachineStateError
 
 TICK = Fraction(1, 100)  # a program session's polling period: line time between polls
+MAX_PERIOD = 1 << 40  # a line test's periods (a year of 25 fps is < 2**30)
 
 
 class SigmaSessionRun:
@@ -73,6 +75,7 @@ class SigmaProgramTarget:
     fps = 25
     escape_is_a_key = True  # the KAS fronts: Esc cancels, or asks before quitting
     _state_exclude = ("on_input",)  # a replay's listener: kept as set, never saved
+    snapshots_by_graph = True  # F4 in memory: a declared state is rebuilt from the start
 
     def __init__(self, run: SigmaSessionRun, title: str, keys: str,
                  key_names: frozenset[str], script: list[Any], end_with_script: bool,
@@ -88,11 +91,13 @@ class SigmaProgramTarget:
         self._keys: list[str] = []
         self._buttons = 0
         self.on_input: Any = None  # told each scripted event as it is given (a web replay)
+        self.log = input_log.InputLog()
 
     def handle_events(self, events: list[HostEvent]) -> None:
         from camlab88.emulator.host_input import KeyDown, PointerButton, PointerMove
         from camlab88.protocols.tablets.input_layer import MouseSample
 
+        self.log.given(events)
         for ev in events:
             if isinstance(ev, KeyDown):
                 if ev.key in self.key_names:
@@ -111,12 +116,13 @@ class SigmaProgramTarget:
         if self.i < len(self.script):
             first = self.i
             mouse, keys, self.i = self.session.due(self.script, self.i)
-            if self.on_input is not None:
+            if self.on_input is not None and not self.log.rebuilding:
                 for ev in self.script[first:self.i]:
                     if ev.kind != "wait":
                         self.on_input(ev)
         self.run.step(mouse + self._mouse, keys + self._keys)
         self._mouse, self._keys = [], []
+        self.log.ticked()
         if getattr(self.session.front, "quitting", False):
             return False  # the program was asked to quit (Esc) and may
         return not (self.end_with_script and self.settled())
@@ -140,7 +146,48 @@ class SigmaProgramTarget:
         return self.run.machine.now
 
     def may_close(self) -> bool:
-        return bool(self.session.front.may_close())
+        ok = bool(self.session.front.may_close())
+        if not ok:  # the front asks back: part of the session's input
+            self.log.closing()
+        return ok
+
+    # its declared state (program_state): the input that made it (emulator.harness.
+    # input_log) and, where the command gives one (``start``), what the program started
+    # from that its own files no longer hold (kas edit: the keyframe, which F2 rewrites); a
+    # load runs a fresh session again with it, the program's writes held back
+    STATE_VERSION = 1
+    STATE_SCHEMA: Any = input_log.SCHEMA
+    start: input_log.StartState | None = None
+
+    def picture(self) -> str:
+        return input_log.picture_hash(self.frame(), self.run.machine.save_state())
+
+    def give_start(self, start: input_log.StartState) -> None:
+        self.start = start
+        self.STATE_SCHEMA = input_log.program_schema(start.schema)
+        self.state_holds_files = start.files
+
+    def state_values(self) -> dict[str, Any]:
+        if getattr(self.session.pointer_source, "live", False):
+            raise MachineStateError("a live tablet's input is not kept in a state")
+        values = self.log.values(self.picture())
+        return values if self.start is None else {"input": values,
+                                                  "start": self.start.values()}
+
+    def load_state_values(self, values: dict[str, Any]) -> None:
+        if self.start is not None:
+            if self.log.ticks:
+                raise MachineStateError("this program loads a state into a fresh run only")
+            self.start.load(values["start"])
+            values = values["input"]
+        front = self.session.front
+        front.rebuilding = True  # the front's saves write nothing while it runs again
+        try:
+            self.log.rebuild(values, self.handle_events, self.tick, self.may_close,
+                             self.picture)
+        finally:
+            front.rebuilding = False
+        self._sent_at = len(self.session.sent)  # a recording starts from here
 
     def wire(self) -> list[tuple[str, bytes]]:
         """The program's bytes to the terminal since the last call, and the tablet tape's
@@ -196,17 +243,30 @@ class PeriodTarget:
         return self.k / self._period
 
     # its declared state (program_state): the period reached and the machine's own
-    # versioned state; the program's generator is made again and run to that period
-    STATE_VERSION = 1
-    STATE_SCHEMA = Record(k=Int(0), machine=Blob())
+    # versioned state; the program's generator is made again and run to that period.
+    # Version 2: the period is ``period`` (version 1 called it ``k``) and bounded, so a
+    # state cannot ask for more periods than a run could reach (migrate_state reads 1)
+    STATE_VERSION = 2
+    STATE_SCHEMA = Record(period=Int(0, MAX_PERIOD), machine=Blob())
 
     def state_values(self) -> dict[str, Any]:
         if self.result is not None:
             raise MachineStateError("the line test has finished: nothing left to save")
-        return {"k": self.k, "machine": self.machine.save_state()}
+        return {"period": self.k, "machine": self.machine.save_state()}
+
+    @staticmethod
+    def migrate_state(version: int, values: Any) -> Any:
+        """An older version's values (JSON, not yet checked) as this version's: 1 -> 2
+        renames ``k`` to ``period`` (the schema then checks its new bound)."""
+        if version == 1:
+            if not isinstance(values, dict) or set(values) != {"k", "machine"}:
+                raise MachineStateError("state (version 1): its fields are not k and "
+                                        "machine")
+            return {"period": values["k"], "machine": values["machine"]}
+        raise MachineStateError(f"no migration from version {version}")
 
     def load_state_values(self, values: dict[str, Any]) -> None:
-        k, state = values["k"], values["machine"]
+        k, state = values["period"], values["machine"]
         self.machine.check_state(state)  # refused here: nothing has run
         at_start = self.k == 0 and self.result is None
         if at_start or (self.restart is None and k >= self.k and self.result is None):

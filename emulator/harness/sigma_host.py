@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from camlab88.emulator.harness import input_log
 from camlab88.emulator.harness.sigma_batch import settle
 from camlab88.emulator.host_input import HostEvent, KeyDown, PointerButton, PointerMove
 from camlab88.emulator.machine import SigmaMachine
@@ -23,6 +24,7 @@ from camlab88.emulator.machine import SigmaMachine
 
 class SigmaHostTarget:
     size = (768, 512)
+    snapshots_by_graph = True  # F4 in memory: a declared state is rebuilt from the start
 
     def __init__(self, machine: SigmaMachine, program: Any, title: str, keys: str,
                  dt: Fraction | None = Fraction(1, 25), fps: int = 25,
@@ -30,6 +32,7 @@ class SigmaHostTarget:
         self.machine, self.program = machine, program
         self.title, self.keys = title, keys
         self.dt, self.fps, self.on_tick = dt, fps, on_tick
+        self.log = input_log.InputLog()
 
     @property
     def on_input(self) -> Callable[[Any], None] | None:
@@ -44,6 +47,7 @@ class SigmaHostTarget:
 
     def handle_events(self, events: list[HostEvent]) -> None:
         p = self.program
+        self.log.given(events)
         for ev in events:
             if isinstance(ev, PointerMove | PointerButton) and hasattr(p, "pointer"):
                 p.pointer(ev.x, self.size[1] - 1 - ev.y)
@@ -54,6 +58,7 @@ class SigmaHostTarget:
                 p.key(ev.key, "shift" in ev.mods)
 
     def tick(self) -> bool:
+        self.log.ticked()
         if not self.program.step():
             return False
         if self.dt is None:
@@ -67,6 +72,21 @@ class SigmaHostTarget:
 
     def frame(self) -> np.ndarray:
         return self.machine.frame()
+
+    # its declared state (program_state): the input that made it (emulator.harness.
+    # input_log); a load runs the fresh program again with it (kas paint writes only at
+    # the end of its run, so nothing needs holding back)
+    STATE_VERSION = 1
+    STATE_SCHEMA = input_log.SCHEMA
+
+    def picture(self) -> str:
+        return input_log.picture_hash(self.frame(), self.machine.save_state())
+
+    def state_values(self) -> dict[str, Any]:
+        return self.log.values(self.picture())
+
+    def load_state_values(self, values: dict[str, Any]) -> None:
+        self.log.rebuild(values, self.handle_events, self.tick, lambda: None, self.picture)
 
     def time(self) -> Fraction:
         return self.machine.now

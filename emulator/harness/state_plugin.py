@@ -70,6 +70,7 @@ class StatePlugin(Plugin):
         self._next_snapshot = Fraction(0)
         self.written: list[Path] = []
         self.refused = False  # the run was refused at its start: nothing to say at its end
+        self._identity: dict | None = None
 
     # ------------------------------------------------------------------ start / end
     def start(self, harness: Harness) -> None:
@@ -79,6 +80,8 @@ class StatePlugin(Plugin):
             self.refused = True
             raise SystemExit(f"{harness.options.command}: {flag}: this program does not "
                              "declare its state yet, so it saves and loads none (F4 rewinds)")
+        if o.save is not None or o.load is not None:
+            self._identity = identity(harness, o.version)  # the inputs as the run began
         if o.load_data is not None:  # a seek: this process's own snapshot
             try:
                 self._next_snapshot = rewind(harness, o.load_data)
@@ -88,7 +91,7 @@ class StatePlugin(Plugin):
         elif o.load is not None:
             data = read_state_file(harness.options.command, Path(o.load))
             try:
-                when = load_program(data, harness, identity(harness, o.version))
+                when = load_program(data, harness, self._identity)
             except MachineStateError as exc:
                 raise SystemExit(f"{harness.options.command}: {o.load}: not loaded: "
                                  f"{exc}") from None
@@ -172,7 +175,7 @@ class StatePlugin(Plugin):
 
     def _load(self, harness: Harness, data: bytes, said: str) -> None:
         try:
-            when = load_program(data, harness, identity(harness, self.options.version))
+            when = load_program(data, harness, self._ident(harness))
         except MachineStateError as exc:
             _say(harness, f"not loaded: {exc}")
             return
@@ -199,7 +202,7 @@ class StatePlugin(Plugin):
         """Save to ``path``; a state that cannot be made or written is said in one line, and
         with ``asked`` (--save-state) the run ends with status 1 (docs/exit_status.md)."""
         try:
-            data = save_program(harness, identity(harness, self.options.version))
+            data = save_program(harness, self._ident(harness))
             write_atomic(path, data)
         except (MachineStateError, OSError) as exc:
             why = exc.strerror or exc if isinstance(exc, OSError) else exc
@@ -212,6 +215,13 @@ class StatePlugin(Plugin):
         self.last_saved = data
         self.written.append(path)
         tell_written(harness, f"saved state {path} (at {float(harness.target.time()):g} s)")
+
+    def _ident(self, harness: Harness) -> dict:
+        """The run's identity: its command line with its input files by content, hashed
+        once, when the run began (with --save-state or --load-state), or at the first F2."""
+        if self._identity is None:
+            self._identity = identity(harness, self.options.version)
+        return self._identity
 
     def _free_name(self, harness: Harness) -> Path:
         stem = "-".join(harness.options.command.split()[1:]) or "state"

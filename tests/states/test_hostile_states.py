@@ -53,6 +53,39 @@ def _kas_view(d: Path) -> list[str]:
     return ["kas", "view", "seq.kas", "--headless", "--every"]
 
 
+def _kas_edit(d: Path) -> list[str]:
+    inputs_of("tests/data/sessions/kas_edit.session", d)
+    return ["kas", "edit", "key.kas", "--script", "edit_all.txt", "--headless", "--seed", "1"]
+
+
+def _kas_path(d: Path) -> list[str]:
+    inputs_of("examples/figures/fig-3.6.session", d)
+    return ["kas", "path", "flag_a.kas", "flag_b.kas", "--out", "flag_path.kas",
+            "--no-library", "--headless", "--script", "fig-3.6.script"]
+
+
+def _kas_paint(d: Path) -> list[str]:
+    inputs_of("examples/figures/fig-3.7.session", d)
+    return ["kas", "paint", "face.kas", "--headless", "--script", "fig-3.7.script"]
+
+
+def _camera(d: Path) -> list[str]:
+    data = HERE.parent / "data" / "snooker_camera"
+    (d / "cam.ccl").write_bytes((data / "thesis_example.ccl").read_bytes())
+    (d / "shot.cp").write_bytes((data / "pink_shot.checkpoint").read_bytes())
+    (d / "e.events").write_text("wait 10\nkey down\ntype veiw\nwait 10\nkey down\n"
+                                "type xx\nwait 10\n")
+    return ["snooker", "camera", "cam.ccl", "shot.cp", "--headless", "--events", "e.events"]
+
+
+def _actors(d: Path) -> list[str]:
+    (d / "m.actors").write_text("rules maze\nactor 1 wall\n  colour 9 9 9\n  box 1 1 1\n"
+                                "end\n")
+    (d / "e.events").write_text("wait 5\nclick left 32 472\nwait 3\nkey s\nwait 3\n"
+                                "click left 96 300\nwait 5\n")
+    return ["ca", "actors", "m.actors", "--headless", "--events", "e.events"]
+
+
 def _events(argv: list[str]) -> Callable[[Path], list[str]]:
     def make(d: Path) -> list[str]:
         (d / "e.events").write_text("frames 2\nclick middle 400 300\nframes 2\n"
@@ -72,6 +105,14 @@ PROGRAMS: dict[str, tuple[Callable[[Path], list[str]], str]] = {
     "snooker-replay": (_replay, "0.2"),
     "ca-program": (_events(["ca", "program", "--headless", "--pattern", "glider"]), "0.1"),
     "kas-view": (_kas_view, "0.3"),
+    # the editors, whose state is their input log (emulator.harness.input_log); saved
+    # before their 10th frame, as the others (a recording from --load-state: its first
+    # screen hash must be frame 10's, session/parse.py)
+    "kas-edit": (_kas_edit, "0.3"),
+    "kas-path": (_kas_path, "0.3"),
+    "kas-paint": (_kas_paint, "0.3"),
+    "snooker-camera": (_camera, "0.15"),
+    "ca-actors": (_actors, "0.15"),
 }
 
 

@@ -118,9 +118,60 @@ def test_a_ca_state_saved_with_a_menu_held_continues(monkeypatch, tmp_path: Path
     assert_continues(monkeypatch, argv, at + 0.1, tmp_path / "c.c88state")
 
 
+def _populate_events() -> str:
+    from camlab88.apps.ca.program.demo import choose, leave_editing
+
+    return ("frames 3\n" + leave_editing() + choose("Randomly populate") +
+            "frames 2\nmove 350 300\nclick right 350 300\nframes 2\nmove 450 380\n"
+            "click right 450 380\nframes 20\ntype 0.5\nkey return\nframes 2\ntype 1:1\n"
+            "key return\nframes 6\n")
+
+
+@pytest.mark.parametrize(("at", "answered", "corner"), [(0.12, [], False), (0.16, [], True),
+                                                       (0.3, ["rect"], False)])
+def test_a_ca_state_saved_in_a_dialogue_continues(monkeypatch, tmp_path: Path, at: float,
+                                                  answered: list[str], corner: bool) -> None:
+    """Randomly populate, saved asking for the rectangle, with its first corner given, and
+    with the rectangle answered (the density asked): the dialogue is made again from its
+    name and answers through the program's own code and the script answers the rest."""
+    from camlab88.emulator.machine.state_file import unpack
+
+    (tmp_path / "e.events").write_text(_populate_events())
+    argv = ["ca", "program", "--headless", "--pattern", "glider", "--events",
+            str(tmp_path / "e.events")]
+    state = tmp_path / "c.c88state"
+    assert_continues(monkeypatch, argv, at, state)
+    head, _ = unpack(state.read_bytes(), "program")
+    dialogue = head["values"]["program"]["dialogue"]
+    assert dialogue["name"] == "Randomly populate"
+    assert [a["kind"] for a in dialogue["answers"]] == answered
+    assert (dialogue["corner"] is not None) == corner
+
+
+def test_a_ca_state_whose_answers_end_its_dialogue_is_refused(tmp_path: Path) -> None:
+    """A dialogue is only made again up to a question: answers that would end it (and so
+    act) are refused in one line."""
+    from camlab88.emulator.machine.state_file import pack, unpack
+
+    (tmp_path / "e.events").write_text(_populate_events())
+    argv = ["ca", "program", "--headless", "--pattern", "glider", "--events",
+            str(tmp_path / "e.events")]
+    state = tmp_path / "c.c88state"
+    assert main([*argv, "--save-state", str(state), "--at", "0.3"]) == 0
+    head, parts = unpack(state.read_bytes(), "program")
+    head["values"]["program"]["dialogue"]["answers"].append(
+        {"kind": "none", "text": "", "ints": []})  # cancels the density question: it ends
+    state.write_bytes(pack("program", head, parts))
+    with pytest.raises(SystemExit) as stop:
+        main([*argv, "--load-state", str(state)])
+    assert "the answers given end the dialogue 'Randomly populate'" in str(stop.value)
+    assert "\n" not in str(stop.value)
+
+
 def test_a_ca_state_is_not_saved_while_a_dialogue_runs(tmp_path: Path, capsys) -> None:
-    """A dialogue is a generator: made again only by running it, which could read files its
-    answers name. --save-state in one fails the run in one line naming the file (status 1)."""
+    """A dialogue that names files in its answers (Load pattern, Save pattern, Change rules)
+    or waits on a pop-up menu's choice is not made again from a state: --save-state in one
+    fails the run in one line naming the file (status 1)."""
     (tmp_path / "e.events").write_text(
         "frames 3\npress middle 400 300\nframes 3\nmove 370 300\nframes 3\n"
         "release middle 370 300\nframes 30\n")

@@ -225,7 +225,7 @@ def _period_state(data: bytes, k: Any = None, machine: bytes | None = None) -> b
     bare = {n: v for n, v in head.items() if n not in ("blobs", "format_version", "device")}
     values = dict(bare["values"])
     if k is not None:
-        values["k"] = k
+        values["period"] = k
     if machine is not None:
         blobs[values["machine"]] = machine
     return pack("program", dict(bare, values=values), blobs)

@@ -216,14 +216,49 @@ def test_at_without_save_state_is_refused() -> None:
         main([*RAINBOW, "--at", "1"])
 
 
-@pytest.mark.parametrize("flag", ["--save-state", "--load-state"])
-def test_a_program_that_declares_no_state_refuses_state_files_at_its_start(
+@pytest.mark.parametrize("flag", ["save", "load"])
+def test_a_target_that_declares_no_state_refuses_state_files_at_its_start(
         tmp_path: Path, flag: str) -> None:
-    """(kas edit, kas path, kas paint, the camera tool, the actors editor: issue 38.)"""
-    d = inputs_of("tests/data/sessions/kas_edit.session", tmp_path)
-    (d / "s.c88state").write_bytes(b"x")
-    run = _cli(["kas", "edit", "key.kas", "--headless", "--script", "edit_all.txt", "--seed",
-                "1", flag, "s.c88state"], d)
-    assert run.returncode == 2
-    lines = run.stderr.strip().splitlines()
-    assert len(lines) == 1 and f"{flag}: this program does not declare its state" in lines[0]
+    """(Every command's program declares one now: a harness target that does not.)"""
+    from tests.support.targets import Counter
+
+    state = tmp_path / "s.c88state"
+    state.write_bytes(b"x")
+    opts = RunOptions(headless=True, command="camlab88 counter", argv=["counter"],
+                      state=StateOptions(version="test", **{flag: state}))
+    h = Harness(Counter(10), opts)
+    plugin = next(p for p in h.plugins if isinstance(p, StatePlugin))
+    with pytest.raises(SystemExit) as stop:
+        plugin.start(h)
+    assert f"--{flag}-state: this program does not declare its state" in str(stop.value)
+    assert "\n" not in str(stop.value)
+
+
+def test_the_identity_holds_the_inputs_as_the_run_began(tmp_path: Path,
+                                                        monkeypatch) -> None:
+    """Input files are hashed once, when a run with --save-state begins (as the program read
+    them), not when the state is saved: an input changed on disk during the run does not
+    make the state refuse the inputs it was made from."""
+    from camlab88.emulator.harness import plugins
+    from camlab88.emulator.harness.loop import Plugin
+
+    events = tmp_path / "e.events"
+    events.write_text("frames 3\nclick middle 400 300\nframes 6\n")
+    argv = ["ca", "program", "--headless", "--pattern", "glider", "--events", str(events)]
+    first = events.read_text()
+
+    class Edit(Plugin):  # someone edits the events file once the program has read it
+        def post_tick(self, harness) -> None:
+            if harness.ticks == 2:
+                events.write_text(first + "frames 1\n")
+
+    real = plugins.standard_plugins
+    monkeypatch.setattr(plugins, "standard_plugins", lambda o: [*real(o), Edit()])
+    state = tmp_path / "s.c88state"
+    assert main([*argv, "--save-state", str(state), "--at", "0.1"]) == 0
+    monkeypatch.setattr(plugins, "standard_plugins", real)
+    events.write_text(first)
+    assert main([*argv, "--load-state", str(state)]) == 0
+    events.write_text(first + "frames 1\n")
+    with pytest.raises(SystemExit, match="saved with other arguments or input files"):
+        main([*argv, "--load-state", str(state)])

@@ -36,10 +36,31 @@ def schemas() -> dict[str, tuple[int, str]]:
            for name, p in rainbow.items()}
     out["sigma run"] = (SigmaLineTarget.STATE_VERSION, describe(SigmaLineTarget.STATE_SCHEMA))
     out["kas view"] = (PeriodTarget.STATE_VERSION, describe(PeriodTarget.STATE_SCHEMA))
+    out.update(_editors())
     # the envelope's own values (the harness's place, the time), in every program's file
     out["(envelope)"] = (1, f"harness {describe(program_state.PLACE)}, time "
                             f"{describe(program_state.TIME)}")
     return out
+
+
+def _editors() -> dict[str, tuple[int, str]]:
+    """The editors whose state is their input log (emulator.harness.input_log) and, where
+    their file is rewritten as they run, what it held at the start."""
+    from camlab88.commands.ca import actors
+    from camlab88.commands.kas import edit
+    from camlab88.commands.snooker import camera
+    from camlab88.emulator.harness import input_log
+    from camlab88.emulator.harness.rainbow import INPUT_STATE_VERSION as rainbow
+    from camlab88.emulator.harness.sigma import SigmaProgramTarget
+    from camlab88.emulator.harness.sigma_host import SigmaHostTarget
+
+    with_start = input_log.program_schema
+    sigma, host = SigmaProgramTarget.STATE_VERSION, SigmaHostTarget.STATE_VERSION
+    return {"kas edit": (sigma, describe(with_start(edit.START))),
+            "kas path": (sigma, describe(SigmaProgramTarget.STATE_SCHEMA)),
+            "kas paint": (host, describe(SigmaHostTarget.STATE_SCHEMA)),
+            "snooker camera": (rainbow, describe(with_start(camera.START))),
+            "ca actors": (rainbow, describe(with_start(actors.START)))}
 
 
 def test_no_schema_changes_without_its_version_going_up() -> None:

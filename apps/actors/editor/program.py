@@ -36,7 +36,8 @@ from camlab88.apps.actors.model import (
     ActorFileError,
     ActorSet,
     Material,
-    read_actors,
+    parse_actors,
+    read_actor_text,
     write_actors,
 )
 from camlab88.apps.actors.preview import turntable
@@ -55,9 +56,14 @@ POLL_LIMIT = 256
 
 class ActorEditor(AsksBeforeQuitting):
     def __init__(self, client: RainbowClient, path: str, types: list[CellType],
-                 rules: str, may_save: bool = True) -> None:
+                 rules: str, may_save: bool = True, start: dict | None = None) -> None:
+        """``start``: what FILE held when a saved session began (``self.start``, kept in
+        a save state: ``exists``, its ``text`` or the ``error`` reading it gave), in place
+        of reading FILE now."""
         self.client = client
         self.may_save = may_save  # False: a --screenshot run, which writes no file
+        self.writes = True  # False while a save state's load runs the session again
+        self.start = start
         self.path = path
         self.rules = rules
         self.display = Display(client)
@@ -82,12 +88,18 @@ class ActorEditor(AsksBeforeQuitting):
 
     # -- the file ---------------------------------------------------------------------------
     def _load(self) -> ActorSet:
-        if not os.path.exists(self.path):
+        if self.start is None:
+            self.start = _read_start(self.path)
+        if not self.start["exists"]:
             self.say(f"{self.path}: a new actors file for the rules {self.rules}", INFO)
             return ActorSet(self.rules, {})
+        if self.start["error"] is not None:
+            self.load_error = self.start["error"]
+            self.say(self.load_error + "\nthe editor starts with no actors", ERROR)
+            return ActorSet(self.rules, {})
         try:
-            got = read_actors(self.path)
-        except (ActorFileError, OSError) as exc:
+            got = parse_actors(self.start["text"], self.path)
+        except ActorFileError as exc:
             self.load_error = _one_line(exc, self.path)
             self.say(self.load_error + "\nthe editor starts with no actors", ERROR)
             return ActorSet(self.rules, {})
@@ -114,7 +126,8 @@ class ActorEditor(AsksBeforeQuitting):
             self.say(f"{self.path}: not saved (a --screenshot run writes no file)", INFO)
             return True
         try:
-            write_actors(self.path, new)
+            if self.writes:
+                write_actors(self.path, new)
         except OSError as exc:
             self.say(f"{self.path}: not saved: {exc.strerror or exc}", ERROR)
             return False
@@ -367,6 +380,16 @@ class ActorEditor(AsksBeforeQuitting):
 
 def _in(rect: tuple[int, int, int, int], x: int, y: int) -> tuple[int, int]:
     return x - rect[0], y - rect[1]
+
+
+def _read_start(path: str) -> dict:
+    """What FILE holds now: whether it exists, its text, or the one-line error reading it."""
+    if not os.path.exists(path):
+        return {"exists": False, "text": None, "error": None}
+    try:
+        return {"exists": True, "text": read_actor_text(path), "error": None}
+    except (ActorFileError, OSError) as exc:
+        return {"exists": True, "text": None, "error": _one_line(exc, path)}
 
 
 def _one_line(exc: Exception, path: str) -> str:

@@ -60,6 +60,10 @@ class CAProgram:
     def check_state_values(self, values: dict[str, Any]) -> Callable[[], None]:
         return program_state.check_state_values(self, values)
 
+    @staticmethod
+    def migrate_state(version: int, values: Any) -> Any:
+        return program_state.migrate(version, values)
+
     def __init__(self, client: RainbowClient, options: Options | None = None) -> None:
         self.client = client
         self.options = opts = options or Options()
@@ -96,6 +100,10 @@ class CAProgram:
         self.pan_from: tuple[int, int] | None = None
         self.dialogue: Dialogue | None = None
         self.asking: Ask | None = None
+        # which dialogue runs (its name, its argument) and the answers it has been given:
+        # what a save state rebuilds it from (apps/ca/program/state.py)
+        self.dialogue_made: tuple[str, int] | None = None
+        self.answers: list[Any] = []
         self.corner: tuple[int, int] | None = None
         self.text = ""
         self.text_fresh = False
@@ -114,7 +122,7 @@ class CAProgram:
             last = max((e.generation for e in self.script_events), default=0)
             self.script_last = last
             if opts.start is None:
-                self._start(commands.start_generation(self, last))
+                self._start(commands.start_generation(self, last), ("Start generation", last))
             else:
                 self.begin_script(opts.start)
         else:
@@ -263,8 +271,8 @@ class CAProgram:
         self.display.stats.show(text, "#e0ffe0")
 
     # -- dialogues ----------------------------------------------------------------------------
-    def _start(self, dialogue: Dialogue) -> None:
-        self.dialogue = dialogue
+    def _start(self, dialogue: Dialogue, made: tuple[str, int] = ("", 0)) -> None:
+        self.dialogue, self.dialogue_made, self.answers = dialogue, made, []
         self._answer(None, first=True)
 
     def _answer(self, value, first: bool = False) -> None:
@@ -272,6 +280,8 @@ class CAProgram:
         self._close_choice()
         self.corner = None
         self.display.rubber.hide()
+        if not first:
+            self.answers.append(value)
         try:
             ask = next(self.dialogue) if first else self.dialogue.send(value)
         except StopIteration:
@@ -298,6 +308,7 @@ class CAProgram:
     def _end_dialogue(self) -> None:
         self.dialogue = None
         self.asking = None
+        self.dialogue_made, self.answers = None, []
         self.corner = None
         self._close_choice()
         self.display.rubber.hide()
@@ -468,7 +479,7 @@ class CAProgram:
             self.display.apply_page()
             self.display.cursor.hide()
         elif item == "Set to value":
-            self._start(commands.set_value(self))
+            self._start(commands.set_value(self), (item, 0))
         elif item in EDIT_MODES:
             self.session.set_edit_mode(EDIT_MODES[item])
 
@@ -492,13 +503,13 @@ class CAProgram:
             self.view.set_top_left(self.session.view.x, self.session.view.y)
             self.changed()
         elif item == "Go to generation":
-            self._start(stepping.go_to_generation(self))
+            self._start(stepping.go_to_generation(self), (item, 0))
         elif item == "Fast forward":
-            self._start(stepping.fast_forward(self))
+            self._start(stepping.fast_forward(self), (item, 0))
         elif item in ZOOM_ITEMS:
             self.set_zoom(ZOOM_ITEMS[item])
         elif item in commands.MAIN:
-            self._start(commands.MAIN[item](self))
+            self._start(commands.MAIN[item](self), (item, 0))
 
     def set_zoom(self, zoom: int, cells_per_pixel: int = 1) -> None:
         self.view.set_zoom(zoom, cells_per_pixel)

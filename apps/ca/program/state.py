@@ -7,10 +7,17 @@ log.parse_checkpoint, the reader a user's checkpoint files go through, with the 
 source name and the engine's algorithm beside it. The rest is the program's values, the
 session's, the viewport's, the display's (buffers, outlines, message areas) and the menus'.
 
-Not saved, and so refused while they are there: a dialogue in progress (a generator: made
-again only by running it, which would read files its answers name) and input held during a
-long jump. What the command line gave (the rules file, the pattern, the script, the Log
-being written) is the fresh build's.
+A dialogue in progress is a generator: it is kept as which dialogue it is and the answers
+it has been given, and made again by starting it through the program's own code and giving
+it those answers (``REBUILT``). Only dialogues that read and write no file are made again
+so (their steps before the last only ask; a state whose answers would end one is refused,
+and what ending it would do is an action a user could take anyway): Save pattern, Load
+pattern and Change rules name files in their answers, and stay refused while they run, as
+do a dialogue's open choice menu (a device object) and input held during a long jump. What
+the command line gave (the rules file, the pattern, the script, the Log being written) is
+the fresh build's.
+
+Version 2 added ``dialogue``; version 1 (without it) is read by ``migrate``.
 """
 
 from __future__ import annotations
@@ -19,7 +26,8 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from camlab88.apps.ca import algorithms, log
-from camlab88.apps.ca.engine import Engine
+from camlab88.apps.ca.engine import Engine, Rect
+from camlab88.apps.ca.program import commands, stepping
 from camlab88.apps.ca.rules import parse_rules
 from camlab88.base.plainstate import (
     Blob,
@@ -38,14 +46,32 @@ from camlab88.protocols.rainbow.ui.menu import CrossMenu
 if TYPE_CHECKING:
     from camlab88.apps.ca.program.program import CAProgram
 
-VERSION = 1
+VERSION = 2
 _PAIR = Tuple((Int(), Int()))
 ENGINE = Record(checkpoint=Blob(256 << 20), rules_source=Str(4096),
                 algorithm=Choice(algorithms.CHOICES), hashlife_memory=Int(1))
 _BUFFER = Record(engine=Choice(("none", "shown", "pending")), stale=Bool(), vx=Int(), vy=Int(),
                  drawn_pixels=Int(0))
 _OUTLINE = Record(shape=Opt(Tuple((Int(),) * 4)), visible=Bool())
+# the dialogues made again from their answers (no file read or written in any of them):
+# name -> (the program, its argument) -> the dialogue, as the menus start it
+REBUILT: dict[str, Callable[[Any, int], Any]] = {
+    "Advance area": lambda p, _: commands.advance_area(p),
+    "Alter display": lambda p, _: commands.alter_display(p),
+    "Clear area": lambda p, _: commands.clear_area(p),
+    "Randomly populate": lambda p, _: commands.randomly_populate(p),
+    "Zoom subpixel": lambda p, _: commands.zoom_subpixel(p),
+    "Set to value": lambda p, _: commands.set_value(p),
+    "Go to generation": lambda p, _: stepping.go_to_generation(p),
+    "Start generation": commands.start_generation,
+}
+# an answer: none (cancelled), a text or menu item, a cell, a rectangle
+ANSWER = Record(kind=Choice(("none", "text", "point", "rect")), text=Str(4096),
+                ints=ListOf(Int(), 4))
+DIALOGUE = Record(name=Choice(tuple(REBUILT)), arg=Int(0, 1 << 62),
+                  answers=ListOf(ANSWER, 64), corner=Opt(_PAIR))
 SCHEMA = Record(
+    dialogue=Opt(DIALOGUE),
     engine=ENGINE, pending=Opt(ENGINE), pending_checkpoints=ListOf(ENGINE, 4096),
     session=Record(edit_mode=Str(64), current=Int(0, 255), view=Record(
         x=Int(), y=Int(), zoom=Str(16), cells_per_pixel=Int(1)),
@@ -86,9 +112,67 @@ def engine_from(values: dict[str, Any]) -> Engine:
     return engine
 
 
-def state_values(p: CAProgram) -> dict[str, Any]:
-    if p.dialogue is not None or p.asking is not None or p.choice is not None:
+def migrate(version: int, values: Any) -> Any:
+    """A version-1 state (JSON, unchecked) as version 2: no dialogue was in progress (a
+    version-1 state could not be saved in one)."""
+    if version != 1:
+        raise ValueError(f"no migration from version {version}")
+    if not isinstance(values, dict) or "dialogue" in values:
+        raise ValueError("its program part is not a version-1 mapping")
+    return dict(values, dialogue=None)
+
+
+def _answer_values(a: Any) -> dict[str, Any]:
+    if a is None:
+        return {"kind": "none", "text": "", "ints": []}
+    if isinstance(a, str):
+        return {"kind": "text", "text": a, "ints": []}
+    if isinstance(a, Rect):
+        return {"kind": "rect", "text": "", "ints": [a.x0, a.y0, a.x1, a.y1]}
+    return {"kind": "point", "text": "", "ints": [int(a[0]), int(a[1])]}
+
+
+def _answer(v: dict[str, Any]) -> Any:
+    n = {"none": 0, "text": 0, "point": 2, "rect": 4}[v["kind"]]
+    if len(v["ints"]) != n:
+        raise ValueError(f"a {v['kind']} answer holds {n} numbers, not {len(v['ints'])}")
+    if v["kind"] == "rect":
+        return Rect(*v["ints"])
+    return {"none": None, "text": v["text"], "point": tuple(v["ints"])}[v["kind"]]
+
+
+def dialogue_values(p: CAProgram) -> dict[str, Any] | None:
+    """The dialogue in progress as its name, argument and answers (None: none runs)."""
+    if p.dialogue is None and p.asking is None and p.choice is None:
+        return None
+    name, arg = p.dialogue_made or ("", 0)
+    if p.choice is not None or name not in REBUILT:
         raise ValueError("a dialogue is in progress (it is saved once it has ended)")
+    return {"name": name, "arg": arg, "answers": [_answer_values(a) for a in p.answers],
+            "corner": p.corner}
+
+
+def rebuild_dialogue(p: CAProgram, v: dict[str, Any]) -> None:
+    """Start the saved dialogue through the program's own code and give it its answers
+    (its steps before the last only ask); ValueError if they end it or it asks for a menu
+    choice (a saved dialogue never waits on one)."""
+    answers = [_answer(a) for a in v["answers"]]
+    dialogue = REBUILT[v["name"]](p, v["arg"])
+    try:
+        ask = next(dialogue)
+        for a in answers:
+            ask = dialogue.send(a)
+    except StopIteration:
+        raise ValueError(f"the answers given end the dialogue {v['name']!r}") from None
+    if ask is None or ask.kind == "menu":
+        dialogue.close()
+        raise ValueError(f"the dialogue {v['name']!r} would wait on a menu choice")
+    p.dialogue, p.asking, p.corner = dialogue, ask, v["corner"]
+    p.dialogue_made, p.answers = (v["name"], v["arg"]), answers
+
+
+def state_values(p: CAProgram) -> dict[str, Any]:
+    dialogue = dialogue_values(p)
     if p.held_events:
         raise ValueError("input read during a jump is waiting")
     s, v, d = p.session, p.view, p.display
@@ -101,6 +185,7 @@ def state_values(p: CAProgram) -> dict[str, Any]:
         buffers.append({"engine": ref or "none", "stale": buf.stale, "vx": buf.vx,
                         "vy": buf.vy, "drawn_pixels": buf.drawn_pixels})
     return {
+        "dialogue": dialogue,
         "engine": engine_values(s.engine),
         "pending": None if p.pending is None else engine_values(p.pending),
         "pending_checkpoints": [engine_values(e) for e in p.pending_checkpoints],
@@ -145,6 +230,9 @@ def check_state_values(p: CAProgram, values: dict[str, Any]) -> Callable[[], Non
     if values["main_menu"]["marked"] not in ("", *p.main_menu.items):
         raise ValueError("the marked main-menu item is not one of the menu's")
     refs = {"none": None, "shown": engine, "pending": pending}
+    dialogue = values["dialogue"]
+    if dialogue is not None:  # its answers' shapes checked now; it is made once in place
+        [_answer(a) for a in dialogue["answers"]]
     puts = [p.display.prompt.check_state_values(dv["prompt"]),
             p.display.stats.check_state_values(dv["stats"]),
             p.main_menu.check_state_values(values["main_menu"]["menu"]),
@@ -179,8 +267,11 @@ def check_state_values(p: CAProgram, values: dict[str, Any]) -> Callable[[], Non
         left = pv["script_left"]
         p.script.queue = p.script.queue[len(p.script.queue) - left:] if left else []
         p.dialogue = p.asking = p.corner = None
+        p.dialogue_made, p.answers = None, []
         for part in puts:
             part()
+        if dialogue is not None:  # (its answers checked above; a refusal here ends a load)
+            rebuild_dialogue(p, dialogue)
     return put
 
 

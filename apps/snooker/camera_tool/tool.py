@@ -44,6 +44,7 @@ class CameraTool:
         # "outside" wire); a replay feeds them back instead of reading the disk.
         self.outside: list[str] = []
         self.fed: list[str] | None = None
+        self.writes = True  # False while a save state's load runs the session again
         x, y, w, h = layout.VIEW
         self.view = ViewDisplay(client, SCREEN, x, y, w, h, VIEW_PAGE)
         self.script_pane, self.info, self.timeline = (ScriptPane(client), InfoPane(client),
@@ -203,8 +204,9 @@ class CameraTool:
             self.frame = layout.timeline_frame(e.x - layout.TIMELINE[0], self.motion.n_frames)
 
     def save(self) -> None:
-        write_atomic(self.path, self.buf.text)
-        self.watch.seen()
+        if self.writes:
+            write_atomic(self.path, self.buf.text)
+            self.watch.seen()
         self.modified = False
         self.status = f"saved {self.path.name}"
         self.dirty = True

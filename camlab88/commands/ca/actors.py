@@ -6,6 +6,7 @@ from __future__ import annotations
 import argparse
 import sys
 
+from camlab88.base.plainstate import Bool, Opt, Record, Str
 from camlab88.rainbow_tablet import add_tablet_option
 from camlab88.replay_policy import KEEP
 from camlab88.runopts import add_run_options
@@ -95,26 +96,51 @@ def _cell_types(rules: str) -> list:
 def _run(path: str, types: list, rules: str, player, opts, tablet):
     from camlab88.apps.actors.editor.program import ActorEditor
     from camlab88.emulator.harness import run
+    from camlab88.emulator.harness.input_log import StartState
     from camlab88.emulator.harness.rainbow import RainbowTarget
     from camlab88.emulator.machine import RainbowMachine
     from camlab88.runopts import unattended
 
     machine = RainbowMachine(record=opts.record is not None)
-    editor = ActorEditor(machine.client, path, types, rules,
-                         may_save=opts.screenshot is None)
+    # the editor is made at the first tick, so a --load-state can give it the FILE its
+    # session started from first (a save rewrites FILE)
+    made: list[ActorEditor] = []
+    given: list[dict] = []
+
+    def editor() -> ActorEditor:
+        if not made:
+            made.append(ActorEditor(machine.client, path, types, rules,
+                                    may_save=opts.screenshot is None,
+                                    start=given[0] if given else None))
+        return made[0]
+
+    holding: list[bool] = [False]
 
     def step() -> bool:
+        ed = editor()
+        ed.writes = not holding[0]
         if target.tablet is not None and not target.tablet.gone:
-            _poll_tablet(target.tablet, machine, editor)
-        editor.frame()
-        return not editor.finished
+            _poll_tablet(target.tablet, machine, ed)
+        ed.frame()
+        return not ed.finished
+
+    def rebuilding(on: bool) -> None:  # a load runs the session again: saves write nothing
+        holding[0] = on
+        if made:
+            made[0].writes = not on
 
     target = RainbowTarget(machine, step, "camlab88 ca actors", KEYS, player,
                            unattended(opts))
-    target.may_close = editor.may_close
+    target.asks_before_closing(lambda: editor().may_close())
     target.tablet = tablet
+    target.keep_input(StartState(START, lambda: editor().start, given.append, (path,)),
+                      rebuilding)
     run(target, opts)
-    return editor
+    return editor()
+
+
+# what FILE held when the session began, in its save state (the editor's ``start``)
+START = Record(exists=Bool(), text=Opt(Str(4 << 20)), error=Opt(Str(4096)))
 
 
 def _poll_tablet(tablet, machine, editor) -> None:

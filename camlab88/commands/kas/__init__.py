@@ -59,9 +59,10 @@ def prepare_front(args: argparse.Namespace, command: str):
 
 
 def run_front(front, args: argparse.Namespace, command: str, keys: str,
-              prepared=None):
+              prepared=None, start=None):
     """Run a KAS program on an emulated T5684 over the line, on the harness: from a script
-    and/or a window.  Returns the run (the session and its machine)."""
+    and/or a window.  Returns the run (the session and its machine).  ``start``: what the
+    program started from, kept in its save state (emulator.harness.input_log.StartState)."""
     from camlab88.apps.kas.program.layout import TABLET_AREA
     from camlab88.apps.kas.program.script import Session
     from camlab88.emulator.harness import run
@@ -84,6 +85,8 @@ def run_front(front, args: argparse.Namespace, command: str, keys: str,
     ran = SigmaSessionRun(machine, session)
     target = SigmaProgramTarget(ran, f"{command} - Sigma T5684", keys, frozenset(KEY_BYTES),
                                 events, unattended(opts))
+    if start is not None:
+        target.give_start(start)
     try:
         run(target, opts)
     finally:

@@ -6,6 +6,7 @@ import argparse
 import sys
 from pathlib import Path
 
+from camlab88.base.plainstate import Opt, Str
 from camlab88.commands.kas import add_front_options
 from camlab88.replay_policy import KEEP
 from camlab88.runopts import fail
@@ -49,7 +50,8 @@ def edit(args: argparse.Namespace) -> int:
         over = files.load_drawing_or_frame(library.resolve(args.over)) if args.over else None
 
         def save(drawing) -> None:
-            if not preview:
+            # (a --load-state runs the session again: its F2s write nothing then)
+            if not preview and not getattr(front, "rebuilding", False):
                 try:
                     files.save_keyframe(target, drawing)
                 except OSError as exc:  # the editor shows it; the exit status says it too
@@ -59,7 +61,7 @@ def edit(args: argparse.Namespace) -> int:
             front.editor.message = f"saved {target.name}" if not preview else "(preview)"
 
         front = EditorFront(Editor(start, over, args.seed), args.background, save)
-        ran = _run(front, args, prepared)
+        ran = _run(front, args, prepared, _start_state(front, start, over, args, save))
     except KeyboardInterrupt:
         return _interrupted(locals().get("front"), target, preview)
     except (OSError, ValueError) as exc:
@@ -106,11 +108,32 @@ def _create(target: Path, empty) -> None:
     print(f"{COMMAND}: created {target} (an empty keyframe)")
 
 
-def _run(front, args: argparse.Namespace, prepared):
+def _run(front, args: argparse.Namespace, prepared, start):
     from camlab88.commands.kas import run_front
 
     keys = KEYS + ("; the tablet is the stylus" if args.tablet else "; the mouse is the stylus")
-    return run_front(front, args, COMMAND, keys, prepared)
+    return run_front(front, args, COMMAND, keys, prepared, start)
+
+
+# the keyframe the session started from, in its save state: F2 rewrites FILE, so a load
+# starts from the state's keyframe (read by the keyframe reader), and FILE is only where
+# F2 saves (the command line's; FILE's content is left out of the state's identity)
+START = Opt(Str(1 << 24))
+
+
+def _start_state(front, start, over, args: argparse.Namespace, save):
+    from camlab88.apps.kas import files
+    from camlab88.apps.kas.editor import Editor
+    from camlab88.emulator.harness.input_log import StartState
+
+    text = files.keyframe_text(start) if start is not None else None
+
+    def load(kept: str | None) -> None:
+        drawing = files.parse_keyframe(kept, "the state's keyframe") if kept else None
+        front.editor = Editor(drawing, over, args.seed)
+        front.editor.on_save = save
+
+    return StartState(START, lambda: text, load, (args.file,))
 
 
 def _report(ed, machine, target: Path, saved: list[int], preview: bool,

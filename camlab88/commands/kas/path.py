@@ -52,7 +52,12 @@ def path(args: argparse.Namespace) -> int:
         model = PathEditor(files.load_drawing_or_frame(library.resolve(args.first)),
                            files.load_drawing_or_frame(library.resolve(args.second)), prev)
         save = _saver(args, out, ticks)
-        front = PathFront(model, args.background, save)
+
+        def save_in_run(sample, timing) -> None:
+            if not getattr(front, "rebuilding", False):  # (a --load-state runs it again)
+                save(sample, timing)
+
+        front = PathFront(model, args.background, save_in_run)
         try:
             run_front(front, args, COMMAND, KEYS)
         except KeyboardInterrupt:

@@ -6,6 +6,7 @@ from __future__ import annotations
 import argparse
 import sys
 
+from camlab88.base.plainstate import Record, Str
 from camlab88.runopts import add_run_options, fail, unattended
 from camlab88.scriptopts import (
     HEADLESS_NEEDS_EVENTS,
@@ -80,6 +81,42 @@ def _run(shot, script, player, opts, plugins=()):
 
     rb = RainbowMachine(record=opts.record is not None)
     tool = CameraTool(rb.client, shot, script)
-    target = Target(rb, tool.step, COMMAND, KEYS, player, unattended(opts))
+
+    def step() -> bool:
+        read = len(tool.outside)
+        alive = tool.step()
+        for text in tool.outside[read:]:  # SCRIPT as read from disk: in a save state too
+            target.log.read(text)
+        return alive
+
+    target = Target(rb, step, COMMAND, KEYS, player, unattended(opts))
     target.escape_is_a_key = True  # the tool's own Esc: done
+    target.keep_input(_start_state(tool, script), _rebuilding(tool), tool.feed)
     return run(target, opts, list(plugins)), tool
+
+
+# the script's text when the tool started, in its save state: ctrl-s rewrites SCRIPT, so a
+# load starts from the state's text and SCRIPT is only where ctrl-s saves (its content is
+# left out of the state's identity)
+START = Record(text=Str(1 << 22), status=Str(4096))
+
+
+def _start_state(tool, script):
+    from camlab88.apps.snooker.camera_tool.editor import TextBuffer
+    from camlab88.emulator.harness.input_log import StartState
+
+    start = {"text": tool.buf.text, "status": tool.status}
+
+    def load(kept: dict) -> None:
+        tool.buf = TextBuffer(kept["text"])
+        tool.status = kept["status"]
+
+    return StartState(START, lambda: start, load, (str(script),))
+
+
+def _rebuilding(tool):
+    def rebuilding(on: bool) -> None:
+        """While a load runs the session again: no writes, the disk's texts from the log."""
+        tool.writes = not on
+        tool.fed = [] if on else None
+    return rebuilding

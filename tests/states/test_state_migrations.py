@@ -1,0 +1,97 @@
+"""A state of an older version is read through the program's documented migration: the
+stored ``kas view`` state of version 1 (tests/data/states, saved before the period was
+renamed and bounded in version 2) loads and continues as the unbroken run; a version-1
+state with other fields, and a version with no migration, are refused in one line naming
+the file (and, for the version, both versions)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from camlab88.cli import main
+from camlab88.emulator.harness.sigma import PeriodTarget
+from camlab88.emulator.machine.state_file import MachineStateError, pack, unpack
+from tests.states.support import frame_logs, saved_place
+
+DATA = Path(__file__).resolve().parents[1] / "data" / "states"
+V1 = DATA / "kas_view_v1.c88state"
+ARGV = ["kas", "view", str(DATA / "seq.kas"), "--headless", "--every"]
+
+
+def test_the_stored_state_is_of_version_1_and_this_kas_view_reads_version_2() -> None:
+    head, _ = unpack(V1.read_bytes(), "program")
+    assert head["state_version"] == 1 and set(head["values"]) == {"k", "machine"}
+    assert PeriodTarget.STATE_VERSION == 2
+
+
+def test_a_version_1_state_loads_through_the_migration_and_continues(monkeypatch) -> None:
+    with frame_logs(monkeypatch) as runs:
+        assert main(ARGV) == 0
+        assert main([*ARGV, "--load-state", str(V1)]) == 0
+    full, rest = runs
+    k = saved_place(V1)[1]
+    full.pop("ticks"), rest.pop("ticks")
+    assert rest and sorted(rest) == [n for n in sorted(full) if n > k]
+    assert all(rest[n] == full[n] for n in rest)
+
+
+def test_the_migration_renames_the_period_and_refuses_other_fields() -> None:
+    assert PeriodTarget.migrate_state(1, {"k": 13, "machine": "b0"}) == {
+        "period": 13, "machine": "b0"}
+    for odd in ({"period": 13, "machine": "b0"}, {"k": 1}, ["k", "machine"], None):
+        with pytest.raises(MachineStateError, match="version 1"):
+            PeriodTarget.migrate_state(1, odd)
+
+
+def _rewritten(tmp_path: Path, **changes) -> Path:
+    head, parts = unpack(V1.read_bytes(), "program")
+    head.update(changes)
+    path = tmp_path / "s.c88state"
+    path.write_bytes(pack("program", head, parts))
+    return path
+
+
+def test_a_version_1_state_with_other_fields_is_refused_in_one_line(tmp_path: Path) -> None:
+    head, _ = unpack(V1.read_bytes(), "program")
+    path = _rewritten(tmp_path, values={"period": 13, "machine": head["values"]["machine"]})
+    with pytest.raises(SystemExit) as stop:
+        main([*ARGV, "--load-state", str(path)])
+    text = str(stop.value)
+    assert str(path) in text and "its fields are not k and machine" in text
+    assert "\n" not in text
+
+
+def test_a_version_1_state_past_the_new_bound_is_refused(tmp_path: Path) -> None:
+    head, _ = unpack(V1.read_bytes(), "program")
+    path = _rewritten(tmp_path, values={"k": 1 << 41, "machine": head["values"]["machine"]})
+    with pytest.raises(SystemExit, match=r"state\.period: .* is outside 0\.\."):
+        main([*ARGV, "--load-state", str(path)])
+
+
+@pytest.mark.parametrize("version", [3, 0])
+def test_a_version_without_a_migration_is_refused_naming_both(tmp_path: Path,
+                                                              version: int) -> None:
+    path = _rewritten(tmp_path, state_version=version)
+    with pytest.raises(SystemExit) as stop:
+        main([*ARGV, "--load-state", str(path)])
+    assert f"version {version}" in str(stop.value) and "version 2" in str(stop.value)
+
+
+def test_a_ca_program_state_of_version_1_loads_without_a_dialogue(tmp_path: Path) -> None:
+    """ca program's version 2 added the dialogue in progress; a version-1 state (which could
+    not be saved in one) reads as having none."""
+    events = tmp_path / "e.events"
+    events.write_text("frames 3\nclick right 300 300\nframes 6\n")
+    argv = ["ca", "program", "--headless", "--pattern", "glider", "--events", str(events)]
+    state = tmp_path / "c.c88state"
+    assert main([*argv, "--save-state", str(state), "--at", "0.1"]) == 0
+    head, parts = unpack(state.read_bytes(), "program")
+    assert head["state_version"] == 2 and head["values"]["program"].pop("dialogue") is None
+    state.write_bytes(pack("program", dict(head, state_version=1), parts))
+    assert main([*argv, "--load-state", str(state)]) == 0
+    head["values"]["program"] = ["not", "a", "mapping"]
+    state.write_bytes(pack("program", dict(head, state_version=1), parts))
+    with pytest.raises(SystemExit, match="its program part is not a version-1 mapping"):
+        main([*argv, "--load-state", str(state)])
