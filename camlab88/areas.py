@@ -12,7 +12,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 
 def register_area(subparsers: argparse._SubParsersAction, package: str,
@@ -28,6 +28,18 @@ def register_area(subparsers: argparse._SubParsersAction, package: str,
         importlib.import_module(f"{package}.{action}").add_parser(sub)
     parser.set_defaults(handler=lambda args: _no_action(parser))
     return parser
+
+
+def delegated_action(actions: argparse._SubParsersAction, name: str, help: str,
+                     add_arguments: Callable[[argparse.ArgumentParser], None],
+                     handler: Callable[[argparse.Namespace], int]) -> argparse.ArgumentParser:
+    """The parser of an action whose options are declared beside the code that does its
+    work (``link echo``, ``link stream``: protocols.link.cli_args): ``help``, the options
+    ``add_arguments`` adds, and its ``handler``."""
+    p = actions.add_parser(name, help=help)
+    add_arguments(p)
+    p.set_defaults(handler=handler)
+    return p
 
 
 def _needed(subparsers: argparse._SubParsersAction, name: str,

@@ -38,14 +38,7 @@ def pgplot_goc() -> bytes:
     g.init()
     g.erase()
     g.colour(1)
-    g.polyline([(96, 64), (704, 64), (704, 448), (96, 448), (96, 64)])
-    for k in range(9):
-        x = 96 + 76 * k
-        g.line(x, 64, x, 76)
-        g.line(x, 448, x, 436)
-    for k in range(7):
-        y = 64 + 64 * k
-        g.line(96, y, 108, y)
+    g.frame(96, 64, 704, 448, xticks=9, yticks=7)
     curve = [(96 + 2 * i, 256 + round(170 * math.exp(-i / 160) * math.cos(i / 12)))
              for i in range(305)]
     g.polyline(curve)

@@ -1,6 +1,6 @@
 """A session's replay as one web page (``camlab88 replay FILE --html OUT``): the page
-(page.html, player.css, player.js: no network, no CDN) with the video of the frames, the
-input events and, for a Sigma, the decoded orders as data in it.
+(page.html with head.html, player.css, player.js: no network, no CDN) with the video of the
+frames, the input events and, for a Sigma, the decoded orders as data in it.
 
 Two forms, chosen by OUT: ``NAME.html`` is one self-contained file, the video inlined
 (base64, played through a Blob URL): a file to mail or put anywhere, opened from file://
@@ -67,6 +67,14 @@ def fill(name: str, parts: dict[str, str]) -> str:
     return re.sub(r"@[A-Z_]+@", lambda m: parts.get(m.group(0), m.group(0)), asset(name))
 
 
+def head(title: str, version: str, css: str) -> str:
+    """The document's start up to ``</head>``, the same for the page and the gallery:
+    ``title`` and ``version`` as HTML, ``css`` the style sheet (head.html, without its last
+    newline: the template's ``@HEAD@`` line has one)."""
+    return fill("head.html", {"@TITLE@": title, "@VERSION@": version,
+                              "@CSS@": css}).removesuffix("\n")
+
+
 def _video_parts(video: Path, inline: bool) -> tuple[str, str]:
     """The inlined video's script element, or the video element's ``data-src``."""
     if not inline:
@@ -109,13 +117,14 @@ def render(capture: Any, text: PageText, video: Path, inline: bool) -> str:
     e, c = html.escape, capture
     video_data, src = _video_parts(video, inline)
     return fill("page.html", {
-        "@TITLE@": e(text.title), "@VERSION@": e(text.version),
+        "@HEAD@": head(e(text.title), e(text.version), asset("player.css")),
+        "@TITLE@": e(text.title),
         "@META@": _meta(c, text), "@EXTRA@": text.extra,
         "@WIDTH@": str(c.size[0]), "@HEIGHT@": str(c.size[1]), "@SRC@": src,
         "@PANEL_NOTE@": PANEL_NOTE if c.panel else "", "@NEVENTS@": str(len(c.events)),
         "@NORDERS@": str(len(c.orders)), "@ORDERS_HIDDEN@": "" if c.orders else "hidden",
         "@FOOTER@": _footer(c, text), "@DATA@": _script_json(page_data(c, video.name)),
-        "@CSS@": asset("player.css"), "@JS@": asset("player.js"), "@VIDEO_DATA@": video_data,
+        "@JS@": asset("player.js"), "@VIDEO_DATA@": video_data,
     })
 
 

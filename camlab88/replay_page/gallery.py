@@ -12,9 +12,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from camlab88.replay_page import asset, fill
+from camlab88.replay_page import asset, fill, head
 
 THUMB_STEP = 2  # thumbnails at half size
+TITLE = "The thesis's screen figures, replayed: camlab88"  # as HTML
 
 
 @dataclass
@@ -56,7 +57,8 @@ def _card(en: Entry) -> str:
 def index_html(entries: list[Entry], version: str) -> str:
     made = sum(en.page is not None for en in entries)
     return fill("gallery.html", {
-        "@VERSION@": html.escape(version), "@CSS@": asset("gallery.css"),
+        "@HEAD@": head(TITLE, html.escape(version), asset("gallery.css")),
+        "@VERSION@": html.escape(version),
         "@COUNT@": f"{made} of {len(entries)}", "@CARDS@": "\n".join(map(_card, entries))})
 
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import operator
 from dataclasses import dataclass, field
+from typing import TypeVar
 
 from camlab88.emulator.rainbow.errors import GraphError, RainbowError
 from camlab88.emulator.rainbow.memory import Allocation
@@ -18,6 +19,7 @@ SCREEN_W, SCREEN_H = 768, 576
 MAX_COORD = 1 << 20  # positions and sizes beyond this are certainly a program error
 MAX_INSTANCES = 200_000  # mapping nodes many times multiplies paths; bound the work
 MAX_VISITS = 1_000_000  # paths through clusters, counted even when they reach no pad
+T = TypeVar("T")
 
 
 @dataclass
@@ -88,6 +90,28 @@ def _check_size(name: str, v: int) -> int:
     return v
 
 
+def _find(table: dict[int, T], key: int, what: str) -> T:
+    """``table[key]``, or a GraphError naming the ``what`` that is not there (a key that
+    cannot be one, a list say, is not there either)."""
+    try:
+        return table[key]
+    except (KeyError, TypeError):
+        raise GraphError(f"no {what} {key!r}") from None
+
+
+def _new_id(chosen: int | None, next_free: int, table: dict[int, object], what: str,
+            note: str = "") -> int:
+    """The id of a new node or arc (``what``): the next free one, or the one the program
+    chose, which must be a 31-bit id not in ``table``."""
+    if chosen is None:
+        return next_free
+    if not isinstance(chosen, int) or chosen <= 0 or chosen >= 1 << 31:
+        raise GraphError(f"{what} id {chosen!r} must be 1..2^31-1{note}")
+    if chosen in table:
+        raise GraphError(f"{what} {chosen} already exists")
+    return chosen
+
+
 class PadGraph:
     def __init__(self) -> None:
         self.nodes: dict[int, Pad | Cluster] = {SCREEN: Cluster(SCREEN, SCREEN_W, SCREEN_H)}
@@ -139,13 +163,7 @@ class PadGraph:
     def _new_node_id(self, node: int | None) -> int:
         # Ids are never reused (a stale id held by a program must not name a new node):
         # automatic ids count up past every id handed out or chosen explicitly.
-        if node is None:
-            node = self._next_node
-        elif not isinstance(node, int) or node <= 0 or node >= 1 << 31:
-            raise GraphError(f"node id {node!r} must be 1..2^31-1 (0 is the screen)")
-        elif node in self.nodes:
-            raise GraphError(f"node {node} already exists")
-        return node
+        return _new_id(node, self._next_node, self.nodes, "node", " (0 is the screen)")
 
     def _taken_node(self, nid: int) -> None:
         self._next_node = max(self._next_node, nid + 1)
@@ -172,21 +190,18 @@ class PadGraph:
         return c
 
     def node(self, nid: int) -> Pad | Cluster:
-        try:
-            return self.nodes[nid]
-        except (KeyError, TypeError):
-            raise GraphError(f"no node {nid!r}") from None
+        return _find(self.nodes, nid, "node")
 
     def pad(self, nid: int) -> Pad:
-        n = self.node(nid)
-        if not isinstance(n, Pad):
-            raise GraphError(f"node {nid} is a cluster, not a pad")
-        return n
+        return self._node_of_kind(nid, Pad, "a cluster, not a pad")
 
     def cluster(self, nid: int) -> Cluster:
+        return self._node_of_kind(nid, Cluster, "a pad, not a cluster")
+
+    def _node_of_kind(self, nid: int, kind: type[T], otherwise: str) -> T:
         n = self.node(nid)
-        if not isinstance(n, Cluster):
-            raise GraphError(f"node {nid} is a pad, not a cluster")
+        if not isinstance(n, kind):
+            raise GraphError(f"node {nid} is {otherwise}")
         return n
 
     def remove_node(self, nid: int) -> Pad | Cluster:
@@ -238,12 +253,7 @@ class PadGraph:
             raise GraphError("the screen cannot be mapped into anything")
         if self._reaches(child, parent):
             raise GraphError(f"mapping node {child} into {parent} would make a cycle")
-        if arc is None:
-            arc = self._next_arc
-        elif not isinstance(arc, int) or arc <= 0 or arc >= 1 << 31:
-            raise GraphError(f"arc id {arc!r} must be 1..2^31-1")
-        elif arc in self.arcs:
-            raise GraphError(f"arc {arc} already exists")
+        arc = _new_id(arc, self._next_arc, self.arcs, "arc")
         a = Arc(arc, parent, child, _check_coord("x", x), _check_coord("y", y),
                 _check_coord("priority", priority), bool(on))
         self.arcs[arc] = a
@@ -253,10 +263,7 @@ class PadGraph:
         return a
 
     def arc(self, aid: int) -> Arc:
-        try:
-            return self.arcs[aid]
-        except (KeyError, TypeError):
-            raise GraphError(f"no arc {aid!r}") from None
+        return _find(self.arcs, aid, "arc")
 
     def remove_arc(self, aid: int) -> None:
         a = self.arc(aid)

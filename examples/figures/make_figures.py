@@ -117,12 +117,13 @@ def fig_7_1() -> str:
                      "pattern.")
 
 
-def _side_by_side(pattern: str, rules: str, copies: int, apart: int,
-                  size: tuple[int, int]) -> _CA:
-    """``copies`` of ``pattern`` in a row, ``apart`` cells between reference points, each
-    advanced one generation more than the one on its left by "Advance area" (section 7.3.2:
-    the rules apply only inside a rectangle, the way the thesis puts two guns out of phase):
-    generations 0, 1, ... from left to right on one screen. ``size``: the pattern's cells."""
+def _side_by_side(caption: str, pattern: str, rules: str, copies: int, apart: int,
+                  size: tuple[int, int]) -> str:
+    """The script of ``copies`` of ``pattern`` in a row, ``apart`` cells between reference
+    points, each advanced one generation more than the one on its left by "Advance area"
+    (section 7.3.2: the rules apply only inside a rectangle, the way the thesis puts two guns
+    out of phase): generations 0, 1, ... from left to right on one screen. ``size``: the
+    pattern's cells."""
     ca = _CA(pattern, rules)  # loaded with its reference point at the view's centre cell
     ca.leave_editing()  # single step mode: nothing moves until the right button is clicked
     (gx, gy), = {(x, y) for (_, x, y) in ca.program.session._loaded}
@@ -148,23 +149,23 @@ def _side_by_side(pattern: str, rules: str, copies: int, apart: int,
     ca.choose("Advance area")
     ca.pick("Advance everywhere")
     ca.run("frames 2")
-    return ca
+    return ca.script(caption)
 
 
 def fig_7_2() -> str:
-    ca = _side_by_side("glider", "life", 5, 8, (3, 3))
-    return ca.script("Figure 7.2: a glider over five generations side by side: five gliders "
-                     "loaded in a row, then\nAdvance area steps the 2nd to 5th one generation, "
-                     "the 3rd to 5th another, ...: generations\n0 to 4 from left to right, the "
-                     "fifth the first moved one cell diagonally.")
+    return _side_by_side("Figure 7.2: a glider over five generations side by side: five "
+                         "gliders loaded in a row, then\nAdvance area steps the 2nd to 5th one "
+                         "generation, the 3rd to 5th another, ...: generations\n0 to 4 from "
+                         "left to right, the fifth the first moved one cell diagonally.",
+                         "glider", "life", 5, 8, (3, 3))
 
 
 def fig_7_7() -> str:
-    ca = _side_by_side("maze_corner", "maze", 4, 10, (7, 7))
-    return ca.script("Figure 7.7: the 'movement' of a maze runner over four generations, side "
-                     "by side: four copies\nof a runner (head red, tail blue) beside a wall "
-                     "(green) that turns a corner, the 2nd to 4th\nadvanced one generation, "
-                     "the 3rd and 4th another, the 4th a third: generations 0 to 3.")
+    return _side_by_side("Figure 7.7: the 'movement' of a maze runner over four generations, "
+                         "side by side: four copies\nof a runner (head red, tail blue) beside a "
+                         "wall (green) that turns a corner, the 2nd to 4th\nadvanced one "
+                         "generation, the 3rd and 4th another, the 4th a third: generations 0 "
+                         "to 3.", "maze_corner", "maze", 4, 10, (7, 7))
 
 
 def fig_7_3() -> str:

@@ -21,13 +21,12 @@ redrawn and the lookup table is never rewritten: translucence is kept by the tab
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 
 from camlab88.base.plainstate import Bool, Int, Record
+from camlab88.protocols.rainbow.attribute_state import AttributeState
 from camlab88.protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
 
 COMPONENTS = ("back", "left", "right", "shelves")          # plane pairs 0-1, 2-3, 4-5, 6-7
@@ -175,7 +174,7 @@ def sliding(t: int, period: int = 200) -> float:
     return 0.5 - 0.5 * math.cos(2 * math.pi * (t % period) / period)
 
 
-class ShelfDemo:
+class ShelfDemo(AttributeState):
     """The program: a background, the shelf unit sliding apart and together again, for
     ever; the left mouse button pauses it.  Each frame sends four moves and nothing else."""
 
@@ -191,14 +190,6 @@ class ShelfDemo:
     # its declared state (emulator.harness.program_state); the pads are the Rainbow's
     STATE_VERSION = 1
     STATE_SCHEMA = Record(t=Int(0), paused=Bool())
-
-    def state_values(self) -> dict[str, Any]:
-        return {"t": self.t, "paused": self.paused}
-
-    def check_state_values(self, values: dict[str, Any]) -> Callable[[], None]:
-        def put() -> None:
-            self.t, self.paused = values["t"], values["paused"]
-        return put
 
     def step(self) -> tuple[int, int]:
         c = self.client

@@ -37,6 +37,8 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
 
+from camlab88.base.fileerror import FilePlaceError
+
 FORMAT = "camlab88-session"
 VERSION = 1
 _KEYS: dict[str, dict[str, type | tuple[type, ...]]] = {
@@ -50,13 +52,12 @@ _KEYS: dict[str, dict[str, type | tuple[type, ...]]] = {
 }
 
 
-class SessionFileError(ValueError):
+class SessionFileError(FilePlaceError):
     """A recording that cannot be read: ``path:line:col: what was wrong``."""
 
     def __init__(self, path: str, line: int, col: int, message: str) -> None:
-        where = f"{path}:{line}:{col}" if line > 0 else path  # line 0: the file as a whole
-        super().__init__(f"{where}: {message}")
-        self.path, self.line, self.col = path, line, col
+        # line 0: the file as a whole
+        super().__init__(path, line, col, message, where=path if line <= 0 else None)
 
 
 @dataclass(frozen=True)

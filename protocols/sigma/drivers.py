@@ -92,6 +92,20 @@ class PgplotGoc:
     def dot(self, x: int, y: int) -> None:
         self.line(x, y, x, y)
 
+    def frame(self, x0: int, y0: int, x1: int, y1: int, xticks: int, yticks: int = 0,
+              tick: int = 12) -> None:
+        """A graph's frame as a PGPLOT program draws it (PGBOX's lines): the rectangle,
+        then ``xticks`` evenly spaced ticks ``tick`` long into it from the bottom and top
+        edges, then ``yticks`` from the left edge."""
+        self.polyline([(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)])
+        for k in range(xticks):
+            x = x0 + (x1 - x0) * k // (xticks - 1)
+            self.line(x, y0, x, y0 + tick)
+            self.line(x, y1, x, y1 - tick)
+        for k in range(yticks):
+            y = y0 + (y1 - y0) * k // (yticks - 1)
+            self.line(x0, y, x0 + tick, y)
+
     def cursor_prompt(self, x: int, y: int) -> bytes:
         """GRGO11's read-with-prompt: flush, then flag GI CE CA xxxyyy CF HF (returned,
         and added to the stream)."""

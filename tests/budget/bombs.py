@@ -55,14 +55,20 @@ def dense_rle(path: Path, side: int) -> Path:
     return path
 
 
-def dense_cells(path: Path, side: int) -> Path:
-    """A plaintext .cells of a full side x side square (the trial: 8000², 64 MB)."""
+def _dense_square(path: Path, header: str, cell: str, side: int) -> Path:
+    """A text pattern of a full side x side square: ``header``, then ``side`` rows of
+    ``side`` ``cell`` characters."""
     with open(path, "w") as fh:
-        fh.write("!Name: bomb\n")
-        row = "O" * side + "\n"
+        fh.write(header)
+        row = cell * side + "\n"
         for _ in range(side):
             fh.write(row)
     return path
+
+
+def dense_cells(path: Path, side: int) -> Path:
+    """A plaintext .cells of a full side x side square (the trial: 8000², 64 MB)."""
+    return _dense_square(path, "!Name: bomb\n", "O", side)
 
 
 def many_point_kas(path: Path, points: int) -> Path:
@@ -142,12 +148,7 @@ def many_lights(path: Path, count: int) -> Path:
 
 def dense_lif(path: Path, side: int) -> Path:
     """A Life 1.05 file of a full side x side square, one ``*`` a cell (8000²: 64 MB)."""
-    with open(path, "w") as fh:
-        fh.write("#Life 1.05\n#D bomb\n#N\n#P 0 0\n")
-        row = "*" * side + "\n"
-        for _ in range(side):
-            fh.write(row)
-    return path
+    return _dense_square(path, "#Life 1.05\n#D bomb\n#N\n#P 0 0\n", "*", side)
 
 
 def many_cell_life106(path: Path, cells: int) -> Path:

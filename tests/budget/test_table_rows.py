@@ -35,97 +35,55 @@ class Row:
     small_budget: str
 
 
-def _mc_dense(d: Path, real: bool) -> str:
-    bombs.dense_mc(d / "dense.mc", 13 if real else 10)
-    return "dense.mc"
-
-
-def _mc_nodes(d: Path, real: bool) -> str:
-    bombs.many_node_mc(d / "nodes.mc", 10**7 if real else 10**4)
-    return "nodes.mc"
-
-
-def _mc_leaves(d: Path, real: bool) -> str:
-    bombs.many_leaf_mc(d / "leaves.mc", 3 * 10**6 if real else 5000)
-    return "leaves.mc"
-
-
-def _rle(d: Path, real: bool) -> str:
-    bombs.dense_rle(d / "dense.rle", 30000 if real else 2000)
-    return "dense.rle"
-
-
-def _cells(d: Path, real: bool) -> str:
-    bombs.dense_cells(d / "dense.cells", 8000 if real else 500)
-    return "dense.cells"
-
-
-def _kas(d: Path, real: bool) -> str:
-    bombs.many_point_kas(d / "points.kas", 10**7 if real else 10**4)
-    return "points.kas"
-
-
-def _long_line(d: Path, real: bool) -> str:
-    bombs.long_line_session(d / "line.session", (200 if real else 4) << 20)
-    return "line.session"
-
-
-def _actors(d: Path, real: bool) -> str:
-    bombs.heavy_actors(d / "heavy.actors", *((63, 511) if real else (2, 100)))
-    return "heavy.actors"
-
-
-def _lights(d: Path, real: bool) -> str:
-    bombs.many_lights(d / "many.lights", 200000 if real else 1000)
-    return "many.lights"
-
-
-def _lif(d: Path, real: bool) -> str:
-    bombs.dense_lif(d / "dense.lif", 8000 if real else 500)
-    return "dense.lif"
-
-
-def _life106(d: Path, real: bool) -> str:
-    bombs.many_cell_life106(d / "cells.lif", 4 * 10**6 if real else 40000)
-    return "cells.lif"
-
-
-def _rainbow(d: Path, real: bool) -> str:
-    bombs.many_frame_rainbow(d / "frames.rbrec", 2 * 10**7 if real else 40000)
-    return "frames.rbrec"
+def _bomb(make: Callable[..., Path], name: str, real: tuple[int, ...],
+          small: tuple[int, ...]) -> Callable[[Path, bool], str]:
+    """A Row's ``make``: ``make(directory / name, *sizes)``, the trial's sizes or the small
+    ones."""
+    def made(d: Path, is_real: bool) -> str:
+        make(d / name, *(real if is_real else small))
+        return name
+    return made
 
 
 _FILM = ("ca", "film", "life", "glider", "--generations", "1", "--frames-per-generation", "1",
          "--size", "160x120", "--out", "film.gif")
+_CA_RUN = ("ca", "run", "--rules", "life", "--pattern", "{f}", "--generations", "1")
+_CONVERT = ("ca", "convert", "{f}", "out.rle")
 
 ROWS = [
-    Row("dense 8192² macrocell, ca convert", _mc_dense, ("ca", "convert", "{f}", "out.rle"),
-        "live cells to out.rle as rle would need", "100M"),
-    Row("macrocell of 10^7 node lines", _mc_nodes, ("ca", "convert", "{f}", "out.rle"),
+    Row("dense 8192² macrocell, ca convert", _bomb(bombs.dense_mc, "dense.mc", (13,), (10,)),
+        _CONVERT, "live cells to out.rle as rle would need", "100M"),
+    Row("macrocell of 10^7 node lines",
+        _bomb(bombs.many_node_mc, "nodes.mc", (10**7,), (10**4,)), _CONVERT,
         "lines would need", "2M"),
-    Row("macrocell of 3x10^6 leaves", _mc_leaves, ("ca", "convert", "{f}", "out.rle"),
+    Row("macrocell of 3x10^6 leaves",
+        _bomb(bombs.many_leaf_mc, "leaves.mc", (3 * 10**6,), (5000,)), _CONVERT,
         "lines would need", "1M"),
-    Row("dense RLE 30000², ca run", _rle, ("ca", "run", "--rules", "life", "--pattern", "{f}",
-                                            "--generations", "1"), "grid would need", "8M"),
-    Row("dense .cells 8000², ca run", _cells, ("ca", "run", "--rules", "life", "--pattern",
-                                                 "{f}", "--generations", "1"),
+    Row("dense RLE 30000², ca run", _bomb(bombs.dense_rle, "dense.rle", (30000,), (2000,)),
+        _CA_RUN, "grid would need", "8M"),
+    Row("dense .cells 8000², ca run",
+        _bomb(bombs.dense_cells, "dense.cells", (8000,), (500,)), _CA_RUN,
         "live cells would need", "4M"),
-    Row(".kas of 10^7 points, kas inbetween", _kas,
+    Row(".kas of 10^7 points, kas inbetween",
+        _bomb(bombs.many_point_kas, "points.kas", (10**7,), (10**4,)),
         ("kas", "inbetween", "{f}", "{f}", "--count", "3", "--out", "out.kas"),
         "lines would need", "4M"),
-    Row("recording with a 200 MB line, replay", _long_line, ("replay", "{f}"),
-        "-byte line would need", "16M"),
-    Row("an actor of 63 lathes x 511 points, ca film", _actors,
+    Row("recording with a 200 MB line, replay",
+        _bomb(bombs.long_line_session, "line.session", (200 << 20,), (4 << 20,)),
+        ("replay", "{f}"), "-byte line would need", "16M"),
+    Row("an actor of 63 lathes x 511 points, ca film",
+        _bomb(bombs.heavy_actors, "heavy.actors", (63, 511), (2, 100)),
         (*_FILM, "--actors", "{f}"), "frame of", "16M"),
-    Row("200,000 lights, ca film", _lights, (*_FILM, "--lights", "{f}"),
-        "lights with their shadow maps would need", "16M"),
+    Row("200,000 lights, ca film", _bomb(bombs.many_lights, "many.lights", (200000,), (1000,)),
+        (*_FILM, "--lights", "{f}"), "lights with their shadow maps would need", "16M"),
     # not the trial's rows: readers it did not try, under the same check
-    Row("dense Life 1.05 8000², ca run", _lif, ("ca", "run", "--rules", "life", "--pattern",
-                                                "{f}", "--generations", "1"),
-        "lines and up to", "16M"),
-    Row("Life 1.06 of 4x10^6 cells, ca convert", _life106, ("ca", "convert", "{f}", "out.rle"),
+    Row("dense Life 1.05 8000², ca run", _bomb(bombs.dense_lif, "dense.lif", (8000,), (500,)),
+        _CA_RUN, "lines and up to", "16M"),
+    Row("Life 1.06 of 4x10^6 cells, ca convert",
+        _bomb(bombs.many_cell_life106, "cells.lif", (4 * 10**6,), (40000,)), _CONVERT,
         "lines and up to", "4M"),
-    Row("Rainbow recording of 2x10^7 frames, rainbow replay", _rainbow,
+    Row("Rainbow recording of 2x10^7 frames, rainbow replay",
+        _bomb(bombs.many_frame_rainbow, "frames.rbrec", (2 * 10**7,), (40000,)),
         ("rainbow", "replay", "{f}", "--headless"), "a replay holds every entry) would need",
         "4M"),
 ]

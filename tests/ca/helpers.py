@@ -4,12 +4,15 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from contextlib import contextmanager
+from pathlib import Path
 
+import pytest
 from hypothesis import strategies as st
 
 from camlab88.apps.ca import engine as engine_mod
 from camlab88.apps.ca.engine import Engine
 from camlab88.apps.ca.library import rules_path
+from camlab88.apps.ca.patterns import PatternError, read_pattern
 from camlab88.apps.ca.rules import load_rules
 
 LIFE = load_rules(rules_path("life"))
@@ -72,3 +75,14 @@ def interpretation_lines(forms: int, low: int = 0, top: int = 80, width: int = 6
     if random:
         kinds.append(st.tuples(value, form).map(lambda t: f"{t[0]} 50% {t[1]} 50% {forms}"))
     return st.lists(st.one_of(kinds), min_size=1, max_size=8)
+
+
+def refused_pattern_file(path: Path, text: str) -> str:
+    """Write ``text`` to ``path`` and read it as a pattern, which must refuse it with a
+    message naming the file first: the rest of the message (``:line:column: ...``)."""
+    path.write_text(text)
+    with pytest.raises(PatternError) as exc:
+        read_pattern(path)
+    message = str(exc.value)
+    assert message.startswith(str(path)), message
+    return message[len(str(path)):]

@@ -19,6 +19,7 @@ import pytest
 from PIL import Image
 
 from camlab88.protocols.link import serial_port
+from tests.support.processes import child
 from tests.support.serial_servers import Rfc2217Server, StreamServer, null_modem
 
 STREAM = Path(__file__).parents[1] / "data" / "link" / "pgplot_goctest.goc"
@@ -39,20 +40,13 @@ def _rendered(tmp_path: Path) -> np.ndarray:
 
 
 def _sigma_run(url: str, shot: Path, started=None) -> str:
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "camlab88", "sigma", "run", "--headless", "--serial", url,
-         "--seconds", LINE_SECONDS, "--screenshot", str(shot)],
-        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    try:
+    with child([sys.executable, "-m", "camlab88", "sigma", "run", "--headless", "--serial", url,
+                "--seconds", LINE_SECONDS, "--screenshot", str(shot)]) as proc:
         if started is not None:
             first = proc.stdout.readline()
             assert "on serial port" in first, first + proc.stderr.read()
             started()
         out, err = proc.communicate(timeout=120)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
     assert proc.returncode == 0, err
     return out
 

@@ -5,30 +5,25 @@ from __future__ import annotations
 
 import os
 import signal
-import subprocess
 import sys
 import time
 from pathlib import Path
 
 import pytest
 
+from tests.support.processes import child
+
 
 def test_sigma_run_headless_writes_the_line_recording_on_sigterm(tmp_path: Path) -> None:
     rec = tmp_path / "s.rec"
     env = {k: v for k, v in os.environ.items()
            if k not in ("DISPLAY", "WAYLAND_DISPLAY", "SDL_VIDEODRIVER")}
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "camlab88", "sigma", "run", "--record-line", str(rec)],
-        cwd=tmp_path, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    try:
+    with child([sys.executable, "-m", "camlab88", "sigma", "run", "--record-line", str(rec)],
+               cwd=tmp_path, env=env) as proc:
         first = proc.stdout.readline()  # the pty is open: the run loop is about to start
         assert "on pty" in first, first
         proc.send_signal(signal.SIGTERM)
         out, err = proc.communicate(timeout=60)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
     assert "until Ctrl-C" in err  # the headless run says how it ends
     assert f"recorded the line to {rec}" in out, (out, err)
     assert rec.read_text(encoding="utf-8").startswith("camlab88-link-recording 1\n")
@@ -40,11 +35,9 @@ def test_sigma_run_writes_trace_recording_and_screenshot_on_sigterm_and_sighup(
         tmp_path: Path, sig: int) -> None:
     """SIGHUP (the terminal closed) writes what SIGTERM writes; 129 and 143 as the shell says."""
     rec, trace, shot = tmp_path / "s.rec", tmp_path / "s.jsonl", tmp_path / "s.png"
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "camlab88", "sigma", "run", "--headless", "--seconds", "600",
-         "--record-line", str(rec), "--trace", str(trace), "--screenshot", str(shot)],
-        cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    try:
+    with child([sys.executable, "-m", "camlab88", "sigma", "run", "--headless", "--seconds",
+                "600", "--record-line", str(rec), "--trace", str(trace), "--screenshot",
+                str(shot)], cwd=tmp_path) as proc:
         first = proc.stdout.readline()
         assert "on pty" in first, first
         with open(first.split()[-1], "wb", buffering=0) as host:
@@ -52,10 +45,6 @@ def test_sigma_run_writes_trace_recording_and_screenshot_on_sigterm_and_sighup(
             time.sleep(1.0)  # wall time for the run loop to start and take the bytes
         proc.send_signal(sig)
         out, err = proc.communicate(timeout=60)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
     assert proc.returncode == (129 if sig == signal.SIGHUP else 143), err
     assert rec.read_text(encoding="utf-8").startswith("camlab88-link-recording 1\n")
     assert shot.exists() and f"screenshot {shot}" in err, (out, err)

@@ -150,7 +150,7 @@ def test_the_page_files_ship_in_the_package() -> None:
     from importlib import resources
 
     names = {p.name for p in resources.files("camlab88.replay_page").iterdir()}
-    assert {"page.html", "player.js", "player.css"} <= names
+    assert {"head.html", "page.html", "player.js", "player.css"} <= names
     root = Path(__file__).resolve().parents[2]
     assert '"*.js"' in (root / "pyproject.toml").read_text()
 

@@ -13,11 +13,7 @@ def pgplot_session() -> tuple[bytes, bytes, bytes]:
     g.init()
     g.erase()
     g.colour(1)
-    g.polyline([(80, 60), (700, 60), (700, 480), (80, 480), (80, 60)])
-    for k in range(11):
-        x = 80 + 62 * k
-        g.line(x, 60, x, 70)
-        g.line(x, 480, x, 470)
+    g.frame(80, 60, 700, 480, xticks=11, tick=10)
     curve = [(80 + i * 4, 270 + int(180 * math.sin(i / 12.0))) for i in range(156)]
     g.polyline(curve)
     for i in range(0, 156, 13):

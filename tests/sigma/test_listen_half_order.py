@@ -9,23 +9,20 @@ import sys
 
 import pytest
 
+from tests.support.processes import child
+
 HALF = b"\r\n+-*/DD000CBGAAAHE999C"  # PGPLOT's start, cut after an order's first letter
 
 
 def _run(strict: bool) -> subprocess.CompletedProcess:
     argv = [sys.executable, "-m", "camlab88", "sigma", "run", "--headless", "--listen", "0",
             "--seconds", "2", *(["--strict"] if strict else [])]
-    proc = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    try:
+    with child(argv) as proc:
         first = proc.stdout.readline()
         assert "listening on 127.0.0.1:" in first, first + proc.stderr.read()
         with socket.create_connection(("127.0.0.1", int(first.rsplit(":", 1)[1])), 10) as s:
             s.sendall(HALF)
         out, err = proc.communicate(timeout=60)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
     return subprocess.CompletedProcess(argv, proc.returncode, first + out, err)
 
 

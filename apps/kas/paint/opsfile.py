@@ -31,17 +31,14 @@ from camlab88.apps.kas.model import AnimSequence
 from camlab88.apps.kas.paint.ops import Op, OpsFile, Seeds, op_key
 from camlab88.apps.kas.paint.palette import Palette
 from camlab88.base.atomicfile import write_atomic
+from camlab88.base.fileerror import FilePlaceError
 
 MAGIC = "KAS paint 1"
 _TOKEN = re.compile(r"\S+")
 
 
-class OpsFileError(ValueError):
+class OpsFileError(FilePlaceError):
     """A bad operations file; the message starts ``file:line:column:``."""
-
-    def __init__(self, path: str, line: int, col: int, message: str) -> None:
-        super().__init__(f"{path}:{line}:{col}: {message}")
-        self.path, self.line, self.col = path, line, col
 
 
 # ------------------------------------------------------------------------ writing

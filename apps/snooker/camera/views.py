@@ -24,6 +24,7 @@ from pathlib import Path
 
 from camlab88.apps.snooker.camera.projection import FOCAL_MAX_MM, FOCAL_MIN_MM, Camera
 from camlab88.base.atomicfile import write_atomic
+from camlab88.base.fileerror import FilePlaceError
 
 Vec3 = tuple[float, float, float]
 _TOKEN = re.compile(r"\S+")
@@ -31,10 +32,8 @@ _NUMBER = re.compile(r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?
 _FIELDS = ("frame", "ox", "oy", "oz", "vx", "vy", "vz", "focal")
 
 
-class ViewFileError(ValueError):
-    def __init__(self, path: str, line: int, col: int, message: str) -> None:
-        super().__init__(f"{path}:{line}:{col}: {message}")
-        self.path, self.line, self.col = path, line, col
+class ViewFileError(FilePlaceError):
+    """A bad view file (``path:line:col: what``)."""
 
 
 @dataclass(frozen=True)

@@ -4,15 +4,12 @@ from __future__ import annotations
 
 import argparse
 
-from camlab88.protocols.link.cli_args import ECHO_HELP as LINK_ECHO_HELP
-from camlab88.protocols.link.cli_args import add_echo_arguments
+from camlab88.areas import delegated_action
+from camlab88.protocols.link.cli_args import ECHO_HELP, add_echo_arguments
 
 
 def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("echo", help=f"{LINK_ECHO_HELP}")
-    add_echo_arguments(p)
-    p.set_defaults(handler=echo)
-    return p
+    return delegated_action(actions, "echo", ECHO_HELP, add_echo_arguments, echo)
 
 
 def echo(args: argparse.Namespace) -> int:

@@ -4,15 +4,12 @@ from __future__ import annotations
 
 import argparse
 
-from camlab88.protocols.link.cli_args import STREAM_HELP as LINK_STREAM_HELP
-from camlab88.protocols.link.cli_args import add_stream_arguments
+from camlab88.areas import delegated_action
+from camlab88.protocols.link.cli_args import STREAM_HELP, add_stream_arguments
 
 
 def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("stream", help=f"{LINK_STREAM_HELP}")
-    add_stream_arguments(p)
-    p.set_defaults(handler=stream)
-    return p
+    return delegated_action(actions, "stream", STREAM_HELP, add_stream_arguments, stream)
 
 
 def stream(args: argparse.Namespace) -> int:

@@ -6,16 +6,16 @@ so the new picture appears whole at the next frame and nothing is copied.
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import Any, Generic, TypeVar
+from typing import Generic, TypeVar
 
 from camlab88.base.plainstate import Int, Record
+from camlab88.protocols.rainbow.attribute_state import AttributeState
 from camlab88.protocols.rainbow.client import RainbowClient
 
 T = TypeVar("T")
 
 
-class Flip(Generic[T]):
+class Flip(AttributeState, Generic[T]):
     """Two things of which one is on screen: arc ``arcs[i]`` shows ``items[i]``, the first
     at the start."""
 
@@ -37,14 +37,6 @@ class Flip(Generic[T]):
 
     # its declared state (emulator.harness.program_state): which is shown, how many swaps
     STATE_SCHEMA = Record(shown=Int(0, 1), swaps=Int(0))
-
-    def state_values(self) -> dict[str, Any]:
-        return {"shown": self.shown, "swaps": self.swaps}
-
-    def check_state_values(self, values: dict[str, Any]) -> Callable[[], None]:
-        def put() -> None:
-            self.shown, self.swaps = values["shown"], values["swaps"]
-        return put
 
     def swap(self) -> None:
         """Show the back one, hide the front one (both take effect at the next frame)."""

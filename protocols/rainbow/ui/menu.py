@@ -17,6 +17,7 @@ from collections.abc import Callable
 from typing import Any
 
 from camlab88.base.plainstate import Bool, Choice, Int, Opt, Record
+from camlab88.protocols.rainbow.attribute_state import AttributeState
 from camlab88.protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
 
 BORDER, INK = 0, 1  # pixel values; item i's background is 2 + i
@@ -156,7 +157,7 @@ class PopupMenu(ItemMenu):
         self.client.destroy(self.cluster)
 
 
-class CrossMenu:
+class CrossMenu(AttributeState):
     """Five items in a cross (§7.3.1): centre, up, down, left, right.
 
     One pad per item mapped into a cluster; the cluster's empty corners show what is
@@ -197,15 +198,6 @@ class CrossMenu:
 
     # its declared state (the pixels and the colours are the Rainbow's)
     STATE_SCHEMA = Record(highlighted=Opt(Choice(DIRS)), cx=Int(), cy=Int())
-
-    def state_values(self) -> dict[str, Any]:
-        return {"highlighted": self.highlighted, "cx": self.cx, "cy": self.cy}
-
-    def check_state_values(self, values: dict[str, Any]) -> Callable[[], None]:
-        def put() -> None:
-            self.highlighted, self.cx, self.cy = values["highlighted"], values["cx"], \
-                values["cy"]
-        return put
 
     def _highlight(self, d: str | None) -> None:
         if d == self.highlighted:

@@ -6,16 +6,14 @@ changed per message through the LUT, not by redrawing), 1 black writing, 2 a whi
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import Any
-
 from camlab88.base.plainstate import Record, Str
+from camlab88.protocols.rainbow.attribute_state import AttributeState
 from camlab88.protocols.rainbow.client import RainbowClient
 
 PAPER, INK, BORDER = 0, 1, 2
 
 
-class MessageArea:
+class MessageArea(AttributeState):
     def __init__(self, client: RainbowClient, x: int, y: int, width: int, height: int,
                  lut_page: int, plane: int = 0, parent: int = 0, priority: int = 10) -> None:
         self.client = client
@@ -30,14 +28,6 @@ class MessageArea:
 
     # its declared state: the text shown (its pixels and colour are the Rainbow's)
     STATE_SCHEMA = Record(text=Str(65536))
-
-    def state_values(self) -> dict[str, Any]:
-        return {"text": self.text}
-
-    def check_state_values(self, values: dict[str, Any]) -> Callable[[], None]:
-        def put() -> None:
-            self.text = values["text"]
-        return put
 
     def show(self, text: str, colour: str) -> None:
         c = self.client
