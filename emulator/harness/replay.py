@@ -23,7 +23,7 @@ from camlab88.emulator.harness import codec
 from camlab88.emulator.harness.control_options import Controls
 from camlab88.emulator.harness.loop import Plugin, RunOptions
 from camlab88.emulator.harness.replay_window import RecordWindow
-from camlab88.emulator.harness.session_record import screen_hash
+from camlab88.emulator.harness.session_record import screen_hash, shown
 from camlab88.emulator.host_input import HostEvent, Quit
 from camlab88.protocols.session import ScreenHash, SessionRecording
 
@@ -155,6 +155,13 @@ class HashCheck(Plugin):
         self.last = (rec.end.frame // self.every * self.every if rec.end is not None
                      else max((h.frame for h in rec.hashes), default=0))
 
+    def start(self, harness: Harness) -> None:
+        """A run begun from --load-state (loaded by now): its first frame, the state's."""
+        if self.replay.check and harness.frames_shown > 0 and not self.replay.seeking:
+            want = self.window.hash_at(harness.frames_shown)
+            if want is not None:
+                self._compare(harness, want, shown(harness))
+
     def wants_frame(self, harness: Harness) -> bool:
         n = harness.frames_shown
         return self.replay.check and 0 < n <= self.last and n % self.every == 0
@@ -184,9 +191,8 @@ class HashCheck(Plugin):
 
     def finish(self, harness: Harness) -> None:
         end = self.replay.rec.end
-        frame = harness.last_frame if harness.last_frame is not None else harness.screen()
         self.replay.ended = ScreenHash(harness.frames_shown, harness.ticks,
-                                       harness.target.time(), screen_hash(frame))
+                                       harness.target.time(), screen_hash(shown(harness)))
         if (not self.replay.check or self.replay.mismatch is not None or end is None
                 or self.replay.seeking):
             return

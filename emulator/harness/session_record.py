@@ -28,6 +28,11 @@ HASH_EVERY = 10
 _OPTIONS_NOT_RECORDED = {"--record"}  # value options the replay must not repeat
 
 
+def shown(harness: Harness) -> np.ndarray:
+    """The frame last shown, or the screen as it stands before any."""
+    return harness.last_frame if harness.last_frame is not None else harness.screen()
+
+
 def screen_hash(frame: np.ndarray) -> str:
     """SHA-256 of a frame's shape and RGB bytes (row 0 = top)."""
     arr = np.ascontiguousarray(frame, dtype=np.uint8)
@@ -73,6 +78,11 @@ class SessionRecorder(Plugin):
                                  input_files(argv, options.inputs))
         self._pending: dict[str, bytearray] = {}
 
+    def start(self, harness: Harness) -> None:
+        if harness.frames_shown > 0:  # begun from --load-state (loaded by now): its screen
+            self.out.hash(ScreenHash(harness.frames_shown, harness.ticks,  # bounds the reader
+                                     harness.target.time(), screen_hash(shown(harness))))
+
     def handle_events(self, harness: Harness, events: list[HostEvent]) -> list[HostEvent]:
         t = harness.target.time()
         for e in events:
@@ -111,9 +121,8 @@ class SessionRecorder(Plugin):
     def finish(self, harness: Harness) -> None:
         try:
             self._flush_wire(harness.ticks)
-            frame = harness.last_frame if harness.last_frame is not None else harness.screen()
             self.out.finish(ScreenHash(harness.frames_shown, harness.ticks,
-                                       harness.target.time(), screen_hash(frame)),
+                                       harness.target.time(), screen_hash(shown(harness))),
                             harness.ticks)
         except BaseException:  # no recording: the half-written file goes, an older one stays
             self.out.abandon()

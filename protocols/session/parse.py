@@ -3,9 +3,10 @@
 Every refusal names the file, line and column: bad UTF-8 or JSON, an unknown record type, a
 missing or mistyped key, another format, a newer version, ticks going back, a time that does
 not go with its tick (back in time, or two times for one tick), a screen hash at a frame no
-run can reach (not the next multiple of ``hash_every``, more frames than ticks, past the
-end), an end whose frames the hashes do not cover (so the frames a replay runs are bounded
-by the file's size), a file whose content does not match its hash, more inflated data than
+run can reach (not the next multiple of ``hash_every``; a run begun from ``--load-state``
+hashes its first frame, the state's, first; more frames than ticks, past the end), an end
+whose frames the hashes do not cover (so the frames a replay runs are bounded by the file's
+size), a file whose content does not match its hash, more inflated data than
 ``MAX_TOTAL``, or no ``end`` record (a truncated recording).
 """
 
@@ -49,6 +50,8 @@ class _Reader:
         self.last_tick = 0
         self.last_time: tuple[int, Fraction] | None = None  # (tick, time) of the last
         self.last_frame = 0
+        self.hashed = False
+        self.resumed = False
         self.total = 0
         self.ended = False
         self.traffic = True  # keep the > and < wire records (a replay does not need them)
@@ -105,6 +108,10 @@ class _Reader:
         if obj["hash_every"] < 1:
             raise self.fail("header: hash_every must be at least 1")
         self.rec = SessionRecording(list(obj["argv"]), obj["hash_every"], obj["headless"])
+        # a run begun from --load-state starts at the state's frame: its first hash is that
+        # frame's (any), the rest every multiple after it as in any recording
+        self.resumed = any(a == "--load-state" or a.startswith("--load-state=")
+                           for a in obj["argv"])
 
     def tick(self, obj: dict[str, Any], key: str = "tick") -> int:
         t = obj[key]
@@ -195,7 +202,8 @@ class _Reader:
 
     def _hash(self, obj: dict[str, Any]) -> None:
         frame, every = obj["frame"], self.rec.hash_every
-        if frame != self.last_frame + every:  # the recorder hashes every multiple
+        first_of_resumed = self.resumed and not self.hashed
+        if frame != self._next(every) and not first_of_resumed:  # every multiple is hashed
             raise self.fail(f"hash record: frame {frame} is not the next multiple of "
                             f"hash_every {every} after frame {self.last_frame}")
         screen = self._screen(obj, frame)
@@ -203,11 +211,15 @@ class _Reader:
             self.timeline.append(("hash", screen))
         else:
             self.rec.hashes.append(screen)
-        self.last_frame = frame
+        self.last_frame, self.hashed = frame, True
+
+    def _next(self, every: int) -> int:
+        """The next multiple of ``every`` after the last hashed frame."""
+        return (self.last_frame // every + 1) * every
 
     def _end(self, obj: dict[str, Any]) -> None:
         every = self.rec.hash_every
-        if not self.last_frame <= obj["frames"] < self.last_frame + every:
+        if not self.last_frame <= obj["frames"] < self._next(every):
             raise self.fail(f"end record: {obj['frames']} frames, but the screen hashes "
                             f"(every {every} frames) stop at frame {self.last_frame}")
         self.rec.end = self._screen(obj, obj["frames"])

@@ -105,9 +105,7 @@ PROGRAMS: dict[str, tuple[Callable[[Path], list[str]], str]] = {
     "snooker-replay": (_replay, "0.2"),
     "ca-program": (_events(["ca", "program", "--headless", "--pattern", "glider"]), "0.1"),
     "kas-view": (_kas_view, "0.3"),
-    # the editors, whose state is their input log (emulator.harness.input_log); saved
-    # before their 10th frame, as the others (a recording from --load-state: its first
-    # screen hash must be frame 10's, session/parse.py)
+    # the editors, whose state is their input log (emulator.harness.input_log)
     "kas-edit": (_kas_edit, "0.3"),
     "kas-path": (_kas_path, "0.3"),
     "kas-paint": (_kas_paint, "0.3"),
