@@ -168,10 +168,111 @@ def test_a_ca_state_whose_answers_end_its_dialogue_is_refused(tmp_path: Path) ->
     assert "\n" not in str(stop.value)
 
 
+def _file_dialogue_events(item: str, before_name: str, name: str, after: str) -> str:
+    from camlab88.apps.ca.program.demo import choose, leave_editing
+
+    return ("frames 3\n" + leave_editing() + choose(item) + before_name +
+            f"frames 20\ntype {name}\nkey return\n" + after + "frames 6\n")
+
+
+def _dialogue_of(state: Path) -> dict:
+    from camlab88.emulator.machine.state_file import unpack
+
+    head, _ = unpack(state.read_bytes(), "program")
+    return head["values"]["program"]["dialogue"]
+
+
+@pytest.mark.parametrize("item", ["Change rules", "Load pattern"])
+def test_a_ca_state_saved_asking_for_a_file_continues(monkeypatch, tmp_path: Path,
+                                                      item: str) -> None:
+    """Change rules and Load pattern, saved while they ask for the file: made again with no
+    answer, the script names the file after the load."""
+    name = "life" if item == "Change rules" else "glider"
+    after = "" if item == "Change rules" else "frames 2\nclick right 420 320\nframes 2\n"
+    (tmp_path / "e.events").write_text(_file_dialogue_events(item, "", name, after))
+    argv = ["ca", "program", "--headless", "--pattern", "glider", "--events",
+            str(tmp_path / "e.events")]
+    state = tmp_path / "c.c88state"
+    assert_continues(monkeypatch, argv, 0.3, state)
+    assert _dialogue_of(state) == {"name": item, "arg": 0, "answers": [], "corner": None}
+
+
+def test_a_ca_state_saved_in_save_pattern_before_its_name_continues(monkeypatch,
+                                                                     tmp_path: Path) -> None:
+    """Save pattern, saved with its rectangle answered, asking for the file's name: the
+    name comes from the script after the load, never from the state; the file is written."""
+    rect = ("frames 2\nmove 350 300\nclick right 350 300\nframes 2\nmove 450 380\n"
+            "click right 450 380\n")
+    saved = tmp_path / "p"
+    (tmp_path / "e.events").write_text(_file_dialogue_events(
+        "Save pattern", rect, str(saved), "frames 2\nclick right 400 340\n"))
+    argv = ["ca", "program", "--headless", "--pattern", "glider", "--events",
+            str(tmp_path / "e.events")]
+    state = tmp_path / "c.c88state"
+    assert_continues(monkeypatch, argv, 0.4, state)
+    dialogue = _dialogue_of(state)
+    assert dialogue["name"] == "Save pattern"
+    assert [a["kind"] for a in dialogue["answers"]] == ["rect"]
+
+
+def test_a_ca_state_giving_a_file_dialogue_its_file_name_is_refused(monkeypatch,
+                                                                   tmp_path: Path) -> None:
+    """A state never names a file: answers reaching a file dialogue's file question are
+    refused in one line before any step of it runs (the file never read)."""
+    from camlab88.emulator.machine.state_file import pack, unpack
+
+    (tmp_path / "e.events").write_text(_file_dialogue_events("Load pattern", "", "glider",
+                                                             ""))
+    argv = ["ca", "program", "--headless", "--pattern", "glider", "--events",
+            str(tmp_path / "e.events")]
+    state = tmp_path / "c.c88state"
+    assert main([*argv, "--save-state", str(state), "--at", "0.3"]) == 0
+    head, parts = unpack(state.read_bytes(), "program")
+    outside = tmp_path / "outside.rle"
+    outside.write_text("x = 1, y = 1\no!\n")
+    head["values"]["program"]["dialogue"]["answers"].append(
+        {"kind": "text", "text": str(outside), "ints": []})
+    state.write_bytes(pack("program", head, parts))
+    opened = []
+    real_open = open
+
+    def watching(path, *a, **k):
+        opened.append(str(path))
+        return real_open(path, *a, **k)
+
+    import builtins
+
+    monkeypatch.setattr(builtins, "open", watching)
+    with pytest.raises(SystemExit) as stop:
+        main([*argv, "--load-state", str(state)])
+    monkeypatch.undo()
+    assert "the dialogue 'Load pattern' would be given a file name by the state" in \
+        str(stop.value)
+    assert "\n" not in str(stop.value)
+    assert str(outside) not in opened
+
+
+def test_a_ca_state_is_not_saved_once_a_file_dialogue_has_its_name(tmp_path: Path,
+                                                                    capsys) -> None:
+    """Save pattern given its file's name (asking for the reference point): --save-state
+    fails the run in one line naming the state file (status 1)."""
+    rect = ("frames 2\nmove 350 300\nclick right 350 300\nframes 2\nmove 450 380\n"
+            "click right 450 380\n")
+    (tmp_path / "e.events").write_text(_file_dialogue_events(
+        "Save pattern", rect, str(tmp_path / "p"), "frames 30\n"))
+    state = tmp_path / "c.c88state"
+    code = main(["ca", "program", "--headless", "--pattern", "glider", "--events",
+                 str(tmp_path / "e.events"), "--save-state", str(state)])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert code == 1 and not state.exists()
+    assert err[-1].endswith("the dialogue 'Save pattern' has been given a file name (it is "
+                            "saved once it has ended)"), err
+    assert str(state) in err[-1]
+
+
 def test_a_ca_state_is_not_saved_while_a_dialogue_runs(tmp_path: Path, capsys) -> None:
-    """A dialogue that names files in its answers (Load pattern, Save pattern, Change rules)
-    or waits on a pop-up menu's choice is not made again from a state: --save-state in one
-    fails the run in one line naming the file (status 1)."""
+    """A dialogue waiting on a pop-up menu's choice is not made again from a state:
+    --save-state in one fails the run in one line naming the file (status 1)."""
     (tmp_path / "e.events").write_text(
         "frames 3\npress middle 400 300\nframes 3\nmove 370 300\nframes 3\n"
         "release middle 370 300\nframes 30\n")

@@ -88,7 +88,10 @@ def test_a_ca_program_state_of_version_1_loads_without_a_dialogue(tmp_path: Path
     state = tmp_path / "c.c88state"
     assert main([*argv, "--save-state", str(state), "--at", "0.1"]) == 0
     head, parts = unpack(state.read_bytes(), "program")
-    assert head["state_version"] == 2 and head["values"]["program"].pop("dialogue") is None
+    assert head["state_version"] == 3
+    state.write_bytes(pack("program", dict(head, state_version=2), parts))
+    assert main([*argv, "--load-state", str(state)]) == 0  # 2 -> 3: the same values
+    assert head["values"]["program"].pop("dialogue") is None
     state.write_bytes(pack("program", dict(head, state_version=1), parts))
     assert main([*argv, "--load-state", str(state)]) == 0
     head["values"]["program"] = ["not", "a", "mapping"]

@@ -9,15 +9,18 @@ session's, the viewport's, the display's (buffers, outlines, message areas) and 
 
 A dialogue in progress is a generator: it is kept as which dialogue it is and the answers
 it has been given, and made again by starting it through the program's own code and giving
-it those answers (``REBUILT``). Only dialogues that read and write no file are made again
-so (their steps before the last only ask; a state whose answers would end one is refused,
-and what ending it would do is an action a user could take anyway): Save pattern, Load
-pattern and Change rules name files in their answers, and stay refused while they run, as
-do a dialogue's open choice menu (a device object) and input held during a long jump. What
+it those answers (``REBUILT``; their steps before the last only ask; a state whose answers
+would end one is refused, and what ending it would do is an action a user could take
+anyway). Save pattern, Load pattern and Change rules name a file in one answer
+(``FILE_ANSWER``): they are saved, and made again, only up to the question for it (a state
+never names a file a program reads or writes); given the name, they stay refused while they
+run, as do a dialogue's open choice menu (a device object) and input held during a long
+jump. What
 the command line gave (the rules file, the pattern, the script, the Log being written) is
 the fresh build's.
 
-Version 2 added ``dialogue``; version 1 (without it) is read by ``migrate``.
+Version 2 added ``dialogue``, version 3 the file dialogues to its names; ``migrate`` reads
+versions 1 and 2.
 """
 
 from __future__ import annotations
@@ -46,7 +49,7 @@ from camlab88.protocols.rainbow.ui.menu import CrossMenu
 if TYPE_CHECKING:
     from camlab88.apps.ca.program.program import CAProgram
 
-VERSION = 2
+VERSION = 3
 _PAIR = Tuple((Int(), Int()))
 ENGINE = Record(checkpoint=Blob(256 << 20), rules_source=Str(4096),
                 algorithm=Choice(algorithms.CHOICES), hashlife_memory=Int(1))
@@ -64,7 +67,13 @@ REBUILT: dict[str, Callable[[Any, int], Any]] = {
     "Set to value": lambda p, _: commands.set_value(p),
     "Go to generation": lambda p, _: stepping.go_to_generation(p),
     "Start generation": commands.start_generation,
+    "Change rules": lambda p, _: commands.change_rules(p),
+    "Load pattern": lambda p, _: commands.load_pattern(p),
+    "Save pattern": lambda p, _: commands.save_pattern(p),
 }
+# the dialogues that name a file: the answer that names it (they are saved and made again
+# only before it is given)
+FILE_ANSWER: dict[str, int] = {"Change rules": 0, "Load pattern": 0, "Save pattern": 1}
 # an answer: none (cancelled), a text or menu item, a cell, a rectangle
 ANSWER = Record(kind=Choice(("none", "text", "point", "rect")), text=Str(4096),
                 ints=ListOf(Int(), 4))
@@ -113,8 +122,11 @@ def engine_from(values: dict[str, Any]) -> Engine:
 
 
 def migrate(version: int, values: Any) -> Any:
-    """A version-1 state (JSON, unchecked) as version 2: no dialogue was in progress (a
-    version-1 state could not be saved in one)."""
+    """An older state (JSON, unchecked) as this version's. Version 1 as 2: no dialogue was
+    in progress (a version-1 state could not be saved in one). Version 2 as 3: the same
+    values (3 only adds the file dialogues, up to their file's question, to the names)."""
+    if version == 2:
+        return values
     if version != 1:
         raise ValueError(f"no migration from version {version}")
     if not isinstance(values, dict) or "dialogue" in values:
@@ -148,6 +160,9 @@ def dialogue_values(p: CAProgram) -> dict[str, Any] | None:
     name, arg = p.dialogue_made or ("", 0)
     if p.choice is not None or name not in REBUILT:
         raise ValueError("a dialogue is in progress (it is saved once it has ended)")
+    if len(p.answers) > FILE_ANSWER.get(name, len(p.answers)):
+        raise ValueError(f"the dialogue {name!r} has been given a file name (it is saved "
+                         "once it has ended)")
     return {"name": name, "arg": arg, "answers": [_answer_values(a) for a in p.answers],
             "corner": p.corner}
 
@@ -157,6 +172,8 @@ def rebuild_dialogue(p: CAProgram, v: dict[str, Any]) -> None:
     (its steps before the last only ask); ValueError if they end it or it asks for a menu
     choice (a saved dialogue never waits on one)."""
     answers = [_answer(a) for a in v["answers"]]
+    if len(answers) > FILE_ANSWER.get(v["name"], len(answers)):  # before any step runs
+        raise ValueError(f"the dialogue {v['name']!r} would be given a file name by the state")
     dialogue = REBUILT[v["name"]](p, v["arg"])
     try:
         ask = next(dialogue)
