@@ -163,3 +163,17 @@ def test_the_terminal_sends_the_ledgers_key_codes(key: str, code: int) -> None:
         run.step()
     assert tap.got == bytes([code])
     assert bytes_to_keys(tap.got) == [key]
+
+
+def test_vectors_go_in_abbreviated_graphics_mode_about_half_the_characters() -> None:
+    # §3.1.4: the programs send vectors in abbreviated graphics mode, saving about half
+    from camlab88.apps.kas.program.draw import encode, poly
+    from camlab88.protocols.sigma import Encoder
+
+    enc = Encoder()
+    pts = [(100 + 7 * i, 200 + 3 * (i % 5)) for i in range(40)]
+    sent = encode(enc, poly(2, pts))
+    colour = enc.colour(2)
+    assert sent.startswith(colour + b"JH")
+    full = len(colour + enc.polyline(pts))
+    assert len(sent) < 0.6 * full
