@@ -48,6 +48,14 @@ def test_redundant_collinear_points_dropped():
     assert len(q) == 3
 
 
+def test_chains_correspond_by_drawing_order_not_by_nearness():
+    # chain 0 of a goes to chain 0 of b although chain 1 of b is nearer it (§3.1.2)
+    a = key(chain([(0, 0)]), chain([(10, 0)]))
+    b = key(chain([(10, 4)]), chain([(0, 8)]))
+    s = inbetween(a, b, frames=3)
+    assert [c.points.tolist() for c in s.frames[1].chains] == [[[5, 2]], [[5, 4]]]
+
+
 def test_linear_without_path_and_keyframes_exact():
     a = key(chain([(0, 0), (1, 0)]))
     b = key(chain([(2, 2), (3, 2)]))
@@ -220,6 +228,13 @@ def test_spline_segment_exact_at_ends_and_formulae():
     assert np.allclose(ov, cr)  # equal chord lengths: Overhauser equals Catmull-Rom
     tight = splines.segment(k, 1, u, "kochanek-bartels", tension=1.0)
     assert np.allclose(tight[1, 0], [1.5, 0.5])  # tension 1: zero tangents, straight mid
+
+
+def test_catmull_rom_midpoint_on_uneven_keys():
+    # keys whose neighbour chords differ, so the tangents' size shows in the midpoint
+    k = np.array([[[0.0, 0]], [[1.0, 1]], [[3.0, 0]], [[4.0, 2]]])
+    cr = splines.segment(k, 1, np.array([0.0, 0.5, 1.0]), "catmull-rom")
+    assert np.allclose(cr[1, 0], (-k[0, 0] + 9 * k[1, 0] + 9 * k[2, 0] - k[3, 0]) / 16)
 
 
 def test_kochanek_bartels_continuity_signs():

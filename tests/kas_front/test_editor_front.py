@@ -163,3 +163,60 @@ def test_the_terminal_sends_the_ledgers_key_codes(key: str, code: int) -> None:
         run.step()
     assert tap.got == bytes([code])
     assert bytes_to_keys(tap.got) == [key]
+
+
+def test_vectors_go_in_abbreviated_graphics_mode_about_half_the_characters() -> None:
+    # §3.1.4: the programs send vectors in abbreviated graphics mode, saving about half
+    from camlab88.apps.kas.program.draw import encode, poly
+    from camlab88.protocols.sigma import Encoder
+
+    enc = Encoder()
+    pts = [(100 + 7 * i, 200 + 3 * (i % 5)) for i in range(40)]
+    sent = encode(enc, poly(2, pts))
+    colour = enc.colour(2)
+    assert sent.startswith(colour + b"JH")
+    full = len(colour + enc.polyline(pts))
+    assert len(sent) < 0.6 * full
+
+
+def test_screen_layout_menu_above_the_field_keys_to_its_right_cross_at_its_centre() -> None:
+    # §3.1.1, figure 3.1's caption: the field with its centre cross, a menu row of coloured
+    # boxes above the drawing area, the keyboard commands listed to the right
+    from camlab88.apps.kas.program import layout as L
+    from camlab88.apps.kas.program import screen
+
+    boxes = [b for _item, b in screen.menu_boxes()]
+    assert len(boxes) > 8 and all(y0 > L.FIELD_Y1 for _x0, y0, _x1, _y1 in boxes)
+    lines = screen.key_lines("draw")
+    shown = [p for p in screen.editor_prims(Editor()) if p.kind == "text" and p.text in lines]
+    assert len(shown) == len(lines) and all(p.data[0] > L.FIELD_X1 for p in shown)
+    cx, cy = round(L.CENTRE_X), round(L.CENTRE_Y)
+    arms = [p.data for p in screen.field_marks() if len(p.data) == 4]
+    assert (cx - 12, cy, cx + 12, cy) in arms and (cx, cy - 12, cx, cy + 12) in arms
+
+
+def test_the_tablet_maps_to_the_whole_screen_menu_at_its_top() -> None:
+    # §3.1.1: commands are picked by touching the menu "at the top of the tablet"
+    from camlab88.apps.kas.editor import menu_hit
+    from camlab88.apps.kas.program import layout as L
+
+    w, h = L.TABLET_AREA.width, L.TABLET_AREA.height
+    assert L.tablet_to_field(0, 0) == L.px_to_field(0, L.SCREEN_H)       # top left
+    assert L.tablet_to_field(w, h) == L.px_to_field(L.SCREEN_W, 0)       # bottom right
+    top_row = [menu_hit(*L.tablet_to_field(x / 10, 1.2)) for x in range(10, 110, 10)]
+    assert all(top_row), top_row
+    assert menu_hit(*L.tablet_to_field(w / 2, h - 1.2)) is None
+
+
+def test_editing_cursors_are_a_cyan_square_and_a_magenta_triangle() -> None:
+    from camlab88.apps.kas.model import PALETTE, Chain, Drawing
+    from camlab88.apps.kas.program.screen import cursor_prims
+
+    ed = Editor(Drawing([Chain.from_points([(0, 0), (1, 0), (2, 1)])]))
+    ed.enter_edit()
+    prims = cursor_prims(ed)
+    squares = [p for p in prims if p.kind == "rect"]
+    triangles = [p for p in prims if p.kind == "poly"]
+    assert squares and {PALETTE[p.colour][0] for p in squares} == {"cyan"}
+    assert triangles and {PALETTE[p.colour][0] for p in triangles} == {"magenta"}
+    assert all(len(p.data) == 8 and p.data[:2] == p.data[-2:] for p in triangles)

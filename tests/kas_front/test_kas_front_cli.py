@@ -212,3 +212,20 @@ def test_saving_over_a_library_entry_needs_force(tmp_path, capsys, monkeypatch) 
     assert (lib / "my_arc.kas").read_bytes() == kept
     assert main(["kas", "library", "--save", str(second), "my_arc", "--force"]) == 0
     assert (lib / "my_arc.kas").read_bytes() == second.read_bytes()
+
+
+def test_the_editor_drives_a_t5684_at_9600_baud_by_default(tmp_path, monkeypatch) -> None:
+    # §3.1, §3.1.4: the KAS programs ran on a Sigma T5684 over a 9600-baud line
+    from camlab88.emulator import machine
+
+    made = []
+    real = machine.SigmaMachine
+
+    def recording(model, settings, *a, **kw):
+        made.append((model, settings.baud))
+        return real(model, settings, *a, **kw)
+
+    monkeypatch.setattr(machine, "SigmaMachine", recording)
+    assert main(["kas", "edit", str(tmp_path / "k.kas"), "--script",
+                 str(DATA / "white.txt"), "--headless"]) == 0
+    assert made == [("t5684", 9600)]

@@ -75,3 +75,11 @@ def test_four_working_areas_quarter_size() -> None:
     assert len(sent) == 10
     line.send(sent)
     assert_matches_golden(term.frame(), DATA / "four_areas_edited.png")
+
+
+def test_the_working_areas_sit_where_figure_37_puts_them() -> None:
+    # figure 3.7's caption: painting bottom right, colour mixing top right, the two double
+    # buffers on the left, each a quarter of the 1536 x 1024 drawing area (device y up)
+    assert areas.PAINTING.origin == (768, 0) and areas.MIXING.origin == (768, 512)
+    assert sorted(b.origin for b in areas.BUFFERS) == [(0, 0), (0, 512)]
+    assert {a.box()[2] - a.box()[0] + 1 for a in areas.AREAS} == {768}

@@ -149,3 +149,14 @@ def test_square_seed_is_deep_inside() -> None:
     sq = _closed([(100, 100), (200, 100), (200, 200), (100, 200)])
     (s,) = seeds.shape_seeds(sq)
     assert 140 <= s[0] <= 160 and 140 <= s[1] <= 160
+
+
+def test_selected_chains_end_points_joined_into_one_closed_shape() -> None:
+    # §3.3: the selected line-chains "have their end points joined together to form a closed
+    # shape"; the second chain, drawn the other way, is turned so its nearer end joins
+    from camlab88.apps.kas.paint import shape
+
+    seq = one_frame(np.array([(0, 0), (2, 0), (2, 1)], float),
+                    np.array([(0, 1.2), (1, 1.5), (2, 1.2)], float))
+    poly = shape.closed_shape(seq.frames[0], (1, 2))
+    assert poly.tolist() == [[0, 0], [2, 0], [2, 1], [2, 1.2], [1, 1.5], [0, 1.2], [0, 0]]
