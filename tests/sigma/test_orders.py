@@ -43,6 +43,10 @@ def test_setting_registers() -> None:
     assert (t.reg.sequence_length, t.reg.xon_char, t.reg.xoff_char, t.reg.prompt_char) == \
         (0, 17, 19, 999)
     assert t.stats["unknown"] == t.stats["malformed"] == 0
+    # the values are stored, not merely the power-on ones left alone
+    t = graphics(b"DD123DG018DF020HE500")
+    assert (t.reg.sequence_length, t.reg.xon_char, t.reg.xoff_char, t.reg.prompt_char) == \
+        (123, 18, 20, 500)
 
 
 @covers("GA")
@@ -147,6 +151,16 @@ def test_ek_twelve_bit_mask() -> None:
     assert lit(t) == {(0, 0), (3, 0), (6, 0), (9, 0)}
 
 
+def test_ags_escape_m_and_r_set_twelve_bit_dash_patterns() -> None:
+    """RAL GKS's A-series dashes: ESC M hhh sets a 12-bit mask, ESC R + 3 spaces the built-in
+    3 on 3 off pattern; both repeat every 12 steps."""
+    t = graphics(E.abbreviated_dash12(0x924) + E.polyline([(0, 0), (23, 0)]))
+    assert lit(t) == {(x, 0) for x in (0, 3, 6, 9, 12, 15, 18, 21)}
+    t = graphics(b"JH\x1bR   \x1f" + E.line_dashed() + E.polyline([(0, 0), (23, 0)]))
+    assert lit(t) == {(x, 0) for x in (0, 1, 2, 6, 7, 8, 12, 13, 14, 18, 19, 20)}
+    assert t.stats["unknown"] == t.stats["malformed"] == 0
+
+
 @covers("HI", "KI")
 def test_colour_indices() -> None:
     t = graphics(E.colour(9) + E.polyline([(0, 0), (3, 0)]))
@@ -164,6 +178,13 @@ def test_ba_graphics_text() -> None:
     assert len(pts) == 11  # our 'I': top bar 3 + stem 5 + bottom bar 3
     assert min(x for x, _ in pts) >= 101 and min(y for _, y in pts) >= 101
     assert (t.reg.pen_x, t.reg.pen_y) == (108, 100)
+
+
+def test_ba_text_ends_at_cr_and_keeps_256_characters() -> None:
+    t = graphics(b"BA" + b"I" * 300 + b"\r" + E.colour(3))
+    assert t.reg.pen_x == 256 * 8  # 256 cells drawn, the rest dropped and counted
+    assert t.stats["malformed"] == 1
+    assert t.reg.colour == 3  # CR ended the text: HI3 is an order again
 
 
 @covers("FH", "BG")
