@@ -126,6 +126,8 @@ def test_pgplot_colours() -> None:
     t = graphics(E.pen_draw() + E.polyline([(0, 0), (10, 0)]) + E.pen_erase()
                  + E.polyline([(0, 0), (4, 0)]))
     assert lit(t) == {(x, 0) for x in range(5, 11)}
+    t = graphics(E.colour(5) + E.pen_draw() + E.polyline([(0, 0), (3, 0)]))
+    assert t.planes[0, :4].tolist() == [1, 1, 1, 1]  # FA draws in colour 1, not the last HI
 
 
 @covers("DL", "FD", "FC", "FG")
@@ -137,6 +139,9 @@ def test_dash_mask_modes_and_phase() -> None:
     assert lit(t) == {(x, 0) for x in (0, 1, 2, 3, 8, 9, 10, 11)}
     # a separate vector also continues the phase; FG restarts it
     t = graphics(E.dash(0xF0F0) + E.polyline([(0, 0), (5, 0)]) + E.polyline([(0, 1), (3, 1)]))
+    assert {(x, 1) for x in range(4)} & lit(t) == {(2, 1), (3, 1)}
+    t = graphics(E.dash(0xF0F0) + E.polyline([(0, 0), (2, 0), (5, 0)])
+                 + E.polyline([(0, 1), (3, 1)]))
     assert {(x, 1) for x in range(4)} & lit(t) == {(2, 1), (3, 1)}
     t = graphics(E.dash(0xF0F0) + E.polyline([(0, 0), (5, 0)]) + E.line_reset()
                  + E.polyline([(0, 1), (3, 1)]))
@@ -265,6 +270,8 @@ def test_lut_entries_take_effect_at_once() -> None:
     t8 = graphics(E.colour(77) + E.block(767, 511) + E.lut24(77, 0x12, 0x34, 0x56),
                   model="t5688")
     assert t8.frame()[5, 5].tolist() == [0x12, 0x34, 0x56]
+    t8 = graphics(E.colour(7) + E.block(767, 511) + E.lut(7, 15, 8, 1), model="t5688")
+    assert t8.frame()[5, 5].tolist() == [255, 136, 17]  # 4-bit guns on a 24-bit LUT: 15 is full
 
 
 @covers("CE", "HF")
@@ -278,6 +285,8 @@ def test_cursor_report_after_hf() -> None:
     assert sent == [b"A120,047\r"]
     t.key("x")  # no report armed: typed keys go up the line
     assert sent[-1] == b"x"
+    t.feed(E.move(300, 200) + E.polyline([(300, 200), (310, 220)]))
+    assert (t.reg.cursor_x, t.reg.cursor_y) == (310, 220)  # the attached cursor follows the pen
 
 
 @covers("KW")
@@ -308,6 +317,13 @@ def test_t5688_quadrants_and_half_size() -> None:
     assert f[511 - 300, 400].tolist() == t.lut[2].tolist()  # (800, 600) / 2
     t4 = graphics(b"KQ3")
     assert t4.stats["errors"] == 1  # a T5684 has no quadrants
+    # a block in the bottom right quarter only: quadrant 1 shows it, quadrant 2 does not
+    t = graphics(e8.coords4() + e8.colour(2) + e8.move(768, 0) + e8.block(1535, 511),
+                 model="t5688")
+    t.feed(e8.view(1))
+    assert (t.frame() == t.lut[2]).all()
+    t.feed(e8.view(2))
+    assert not t.frame().any()
 
 
 def test_t5688_half_size_keeps_one_pixel_lines() -> None:
