@@ -43,6 +43,10 @@ def test_setting_registers() -> None:
     assert (t.reg.sequence_length, t.reg.xon_char, t.reg.xoff_char, t.reg.prompt_char) == \
         (0, 17, 19, 999)
     assert t.stats["unknown"] == t.stats["malformed"] == 0
+    # the values are stored, not merely the power-on ones left alone
+    t = graphics(b"DD123DG018DF020HE500")
+    assert (t.reg.sequence_length, t.reg.xon_char, t.reg.xoff_char, t.reg.prompt_char) == \
+        (123, 18, 20, 500)
 
 
 @covers("GA")
@@ -122,6 +126,8 @@ def test_pgplot_colours() -> None:
     t = graphics(E.pen_draw() + E.polyline([(0, 0), (10, 0)]) + E.pen_erase()
                  + E.polyline([(0, 0), (4, 0)]))
     assert lit(t) == {(x, 0) for x in range(5, 11)}
+    t = graphics(E.colour(5) + E.pen_draw() + E.polyline([(0, 0), (3, 0)]))
+    assert t.planes[0, :4].tolist() == [1, 1, 1, 1]  # FA draws in colour 1, not the last HI
 
 
 @covers("DL", "FD", "FC", "FG")
@@ -134,6 +140,9 @@ def test_dash_mask_modes_and_phase() -> None:
     # a separate vector also continues the phase; FG restarts it
     t = graphics(E.dash(0xF0F0) + E.polyline([(0, 0), (5, 0)]) + E.polyline([(0, 1), (3, 1)]))
     assert {(x, 1) for x in range(4)} & lit(t) == {(2, 1), (3, 1)}
+    t = graphics(E.dash(0xF0F0) + E.polyline([(0, 0), (2, 0), (5, 0)])
+                 + E.polyline([(0, 1), (3, 1)]))
+    assert {(x, 1) for x in range(4)} & lit(t) == {(2, 1), (3, 1)}
     t = graphics(E.dash(0xF0F0) + E.polyline([(0, 0), (5, 0)]) + E.line_reset()
                  + E.polyline([(0, 1), (3, 1)]))
     assert {(x, 1) for x in range(4)} <= lit(t)
@@ -145,6 +154,16 @@ def test_dash_mask_modes_and_phase() -> None:
 def test_ek_twelve_bit_mask() -> None:
     t = graphics(E.dash_mask12(0x924) + E.line_dashed() + E.polyline([(0, 0), (11, 0)]))
     assert lit(t) == {(0, 0), (3, 0), (6, 0), (9, 0)}
+
+
+def test_ags_escape_m_and_r_set_twelve_bit_dash_patterns() -> None:
+    """RAL GKS's A-series dashes: ESC M hhh sets a 12-bit mask, ESC R + 3 spaces the built-in
+    3 on 3 off pattern; both repeat every 12 steps."""
+    t = graphics(E.abbreviated_dash12(0x924) + E.polyline([(0, 0), (23, 0)]))
+    assert lit(t) == {(x, 0) for x in (0, 3, 6, 9, 12, 15, 18, 21)}
+    t = graphics(b"JH\x1bR   \x1f" + E.line_dashed() + E.polyline([(0, 0), (23, 0)]))
+    assert lit(t) == {(x, 0) for x in (0, 1, 2, 6, 7, 8, 12, 13, 14, 18, 19, 20)}
+    assert t.stats["unknown"] == t.stats["malformed"] == 0
 
 
 @covers("HI", "KI")
@@ -164,6 +183,13 @@ def test_ba_graphics_text() -> None:
     assert len(pts) == 11  # our 'I': top bar 3 + stem 5 + bottom bar 3
     assert min(x for x, _ in pts) >= 101 and min(y for _, y in pts) >= 101
     assert (t.reg.pen_x, t.reg.pen_y) == (108, 100)
+
+
+def test_ba_text_ends_at_cr_and_keeps_256_characters() -> None:
+    t = graphics(b"BA" + b"I" * 300 + b"\r" + E.colour(3))
+    assert t.reg.pen_x == 256 * 8  # 256 cells drawn, the rest dropped and counted
+    assert t.stats["malformed"] == 1
+    assert t.reg.colour == 3  # CR ended the text: HI3 is an order again
 
 
 @covers("FH", "BG")
@@ -244,6 +270,8 @@ def test_lut_entries_take_effect_at_once() -> None:
     t8 = graphics(E.colour(77) + E.block(767, 511) + E.lut24(77, 0x12, 0x34, 0x56),
                   model="t5688")
     assert t8.frame()[5, 5].tolist() == [0x12, 0x34, 0x56]
+    t8 = graphics(E.colour(7) + E.block(767, 511) + E.lut(7, 15, 8, 1), model="t5688")
+    assert t8.frame()[5, 5].tolist() == [255, 136, 17]  # 4-bit guns on a 24-bit LUT: 15 is full
 
 
 @covers("CE", "HF")
@@ -257,6 +285,8 @@ def test_cursor_report_after_hf() -> None:
     assert sent == [b"A120,047\r"]
     t.key("x")  # no report armed: typed keys go up the line
     assert sent[-1] == b"x"
+    t.feed(E.move(300, 200) + E.polyline([(300, 200), (310, 220)]))
+    assert (t.reg.cursor_x, t.reg.cursor_y) == (310, 220)  # the attached cursor follows the pen
 
 
 @covers("KW")
@@ -287,6 +317,13 @@ def test_t5688_quadrants_and_half_size() -> None:
     assert f[511 - 300, 400].tolist() == t.lut[2].tolist()  # (800, 600) / 2
     t4 = graphics(b"KQ3")
     assert t4.stats["errors"] == 1  # a T5684 has no quadrants
+    # a block in the bottom right quarter only: quadrant 1 shows it, quadrant 2 does not
+    t = graphics(e8.coords4() + e8.colour(2) + e8.move(768, 0) + e8.block(1535, 511),
+                 model="t5688")
+    t.feed(e8.view(1))
+    assert (t.frame() == t.lut[2]).all()
+    t.feed(e8.view(2))
+    assert not t.frame().any()
 
 
 def test_t5688_half_size_keeps_one_pixel_lines() -> None:

@@ -86,8 +86,12 @@ def test_graphics_flag_only_at_line_start_until_gh() -> None:
 
 
 def test_gks_buffer_framing_cr_lf_is_harmless_in_graphics() -> None:
-    cmds = Decoder().feed(b"\r+-*/DA\r\n\r+-*/GA\r\n")
-    assert [c for c in cmds if isinstance(c, Order)] == [Order("DA"), Order("GA")]
+    d = Decoder()
+    cmds = d.feed(b"\r+-*/DA\r\n\r+-*/GA\r\n\x00 \x7f\x11\x13GI")
+    assert [c for c in cmds if isinstance(c, Order)] == [Order("DA"), Order("GA"), Order("GI")]
+    # the second flag is taken in graphics mode, and the trailers are ignored silently
+    assert cmds.count(GraphicsFlag()) == 2
+    assert d.stats.unknown == d.stats.malformed == 0
 
 
 def test_ags_encoder_omission_rules_byte_exact() -> None:
