@@ -89,7 +89,10 @@ OTHERS = [
           "the standard mode", "vectors: 0.34-0.54 of the standard characters (0.45 for "
           "the KAS demo); whole streams with text and orders 0.56-0.94",
           "`benchmarks/bench_sigma.py`, `benchmarks/bench_kas_front.py` (docs/perf/sigma.md, "
-          "docs/perf/kas_front.md)", "agrees for the vectors the mode abbreviates"),
+          "docs/perf/kas_front.md); the demo's ratio: "
+          + _t("tests/kas_front/test_abbreviated_saving.py::"
+               "test_demo_vectors_take_about_half_the_characters_abbreviated"),
+          "agrees for the vectors the mode abbreviates"),
     Claim("§3.1.4", "over the 9600-baud line a sequence of average complexity cannot be "
           "shown in real time", "frames shown and dropped for the demo sequence at 9600, "
           "19200 and 38400 baud: about 1 in 5 of its 28 frames at 9600, more on faster lines",
@@ -160,7 +163,9 @@ OTHERS = [
     Claim("§6.4.1", "the renderer's frames on the Sigma T5688 over the serial line",
           "175-306 s of line time a frame at 9600 baud (period 167-192 KB, software Bresenham "
           "258-293 KB); 20-33 leaking pixels a frame in period mode, 0 in the two cures",
-          "`benchmarks/bench_render.py` (docs/perf/render.md)", "agrees"),
+          "`benchmarks/bench_render.py` (docs/perf/render.md); one frame's leaks: "
+          + _t("tests/snooker_render/test_sigma.py::test_period_leaks_and_fixed_does_not"),
+          "agrees"),
 ]
 
 
