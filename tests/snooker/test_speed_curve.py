@@ -7,7 +7,9 @@ import numpy as np
 import pytest
 
 from camlab88.apps.snooker.speed_curve import (
-    PULLEN1987_OBSERVED, pullen1987_observed, pullen1987_sliding,
+    PULLEN1987_OBSERVED,
+    pullen1987_observed,
+    pullen1987_sliding,
 )
 from camlab88.apps.snooker.table import Table
 

@@ -10,7 +10,16 @@ import pytest
 
 from camlab88.apps.snooker.layout import opening_state, pack_positions
 from camlab88.apps.snooker.table import (
-    BALL_NAMES, BALL_VALUES, BLACK, BLUE, BROWN, GREEN, N_BALLS, PINK, YELLOW, Table,
+    BALL_NAMES,
+    BALL_VALUES,
+    BLACK,
+    BLUE,
+    BROWN,
+    GREEN,
+    N_BALLS,
+    PINK,
+    YELLOW,
+    Table,
 )
 
 T = Table()
