@@ -20,6 +20,7 @@ from camlab88.apps.snooker.table import (
     PINK,
     YELLOW,
     Table,
+    ball_index,
 )
 
 T = Table()
@@ -36,6 +37,12 @@ def test_playing_surface_balls_and_values_are_the_thesis_s() -> None:
         == [2, 3, 4, 5, 6, 7]
     assert sorted(v for n, v in values.items() if n.startswith("red")) == [1] * 15
     assert values["cue"] == 0
+
+
+def test_checkpoint_order_cue_colours_by_value_then_reds() -> None:
+    assert BALL_NAMES[:7] == ("cue", "yellow", "green", "brown", "blue", "pink", "black")
+    assert all(n.startswith("red") for n in BALL_NAMES[7:])
+    assert (ball_index("1"), ball_index("7"), ball_index("22")) == (0, BLACK, 21)
 
 
 def test_pockets_at_the_four_corners_and_the_middle_of_the_long_sides() -> None:
