@@ -115,3 +115,22 @@ def test_fuzz_never_crashes(text) -> None:
         parse("\n".join(GOOD[:22]) + "\n" + text)
     except CheckpointError:
         pass
+
+
+def test_positions_stay_in_the_16_bit_packing(tmp_path) -> None:
+    """§6.2.2 packs x and y in 16 bits each: a file taking a ball outside 0..65535 is refused
+    at that line; a potted ball dropped behind a baulk pocket (y < 0) is parked in range."""
+    path = tmp_path / "off.cp"
+    x, y = (int(v) for v in GOOD[0].split(","))
+    path.write_text("\n".join(GOOD[:22] + [f"1 0 {65536 - y}", "-1"]) + "\n")
+    with pytest.raises(CheckpointError, match="outside the 16-bit packing") as exc:
+        checkpoint.read(path)
+    assert exc.value.line == 23
+    path.write_text("\n".join(GOOD[:22] + [f"1 0 {65535 - y}", "-1"]) + "\n")
+    assert tuple(checkpoint.read(path).positions[1, 0]) == (x, 65535)  # the edge is allowed
+    pos = np.array(break_off(T, 0.0).pos)
+    pos[0] = T.pockets[0].drop  # behind the baulk-right pocket: x and y below 0
+    cp = Checkpoint.from_metres([pos])
+    assert tuple(cp.positions[0, 0]) == (0, 65535)
+    with pytest.raises(ValueError, match="does not fit"):
+        Checkpoint.from_metres([pos], (T.length_m * 3, T.width_m))

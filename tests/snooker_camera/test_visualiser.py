@@ -213,3 +213,17 @@ def test_visualiser_shows_exactly_the_film_frame() -> None:
         else:  # not on the film, though a 768 x 576 view shows it
             assert (sy < -8 or sy > 520) and 8 <= old_sy <= 568, ball
             assert len(xs) == 0, ball
+
+
+def test_balls_drawn_in_decreasing_depth_so_the_nearer_hides_the_farther() -> None:
+    """§6.3.2: the balls are drawn farthest first, so where two overlap on the screen the
+    nearer one shows (a low camera looking along a line of two balls)."""
+    c = still(1)
+    c[0, 1:] = (9.0, 9.0, R)  # every other ball off the table
+    c[0, 0] = (-1.0, 0.0, R)  # the cue ball, 2 m from the camera
+    c[0, 8] = (0.0, 0.0, R)  # a red straight behind it, 3 m away
+    rb, _ = shown(make(c), [View(1, (-3.0, 0.0, R), (0.0, 0.0, R), 100.0)])
+    frame = rb.executor.last_frame
+    cue = colour_mask(frame, vdisplay.BALL_COLOURS[1])
+    red = colour_mask(frame, "#d01818")
+    assert cue.sum() > 50 and red.sum() == 0  # the red is wholly behind the cue ball

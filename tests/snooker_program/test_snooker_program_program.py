@@ -156,6 +156,8 @@ def test_start_new_or_restore_and_exit_saves(rainbow, tmp_path):
     feed(rainbow, p, "key r\nwait 1")
     assert p.mode == "idle"
     assert np.array_equal(p.session.balls.pos, saved.balls.pos)
+    # the saved session itself, with its frames (a new game has one)
+    assert len(p.session.timeline.time_frames) == len(saved.timeline.time_frames) > 1
     p.session.strike(CUE, 0.5, 0.0)
     p.mode = "exit"
     feed(rainbow, p, "key y\nwait 1\nkey return\nwait 1")  # Return: all the frames
