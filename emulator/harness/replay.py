@@ -156,8 +156,10 @@ class HashCheck(Plugin):
                      else max((h.frame for h in rec.hashes), default=0))
 
     def start(self, harness: Harness) -> None:
-        """A run begun from --load-state (loaded by now): its first frame, the state's."""
-        if self.replay.check and harness.frames_shown > 0 and not self.replay.seeking:
+        """A run begun from --load-state (loaded by now): its first frame, the state's (not
+        a seek's snapshot: that is taken at a time between two frames)."""
+        seek_snapshot = getattr(self.replay.state, "load_data", None) is not None
+        if self.replay.check and harness.frames_shown > 0 and not seek_snapshot:
             want = self.window.hash_at(harness.frames_shown)
             if want is not None:
                 self._compare(harness, want, shown(harness))

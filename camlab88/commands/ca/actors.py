@@ -93,8 +93,42 @@ def _cell_types(rules: str) -> list:
     return types
 
 
+class _Session:
+    """The editor, made at the first tick (so a --load-state can give it the FILE its
+    session started from first: a save rewrites FILE), and what the target calls."""
+
+    def __init__(self, machine, path: str, types: list, rules: str, may_save: bool) -> None:
+        self.machine, self.made_of = machine, (path, types, rules, may_save)
+        self.made = None
+        self.given: list[dict] = []
+        self.holding = False  # a load runs the session again: saves write nothing
+        self.target = None  # the RainbowTarget it steps (its tablet may change)
+
+    def editor(self):
+        if self.made is None:
+            from camlab88.apps.actors.editor.program import ActorEditor
+
+            path, types, rules, may_save = self.made_of
+            self.made = ActorEditor(self.machine.client, path, types, rules, may_save=may_save,
+                                    start=self.given[0] if self.given else None)
+        return self.made
+
+    def step(self) -> bool:
+        ed = self.editor()
+        ed.writes = not self.holding
+        tablet = self.target.tablet
+        if tablet is not None and not tablet.gone:
+            _poll_tablet(tablet, self.machine, ed)
+        ed.frame()
+        return not ed.finished
+
+    def rebuilding(self, on: bool) -> None:
+        self.holding = on
+        if self.made is not None:
+            self.made.writes = not on
+
+
 def _run(path: str, types: list, rules: str, player, opts, tablet):
-    from camlab88.apps.actors.editor.program import ActorEditor
     from camlab88.emulator.harness import run
     from camlab88.emulator.harness.input_log import StartState
     from camlab88.emulator.harness.rainbow import RainbowTarget
@@ -102,41 +136,16 @@ def _run(path: str, types: list, rules: str, player, opts, tablet):
     from camlab88.runopts import unattended
 
     machine = RainbowMachine(record=opts.record is not None)
-    # the editor is made at the first tick, so a --load-state can give it the FILE its
-    # session started from first (a save rewrites FILE)
-    made: list[ActorEditor] = []
-    given: list[dict] = []
-
-    def editor() -> ActorEditor:
-        if not made:
-            made.append(ActorEditor(machine.client, path, types, rules,
-                                    may_save=opts.screenshot is None,
-                                    start=given[0] if given else None))
-        return made[0]
-
-    holding: list[bool] = [False]
-
-    def step() -> bool:
-        ed = editor()
-        ed.writes = not holding[0]
-        if target.tablet is not None and not target.tablet.gone:
-            _poll_tablet(target.tablet, machine, ed)
-        ed.frame()
-        return not ed.finished
-
-    def rebuilding(on: bool) -> None:  # a load runs the session again: saves write nothing
-        holding[0] = on
-        if made:
-            made[0].writes = not on
-
-    target = RainbowTarget(machine, step, "camlab88 ca actors", KEYS, player,
+    session = _Session(machine, path, types, rules, opts.screenshot is None)
+    target = RainbowTarget(machine, session.step, "camlab88 ca actors", KEYS, player,
                            unattended(opts))
-    target.asks_before_closing(lambda: editor().may_close())
+    session.target = target
+    target.asks_before_closing(lambda: session.editor().may_close())
     target.tablet = tablet
-    target.keep_input(StartState(START, lambda: editor().start, given.append, (path,)),
-                      rebuilding)
+    target.keep_input(StartState(START, lambda: session.editor().start, session.given.append,
+                                 (path,)), session.rebuilding)
     run(target, opts)
-    return editor()
+    return session.editor()
 
 
 # what FILE held when the session began, in its save state (the editor's ``start``)
