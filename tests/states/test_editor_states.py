@@ -209,6 +209,21 @@ def test_a_live_tablet_session_is_not_saved() -> None:
         target.state_values()
 
 
+def test_a_rainbow_editor_with_a_tablet_is_not_saved() -> None:
+    """The camera tool's and the actors editor's target (RainbowTarget.keep_input): a tablet
+    the command polls is outside the log, so its state is refused, not saved without it."""
+    from camlab88.emulator.harness.rainbow import RainbowTarget
+    from camlab88.emulator.machine import RainbowMachine
+    from camlab88.emulator.machine.state_file import MachineStateError
+
+    target = RainbowTarget(RainbowMachine(), lambda: True, "t", "")
+    target.keep_input()
+    assert isinstance(target.state_values(), dict)  # without a tablet: its input log
+    target.tablet = object()
+    with pytest.raises(MachineStateError, match="a live tablet's input is not kept"):
+        target.state_values()
+
+
 def test_an_editor_loads_a_state_into_a_fresh_run_only() -> None:
     from camlab88.emulator.harness.input_log import InputLog, picture_hash
     from camlab88.emulator.machine.state_file import MachineStateError
