@@ -12,3 +12,14 @@ def rainbow():
     from camlab88.emulator.machine import RainbowMachine
 
     return RainbowMachine()
+
+
+@pytest.fixture
+def prog(rainbow):
+    """The snooker program on the Rainbow, the cursor resting on bare cloth."""
+    from camlab88.apps.snooker.program.program import Program
+    from tests.snooker_program.helpers import EMPTY, feed
+
+    p = Program(rainbow.client)
+    feed(rainbow, p, f"move {EMPTY[0]} {EMPTY[1]}\nwait 1")
+    return p

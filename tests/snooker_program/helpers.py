@@ -9,6 +9,8 @@ from camlab88.apps.snooker.program.program import Program
 from camlab88.apps.snooker.session import Session
 from camlab88.apps.snooker.table import CUE
 
+EMPTY = (300, 420)  # a cloth pixel with no ball (the opening position)
+
 
 def feed(rb, program: Program, text: str) -> None:
     """Run a script (see script_events) to its end."""

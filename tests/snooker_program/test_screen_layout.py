@@ -4,21 +4,9 @@ selected ball top right; velocity arrows on every moving ball while not simulati
 
 from __future__ import annotations
 
-import pytest
-
 from camlab88.apps.snooker.program import layout, pads
-from camlab88.apps.snooker.program.program import Program
 from camlab88.apps.snooker.table import BLUE, BROWN, CUE
 from tests.snooker_program.helpers import feed, hex_rgb, screen_colour
-
-EMPTY = (300, 420)  # cloth, no ball
-
-
-@pytest.fixture
-def prog(rainbow):
-    p = Program(rainbow.client)
-    feed(rainbow, p, f"move {EMPTY[0]} {EMPTY[1]}\nwait 1")
-    return p
 
 
 def test_overhead_table_with_cushions_pockets_baulk_line_and_d(rainbow, prog):

@@ -12,19 +12,9 @@ from camlab88.apps.snooker.program import menus, pads
 from camlab88.apps.snooker.program.program import MAGNIFY, WARN_COLOUR, Program
 from camlab88.apps.snooker.session import Session
 from camlab88.apps.snooker.table import BLUE, CUE
-from tests.snooker_program.helpers import feed, hex_rgb, saved_game, screen_colour
+from tests.snooker_program.helpers import EMPTY, feed, hex_rgb, saved_game, screen_colour
 
 CUE_AT = (175, 325)  # the cue ball's pixel in the opening position
-EMPTY = (300, 420)  # cloth, no ball
-
-
-@pytest.fixture
-def prog(rainbow):
-    p = Program(rainbow.client)
-    feed(rainbow, p, f"move {EMPTY[0]} {EMPTY[1]}\nwait 1")
-    return p
-
-
 def test_pads_transparency_and_cursor(rainbow, prog):
     d = prog.display
     assert screen_colour(rainbow, *CUE_AT) == hex_rgb(pads.BALL_COLOURS[1])
