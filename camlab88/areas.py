@@ -1,10 +1,14 @@
-"""How a command area registers its actions: one module per action, named in a tuple.
+"""How a command is declared and bound: one module per command, in one shape.
 
-``camlab88/commands/<area>/__init__.py`` lists ``ACTIONS = ("play", "simulate", ...)`` and
-holds the area's ``HELP`` and ``DESCRIPTION``; each action module
-``camlab88/commands/<area>/<action>.py`` declares its parser (``add_parser``) beside its
-handler. Adding an action is one new module and one name in the tuple; action modules never
-import each other (import-linter checks it).
+A command module (``camlab88/commands/<area>/<action>.py``, or a single command's package
+``camlab88/commands/<name>/__init__.py``) holds its one-line ``HELP``, an optional
+``DESCRIPTION`` and ``EPILOG``, ``add_arguments(p)`` declaring its options on an argparse
+parser (absent when it takes none) and ``run(args) -> int``, its handler: the shape of
+Django's management commands, so every command reads the same and is bound in one place
+(``add_command``). An area (``camlab88/commands/<area>/__init__.py``) lists
+``ACTIONS = ("play", "simulate", ...)`` with the area's ``HELP`` and ``DESCRIPTION``. Adding
+an action is one new module and one name in the tuple; action modules never import each
+other (import-linter checks it).
 """
 
 from __future__ import annotations
@@ -12,7 +16,28 @@ from __future__ import annotations
 import argparse
 import importlib
 import sys
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
+from types import ModuleType
+
+
+def add_command(subparsers: argparse._SubParsersAction, name: str,
+                module: ModuleType) -> argparse.ArgumentParser:
+    """The parser of the command `module` declares, named `name`, bound to its ``run``."""
+    p = subparsers.add_parser(name, help=module.HELP,
+                              description=getattr(module, "DESCRIPTION", None),
+                              epilog=getattr(module, "EPILOG", None))
+    add_arguments = getattr(module, "add_arguments", None)
+    if add_arguments is not None:
+        add_arguments(p)
+    p.set_defaults(handler=module.run)
+    return p
+
+
+def register_command(subparsers: argparse._SubParsersAction, package: str,
+                     name: str | None = None) -> argparse.ArgumentParser:
+    """Add the single command `package` declares (``camlab88.commands.demo`` -> ``demo``;
+    `name` where the command's name is not the package's)."""
+    return add_command(subparsers, name or package.rsplit(".", 1)[1], sys.modules[package])
 
 
 def register_area(subparsers: argparse._SubParsersAction, package: str,
@@ -25,21 +50,10 @@ def register_area(subparsers: argparse._SubParsersAction, package: str,
                                    description=getattr(area, "DESCRIPTION", area.HELP))
     sub = parser.add_subparsers(dest=f"{name}_action", metavar="ACTION")
     for action in _needed(subparsers, name, actions):
-        importlib.import_module(f"{package}.{action}").add_parser(sub)
+        add_command(sub, action.replace("_", "-"),
+                    importlib.import_module(f"{package}.{action}"))
     parser.set_defaults(handler=lambda args: _no_action(parser))
     return parser
-
-
-def delegated_action(actions: argparse._SubParsersAction, name: str, help: str,
-                     add_arguments: Callable[[argparse.ArgumentParser], None],
-                     handler: Callable[[argparse.Namespace], int]) -> argparse.ArgumentParser:
-    """The parser of an action whose options are declared beside the code that does its
-    work (``link echo``, ``link stream``: protocols.link.cli_args): ``help``, the options
-    ``add_arguments`` adds, and its ``handler``."""
-    p = actions.add_parser(name, help=help)
-    add_arguments(p)
-    p.set_defaults(handler=handler)
-    return p
 
 
 def _needed(subparsers: argparse._SubParsersAction, name: str,

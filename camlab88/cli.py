@@ -17,6 +17,7 @@ from collections.abc import Sequence
 from typing import NoReturn
 
 from camlab88 import __version__
+from camlab88.areas import register_area, register_command
 
 # Order is the order shown in --help.
 COMMAND_MODULES: tuple[str, ...] = (
@@ -121,7 +122,10 @@ def build_parser(words: Sequence[str] = ()) -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     sub.words = tuple(words)  # an area builds only the action the line names (areas.py)
     for module in _command_modules(words):
-        module.register(sub)
+        if hasattr(module, "ACTIONS"):
+            register_area(sub, module.__name__, module.ACTIONS)
+        else:
+            register_command(sub, module.__name__, getattr(module, "NAME", None))
     parser.set_defaults(handler=lambda args: _bare(parser))
     return parser
 

@@ -33,7 +33,7 @@ def test_an_actions_handler_is_its_modules_function() -> None:
                       "--generations", "1"]).handler
     from camlab88.commands.ca import run
 
-    assert handler is run._run
+    assert handler is run.run
 
 
 def test_help_loads_no_other_actions_code_nor_numpy() -> None:

@@ -1,2 +1,3 @@
-"""One package per area; each defines ``register(subparsers)``: its actions' parsers, each
-declared by the action's module beside its handler (camlab88.areas)."""
+"""One package per command: an area lists its actions' modules (``ACTIONS``), a single
+command declares itself in its ``__init__``; every command module has the one shape
+camlab88.areas describes (``HELP``, ``add_arguments``, ``run``)."""

@@ -23,21 +23,22 @@ def test_no_function_in_camlab88_is_longer_than_40_lines() -> None:
     assert not long, "split these (a command only parses and wires):\n" + "\n".join(long)
 
 
-def test_every_area_lists_its_actions_one_module_each() -> None:
-    """Each action is a module declaring its parser (``add_parser``) beside the handler it
-    runs; an area that is one command registers itself."""
+def test_every_command_module_has_the_one_shape() -> None:
+    """Every command module, an area's action or a single command, has the shape
+    camlab88.areas describes: its one-line ``HELP``, its options beside its handler, and
+    ``run``, which the one binding (areas.add_command) makes the parser's handler."""
     import argparse
 
+    from camlab88.areas import add_command
     from camlab88.cli import COMMAND_MODULES
 
     for area in COMMAND_MODULES:
         pkg = importlib.import_module(f"camlab88.commands.{area}")
         assert Path(pkg.__file__).name == "__init__.py", area
         actions = getattr(pkg, "ACTIONS", ())
-        if not actions:
-            assert callable(pkg.register), area
-        for action in actions:
-            module = importlib.import_module(f"camlab88.commands.{area}.{action}")
-            parser = module.add_parser(argparse.ArgumentParser().add_subparsers())
-            handler = parser.get_default("handler")
-            assert handler.__module__ == module.__name__, (area, action, handler)
+        modules = [importlib.import_module(f"camlab88.commands.{area}.{a}") for a in actions]
+        for module in modules or [pkg]:
+            assert not hasattr(module, "add_parser"), module.__name__
+            assert isinstance(module.HELP, str) and "\n" not in module.HELP, module.__name__
+            parser = add_command(argparse.ArgumentParser().add_subparsers(), "x", module)
+            assert parser.get_default("handler") is module.run, module.__name__

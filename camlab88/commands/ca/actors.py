@@ -23,9 +23,10 @@ profile, watch the solid turn, set colour and material, save (docs/ca_actors.md)
 {HEADLESS_NEEDS_EVENTS} A --screenshot run never saves."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("actors", help="the 3-D picture editor for cell types (section 8.1)",
-                           description=DESCRIPTION)
+HELP = "the 3-D picture editor for cell types (section 8.1)"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("file", metavar="FILE", help="the actors file (created by the first save)")
     p.add_argument("--rules",
                    help="rule file or library name whose cell types are edited (default: "
@@ -33,11 +34,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
     add_events_option(p)
     add_tablet_option(p, what="draw with", where=": its surface maps onto the profile pad")
     add_run_options(p)
-    p.set_defaults(handler=actors)
-    return p
 
 
-def actors(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.ca.rules import RuleError
     from camlab88.base.atomicfile import probe
     from camlab88.protocols.rainbow.script import ScriptError

@@ -16,16 +16,15 @@ Read a pattern and write it in the format given by the output file's extension (
 .mc Golly's macrocell, anything else native)."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("convert", help="convert a pattern between native, RLE, .cells and .mc",
-                           description=DESCRIPTION)
+HELP = "convert a pattern between native, RLE, .cells and .mc"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("source", help="pattern file or library name")
     p.add_argument("dest", help="output file")
-    p.set_defaults(handler=_convert)
-    return p
 
 
-def _convert(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.ca import library
     from camlab88.apps.ca.patterns import PatternError, check_write, read_pattern, write_pattern
 

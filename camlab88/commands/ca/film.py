@@ -22,10 +22,10 @@ OUT_frames/frame_NNNNN.png; frames already rendered are kept, so a stopped truec
 resumes (docs/ca_film.md)."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("film",
-                           help="the automaton as a film of 3-D actors (chessmen...) (§8.1)",
-                           description=DESCRIPTION)
+HELP = "the automaton as a film of 3-D actors (chessmen...) (§8.1)"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("rules", metavar="RULES", help="rule file or library name (life, maze)")
     p.add_argument("pattern", metavar="PATTERN", help="pattern file or library name")
     p.add_argument("--actors", metavar="FILE",
@@ -53,11 +53,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="render on a Dask cluster")
     p.add_argument("--workers", type=positive, metavar="N",
                    help="processes (default: one per core)")
-    p.set_defaults(handler=film)
-    return p
 
 
-def film(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.snooker.film.schedule import FilmError
     from camlab88.filmrun import run_film
 

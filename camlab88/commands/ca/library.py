@@ -4,14 +4,11 @@ from __future__ import annotations
 
 import argparse
 
-
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("library", help="list the shipped rule sets and patterns")
-    p.set_defaults(handler=_library)
-    return p
+HELP = "list the shipped rule sets and patterns"
 
 
-def _library(args: argparse.Namespace) -> int:
+
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.ca import library
 
     for kind, items in library.names().items():

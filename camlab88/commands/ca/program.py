@@ -38,10 +38,10 @@ ReplayPansAndZooms/s = --replay-pans. Keywords are matched in any case; KEY=valu
 Give each argument in one form only."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("program",
-                           help="the interactive program on the emulated Rainbow (sections "
-                                "7.3.1-2)", description=DESCRIPTION, epilog=EPILOG)
+HELP = "the interactive program on the emulated Rainbow (sections 7.3.1-2)"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("tripos", nargs="*", metavar="ARG",
                    help=f"the thesis's Tripos form: {TEMPLATE} (see below)")
     p.add_argument("--rules", default="life",
@@ -73,11 +73,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
     add_run_options(p)
     p.add_argument("--json", action="store_true",
                    help="print the final statistics as JSON").replay = KEEP
-    p.set_defaults(handler=program)
-    return p
 
 
-def program(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.ca.log import LogError
     from camlab88.apps.ca.patterns import PatternError
     from camlab88.apps.ca.rules import RuleError

@@ -10,9 +10,10 @@ Start from the latest checkpoint (log name + generation) at or before GENERATION
 script's interventions and rules up to GENERATION, and print the statistics."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("replay", help="replay a Log as a Script up to a generation",
-                           description=DESCRIPTION)
+HELP = "replay a Log as a Script up to a generation"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--script", required=True, help="log file written by a ca session")
     p.add_argument("--generation", type=int, required=True)
     p.add_argument("--edges", choices=["wrap", "bounded"],
@@ -20,11 +21,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--seed", type=int,
                    help="only for logs that do not record their seed (default 0)")
     p.add_argument("--json", action="store_true")
-    p.set_defaults(handler=_replay)
-    return p
 
 
-def _replay(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.ca.engine import Engine
     from camlab88.apps.ca.log import (
         LogError,

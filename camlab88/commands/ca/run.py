@@ -14,9 +14,10 @@ centre of the 65536x65536 plane, run N generations and print the statistics of t
 menu."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("run", help="run rules on a pattern headless and print statistics",
-                           description=DESCRIPTION)
+HELP = "run rules on a pattern headless and print statistics"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--rules", required=True, help="rule file or library name (e.g. life)")
     p.add_argument("--pattern", required=True,
                    help="pattern file (.pat native, .rle, .cells) or library name")
@@ -41,11 +42,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--memory", default=512, type=int, metavar="MB",
                    help="HashLife node-table limit; past it the table is "
                         "garbage-collected (default 512)")
-    p.set_defaults(handler=_run)
-    return p
 
 
-def _run(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.ca import library
     from camlab88.apps.ca.engine import CENTRE, Engine
     from camlab88.apps.ca.patterns import PatternError, check_run, read_pattern

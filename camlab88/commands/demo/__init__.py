@@ -28,9 +28,10 @@ next act, Esc: quit; F1 lists the controls, F11 shows the act's device in the in
 none, or --headless, it writes every frame as PNG and one animated GIF per act into --out."""
 
 
-def register(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("demo", help="play the demo session (all acts)",
-                           description=DESCRIPTION)
+HELP = "play the demo session (all acts)"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     shown = [
         (p.add_argument("--headless", action="store_true", help="no window, write files"),
          KEEP),
@@ -52,11 +53,9 @@ def register(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--only", action="append", choices=ACT_NAMES, metavar="ACT",
                    help=f"play only this act (repeatable): {', '.join(ACT_NAMES)}"
                    ).replay = KEEP  # which acts play: what the program does, not run-only
-    p.set_defaults(handler=demo)
-    return p
 
 
-def demo(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     acts = [a for a in ACTS if not args.only or a.name in args.only]
     return play_acts(acts, args)
 

@@ -29,10 +29,10 @@ list with captions; with one, that figure replayed in a window, or headless to a
 last screen."""
 
 
-def register(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("figures",
-                           help="the thesis's screen figures, replayed from shipped recordings",
-                           description=DESCRIPTION)
+HELP = "the thesis's screen figures, replayed from shipped recordings"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("number", nargs="?", help="a figure number, e.g. 6.5")
     p.add_argument("--headless", action="store_true", help="no window: write the PNG")
     p.add_argument("--screenshot", type=Path, metavar="PNG",
@@ -41,15 +41,13 @@ def register(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="build the web gallery in DIR: each figure's session as a "
                         "self-contained replay page (fig-N.html: number, section, caption, what "
                         "differs), and index.html; opens offline (docs/replay-web.md)")
-    p.set_defaults(handler=figures)
-    return p
 
 
 def recording(number: str) -> Path:
     return FIGURES_DIR / f"fig-{number}.session"
 
 
-def figures(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     if args.html is not None:
         return _gallery(args)
     if args.number is None:

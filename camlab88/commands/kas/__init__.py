@@ -10,7 +10,6 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from camlab88.areas import register_area
 from camlab88.replay_policy import KEEP, TAPE
 from camlab88.runopts import add_run_options
 
@@ -37,9 +36,6 @@ def add_front_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--baud", type=int, default=9600).replay = KEEP
     add_run_options(p, stop_after=False)
 
-
-def register(subparsers: argparse._SubParsersAction) -> None:
-    register_area(subparsers, __name__, ACTIONS)
 
 
 def prepare_front(args: argparse.Namespace, command: str):

@@ -6,15 +6,14 @@ import argparse
 
 from camlab88.runopts import fail
 
+HELP = "build 'a line taking a walk' from the library"
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("demo", help="build 'a line taking a walk' from the library")
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--out", required=True, help="sequence file to write")
-    p.set_defaults(handler=_demo)
-    return p
 
 
-def _demo(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import demo, files
 
     try:

@@ -21,18 +21,17 @@ terminal. F2 saves. --script runs an event script (docs/kas.md); --headless need
 --screenshot run saves nothing but the PNG."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("edit", help="the keyframe editor on the emulated Sigma T5684",
-                           description=DESCRIPTION)
+HELP = "the keyframe editor on the emulated Sigma T5684"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("file")
     add_front_options(p)
     p.add_argument("--over", help="previous keyframe to draw over (§2.3 guide)").replay = KEEP
     p.add_argument("--seed", default=0, type=int, help="de-regularise random seed").replay = KEEP
-    p.set_defaults(handler=edit)
-    return p
 
 
-def edit(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import files, library
     from camlab88.apps.kas.editor import Editor
     from camlab88.apps.kas.program import EditorFront

@@ -11,19 +11,18 @@ Headless: feed the editor model the events of SCRIPT (move/down/up X Y, key K, m
 type TEXT) and save the keyframe."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("edit-script", help="run the keyframe editor model on an event script",
-                           description=DESCRIPTION)
+HELP = "run the keyframe editor model on an event script"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("script")
     p.add_argument("--start", help="keyframe to start from (default empty)")
     p.add_argument("--over", help="previous keyframe to draw over (§2.3 guide)")
     p.add_argument("--seed", default=0, type=int)
     p.add_argument("--out", required=True)
-    p.set_defaults(handler=_edit_script)
-    return p
 
 
-def _edit_script(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import files, library
     from camlab88.apps.kas.editor import Editor
     from camlab88.apps.kas.events import parse_script

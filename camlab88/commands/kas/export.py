@@ -17,19 +17,18 @@ default each frame is drawn by the emulated Sigma T5684 (768 x 512, 16 colours, 
 vectors); --renderer raster uses the software rasteriser at any --width."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("export", help="export a sequence as GIF, MP4 or PNGs",
-                           description=DESCRIPTION)
+HELP = "export a sequence as GIF, MP4 or PNGs"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("seq")
     p.add_argument("out")
     p.add_argument("--renderer", default="sigma", choices=["sigma", "raster"])
     p.add_argument("--width", default=768, type=int, help="raster renderer only")
     add_background_options(p)
-    p.set_defaults(handler=export)
-    return p
 
 
-def export(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import files, library
     from camlab88.apps.kas.export import export as write
 

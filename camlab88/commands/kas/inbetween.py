@@ -22,9 +22,10 @@ Frames from keyframe A to B (both included) along a sample path, placed by a tim
 marks or a curve); with more than two keyframes a spline goes through them all."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("inbetween", help="in-between keyframes into a sequence",
-                           description=DESCRIPTION)
+HELP = "in-between keyframes into a sequence"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("keys", nargs="+", metavar="KEY", help="two or more keyframe files")
     p.add_argument("--path", help="sample path file (two keyframes only)")
     p.add_argument("--timing",
@@ -50,11 +51,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="keep collinear points instead of dropping them")
     p.add_argument("--fps", default=25.0, type=float)
     p.add_argument("--out", required=True, help="sequence file to write")
-    p.set_defaults(handler=_inbetween)
-    return p
 
 
-def _inbetween(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import files, library, pathfit
     from camlab88.apps.kas.inbetween import check_cost, frame_count, inbetween, inbetween_keys
 

@@ -14,19 +14,16 @@ can then be given wherever a file is asked for. An entry of that NAME is replace
 --force."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("library",
-                           help="list (or add to) the libraries of keyframes, paths and "
-                                "timings",
-                           description=DESCRIPTION)
+HELP = "list (or add to) the libraries of keyframes, paths and timings"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--save", nargs=2, metavar=("FILE", "NAME"))
     p.add_argument("--force", action="store_true",
                    help="with --save: replace an existing entry of that NAME")
-    p.set_defaults(handler=_library)
-    return p
 
 
-def _library(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import library
 
     if args.save:

@@ -22,9 +22,10 @@ frame painted from the operations file, double-buffered in the two spare quarter
 painted frame written as DIR/frame_NNNNN.png (from 1)."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("paint", help="paint a sequence on the emulated Sigma T5688",
-                           description=DESCRIPTION)
+HELP = "paint a sequence on the emulated Sigma T5688"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("seq", help="the sequence (.kas; library names work)")
     p.add_argument("--ops", type=Path, help="operations file to start from / replay").replay = KEEP
     p.add_argument("--save", type=Path,
@@ -37,11 +38,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--mp4", type=Path, help="the painted sequence as an MP4").replay = SCRATCH
     p.add_argument("--baud", default=9600, type=int).replay = KEEP
     add_run_options(p)
-    p.set_defaults(handler=paint)
-    return p
 
 
-def paint(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import files, library
     from camlab88.apps.kas.paint import opsfile
     from camlab88.apps.kas.paint.ops import OpsFile

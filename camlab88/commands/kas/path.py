@@ -20,9 +20,10 @@ place tick marks; F2 (or the end of a headless script) saves the path to --out a
 to --ticks. A --screenshot run saves nothing but the PNG."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("path", help="draw a sample path and tick marks on the Sigma",
-                           description=DESCRIPTION)
+HELP = "draw a sample path and tick marks on the Sigma"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("first")
     p.add_argument("second")
     p.add_argument("--out", required=True, help="sample path file to write").replay = SCRATCH
@@ -35,11 +36,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="do not keep the path in the user library (nor look up the "
                         "previous pair's)").replay = KEEP
     add_front_options(p)
-    p.set_defaults(handler=path)
-    return p
 
 
-def path(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import files, library
     from camlab88.apps.kas.path_editor import PathEditor
     from camlab88.apps.kas.program import PathFront

@@ -11,19 +11,18 @@ Headless in-betweener set-up: keyframes A and B are shown, the SCRIPT's stylus s
 the path, 't' then touches place tick marks; writes the path and the tick timing."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("path-script", help="draw a sample path and tick marks from a script",
-                           description=DESCRIPTION)
+HELP = "draw a sample path and tick marks from a script"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("first")
     p.add_argument("second")
     p.add_argument("script")
     p.add_argument("--path-out", required=True)
     p.add_argument("--timing-out", required=True)
-    p.set_defaults(handler=_path_script)
-    return p
 
 
-def _path_script(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import files, library
     from camlab88.apps.kas.events import parse_script
     from camlab88.apps.kas.path_editor import PathEditor

@@ -14,10 +14,10 @@ Each frame at the given size (default the twelve-field, 12 x 8.75 inches) with r
 marks; HP-GL uses pen N for colour N; PDF is one multi-page sequence.pdf."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("plot",
-                           help="plot every frame (HP-GL, SVG, PDF) with registration marks",
-                           description=DESCRIPTION)
+HELP = "plot every frame (HP-GL, SVG, PDF) with registration marks"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("seq")
     p.add_argument("--hpgl", metavar="DIR")
     p.add_argument("--svg", metavar="DIR")
@@ -25,11 +25,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--width", default=12.0, type=float, help="inches (default 12)")
     p.add_argument("--height", default=8.75, type=float, help="inches (default 8.75)")
     p.add_argument("--margin", default=1.0, type=float, help="inches round the field")
-    p.set_defaults(handler=_plot)
-    return p
 
 
-def _plot(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import files, library, plot
 
     targets = [(f, d) for f, d in (("hpgl", args.hpgl), ("svg", args.svg), ("pdf", args.pdf))

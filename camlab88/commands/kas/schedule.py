@@ -12,9 +12,10 @@ Given each frame's size in characters on the line, compute the real-time line te
 the frame due now is sent after each swap; frames passed over are dropped."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("schedule", help="which frames the real-time viewer shows and drops",
-                           description=DESCRIPTION)
+HELP = "which frames the real-time viewer shows and drops"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("sizes",
                    help="comma-separated characters per frame, or @FILE with one number a "
                         "line")
@@ -24,11 +25,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--clock", default="first-shown", choices=["first-shown", "first-sent"],
                    help="time runs from the first frame displayed (§3.1.4, default) or "
                         "from its first character sent (the earlier model)")
-    p.set_defaults(handler=_schedule)
-    return p
 
 
-def _schedule(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import viewer_schedule as vs
 
     try:

@@ -21,20 +21,19 @@ as section 3.1.3 says ('all timing information is prompted for on entry'); any @
 default shown in brackets. Without --prompt the offsets come from the command line (ours)."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("superimpose", help="superimpose sequences with start offsets",
-                           description=DESCRIPTION)
+HELP = "superimpose sequences with start offsets"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("seqs", nargs="+", metavar="SEQ[@OFFSET]")
     p.add_argument("--out", required=True).replay = SCRATCH
     p.add_argument("--prompt", action="store_true",
                    help="ask the timings on the Sigma (keyboard, or --script "
                         "key events)").replay = KEEP
     add_front_options(p)
-    p.set_defaults(handler=_superimpose)
-    return p
 
 
-def _superimpose(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import files
     from camlab88.apps.kas.superimpose import superimpose
 

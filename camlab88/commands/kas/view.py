@@ -16,9 +16,10 @@ colours). --realtime (default) keeps period-line time and drops the frames the l
 carry; --every shows every frame however long it takes."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("view", help="the line test: play a sequence on the emulated Sigma",
-                           description=DESCRIPTION)
+HELP = "the line test: play a sequence on the emulated Sigma"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("seq")
     either = p.add_mutually_exclusive_group()
     either.add_argument("--realtime", dest="mode", action="store_const", const="realtime",
@@ -32,11 +33,10 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
                         "display mask").replay = KEEP
     add_background_options(p)
     add_run_options(p, stop_after=False)
-    p.set_defaults(mode="realtime", handler=view)
-    return p
+    p.set_defaults(mode="realtime")
 
 
-def view(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.kas import files, library
     from camlab88.apps.kas.program.viewer import LineTest, ViewerHost
     from camlab88.emulator.harness import run

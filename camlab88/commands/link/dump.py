@@ -14,9 +14,10 @@ Print a link recording (sigma run --record-line FILE, link record ...) readably:
 chunk a line."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("dump", help="print a link recording readably",
-                           description=DESCRIPTION)
+HELP = "print a link recording readably"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("recording")
     p.add_argument("--decode", action="store_true",
                    help="show the host-to-terminal bytes as decoded Sigma orders (byte "
@@ -24,11 +25,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
                         "text")
     p.add_argument("--model", default="t5684", choices=["t5684", "t5688"],
                    help="the terminal that decodes them (with --decode)")
-    p.set_defaults(handler=dump)
-    return p
 
 
-def dump(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.protocols.link.cli import dump as dump_recording
 
     if _is_session_recording(args.recording):

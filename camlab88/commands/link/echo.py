@@ -4,15 +4,14 @@ from __future__ import annotations
 
 import argparse
 
-from camlab88.areas import delegated_action
-from camlab88.protocols.link.cli_args import ECHO_HELP, add_echo_arguments
+# the options are declared beside the code that reads them (protocols.link)
+from camlab88.protocols.link.cli_args import ECHO_HELP as HELP
+from camlab88.protocols.link.cli_args import add_echo_arguments as add_arguments
+
+__all__ = ["HELP", "add_arguments", "run"]
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    return delegated_action(actions, "echo", ECHO_HELP, add_echo_arguments, echo)
-
-
-def echo(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.protocols.link.cli import echo_command
 
     return echo_command(args)

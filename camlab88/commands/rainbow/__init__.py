@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import argparse
 
-from camlab88.areas import register_area
 from camlab88.replay_policy import KEEP
 
 ACTIONS = ("render", "run", "serve", "replay")
@@ -19,6 +18,3 @@ def add_relic_memory_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--strict", action="store_true",
                    help="the relic's video memory (64K 16-bit words)").replay = KEEP
 
-
-def register(subparsers: argparse._SubParsersAction) -> None:
-    register_area(subparsers, __name__, ACTIONS)

@@ -14,9 +14,10 @@ DESCRIPTION = """\
 Compile SCENE.json's pad graph to band structure and render one 768x576 frame."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("render", help="render a scene file (JSON pad graph) to a PNG",
-                           description=DESCRIPTION)
+HELP = "render a scene file (JSON pad graph) to a PNG"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("scene", metavar="SCENE.json")
     p.add_argument("--out", required=True, metavar="PNG", help="where to write the frame")
     p.add_argument("--bands", metavar="FILE", help="also write the band structure as text")
@@ -26,11 +27,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--inspect-out", type=Path, metavar="DIR",
                    help="also write the inspector's panel (bands over the screen, video "
                         "memory, pad graph) as DIR/frame_00000.png")
-    p.set_defaults(handler=render)
-    return p
 
 
-def render(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.emulator.rainbow import Rainbow
     from camlab88.emulator.rainbow.errors import RainbowError
     from camlab88.emulator.rainbow.scene import SceneError, load_scene

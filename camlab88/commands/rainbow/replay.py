@@ -19,11 +19,12 @@ double speed, F11 the inspector, F12 a screenshot, Esc or closing the window sto
 replay (exit 1: the check did not finish)."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
+HELP = "replay a recorded command stream and check it"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     from camlab88.control_flags import add_control_options
 
-    p = actions.add_parser("replay", help="replay a recorded command stream and check it",
-                           description=DESCRIPTION)
     p.add_argument("recording", metavar="FILE")
     p.add_argument("--headless", action="store_true", help="no window")
     p.add_argument("--screenshot", metavar="PNG", help="save the last frame")
@@ -33,11 +34,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
                         "with --strict; a session recording repeats its own options)")
     add_control_options(p, speed_default="a window at the Rainbow's 50 frames a second, "
                                          "headless flat out")
-    p.set_defaults(handler=replay)
-    return p
 
 
-def replay(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.base.png import write_png
     from camlab88.control_flags import controls_from_args
     from camlab88.emulator.harness import RunOptions, choose_headless, run

@@ -19,9 +19,10 @@ Run the Rainbow with the Appendix I transparency example and moving double-buffe
 (headless: 250 frames unless --stop-after N)."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("run", help="open the window with a demo of pads and transparency",
-                           description=DESCRIPTION)
+HELP = "open the window with a demo of pads and transparency"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     add_run_options(p)
     p.add_argument("--screenshot-frame", dest="stop_after_old", type=positive, metavar="N",
                    help="the same as --stop-after N (kept for old command lines)").replay = KEEP
@@ -35,8 +36,6 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
                         "components on four pads sliding apart (left button pauses)").replay = KEEP
     add_tablet_option(p, what="feed", where=" to the Rainbow's tablet input")
     add_trace_options(p, strict="--strict-protocol")
-    p.set_defaults(handler=run)
-    return p
 
 
 def run(args: argparse.Namespace) -> int:

@@ -24,9 +24,10 @@ Listen on 127.0.0.1:PORT for a program using protocols.rainbow.SocketTransport; 
 frames in the window (no display: headless, serving only)."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("serve", help="serve a Rainbow to a program over a local TCP socket",
-                           description=DESCRIPTION)
+HELP = "serve a Rainbow to a program over a local TCP socket"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--port", default=4711, type=int, help="TCP port on 127.0.0.1 (0 = any)")
     p.add_argument("--headless", action="store_true", help="no window")
     p.add_argument("--connections", type=int,
@@ -43,11 +44,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="a program connected for S seconds gives way to one waiting, however "
                         "steadily it sends (default 180)")
     add_trace_options(p, strict="--strict-protocol")
-    p.set_defaults(handler=serve)
-    return p
 
 
-def serve(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.emulator.harness import choose_headless
     from camlab88.emulator.machine import RainbowMachine
     from camlab88.emulator.rainbow.server import listen

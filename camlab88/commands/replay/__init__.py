@@ -28,9 +28,10 @@ slow: that is the point); otherwise as fast as possible, in a window too. It nam
 file and directory it writes (--frames, --screenshot, --video, --inspect-out, --save-state)."""
 
 
-def register(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("replay", help="replay a recorded session (--record FILE) and check it",
-                           description=DESCRIPTION)
+HELP = "replay a recorded session (--record FILE) and check it"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("recording", type=Path, metavar="FILE")
     p.add_argument("--headless", action="store_true", help="no window")
     p.add_argument("--check", action="store_true", help="compare every recorded screen hash")
@@ -52,11 +53,9 @@ def register(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--html-codec", choices=["h264", "vp9"], default="h264",
                    help="the page's video: H.264 in MP4 (default: plays in every browser) or "
                         "VP9 in WebM")
-    p.set_defaults(handler=replay)
-    return p
 
 
-def replay(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.emulator.harness import choose_headless
     from camlab88.emulator.harness.replay import Replay
     from camlab88.protocols.session import SessionFileError, read

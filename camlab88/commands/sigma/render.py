@@ -24,9 +24,10 @@ the final screen, 768x512 PNG, row 0 = top; or with --frames, the screen at ever
 line time."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("render", help="decode a stream and write the screen as PNG",
-                           description=DESCRIPTION)
+HELP = "decode a stream and write the screen as PNG"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--model", default="t5684", choices=MODELS)
     p.add_argument("--in", dest="stream", type=Path, required=True, help="stream file")
     p.add_argument("--out", type=Path, help="final screen PNG")
@@ -37,11 +38,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="line speed that times --frames (a recording keeps its own times)")
     add_trace_options(p)
     add_control_options(p)
-    p.set_defaults(handler=render)
-    return p
 
 
-def render(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.emulator.harness.sigma_batch import settle
     from camlab88.protocols.sigma.stream_file import StreamFileError, host_bytes, read_stream_file
 

@@ -40,8 +40,10 @@ crosshair during a cursor read), the mouse is the tablet. --screenshot: the scre
 --seconds, else once the --in stream has arrived."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("run", help=HELP, description=DESCRIPTION)
+HELP = HELP
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--model", default="t5684", choices=MODELS).replay = KEEP
     outside_end = p.add_mutually_exclusive_group()
     outside_end.add_argument("--pty", action="store_true",
@@ -78,8 +80,6 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="record the line (both directions) as a link recording").replay = DROP
     add_run_options(p, stop_after=False)
     add_trace_options(p)
-    p.set_defaults(handler=run)
-    return p
 
 
 def run(args: argparse.Namespace) -> int:

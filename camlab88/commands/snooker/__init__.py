@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import argparse
 
-from camlab88.areas import register_area
 from camlab88.argtypes import dask_address
 
 ACTIONS = ("play", "simulate", "replay", "ccl", "visualise", "camera", "render", "film")
@@ -28,9 +27,6 @@ def add_dask_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--dask", type=dask_address, metavar="ADDRESS|local",
                    help="render on a Dask cluster (a scheduler address, or 'local')")
 
-
-def register(subparsers: argparse._SubParsersAction) -> None:
-    register_area(subparsers, __name__, ACTIONS)
 
 
 def normalise_argv(argv: list[str]) -> list[str]:

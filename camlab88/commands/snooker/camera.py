@@ -28,19 +28,17 @@ errors are marked at their lines while the preview goes on. Keys: {KEYS}. \
 {HEADLESS_NEEDS_EVENTS}"""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("camera",
-                           help="edit a camera script with the live view beside it (§6.5)",
-                           description=DESCRIPTION)
+HELP = "edit a camera script with the live view beside it (§6.5)"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("script", metavar="SCRIPT", help="the camera script (created if missing)")
     p.add_argument("motion", metavar="CHECKPOINT|SESSION")
     add_events_option(p)
     add_run_options(p)
-    p.set_defaults(handler=camera)
-    return p
 
 
-def camera(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.snooker.camera import motion
     from camlab88.apps.snooker.checkpoint import CheckpointError
     from camlab88.apps.snooker.session import SessionError

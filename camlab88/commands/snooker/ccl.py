@@ -17,20 +17,18 @@ for every frame (metres from the table's centre, focal length in mm). Every erro
 script is reported, with its line and column. See docs/snooker.md for the language."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("ccl",
-                           help="interpret a camera script over a shot; write the view file",
-                           description=DESCRIPTION)
+HELP = "interpret a camera script over a shot; write the view file"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("script", metavar="SCRIPT", help="the camera script")
     p.add_argument("motion", metavar="CHECKPOINT|SESSION",
                    help="the motion program's checkpoint file, or its session file (whose "
                         "collision events then give CUEBALL STRIKES and HITBALL)")
     p.add_argument("--out", required=True, metavar="VIEWS", help="the view file to write")
-    p.set_defaults(handler=ccl)
-    return p
 
 
-def ccl(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.snooker.camera import ccl as language
     from camlab88.apps.snooker.camera import motion
     from camlab88.apps.snooker.camera.errors import CclErrors

@@ -31,11 +31,10 @@ local process pool (one process per core), or on a Dask cluster: --dask tcp://HO
 (started with 'dask scheduler' and 'dask worker tcp://HOST:8786'), or --dask local."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("film",
-                           help="camera script -> views -> rendered frames -> MP4/GIF "
-                                "(§6.3-6.4)",
-                           description=DESCRIPTION)
+HELP = "camera script -> views -> rendered frames -> MP4/GIF (§6.3-6.4)"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("motion", nargs="?", metavar="CHECKPOINT|SESSION")
     p.add_argument("script", nargs="?", metavar="SCRIPT.ccl", help="the camera script (§6.3.1)")
     p.add_argument("--titles", type=_word, metavar="WORD",
@@ -57,11 +56,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="renders averaged over the shutter with --motion-blur")
     p.add_argument("--lights", type=Path, metavar="FILE", help="lights file (see render)")
     add_looks_options(p)
-    p.set_defaults(handler=film)
-    return p
 
 
-def film(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.snooker.checkpoint import CheckpointError
     from camlab88.apps.snooker.film.schedule import FilmError
     from camlab88.apps.snooker.render.lights import LightsError

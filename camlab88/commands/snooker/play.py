@@ -24,10 +24,10 @@ and everything else; right: restart simulation; left held: mouse movement x4. Wi
 you are asked: new game (n) or restore (r). {HEADLESS_NEEDS_EVENTS}"""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("play",
-                           help="the interactive motion-development program on the emulated "
-                                "Rainbow", description=DESCRIPTION)
+HELP = "the interactive motion-development program on the emulated Rainbow"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("session", nargs="?", metavar="SESSION",
                    help="a saved session file to offer for restoring (and to save to)")
     add_events_option(p)
@@ -35,11 +35,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="where 'Exit from the program' saves (default: SESSION; with "
                         "neither, Exit asks for a file name)").replay = SCRATCH
     add_run_options(p)
-    p.set_defaults(handler=play)
-    return p
 
 
-def play(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.snooker.session import Session, SessionError
     from camlab88.protocols.rainbow.script import ScriptError
 

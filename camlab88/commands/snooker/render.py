@@ -37,10 +37,10 @@ byte-identical to the sequential frames since every frame starts from a cleared 
 without the line statistics."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("render",
-                           help="finished frames on the emulated Sigma T5688 or in true "
-                                "colour (§6.4)", description=DESCRIPTION)
+HELP = "finished frames on the emulated Sigma T5688 or in true colour (§6.4)"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("motion", metavar="CHECKPOINT|SESSION")
     p.add_argument("views", metavar="VIEWS", help="the view file (from 'snooker ccl')")
     p.add_argument("--frames", type=frames_dir, required=True, metavar="DIR",
@@ -65,11 +65,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="also film the frames: H.264 at 25 frames/s, no sound")
     p.add_argument("--gif", type=gif_file, metavar="FILE",
                    help="also film the frames as a GIF at 25 frames/s")
-    p.set_defaults(handler=render)
-    return p
 
 
-def render(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.snooker.camera.views import ViewFileError, read_views
     from camlab88.apps.snooker.checkpoint import CheckpointError
     from camlab88.apps.snooker.film.schedule import FilmError

@@ -15,18 +15,17 @@ Play a §6.2.2 checkpoint file on the emulated Rainbow at 25 frames/s (real time
 virtual time headless)."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("replay", help="play a checkpoint file on the Rainbow at 25 fps",
-                           description=DESCRIPTION)
+HELP = "play a checkpoint file on the Rainbow at 25 fps"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("checkpoint", metavar="CHECKPOINT")
     p.add_argument("--first", default=0, type=int, help="first frame (default 0)").replay = KEEP
     p.add_argument("--last", type=int, help="last frame (default: the last)").replay = KEEP
     add_run_options(p)
-    p.set_defaults(handler=replay)
-    return p
 
 
-def replay(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.snooker.checkpoint import CheckpointError, read, to_metres
     from camlab88.apps.snooker.table import Table
 

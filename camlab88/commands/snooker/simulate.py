@@ -21,11 +21,10 @@ foot). ANGLE_DEG is measured anticlockwise from straight up the table (from the 
 towards the black); SPIN is m/s along the shot (+ top spin, - back spin)."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("simulate",
-                           help="simulate a shot headlessly until every ball stops; write a "
-                                "checkpoint",
-                           description=DESCRIPTION)
+HELP = "simulate a shot headlessly until every ball stops; write a checkpoint"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--from", dest="source", metavar="SESSION|CHECKPOINT",
                    help="start from a saved session (JSON) or the last frame of a "
                         "checkpoint")
@@ -45,11 +44,9 @@ def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
                         "ball_diameter_m=0.2 (new games only)")
     p.add_argument("--max-seconds", default=600.0, type=float,
                    help="give up if balls are still moving after this long (default 600)")
-    p.set_defaults(handler=simulate)
-    return p
 
 
-def simulate(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.snooker.checkpoint import CheckpointError
     from camlab88.apps.snooker.physics import SimulationError
     from camlab88.apps.snooker.session import SessionError

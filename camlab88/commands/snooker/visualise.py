@@ -20,18 +20,16 @@ Play a view file (from 'snooker ccl') over a checkpoint or session on the emulat
 DIR/frame_NNNNN.png numbered as the checkpoint's frames."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("visualise",
-                           help="the perspective view of every frame on the Rainbow (§6.3.2)",
-                           description=DESCRIPTION)
+HELP = "the perspective view of every frame on the Rainbow (§6.3.2)"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("motion", metavar="CHECKPOINT|SESSION")
     p.add_argument("views", metavar="VIEWS", help="the view file")
     add_run_options(p)
-    p.set_defaults(handler=visualise)
-    return p
 
 
-def visualise(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.apps.snooker.camera import motion
     from camlab88.apps.snooker.camera.views import ViewFileError, read_views
     from camlab88.apps.snooker.checkpoint import CheckpointError

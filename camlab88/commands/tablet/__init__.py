@@ -4,8 +4,6 @@ from __future__ import annotations
 
 import argparse
 
-from camlab88.areas import register_area
-
 ACTIONS = ("list", "monitor", "calibrate", "emulate")
 HELP = "graphics tablets: real (HID/serial) and emulated"
 DESCRIPTION = """\
@@ -22,6 +20,3 @@ def add_source_argument(p: argparse.ArgumentParser) -> None:
     """The tablet to read: a SOURCE string (monitor, calibrate)."""
     p.add_argument("source", metavar="SOURCE", help=SOURCE_HELP)
 
-
-def register(subparsers: argparse._SubParsersAction) -> None:
-    register_area(subparsers, __name__, ACTIONS)

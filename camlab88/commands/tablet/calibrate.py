@@ -13,16 +13,15 @@ Touch the top-left then the bottom-right corner of the working area. Saved under
 $CAMLAB88_CONFIG_DIR (else ~/.config/camlab88)/calibration.json."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("calibrate", help="touch two corners; saved per device",
-                           description=DESCRIPTION)
+HELP = "touch two corners; saved per device"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     add_source_argument(p)
     p.add_argument("--seconds", default=120.0, type=float, help="give up after S seconds")
-    p.set_defaults(handler=calibrate)
-    return p
 
 
-def calibrate(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.emulator.tablet_input.calibrate import calibrate_tablet
 
     return calibrate_tablet(COMMAND, args.source, args.seconds)

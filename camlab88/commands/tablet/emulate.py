@@ -15,20 +15,19 @@ F5 pause / resume (the tablet sends nothing while paused), F6 one frame, F7 / F8
 speed, F11 the inspector, F12 a screenshot, Esc or closing the window quits."""
 
 
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("emulate", help="an emulated tablet on a pty, driven by the mouse",
-                           description=DESCRIPTION)
+HELP = "an emulated tablet on a pty, driven by the mouse"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--protocol", default="summa-mm",
                    help="wacom4, summa-mm (default), bitpad1, bitpad2, calcomp, "
                         "summa-flair")
     p.add_argument("--demo", action="store_true", help="draw a scripted stroke, not the mouse")
     p.add_argument("--seconds", type=float, help="exit after S seconds")
     p.add_argument("--screenshot", help="save the window after a few frames, exit")
-    p.set_defaults(handler=emulate)
-    return p
 
 
-def emulate(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     from camlab88.emulator.tablet_input.emulate import emulate_tablet
 
     return emulate_tablet(COMMAND, args.protocol, args.demo, args.seconds, args.screenshot)

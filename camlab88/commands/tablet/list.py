@@ -4,14 +4,11 @@ from __future__ import annotations
 
 import argparse
 
-
-def add_parser(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("list", help="HID digitizers and serial ports found")
-    p.set_defaults(handler=cmd_list)
-    return p
+HELP = "HID digitizers and serial ports found"
 
 
-def cmd_list(args: argparse.Namespace) -> int:
+
+def run(args: argparse.Namespace) -> int:
     from camlab88.protocols.tablets.hid_source import backend_name, list_digitizers
 
     devices, note = list_digitizers()

@@ -14,7 +14,8 @@ from __future__ import annotations
 import argparse
 import sys
 
-COMMAND = "camlab88 warm-up"
+NAME = "warm-up"
+COMMAND = f"camlab88 {NAME}"
 
 # (what, a completion "module:function" or a camlab88 command line); order: cheapest first
 STEPS: tuple[tuple[str, str | tuple[str, ...]], ...] = (
@@ -37,15 +38,10 @@ instead of on the first run that needs each group. Later commands load them from
 (NUMBA_CACHE_DIR if set; the camlab88 command sets it to ~/.cache/camlab88/numba otherwise)."""
 
 
-def register(actions: argparse._SubParsersAction) -> argparse.ArgumentParser:
-    p = actions.add_parser("warm-up",
-                           help="compile every numba kernel now (otherwise: on first use)",
-                           description=DESCRIPTION)
-    p.set_defaults(handler=_run)
-    return p
+HELP = "compile every numba kernel now (otherwise: on first use)"
 
 
-def _run(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
     import time
 
     start = time.perf_counter()
