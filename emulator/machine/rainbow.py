@@ -8,6 +8,7 @@ from __future__ import annotations
 import socket
 from collections.abc import Callable
 from fractions import Fraction
+from pathlib import Path
 
 import numpy as np
 
@@ -16,7 +17,8 @@ from camlab88.emulator.protocol_trace import TraceEvent
 from camlab88.emulator.rainbow.device import FRAME_MS, Rainbow
 from camlab88.emulator.rainbow.errors import RainbowError
 from camlab88.emulator.rainbow.executor import Executor
-from camlab88.emulator.rainbow.server import ServerStats, serve
+from camlab88.emulator.rainbow.scene import load_scene
+from camlab88.emulator.rainbow.server import ServerStats, listen, serve
 from camlab88.emulator.rainbow.trace import RainbowTracer
 from camlab88.protocols.rainbow.client import RainbowClient
 from camlab88.protocols.rainbow.events import Event
@@ -140,6 +142,22 @@ class RainbowMachine:
         if self._recorder is not None:
             self._recorder.record_input(queued)
 
+    # ------------------------------------------------------------------ scenes
+    def load_scene(self, path: str | Path) -> None:
+        """Build a scene file's pad graph (``rainbow render``'s JSON) on this machine's
+        device. Raises SceneError naming the file and where, or RainbowError when the
+        device refuses what the scene asks (video memory, the graph's rules)."""
+        load_scene(path, self.device)
+
+    def reference(self) -> np.ndarray:
+        """The screen by the per-pixel reference compositor (no band structure): the
+        check of ``frame``."""
+        return self.device.reference()
+
+    def bands_text(self) -> str:
+        """The band structure the video processor interprets, as text (compiled now)."""
+        return self.device.bands().to_text()
+
     def replay(self, rec: Recording) -> ReplayResult:
         """A recording's commands and input played on this machine; the result lists every
         reply that differs from the recorded one."""
@@ -182,9 +200,15 @@ class RainbowMachine:
         self.executor.decoder.resume(offset, pending)
 
     # ------------------------------------------------------------------ a socket
+    @staticmethod
+    def listen(port: int = 0) -> socket.socket:
+        """A listening socket on 127.0.0.1:``port`` (0: any free port) for ``serve``; an
+        OSError when the port cannot be had."""
+        return listen(port)
+
     def serve(self, sock: socket.socket, connections: int | None = None,
               **limits: float) -> ServerStats:
-        """Serve programs on ``sock`` (emulator/rainbow/server.py's ``listen``) one at a
+        """Serve programs on ``sock`` (``listen``) one at a
         time, each a fresh pad-library session on this Rainbow, until ``connections`` have
         been served (None: for ever); ``limits``: frame_timeout, idle_timeout,
         session_time, poll (seconds)."""

@@ -3,6 +3,8 @@ frame shown, a replay on a fresh machine, a program run's saved Rainbow (session
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -73,3 +75,23 @@ def test_a_damaged_session_state_changes_nothing() -> None:
     with pytest.raises(MachineStateError, match="client ids"):
         other.check_session_state(pack("rainbow-session", head, blobs))
     assert np.array_equal(other.frame(), before)
+
+
+def test_a_scene_file_is_built_on_the_machine_and_its_errors_come_from_it(tmp_path) -> None:
+    """``rainbow render`` reaches the device through the machine: a scene's pad graph built
+    on it, the band-structure frame agreeing with the per-pixel reference, the bands as
+    text, and a bad file refused with the machine's SceneError naming it."""
+    from camlab88.emulator.machine import SceneError
+
+    scene = Path(__file__).resolve().parents[1] / "data" / "rainbow" / "golden_scene.json"
+    machine = RainbowMachine()
+    blank = machine.frame().copy()
+    machine.load_scene(scene)
+    frame = machine.frame()
+    assert not np.array_equal(frame, blank)
+    assert np.array_equal(frame, machine.reference())
+    assert machine.bands_text().strip()
+    bad = tmp_path / "bad.json"
+    bad.write_text('{"nodes": [')
+    with pytest.raises(SceneError, match="bad.json"):
+        RainbowMachine().load_scene(bad)

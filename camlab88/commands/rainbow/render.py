@@ -30,9 +30,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from camlab88.emulator.rainbow import Rainbow
-    from camlab88.emulator.rainbow.errors import RainbowError
-    from camlab88.emulator.rainbow.scene import SceneError, load_scene
+    from camlab88.emulator.machine import RainbowError, RainbowMachine, SceneError
 
     # the one output rule (docs/exit_status.md), before the work: status 2
     check_output(COMMAND, Path(args.out), "write", (".png",))
@@ -40,18 +38,19 @@ def run(args: argparse.Namespace) -> int:
         check_output(COMMAND, Path(args.bands), "write the bands to")
     if args.inspect_out is not None:
         check_output_dir(COMMAND, Path(args.inspect_out), "write the inspector's frames to")
+    machine = RainbowMachine(strict_memory=args.strict)
     try:
-        device = load_scene(args.scene, Rainbow(strict=args.strict))
+        machine.load_scene(args.scene)
     except (SceneError, RainbowError) as exc:
         return fail(COMMAND, exc)
     try:  # compiling (or the reference walk) refuses graphs with too many paths
-        frame = device.reference() if args.reference else device.peek()
-        text = device.bands().to_text() if args.bands else None
+        frame = machine.reference() if args.reference else machine.frame()
+        text = machine.bands_text() if args.bands else None
     except RainbowError as exc:
         return fail(COMMAND, f"{args.scene}: {exc}")
     status = _write(args, frame, text)
     if status == 0 and args.inspect_out is not None:
-        return _inspect(args, device, frame)
+        return _inspect(args, machine.device, frame)
     return status
 
 

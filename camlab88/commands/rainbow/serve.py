@@ -49,12 +49,11 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     from camlab88.emulator.harness import choose_headless
     from camlab88.emulator.machine import RainbowMachine
-    from camlab88.emulator.rainbow.server import listen
 
     headless = choose_headless(COMMAND, args.headless, "serving without showing the frames")
     window = None if headless else _window(args.scale)
     try:
-        sock = listen(args.port)
+        sock = RainbowMachine.listen(args.port)
     except OSError as exc:
         return fail(COMMAND, f"port {args.port}: {exc.strerror}")  # cannot start: 2
     print(f"{COMMAND}: listening on 127.0.0.1:{sock.getsockname()[1]}", flush=True)
