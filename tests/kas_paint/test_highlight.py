@@ -24,9 +24,13 @@ def test_select_and_clear_touch_only_the_highlight_plane() -> None:
     data, _ = prog.frame(3)
     line.send(data)
     before = term.planes.copy()
+    assert np.count_nonzero(before & 0x7F) > 1000  # the frame is painted: fills, outlines
     line.send(prog.select(3, (1, 2)))
+    lit = (term.planes & 0x80) != 0
+    assert np.count_nonzero(lit) > 100
+    # every highlighted pixel lies on an outline, which a write to all planes would wipe
+    assert np.all(before[lit] & 0x60)
     assert np.array_equal(term.planes & 0x7F, before & 0x7F)
-    assert np.sum(term.planes & 0x80) > 100
     frame = term.frame()
     lit = np.argwhere((term.indices()[::-1] & 0x80) != 0)
     assert all(tuple(frame[y, x]) == HIGHLIGHT_RGB for y, x in lit[:50])
