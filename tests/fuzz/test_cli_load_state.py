@@ -1,9 +1,10 @@
 """Damaged whole-program states through the command line's ``--load-state FILE``: real states
-of four programs (the CA program, the snooker program, the Sigma terminal's run, the Rainbow
-demo), saved by the commands themselves, then loaded back by the same commands in process
-after random damage — to the file's bytes, to its header's declared values (fuzz.states
-edits them with the parts opened, so the damage gets past zlib's checksums) and to its
-parts (the machines' own states).
+of nine programs (the CA program, the snooker program, the Sigma terminal's run, the Rainbow
+demo, and the five editors whose state is their input log: kas edit, kas path, kas paint,
+the snooker camera tool, the CA actors editor), saved by the commands themselves, then
+loaded back by the same commands in process after random damage — to the file's bytes,
+to its header's declared values (fuzz.states edits them with the parts opened, so the
+damage gets past zlib's checksums) and to its parts (the machines' own states).
 Every outcome is a clean run or one line naming the file with status 1 or 2: never a
 traceback, a hang or runaway memory. Each load runs in a forked copy of this process: not to
 keep a damaged state from leaking into the next example (a refused load changes nothing and
@@ -30,6 +31,7 @@ from fuzz.states import (
     edit_tree,
     load_state,
     open_state,
+    program_of,
     save_state,
 )
 
@@ -63,6 +65,7 @@ def scratch(tmp_path_factory: pytest.TempPathFactory) -> Path:
 @pytest.mark.parametrize("name", sorted(PROGRAMS))
 def test_a_saved_state_loads_back_and_opening_it_changes_nothing(name, seeds, scratch) -> None:
     assert close_state(open_state(seeds[name])) == seeds[name]
+    assert program_of(open_state(seeds[name])) == name  # (the long target's choice)
     scratch.write_bytes(seeds[name])
     code, err = load_state(name, scratch, 300.0)
     assert code == 0, err
