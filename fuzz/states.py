@@ -28,27 +28,26 @@ from typing import Any
 ROOT = Path(__file__).resolve().parents[1]
 STREAM = ROOT / "examples" / "sigma" / "pgplot_goc.sig"
 
-_IN = "{inputs}"  # in an argv below: the editors' input folder (editor_inputs)
-# program -> a short headless run of it (a state is saved from it and loaded into it; argv()
-# gives it with the input folder's path). The editors' states are their input log
-# (emulator.harness.input_log): a load runs the session again, so their runs are short.
+# program -> a short headless run of it (a state is saved from it and loaded into it). The
+# editors' states are their input log (emulator.harness.input_log): a load runs the session
+# again, so their runs are short; they run in editor_inputs(), their files named as they are
+# there (the actors editor shows its file's name as given, and its state's picture with it:
+# a state of it loads only where that name reads the same).
 PROGRAMS: dict[str, list[str]] = {
     "ca-program": ["ca", "program", "--pattern", "glider", "--headless", "--stop-after", "2"],
     "snooker-play": ["snooker", "play", "--headless", "--stop-after", "2"],
     "sigma-run": ["sigma", "run", "--headless", "--in", str(STREAM), "--seconds", "0.3"],
     "rainbow-run": ["rainbow", "run", "--headless", "--stop-after", "3", "--demo", "pads"],
-    "kas-edit": ["kas", "edit", f"{_IN}/key.kas", "--script", f"{_IN}/edit_all.txt",
-                 "--headless", "--seed", "1"],
-    "kas-path": ["kas", "path", f"{_IN}/flag_a.kas", f"{_IN}/flag_b.kas", "--out",
-                 f"{_IN}/flag_path.kas", "--no-library", "--headless", "--script",
-                 f"{_IN}/fig-3.6.script"],
-    "kas-paint": ["kas", "paint", f"{_IN}/face.kas", "--headless", "--script",
-                  f"{_IN}/fig-3.7.script"],
-    "snooker-camera": ["snooker", "camera", f"{_IN}/cam.ccl", f"{_IN}/shot.cp", "--headless",
-                       "--events", f"{_IN}/camera.events"],
-    "ca-actors": ["ca", "actors", f"{_IN}/m.actors", "--headless", "--events",
-                  f"{_IN}/actors.events"],
+    "kas-edit": ["kas", "edit", "key.kas", "--script", "edit_all.txt", "--headless", "--seed",
+                 "1"],
+    "kas-path": ["kas", "path", "flag_a.kas", "flag_b.kas", "--out", "flag_path.kas",
+                 "--no-library", "--headless", "--script", "fig-3.6.script"],
+    "kas-paint": ["kas", "paint", "face.kas", "--headless", "--script", "fig-3.7.script"],
+    "snooker-camera": ["snooker", "camera", "cam.ccl", "shot.cp", "--headless", "--events",
+                       "camera.events"],
+    "ca-actors": ["ca", "actors", "m.actors", "--headless", "--events", "actors.events"],
 }
+EDITORS = frozenset(["kas-edit", "kas-path", "kas-paint", "snooker-camera", "ca-actors"])
 COMMANDS = {"camlab88 ca program": "ca-program", "camlab88 snooker": "snooker-play",
             "camlab88 sigma run": "sigma-run", "camlab88 rainbow run": "rainbow-run",
             "camlab88 kas edit": "kas-edit", "camlab88 kas path": "kas-path",
@@ -88,13 +87,16 @@ def run_cli(argv: list[str], limit: float) -> tuple[int, str]:
     return code, err.getvalue()
 
 
-def argv(program: str) -> list[str]:
-    """``program``'s short run, its input files in editor_inputs()."""
-    words = PROGRAMS[program]
-    if not any(_IN in w for w in words):
-        return list(words)
-    folder = str(editor_inputs())
-    return [w.replace(_IN, folder) for w in words]
+def run_program(program: str, more: list[str], limit: float) -> tuple[int, str]:
+    """``program``'s short run with ``more`` arguments (an editor's in editor_inputs())."""
+    if program not in EDITORS:
+        return run_cli([*PROGRAMS[program], *more], limit)
+    old = Path.cwd()
+    os.chdir(editor_inputs())
+    try:
+        return run_cli([*PROGRAMS[program], *more], limit)
+    finally:
+        os.chdir(old)
 
 
 _INPUTS: list[Path] = []  # (the folder, once made)
@@ -139,7 +141,7 @@ _EDITOR_TEXTS = {
 
 def save_state(program: str, path: Path, limit: float = 300.0) -> bytes:
     """A real state of ``program``: its short run, saved at the end."""
-    code, err = run_cli([*argv(program), "--save-state", str(path)], limit)
+    code, err = run_program(program, ["--save-state", str(path.absolute())], limit)
     if code != 0:
         raise RuntimeError(f"{program}: could not save a state: {err}")
     return path.read_bytes()
@@ -147,7 +149,7 @@ def save_state(program: str, path: Path, limit: float = 300.0) -> bytes:
 
 def load_state(program: str, path: Path, limit: float) -> tuple[int, str]:
     """``program``'s short run continued from the state file ``path``."""
-    return run_cli([*argv(program), "--load-state", str(path)], limit)
+    return run_program(program, ["--load-state", str(path.absolute())], limit)
 
 
 def verdict(path: Path, code: int, err: str) -> str | None:

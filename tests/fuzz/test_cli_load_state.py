@@ -34,6 +34,7 @@ from fuzz.states import (
     program_of,
     save_state,
 )
+from fuzz.targets import CORPUS
 
 LIMIT_S = 20.0
 MEMORY_MB = 1024.0
@@ -69,6 +70,25 @@ def test_a_saved_state_loads_back_and_opening_it_changes_nothing(name, seeds, sc
     scratch.write_bytes(seeds[name])
     code, err = load_state(name, scratch, 300.0)
     assert code == 0, err
+
+
+SEEDS = CORPUS / "cli-load-state"
+
+
+def test_the_long_target_has_a_seed_of_every_program() -> None:
+    assert sorted(p.name for p in SEEDS.iterdir()) == sorted(f"{n}.opened" for n in PROGRAMS)
+
+
+@pytest.mark.parametrize("name", sorted(PROGRAMS))
+def test_the_long_targets_seed_loads_in_this_process(name, scratch) -> None:
+    """The committed seeds (fuzz/make_corpus.py) were saved by another process: each loads
+    with status 0 here, or the long run would start from a refusal (a state version raised
+    since, or a state that loads only where it was saved)."""
+    opened = (SEEDS / f"{name}.opened").read_bytes()
+    assert program_of(opened) == name
+    scratch.write_bytes(close_state(opened))
+    code, err = load_state(name, scratch, 300.0)
+    assert code == 0, f"{err} (make the seeds again: fuzz/make_corpus.py's _cli_states)"
 
 
 @pytest.mark.parametrize("name", sorted(PROGRAMS))
