@@ -31,8 +31,8 @@ STREAM = ROOT / "examples" / "sigma" / "pgplot_goc.sig"
 # program -> a short headless run of it (a state is saved from it and loaded into it). The
 # editors' states are their input log (emulator.harness.input_log): a load runs the session
 # again, so their runs are short; they run in editor_inputs(), their files named as they are
-# there (the actors editor shows its file's name as given, and its state's picture with it:
-# a state of it loads only where that name reads the same).
+# there (the actors editor's status names its file as given once it has saved, `s` below,
+# and its state's picture with it: a state of it loads only where that name reads the same).
 PROGRAMS: dict[str, list[str]] = {
     "ca-program": ["ca", "program", "--pattern", "glider", "--headless", "--stop-after", "2"],
     "snooker-play": ["snooker", "play", "--headless", "--stop-after", "2"],
