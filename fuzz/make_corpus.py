@@ -207,7 +207,8 @@ def _tapes() -> None:
 
 def _sessions() -> None:
     """Two recordings camlab88 made (tests/data/sessions, the small ones) and one written by
-    protocols.session.format with every record type (input events too)."""
+    protocols.session.format with every record type (input events too); the third made by
+    camlab88, begun from a state, is _resumed_recording's."""
     from fractions import Fraction
 
     from camlab88.protocols.session.format import ScreenHash, SessionRecording, dumps
@@ -223,6 +224,36 @@ def _sessions() -> None:
          (4, "T", _SMALL_TAPE)],
         [ScreenHash(2, 4, Fraction(4, 25), sha)], ScreenHash(3, 5, Fraction(1, 5), sha), 5)
     _put("session-recording", "every_record.session", dumps(rec))
+
+
+# the resumed recording: sigma_run.session's run saved at 0.2 s, then recorded from there
+RESUMED = "resumed_sigma_run.session"
+RESUMED_RUN = ["sigma", "run", "--headless", "--in", "picture.sigma", "--seconds", "0.4"]
+
+
+def _resumed_recording() -> None:
+    """A recording begun from ``--load-state``: ``sigma run --load-state s.c88state --record``
+    (its header's argv names the state; its file record carries the state by content, the
+    replay's ``--load-state`` reads it through the same loader as a state on disk)."""
+    import os
+
+    from camlab88.protocols.session.format import read
+    from fuzz.states import run_cli
+
+    old = Path.cwd()
+    with tempfile.TemporaryDirectory() as scratch:
+        os.chdir(scratch)
+        try:
+            for name, data in read(DATA / "sessions" / "sigma_run.session").files.items():
+                Path(name).write_bytes(data)
+            for argv in ([*RESUMED_RUN, "--save-state", "s.c88state", "--at", "0.2"],
+                         [*RESUMED_RUN, "--load-state", "s.c88state", "--record", "r.session"]):
+                code, err = run_cli(argv, 300.0)
+                if code != 0:
+                    raise RuntimeError(f"{' '.join(argv)}: {err}")
+            _put("session-recording", RESUMED, Path("r.session").read_bytes())
+        finally:
+            os.chdir(old)
 
 
 def _states() -> None:
@@ -260,7 +291,7 @@ def main() -> int:
     if CORPUS.exists():
         shutil.rmtree(CORPUS)
     for make in (_rainbow, _link_and_sigma, _kas, _snooker, _ca, _tablets, _scripts_and_views,
-                 _kas_paint, _tapes, _sessions, _states, _cli_states):
+                 _kas_paint, _tapes, _sessions, _resumed_recording, _states, _cli_states):
         make()
     for folder in sorted(CORPUS.iterdir()):
         files = list(folder.iterdir())

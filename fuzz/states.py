@@ -28,16 +28,31 @@ from typing import Any
 ROOT = Path(__file__).resolve().parents[1]
 STREAM = ROOT / "examples" / "sigma" / "pgplot_goc.sig"
 
-# program -> a short headless run of it (a state is saved from it and loaded into it)
+# program -> a short headless run of it (a state is saved from it and loaded into it). The
+# editors' states are their input log (emulator.harness.input_log): a load runs the session
+# again, so their runs are short; they run in editor_inputs(), their files named as they are
+# there (the actors editor's status names its file as given once it has saved, `s` below,
+# and its state's picture with it: a state of it loads only where that name reads the same).
 PROGRAMS: dict[str, list[str]] = {
     "ca-program": ["ca", "program", "--pattern", "glider", "--headless", "--stop-after", "2"],
     "snooker-play": ["snooker", "play", "--headless", "--stop-after", "2"],
     "sigma-run": ["sigma", "run", "--headless", "--in", str(STREAM), "--seconds", "0.3"],
     "rainbow-run": ["rainbow", "run", "--headless", "--stop-after", "3", "--demo", "pads"],
+    "kas-edit": ["kas", "edit", "key.kas", "--script", "edit_all.txt", "--headless", "--seed",
+                 "1"],
+    "kas-path": ["kas", "path", "flag_a.kas", "flag_b.kas", "--out", "flag_path.kas",
+                 "--no-library", "--headless", "--script", "fig-3.6.script"],
+    "kas-paint": ["kas", "paint", "face.kas", "--headless", "--script", "fig-3.7.script"],
+    "snooker-camera": ["snooker", "camera", "cam.ccl", "shot.cp", "--headless", "--events",
+                       "camera.events"],
+    "ca-actors": ["ca", "actors", "m.actors", "--headless", "--events", "actors.events"],
 }
+EDITORS = frozenset(["kas-edit", "kas-path", "kas-paint", "snooker-camera", "ca-actors"])
 COMMANDS = {"camlab88 ca program": "ca-program", "camlab88 snooker": "snooker-play",
-            "camlab88 sigma run": "sigma-run",
-            "camlab88 rainbow run": "rainbow-run"}  # as a state names its program
+            "camlab88 sigma run": "sigma-run", "camlab88 rainbow run": "rainbow-run",
+            "camlab88 kas edit": "kas-edit", "camlab88 kas path": "kas-path",
+            "camlab88 kas paint": "kas-paint", "camlab88 snooker camera": "snooker-camera",
+            "camlab88 ca actors": "ca-actors"}  # as a state names its program
 _LENGTH = 4  # bytes of each part's length prefix in an opened state
 
 
@@ -72,9 +87,61 @@ def run_cli(argv: list[str], limit: float) -> tuple[int, str]:
     return code, err.getvalue()
 
 
+def run_program(program: str, more: list[str], limit: float) -> tuple[int, str]:
+    """``program``'s short run with ``more`` arguments (an editor's in editor_inputs())."""
+    if program not in EDITORS:
+        return run_cli([*PROGRAMS[program], *more], limit)
+    old = Path.cwd()
+    os.chdir(editor_inputs())
+    try:
+        return run_cli([*PROGRAMS[program], *more], limit)
+    finally:
+        os.chdir(old)
+
+
+_INPUTS: list[Path] = []  # (the folder, once made)
+
+
+def editor_inputs() -> Path:
+    """A folder of the editors' input files, made once per process and removed at its exit
+    (the kas editors' from the shipped recordings; the camera tool's from its test data;
+    short scripts and an actors file written here). The editors write in it too (kas path's
+    --out)."""
+    if _INPUTS:
+        return _INPUTS[0]
+    import atexit
+    import shutil
+    import tempfile
+
+    from camlab88.protocols.session import read
+
+    folder = Path(tempfile.mkdtemp(prefix="camlab88-fuzz-editors-"))
+    atexit.register(shutil.rmtree, folder, True)
+    for recording in ("tests/data/sessions/kas_edit.session", "examples/figures/fig-3.6.session",
+                      "examples/figures/fig-3.7.session"):
+        for name, data in read(ROOT / recording).files.items():
+            (folder / name).write_bytes(data)
+    camera = ROOT / "tests" / "data" / "snooker_camera"
+    for name, data in _EDITOR_TEXTS.items():
+        (folder / name).write_text(data)
+    (folder / "cam.ccl").write_bytes((camera / "thesis_example.ccl").read_bytes())
+    (folder / "shot.cp").write_bytes((camera / "pink_shot.checkpoint").read_bytes())
+    _INPUTS.append(folder)
+    return folder
+
+
+# the camera tool's and actors editor's sessions (as tests/states/test_hostile_states.py's)
+_EDITOR_TEXTS = {
+    "camera.events": "wait 10\nkey down\ntype veiw\nwait 10\nkey down\ntype xx\nwait 10\n",
+    "m.actors": "rules maze\nactor 1 wall\n  colour 9 9 9\n  box 1 1 1\nend\n",
+    "actors.events": "wait 5\nclick left 32 472\nwait 3\nkey s\nwait 3\n"
+                     "click left 96 300\nwait 5\n",
+}
+
+
 def save_state(program: str, path: Path, limit: float = 300.0) -> bytes:
     """A real state of ``program``: its short run, saved at the end."""
-    code, err = run_cli([*PROGRAMS[program], "--save-state", str(path)], limit)
+    code, err = run_program(program, ["--save-state", str(path.absolute())], limit)
     if code != 0:
         raise RuntimeError(f"{program}: could not save a state: {err}")
     return path.read_bytes()
@@ -82,7 +149,7 @@ def save_state(program: str, path: Path, limit: float = 300.0) -> bytes:
 
 def load_state(program: str, path: Path, limit: float) -> tuple[int, str]:
     """``program``'s short run continued from the state file ``path``."""
-    return run_cli([*PROGRAMS[program], "--load-state", str(path)], limit)
+    return run_program(program, ["--load-state", str(path.absolute())], limit)
 
 
 def verdict(path: Path, code: int, err: str) -> str | None:

@@ -1,9 +1,10 @@
 """Damaged whole-program states through the command line's ``--load-state FILE``: real states
-of four programs (the CA program, the snooker program, the Sigma terminal's run, the Rainbow
-demo), saved by the commands themselves, then loaded back by the same commands in process
-after random damage — to the file's bytes, to its header's declared values (fuzz.states
-edits them with the parts opened, so the damage gets past zlib's checksums) and to its
-parts (the machines' own states).
+of nine programs (the CA program, the snooker program, the Sigma terminal's run, the Rainbow
+demo, and the five editors whose state is their input log: kas edit, kas path, kas paint,
+the snooker camera tool, the CA actors editor), saved by the commands themselves, then
+loaded back by the same commands in process after random damage — to the file's bytes,
+to its header's declared values (fuzz.states edits them with the parts opened, so the
+damage gets past zlib's checksums) and to its parts (the machines' own states).
 Every outcome is a clean run or one line naming the file with status 1 or 2: never a
 traceback, a hang or runaway memory. Each load runs in a forked copy of this process: not to
 keep a damaged state from leaking into the next example (a refused load changes nothing and
@@ -30,8 +31,10 @@ from fuzz.states import (
     edit_tree,
     load_state,
     open_state,
+    program_of,
     save_state,
 )
+from fuzz.targets import CORPUS
 
 LIMIT_S = 20.0
 MEMORY_MB = 1024.0
@@ -63,9 +66,29 @@ def scratch(tmp_path_factory: pytest.TempPathFactory) -> Path:
 @pytest.mark.parametrize("name", sorted(PROGRAMS))
 def test_a_saved_state_loads_back_and_opening_it_changes_nothing(name, seeds, scratch) -> None:
     assert close_state(open_state(seeds[name])) == seeds[name]
+    assert program_of(open_state(seeds[name])) == name  # (the long target's choice)
     scratch.write_bytes(seeds[name])
     code, err = load_state(name, scratch, 300.0)
     assert code == 0, err
+
+
+SEEDS = CORPUS / "cli-load-state"
+
+
+def test_the_long_target_has_a_seed_of_every_program() -> None:
+    assert sorted(p.name for p in SEEDS.iterdir()) == sorted(f"{n}.opened" for n in PROGRAMS)
+
+
+@pytest.mark.parametrize("name", sorted(PROGRAMS))
+def test_the_long_targets_seed_loads_in_this_process(name, scratch) -> None:
+    """The committed seeds (fuzz/make_corpus.py) were saved by another process: each loads
+    with status 0 here, or the long run would start from a refusal (a state version raised
+    since, or a state that loads only where it was saved)."""
+    opened = (SEEDS / f"{name}.opened").read_bytes()
+    assert program_of(opened) == name
+    scratch.write_bytes(close_state(opened))
+    code, err = load_state(name, scratch, 300.0)
+    assert code == 0, f"{err} (make the seeds again: fuzz/make_corpus.py's _cli_states)"
 
 
 @pytest.mark.parametrize("name", sorted(PROGRAMS))

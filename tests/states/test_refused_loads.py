@@ -102,7 +102,7 @@ class Program:
         load_program(self.end, self.harness, identity(self.harness, __version__))
 
 
-@pytest.fixture(scope="module", params=sorted(PROGRAMS))
+@pytest.fixture(scope="module", params=sorted(LONGER))  # (the editors: test_editor_states)
 def program(request, tmp_path_factory) -> Program:
     name = request.param
     folder = tmp_path_factory.mktemp(name)

@@ -65,11 +65,14 @@ START_HELP = ("Middle button: menu of options (over a ball: the ball's menu).\n"
               "Key t: table constants (ball size, cushion restitution, friction).")
 
 
+# Exit's questions after "y": the file's name (no --save), the frames to save; a state holds
+# them as a mode, their question asked again by the program's own code (state_values)
+EXIT_QUESTIONS = ("exit_file", "exit_range")
 # what the program may be doing (``mode``): a state names one of these, nothing else
 MODES = frozenset(["aim_confirm", "aim_pot", "aim_target", "alter", "escape", "exit", "idle",
                    "menu", "position", "replay", "running", "spin", "start", "velocity",
                    *(f"keys:{p}" for p in ("position", "velocity", "replay", "aim_speed",
-                                           "aim_cushions")),
+                                           "aim_cushions", *EXIT_QUESTIONS)),
                    *(f"keys:table:{item}" for item in constants.ITEMS)])
 
 
@@ -119,9 +122,15 @@ class Program:
     # ------------------------------------------------------------------ declared state
     # (the harness's program_state): the game as the session file holds it (read back by
     # Session.from_json), the program's own values, the menus and the display. What the
-    # command line gave (the file to restore, where to save) stays the fresh build's; a
-    # state is not saved while a file name is being asked for (it would choose the file).
-    STATE_VERSION = 1
+    # command line gave (the file to restore, where to save) stays the fresh build's.
+    # Exit's dialogue (as the CA program's file dialogues, apps/ca/program/state.py) is
+    # saved up to its file's question and asked again through the program's own code at a
+    # load (its question's text is the program's, never the state's); the characters typed
+    # into the name so far are kept, as plain text (nothing is read or written until the
+    # user ends the name with Return and then the frames with Return, the name on screen).
+    # Once a name has been given (asking for the frames) it is refused: a state never names
+    # a file. Version 2 added the exit questions to the modes; migrate_state reads 1.
+    STATE_VERSION = 2
     _POINT = Tuple((Float(), Float()))
     _MENUS = ("green", "orange", "constants")
     STATE_SCHEMA = Record(
@@ -138,9 +147,18 @@ class Program:
         menus=Record(**{m: PopupMenu.STATE_SCHEMA for m in _MENUS}),
         display=Display.STATE_SCHEMA)
 
+    @staticmethod
+    def migrate_state(version: int, values: Any) -> Any:
+        """An older state (JSON, unchecked) as this version's: version 1's values are
+        version 2's (2 only lets a state be in Exit's questions)."""
+        if version != 1:
+            raise ValueError(f"no migration from version {version}")
+        return values
+
     def state_values(self) -> dict[str, Any]:
-        if self.mode in ("keys:exit_file", "keys:exit_range") or self.exit_path is not None:
-            raise ValueError("a file name is being asked for (a state never names a file)")
+        if self.exit_path is not None:
+            raise ValueError("Exit has been given a file name (a state never names a file; "
+                             "it is saved once Exit's dialogue has ended)")
         menus_ = {m: getattr(self, m) for m in self._MENUS}
         menu = next((m for m, w in menus_.items() if w is self.menu), None)
         aim = None if self.aim is None else {
@@ -166,6 +184,10 @@ class Program:
             raise ValueError("the state waits to restore a session this run was not given")
         if v["mode"] not in MODES:  # (never a file name: see state_values)
             raise ValueError(f"mode {v['mode'][:40]!r} is not one of the program's")
+        if not v["text"].isprintable():  # (as typed: keys add printable characters only)
+            raise ValueError("the text typed holds a character no key types")
+        if v["mode"] == "keys:exit_range" and self.save_to is None:  # (a name was typed)
+            raise ValueError("the state asks which frames to save to a file it would name")
         if v["replay"] and not v["replay_at"] < len(v["replay"]):
             raise ValueError(f"replay place {v['replay_at']} of {len(v['replay'])}")
         n = len(session.timeline.time_frames)
@@ -191,7 +213,20 @@ class Program:
             self.aim, self.exit_path, self._status_key = aim, None, None
             for p in puts:
                 p()
+            if v["mode"][5:] in EXIT_QUESTIONS:
+                self.ask_again(v["mode"][5:], v["text"], v["help_colour"])
         return put
+
+    def ask_again(self, question: str, text: str, colour: str) -> None:
+        """One of Exit's questions asked again (a load): its text the program's own, then
+        what had been typed into it and the colour it was shown in (a warning after an
+        empty name or frames out of range)."""
+        if question == "exit_file":
+            self.ask_exit_file()
+        else:
+            self.ask_save_range()
+        self.text, self.help_colour = text, colour
+        self.help_text = f"{self.prompt}\n> {self.text}_"
 
     # ------------------------------------------------------------------ the frame loop
     def step(self) -> tuple[int, int]:
@@ -361,8 +396,7 @@ class Program:
                 if name == "n":
                     self.done = True
                 elif self.save_to is None:
-                    self.ask("exit_file", "Save to which file? (the session; the checkpoint is "
-                             "written beside it\nas NAME.cp)  Escape = stay in the program:")
+                    self.ask_exit_file()
                 else:
                     self.ask_save_range()
             elif name == "escape":
@@ -563,6 +597,10 @@ class Program:
             self.mode = "idle"
             self.exit_path = None
             self.say(f"Not saved: {exc.strerror}: {exc.filename}", WARN_COLOUR)
+
+    def ask_exit_file(self) -> None:
+        self.ask("exit_file", "Save to which file? (the session; the checkpoint is written "
+                 "beside it\nas NAME.cp)  Escape = stay in the program:")
 
     def ask_save_range(self) -> None:
         """§6.2.2: the animator saves "either the complete sequence or a subset of frames"."""
