@@ -11,16 +11,29 @@ A dialogue in progress is a generator: it is kept as which dialogue it is and th
 it has been given, and made again by starting it through the program's own code and giving
 it those answers (``REBUILT``; their steps before the last only ask; a state whose answers
 would end one is refused, and what ending it would do is an action a user could take
-anyway). Save pattern, Load pattern and Change rules name a file in one answer
+anyway). A dialogue waiting on a choice (Advance area, Alter display, Clear area, Set to
+value) has its pop-up menu open: a PopupMenu, whose pad, cluster and arcs are on the
+Rainbow. The loaded Rainbow state already holds them, drawn, placed and lit, so the menu is
+not opened again (that would name new ones and draw over them): the made-again dialogue's
+question gives the items, the state gives the menu's plain values (the lit item, its place,
+its scroll: ``DIALOGUE.menu``, each checked against where opening and tracking the menu can
+put it) and the menu is re-attached to the pad, cluster and two arcs the client named last.
+Those are derived from the client's ids, never read from the state: nothing is made on the
+Rainbow while a choice menu is open, and a save checks that this menu is still the last
+made. Save pattern, Load pattern and Change rules name a file in one answer
 (``FILE_ANSWER``): they are saved, and made again, only up to the question for it (a state
-never names a file a program reads or writes); given the name, they stay refused while they
-run, as do a dialogue's open choice menu (a device object) and input held during a long
-jump. What
-the command line gave (the rules file, the pattern, the script, the Log being written) is
-the fresh build's.
+never names a file a program reads or writes).
 
-Version 2 added ``dialogue``, version 3 the file dialogues to its names; ``migrate`` reads
-versions 1 and 2.
+What is not saved (``--save-state`` fails in one line, status 1; F2 and F4 say so and try
+again at the next snapshot), because the state would have to name a file or hold what
+runs: a file dialogue once given its file name (Save pattern asking for the reference
+point; Load pattern asking where a copy goes or, in its menu, the orientation; Change
+rules ends with its answer), and input read during a long jump, waiting to be handled
+(apps/ca/program/jump_bar.py). What the command line gave (the rules file, the pattern,
+the script, the Log being written) is the fresh build's.
+
+Version 2 added ``dialogue``, version 3 the file dialogues to its names, version 4 the open
+choice menu (``dialogue.menu``); ``migrate`` reads versions 1, 2 and 3.
 """
 
 from __future__ import annotations
