@@ -194,7 +194,8 @@ def test_a_ca_state_saved_asking_for_a_file_continues(monkeypatch, tmp_path: Pat
             str(tmp_path / "e.events")]
     state = tmp_path / "c.c88state"
     assert_continues(monkeypatch, argv, 0.3, state)
-    assert _dialogue_of(state) == {"name": item, "arg": 0, "answers": [], "corner": None}
+    assert _dialogue_of(state) == {"name": item, "arg": 0, "answers": [], "corner": None,
+                                   "menu": None}
 
 
 def test_a_ca_state_saved_in_save_pattern_before_its_name_continues(monkeypatch,
