@@ -140,6 +140,8 @@ def _answer(dialogue: dict) -> None:
     (lambda d: d["menu"].update(x=10**6), "menu x 1000000 is outside 0.."),
     (lambda d: d["menu"].update(y=-1), "menu y -1 is outside 0.."),
     (lambda d: d["menu"].update(scroll=-18), "menu scroll -18 is outside 0..0"),
+    (lambda d: d["menu"].update(open=False), "the dialogue 'Clear area''s choice menu is not "
+                                             "open"),
     (lambda d: d.update(menu=None),
      "the dialogue 'Clear area' would wait on a menu choice the state does not hold"),
     (_answer, "the dialogue 'Clear area' asks for no menu choice here"),

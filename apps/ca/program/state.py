@@ -214,6 +214,8 @@ def rebuild_dialogue(p: CAProgram, v: dict[str, Any]) -> None:
                          f"the dialogue {v['name']!r} asks for no menu choice here")
     if v["menu"] is not None:
         try:
+            if not v["menu"]["open"]:  # a dialogue's choice menu is open while it asks
+                raise ValueError(f"the dialogue {v['name']!r}'s choice menu is not open")
             p.choice = choice_menu_reattached(p.client, list(ask.items), v["menu"])
         except ValueError:
             dialogue.close()
