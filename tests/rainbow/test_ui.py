@@ -4,6 +4,7 @@ pop-up menu, a cross-shaped menu, message areas and the four-times-mapped pannin
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from camlab88.emulator.machine import RainbowMachine
 from camlab88.protocols.rainbow import SCREEN
@@ -71,6 +72,45 @@ def test_scrolling_menu_moves_pad_inside_smaller_cluster() -> None:
     assert not np.any(s.executor.last_frame)  # gone, nothing beneath
     # highlighting and scrolling never redrew a pixel: all done by LUT writes and arc moves
     assert np.array_equal(s.device.memory.words, words_before)
+
+
+def test_a_scrolled_menu_reattached_from_a_loaded_rainbow_goes_on_alike() -> None:
+    """A scrolling menu, open and scrolled, kept as the Rainbow's session state and the
+    menu's plain values: re-attached on a fresh Rainbow loaded from them (nothing sent), it
+    tracks, lights, scrolls and closes with the frames of the menu that never stopped."""
+    items = [f"Item {i}" for i in range(12)] + ["Do nothing"]
+    a = RainbowMachine()
+    menu = PopupMenu(a.client, items, visible_rows=5)
+    menu.open(300, 300)
+    for _ in range(40):
+        menu.track(300, menu.y + 2)
+    assert menu.scroll < 0 and menu.is_made_last()
+    b = RainbowMachine()
+    b.check_session_state(a.session_state())()
+    calls = b.client.calls
+    again = PopupMenu.reattached(b.client, items, menu.state_values(), visible_rows=5)
+    assert b.client.calls == calls  # nothing drawn or sent
+    assert (again.pad, again.cluster, again.inner, again.arc) == (
+        menu.pad, menu.cluster, menu.inner, menu.arc)
+    for y in [menu.y + 2] * 30 + [menu.y + 40] + [menu.y + 5 * ROW_H - 2] * 60:
+        assert again.track(300, y) == menu.track(300, y)
+        a.client.wait_frame()
+        b.client.wait_frame()
+        assert np.array_equal(a.shown(), b.shown())
+    assert again.close() == menu.close()
+    a.client.create_pad(8, 8, 1)
+    assert not menu.is_made_last()  # something was made after it
+
+
+def test_menu_values_outside_where_the_menu_can_be_are_refused() -> None:
+    c = RainbowMachine().client
+    items = [f"Item {i}" for i in range(12)]
+    menu = PopupMenu(c, items, visible_rows=5)
+    good = menu.state_values()
+    for name, value in (("scroll", 1), ("scroll", -8 * ROW_H - 1), ("x", -1), ("y", 10**6),
+                        ("highlighted", 12)):
+        with pytest.raises(ValueError, match=f"menu {'item' if name == 'highlighted' else name}"):
+            PopupMenu.reattached(c, items, dict(good, **{name: value}), visible_rows=5)
 
 
 def test_cross_menu_chooses_by_direction() -> None:

@@ -94,6 +94,15 @@ def _events(argv: list[str]) -> Callable[[Path], list[str]]:
     return make
 
 
+def _ca_menu(d: Path) -> list[str]:
+    """Saved while Alter display waits on its choice menu (the menu's values in the state)."""
+    from camlab88.apps.ca.program.demo import choose, leave_editing
+
+    (d / "e.events").write_text("frames 3\n" + leave_editing() + choose("Alter display") +
+                                "frames 3\nmove 300 160\nframes 8\n")
+    return ["ca", "program", "--headless", "--pattern", "glider", "--events", "e.events"]
+
+
 # program -> (what makes its argv in a directory, when its state is saved)
 PROGRAMS: dict[str, tuple[Callable[[Path], list[str]], str]] = {
     "sigma-run": (_sigma, "0.2"),
@@ -104,6 +113,7 @@ PROGRAMS: dict[str, tuple[Callable[[Path], list[str]], str]] = {
     "snooker-visualise": (_visualise, "0.3"),
     "snooker-replay": (_replay, "0.2"),
     "ca-program": (_events(["ca", "program", "--headless", "--pattern", "glider"]), "0.1"),
+    "ca-program-menu": (_ca_menu, "0.2"),
     "kas-view": (_kas_view, "0.3"),
     # the editors, whose state is their input log (emulator.harness.input_log)
     "kas-edit": (_kas_edit, "0.3"),

@@ -88,7 +88,7 @@ def test_a_ca_program_state_of_version_1_loads_without_a_dialogue(tmp_path: Path
     state = tmp_path / "c.c88state"
     assert main([*argv, "--save-state", str(state), "--at", "0.1"]) == 0
     head, parts = unpack(state.read_bytes(), "program")
-    assert head["state_version"] == 3
+    assert head["state_version"] == 4
     state.write_bytes(pack("program", dict(head, state_version=2), parts))
     assert main([*argv, "--load-state", str(state)]) == 0  # 2 -> 3: the same values
     assert head["values"]["program"].pop("dialogue") is None
@@ -98,3 +98,44 @@ def test_a_ca_program_state_of_version_1_loads_without_a_dialogue(tmp_path: Path
     state.write_bytes(pack("program", dict(head, state_version=1), parts))
     with pytest.raises(SystemExit, match="its program part is not a version-1 mapping"):
         main([*argv, "--load-state", str(state)])
+
+
+CA_V3 = DATA / "ca_program_v3.c88state"
+CA_ARGV = ["ca", "program", "--headless", "--pattern", "glider", "--events",
+           str(DATA / "ca_populate.events")]
+
+
+def test_the_stored_ca_program_state_is_of_version_3_inside_a_dialogue() -> None:
+    from camlab88.apps.ca.program.program import CAProgram
+
+    head, _ = unpack(CA_V3.read_bytes(), "program")
+    assert head["state_version"] == 3 and CAProgram.STATE_VERSION == 4
+    dialogue = head["values"]["program"]["dialogue"]
+    assert dialogue["name"] == "Randomly populate" and "menu" not in dialogue
+
+
+def test_a_ca_program_state_of_version_3_loads_and_continues(monkeypatch) -> None:
+    """Version 4 added the dialogue's open choice menu: a version-3 state (which could not
+    be saved with one open) reads as having none, and its dialogue goes on as the unbroken
+    run's."""
+    with frame_logs(monkeypatch) as runs:
+        assert main(CA_ARGV) == 0
+        assert main([*CA_ARGV, "--load-state", str(CA_V3)]) == 0
+    full, rest = runs
+    k = saved_place(CA_V3)[1]
+    full.pop("ticks"), rest.pop("ticks")
+    assert rest and sorted(rest) == [n for n in sorted(full) if n > k]
+    assert all(rest[n] == full[n] for n in rest)
+
+
+def test_the_ca_program_migration_refuses_a_menu_in_an_older_dialogue() -> None:
+    from camlab88.apps.ca.program.state import migrate
+
+    values = {"dialogue": {"name": "Clear area", "answers": []}}
+    assert migrate(3, values)["dialogue"]["menu"] is None
+    assert migrate(2, {"dialogue": None}) == {"dialogue": None}
+    for version in (2, 3):
+        with pytest.raises(ValueError, match=f"not a version-{version} mapping"):
+            migrate(version, {"dialogue": dict(values["dialogue"], menu=None)})
+        with pytest.raises(ValueError, match=f"not a version-{version} mapping"):
+            migrate(version, {"engine": {}})

@@ -9,6 +9,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 from camlab88.protocols.rainbow.client import SCREEN, SCREEN_H, SCREEN_W, RainbowClient
 from camlab88.protocols.rainbow.ui import CrossMenu, PopupMenu
 from camlab88.protocols.rainbow.ui.menu import ItemMenu, pastel
@@ -115,6 +117,17 @@ def edit_menu(client: RainbowClient) -> CrossMenu:
     return CrossMenu(client, EDIT_ITEMS, lut_page=14, priority=110)
 
 
-def choice_menu(client: RainbowClient, items: list[str], lut_page: int) -> PopupMenu:
+CHOICE_PAGE = 13  # the LUT page of a dialogue's choice menu
+
+
+def choice_menu(client: RainbowClient, items: list[str]) -> PopupMenu:
     rows = min(len(items), 24)
-    return PopupMenu(client, items, lut_page=lut_page, visible_rows=rows, priority=120)
+    return PopupMenu(client, items, lut_page=CHOICE_PAGE, visible_rows=rows, priority=120)
+
+
+def choice_menu_reattached(client: RainbowClient, items: list[str],
+                           values: dict[str, Any]) -> PopupMenu:
+    """``choice_menu(client, items)`` as a loaded Rainbow state already holds it (the last
+    menu made), with its plain state ``values`` put back (a saved dialogue's open menu)."""
+    rows = min(len(items), 24)
+    return PopupMenu.reattached(client, items, values, lut_page=CHOICE_PAGE, visible_rows=rows)

@@ -289,7 +289,7 @@ class CAProgram:
             return
         self.asking = ask
         if ask.kind == "menu":
-            self.choice = choice_menu(self.client, list(ask.items), lut_page=13)
+            self.choice = choice_menu(self.client, list(ask.items))
             self.choice.open(*self.mouse)
             self.say(ask.prompt + ": move to a choice, right button to select", PROMPT, True)
         elif ask.kind == "text":

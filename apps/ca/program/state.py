@@ -11,16 +11,29 @@ A dialogue in progress is a generator: it is kept as which dialogue it is and th
 it has been given, and made again by starting it through the program's own code and giving
 it those answers (``REBUILT``; their steps before the last only ask; a state whose answers
 would end one is refused, and what ending it would do is an action a user could take
-anyway). Save pattern, Load pattern and Change rules name a file in one answer
+anyway). A dialogue waiting on a choice (Advance area, Alter display, Clear area, Set to
+value) has its pop-up menu open: a PopupMenu, whose pad, cluster and arcs are on the
+Rainbow. The loaded Rainbow state already holds them, drawn, placed and lit, so the menu is
+not opened again (that would name new ones and draw over them): the made-again dialogue's
+question gives the items, the state gives the menu's plain values (the lit item, its place,
+its scroll: ``DIALOGUE.menu``, each checked against where opening and tracking the menu can
+put it) and the menu is re-attached to the pad, cluster and two arcs the client named last.
+Those are derived from the client's ids, never read from the state: nothing is made on the
+Rainbow while a choice menu is open, and a save checks that this menu is still the last
+made. Save pattern, Load pattern and Change rules name a file in one answer
 (``FILE_ANSWER``): they are saved, and made again, only up to the question for it (a state
-never names a file a program reads or writes); given the name, they stay refused while they
-run, as do a dialogue's open choice menu (a device object) and input held during a long
-jump. What
-the command line gave (the rules file, the pattern, the script, the Log being written) is
-the fresh build's.
+never names a file a program reads or writes).
 
-Version 2 added ``dialogue``, version 3 the file dialogues to its names; ``migrate`` reads
-versions 1 and 2.
+What is not saved (``--save-state`` fails in one line, status 1; F2 and F4 say so and try
+again at the next snapshot), because the state would have to name a file or hold what
+runs: a file dialogue once given its file name (Save pattern asking for the reference
+point; Load pattern asking where a copy goes or, in its menu, the orientation; Change
+rules ends with its answer), and input read during a long jump, waiting to be handled
+(apps/ca/program/jump_bar.py). What the command line gave (the rules file, the pattern,
+the script, the Log being written) is the fresh build's.
+
+Version 2 added ``dialogue``, version 3 the file dialogues to its names, version 4 the open
+choice menu (``dialogue.menu``); ``migrate`` reads versions 1, 2 and 3.
 """
 
 from __future__ import annotations
@@ -31,6 +44,7 @@ from typing import TYPE_CHECKING, Any
 from camlab88.apps.ca import algorithms, log
 from camlab88.apps.ca.engine import Engine, Rect
 from camlab88.apps.ca.program import commands, stepping
+from camlab88.apps.ca.program.menus import choice_menu_reattached
 from camlab88.apps.ca.rules import parse_rules
 from camlab88.base.plainstate import (
     Blob,
@@ -49,7 +63,7 @@ from camlab88.protocols.rainbow.ui.menu import CrossMenu
 if TYPE_CHECKING:
     from camlab88.apps.ca.program.program import CAProgram
 
-VERSION = 3
+VERSION = 4
 _PAIR = Tuple((Int(), Int()))
 ENGINE = Record(checkpoint=Blob(256 << 20), rules_source=Str(4096),
                 algorithm=Choice(algorithms.CHOICES), hashlife_memory=Int(1))
@@ -77,8 +91,10 @@ FILE_ANSWER: dict[str, int] = {"Change rules": 0, "Load pattern": 0, "Save patte
 # an answer: none (cancelled), a text or menu item, a cell, a rectangle
 ANSWER = Record(kind=Choice(("none", "text", "point", "rect")), text=Str(4096),
                 ints=ListOf(Int(), 4))
+# menu: the open choice menu's plain state (which item is lit, where it is, its scroll)
 DIALOGUE = Record(name=Choice(tuple(REBUILT)), arg=Int(0, 1 << 62),
-                  answers=ListOf(ANSWER, 64), corner=Opt(_PAIR))
+                  answers=ListOf(ANSWER, 64), corner=Opt(_PAIR),
+                  menu=Opt(PopupMenu.STATE_SCHEMA))
 SCHEMA = Record(
     dialogue=Opt(DIALOGUE),
     engine=ENGINE, pending=Opt(ENGINE), pending_checkpoints=ListOf(ENGINE, 4096),
@@ -124,14 +140,19 @@ def engine_from(values: dict[str, Any]) -> Engine:
 def migrate(version: int, values: Any) -> Any:
     """An older state (JSON, unchecked) as this version's. Version 1 as 2: no dialogue was
     in progress (a version-1 state could not be saved in one). Version 2 as 3: the same
-    values (3 only adds the file dialogues, up to their file's question, to the names)."""
-    if version == 2:
-        return values
-    if version != 1:
+    values (3 only adds the file dialogues, up to their file's question, to the names).
+    Version 3 as 4: a dialogue in progress has no open choice menu (a version-3 state could
+    not be saved with one)."""
+    if version not in (1, 2, 3):
         raise ValueError(f"no migration from version {version}")
-    if not isinstance(values, dict) or "dialogue" in values:
-        raise ValueError("its program part is not a version-1 mapping")
-    return dict(values, dialogue=None)
+    if not isinstance(values, dict) or ("dialogue" in values) != (version > 1):
+        raise ValueError(f"its program part is not a version-{version} mapping")
+    dialogue = values.get("dialogue")
+    if isinstance(dialogue, dict):
+        if "menu" in dialogue:
+            raise ValueError(f"its dialogue is not a version-{version} mapping")
+        dialogue = dict(dialogue, menu=None)
+    return dict(values, dialogue=dialogue)
 
 
 def _answer_values(a: Any) -> dict[str, Any]:
@@ -158,19 +179,24 @@ def dialogue_values(p: CAProgram) -> dict[str, Any] | None:
     if p.dialogue is None and p.asking is None and p.choice is None:
         return None
     name, arg = p.dialogue_made or ("", 0)
-    if p.choice is not None or name not in REBUILT:
+    if name not in REBUILT:
         raise ValueError("a dialogue is in progress (it is saved once it has ended)")
     if len(p.answers) > FILE_ANSWER.get(name, len(p.answers)):
         raise ValueError(f"the dialogue {name!r} has been given a file name (it is saved "
                          "once it has ended)")
+    if p.choice is not None and not p.choice.is_made_last():
+        raise ValueError(f"the dialogue {name!r}'s choice menu is not the last thing made "
+                         "on the Rainbow (it is saved once it has ended)")
     return {"name": name, "arg": arg, "answers": [_answer_values(a) for a in p.answers],
-            "corner": p.corner}
+            "corner": p.corner,
+            "menu": None if p.choice is None else p.choice.state_values()}
 
 
 def rebuild_dialogue(p: CAProgram, v: dict[str, Any]) -> None:
     """Start the saved dialogue through the program's own code and give it its answers
-    (its steps before the last only ask); ValueError if they end it or it asks for a menu
-    choice (a saved dialogue never waits on one)."""
+    (its steps before the last only ask); a question it asks as a choice menu takes the
+    menu the loaded Rainbow holds, with the state's plain menu values. ValueError if the
+    answers end it, or a menu is asked for and the state holds none (or the reverse)."""
     answers = [_answer(a) for a in v["answers"]]
     if len(answers) > FILE_ANSWER.get(v["name"], len(answers)):  # before any step runs
         raise ValueError(f"the dialogue {v['name']!r} would be given a file name by the state")
@@ -181,9 +207,19 @@ def rebuild_dialogue(p: CAProgram, v: dict[str, Any]) -> None:
             ask = dialogue.send(a)
     except StopIteration:
         raise ValueError(f"the answers given end the dialogue {v['name']!r}") from None
-    if ask is None or ask.kind == "menu":
+    if ask is None or (ask.kind == "menu") != (v["menu"] is not None):
         dialogue.close()
-        raise ValueError(f"the dialogue {v['name']!r} would wait on a menu choice")
+        raise ValueError(f"the dialogue {v['name']!r} would wait on a menu choice the "
+                         "state does not hold" if v["menu"] is None else
+                         f"the dialogue {v['name']!r} asks for no menu choice here")
+    if v["menu"] is not None:
+        try:
+            if not v["menu"]["open"]:  # a dialogue's choice menu is open while it asks
+                raise ValueError(f"the dialogue {v['name']!r}'s choice menu is not open")
+            p.choice = choice_menu_reattached(p.client, list(ask.items), v["menu"])
+        except ValueError:
+            dialogue.close()
+            raise
     p.dialogue, p.asking, p.corner = dialogue, ask, v["corner"]
     p.dialogue_made, p.answers = (v["name"], v["arg"]), answers
 
@@ -283,7 +319,7 @@ def check_state_values(p: CAProgram, values: dict[str, Any]) -> Callable[[], Non
         p.said = list(pv["said"])
         left = pv["script_left"]
         p.script.queue = p.script.queue[len(p.script.queue) - left:] if left else []
-        p.dialogue = p.asking = p.corner = None
+        p.dialogue = p.asking = p.corner = p.choice = None
         p.dialogue_made, p.answers = None, []
         for part in puts:
             part()

@@ -90,18 +90,7 @@ class PopupMenu(ItemMenu):
                  lut_page: int = 15, plane: int = 0, width: int | None = None,
                  visible_rows: int | None = None, highlights: list[str] | None = None,
                  priority: int = 100) -> None:
-        if not 1 <= len(items) <= 30:
-            raise ValueError("a menu has 1..30 items (5-bit pad: 2 values + one per item)")
-        self.client = client
-        self.items = items
-        self.colour = colour
-        self.highlights = highlights or [pastel(i, len(items)) for i in range(len(items))]
-        self.base = lut_page * 256
-        self.plane = plane
-        self.width = width or max(len(s) for s in items) * 6 + 16
-        self.height = len(items) * ROW_H
-        rows = min(visible_rows or len(items), len(items))
-        self.window_h = rows * ROW_H
+        self._lay_out(client, items, colour, lut_page, plane, width, visible_rows, highlights)
         self.pad = client.create_pad(self.width, self.height, 5, plane, lut_page)
         self.cluster = client.create_cluster(self.width, self.window_h)
         self.inner = client.map(self.cluster, self.pad, 0, 0)
@@ -114,11 +103,68 @@ class PopupMenu(ItemMenu):
             client.rect(self.pad, 2, i * ROW_H + 2, self.width - 4, ROW_H - 4, v)
             client.text(self.pad, 8, i * ROW_H + 4, item, INK)
             client.set_lut(self.base + (v << plane), [colour])
-        self.first = items.index("Do nothing") if "Do nothing" in items else 0
         self.highlighted: int | None = None
         self.scroll = 0  # pad y inside the cluster (<= 0)
         self.x = self.y = 0
         self.open_ = False
+
+    def _lay_out(self, client: RainbowClient, items: list[str], colour: str, lut_page: int,
+                 plane: int, width: int | None, visible_rows: int | None,
+                 highlights: list[str] | None) -> None:
+        """What the menu's items and options make of it, before anything is drawn."""
+        if not 1 <= len(items) <= 30:
+            raise ValueError("a menu has 1..30 items (5-bit pad: 2 values + one per item)")
+        self.client = client
+        self.items = items
+        self.colour = colour
+        self.highlights = highlights or [pastel(i, len(items)) for i in range(len(items))]
+        self.base = lut_page * 256
+        self.plane = plane
+        self.width = width or max(len(s) for s in items) * 6 + 16
+        self.height = len(items) * ROW_H
+        rows = min(visible_rows or len(items), len(items))
+        self.window_h = rows * ROW_H
+        self.first = items.index("Do nothing") if "Do nothing" in items else 0
+
+    # A menu re-attached to what a loaded Rainbow state already holds. The pad, the
+    # cluster and the two arcs are the last two nodes and arcs the client named: nothing
+    # names a node while a menu is open in the programs that use this (the CA program's
+    # choice menus), so they are derived, never read from a state.
+    @staticmethod
+    def _last_made(client: RainbowClient) -> tuple[int, int, int, int]:
+        node, arc, _ = client.ids()
+        return node - 2, node - 1, arc - 2, arc - 1
+
+    def is_made_last(self) -> bool:
+        """Whether this menu's pad, cluster and arcs are the last the client named (the
+        menu ``reattached`` would find)."""
+        return (self.pad, self.cluster, self.inner, self.arc) == self._last_made(self.client)
+
+    @classmethod
+    def reattached(cls, client: RainbowClient, items: list[str], values: dict[str, Any],
+                   colour: str = "#f8c890", lut_page: int = 15, plane: int = 0,
+                   width: int | None = None, visible_rows: int | None = None,
+                   highlights: list[str] | None = None) -> PopupMenu:
+        """The menu made last by ``client`` as a loaded Rainbow state holds it (drawn,
+        placed and lit there), with its plain state ``values`` (state_values()) put back;
+        nothing is sent to the device. ValueError if the values do not fit the menu."""
+        menu = cls.__new__(cls)
+        menu._lay_out(client, items, colour, lut_page, plane, width, visible_rows, highlights)
+        menu.pad, menu.cluster, menu.inner, menu.arc = cls._last_made(client)
+        if min(menu.pad, menu.inner) < 1:
+            raise ValueError("the Rainbow holds no menu made last")
+        menu.highlighted, menu.scroll, menu.x, menu.y, menu.open_ = None, 0, 0, 0, False
+        menu.check_state_values(values)()
+        return menu
+
+    def check_state_values(self, values: dict[str, Any]) -> Callable[[], None]:
+        """ItemMenu's, with the place and scroll kept to where open and track put them."""
+        for name, lo, hi in (("x", 0, SCREEN_W - self.width),
+                             ("y", 0, SCREEN_H - self.window_h),
+                             ("scroll", self.window_h - self.height, 0)):
+            if not lo <= values[name] <= max(lo, hi):
+                raise ValueError(f"menu {name} {values[name]} is outside {lo}..{max(lo, hi)}")
+        return super().check_state_values(values)
 
     def _set_scroll(self, s: int) -> None:
         s = max(min(s, 0), self.window_h - self.height)
