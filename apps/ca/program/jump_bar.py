@@ -5,8 +5,10 @@ the engine's progress callback (after each HashLife jump, or each direct generat
 Once the jump has taken SHOW_AFTER seconds it shows a bar on the prompt line every EVERY
 seconds and lets the device show a frame; Escape in the input queue stops the jump (the
 state already shown stays; nothing computed after it is kept), other input is held for
-the frame loop. Wall-clock time decides only when the bar is drawn and input read, never
-what the engine computes.
+the frame loop: at most HOLD_LIMIT events, the oldest dropped first, as the Rainbow's own
+input queue drops what a program does not read (a state holds them: apps/ca/program/
+state.py). Wall-clock time decides only when the bar is drawn and input read, never what
+the engine computes.
 """
 
 from __future__ import annotations
@@ -24,6 +26,9 @@ SHOW_AFTER = 1.0  # seconds before the bar first appears
 EVERY = 0.25  # seconds between redraws
 WIDTH = 40  # characters of bar
 POLL_LIMIT = 256
+# input held for the frame loop during one jump: as many as the Rainbow's input queue keeps
+# (emulator/rainbow/inputs.py QUEUE_LIMIT), so a long jump holds no more than the device would
+HOLD_LIMIT = 4096
 COLOUR = "#fff0a0"  # the prompt line's colour for questions (program.PROMPT)
 
 
@@ -63,3 +68,4 @@ class JumpBar:
             if isinstance(e, KeyEvent) and e.pressed and e.key == "escape":
                 raise JumpStopped
             self.p.held_events.append(e)
+        del self.p.held_events[:-HOLD_LIMIT]

@@ -24,16 +24,25 @@ made. Save pattern, Load pattern and Change rules name a file in one answer
 (``FILE_ANSWER``): they are saved, and made again, only up to the question for it (a state
 never names a file a program reads or writes).
 
+Input read during a long jump and held for the next frame (apps/ca/program/jump_bar.py:
+mouse, key and tablet events of the Rainbow) is kept in ``held_events`` as the events'
+own binary form (protocols.rainbow.events.encode_event, concatenated), read back by
+``decode_events``, the checking decoder the Rainbow's replies and recordings go through,
+and put back in ``held_events`` for the next frame to handle first. They are input a user
+could have given (the loaded Rainbow's own input queue holds the same kind); nothing else
+about them chooses anything. At most ``jump_bar.HOLD_LIMIT`` events (a jump holds no more)
+in at most ``HELD_BYTES`` bytes.
+
 What is not saved (``--save-state`` fails in one line, status 1; F2 and F4 say so and try
 again at the next snapshot), because the state would have to name a file or hold what
 runs: a file dialogue once given its file name (Save pattern asking for the reference
 point; Load pattern asking where a copy goes or, in its menu, the orientation; Change
-rules ends with its answer), and input read during a long jump, waiting to be handled
-(apps/ca/program/jump_bar.py). What the command line gave (the rules file, the pattern,
+rules ends with its answer). What the command line gave (the rules file, the pattern,
 the script, the Log being written) is the fresh build's.
 
 Version 2 added ``dialogue``, version 3 the file dialogues to its names, version 4 the open
-choice menu (``dialogue.menu``); ``migrate`` reads versions 1, 2 and 3.
+choice menu (``dialogue.menu``), version 5 the input held during a jump (``held_events``);
+``migrate`` reads versions 1 to 4.
 """
 
 from __future__ import annotations
@@ -44,6 +53,7 @@ from typing import TYPE_CHECKING, Any
 from camlab88.apps.ca import algorithms, log
 from camlab88.apps.ca.engine import Engine, Rect
 from camlab88.apps.ca.program import commands, stepping
+from camlab88.apps.ca.program.jump_bar import HOLD_LIMIT
 from camlab88.apps.ca.program.menus import choice_menu_reattached
 from camlab88.apps.ca.rules import parse_rules
 from camlab88.base.plainstate import (
@@ -57,13 +67,18 @@ from camlab88.base.plainstate import (
     Str,
     Tuple,
 )
+from camlab88.protocols.rainbow.events import decode_events, encode_event
 from camlab88.protocols.rainbow.ui import MessageArea, PopupMenu
 from camlab88.protocols.rainbow.ui.menu import CrossMenu
 
 if TYPE_CHECKING:
     from camlab88.apps.ca.program.program import CAProgram
 
-VERSION = 4
+VERSION = 5
+# the held input's bytes: HOLD_LIMIT events of up to 64 bytes each, 256 KiB (a mouse event
+# is 20, a tablet's 21, a key's 14 and its name and text: a window's key, at most 32 and 4
+# characters as the input log keeps them, fits); a save holding more is refused in one line
+HELD_BYTES = HOLD_LIMIT * 64
 _PAIR = Tuple((Int(), Int()))
 ENGINE = Record(checkpoint=Blob(256 << 20), rules_source=Str(4096),
                 algorithm=Choice(algorithms.CHOICES), hashlife_memory=Int(1))
@@ -96,7 +111,7 @@ DIALOGUE = Record(name=Choice(tuple(REBUILT)), arg=Int(0, 1 << 62),
                   answers=ListOf(ANSWER, 64), corner=Opt(_PAIR),
                   menu=Opt(PopupMenu.STATE_SCHEMA))
 SCHEMA = Record(
-    dialogue=Opt(DIALOGUE),
+    dialogue=Opt(DIALOGUE), held_events=Opt(Blob(HELD_BYTES)),
     engine=ENGINE, pending=Opt(ENGINE), pending_checkpoints=ListOf(ENGINE, 4096),
     session=Record(edit_mode=Str(64), current=Int(0, 255), view=Record(
         x=Int(), y=Int(), zoom=Str(16), cells_per_pixel=Int(1)),
@@ -142,17 +157,41 @@ def migrate(version: int, values: Any) -> Any:
     in progress (a version-1 state could not be saved in one). Version 2 as 3: the same
     values (3 only adds the file dialogues, up to their file's question, to the names).
     Version 3 as 4: a dialogue in progress has no open choice menu (a version-3 state could
-    not be saved with one)."""
-    if version not in (1, 2, 3):
+    not be saved with one). Version 4 as 5: no input is held (a version-4 state could not
+    be saved with any)."""
+    if version not in (1, 2, 3, 4):
         raise ValueError(f"no migration from version {version}")
-    if not isinstance(values, dict) or ("dialogue" in values) != (version > 1):
+    if not isinstance(values, dict) or ("dialogue" in values) != (version > 1) or \
+            "held_events" in values:
         raise ValueError(f"its program part is not a version-{version} mapping")
     dialogue = values.get("dialogue")
-    if isinstance(dialogue, dict):
+    if version < 4 and isinstance(dialogue, dict):
         if "menu" in dialogue:
             raise ValueError(f"its dialogue is not a version-{version} mapping")
         dialogue = dict(dialogue, menu=None)
-    return dict(values, dialogue=dialogue)
+    return dict(values, dialogue=dialogue, held_events=None)
+
+
+def held_values(p: CAProgram) -> bytes | None:
+    """The input held during a jump as its events' binary form (None: none is held)."""
+    if not p.held_events:
+        return None
+    data = b"".join(encode_event(e) for e in p.held_events)
+    if len(p.held_events) > HOLD_LIMIT or len(data) > HELD_BYTES:
+        raise ValueError(f"the input held during a jump ({len(p.held_events)} events, "
+                         f"{len(data)} bytes) is more than a state holds ({HOLD_LIMIT} "
+                         f"events, {HELD_BYTES} bytes)")
+    return data
+
+
+def held_from(data: bytes | None) -> list[Any]:
+    """The held events a state's bytes describe, through the events' checking decoder
+    (EventFormatError, a ValueError naming the byte, if they are not events)."""
+    events = decode_events(data or b"", "state.program.held_events")
+    if len(events) > HOLD_LIMIT:
+        raise ValueError(f"state.program.held_events: {len(events)} events; a jump holds at "
+                         f"most {HOLD_LIMIT}")
+    return events
 
 
 def _answer_values(a: Any) -> dict[str, Any]:
@@ -226,8 +265,6 @@ def rebuild_dialogue(p: CAProgram, v: dict[str, Any]) -> None:
 
 def state_values(p: CAProgram) -> dict[str, Any]:
     dialogue = dialogue_values(p)
-    if p.held_events:
-        raise ValueError("input read during a jump is waiting")
     s, v, d = p.session, p.view, p.display
     engines = {id(s.engine): "shown", id(p.pending): "pending"}
     buffers = []
@@ -238,7 +275,7 @@ def state_values(p: CAProgram) -> dict[str, Any]:
         buffers.append({"engine": ref or "none", "stale": buf.stale, "vx": buf.vx,
                         "vy": buf.vy, "drawn_pixels": buf.drawn_pixels})
     return {
-        "dialogue": dialogue,
+        "dialogue": dialogue, "held_events": held_values(p),
         "engine": engine_values(s.engine),
         "pending": None if p.pending is None else engine_values(p.pending),
         "pending_checkpoints": [engine_values(e) for e in p.pending_checkpoints],
@@ -274,6 +311,7 @@ def check_state_values(p: CAProgram, values: dict[str, Any]) -> Callable[[], Non
     engine = engine_from(values["engine"])
     pending = None if values["pending"] is None else engine_from(values["pending"])
     checkpoints = [engine_from(e) for e in values["pending_checkpoints"]]
+    held = held_from(values["held_events"])
     sv, pv, dv = values["session"], values["program"], values["display"]
     if sv["edit_mode"] not in _edit_modes():
         raise ValueError(f"edit mode {sv['edit_mode'][:40]!r} is not one of the program's")
@@ -321,6 +359,7 @@ def check_state_values(p: CAProgram, values: dict[str, Any]) -> Callable[[], Non
         p.script.queue = p.script.queue[len(p.script.queue) - left:] if left else []
         p.dialogue = p.asking = p.corner = p.choice = None
         p.dialogue_made, p.answers = None, []
+        p.held_events = held  # handled first by the next frame, as after the jump
         for part in puts:
             part()
         if dialogue is not None:  # (its answers checked above; a refusal here ends a load)
