@@ -88,7 +88,8 @@ def test_a_ca_program_state_of_version_1_loads_without_a_dialogue(tmp_path: Path
     state = tmp_path / "c.c88state"
     assert main([*argv, "--save-state", str(state), "--at", "0.1"]) == 0
     head, parts = unpack(state.read_bytes(), "program")
-    assert head["state_version"] == 4
+    assert head["state_version"] == 5
+    assert head["values"]["program"].pop("held_events") is None  # (version 5 added it)
     state.write_bytes(pack("program", dict(head, state_version=2), parts))
     assert main([*argv, "--load-state", str(state)]) == 0  # 2 -> 3: the same values
     assert head["values"]["program"].pop("dialogue") is None
@@ -109,7 +110,7 @@ def test_the_stored_ca_program_state_is_of_version_3_inside_a_dialogue() -> None
     from camlab88.apps.ca.program.program import CAProgram
 
     head, _ = unpack(CA_V3.read_bytes(), "program")
-    assert head["state_version"] == 3 and CAProgram.STATE_VERSION == 4
+    assert head["state_version"] == 3 and CAProgram.STATE_VERSION == 5
     dialogue = head["values"]["program"]["dialogue"]
     assert dialogue["name"] == "Randomly populate" and "menu" not in dialogue
 
@@ -133,9 +134,52 @@ def test_the_ca_program_migration_refuses_a_menu_in_an_older_dialogue() -> None:
 
     values = {"dialogue": {"name": "Clear area", "answers": []}}
     assert migrate(3, values)["dialogue"]["menu"] is None
-    assert migrate(2, {"dialogue": None}) == {"dialogue": None}
+    assert migrate(2, {"dialogue": None}) == {"dialogue": None, "held_events": None}
     for version in (2, 3):
         with pytest.raises(ValueError, match=f"not a version-{version} mapping"):
             migrate(version, {"dialogue": dict(values["dialogue"], menu=None)})
         with pytest.raises(ValueError, match=f"not a version-{version} mapping"):
             migrate(version, {"engine": {}})
+
+
+CA_V4 = DATA / "ca_program_v4.c88state"
+CA_MENU_ARGV = ["ca", "program", "--headless", "--pattern", "glider", "--events",
+                str(DATA / "ca_menu.events")]
+
+
+def test_the_stored_ca_program_state_is_of_version_4_with_a_menu_open() -> None:
+    from camlab88.apps.ca.program.program import CAProgram
+
+    head, _ = unpack(CA_V4.read_bytes(), "program")
+    assert head["state_version"] == 4 and CAProgram.STATE_VERSION == 5
+    values = head["values"]["program"]
+    assert "held_events" not in values
+    assert values["dialogue"]["name"] == "Alter display" and values["dialogue"]["menu"]["open"]
+
+
+def test_a_ca_program_state_of_version_4_loads_and_continues(monkeypatch) -> None:
+    """Version 5 added the input held during a jump: a version-4 state (which could not be
+    saved with any held) reads as holding none; its open choice menu is picked from as in
+    the unbroken run."""
+    with frame_logs(monkeypatch) as runs:
+        assert main(CA_MENU_ARGV) == 0
+        assert main([*CA_MENU_ARGV, "--load-state", str(CA_V4)]) == 0
+    full, rest = runs
+    k = saved_place(CA_V4)[1]
+    full.pop("ticks"), rest.pop("ticks")
+    assert rest and sorted(rest) == [n for n in sorted(full) if n > k]
+    assert all(rest[n] == full[n] for n in rest)
+
+
+def test_the_ca_program_migration_from_4_holds_no_input_and_refuses_a_held_field() -> None:
+    from camlab88.apps.ca.program.state import migrate
+
+    menu = {"highlighted": 1, "open": True, "scroll": 0, "x": 241, "y": 129}
+    values = {"dialogue": {"name": "Alter display", "answers": [], "menu": menu}}
+    moved = migrate(4, values)
+    assert moved["held_events"] is None and moved["dialogue"]["menu"] == menu
+    for version in (1, 2, 3, 4):
+        with pytest.raises(ValueError, match=f"not a version-{version} mapping"):
+            migrate(version, {"dialogue": None, "held_events": None})
+    with pytest.raises(ValueError, match="no migration from version 5"):
+        migrate(5, values)
