@@ -161,3 +161,26 @@ def test_a_jump_holds_at_most_hold_limit_events_the_oldest_dropped() -> None:
     JumpBar(d.program, 0, 10, time.monotonic)._read_input()
     held = d.program.held_events
     assert len(held) == HOLD_LIMIT and held[0].t_ms == 1 and isinstance(held[-1], KeyEvent)
+
+
+@pytest.mark.parametrize("pointing", ["checkpoint", "huge", "missing"])
+def test_a_held_events_field_naming_another_part_is_refused(jump_clock, tmp_path: Path,
+                                                            pointing: str) -> None:
+    """The field names the automaton's checkpoint part (text, not events), a part past
+    HELD_BYTES, or no part: each refused in one line naming the state and the field."""
+    state = tmp_path / "c.c88state"
+    argv = _argv(tmp_path)
+    assert main([*argv, "--save-state", str(state), "--at", "0.2"]) == 0
+    head, parts, values = _program_values(state)
+    if pointing == "checkpoint":
+        values["held_events"] = values["engine"]["checkpoint"]
+    elif pointing == "huge":
+        parts[values["held_events"]] = b"\x01" * (HELD_BYTES + 20)
+    else:
+        values["held_events"] = "b999"
+    bad = tmp_path / "bad.c88state"
+    bad.write_bytes(pack("program", head, parts))
+    with pytest.raises(SystemExit) as stop:
+        main([*argv, "--load-state", str(bad)])
+    text = str(stop.value)
+    assert str(bad) in text and "state.program.held_events" in text and "\n" not in text
