@@ -150,6 +150,22 @@ def test_more_held_input_than_a_state_holds_is_refused(tmp_path: Path) -> None:
     assert HELD_BYTES == 64 * HOLD_LIMIT
 
 
+def test_a_save_holding_more_bytes_than_the_bound_is_refused_in_one_line() -> None:
+    """Key events with names longer than any window's (held from a script's ``key``): the
+    save is refused, naming the bound, rather than writing a state no load would take."""
+    from camlab88.apps.ca.program.jump_bar import HOLD_LIMIT
+    from camlab88.apps.ca.program.program import Options
+    from camlab88.apps.ca.program.state import state_values
+    from tests.ca_program.driver import Driver
+
+    d = Driver(Options(pattern="glider"))
+    d.program.held_events = [KeyEvent(0, "k" * 100, "")] * HOLD_LIMIT
+    with pytest.raises(ValueError, match=f"more than a state holds .*{HELD_BYTES} bytes"):
+        state_values(d.program)
+    d.program.held_events = [KeyEvent(0, "k" * 32, "\N{GRINNING FACE}" * 4)] * HOLD_LIMIT
+    assert len(state_values(d.program)["held_events"]) <= HELD_BYTES  # a window's fit
+
+
 def test_a_jump_holds_at_most_hold_limit_events_the_oldest_dropped() -> None:
     from camlab88.apps.ca.program.jump_bar import HOLD_LIMIT, JumpBar
     from camlab88.apps.ca.program.program import Options
