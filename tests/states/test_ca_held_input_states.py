@@ -200,3 +200,21 @@ def test_a_held_events_field_naming_another_part_is_refused(jump_clock, tmp_path
         main([*argv, "--load-state", str(bad)])
     text = str(stop.value)
     assert str(bad) in text and "state.program.held_events" in text and "\n" not in text
+
+
+def test_a_recording_begun_from_such_a_state_replays_with_check(jump_clock, tmp_path: Path,
+                                                                monkeypatch) -> None:
+    """Loaded with --record: the recording carries the state (its held input with it) and
+    ``replay --check`` agrees with every screen hash, the held input handled first."""
+    from camlab88.protocols.session.format import read
+    from fuzz.states import run_cli
+
+    monkeypatch.chdir(tmp_path)
+    argv = _argv(tmp_path)
+    code, err = run_cli([*argv, "--save-state", "s.c88state", "--at", "0.2"], 60.0)
+    assert code == 0, err
+    code, err = run_cli([*argv, "--load-state", "s.c88state", "--record", "r.session"], 60.0)
+    assert code == 0, err
+    code, err = run_cli(["replay", "r.session", "--check"], 60.0)
+    assert code == 0, err
+    assert read(tmp_path / "r.session").hashes[0].frame == 6  # the state's frame
