@@ -80,3 +80,19 @@ def assert_continues(monkeypatch: pytest.MonkeyPatch, argv: list[str], at: float
     for n in rest:
         assert rest[n] == full[n], f"frame {n} differs after loading the state of frame {k}"
     return full, rest
+
+
+def assert_file_dialogue_refused(events: Path, dialogue: str, capsys) -> None:
+    """``ca program`` run on ``events`` with --save-state beside them fails in one line
+    naming the state file (status 1): ``dialogue`` has been given a file name, which a
+    state never holds."""
+    from camlab88.cli import main
+
+    state = events.parent / "c.c88state"
+    code = main(["ca", "program", "--headless", "--pattern", "glider", "--events",
+                 str(events), "--save-state", str(state)])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert code == 1 and not state.exists()
+    assert err[-1].endswith(f"the dialogue {dialogue!r} has been given a file name (it is "
+                            "saved once it has ended)"), err
+    assert str(state) in err[-1]

@@ -21,7 +21,7 @@ from camlab88.cli import main
 from camlab88.emulator.machine.state_file import pack, unpack
 from camlab88.protocols.session.format import read
 from fuzz.states import run_cli
-from tests.states.support import ROOT, assert_continues
+from tests.states.support import ROOT, assert_continues, assert_file_dialogue_refused
 
 RECT = ("frames 2\nmove 350 300\nclick right 350 300\nframes 2\nmove 450 380\n"
         "click right 450 380\n")
@@ -163,11 +163,4 @@ def test_a_file_dialogue_s_menu_after_its_file_name_is_not_saved(tmp_path: Path,
     (tmp_path / "e.events").write_text(
         "frames 3\n" + leave_editing() + choose("Load pattern") +
         "frames 2\ntype glider\nkey return\nframes 2\nclick right 420 320\nframes 30\n")
-    state = tmp_path / "c.c88state"
-    code = main(["ca", "program", "--headless", "--pattern", "glider", "--events",
-                 str(tmp_path / "e.events"), "--save-state", str(state)])
-    err = capsys.readouterr().err.strip().splitlines()
-    assert code == 1 and not state.exists()
-    assert err[-1].endswith("the dialogue 'Load pattern' has been given a file name (it is "
-                            "saved once it has ended)"), err
-    assert str(state) in err[-1]
+    assert_file_dialogue_refused(tmp_path / "e.events", "Load pattern", capsys)

@@ -12,7 +12,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from camlab88.cli import main
-from tests.states.support import assert_continues, inputs_of
+from tests.states.support import assert_continues, assert_file_dialogue_refused, inputs_of
 
 STATEFUL = settings(max_examples=3, deadline=None, derandomize=True,
                     suppress_health_check=[HealthCheck.function_scoped_fixture])
@@ -261,14 +261,7 @@ def test_a_ca_state_is_not_saved_once_a_file_dialogue_has_its_name(tmp_path: Pat
             "click right 450 380\n")
     (tmp_path / "e.events").write_text(_file_dialogue_events(
         "Save pattern", rect, str(tmp_path / "p"), "frames 30\n"))
-    state = tmp_path / "c.c88state"
-    code = main(["ca", "program", "--headless", "--pattern", "glider", "--events",
-                 str(tmp_path / "e.events"), "--save-state", str(state)])
-    err = capsys.readouterr().err.strip().splitlines()
-    assert code == 1 and not state.exists()
-    assert err[-1].endswith("the dialogue 'Save pattern' has been given a file name (it is "
-                            "saved once it has ended)"), err
-    assert str(state) in err[-1]
+    assert_file_dialogue_refused(tmp_path / "e.events", "Save pattern", capsys)
 
 
 def test_a_save_state_that_cannot_be_written_ends_the_run_with_status_1(

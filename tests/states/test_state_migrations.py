@@ -20,6 +20,19 @@ V1 = DATA / "kas_view_v1.c88state"
 ARGV = ["kas", "view", str(DATA / "seq.kas"), "--headless", "--every"]
 
 
+def _continues_as_unbroken(monkeypatch, argv: list[str], state: Path) -> None:
+    """Loaded with ``argv``, the stored ``state`` shows every frame after its place as the
+    run of ``argv`` that never saved."""
+    with frame_logs(monkeypatch) as runs:
+        assert main(argv) == 0
+        assert main([*argv, "--load-state", str(state)]) == 0
+    full, rest = runs
+    k = saved_place(state)[1]
+    full.pop("ticks"), rest.pop("ticks")
+    assert rest and sorted(rest) == [n for n in sorted(full) if n > k]
+    assert all(rest[n] == full[n] for n in rest)
+
+
 def test_the_stored_state_is_of_version_1_and_this_kas_view_reads_version_2() -> None:
     head, _ = unpack(V1.read_bytes(), "program")
     assert head["state_version"] == 1 and set(head["values"]) == {"k", "machine"}
@@ -27,14 +40,7 @@ def test_the_stored_state_is_of_version_1_and_this_kas_view_reads_version_2() ->
 
 
 def test_a_version_1_state_loads_through_the_migration_and_continues(monkeypatch) -> None:
-    with frame_logs(monkeypatch) as runs:
-        assert main(ARGV) == 0
-        assert main([*ARGV, "--load-state", str(V1)]) == 0
-    full, rest = runs
-    k = saved_place(V1)[1]
-    full.pop("ticks"), rest.pop("ticks")
-    assert rest and sorted(rest) == [n for n in sorted(full) if n > k]
-    assert all(rest[n] == full[n] for n in rest)
+    _continues_as_unbroken(monkeypatch, ARGV, V1)
 
 
 def test_the_migration_renames_the_period_and_refuses_other_fields() -> None:
@@ -119,14 +125,7 @@ def test_a_ca_program_state_of_version_3_loads_and_continues(monkeypatch) -> Non
     """Version 4 added the dialogue's open choice menu: a version-3 state (which could not
     be saved with one open) reads as having none, and its dialogue goes on as the unbroken
     run's."""
-    with frame_logs(monkeypatch) as runs:
-        assert main(CA_ARGV) == 0
-        assert main([*CA_ARGV, "--load-state", str(CA_V3)]) == 0
-    full, rest = runs
-    k = saved_place(CA_V3)[1]
-    full.pop("ticks"), rest.pop("ticks")
-    assert rest and sorted(rest) == [n for n in sorted(full) if n > k]
-    assert all(rest[n] == full[n] for n in rest)
+    _continues_as_unbroken(monkeypatch, CA_ARGV, CA_V3)
 
 
 def test_the_ca_program_migration_refuses_a_menu_in_an_older_dialogue() -> None:
@@ -161,14 +160,7 @@ def test_a_ca_program_state_of_version_4_loads_and_continues(monkeypatch) -> Non
     """Version 5 added the input held during a jump: a version-4 state (which could not be
     saved with any held) reads as holding none; its open choice menu is picked from as in
     the unbroken run."""
-    with frame_logs(monkeypatch) as runs:
-        assert main(CA_MENU_ARGV) == 0
-        assert main([*CA_MENU_ARGV, "--load-state", str(CA_V4)]) == 0
-    full, rest = runs
-    k = saved_place(CA_V4)[1]
-    full.pop("ticks"), rest.pop("ticks")
-    assert rest and sorted(rest) == [n for n in sorted(full) if n > k]
-    assert all(rest[n] == full[n] for n in rest)
+    _continues_as_unbroken(monkeypatch, CA_MENU_ARGV, CA_V4)
 
 
 def test_the_ca_program_migration_from_4_holds_no_input_and_refuses_a_held_field() -> None:
