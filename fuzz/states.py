@@ -30,9 +30,10 @@ STREAM = ROOT / "examples" / "sigma" / "pgplot_goc.sig"
 
 # program -> a short headless run of it (a state is saved from it and loaded into it). The
 # editors' states are their input log (emulator.harness.input_log): a load runs the session
-# again, so their runs are short; they run in editor_inputs(), their files named as they are
-# there (the actors editor's status names its file as given once it has saved, `s` below,
-# and its state's picture with it: a state of it loads only where that name reads the same).
+# again, so their runs are short; they and the players of files (kas view, snooker
+# visualise and replay) run in editor_inputs(), their files named as they are there (the
+# actors editor's status names its file as given once it has saved, `s` below, and its
+# state's picture with it: a state of it loads only where that name reads the same).
 PROGRAMS: dict[str, list[str]] = {
     "ca-program": ["ca", "program", "--pattern", "glider", "--headless", "--stop-after", "2"],
     "snooker-play": ["snooker", "play", "--headless", "--stop-after", "2"],
@@ -46,13 +47,20 @@ PROGRAMS: dict[str, list[str]] = {
     "snooker-camera": ["snooker", "camera", "cam.ccl", "shot.cp", "--headless", "--events",
                        "camera.events"],
     "ca-actors": ["ca", "actors", "m.actors", "--headless", "--events", "actors.events"],
+    "kas-view": ["kas", "view", "seq.kas", "--headless", "--every"],
+    "snooker-visualise": ["snooker", "visualise", "pink_shot.cp", "example.views", "--headless"],
+    "snooker-replay": ["snooker", "replay", "pink_shot.cp", "--headless", "--last", "20"],
 }
-EDITORS = frozenset(["kas-edit", "kas-path", "kas-paint", "snooker-camera", "ca-actors"])
+SAVE_AT = {"kas-view": ["--at", "0.3"]}  # its line test ends with nothing left to save
+IN_INPUTS = frozenset(["kas-edit", "kas-path", "kas-paint", "snooker-camera", "ca-actors",
+                       "kas-view", "snooker-visualise", "snooker-replay"])
 COMMANDS = {"camlab88 ca program": "ca-program", "camlab88 snooker": "snooker-play",
             "camlab88 sigma run": "sigma-run", "camlab88 rainbow run": "rainbow-run",
             "camlab88 kas edit": "kas-edit", "camlab88 kas path": "kas-path",
             "camlab88 kas paint": "kas-paint", "camlab88 snooker camera": "snooker-camera",
-            "camlab88 ca actors": "ca-actors"}  # as a state names its program
+            "camlab88 ca actors": "ca-actors", "camlab88 kas view": "kas-view",
+            "camlab88 snooker visualise": "snooker-visualise",
+            "camlab88 snooker replay": "snooker-replay"}  # as a state names its program
 _LENGTH = 4  # bytes of each part's length prefix in an opened state
 
 
@@ -88,8 +96,9 @@ def run_cli(argv: list[str], limit: float) -> tuple[int, str]:
 
 
 def run_program(program: str, more: list[str], limit: float) -> tuple[int, str]:
-    """``program``'s short run with ``more`` arguments (an editor's in editor_inputs())."""
-    if program not in EDITORS:
+    """``program``'s short run with ``more`` arguments (one reading files in editor_inputs()
+    there)."""
+    if program not in IN_INPUTS:
         return run_cli([*PROGRAMS[program], *more], limit)
     old = Path.cwd()
     os.chdir(editor_inputs())
@@ -118,7 +127,7 @@ def editor_inputs() -> Path:
     folder = Path(tempfile.mkdtemp(prefix="camlab88-fuzz-editors-"))
     atexit.register(shutil.rmtree, folder, True)
     for recording in ("tests/data/sessions/kas_edit.session", "examples/figures/fig-3.6.session",
-                      "examples/figures/fig-3.7.session"):
+                      "examples/figures/fig-3.7.session", "examples/figures/fig-6.7.session"):
         for name, data in read(ROOT / recording).files.items():
             (folder / name).write_bytes(data)
     camera = ROOT / "tests" / "data" / "snooker_camera"
@@ -126,6 +135,7 @@ def editor_inputs() -> Path:
         (folder / name).write_text(data)
     (folder / "cam.ccl").write_bytes((camera / "thesis_example.ccl").read_bytes())
     (folder / "shot.cp").write_bytes((camera / "pink_shot.checkpoint").read_bytes())
+    (folder / "seq.kas").write_bytes((ROOT / "tests" / "data" / "states" / "seq.kas").read_bytes())
     _INPUTS.append(folder)
     return folder
 
@@ -140,8 +150,9 @@ _EDITOR_TEXTS = {
 
 
 def save_state(program: str, path: Path, limit: float = 300.0) -> bytes:
-    """A real state of ``program``: its short run, saved at the end."""
-    code, err = run_program(program, ["--save-state", str(path.absolute())], limit)
+    """A real state of ``program``: its short run, saved at the end (or at SAVE_AT)."""
+    code, err = run_program(program, ["--save-state", str(path.absolute()),
+                                      *SAVE_AT.get(program, [])], limit)
     if code != 0:
         raise RuntimeError(f"{program}: could not save a state: {err}")
     return path.read_bytes()

@@ -1,7 +1,8 @@
 """Damaged whole-program states through the command line's ``--load-state FILE``: real states
-of nine programs (the CA program, the snooker program, the Sigma terminal's run, the Rainbow
-demo, and the five editors whose state is their input log: kas edit, kas path, kas paint,
-the snooker camera tool, the CA actors editor), saved by the commands themselves, then
+of every program that declares one (the CA program, the snooker program, the Sigma
+terminal's run, the Rainbow demo, the three players kas view, snooker visualise and snooker
+replay, and the five editors whose state is their input log: kas edit, kas path, kas paint,
+the snooker camera tool, the CA actors editor: fuzz.states.PROGRAMS), saved by the commands themselves, then
 loaded back by the same commands in process after random damage — to the file's bytes,
 to its header's declared values (fuzz.states edits them with the parts opened, so the
 damage gets past zlib's checksums) and to its parts (the machines' own states).
