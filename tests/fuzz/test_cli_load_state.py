@@ -4,8 +4,9 @@ terminal's run, the Rainbow demo, the three players kas view, snooker visualise 
 replay, and the five editors whose state is their input log: kas edit, kas path, kas paint,
 the snooker camera tool, the CA actors editor: fuzz.states.PROGRAMS), saved by the
 commands themselves, then loaded back by the same commands in process after random damage
-— to the file's bytes, to its header's declared values (fuzz.states edits them with the parts opened, so the
-damage gets past zlib's checksums) and to its parts (the machines' own states).
+— to the file's bytes, to its header's declared values (fuzz.states edits them with the
+parts opened, so the damage gets past zlib's checksums) and to its parts (the machines' own
+states).
 Every outcome is a clean run or one line naming the file with status 1 or 2: never a
 traceback, a hang or runaway memory. Each load runs in a forked copy of this process: not to
 keep a damaged state from leaking into the next example (a refused load changes nothing and
