@@ -1,0 +1,113 @@
+"""An editor fed by a tablet saves its state (emulator.harness.input_log: the tablet tape's
+entries, as a recording keeps them) and a load decodes that tape through the protocol parser
+while the session runs again, then carries on with the command line's ``--tablet``: the
+frames after the save are the unbroken run's. A state holding a tablet's input is refused
+by a run without a tablet or with another protocol, and damaged tablet input in one line."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from camlab88.cli import main
+from camlab88.emulator.machine.state_file import pack, unpack
+from tests.states.support import assert_continues
+
+# the pen goes down at 0.4 s and up at 1.0 s; F2 saves the keyframe at 1.5 s
+SCRIPT = ("0.2 move 0 0\n0.4 down 0 0\n0.6 down 1 1\n0.8 down 2 1\n1.0 up 2 1\n"
+          "1.2 move 3 3\n1.5 key f2\n2.0 wait\n")
+
+
+@pytest.fixture
+def kas_edit(tmp_path: Path, monkeypatch) -> list[str]:
+    """kas edit with the emulated tablet driven by its script (no calibration: the config
+    directory is the test's own)."""
+    monkeypatch.setenv("CAMLAB88_CONFIG_DIR", str(tmp_path / "config"))
+    (tmp_path / "s.txt").write_text(SCRIPT)
+    return ["kas", "edit", str(tmp_path / "k.kas"), "--tablet", "emulated:summa-mm",
+            "--headless", "--script", str(tmp_path / "s.txt")]
+
+
+def _saved(argv: list[str], state: Path, at: str = "0.7") -> tuple[dict, dict]:
+    assert main([*argv, "--save-state", str(state), "--at", at]) == 0
+    return unpack(state.read_bytes(), "program")
+
+
+def _refusal(argv: list[str], state: Path) -> str:
+    with pytest.raises(SystemExit) as stop:
+        main([*argv, "--load-state", str(state)])
+    said = str(stop.value)
+    assert str(state) in said and "\n" not in said, said
+    return said
+
+
+@pytest.mark.parametrize("at", [0.7, 1.3])
+def test_kas_edit_with_a_tablet_continues_from_a_state(monkeypatch, kas_edit, tmp_path: Path,
+                                                       at: float) -> None:
+    """Saved mid-stroke (pen down) and after it: the loaded run's frames are the unbroken
+    run's, the stroke drawn before the save read from the state's tape."""
+    state = tmp_path / "e.c88state"
+    assert_continues(monkeypatch, kas_edit, at, state)
+    head, parts = unpack(state.read_bytes(), "program")
+    tablet = head["values"]["input"]["tablet"]
+    assert (tablet["protocol"], tablet["emulated"]) == ("summa-mm", True)
+    assert b'"raw"' in parts[tablet["tape"]] and b'"open"' in parts[tablet["tape"]]
+
+
+def test_the_stroke_before_the_save_comes_from_the_tape(kas_edit, tmp_path: Path,
+                                                        capsys) -> None:
+    """Saved after the stroke (no pen down after it): the loaded run's keyframe holds it,
+    decoded from the state's tape; with the tape's reports taken out (the tablet opened,
+    so the script's mouse is not read) it holds none."""
+    import json
+
+    state = tmp_path / "e.c88state"
+    head, parts = _saved(kas_edit, state, "1.1")
+    assert "1 chains, 3 points" in capsys.readouterr().out
+    assert main([*kas_edit, "--load-state", str(state)]) == 0
+    assert "1 chains, 3 points" in capsys.readouterr().out
+    name = head["values"]["input"]["tablet"]["tape"]
+    parts[name] = json.dumps([e for e in json.loads(parts[name]) if e[1] != "raw"]).encode()
+    state.write_bytes(pack("program", head, parts))
+    assert main([*kas_edit, "--load-state", str(state)]) == 0
+    assert "0 chains, 0 points" in capsys.readouterr().out
+
+
+def test_a_state_with_a_tablets_input_needs_a_tablet_of_its_protocol(kas_edit,
+                                                                     tmp_path: Path) -> None:
+    state = tmp_path / "e.c88state"
+    _saved(kas_edit, state)
+    bare = [w for w in kas_edit if w not in ("--tablet", "emulated:summa-mm")]
+    assert "holds a summa-mm tablet's input: load it with --tablet" in _refusal(bare, state)
+    other = [w if w != "emulated:summa-mm" else "emulated:wacom4" for w in kas_edit]
+    assert "this run's --tablet is wacom4" in _refusal(other, state)
+
+
+@pytest.mark.parametrize(("tape", "said"), [
+    (b"not json", "state.tablet.tape"),
+    (b'[[0,"raw",5]]', "a raw entry's payload is hex"),
+    (b'[[3,"raw","00"],[1,"raw","00"]]', "not in poll order"),
+    (b'[[99999,"raw","00"]]', "an entry at poll 99999"),
+    (b"[" * 5000 + b"]" * 5000, "state.tablet.tape"),
+    (b'[[0,"calibration",{"device":"x","top_left":[0,0],"bottom_right":[9,9]}]]',
+     "another calibration"),
+])
+def test_damaged_tablet_input_is_refused_in_one_line(kas_edit, tmp_path: Path, tape: bytes,
+                                                     said: str) -> None:
+    state = tmp_path / "e.c88state"
+    head, parts = _saved(kas_edit, state)
+    parts[head["values"]["input"]["tablet"]["tape"]] = tape
+    state.write_bytes(pack("program", head, parts))
+    assert said in _refusal(kas_edit, state)
+
+
+def test_a_tablet_tape_past_its_bound_is_refused_before_it_is_read(kas_edit,
+                                                                   tmp_path: Path) -> None:
+    from camlab88.emulator.harness.input_log import MAX_TABLET_TAPE
+
+    state = tmp_path / "e.c88state"
+    head, parts = _saved(kas_edit, state)
+    parts[head["values"]["input"]["tablet"]["tape"]] = b" " * (MAX_TABLET_TAPE + 1)
+    state.write_bytes(pack("program", head, parts))
+    assert "names no binary part of at most" in _refusal(kas_edit, state)
