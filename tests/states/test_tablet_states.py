@@ -111,3 +111,25 @@ def test_a_tablet_tape_past_its_bound_is_refused_before_it_is_read(kas_edit,
     parts[head["values"]["input"]["tablet"]["tape"]] = b" " * (MAX_TABLET_TAPE + 1)
     state.write_bytes(pack("program", head, parts))
     assert "names no binary part of at most" in _refusal(kas_edit, state)
+
+
+def test_an_editors_state_of_version_1_is_read_as_holding_no_tablet_input(
+        kas_edit, tmp_path: Path, monkeypatch) -> None:
+    """Version 1 (before the tablet's input was kept: a tablet session did not save) loads
+    through the migration, into a run with or without a tablet; a version 1 state that
+    already names ``tablet`` is not version 1's and is refused in one line."""
+    from tests.states.support import frame_logs
+
+    bare = [w for w in kas_edit if w not in ("--tablet", "emulated:summa-mm")]
+    state = tmp_path / "e.c88state"
+    head, parts = _saved(bare, state, "1.3")
+    assert head["state_version"] == 2 and head["values"]["input"].pop("tablet") is None
+    head["state_version"] = 1
+    state.write_bytes(pack("program", head, parts))
+    with frame_logs(monkeypatch) as runs:
+        assert main([*bare, "--load-state", str(state)]) == 0
+        assert main([*kas_edit, "--load-state", str(state)]) == 0  # the tablet carries on
+    assert runs[0] == runs[1]  # (the script's mouse drives the emulated tablet as it would)
+    head["values"]["input"]["tablet"] = None
+    state.write_bytes(pack("program", head, parts))
+    assert "its input log is not version 1's" in _refusal(bare, state)
