@@ -133,3 +133,59 @@ def test_an_editors_state_of_version_1_is_read_as_holding_no_tablet_input(
     head["values"]["input"]["tablet"] = None
     state.write_bytes(pack("program", head, parts))
     assert "its input log is not version 1's" in _refusal(bare, state)
+
+
+ACTORS_EVENTS = "wait 5\nkey tab\nwait 3\nclick left 32 472\nwait 20\n"
+
+
+def _scripted_tablet(monkeypatch, skip: int = 0) -> None:
+    """``--tablet loop://?protocol=summa-mm&init=0`` as a tablet that sends a stroke, one
+    report a poll, through pyserial's in-process loop: the same bytes at the same polls in
+    every run (a real device's timing is the wall clock's); ``skip``: the reports it sent
+    before (a loaded run's tablet goes on with the stroke where the saved one was)."""
+    from camlab88.protocols.tablets import sources
+    from camlab88.protocols.tablets.events import TabletEvent
+    from camlab88.protocols.tablets.registry import make_encoder
+    from camlab88.protocols.tablets.serial_source import SerialSource
+
+    encoder = make_encoder("summa-mm")
+    stroke = [encoder.encode(TabletEvent(1000 + 100 * i, 2000 + 50 * i, True, int(4 < i < 20)))
+              for i in range(30)][skip:]
+
+    class Scripted(SerialSource):
+        def read(self, timeout: float = 0.0) -> list:
+            if stroke:
+                self.port.write(stroke.pop(0))
+            return super().read(timeout)
+
+    real = sources.open_source
+    monkeypatch.setattr(sources, "open_source",
+                        lambda spec, on_raw=None: Scripted(spec) if spec.kind == "url"
+                        else real(spec, on_raw))
+
+
+def test_the_actors_editor_with_a_tablet_continues_from_a_state(monkeypatch,
+                                                                tmp_path: Path) -> None:
+    """The Rainbow's editors (RainbowTarget.keep_input) keep a --tablet's tape the same way:
+    saved mid-stroke, loaded, continued: the unbroken run's frames."""
+    (tmp_path / "m.actors").write_text("rules maze\nactor 1 wall\n  colour 9 9 9\n  box 1 1 1\n"
+                                       "end\n", encoding="utf-8")
+    (tmp_path / "e.events").write_text(ACTORS_EVENTS)
+    argv = ["ca", "actors", str(tmp_path / "m.actors"), "--headless", "--events",
+            str(tmp_path / "e.events"), "--tablet", "loop://?protocol=summa-mm&init=0"]
+    state = tmp_path / "a.c88state"
+
+    def each_run(args: list[str]) -> int:  # the stroke, from where the state left it
+        skip = 0
+        if "--load-state" in args:
+            head, parts = unpack(state.read_bytes(), "program")
+            skip = parts[head["values"]["input"]["tablet"]["tape"]].count(b'"raw"')
+        _scripted_tablet(monkeypatch, skip)
+        return main(args)
+
+    monkeypatch.setattr("tests.states.support.main", each_run)
+    assert_continues(monkeypatch, argv, 0.3, state)
+    head, parts = unpack(state.read_bytes(), "program")
+    tablet = head["values"]["input"]["tablet"]
+    assert (tablet["protocol"], tablet["emulated"]) == ("summa-mm", False)
+    assert parts[tablet["tape"]].count(b'"raw"') >= 10
