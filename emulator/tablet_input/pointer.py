@@ -182,6 +182,10 @@ class TabletInput:
                              f"ran {polls} polls")
         if self.tape is not None:
             self.tape.poll = polls
+        if self._replaying and self.layer.source is None and self.tape.opens_now():
+            # a recording begun from the state: its tablet was open from the start, so it
+            # comes in here as it was, not as one back after a loss
+            self.layer.source = self.layer.reopen()
 
     def close(self) -> None:
         self.layer.close()

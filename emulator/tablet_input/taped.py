@@ -97,6 +97,12 @@ class TapedTablet:
             self.tape.poll = polls
         if other is not None and other.gone and not self.gone:
             self.close()
+        elif not self.live and self.source is None and self.tape is not None:
+            from camlab88.protocols.tablets.tape import TapeSource, decoder_for
+
+            opened = self.tape.opens_now()  # a recording begun from the state: its tablet
+            if opened is not None:  # was opened at the start, first read here
+                self.source = TapeSource(self.tape, opened, decoder_for)
 
     def read(self, timeout: float = 0.0) -> list:
         from camlab88.protocols.tablets.sources import SourceLost

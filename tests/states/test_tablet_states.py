@@ -189,3 +189,22 @@ def test_the_actors_editor_with_a_tablet_continues_from_a_state(monkeypatch,
     tablet = head["values"]["input"]["tablet"]
     assert (tablet["protocol"], tablet["emulated"]) == ("summa-mm", False)
     assert parts[tablet["tape"]].count(b'"raw"') >= 10
+
+
+def test_a_recording_begun_from_a_tablet_state_replays_with_check(kas_edit, tmp_path: Path,
+                                                                  capsys) -> None:
+    """The recording carries the state by content and the tablet's tape from the load on
+    (its polls counted on from the saved session's): the replay runs the state's tape, then
+    the recording's, and every screen hash agrees."""
+    import json
+
+    from camlab88.protocols.session import read
+
+    state, rec = tmp_path / "e.c88state", tmp_path / "r.rec"
+    _saved(kas_edit, state)
+    assert main([*kas_edit, "--load-state", str(state), "--record", str(rec)]) == 0
+    polls = [e[0] for _t, d, data in read(rec).wire if d == "T" for e in json.loads(data)]
+    assert polls[0] == 0 and min(polls[1:]) > 50  # its calibration; the rest after the load
+    capsys.readouterr()
+    assert main(["replay", str(rec), "--check"]) == 0
+    assert "screen hashes agree" in capsys.readouterr().out
