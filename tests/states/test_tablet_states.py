@@ -208,3 +208,23 @@ def test_a_recording_begun_from_a_tablet_state_replays_with_check(kas_edit, tmp_
     capsys.readouterr()
     assert main(["replay", str(rec), "--check"]) == 0
     assert "screen hashes agree" in capsys.readouterr().out
+
+
+def test_an_actors_recording_begun_from_a_tablet_state_replays_with_check(
+        monkeypatch, tmp_path: Path, capsys) -> None:
+    """As for kas edit: the Rainbow's editors read the recording's tape from the polls the
+    state's ran to, the tablet in as it was (not lost for want of an opening at poll 0)."""
+    (tmp_path / "m.actors").write_text("rules maze\nactor 1 wall\n  colour 9 9 9\n  box 1 1 1\n"
+                                       "end\n", encoding="utf-8")
+    (tmp_path / "e.events").write_text(ACTORS_EVENTS)
+    argv = ["ca", "actors", str(tmp_path / "m.actors"), "--headless", "--events",
+            str(tmp_path / "e.events"), "--tablet", "loop://?protocol=summa-mm&init=0"]
+    state, rec = tmp_path / "a.c88state", tmp_path / "r.rec"
+    _scripted_tablet(monkeypatch)
+    assert main([*argv, "--save-state", str(state), "--at", "0.3"]) == 0
+    _scripted_tablet(monkeypatch, 15)
+    assert main([*argv, "--load-state", str(state), "--record", str(rec)]) == 0
+    capsys.readouterr()
+    assert main(["replay", str(rec), "--check"]) == 0
+    said = capsys.readouterr()
+    assert "screen hashes agree" in said.out and "tablet lost" not in said.err
