@@ -73,6 +73,7 @@ class RainbowTarget:
         self.STATE_VERSION = INPUT_STATE_VERSION
         self.migrate_state = self._migrate_input
         if self.tablet is not None:  # a --tablet (set before): its tape is kept
+            self.tablet.keep_for_state()
             self.log.keep_tablet(self.tablet.protocol, False, self.tablet.take_state_tape)
         self.STATE_SCHEMA = input_log.SCHEMA if start is None else \
             input_log.program_schema(start.schema)

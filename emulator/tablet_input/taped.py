@@ -44,7 +44,7 @@ class TapedTablet:
         self.protocol = protocol  # what a state's tablet input must match
         self.gone = False
         self.name = getattr(source, "name", "tablet")
-        self._kept: list[list] | None = None if live else []  # a replay's, for a state
+        self._kept: list[list] | None = None  # a replay's, for a state (keep_for_state)
         self._tape_end = -1  # a stand-in's: the poll of its tape's last entry
 
     @classmethod
@@ -65,8 +65,8 @@ class TapedTablet:
             return cls(None if opened is None else TapeSource(tape, opened, decoder_for), tape,
                        live=False, protocol=protocol)
         source = open_source(spec)
-        # always on tape: a save state keeps it (and with --record, the recording)
-        recorder = TapeRecorder(("state", "record") if record else ("state",))
+        # always on tape: a save state may keep it (keep_for_state), and --record records it
+        recorder = TapeRecorder(("record",) if record else ())
         return cls(RecordingSource(source, recorder), recorder, live=True, protocol=protocol)
 
     def stand_in(self, entries: list | None) -> TapedTablet | None:
@@ -81,7 +81,7 @@ class TapedTablet:
         opened = tape.opens_now()
         other = TapedTablet(None if opened is None else TapeSource(tape, opened, decoder_for),
                             tape, live=False, protocol=self.protocol)
-        other._kept, other._tape_end = None, entries[-1][0] if entries else -1
+        other._tape_end = entries[-1][0] if entries else -1
         return other
 
     def carry_on_from(self, other: TapedTablet | None) -> None:
@@ -121,6 +121,16 @@ class TapedTablet:
         from camlab88.protocols.tablets.tape import TapeRecorder
 
         return self.tape.take("record") if isinstance(self.tape, TapeRecorder) else b""
+
+    def keep_for_state(self) -> None:
+        """A save state keeps what the tablet sends from now on (take_state_tape, which
+        the state's log calls every tick: unread, the entries would pile up)."""
+        from camlab88.protocols.tablets.tape import TapeRecorder
+
+        if isinstance(self.tape, TapeRecorder):
+            self.tape.add_reader("state")
+        elif self.tape is not None:  # a replay: its tape's entries at the polls reached
+            self._kept = []
 
     def take_state_tape(self) -> bytes:
         """The tape's entries since the last call, for a save state (a live tablet's as

@@ -126,6 +126,10 @@ class TapeRecorder:
         for unread in self._unread.values():
             unread.append(entry)
 
+    def add_reader(self, reader: str) -> None:
+        """From now on ``reader`` takes the entries noted too."""
+        self._unread.setdefault(reader, [])
+
     def take(self, reader: str = "record") -> bytes:
         """The entries since ``reader``'s last take (then dropped: memory stays bounded)."""
         new = self._unread.get(reader)

@@ -231,7 +231,7 @@ def test_a_rainbow_editor_with_a_tablet_saves_its_tablets_input() -> None:
     target.keep_input()
     assert target.state_values()["tablet"] is None  # without a tablet: none
     target = RainbowTarget(RainbowMachine(), lambda: True, "t", "")
-    target.tablet = SimpleNamespace(protocol="summa-mm",
+    target.tablet = SimpleNamespace(protocol="summa-mm", keep_for_state=lambda: None,
                                     take_state_tape=lambda: b'[[0,"raw","00"]]')
     target.keep_input()
     target.tick()
