@@ -228,3 +228,37 @@ def test_an_actors_recording_begun_from_a_tablet_state_replays_with_check(
     assert main(["replay", str(rec), "--check"]) == 0
     said = capsys.readouterr()
     assert "screen hashes agree" in said.out and "tablet lost" not in said.err
+
+
+def test_a_state_saved_in_a_replay_keeps_the_recordings_tablet_tape(kas_edit, tmp_path: Path,
+                                                                    capsys) -> None:
+    """A replay reads the recording's tape, not a device: a state it saves keeps that
+    tape's entries at the polls reached, and loads into a live run with the stroke."""
+    rec, state = tmp_path / "r.rec", tmp_path / "x.c88state"
+    assert main([*kas_edit, "--record", str(rec)]) == 0
+    (tmp_path / "k.kas").unlink()
+    assert main(["replay", str(rec), "--save-state", str(state), "--at", "1.2"]) == 0
+    head, parts = unpack(state.read_bytes(), "program")
+    assert parts[head["values"]["input"]["tablet"]["tape"]].count(b'"raw"') > 10
+    capsys.readouterr()
+    assert main([*kas_edit, "--load-state", str(state)]) == 0
+    assert "1 chains, 3 points" in capsys.readouterr().out
+
+
+def test_a_session_past_the_tape_bound_saves_no_state(monkeypatch) -> None:
+    """The bound is checked before a chunk is held: past it nothing more is kept and a save
+    is refused in one line (the run goes on)."""
+    from camlab88.emulator.harness import input_log
+    from camlab88.emulator.machine.state_file import MachineStateError
+
+    monkeypatch.setattr(input_log, "MAX_TABLET_TAPE", 40)
+    chunks = [b'[[0,"raw","0a0b0c"]]', b'[[1,"raw","0a0b0c"]]', b'[[2,"raw","0a0b0c"]]']
+    log = input_log.InputLog()
+    log.keep_tablet("summa-mm", False, lambda: chunks.pop(0) if chunks else b"")
+    log.ticked()
+    log.ticked()
+    assert log.values("")["tablet"]["tape"] == b'[[0,"raw","0a0b0c"],[1,"raw","0a0b0c"]]'
+    log.ticked()
+    assert log.tablet.chunks == []
+    with pytest.raises(MachineStateError, match="MiB a state keeps"):
+        log.values("")
