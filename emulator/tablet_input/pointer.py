@@ -177,7 +177,7 @@ class TabletInput:
         self.layer.carry_on_from(other.layer)
         polls = other.tape.poll if other.tape is not None else 0
         last = other._tape_end
-        if last >= polls:
+        if last >= polls and last > 0:  # (poll 0's set-up is noted before the first poll)
             raise ValueError(f"state.tablet.tape: an entry at poll {last}; the session "
                              f"ran {polls} polls")
         if self.tape is not None:
