@@ -18,8 +18,11 @@ SOURCE_FORMS = "hid:VID:PID, serial:PORT?protocol=P, or a pyserial URL?protocol=
 
 def add_tablet_option(p: argparse.ArgumentParser, what: str, where: str) -> None:
     """``--tablet SOURCE``; the help reads "also WHAT a real tablet (the source forms) WHERE"."""
-    p.add_argument("--tablet", metavar="SOURCE",  # a replay decodes the recorded tape
-                   help=f"also {what} a real tablet ({SOURCE_FORMS}){where}").replay = TAPE
+    tablet = p.add_argument("--tablet", metavar="SOURCE",
+                            help=f"also {what} a real tablet ({SOURCE_FORMS}){where}")
+    # a replay decodes the recorded tape; not in a save state's identity: the state holds
+    # the tablet's input and its protocol (emulator.harness.input_log)
+    tablet.replay, tablet.run_only = TAPE, True
 
 
 def open_tablet(command: str, text: str | None, opts: RunOptions) -> Any:

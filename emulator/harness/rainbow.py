@@ -19,7 +19,9 @@ from camlab88.emulator.rainbow.host_input import RainbowHostInput
 from camlab88.protocols.rainbow.script import Player
 
 FPS = 50  # the Rainbow's display frames per second
-INPUT_STATE_VERSION = 1  # the state of a program kept by its input (keep_input)
+# the state of a program kept by its input (keep_input): version 2 holds a --tablet's
+# tape (input_log; migrate_state reads 1)
+INPUT_STATE_VERSION = input_log.VERSION_WITH_TABLET
 
 
 class RainbowTarget:
@@ -69,6 +71,10 @@ class RainbowTarget:
         self._kept = (start, rebuilding)
         self._feed = feed
         self.STATE_VERSION = INPUT_STATE_VERSION
+        self.migrate_state = self._migrate_input
+        if self.tablet is not None:  # a --tablet (set before): its tape is kept
+            self.tablet.keep_for_state()
+            self.log.keep_tablet(self.tablet.protocol, False, self.tablet.take_state_tape)
         self.STATE_SCHEMA = input_log.SCHEMA if start is None else \
             input_log.program_schema(start.schema)
         self.snapshots_by_graph = True  # F4 in memory: rebuilding runs from the start
@@ -108,9 +114,10 @@ class RainbowTarget:
         except ValueError as exc:
             raise MachineStateError(f"state (version {version}): {exc}") from None
 
+    def _migrate_input(self, version: int, values: Any) -> Any:
+        return input_log.migrate_values(version, values, self._kept[0] is not None)
+
     def _input_values(self) -> dict[str, Any]:
-        if self.tablet is not None:
-            raise MachineStateError("a live tablet's input is not kept in a state")
         values = self.log.values(self.picture())
         start = self._kept[0] if self._kept else None
         return values if start is None else {"input": values, "start": start.values()}
@@ -122,6 +129,11 @@ class RainbowTarget:
                 raise MachineStateError("this program loads a state into a fresh run only")
             start.load(values["start"])
             values = values["input"]
+        entries, _ = self.log.tablet_tape(values)
+        live = self.tablet
+        if live is not None:  # the program reads the state's tape while it runs again
+            self.tablet = live.stand_in(entries)
+        stand_in = self.tablet
         if rebuilding is not None:
             rebuilding(True)
         try:
@@ -129,8 +141,14 @@ class RainbowTarget:
                              getattr(self, "may_close", lambda: True), self.picture,
                              self._feed)
         finally:
+            self.tablet = live
             if rebuilding is not None:
                 rebuilding(False)
+        if live is not None:
+            try:
+                live.carry_on_from(stand_in)
+            except ValueError as exc:
+                raise MachineStateError(str(exc)) from None
         rec = self.machine.recording
         self._wire_at = len(rec.entries) if rec is not None else 0  # a recording from here
 

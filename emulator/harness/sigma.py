@@ -92,6 +92,9 @@ class SigmaProgramTarget:
         self._buttons = 0
         self.on_input: Any = None  # told each scripted event as it is given (a web replay)
         self.log = input_log.InputLog()
+        pointer = self.session.pointer_source
+        if getattr(pointer, "protocol", None) is not None:  # a --tablet: its tape is kept
+            self.log.keep_tablet(pointer.protocol, pointer.emulated, pointer.take_state_tape)
 
     def handle_events(self, events: list[HostEvent]) -> None:
         from camlab88.emulator.host_input import KeyDown, PointerButton, PointerMove
@@ -152,10 +155,11 @@ class SigmaProgramTarget:
         return ok
 
     # its declared state (program_state): the input that made it (emulator.harness.
-    # input_log) and, where the command gives one (``start``), what the program started
-    # from that its own files no longer hold (kas edit: the keyframe, which F2 rewrites); a
-    # load runs a fresh session again with it, the program's writes held back
-    STATE_VERSION = 1
+    # input_log: version 2 holds a --tablet's tape; migrate_state reads 1) and, where the
+    # command gives one (``start``), what the program started from that its own files no
+    # longer hold (kas edit: the keyframe, which F2 rewrites); a load runs a fresh session
+    # again with it, the program's writes held back and the tablet read from the tape
+    STATE_VERSION = input_log.VERSION_WITH_TABLET
     STATE_SCHEMA: Any = input_log.SCHEMA
     start: input_log.StartState | None = None
 
@@ -167,9 +171,10 @@ class SigmaProgramTarget:
         self.STATE_SCHEMA = input_log.program_schema(start.schema)
         self.state_holds_files = start.files
 
+    def migrate_state(self, version: int, values: Any) -> Any:
+        return input_log.migrate_values(version, values, self.start is not None)
+
     def state_values(self) -> dict[str, Any]:
-        if getattr(self.session.pointer_source, "live", False):
-            raise MachineStateError("a live tablet's input is not kept in a state")
         values = self.log.values(self.picture())
         return values if self.start is None else {"input": values,
                                                   "start": self.start.values()}
@@ -180,14 +185,35 @@ class SigmaProgramTarget:
                 raise MachineStateError("this program loads a state into a fresh run only")
             self.start.load(values["start"])
             values = values["input"]
-        front = self.session.front
+        front, live = self.session.front, self.session.pointer_source
+        stand_in = self._tablet_stand_in(values)
         front.rebuilding = True  # the front's saves write nothing while it runs again
         try:
             self.log.rebuild(values, self.handle_events, self.tick, self.may_close,
                              self.picture)
         finally:
             front.rebuilding = False
+            self.session.pointer_source = live
+        if stand_in is not None:
+            try:
+                live.carry_on_from(stand_in)
+            except ValueError as exc:
+                raise MachineStateError(str(exc)) from None
         self._sent_at = len(self.session.sent)  # a recording starts from here
+
+    def _tablet_stand_in(self, values: dict[str, Any]) -> Any:
+        """Where this run has a --tablet: what the session polls while it runs again (the
+        state's tablet tape, or the mouse where the saved session had no tablet), put in
+        place; None without one (a state holding a tablet's input is then refused)."""
+        entries, emulated = self.log.tablet_tape(values)
+        if self.log.tablet is None:
+            return None
+        try:
+            stand_in = self.session.pointer_source.stand_in(entries, emulated)
+        except ValueError as exc:
+            raise MachineStateError(str(exc)) from None
+        self.session.pointer_source = stand_in
+        return stand_in
 
     def wire(self) -> list[tuple[str, bytes]]:
         """The program's bytes to the terminal since the last call, and the tablet tape's

@@ -75,9 +75,14 @@ class SigmaHostTarget:
 
     # its declared state (program_state): the input that made it (emulator.harness.
     # input_log); a load runs the fresh program again with it (kas paint writes only at
-    # the end of its run, so nothing needs holding back)
-    STATE_VERSION = 1
+    # the end of its run, so nothing needs holding back). Version 2: the log's ``tablet``
+    # (always none here: the painting program takes no tablet); migrate_state reads 1
+    STATE_VERSION = input_log.VERSION_WITH_TABLET
     STATE_SCHEMA = input_log.SCHEMA
+
+    @staticmethod
+    def migrate_state(version: int, values: Any) -> Any:
+        return input_log.migrate_values(version, values, has_start=False)
 
     def picture(self) -> str:
         return input_log.picture_hash(self.frame(), self.machine.save_state())

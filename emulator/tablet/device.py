@@ -37,6 +37,9 @@ class EmulatedTablet:
         self.refused = 0  # events the protocol cannot express (see _encode)
         self.last_refusal = ""
         self.last: TabletEvent | None = None
+        # follows what it is sent but writes nothing (a loaded session run again: what it
+        # sent then is on the state's tape)
+        self.muted = False
         self._lock = threading.Lock()  # the window loop sends while a thread answers the host
         self._thread: threading.Thread | None = None
         self._stop = threading.Event()
@@ -93,7 +96,7 @@ class EmulatedTablet:
         if prompted:
             self.encoder.prompted = prompted - 1
         data = self._encode(event)
-        if data:
+        if data and not self.muted:
             self.port.write(data)
             self.sent_events += 1
         return data

@@ -1,10 +1,13 @@
 """Pointer input for a program window: the configured tablet, or the mouse (the host-input
 adapter beside the emulated tablet; used by the KAS fronts on the Sigma).
 
-With ``record=True`` everything the tablet sent is noted on a tablet tape
-(``camlab88.protocols.tablets.tape``) at the poll it was read; a session recorder takes it through
-``take_tape()``.  In a replay (``camlab88.emulator.harness.replay.active()``) the tape
-recorded in the session is read instead and the ``--tablet`` device is never opened.
+Everything a tablet sends is noted on a tablet tape (``camlab88.protocols.tablets.tape``) at
+the poll it was read: a session recorder (``record=True``) takes it through ``take_tape()``,
+a save state through ``take_state_tape()``.  In a replay
+(``camlab88.emulator.harness.replay.active()``) the tape recorded in the session is read
+instead and the ``--tablet`` device is never opened.  While a load runs a saved session
+again the session polls a ``stand_in`` fed from the state's tape; then this run's tablet
+carries on from where the stand-in left the pointer (``carry_on_from``).
 """
 
 from __future__ import annotations
@@ -29,17 +32,21 @@ class TabletInput:
         self._emulated = False
         self._has_device = source is not None
         self._replaying = False
-        area = area or TWELVE_FIELD
+        self._kept: list[list] | None = None  # a replay's tape entries, for a save state
+        self._tape_end = -1  # a stand-in's: the poll of its tape's last entry
+        self.protocol: str | None = None  # what a state's tablet input must match
+        self.area = area = area or TWELVE_FIELD
         if source is None:
             self.layer = InputLayer(area, None, notify=notify)
             return
         spec = parse_source(source)
+        self.protocol = spec.protocol or spec.kind  # (a HID tablet describes itself)
         self._emulated = spec.kind == "emulated"
         from camlab88.emulator.tablet_input.taped import recorded_tape
 
         recorded = recorded_tape()
         if recorded is not None:
-            self.tape, self._replaying = recorded, True
+            self.tape, self._replaying, self._kept = recorded, True, []
             self.layer = _replay_layer(recorded, area, notify)
             return
         self.layer = self._live_layer(spec, source, area, notify, record)
@@ -54,18 +61,17 @@ class TabletInput:
             opened, reopen = self._open_emulated(spec)
         else:
             opened, reopen = _open_real(spec, source, notify)
-        if record:
-            tape = self.tape = TapeRecorder()
-            tape.note("calibration", None if calibration is None else {
-                "device": calibration.device, **calibration.to_json()})
-            opened = RecordingSource(opened, tape) if opened is not None else None
+        # always on tape: a save state keeps it (and with --record, the recording)
+        tape = self.tape = TapeRecorder(("state", "record") if record else ("state",))
+        tape.note("calibration", None if calibration is None else {
+            "device": calibration.device, **calibration.to_json()})
+        opened = RecordingSource(opened, tape) if opened is not None else None
 
-            def reopen_recorded():
-                return RecordingSource(reopen(), tape)
+        def reopen_recorded():
+            return RecordingSource(reopen(), tape)
 
-            return InputLayer(area, opened, reopen=reopen_recorded, calibration=calibration,
-                              notify=notify)
-        return InputLayer(area, opened, reopen=reopen, calibration=calibration, notify=notify)
+        return InputLayer(area, opened, reopen=reopen_recorded, calibration=calibration,
+                          notify=notify)
 
     def _open_emulated(self, spec):
         """The emulated tablet on a pty, read back through its protocol parser like a real one."""
@@ -101,6 +107,8 @@ class TabletInput:
             return self.layer.poll(mouse)
         finally:
             if self.tape is not None:
+                if self._kept is not None:  # a replay: the tape's entries of this poll
+                    self._kept += [[self.tape.poll, k, p] for k, p in self.tape.here()]
                 self.tape.poll += 1
 
     @property
@@ -112,7 +120,72 @@ class TabletInput:
         """The tablet tape's entries since the last call (recording only)."""
         from camlab88.protocols.tablets.tape import TapeRecorder
 
-        return self.tape.take() if isinstance(self.tape, TapeRecorder) else b""
+        return self.tape.take("record") if isinstance(self.tape, TapeRecorder) else b""
+
+    def take_state_tape(self) -> bytes:
+        """The tablet tape's entries since the last call, for a save state: a live tablet's
+        as noted, a replay's as its tape held them at the polls reached."""
+        import json
+
+        from camlab88.protocols.tablets.tape import TapeRecorder
+
+        if isinstance(self.tape, TapeRecorder):
+            return self.tape.take("state")
+        new, self._kept = self._kept, [] if self._kept is not None else None
+        return json.dumps(new, separators=(",", ":")).encode() if new else b""
+
+    @property
+    def emulated(self) -> bool:
+        return self._emulated
+
+    def stand_in(self, entries: list | None, emulated: bool) -> TabletInput:
+        """What the session polls while a load runs it again: the state's tape ``entries``
+        decoded through the protocol parser as a replay decodes a recording's (``emulated``:
+        the saved session's tablet was the emulated one, driven by the window's mouse; this
+        run's emulated tablet then follows the mouse, saying nothing, so it is where the
+        saved one was), or the mouse alone (``entries`` None: the saved session had no
+        tablet). TapeError if the tape's calibration is not this run's."""
+        from camlab88.protocols.tablets.tape import Tape, TapeError
+
+        other = TabletInput(None, self.area)
+        if entries is None:
+            return other
+        tape = Tape(entries, where="state.tablet.tape")
+        calibration = self.layer.calibration
+        saved = tape.calibration()
+        mine = None if calibration is None else (tuple(calibration.top_left),
+                                                 tuple(calibration.bottom_right))
+        if (saved[1:] if saved else None) != mine:
+            raise TapeError("state.tablet.tape: saved with another calibration of the "
+                            "tablet than this run's (camlab88 tablet calibrate)")
+        other.tape, other._replaying, other._has_device = tape, True, True
+        other.protocol, other._emulated = self.protocol, emulated
+        other.layer = _replay_layer(tape, self.area, None)
+        other._tape_end = entries[-1][0] if entries else -1
+        if emulated and self._emu is not None:
+            other._emu = self._emu
+            self._emu.muted = True
+        return other
+
+    def carry_on_from(self, other: TabletInput) -> None:
+        """After a load: go on from where the stand-in ``other`` left the pointer, counting
+        polls from its (a recording's tape entries go on from there); this run's tablet
+        then says what it sends again. ValueError if the state's tape holds polls the
+        session never reached."""
+        if self._emu is not None:
+            self._emu.muted = False
+        self.layer.carry_on_from(other.layer)
+        polls = other.tape.poll if other.tape is not None else 0
+        last = other._tape_end
+        if last >= polls and last > 0:  # (poll 0's set-up is noted before the first poll)
+            raise ValueError(f"state.tablet.tape: an entry at poll {last}; the session "
+                             f"ran {polls} polls")
+        if self.tape is not None:
+            self.tape.poll = polls
+        if self._replaying and self.layer.source is None and self.tape.opens_now():
+            # a recording begun from the state: its tablet was open from the start, so it
+            # comes in here as it was, not as one back after a loss
+            self.layer.source = self.layer.reopen()
 
     def close(self) -> None:
         self.layer.close()

@@ -244,6 +244,12 @@ class InputLayer:
         self._source_name = getattr(job.source, "name", self._source_name)
         self._say(f"{self._source_name}: back; using the tablet again")
 
+    def carry_on_from(self, other: InputLayer) -> None:
+        """Go on from where ``other`` left the pointer (its pen down or up, its place, a
+        silent stream's stage): a loaded state's session ran again on a tape; this layer's
+        own source carries on."""
+        self._down, self._last, self._stall = other._down, other._last, other._stall
+
     def close(self) -> None:
         if self._reopening is not None:
             self._reopening.cancel()

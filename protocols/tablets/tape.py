@@ -114,19 +114,29 @@ def parse_chunk(chunk: bytes, where: str = "tablet tape") -> list[list[Any]]:
 
 
 class TapeRecorder:
-    """Collects entries; ``take()`` hands out the new ones as bytes (for a session record)."""
+    """Collects entries; ``take(reader)`` hands out the new ones as bytes. Each of
+    ``readers`` (a session record's ``record``, a save state's ``state``) takes its own."""
 
-    def __init__(self) -> None:
+    def __init__(self, readers: tuple[str, ...] = ("record",)) -> None:
         self.poll = 0
-        self.entries: list[list[Any]] = []
+        self._unread: dict[str, list[list[Any]]] = {r: [] for r in readers}
 
     def note(self, kind: str, payload: Any) -> None:
-        self.entries.append([self.poll, kind, payload])
+        entry = [self.poll, kind, payload]
+        for unread in self._unread.values():
+            unread.append(entry)
 
-    def take(self) -> bytes:
-        """The entries since the last take (then dropped: memory stays bounded)."""
-        new, self.entries = self.entries, []
-        return json.dumps(new, separators=(",", ":")).encode() if new else b""
+    def add_reader(self, reader: str) -> None:
+        """From now on ``reader`` takes the entries noted too."""
+        self._unread.setdefault(reader, [])
+
+    def take(self, reader: str = "record") -> bytes:
+        """The entries since ``reader``'s last take (then dropped: memory stays bounded)."""
+        new = self._unread.get(reader)
+        if not new:
+            return b""
+        self._unread[reader] = []
+        return json.dumps(new, separators=(",", ":")).encode()
 
 
 def _idle_level(source: Any, idle: float) -> int:

@@ -195,33 +195,48 @@ def test_the_actors_editors_save_is_not_made_again_at_a_load(monkeypatch,
     assert writes == []
 
 
-def test_a_live_tablet_session_is_not_saved() -> None:
-    """Its reports are not in the log (they come from the device, not the window)."""
+def test_a_live_tablet_session_saves_its_tablets_input() -> None:
+    """Its reports are kept in the log as the tablet tape's entries, tick by tick (the same
+    entries a recording keeps; tests/states/test_tablet_states.py loads them back)."""
     from types import SimpleNamespace
 
+    from camlab88.emulator.harness.input_log import picture_hash
     from camlab88.emulator.harness.sigma import SigmaProgramTarget
-    from camlab88.emulator.machine.state_file import MachineStateError
 
-    session = SimpleNamespace(pointer_source=SimpleNamespace(live=True))
+    tape = [b'[[0,"open",{"kind":"hid","name":"t","vid":1,"pid":2,"descriptor":null}]]',
+            b'[[1,"raw","0a0b"]]']
+    pointer = SimpleNamespace(live=True, protocol="hid", emulated=False,
+                              take_state_tape=lambda: tape.pop(0) if tape else b"")
+    session = SimpleNamespace(pointer_source=pointer)
     target = SigmaProgramTarget(SimpleNamespace(session=session), "t", "", frozenset(), [],
                                 True)
-    with pytest.raises(MachineStateError, match="a live tablet's input is not kept"):
-        target.state_values()
+    target.log.ticked()
+    target.log.ticked()
+    target.picture = lambda: picture_hash(np.zeros((2, 2, 3), np.uint8))
+    assert target.state_values()["tablet"] == {
+        "protocol": "hid", "emulated": False,
+        "tape": b'[[0,"open",{"kind":"hid","name":"t","vid":1,"pid":2,"descriptor":null}],'
+                b'[1,"raw","0a0b"]]'}
 
 
-def test_a_rainbow_editor_with_a_tablet_is_not_saved() -> None:
+def test_a_rainbow_editor_with_a_tablet_saves_its_tablets_input() -> None:
     """The camera tool's and the actors editor's target (RainbowTarget.keep_input): a tablet
-    the command polls is outside the log, so its state is refused, not saved without it."""
+    the command polls is kept in the log (its tape), not refused."""
+    from types import SimpleNamespace
+
     from camlab88.emulator.harness.rainbow import RainbowTarget
     from camlab88.emulator.machine import RainbowMachine
-    from camlab88.emulator.machine.state_file import MachineStateError
 
     target = RainbowTarget(RainbowMachine(), lambda: True, "t", "")
     target.keep_input()
-    assert isinstance(target.state_values(), dict)  # without a tablet: its input log
-    target.tablet = object()
-    with pytest.raises(MachineStateError, match="a live tablet's input is not kept"):
-        target.state_values()
+    assert target.state_values()["tablet"] is None  # without a tablet: none
+    target = RainbowTarget(RainbowMachine(), lambda: True, "t", "")
+    target.tablet = SimpleNamespace(protocol="summa-mm", keep_for_state=lambda: None,
+                                    take_state_tape=lambda: b'[[0,"raw","00"]]')
+    target.keep_input()
+    target.tick()
+    assert target.state_values()["tablet"] == {"protocol": "summa-mm", "emulated": False,
+                                               "tape": b'[[0,"raw","00"]]'}
 
 
 def test_an_editor_loads_a_state_into_a_fresh_run_only() -> None:
@@ -241,7 +256,7 @@ def test_a_log_out_of_tick_order_is_refused() -> None:
 
     key = ["key", "a", "a", [], 0, 0, 0, False, []]
     for events in ([[3, key], [1, key]], [[5, key]]):
-        values = {"ticks": 5, "events": events, "texts": [], "picture": ""}
+        values = {"ticks": 5, "events": events, "texts": [], "picture": "", "tablet": None}
         with pytest.raises(MachineStateError, match="not in tick order"):
             InputLog().rebuild(values, lambda e: None, lambda: True, lambda: True,
                                lambda: "")
@@ -252,7 +267,8 @@ def test_a_log_claims_at_most_max_ticks() -> None:
     from camlab88.base.plainstate import StateValueError, decode
     from camlab88.emulator.harness.input_log import MAX_TICKS, SCHEMA
 
-    values = {"ticks": MAX_TICKS + 1, "events": [], "texts": [], "picture": ""}
+    values = {"ticks": MAX_TICKS + 1, "events": [], "texts": [], "picture": "",
+              "tablet": None}
     with pytest.raises(StateValueError, match="state.ticks"):
         decode(SCHEMA, values, {})
     assert decode(SCHEMA, dict(values, ticks=MAX_TICKS), {})["ticks"] == MAX_TICKS

@@ -30,8 +30,10 @@ def add_front_options(p: argparse.ArgumentParser) -> None:
     """The front options several of the area's commands share."""
     p.add_argument("--script", type=Path,
                    help="event script (docs/kas.md; times optional)").replay = KEEP
-    p.add_argument("--tablet", metavar="SOURCE",
-                   help="tablet source (see 'camlab88 tablet'); default: the mouse").replay = TAPE
+    tablet = p.add_argument("--tablet", metavar="SOURCE",
+                            help="tablet source (see 'camlab88 tablet'); default: the mouse")
+    # not in a save state's identity: the state holds the tablet's input and its protocol
+    tablet.replay, tablet.run_only = TAPE, True
     add_background_options(p)
     p.add_argument("--baud", type=int, default=9600).replay = KEEP
     add_run_options(p, stop_after=False)
