@@ -12,8 +12,10 @@ carries on from where the stand-in left the pointer (``carry_on_from``).
 
 from __future__ import annotations
 
+from camlab88.emulator.tablet_input.taped import TapeKeeper
 
-class TabletInput:
+
+class TabletInput(TapeKeeper):
     """Pointer input for a program window: the configured tablet, or the mouse.
 
     ``source`` is a SOURCE string or None (mouse only).  With ``emulated:P`` the window's mouse
@@ -106,33 +108,12 @@ class TabletInput:
                 return self.layer.poll((), timeout=0.0)
             return self.layer.poll(mouse)
         finally:
-            if self.tape is not None:
-                if self._kept is not None:  # a replay: the tape's entries of this poll
-                    self._kept += [[self.tape.poll, k, p] for k, p in self.tape.here()]
-                self.tape.poll += 1
+            self._end_poll()
 
     @property
     def live(self) -> bool:
         """A tablet read as it happens (not the mouse, not a replay's tape)."""
         return self._has_device and not self._replaying
-
-    def take_tape(self) -> bytes:
-        """The tablet tape's entries since the last call (recording only)."""
-        from camlab88.protocols.tablets.tape import TapeRecorder
-
-        return self.tape.take("record") if isinstance(self.tape, TapeRecorder) else b""
-
-    def take_state_tape(self) -> bytes:
-        """The tablet tape's entries since the last call, for a save state: a live tablet's
-        as noted, a replay's as its tape held them at the polls reached."""
-        import json
-
-        from camlab88.protocols.tablets.tape import TapeRecorder
-
-        if isinstance(self.tape, TapeRecorder):
-            return self.tape.take("state")
-        new, self._kept = self._kept, [] if self._kept is not None else None
-        return json.dumps(new, separators=(",", ":")).encode() if new else b""
 
     @property
     def emulated(self) -> bool:

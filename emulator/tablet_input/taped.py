@@ -34,7 +34,40 @@ def recorded_tape() -> Any:
     return Tape(where="the recording's tablet tape", records=records, on_fault=fault)
 
 
-class TapedTablet:
+class TapeKeeper:
+    """What a tablet input does with its tablet tape (``tape``; ``_kept``: a replay's
+    entries at the polls reached, None but in a replay kept for a state): a poll's end
+    noted, the entries handed to a recording and to a save state."""
+
+    tape: Any
+    _kept: list[list] | None
+
+    def _end_poll(self) -> None:
+        if self.tape is not None:
+            if self._kept is not None:  # a replay: the tape's entries of this poll
+                self._kept += [[self.tape.poll, k, p] for k, p in self.tape.here()]
+            self.tape.poll += 1
+
+    def take_tape(self) -> bytes:
+        """The tablet tape's entries since the last call (recording only)."""
+        from camlab88.protocols.tablets.tape import TapeRecorder
+
+        return self.tape.take("record") if isinstance(self.tape, TapeRecorder) else b""
+
+    def take_state_tape(self) -> bytes:
+        """The tablet tape's entries since the last call, for a save state: a live tablet's
+        as noted, a replay's as its tape held them at the polls reached."""
+        import json
+
+        from camlab88.protocols.tablets.tape import TapeRecorder
+
+        if isinstance(self.tape, TapeRecorder):
+            return self.tape.take("state")
+        new, self._kept = self._kept, [] if self._kept is not None else None
+        return json.dumps(new, separators=(",", ":")).encode() if new else b""
+
+
+class TapedTablet(TapeKeeper):
     """``read(timeout)`` like a source; ``gone`` once it has been lost (not reopened)."""
 
     _state_exclude = ("source",)  # the device: kept as opened
@@ -112,15 +145,7 @@ class TapedTablet:
                 raise SourceLost(f"{self.name}: not on the recording's tablet tape")
             return self.source.read(timeout)
         finally:
-            if self.tape is not None:
-                if self._kept is not None:  # a replay: the tape's entries of this poll
-                    self._kept += [[self.tape.poll, k, p] for k, p in self.tape.here()]
-                self.tape.poll += 1
-
-    def take_tape(self) -> bytes:
-        from camlab88.protocols.tablets.tape import TapeRecorder
-
-        return self.tape.take("record") if isinstance(self.tape, TapeRecorder) else b""
+            self._end_poll()
 
     def keep_for_state(self) -> None:
         """A save state keeps what the tablet sends from now on (take_state_tape, which
@@ -131,18 +156,6 @@ class TapedTablet:
             self.tape.add_reader("state")
         elif self.tape is not None:  # a replay: its tape's entries at the polls reached
             self._kept = []
-
-    def take_state_tape(self) -> bytes:
-        """The tape's entries since the last call, for a save state (a live tablet's as
-        noted, a replay's as its tape held them at the polls reached)."""
-        import json
-
-        from camlab88.protocols.tablets.tape import TapeRecorder
-
-        if isinstance(self.tape, TapeRecorder):
-            return self.tape.take("state")
-        new, self._kept = self._kept, [] if self._kept is not None else None
-        return json.dumps(new, separators=(",", ":")).encode() if new else b""
 
     def close(self) -> None:
         self.gone = True

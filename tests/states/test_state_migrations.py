@@ -112,12 +112,18 @@ CA_ARGV = ["ca", "program", "--headless", "--pattern", "glider", "--events",
            str(DATA / "ca_populate.events")]
 
 
-def test_the_stored_ca_program_state_is_of_version_3_inside_a_dialogue() -> None:
+def _stored_ca_program(state: Path, version: int) -> dict:
+    """The program values of a stored ``ca program`` state of ``version`` (an older one than
+    this program's)."""
     from camlab88.apps.ca.program.program import CAProgram
 
-    head, _ = unpack(CA_V3.read_bytes(), "program")
-    assert head["state_version"] == 3 and CAProgram.STATE_VERSION == 5
-    dialogue = head["values"]["program"]["dialogue"]
+    head, _ = unpack(state.read_bytes(), "program")
+    assert head["state_version"] == version < CAProgram.STATE_VERSION
+    return head["values"]["program"]
+
+
+def test_the_stored_ca_program_state_is_of_version_3_inside_a_dialogue() -> None:
+    dialogue = _stored_ca_program(CA_V3, 3)["dialogue"]
     assert dialogue["name"] == "Randomly populate" and "menu" not in dialogue
 
 
@@ -147,11 +153,7 @@ CA_MENU_ARGV = ["ca", "program", "--headless", "--pattern", "glider", "--events"
 
 
 def test_the_stored_ca_program_state_is_of_version_4_with_a_menu_open() -> None:
-    from camlab88.apps.ca.program.program import CAProgram
-
-    head, _ = unpack(CA_V4.read_bytes(), "program")
-    assert head["state_version"] == 4 and CAProgram.STATE_VERSION == 5
-    values = head["values"]["program"]
+    values = _stored_ca_program(CA_V4, 4)
     assert "held_events" not in values
     assert values["dialogue"]["name"] == "Alter display" and values["dialogue"]["menu"]["open"]
 
