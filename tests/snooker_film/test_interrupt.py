@@ -48,3 +48,28 @@ def test_ctrl_c_on_a_local_dask_film_is_one_line(tmp_path: Path) -> None:
                          "stay, and the same command resumes from them"), err
     for noise in ("Traceback", "KeyboardInterrupt", "CancelledError", "interrupted;"):
         assert sum(noise in line for line in lines) == (noise == "interrupted;"), err
+
+
+def test_a_workers_heartbeat_that_finds_the_scheduler_gone_prints_nothing() -> None:
+    """A worker's heartbeat that races the command's stop (the scheduler is in the command's
+    process, so it is gone only then) logs a traceback at ERROR through distributed's
+    ``logger.exception``: after the preload it prints nothing, and a worker's other errors
+    still print. Run in a child: the preload changes the process's logging."""
+    code = (
+        "import logging, sys\n"
+        "logging.basicConfig(stream=sys.stderr, format='%(name)s %(message)s')\n"
+        "from camlab88.apps.snooker.film.quiet_worker import dask_setup\n"
+        "dask_setup(None)\n"
+        "log = logging.getLogger('distributed.worker')\n"
+        "try:\n"
+        "    raise OSError('connection refused')\n"
+        "except OSError:\n"
+        "    log.exception('Failed to communicate with scheduler during heartbeat.')\n"
+        "    log.exception('Unexpected exception during heartbeat. Closing worker.')\n"
+        "log.warning('a cancelled frame')\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          env={**os.environ, "PYTHONPATH": str(ROOT)}, timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert "Failed to communicate" not in done.stderr
+    assert "distributed.worker Unexpected exception during heartbeat" in done.stderr
+    assert "cancelled frame" not in done.stderr
