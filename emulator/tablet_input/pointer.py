@@ -35,7 +35,6 @@ class TabletInput(TapeKeeper):
         self._has_device = source is not None
         self._replaying = False
         self._kept: list[list] | None = None  # a replay's tape entries, for a save state
-        self._tape_end = -1  # a stand-in's: the poll of its tape's last entry
         self.protocol: str | None = None  # what a state's tablet input must match
         self.area = area = area or TWELVE_FIELD
         if source is None:
@@ -156,13 +155,7 @@ class TabletInput(TapeKeeper):
         if self._emu is not None:
             self._emu.muted = False
         self.layer.carry_on_from(other.layer)
-        polls = other.tape.poll if other.tape is not None else 0
-        last = other._tape_end
-        if last >= polls and last > 0:  # (poll 0's set-up is noted before the first poll)
-            raise ValueError(f"state.tablet.tape: an entry at poll {last}; the session "
-                             f"ran {polls} polls")
-        if self.tape is not None:
-            self.tape.poll = polls
+        self._count_polls_on_from(other)
         if self._replaying and self.layer.source is None and self.tape.opens_now():
             # a recording begun from the state: its tablet was open from the start, so it
             # comes in here as it was, not as one back after a loss

@@ -41,6 +41,19 @@ class TapeKeeper:
 
     tape: Any
     _kept: list[list] | None
+    _tape_end = -1  # a stand-in's: the poll of its state tape's last entry
+
+    def _count_polls_on_from(self, other: TapeKeeper | None) -> None:
+        """After a load: this tape's polls count on from the stand-in ``other``'s (a
+        recording's tape goes on from there); ValueError if the state's tape holds polls
+        the session never reached."""
+        polls = 0 if other is None or other.tape is None else other.tape.poll
+        last = -1 if other is None else other._tape_end
+        if last >= polls and last > 0:  # (poll 0's set-up is noted before the first poll)
+            raise ValueError(f"state.tablet.tape: an entry at poll {last}; the session "
+                             f"ran {polls} polls")
+        if self.tape is not None:
+            self.tape.poll = polls
 
     def _end_poll(self) -> None:
         if self.tape is not None:
@@ -78,7 +91,6 @@ class TapedTablet(TapeKeeper):
         self.gone = False
         self.name = getattr(source, "name", "tablet")
         self._kept: list[list] | None = None  # a replay's, for a state (keep_for_state)
-        self._tape_end = -1  # a stand-in's: the poll of its tape's last entry
 
     @classmethod
     def open(cls, text: str, record: bool) -> TapedTablet:
@@ -121,13 +133,7 @@ class TapedTablet(TapeKeeper):
         """After a load: the polls count on from the stand-in's (a recording's tape goes on
         from there), and a tablet the saved session had lost stays lost; ValueError if the
         state's tape holds polls the session never reached."""
-        polls = 0 if other is None else other.tape.poll
-        last = -1 if other is None else other._tape_end
-        if last >= polls and last > 0:  # (poll 0's set-up is noted before the first poll)
-            raise ValueError(f"state.tablet.tape: an entry at poll {last}; the session "
-                             f"ran {polls} polls")
-        if self.tape is not None:
-            self.tape.poll = polls
+        self._count_polls_on_from(other)
         if other is not None and other.gone and not self.gone:
             self.close()
         elif not self.live and self.source is None and self.tape is not None:
